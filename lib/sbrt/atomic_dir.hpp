@@ -1,0 +1,45 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Writes a directory of files so that it appears all at once:
+ *            a killed run leaves the previous directory intact
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_ATOMIC_DIR_HPP
+#define SBRT_ATOMIC_DIR_HPP
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sbrt {
+
+/// \brief A temporary sibling directory that replaces `target` on commit().
+/// Destroyed without commit(), it removes itself and `target` is untouched.
+class AtomicDirectory {
+public:
+    explicit AtomicDirectory(std::string target);
+    ~AtomicDirectory();
+    AtomicDirectory(const AtomicDirectory &) = delete;
+    AtomicDirectory &operator=(const AtomicDirectory &) = delete;
+
+    /// Writes one file into the temporary directory and syncs it.
+    void write_file(const std::string &name, const std::vector<uint8_t> &bytes);
+    void write_file(const std::string &name, const std::string &text);
+    /// Swaps the temporary directory into place (renameat2 RENAME_EXCHANGE
+    /// where the file system has it, else two renames) and drops the old one.
+    void commit();
+
+    const std::string &temporary_path() const { return temp_; }
+
+private:
+    std::string target_;
+    std::string temp_;
+    bool committed_ = false;
+};
+
+/// Removes a directory tree; returns false if something could not be removed.
+bool remove_tree(const std::string &path);
+
+} // namespace sbrt
+
+#endif

@@ -1,0 +1,307 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   SBRT file format: writer and validating reader
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "format.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <sys/stat.h>
+
+#include <zlib.h>
+
+#include "atomic_dir.hpp"
+#include "byte_io.hpp"
+#include "error.hpp"
+
+namespace sbrt {
+
+namespace {
+
+const uint8_t MAGIC[8] = {0x89, 'S', 'B', 'R', 'T', '\r', '\n', 0x1a};
+constexpr size_t MATERIAL_BYTES = 8;
+constexpr size_t INTERVAL_BYTES = 8;
+
+struct Offsets {
+    uint64_t materials, counts, intervals, end;
+};
+
+Offsets layout(uint64_t materials, uint64_t cells, uint64_t intervals)
+{
+    Offsets o;
+    o.materials = STACKS_HEADER_SIZE;
+    o.counts = o.materials + materials * MATERIAL_BYTES;
+    o.intervals = o.counts + cells * 4;
+    o.end = o.intervals + intervals * INTERVAL_BYTES;
+    return o;
+}
+
+} // namespace
+
+uint32_t crc32_of(const uint8_t *data, size_t size)
+{
+    uLong crc = crc32(0L, Z_NULL, 0);
+    while (size > 0) {
+        const uInt chunk = size > (1u << 30) ? (1u << 30) : uInt(size);
+        crc = crc32(crc, data, chunk);
+        data += chunk;
+        size -= chunk;
+    }
+    return uint32_t(crc);
+}
+
+std::vector<uint8_t> encode_stacks(const Model &model)
+{
+    const Frame &f = model.frame();
+    const auto &materials = model.materials();
+    const auto &intervals = model.intervals();
+
+    ByteWriter body;
+    for (const Material &m : materials) {
+        body.i32(m.id);
+        body.u8(m.red);
+        body.u8(m.green);
+        body.u8(m.blue);
+        body.u8(m.has_color ? 1 : 0);
+    }
+    const size_t counts_at = body.size();
+    for (uint64_t c = 0; c < f.cells(); ++c)
+        body.u32(model.stack_size(c));
+    const size_t intervals_at = body.size();
+    for (const Interval &iv : intervals) {
+        body.u32(iv.material);
+        body.f32(iv.top);
+    }
+    const uint8_t *b = body.bytes().data();
+
+    const Offsets o = layout(materials.size(), f.cells(), intervals.size());
+    ByteWriter head;
+    head.raw(MAGIC, sizeof MAGIC);
+    head.u32(FORMAT_VERSION);
+    head.u32(STACKS_HEADER_SIZE);
+    for (double v : {f.north, f.south, f.east, f.west, f.bottom, f.top})
+        head.f64(v);
+    head.u32(uint32_t(f.rows));
+    head.u32(uint32_t(f.cols));
+    head.u32(uint32_t(f.depths));
+    head.i32(f.proj);
+    head.i32(f.zone);
+    head.u32(uint32_t(materials.size()));
+    head.u64(intervals.size());
+    head.u64(o.materials);
+    head.u64(o.counts);
+    head.u64(o.intervals);
+    head.u32(crc32_of(b, counts_at));
+    head.u32(crc32_of(b + counts_at, intervals_at - counts_at));
+    head.u32(crc32_of(b + intervals_at, body.size() - intervals_at));
+    head.u32(crc32_of(head.bytes().data(), head.size()));
+    SBRT_CHECK_EQ(head.size(), size_t(STACKS_HEADER_SIZE), "encode_stacks");
+
+    head.raw(b, body.size());
+    return std::move(head.bytes());
+}
+
+Model decode_stacks(const uint8_t *data, size_t size, const std::string &what)
+{
+    ByteReader in(data, size, what);
+    if (size < sizeof MAGIC || std::memcmp(data, MAGIC, sizeof MAGIC) != 0)
+        fail(what, ": not an SBRT stacks file (bad magic number)");
+    in.seek(sizeof MAGIC);
+    const uint32_t version = in.u32();
+    if (version != FORMAT_VERSION)
+        fail(what, ": format version ", version, " is not supported (this "
+             "build reads version ", FORMAT_VERSION, ")");
+    const uint32_t header_size = in.u32();
+    if (header_size != STACKS_HEADER_SIZE)
+        fail(what, ": header size ", header_size, ", expected ",
+             STACKS_HEADER_SIZE);
+    if (size < STACKS_HEADER_SIZE)
+        fail(what, ": truncated header (", size, " of ", STACKS_HEADER_SIZE,
+             " bytes)");
+    if (crc32_of(data, STACKS_HEADER_SIZE - 4) !=
+        ByteReader(data + STACKS_HEADER_SIZE - 4, 4, what).u32())
+        fail(what, ": header checksum mismatch (corrupt file)");
+
+    Frame f;
+    f.north = in.f64();
+    f.south = in.f64();
+    f.east = in.f64();
+    f.west = in.f64();
+    f.bottom = in.f64();
+    f.top = in.f64();
+    const uint32_t rows = in.u32(), cols = in.u32(), depths = in.u32();
+    if (rows == 0 || cols == 0 || depths == 0 || rows > INT32_MAX ||
+        cols > INT32_MAX || depths > INT32_MAX)
+        fail(what, ": bad grid size ", rows, "x", cols, "x", depths);
+    f.rows = int(rows);
+    f.cols = int(cols);
+    f.depths = int(depths);
+    f.proj = in.i32();
+    f.zone = in.i32();
+    f.validate(what.c_str());
+    const uint32_t material_count = in.u32();
+    const uint64_t interval_count = in.u64();
+    if (material_count == 0 || material_count > MAX_MATERIALS)
+        fail(what, ": material count ", material_count, " not in 1..",
+             MAX_MATERIALS);
+    if (interval_count > UINT32_MAX)
+        fail(what, ": interval count ", interval_count, " exceeds 2^32-1");
+    const Offsets expected = layout(material_count, f.cells(), interval_count);
+    const uint64_t at_materials = in.u64(), at_counts = in.u64(),
+                   at_intervals = in.u64();
+    if (at_materials != expected.materials || at_counts != expected.counts ||
+        at_intervals != expected.intervals)
+        fail(what, ": section offsets do not match the counts (corrupt file)");
+    if (expected.end != size)
+        fail(what, ": file has ", size, " bytes, its header describes ",
+             expected.end, expected.end > size ? " (truncated)" : "");
+    const uint32_t crc_materials = in.u32(), crc_counts = in.u32(),
+                   crc_intervals = in.u32();
+    if (crc32_of(data + at_materials, at_counts - at_materials) !=
+            crc_materials ||
+        crc32_of(data + at_counts, at_intervals - at_counts) != crc_counts ||
+        crc32_of(data + at_intervals, expected.end - at_intervals) !=
+            crc_intervals)
+        fail(what, ": data checksum mismatch (corrupt file)");
+
+    // sections: materials, per-cell counts, intervals
+    in.seek(at_materials);
+    std::vector<Material> materials(material_count);
+    for (Material &m : materials) {
+        m.id = in.i32();
+        m.red = in.u8();
+        m.green = in.u8();
+        m.blue = in.u8();
+        m.has_color = (in.u8() & 1) != 0;
+    }
+    std::vector<uint32_t> offsets(f.cells() + 1, 0);
+    uint64_t total = 0;
+    for (uint64_t c = 0; c < f.cells(); ++c) {
+        total += in.u32();
+        if (total > interval_count)
+            fail(what, ": stack sizes exceed the interval count");
+        offsets[c + 1] = uint32_t(total);
+    }
+    if (total != interval_count)
+        fail(what, ": stack sizes sum to ", total, ", header says ",
+             interval_count);
+    std::vector<Interval> intervals(interval_count);
+    for (Interval &iv : intervals) {
+        iv.material = in.u32();
+        iv.top = in.f32();
+    }
+    materials[0].label = "EMPTY";
+    Model model(f, std::move(materials), std::move(offsets),
+                std::move(intervals));
+    try {
+        model.validate();
+    }
+    catch (const Error &e) {
+        fail(what, ": ", e.what());
+    }
+    return model;
+}
+
+std::string encode_cats(const Model &model)
+{
+    std::ostringstream out;
+    const auto &materials = model.materials();
+    for (size_t i = 1; i < materials.size(); ++i) {
+        std::string label = materials[i].label;
+        for (char &ch : label)
+            if (ch == '\n' || ch == '\r')
+                ch = ' ';
+        out << materials[i].id << ':' << label << '\n';
+    }
+    return out.str();
+}
+
+void decode_cats(const std::string &text, Model &model, const std::string &what)
+{
+    std::istringstream in(text);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (line.empty())
+            continue;
+        const auto colon = line.find(':');
+        char *end = nullptr;
+        const long id = std::strtol(line.c_str(), &end, 10);
+        if (colon == std::string::npos || end != line.c_str() + colon ||
+            id < INT32_MIN || id > INT32_MAX)
+            fail(what, " line ", number, ": expected id:label");
+        const int64_t m = model.find_material(int32_t(id));
+        if (m > 0)
+            model.materials()[size_t(m)].label = line.substr(colon + 1);
+    }
+}
+
+std::string encode_header(const Model &model)
+{
+    const Frame &f = model.frame();
+    const Stats s = model.stats();
+    char text[1024];
+    std::snprintf(text, sizeof text,
+                  "format:      sbrt\nversion:     %u\n"
+                  "proj:        %d\nzone:        %d\n"
+                  "north:       %.17g\nsouth:       %.17g\n"
+                  "east:        %.17g\nwest:        %.17g\n"
+                  "top:         %.17g\nbottom:      %.17g\n"
+                  "rows:        %d\ncols:        %d\ndepths:      %d\n"
+                  "materials:   %zu\nintervals:   %llu\n",
+                  FORMAT_VERSION, f.proj, f.zone, f.north, f.south, f.east,
+                  f.west, f.top, f.bottom, f.rows, f.cols, f.depths,
+                  model.materials().size() - 1,
+                  (unsigned long long)s.intervals);
+    return text;
+}
+
+std::vector<uint8_t> read_file_bytes(const std::string &path)
+{
+    FILE *fp = std::fopen(path.c_str(), "rb");
+    if (!fp)
+        fail(path, ": cannot open: ", std::strerror(errno));
+    struct stat st;
+    if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode)) {
+        std::fclose(fp);
+        fail(path, ": not a regular file");
+    }
+    std::vector<uint8_t> bytes(size_t(st.st_size));
+    const size_t got =
+        bytes.empty() ? 0 : std::fread(bytes.data(), 1, bytes.size(), fp);
+    std::fclose(fp);
+    if (got != bytes.size())
+        fail(path, ": read ", got, " of ", bytes.size(), " bytes");
+    return bytes;
+}
+
+void write_sbrt(const std::string &directory, const Model &model,
+                const std::string &history)
+{
+    model.validate();
+    AtomicDirectory out(directory);
+    out.write_file("stacks", encode_stacks(model));
+    out.write_file("header", encode_header(model));
+    out.write_file("cats", encode_cats(model));
+    out.write_file("hist", history);
+    out.commit();
+}
+
+Model read_sbrt(const std::string &directory)
+{
+    const std::string stacks_path = directory + "/stacks";
+    const std::vector<uint8_t> bytes = read_file_bytes(stacks_path);
+    Model model = decode_stacks(bytes.data(), bytes.size(), stacks_path);
+    const std::string cats_path = directory + "/cats";
+    struct stat st;
+    if (stat(cats_path.c_str(), &st) == 0) {
+        const std::vector<uint8_t> cats = read_file_bytes(cats_path);
+        decode_cats(std::string(cats.begin(), cats.end()), model, cats_path);
+    }
+    return model;
+}
+
+} // namespace sbrt

@@ -1,0 +1,133 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   SBRT model: invariants, look-ups and the memory figures
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "error.hpp"
+
+namespace sbrt {
+
+void Frame::validate(const char *where) const
+{
+    const double values[] = {north, south, east, west, bottom, top};
+    for (double v : values)
+        if (!std::isfinite(v))
+            fail(where, ": frame has a non-finite coordinate");
+    if (rows < 1 || cols < 1 || depths < 1)
+        fail(where, ": frame has no cells (rows=", rows, " cols=", cols,
+             " depths=", depths, ")");
+    if (!(north > south) || !(east > west) || !(top > bottom))
+        fail(where, ": frame has an empty extent (n=", north, " s=", south,
+             " e=", east, " w=", west, " t=", top, " b=", bottom, ")");
+    if (cells() > uint64_t(std::numeric_limits<int32_t>::max()))
+        fail(where, ": too many cells (", cells(), "), at most 2^31-1");
+    if (depths > (1 << 24))
+        fail(where, ": too many depths (", depths,
+             "), at most 2^24 keeps voxel heights exact in float32");
+}
+
+Model::Model(Frame frame, std::vector<Material> materials,
+             std::vector<uint32_t> offsets, std::vector<Interval> intervals)
+    : frame_(frame), materials_(std::move(materials)),
+      offsets_(std::move(offsets)), intervals_(std::move(intervals))
+{
+}
+
+int64_t Model::find_material(int32_t id) const
+{
+    for (size_t i = 1; i < materials_.size(); ++i)
+        if (materials_[i].id == id)
+            return int64_t(i);
+    return -1;
+}
+
+uint32_t Model::material_at(uint64_t cell, double z) const
+{
+    const uint32_t end = stack_end(cell);
+    // first interval whose top lies above z
+    auto first = intervals_.begin() + stack_begin(cell);
+    auto last = intervals_.begin() + end;
+    auto it = std::upper_bound(
+        first, last, z,
+        [](double value, const Interval &iv) { return value < iv.top; });
+    if (it == last || z < 0)
+        return EMPTY;
+    return it->material;
+}
+
+Stats Model::stats() const
+{
+    Stats s;
+    s.voxels = frame_.voxels();
+    s.voxel_bytes = s.voxels * 4;
+    s.intervals = intervals_.size();
+    s.sbrt_bytes = frame_.cells() * 4 + s.intervals * sizeof(Interval) +
+                   materials_.size() * 8;
+    for (const Interval &iv : intervals_)
+        if (iv.material != EMPTY)
+            ++s.solid_intervals;
+    for (uint64_t c = 0; c < frame_.cells(); ++c)
+        s.max_stack = std::max(s.max_stack, stack_size(c));
+    s.mean_stack = frame_.cells() ? double(s.intervals) / frame_.cells() : 0;
+    s.compression_percent =
+        s.voxel_bytes ? 100.0 * (1.0 - double(s.sbrt_bytes) / s.voxel_bytes)
+                      : 0;
+    return s;
+}
+
+void Model::validate() const
+{
+    frame_.validate("SBRT model");
+    std::ostringstream problems;
+    int count = 0;
+    auto problem = [&](const std::string &text) {
+        if (count++ < 8)
+            problems << "\n  " << text;
+    };
+    if (materials_.empty() || materials_.size() > MAX_MATERIALS)
+        problem("material count " + std::to_string(materials_.size()) +
+                " not in 1.." + std::to_string(MAX_MATERIALS));
+    if (offsets_.size() != frame_.cells() + 1)
+        fail("SBRT model: index has ", offsets_.size(), " entries, expected ",
+             frame_.cells() + 1);
+    if (offsets_.front() != 0 || offsets_.back() != intervals_.size())
+        fail("SBRT model: index does not span the ", intervals_.size(),
+             " intervals");
+    const float depth_limit = float(frame_.depths);
+    for (uint64_t c = 0; c < frame_.cells(); ++c) {
+        if (offsets_[c + 1] < offsets_[c]) {
+            problem("cell " + std::to_string(c) + ": negative stack size");
+            continue;
+        }
+        float below = 0;
+        uint32_t previous = UINT32_MAX;
+        for (uint32_t i = offsets_[c]; i < offsets_[c + 1]; ++i) {
+            const Interval &iv = intervals_[i];
+            if (iv.material >= materials_.size())
+                problem("cell " + std::to_string(c) + ": material index " +
+                        std::to_string(iv.material) + " out of range");
+            if (!(iv.top > below) || !(iv.top <= depth_limit))
+                problem("cell " + std::to_string(c) + ": interval top " +
+                        std::to_string(iv.top) + " not in (" +
+                        std::to_string(below) + ", " +
+                        std::to_string(depth_limit) + "]");
+            if (iv.material == previous)
+                problem("cell " + std::to_string(c) +
+                        ": adjacent intervals of one material");
+            below = iv.top;
+            previous = iv.material;
+        }
+        if (offsets_[c + 1] > offsets_[c] && previous == EMPTY)
+            problem("cell " + std::to_string(c) + ": trailing EMPTY interval");
+    }
+    if (count)
+        fail("SBRT model: ", count, " problem(s):", problems.str());
+}
+
+} // namespace sbrt

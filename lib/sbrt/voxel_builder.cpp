@@ -1,0 +1,99 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Streaming voxel -> SBRT conversion
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "voxel_builder.hpp"
+
+#include "error.hpp"
+
+namespace sbrt {
+
+VoxelStackBuilder::VoxelStackBuilder(const Frame &frame)
+    : frame_(frame), open_class_(frame.cells(), NULL_CLASS),
+      open_material_(frame.cells(), EMPTY), class_of_material_{NULL_CLASS}
+{
+    frame_.validate("VoxelStackBuilder");
+}
+
+uint32_t VoxelStackBuilder::material_of(int32_t id)
+{
+    auto found = material_of_class_.find(id);
+    if (found != material_of_class_.end())
+        return found->second;
+    if (class_of_material_.size() >= MAX_MATERIALS)
+        fail("VoxelStackBuilder: more than ", MAX_MATERIALS - 1,
+             " distinct classes (class ", id, ")");
+    const uint32_t index = uint32_t(class_of_material_.size());
+    class_of_material_.push_back(id);
+    material_of_class_.emplace(id, index);
+    return index;
+}
+
+void VoxelStackBuilder::close_run(uint32_t cell, uint32_t top)
+{
+    if (runs_.size() >= UINT32_MAX)
+        fail("VoxelStackBuilder: more than 2^32-1 intervals");
+    runs_.push_back({cell, open_material_[cell], top});
+}
+
+void VoxelStackBuilder::add_slice(const int32_t *classes)
+{
+    if (depth_ >= frame_.depths)
+        fail("VoxelStackBuilder: more slices than the frame's ",
+             frame_.depths, " depths");
+    const uint32_t cells = uint32_t(frame_.cells());
+    for (uint32_t c = 0; c < cells; ++c) {
+        const int32_t id = classes[c];
+        if (id == open_class_[c])
+            continue;
+        // a run of another class starts here: close the open one
+        if (depth_ > 0)
+            close_run(c, uint32_t(depth_));
+        open_class_[c] = id;
+        open_material_[c] = id == NULL_CLASS ? EMPTY : material_of(id);
+    }
+    ++depth_;
+}
+
+Model VoxelStackBuilder::finish(const std::vector<Material> &legend)
+{
+    if (depth_ != frame_.depths)
+        fail("VoxelStackBuilder: got ", depth_, " slices, the frame has ",
+             frame_.depths);
+    // close the topmost runs; a trailing EMPTY run is not stored
+    const uint32_t cells = uint32_t(frame_.cells());
+    for (uint32_t c = 0; c < cells; ++c)
+        if (open_material_[c] != EMPTY)
+            close_run(c, uint32_t(depth_));
+    open_class_ = {};
+    open_material_ = {};
+
+    // stable counting sort of the runs by cell keeps each stack bottom-up
+    std::vector<uint32_t> offsets(size_t(cells) + 1, 0);
+    for (const Run &r : runs_)
+        ++offsets[r.cell + 1];
+    for (uint32_t c = 0; c < cells; ++c)
+        offsets[c + 1] += offsets[c];
+    std::vector<Interval> intervals(runs_.size());
+    {
+        std::vector<uint32_t> next(offsets.begin(), offsets.end() - 1);
+        for (const Run &r : runs_)
+            intervals[next[r.cell]++] = {r.material, float(r.top)};
+    }
+    runs_ = {};
+
+    std::vector<Material> materials(class_of_material_.size());
+    for (size_t i = 1; i < materials.size(); ++i) {
+        materials[i].id = class_of_material_[i];
+        materials[i].label = "";
+        for (const Material &m : legend)
+            if (m.id == materials[i].id)
+                materials[i] = m;
+    }
+    materials[0].label = "EMPTY";
+    return Model(frame_, std::move(materials), std::move(offsets),
+                 std::move(intervals));
+}
+
+} // namespace sbrt

@@ -1,0 +1,134 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   The reader rejects truncated, corrupt, foreign and future files
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "atomic_dir.hpp"
+#include "byte_io.hpp"
+#include "format.hpp"
+#include "test_support.hpp"
+#include "voxel_builder.hpp"
+
+using namespace sbrt;
+
+namespace {
+
+std::vector<uint8_t> sample_file()
+{
+    const auto v = sbrt_test::random_voxels(21, 6, 7, 20);
+    VoxelStackBuilder b(v.frame);
+    for (int z = 0; z < v.frame.depths; ++z)
+        b.add_slice(v.slice(z));
+    return encode_stacks(b.finish());
+}
+
+std::string message_of(const std::vector<uint8_t> &bytes)
+{
+    try {
+        decode_stacks(bytes.data(), bytes.size(), "f");
+    }
+    catch (const Error &e) {
+        return e.what();
+    }
+    return "";
+}
+
+/// Rewrites the header checksum so that a deliberately edited header field
+/// reaches the later checks.
+void reseal_header(std::vector<uint8_t> &bytes)
+{
+    const uint32_t crc = crc32_of(bytes.data(), STACKS_HEADER_SIZE - 4);
+    for (int i = 0; i < 4; ++i)
+        bytes[STACKS_HEADER_SIZE - 4 + i] = uint8_t(crc >> (8 * i));
+}
+
+} // namespace
+
+TEST(Format, ValidFileDecodes)
+{
+    const auto bytes = sample_file();
+    EXPECT_EQ(message_of(bytes), "");
+}
+
+TEST(Format, EveryTruncationThrows)
+{
+    const auto bytes = sample_file();
+    for (size_t n = 0; n < bytes.size(); n += 1 + n / 50) {
+        std::vector<uint8_t> cut(bytes.begin(), bytes.begin() + n);
+        EXPECT_NE(message_of(cut), "") << "truncated to " << n;
+    }
+}
+
+TEST(Format, BitFlipsAnywhereThrow)
+{
+    const auto bytes = sample_file();
+    std::mt19937 rng(4);
+    for (int trial = 0; trial < 400; ++trial) {
+        auto bad = bytes;
+        const size_t at = rng() % bad.size();
+        bad[at] ^= uint8_t(1u << (rng() % 8));
+        EXPECT_NE(message_of(bad), "") << "flip at byte " << at;
+    }
+}
+
+TEST(Format, TrailingGarbageThrows)
+{
+    auto bytes = sample_file();
+    bytes.push_back(0);
+    EXPECT_NE(message_of(bytes).find("describes"), std::string::npos);
+}
+
+TEST(Format, ForeignAndEmptyFilesThrowClearly)
+{
+    EXPECT_NE(message_of({}).find("magic"), std::string::npos);
+    const std::string text = "This is a GRASS cellhd file\nproj: 99\n";
+    EXPECT_NE(message_of({text.begin(), text.end()}).find("magic"),
+              std::string::npos);
+}
+
+TEST(Format, FutureVersionIsNamed)
+{
+    auto bytes = sample_file();
+    bytes[8] = 7; // version field follows the 8-byte magic
+    EXPECT_NE(message_of(bytes).find("version 7"), std::string::npos);
+}
+
+TEST(Format, InvariantsAreCheckedAfterChecksums)
+{
+    // a material index beyond the table, with valid checksums everywhere
+    auto bytes = sample_file();
+    ByteReader head(bytes.data(), bytes.size(), "t");
+    head.seek(8 + 4 + 4 + 48 + 20 + 4 + 8 + 16);
+    const uint64_t at_intervals = head.u64();
+    bytes[at_intervals] = 0xff; // low byte of the first interval's material
+    const uint32_t crc = crc32_of(bytes.data() + at_intervals,
+                                  bytes.size() - at_intervals);
+    const size_t crc_at = STACKS_HEADER_SIZE - 8;
+    for (int i = 0; i < 4; ++i)
+        bytes[crc_at + i] = uint8_t(crc >> (8 * i));
+    reseal_header(bytes);
+    EXPECT_NE(message_of(bytes).find("out of range"), std::string::npos)
+        << message_of(bytes);
+}
+
+TEST(Format, HugeCountsAreRejectedBeforeAllocation)
+{
+    auto bytes = sample_file();
+    // interval count (u64 after the material count) set to 2^40
+    const size_t at = 8 + 4 + 4 + 48 + 20 + 4;
+    for (int i = 0; i < 8; ++i)
+        bytes[at + i] = i == 5 ? 1 : 0;
+    reseal_header(bytes);
+    EXPECT_NE(message_of(bytes).find("exceeds"), std::string::npos);
+}
+
+TEST(Format, MissingDirectoryIsAnError)
+{
+    EXPECT_THROW(read_sbrt("/nonexistent/sbrt/none"), Error);
+}

@@ -1,0 +1,68 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   Random voxel models with fixed seeds for the library tests
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_TEST_SUPPORT_HPP
+#define SBRT_TEST_SUPPORT_HPP
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "model.hpp"
+
+namespace sbrt_test {
+
+/// Voxels of a frame, index ((depth * rows) + row) * cols + col.
+struct Voxels {
+    sbrt::Frame frame;
+    std::vector<int32_t> classes;
+    const int32_t *slice(int depth) const
+    {
+        return classes.data() + size_t(depth) * frame.cells();
+    }
+};
+
+/// Columns of random runs: classes 1..class_count, NULL runs (caves, air),
+/// runs of one voxel included.
+inline Voxels random_voxels(unsigned seed, int rows, int cols, int depths,
+                            int class_count = 12)
+{
+    std::mt19937 rng(seed);
+    Voxels v;
+    v.frame.rows = rows;
+    v.frame.cols = cols;
+    v.frame.depths = depths;
+    v.frame.north = 1000 + rows * 10.0;
+    v.frame.south = 1000;
+    v.frame.west = 500;
+    v.frame.east = 500 + cols * 5.0;
+    v.frame.bottom = -50;
+    v.frame.top = -50 + depths * 2.0;
+    v.classes.assign(v.frame.voxels(), sbrt::NULL_CLASS);
+    std::uniform_int_distribution<int> run_length(1, std::max(1, depths / 4));
+    std::uniform_int_distribution<int> pick(0, class_count);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            int z = 0;
+            while (z < depths) {
+                const int len = std::min(depths - z, run_length(rng));
+                const int k = pick(rng);
+                const int32_t id = k == 0 ? sbrt::NULL_CLASS : k * 7 - 20;
+                for (int i = 0; i < len; ++i, ++z)
+                    v.classes[(size_t(z) * rows + r) * cols + c] = id;
+            }
+        }
+    return v;
+}
+
+inline std::string temp_dir(const std::string &tag)
+{
+    std::string templ = "/tmp/sbrt_unit_" + tag + "_XXXXXX";
+    return mkdtemp(templ.data());
+}
+
+} // namespace sbrt_test
+
+#endif

@@ -1,0 +1,149 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   voxels -> SBRT -> file -> SBRT -> voxels is identical
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <gtest/gtest.h>
+
+#include "atomic_dir.hpp"
+#include "error.hpp"
+#include "format.hpp"
+#include "test_support.hpp"
+#include "voxel_builder.hpp"
+#include "voxel_expander.hpp"
+
+using namespace sbrt;
+using sbrt_test::random_voxels;
+
+namespace {
+
+Model build(const sbrt_test::Voxels &v)
+{
+    VoxelStackBuilder builder(v.frame);
+    for (int z = 0; z < v.frame.depths; ++z)
+        builder.add_slice(v.slice(z));
+    return builder.finish();
+}
+
+std::vector<int32_t> expand(const Model &m, const Frame &target)
+{
+    VoxelExpander expander(m, target);
+    std::vector<int32_t> out(target.voxels());
+    for (int z = 0; z < target.depths; ++z)
+        expander.next_slice(out.data() + size_t(z) * target.cells());
+    return out;
+}
+
+} // namespace
+
+TEST(VoxelRoundTrip, RandomColumnsSurviveBuildEncodeDecodeExpand)
+{
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        const auto v = random_voxels(seed, 3 + seed % 7, 2 + seed % 5,
+                                     1 + int(seed * 5 % 37));
+        const Model m = build(v);
+        m.validate();
+        const auto bytes = encode_stacks(m);
+        const Model back = decode_stacks(bytes.data(), bytes.size(), "mem");
+        EXPECT_EQ(expand(back, v.frame), v.classes) << "seed " << seed;
+    }
+}
+
+TEST(VoxelRoundTrip, IntervalsAreMaximalRuns)
+{
+    const auto v = random_voxels(99, 6, 5, 40);
+    const Model m = build(v);
+    // count runs independently: every class change along a column, and a
+    // trailing null run is not stored
+    uint64_t runs = 0;
+    for (uint64_t c = 0; c < v.frame.cells(); ++c) {
+        int last_solid = -1;
+        for (int z = 0; z < v.frame.depths; ++z)
+            if (v.classes[z * v.frame.cells() + c] != NULL_CLASS)
+                last_solid = z;
+        for (int z = 0; z <= last_solid; ++z)
+            if (z == 0 || v.classes[z * v.frame.cells() + c] !=
+                              v.classes[(z - 1) * v.frame.cells() + c])
+                ++runs;
+    }
+    EXPECT_EQ(m.intervals().size(), runs);
+}
+
+TEST(VoxelRoundTrip, StatsFollowTableOne)
+{
+    const auto v = random_voxels(7, 10, 8, 30);
+    const Model m = build(v);
+    const Stats s = m.stats();
+    EXPECT_EQ(s.voxels, 10u * 8u * 30u);
+    EXPECT_EQ(s.voxel_bytes, s.voxels * 4);
+    EXPECT_EQ(s.intervals, m.intervals().size());
+    EXPECT_EQ(s.sbrt_bytes, 80u * 4u + s.intervals * 8u + m.materials().size() * 8u);
+    EXPECT_NEAR(s.mean_stack, double(s.intervals) / 80.0, 1e-12);
+    EXPECT_NEAR(s.compression_percent,
+                100.0 * (1 - double(s.sbrt_bytes) / s.voxel_bytes), 1e-9);
+}
+
+TEST(VoxelRoundTrip, SingleVoxelLayersAndCaves)
+{
+    sbrt_test::Voxels v;
+    v.frame.rows = 1;
+    v.frame.cols = 1;
+    v.frame.depths = 7;
+    // bottom up: 3, null (cave), 4, 4, 5 (one voxel), null, null (air)
+    v.classes = {3, NULL_CLASS, 4, 4, 5, NULL_CLASS, NULL_CLASS};
+    const Model m = build(v);
+    ASSERT_EQ(m.intervals().size(), 4u);
+    EXPECT_EQ(m.intervals()[1].material, EMPTY);
+    EXPECT_FLOAT_EQ(m.intervals()[3].top, 5.0f);
+    EXPECT_EQ(expand(m, v.frame), v.classes);
+}
+
+TEST(VoxelRoundTrip, ExpansionInAnotherRegionSamplesNearestCell)
+{
+    const auto v = random_voxels(5, 4, 4, 8);
+    const Model m = build(v);
+    Frame half = v.frame; // same extent, every other column and depth
+    half.cols = 2;
+    half.depths = 4;
+    const auto out = expand(m, half);
+    for (int z = 0; z < 4; ++z)
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 2; ++c) {
+                // centre of target cell (r, c, z) lies in source (r, 2c+1, 2z+1)
+                const int32_t want =
+                    v.classes[((2 * z + 1) * 4 + r) * 4 + 2 * c + 1];
+                EXPECT_EQ(out[(z * 4 + r) * 2 + c], want);
+            }
+}
+
+TEST(VoxelRoundTrip, WriteAndReadDirectoryKeepsLabelsAndColours)
+{
+    const auto v = random_voxels(11, 5, 6, 12, 3);
+    std::vector<Material> legend(1);
+    legend[0].id = -13; // class 1 * 7 - 20
+    legend[0].label = "clay: silty";
+    legend[0].red = 10;
+    legend[0].has_color = true;
+    VoxelStackBuilder builder(v.frame);
+    for (int z = 0; z < v.frame.depths; ++z)
+        builder.add_slice(v.slice(z));
+    const Model m = builder.finish(legend);
+    const std::string dir = sbrt_test::temp_dir("rw") + "/model";
+    write_sbrt(dir, m, "test history\n");
+    const Model back = read_sbrt(dir);
+    const int64_t k = back.find_material(-13);
+    ASSERT_GT(k, 0);
+    EXPECT_EQ(back.materials()[k].label, "clay: silty");
+    EXPECT_EQ(back.materials()[k].red, 10);
+    EXPECT_TRUE(back.materials()[k].has_color);
+    EXPECT_EQ(expand(back, v.frame), v.classes);
+    remove_tree(dir.substr(0, dir.rfind('/')));
+}
+
+TEST(VoxelRoundTrip, WrongSliceCountIsAnError)
+{
+    const auto v = random_voxels(3, 2, 2, 4);
+    VoxelStackBuilder builder(v.frame);
+    builder.add_slice(v.slice(0));
+    EXPECT_THROW(builder.finish(), Error);
+}
