@@ -1,0 +1,41 @@
+# r3.sbrt addon: builds lib/sbrt and lib/grass_sbrt (static), then the
+# modules, into ./dist. Not Dir.make: its "pre" target writes into the
+# system GISBASE on Debian and its subdirs loop swallows failures
+# (GRASS-NOTES.md 1.7).
+MODULE_TOPDIR ?= /usr/lib/grass82
+
+SUBDIRS = \
+	lib/sbrt \
+	lib/grass_sbrt \
+	r3.sbrt.convert
+
+# Plain "make" never installs into the system GISBASE: local builds land in
+# ./dist. g.extension passes BIN=, HTMLDIR=, ... and ARCH_DISTDIR= itself.
+ifeq ($(origin ARCH_DISTDIR),undefined)
+SUBMAKE_ARGS = ARCH_DISTDIR=$(CURDIR)/dist GISBASE=$(MODULE_TOPDIR)
+endif
+
+default:
+	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) || exit 1; done
+
+install:
+	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) install || exit 1; done
+
+# Set-up of a fresh Debian machine, the demo and the whole test suite.
+setup:
+	@tools/setup.sh
+
+demo: setup
+	@$(MAKE) --no-print-directory default
+	@tools/demo.sh
+
+test: setup
+	@$(MAKE) --no-print-directory default
+	@tools/run_tests.sh
+
+clean:
+	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) clean; done
+	$(MAKE) -C testsuite/unit clean
+	rm -rf dist testreport
+
+.PHONY: default install setup demo test clean

@@ -1,0 +1,111 @@
+/****************************************************************************
+ * MODULE:    lib/grass_sbrt (r3.sbrt addon)
+ * PURPOSE:   SBRT element in the mapset
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "sbrt_store.hpp"
+
+#include <dirent.h>
+
+#include <algorithm>
+#include <ctime>
+
+#include "error.hpp"
+#include "format.hpp"
+#include "grass.hpp"
+
+namespace sbrt_grass {
+
+std::string find_sbrt(const char *name)
+{
+    const char *mapset = G_find_file2(ELEMENT, name, "");
+    if (!mapset)
+        G_fatal_error(_("SBRT <%s> not found in the search path; list the "
+                        "available ones with r3.sbrt.convert -l"),
+                      name);
+    char xname[GNAME_MAX], xmapset[GMAPSET_MAX];
+    const char *bare = name;
+    if (G_name_is_fully_qualified(name, xname, xmapset))
+        bare = xname;
+    char path[GPATH_MAX];
+    G_file_name(path, ELEMENT, bare, mapset);
+    return path;
+}
+
+sbrt::Model read_sbrt_map(const char *name)
+{
+    const std::string dir = find_sbrt(name);
+    try {
+        return sbrt::read_sbrt(dir);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error(_("SBRT <%s> is damaged or not an SBRT: %s. Convert "
+                        "the source map again with r3.sbrt.convert"),
+                      name, e.what());
+    }
+}
+
+std::string new_sbrt_path(const char *name, bool overwrite)
+{
+    if (G_legal_filename(name) != 1)
+        G_fatal_error(_("<%s> is an illegal SBRT name"), name);
+    if (G_find_file2(ELEMENT, name, G_mapset()) && !overwrite)
+        G_fatal_error(_("option <output>: <%s> exists. To overwrite, use the "
+                        "--overwrite flag"),
+                      name);
+    G_make_mapset_object_group(ELEMENT);
+    char path[GPATH_MAX];
+    G_file_name(path, ELEMENT, name, G_mapset());
+    return path;
+}
+
+void write_sbrt_map(const char *name, const sbrt::Model &model,
+                    const std::string &source)
+{
+    const std::string path = new_sbrt_path(name, G_check_overwrite(0, nullptr));
+    const time_t now = time(nullptr);
+    char date[64];
+    strftime(date, sizeof date, "%a %b %d %H:%M:%S %Y", localtime(&now));
+    std::string history = std::string("created: ") + date + "\n";
+    history += std::string("creator: ") + G_whoami() + "\n";
+    history += "source: " + source + "\n";
+    history += std::string("command: ") + G_recreate_command() + "\n";
+    try {
+        sbrt::write_sbrt(path, model, history);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error(_("Unable to write SBRT <%s>: %s"), name, e.what());
+    }
+}
+
+std::vector<std::string> list_sbrts()
+{
+    std::vector<std::string> names;
+    for (int i = 0; const char *mapset = G_get_mapset_name(i); ++i) {
+        char path[GPATH_MAX];
+        G_file_name(path, ELEMENT, "", mapset);
+        DIR *dir = opendir(path);
+        if (!dir)
+            continue;
+        std::vector<std::string> here;
+        while (const dirent *entry = readdir(dir))
+            if (entry->d_name[0] != '.')
+                here.push_back(std::string(entry->d_name) + "@" + mapset);
+        closedir(dir);
+        std::sort(here.begin(), here.end());
+        names.insert(names.end(), here.begin(), here.end());
+    }
+    return names;
+}
+
+void check_new_raster3d(const char *name, bool overwrite)
+{
+    if (G_legal_filename(name) != 1)
+        G_fatal_error(_("<%s> is an illegal 3D raster map name"), name);
+    if (G_find_raster3d(name, G_mapset()) && !overwrite)
+        G_fatal_error(_("option <output>: <%s> exists. To overwrite, use the "
+                        "--overwrite flag"),
+                      name);
+}
+
+} // namespace sbrt_grass

@@ -1,0 +1,38 @@
+/****************************************************************************
+ * MODULE:    lib/grass_sbrt (r3.sbrt addon)
+ * PURPOSE:   SBRTs as the mapset element sbrt/<name>: look-up across the
+ *            search path, output paths, listing, overwrite checks, history
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_STORE_HPP
+#define SBRT_STORE_HPP
+
+#include <string>
+#include <vector>
+
+#include "model.hpp"
+
+namespace sbrt_grass {
+
+constexpr const char *ELEMENT = "sbrt";
+
+/// Directory of an existing SBRT `name` or `name@mapset`; fatal error with
+/// advice when it is not found.
+std::string find_sbrt(const char *name);
+/// Reads an SBRT; a damaged one gives a fatal error naming the map.
+sbrt::Model read_sbrt_map(const char *name);
+/// Checks the name and overwrite rules, then returns the directory of the
+/// new SBRT in the current mapset.
+std::string new_sbrt_path(const char *name, bool overwrite);
+/// Writes an SBRT atomically into the current mapset, with history.
+void write_sbrt_map(const char *name, const sbrt::Model &model,
+                    const std::string &source);
+/// "name@mapset" of every SBRT in the search path, mapset by mapset.
+std::vector<std::string> list_sbrts();
+/// Fatal error if a 3D raster `name` exists in the current mapset and
+/// overwriting is not allowed.
+void check_new_raster3d(const char *name, bool overwrite);
+
+} // namespace sbrt_grass
+
+#endif

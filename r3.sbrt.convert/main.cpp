@@ -1,0 +1,207 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.convert
+ * AUTHOR(S): r3.sbrt authors
+ * PURPOSE:   Converts 3D raster maps and stacked horizons to a stack-based
+ *            representation of terrains (SBRT) and back
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+#include "convert.hpp"
+#include "error.hpp"
+#include "grass.hpp"
+#include "sbrt_store.hpp"
+
+namespace {
+
+struct Options {
+    Option *input, *output, *horizons, *materials, *bottom, *rules;
+    Flag *reverse, *print, *shell, *list;
+};
+
+Options define_options()
+{
+    Options o;
+    o.input = G_define_standard_option(G_OPT_R3_INPUT);
+    o.input->required = NO;
+    o.input->description =
+        _("3D raster map to convert (with -r, or -p/-g without output: SBRT)");
+
+    o.output = G_define_option();
+    o.output->key = "output";
+    o.output->type = TYPE_STRING;
+    o.output->key_desc = "name";
+    o.output->required = NO;
+    o.output->description =
+        _("Name of the SBRT to create (with -r: the 3D raster map)");
+
+    o.horizons = G_define_standard_option(G_OPT_R_INPUTS);
+    o.horizons->key = "horizons";
+    o.horizons->required = NO;
+    o.horizons->description =
+        _("Raster maps of the top elevation of each unit, top to bottom");
+    o.horizons->guisection = _("Horizons");
+
+    o.materials = G_define_option();
+    o.materials->key = "materials";
+    o.materials->type = TYPE_INTEGER;
+    o.materials->multiple = YES;
+    o.materials->required = NO;
+    o.materials->description = _("Class id of each unit, in horizons= order");
+    o.materials->guisection = _("Horizons");
+
+    o.bottom = G_define_option();
+    o.bottom->key = "bottom";
+    o.bottom->type = TYPE_STRING;
+    o.bottom->required = NO;
+    o.bottom->key_desc = "name|value";
+    o.bottom->description =
+        _("Base of the lowest unit: raster map or elevation (default: region "
+          "bottom)");
+    o.bottom->guisection = _("Horizons");
+
+    o.rules = G_define_standard_option(G_OPT_F_INPUT);
+    o.rules->key = "rules";
+    o.rules->required = NO;
+    o.rules->label = _("File of classification rules ('-' for standard input)");
+    o.rules->description =
+        _("Lines low:high:class[:label]; '*' is an open end; values no rule "
+          "covers become empty");
+
+    o.reverse = G_define_flag();
+    o.reverse->key = 'r';
+    o.reverse->description =
+        _("Reverse: expand the SBRT input= into the 3D raster map output=");
+    o.print = G_define_flag();
+    o.print->key = 'p';
+    o.print->description =
+        _("Print metadata and the memory comparison with the voxel model");
+    o.print->guisection = _("Print");
+    o.shell = G_define_flag();
+    o.shell->key = 'g';
+    o.shell->description = _("Print metadata in shell script style");
+    o.shell->guisection = _("Print");
+    o.list = G_define_flag();
+    o.list->key = 'l';
+    o.list->description = _("List the SBRTs in the search path and exit");
+    o.list->guisection = _("Print");
+    o.list->suppress_required = YES;
+
+    G_option_exclusive(o.input, o.horizons, NULL);
+    G_option_requires(o.materials, o.horizons, NULL);
+    G_option_requires(o.horizons, o.materials, NULL);
+    G_option_requires(o.bottom, o.horizons, NULL);
+    G_option_excludes(o.reverse, o.horizons, o.rules, NULL);
+    G_option_exclusive(o.print, o.shell, NULL);
+    return o;
+}
+
+sbrt::Classifier read_classifier(const char *rules)
+{
+    if (!rules)
+        return sbrt::Classifier();
+    try {
+        if (std::string(rules) == "-")
+            return sbrt::Classifier::parse(std::cin, "rules=-");
+        std::ifstream in(rules);
+        if (!in)
+            G_fatal_error(_("Unable to open rules file <%s>"), rules);
+        return sbrt::Classifier::parse(in, rules);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error(_("Invalid classification rules: %s"), e.what());
+    }
+}
+
+std::vector<std::string> answers_of(const Option *opt)
+{
+    std::vector<std::string> out;
+    for (int i = 0; opt->answers && opt->answers[i]; ++i)
+        out.push_back(opt->answers[i]);
+    return out;
+}
+
+std::vector<int> integers_of(const Option *opt)
+{
+    std::vector<int> out;
+    for (const std::string &a : answers_of(opt))
+        out.push_back(std::atoi(a.c_str()));
+    return out;
+}
+
+void run(const Options &o)
+{
+    if (o.list->answer) {
+        for (const std::string &name : sbrt_grass::list_sbrts())
+            fprintf(stdout, "%s\n", name.c_str());
+        return;
+    }
+    const bool report = o.print->answer || o.shell->answer;
+    const char *input = o.input->answer;
+    const char *output = o.output->answer;
+    const bool overwrite = G_check_overwrite(0, nullptr);
+
+    if (o.reverse->answer) {
+        if (!input || !output)
+            G_fatal_error(_("-r needs input= (an SBRT) and output= (a new 3D "
+                            "raster map)"));
+        sbrt_grass::check_new_raster3d(output, overwrite);
+        sbrt_to_voxels(input, output);
+        return;
+    }
+    if (!output) {
+        if (!input || !report)
+            G_fatal_error(_("Nothing to do: give output= to convert, or -p/-g "
+                            "with an SBRT as input= to describe it"));
+        print_report(input, sbrt_grass::read_sbrt_map(input), o.shell->answer);
+        return;
+    }
+    sbrt_grass::new_sbrt_path(output, overwrite); // fail before the work
+    sbrt::Model model;
+    std::string source;
+    if (o.horizons->answers) {
+        model = horizons_to_sbrt(answers_of(o.horizons),
+                                 integers_of(o.materials), o.bottom->answer);
+        source = std::string("horizons ") + o.horizons->answer;
+    }
+    else {
+        if (!input)
+            G_fatal_error(_("Give input= (3D raster map) or horizons="));
+        sbrt::Classifier classifier = read_classifier(o.rules->answer);
+        model = voxels_to_sbrt(input, classifier);
+        source = std::string("3D raster map ") + input;
+    }
+    sbrt_grass::write_sbrt_map(output, model, source);
+    if (report)
+        print_report(output, model, o.shell->answer);
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    G_gisinit(argv[0]);
+    GModule *module = G_define_module();
+    G_add_keyword(_("raster3d"));
+    G_add_keyword(_("conversion"));
+    G_add_keyword(_("geology"));
+    G_add_keyword(_("voxel"));
+    G_add_keyword(_("SBRT"));
+    module->description =
+        _("Converts 3D raster maps or stacked horizons to a stack-based "
+          "representation of terrains (SBRT) and back.");
+    const Options options = define_options();
+    if (G_parser(argc, argv))
+        exit(EXIT_FAILURE);
+    Rast3d_init_defaults();
+    try {
+        run(options);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error("%s", e.what());
+    }
+    exit(EXIT_SUCCESS);
+}

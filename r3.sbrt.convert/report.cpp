@@ -1,0 +1,60 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.convert
+ * PURPOSE:   Metadata and the memory comparison of the papers' Table 1
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "convert.hpp"
+
+#include <cstdio>
+
+#include "grass.hpp"
+
+void print_report(const char *name, const sbrt::Model &model, bool shell)
+{
+    const sbrt::Frame &f = model.frame();
+    const sbrt::Stats s = model.stats();
+    const double mib = 1024.0 * 1024.0;
+    if (shell) {
+        fprintf(stdout,
+                "name=%s\nnorth=%.15g\nsouth=%.15g\neast=%.15g\nwest=%.15g\n"
+                "top=%.15g\nbottom=%.15g\nrows=%d\ncols=%d\ndepths=%d\n"
+                "nsres=%.15g\newres=%.15g\ntbres=%.15g\nmaterials=%zu\n"
+                "voxels=%llu\nvoxel_bytes=%llu\nsbrt_bytes=%llu\n"
+                "intervals=%llu\nsolid_intervals=%llu\nmax_stack=%u\n"
+                "mean_stack=%.6f\ncompression=%.3f\n",
+                name, f.north, f.south, f.east, f.west, f.top, f.bottom,
+                f.rows, f.cols, f.depths, f.ns_res(), f.ew_res(), f.tb_res(),
+                model.materials().size() - 1, (unsigned long long)s.voxels,
+                (unsigned long long)s.voxel_bytes,
+                (unsigned long long)s.sbrt_bytes,
+                (unsigned long long)s.intervals,
+                (unsigned long long)s.solid_intervals, s.max_stack,
+                s.mean_stack, s.compression_percent);
+        return;
+    }
+    fprintf(stdout, "SBRT:          %s\n", name);
+    fprintf(stdout, "Extent:        N %.10g  S %.10g  E %.10g  W %.10g\n",
+            f.north, f.south, f.east, f.west);
+    fprintf(stdout, "Vertical:      T %.10g  B %.10g\n", f.top, f.bottom);
+    fprintf(stdout, "Grid:          %d rows x %d cols x %d depths\n", f.rows,
+            f.cols, f.depths);
+    fprintf(stdout, "Resolution:    ns %.10g  ew %.10g  tb %.10g\n",
+            f.ns_res(), f.ew_res(), f.tb_res());
+    fprintf(stdout, "Materials:     %zu\n", model.materials().size() - 1);
+    for (size_t i = 1; i < model.materials().size(); ++i) {
+        const sbrt::Material &m = model.materials()[i];
+        fprintf(stdout, "  %11d  %3d:%3d:%3d  %s\n", m.id, m.red, m.green,
+                m.blue, m.label.c_str());
+    }
+    fprintf(stdout, "Memory (papers' Table 1):\n");
+    fprintf(stdout, "  voxels:            %llu\n", (unsigned long long)s.voxels);
+    fprintf(stdout, "  voxel model:       %.2f MiB (4 bytes per voxel)\n",
+            s.voxel_bytes / mib);
+    fprintf(stdout, "  SBRT:              %.2f MiB\n", s.sbrt_bytes / mib);
+    fprintf(stdout, "  intervals:         %llu (%llu solid)\n",
+            (unsigned long long)s.intervals,
+            (unsigned long long)s.solid_intervals);
+    fprintf(stdout, "  max stack size:    %u\n", s.max_stack);
+    fprintf(stdout, "  mean stack size:   %.2f\n", s.mean_stack);
+    fprintf(stdout, "  compression:       %.1f %%\n", s.compression_percent);
+}
