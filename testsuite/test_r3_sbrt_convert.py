@@ -1,0 +1,213 @@
+"""
+MODULE:    testsuite/test_r3_sbrt_convert.py (r3.sbrt addon)
+PURPOSE:   r3.sbrt.convert against GRASS's own tools: voxel round trips,
+           Table 1 figures, horizons, rules, legends and bad input
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import os
+import subprocess
+
+from grass.gunittest.case import TestCase
+from grass.gunittest.main import test
+import grass.script as gs
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+MAKE_GEOMODEL = os.path.join(HERE, "..", "tools", "make_geomodel.sh")
+
+
+def sbrt_dir(name):
+    env = gs.gisenv()
+    return os.path.join(
+        env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"], "sbrt", name
+    )
+
+
+class Raster3dCompare:
+    """Voxels where two 3D rasters differ, nulls included (r3.mapcalc)."""
+
+    def count_differences(self, a, b):
+        self.runModule(
+            "r3.mapcalc",
+            overwrite=True,
+            expression=f"sbrt_diff = if(isnull({a}) && isnull({b}), 0, "
+            f"if(isnull({a}) || isnull({b}), 1, {a} != {b}))",
+        )
+        stats = gs.parse_command("r3.univar", map="sbrt_diff", flags="g")
+        return int(stats["n"]), float(stats["sum"])
+
+
+class TestConvertSyntheticModel(TestCase, Raster3dCompare):
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        subprocess.run([MAKE_GEOMODEL, "T", "geo"], check=True)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+
+    def test_round_trip_is_identical(self):
+        self.assertModule("r3.sbrt.convert", input="geo", output="geo_sbrt")
+        self.assertModule(
+            "r3.sbrt.convert", flags="r", input="geo_sbrt", output="geo_back"
+        )
+        n, differing = self.count_differences("geo", "geo_back")
+        self.assertEqual(n, 40 * 50 * 64)
+        self.assertEqual(differing, 0)
+
+    def test_labels_and_colours_are_kept(self):
+        self.assertModule("r3.sbrt.convert", input="geo", output="geo_l")
+        self.assertModule("r3.sbrt.convert", flags="r", input="geo_l", output="geo_lb")
+        with open(os.path.join(sbrt_dir("geo_l"), "cats")) as f:
+            self.assertIn("14:Gravel aquifer", f.read())
+        colors = gs.read_command("r3.colors.out", map="geo_lb")
+        self.assertIn("14 30:110:230", colors)
+        info = gs.read_command("r3.info", map="geo_lb")
+        self.assertIn("Number of Categories: 16", info)
+
+    def test_shell_figures_match_the_grid(self):
+        self.assertModule("r3.sbrt.convert", input="geo", output="geo_g")
+        figures = gs.parse_command("r3.sbrt.convert", input="geo_g", flags="g")
+        self.assertEqual(int(figures["voxels"]), 40 * 50 * 64)
+        self.assertEqual(int(figures["voxel_bytes"]), 4 * 40 * 50 * 64)
+        self.assertEqual(int(figures["materials"]), 16)
+        self.assertGreater(float(figures["compression"]), 50)
+        self.assertLessEqual(int(figures["max_stack"]), 64)
+
+    def test_list_names_the_sbrt_with_mapset(self):
+        self.assertModule("r3.sbrt.convert", input="geo", output="geo_list")
+        listing = gs.read_command("r3.sbrt.convert", flags="l").split()
+        self.assertIn("geo_list@" + gs.gisenv()["MAPSET"], listing)
+
+    def test_existing_output_needs_overwrite(self):
+        self.assertModule("r3.sbrt.convert", input="geo", output="geo_o")
+        self.assertModuleFail("r3.sbrt.convert", input="geo", output="geo_o")
+        gs.run_command("r3.sbrt.convert", input="geo", output="geo_o", overwrite=True)
+
+
+class TestConvertExactFigures(TestCase, Raster3dCompare):
+    """A model whose stacks are known: single-voxel layers and a cave."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.runModule("g.region", n=20, s=0, e=10, w=0, b=0, t=6, res=1, res3=1, tbres=1)
+        # bottom up: 1 1 cave 7 2 2; the top voxel is air where col() > 5
+        cls.runModule(
+            "r3.mapcalc",
+            expression="known = if(depth() <= 2, 1, if(depth() == 3, null(), "
+            "if(depth() == 4, 7, if(depth() == 6 && col() > 5, null(), 2))))",
+        )
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+
+    def test_intervals_and_stacks(self):
+        self.assertModule("r3.sbrt.convert", input="known", output="known_s")
+        f = gs.parse_command("r3.sbrt.convert", input="known_s", flags="g")
+        self.assertEqual(int(f["intervals"]), 200 * 4)
+        self.assertEqual(int(f["solid_intervals"]), 200 * 3)
+        self.assertEqual(int(f["max_stack"]), 4)
+        self.assertAlmostEqual(float(f["mean_stack"]), 4.0)
+        self.assertEqual(int(f["sbrt_bytes"]), 200 * 4 + 800 * 8 + 4 * 8)
+
+    def test_round_trip_with_cave(self):
+        self.assertModule("r3.sbrt.convert", input="known", output="known_r")
+        self.assertModule("r3.sbrt.convert", flags="r", input="known_r", output="known_b")
+        self.assertEqual(self.count_differences("known", "known_b"), (1200, 0))
+
+
+class TestConvertHorizons(TestCase, Raster3dCompare):
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.runModule("g.region", n=10, s=0, e=20, w=0, b=0, t=100, res=1, res3=1, tbres=1)
+        cls.runModule("r.mapcalc", expression="h1 = 90")
+        cls.runModule("r.mapcalc", expression="h2 = 55.5 + col()")
+        cls.runModule("r.mapcalc", expression="h3 = if(row() == 3, null(), 70)")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+
+    def test_crossing_and_absent_units_match_independent_voxels(self):
+        self.assertModule(
+            "r3.sbrt.convert",
+            horizons="h1,h2,h3",
+            materials=[1, 2, 3],
+            bottom=5,
+            output="hz",
+        )
+        self.assertModule("r3.sbrt.convert", flags="r", input="hz", output="hz_vox")
+        # independent: unit tops clipped from the top down, voxel centres z()
+        self.runModule(
+            "r3.mapcalc",
+            expression="hz_ref = eval(e2 = min(55.5 + col(), 90), "
+            "e3 = if(row() == 3, null(), min(70, e2)), "
+            "if(z() < 5 || z() > 90, null(), "
+            "if(if(isnull(e3), 0, z() < e3), 3, if(z() < e2, 2, 1))))",
+        )
+        self.assertEqual(self.count_differences("hz_ref", "hz_vox"), (20000, 0))
+
+    def test_horizons_need_one_material_each(self):
+        self.assertModuleFail(
+            "r3.sbrt.convert", horizons="h1,h2", materials=[1], output="hz_bad"
+        )
+
+
+class TestConvertRulesAndErrors(TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.runModule("g.region", n=5, s=0, e=5, w=0, b=0, t=4, res=1, res3=1, tbres=1)
+        cls.runModule("r3.mapcalc", expression="frac = depth() * 0.5")
+        cls.runModule("r3.mapcalc", expression="allnull = null()")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+
+    def test_non_integer_values_need_rules(self):
+        result = gs.Popen(
+            ["r3.sbrt.convert", "input=frac", "output=frac_s"],
+            stderr=subprocess.PIPE,
+        ).communicate()[1].decode()
+        self.assertIn("0.5", result)
+        self.assertIn("rules=", result)
+        self.assertModuleFail("r3.sbrt.convert", input="frac", output="frac_s")
+
+    def test_rules_classify_ranges(self):
+        rules = "0:1.2:1:shallow\n1.2:*:2:deep\n"
+        self.assertModule(
+            "r3.sbrt.convert", input="frac", output="frac_r", rules="-", stdin_=rules
+        )
+        f = gs.parse_command("r3.sbrt.convert", input="frac_r", flags="g")
+        self.assertEqual(int(f["intervals"]), 25 * 2)
+        with open(os.path.join(sbrt_dir("frac_r"), "cats")) as cats:
+            self.assertIn("2:deep", cats.read())
+
+    def test_missing_and_all_null_maps_fail(self):
+        self.assertModuleFail("r3.sbrt.convert", input="nosuchmap", output="x")
+        self.assertModuleFail("r3.sbrt.convert", input="allnull", output="x")
+        self.assertModuleFail("r3.sbrt.convert", flags="r", input="nosuch", output="x")
+
+    def test_corrupt_sbrt_fails_clearly(self):
+        self.runModule("r3.mapcalc", expression="ones = 1", overwrite=True)
+        self.assertModule("r3.sbrt.convert", input="ones", output="broken")
+        stacks = os.path.join(sbrt_dir("broken"), "stacks")
+        with open(stacks, "r+b") as f:
+            f.seek(200)
+            byte = f.read(1)
+            f.seek(200)
+            f.write(bytes([byte[0] ^ 0x10]))
+        proc = gs.Popen(
+            ["r3.sbrt.convert", "input=broken", "-p"], stderr=subprocess.PIPE
+        )
+        message = proc.communicate()[1].decode()
+        self.assertNotEqual(proc.returncode, 0)
+        self.assertIn("damaged", message)
+
+
+if __name__ == "__main__":
+    test()

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+############################################################################
+# MODULE:    tools/run_tests.sh (r3.sbrt addon)
+# PURPOSE:   Runs every test: the C++ unit tests of lib/sbrt and each
+#            gunittest file of testsuite/ in its own fresh mapset; ends with
+#            the line "N passed, N failed" (test cases, all kinds together)
+# COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+############################################################################
+set -uo pipefail
+. "$(dirname "$0")/grass_env.sh"
+cd "$SBRT_ROOT"
+passed=0
+failed=0
+log=$(mktemp -d /tmp/r3sbrt_tests.XXXXXX)
+
+# 1. unit tests (GoogleTest)
+if make -s -C testsuite/unit build/sbrt_unit_tests >"$log/unit_build.log" 2>&1; then
+    testsuite/unit/build/sbrt_unit_tests >"$log/unit.log" 2>&1
+    p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log/unit.log")
+    f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log/unit.log")
+    passed=$((passed + ${p:-0})); failed=$((failed + ${f:-0}))
+    grep -E "^\[  FAILED  \] [A-Z]|Failure" "$log/unit.log" | head -20
+    echo "unit tests: ${p:-0} passed, ${f:-0} failed"
+    if [ -z "$p" ] && [ -z "$f" ]; then failed=$((failed + 1)); tail -20 "$log/unit.log"; fi
+else
+    cat "$log/unit_build.log"; failed=$((failed + 1))
+fi
+
+# 2. gunittest files, each in a fresh mapset of a throw-away location
+sbrt_location "$log/grassdata"
+for test in testsuite/test_*.py; do
+    name=$(basename "$test" .py)
+    in_grass "$name" python3 "$test" >"$log/$name.log" 2>&1
+    rc=$?
+    ran=$(sed -n 's/^Ran \([0-9]*\) test.*/\1/p' "$log/$name.log" | tail -1)
+    bad=$(grep -E "^FAILED \(" "$log/$name.log" | tail -1 |
+        grep -oE "(failures|errors)=[0-9]+" | cut -d= -f2 | awk "{ s += \$1 } END { print s + 0 }")
+    ran=${ran:-0}; bad=${bad:-0}
+    if [ "$ran" -eq 0 ] || { [ "$rc" -ne 0 ] && [ "$bad" -eq 0 ]; }; then
+        bad=$((bad + 1)) # the file itself broke
+    fi
+    [ "$bad" -gt 0 ] && { grep -E "^(FAIL|ERROR):|Error|ERROR" "$log/$name.log" | head -20; }
+    good=$((ran - bad)); [ "$good" -lt 0 ] && good=0
+    passed=$((passed + good)); failed=$((failed + bad))
+    echo "$name: $good passed, $bad failed"
+done
+echo "logs in $log"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

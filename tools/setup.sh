@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+############################################################################
+# MODULE:    tools/setup.sh (r3.sbrt addon)
+# PURPOSE:   Installs, through apt-get, the Debian packages the addon needs
+#            to build, run its demo and its tests; does nothing when they
+#            are all there. Never writes into the GRASS installation.
+# COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+############################################################################
+set -euo pipefail
+packages=(
+    make g++ pkg-config zlib1g-dev
+    grass-core grass-dev             # GRASS 8.2 and its headers/make system
+    libglm-dev                       # vector maths
+    libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
+    libgtest-dev                     # unit tests
+)
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "setup: installing ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+    echo "setup: run as root (or install these Debian packages): ${missing[*]}" >&2
+    exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
