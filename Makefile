@@ -7,7 +7,8 @@ MODULE_TOPDIR ?= /usr/lib/grass82
 SUBDIRS = \
 	lib/sbrt \
 	lib/grass_sbrt \
-	r3.sbrt.convert
+	r3.sbrt.convert \
+	r3.sbrt.render
 
 # Plain "make" never installs into the system GISBASE: local builds land in
 # ./dist. g.extension passes BIN=, HTMLDIR=, ... and ARCH_DISTDIR= itself.

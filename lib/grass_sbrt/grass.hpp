@@ -10,6 +10,7 @@ extern "C" {
 #include <grass/gis.h>
 #include <grass/raster.h>
 #include <grass/raster3d.h>
+#include <grass/colors.h>
 #include <grass/glocale.h>
 }
 

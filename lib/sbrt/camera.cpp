@@ -1,0 +1,115 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Camera rays
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "camera.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "error.hpp"
+
+namespace sbrt {
+
+namespace {
+
+/// Right and up vectors of a view along `forward`; +z is up unless the
+/// view is vertical, then north (+y) is up.
+void view_basis(glm::dvec3 forward, glm::dvec3 &right, glm::dvec3 &up)
+{
+    glm::dvec3 world_up(0, 0, 1);
+    if (std::fabs(forward.z) > 1 - 1e-12)
+        world_up = glm::dvec3(0, 1, 0);
+    right = glm::normalize(glm::cross(forward, world_up));
+    up = glm::cross(right, forward);
+}
+
+void check_image(int rows, int cols)
+{
+    if (rows < 1 || cols < 1)
+        fail("Camera: image of ", rows, " x ", cols, " pixels");
+}
+
+glm::dvec3 view_direction(glm::dvec3 position, glm::dvec3 target)
+{
+    const glm::dvec3 d = target - position;
+    const double length = glm::length(d);
+    if (!(length > 0) || !std::isfinite(length))
+        fail("Camera: position and target must differ and be finite");
+    return d / length;
+}
+
+} // namespace
+
+Camera Camera::perspective(glm::dvec3 position, glm::dvec3 target,
+                           double fov_degrees, int rows, int cols)
+{
+    check_image(rows, cols);
+    if (!(fov_degrees > 0 && fov_degrees < 180))
+        fail("Camera: field of view ", fov_degrees,
+             " degrees is not in (0, 180)");
+    Camera c;
+    c.kind_ = Kind::perspective;
+    c.rows_ = rows;
+    c.cols_ = cols;
+    c.position_ = position;
+    c.forward_ = view_direction(position, target);
+    view_basis(c.forward_, c.right_, c.up_);
+    c.half_height_ = std::tan(fov_degrees * M_PI / 360.0);
+    c.half_width_ = c.half_height_ * double(cols) / rows;
+    return c;
+}
+
+Camera Camera::orthographic(glm::dvec3 position, glm::dvec3 target,
+                            double height, int rows, int cols)
+{
+    check_image(rows, cols);
+    if (!(height > 0) || !std::isfinite(height))
+        fail("Camera: orthographic height ", height, " must be positive");
+    Camera c;
+    c.kind_ = Kind::orthographic;
+    c.rows_ = rows;
+    c.cols_ = cols;
+    c.forward_ = view_direction(position, target);
+    view_basis(c.forward_, c.right_, c.up_);
+    // centred on the target, rays start where the camera stands
+    c.position_ = target - c.forward_ * glm::dot(target - position, c.forward_);
+    c.half_height_ = height / 2;
+    c.half_width_ = c.half_height_ * double(cols) / rows;
+    return c;
+}
+
+Camera Camera::top(double north, double south, double east, double west,
+                   double above, int rows, int cols)
+{
+    check_image(rows, cols);
+    Camera c;
+    c.kind_ = Kind::top;
+    c.rows_ = rows;
+    c.cols_ = cols;
+    c.north_ = north;
+    c.west_ = west;
+    c.ns_res_ = (north - south) / rows;
+    c.ew_res_ = (east - west) / cols;
+    c.above_ = above;
+    c.forward_ = glm::dvec3(0, 0, -1);
+    c.position_ = glm::dvec3((east + west) / 2, (north + south) / 2, above);
+    return c;
+}
+
+Ray Camera::ray(int row, int col) const
+{
+    if (kind_ == Kind::top)
+        return {glm::dvec3(west_ + (col + 0.5) * ew_res_,
+                           north_ - (row + 0.5) * ns_res_, above_),
+                forward_};
+    const double x = ((col + 0.5) / cols_ * 2 - 1) * half_width_;
+    const double y = (1 - (row + 0.5) / rows_ * 2) * half_height_;
+    if (kind_ == Kind::orthographic)
+        return {position_ + right_ * x + up_ * y, forward_};
+    return {position_, glm::normalize(forward_ + right_ * x + up_ * y)};
+}
+
+} // namespace sbrt

@@ -1,0 +1,207 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   Option definitions (GUI sections as in m.nviz.image)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "render_options.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <thread>
+
+struct RenderOptions {
+    Option *input, *output, *material, *hit_elevation, *depth;
+    Option *view, *position, *target, *azimuth, *elevation, *distance, *fov,
+        *ortho_height, *zexag;
+    Option *light, *ambient, *background, *backend, *nprocs;
+};
+
+namespace {
+
+Option *define(const char *key, int type, const char *desc,
+               const char *section, const char *answer = nullptr)
+{
+    Option *o = G_define_option();
+    o->key = key;
+    o->type = type;
+    o->required = NO;
+    o->description = desc;
+    o->guisection = section;
+    if (answer)
+        o->answer = const_cast<char *>(answer);
+    return o;
+}
+
+Option *define_map_output(const char *key, const char *desc)
+{
+    Option *o = G_define_standard_option(G_OPT_R_OUTPUT);
+    o->key = key;
+    o->required = NO;
+    o->description = desc;
+    o->guisection = _("Output");
+    return o;
+}
+
+std::optional<glm::dvec3> read_point(const Option *o)
+{
+    if (!o->answers)
+        return std::nullopt;
+    glm::dvec3 p;
+    for (int i = 0; i < 3; ++i) {
+        if (!o->answers[i])
+            G_fatal_error(_("Option <%s> needs three values x,y,z"), o->key);
+        p[i] = std::atof(o->answers[i]);
+    }
+    return p;
+}
+
+double read_double(const Option *o)
+{
+    char *end = nullptr;
+    const double v = std::strtod(o->answer, &end);
+    if (*end || !std::isfinite(v))
+        G_fatal_error(_("Option <%s>: <%s> is not a number"), o->key, o->answer);
+    return v;
+}
+
+} // namespace
+
+RenderOptions *define_render_options()
+{
+    RenderOptions *o = new RenderOptions;
+    o->input = G_define_option();
+    o->input->key = "input";
+    o->input->type = TYPE_STRING;
+    o->input->required = YES;
+    o->input->key_desc = "name";
+    o->input->gisprompt = "old,sbrt,sbrt";
+    o->input->description = _("Name of the SBRT to render (from r3.sbrt.convert)");
+
+    o->output = G_define_standard_option(G_OPT_R_BASENAME_OUTPUT);
+    o->output->description =
+        _("Basename of the image: <output>.red, <output>.green, <output>.blue");
+    o->output->guisection = _("Output");
+    o->material = define_map_output(
+        "material", _("Raster map of the class of the first opaque hit"));
+    o->hit_elevation = define_map_output(
+        "hit_elevation", _("Raster map of the elevation (z) of the first hit"));
+    o->depth = define_map_output(
+        "depth", _("Raster map of the distance from the camera to the hit"));
+
+    o->view = define("view", TYPE_STRING, _("Projection of the view"),
+                     _("Camera"), "perspective");
+    o->view->options = "perspective,orthographic,top";
+    o->view->descriptions =
+        _("perspective;Perspective camera;"
+          "orthographic;Parallel rays along target - position;"
+          "top;Straight down, one pixel per cell of the current region "
+          "(georeferenced outputs)");
+    o->position = define("position", TYPE_DOUBLE,
+                         _("Camera position (map units, unexaggerated)"),
+                         _("Camera"));
+    o->position->key_desc = "x,y,z";
+    o->target = define("target", TYPE_DOUBLE,
+                       _("Point looked at (default: centre of the model)"),
+                       _("Camera"));
+    o->target->key_desc = "x,y,z";
+    o->azimuth = define("azimuth", TYPE_DOUBLE,
+                        _("Direction the camera looks from, degrees clockwise "
+                          "from north (without position=)"),
+                        _("Camera"), "225");
+    o->azimuth->options = "0-360";
+    o->elevation = define("elevation", TYPE_DOUBLE,
+                          _("Camera angle above the horizon, degrees (without "
+                            "position=)"),
+                          _("Camera"), "30");
+    o->elevation->options = "-90-90";
+    o->distance = define("distance", TYPE_DOUBLE,
+                         _("Distance from the target (default: frames the "
+                           "model; without position=)"),
+                         _("Camera"));
+    o->fov = define("fov", TYPE_DOUBLE,
+                    _("Vertical field of view, degrees"), _("Camera"), "40");
+    o->ortho_height = define("ortho_height", TYPE_DOUBLE,
+                             _("Height of an orthographic view, map units "
+                               "(default: frames the model)"),
+                             _("Camera"));
+    o->zexag = define("zexag", TYPE_DOUBLE,
+                      _("Vertical exaggeration (about the model's bottom)"),
+                      _("Camera"), "1");
+
+    o->light = define("light", TYPE_DOUBLE,
+                      _("Light direction: azimuth,elevation in degrees"),
+                      _("Shading"), "315,45");
+    o->light->key_desc = "azimuth,elevation";
+    o->ambient = define("ambient", TYPE_DOUBLE,
+                        _("Ambient light share (0-1)"), _("Shading"), "0.35");
+    o->ambient->options = "0-1";
+    o->background = G_define_standard_option(G_OPT_C);
+    o->background->key = "background";
+    o->background->answer = const_cast<char *>("white");
+    o->background->description = _("Colour where rays miss the model");
+    o->background->guisection = _("Shading");
+
+    o->backend = define("backend", TYPE_STRING,
+                        _("Renderer: exact multithreaded CPU ray caster"),
+                        _("Settings"), "auto");
+    o->backend->options = "auto,cpu";
+    o->nprocs = G_define_standard_option(G_OPT_M_NPROCS);
+    o->nprocs->answer = const_cast<char *>("0");
+    o->nprocs->description = _("Number of threads (0: all cores)");
+    o->nprocs->guisection = _("Settings");
+
+    G_option_exclusive(o->position, o->azimuth, NULL);
+    G_option_exclusive(o->position, o->distance, NULL);
+    return o;
+}
+
+RenderRequest read_render_options(const RenderOptions *o)
+{
+    RenderRequest r;
+    r.input = o->input->answer;
+    r.output = o->output->answer;
+    r.material = o->material->answer ? o->material->answer : "";
+    r.hit_elevation = o->hit_elevation->answer ? o->hit_elevation->answer : "";
+    r.depth = o->depth->answer ? o->depth->answer : "";
+    r.view = o->view->answer;
+    r.position = read_point(o->position);
+    r.target = read_point(o->target);
+    r.azimuth = read_double(o->azimuth);
+    r.elevation = read_double(o->elevation);
+    if (o->distance->answer) {
+        r.distance = read_double(o->distance);
+        if (!(*r.distance > 0))
+            G_fatal_error(_("distance= must be positive"));
+    }
+    r.fov = read_double(o->fov);
+    if (!(r.fov > 0 && r.fov < 180))
+        G_fatal_error(_("fov=%g: the field of view must lie between 0 and "
+                        "180 degrees"),
+                      r.fov);
+    if (o->ortho_height->answer) {
+        r.ortho_height = read_double(o->ortho_height);
+        if (!(*r.ortho_height > 0))
+            G_fatal_error(_("ortho_height= must be positive"));
+    }
+    r.zexag = read_double(o->zexag);
+    if (!(r.zexag > 0))
+        G_fatal_error(_("zexag=%g: the vertical exaggeration must be positive"),
+                      r.zexag);
+    if (!o->light->answers[1])
+        G_fatal_error(_("light= needs azimuth,elevation"));
+    r.light_azimuth = std::atof(o->light->answers[0]);
+    r.light_elevation = std::atof(o->light->answers[1]);
+    r.ambient = read_double(o->ambient);
+    int red, green, blue;
+    if (G_str_to_color(o->background->answer, &red, &green, &blue) != 1)
+        G_fatal_error(_("background=<%s> is not a colour"), o->background->answer);
+    r.background = {uint8_t(red), uint8_t(green), uint8_t(blue)};
+    r.backend = o->backend->answer;
+    r.threads = std::atoi(o->nprocs->answer);
+    if (r.threads < 0)
+        r.threads = std::max(1, int(std::thread::hardware_concurrency()) + r.threads);
+    if (r.position && r.target && *r.position == *r.target)
+        G_fatal_error(_("position= and target= are the same point: the "
+                        "camera has no direction"));
+    return r;
+}

@@ -1,0 +1,35 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   Options of the module and their validation
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_RENDER_OPTIONS_HPP
+#define R3_SBRT_RENDER_OPTIONS_HPP
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "grass.hpp"
+
+/// \brief Everything the user asked for, validated, map units.
+struct RenderRequest {
+    std::string input, output, material, hit_elevation, depth;
+    std::string view = "perspective";
+    std::optional<glm::dvec3> position, target;
+    double azimuth = 225, elevation = 30;
+    std::optional<double> distance, ortho_height;
+    double fov = 40, zexag = 1;
+    double light_azimuth = 315, light_elevation = 45, ambient = 0.35;
+    std::array<uint8_t, 3> background{255, 255, 255};
+    std::string backend = "auto";
+    int threads = 0;
+};
+
+struct RenderOptions;
+RenderOptions *define_render_options();
+RenderRequest read_render_options(const RenderOptions *options);
+
+#endif

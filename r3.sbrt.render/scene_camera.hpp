@@ -1,0 +1,18 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   The camera of a request, defaults framing the whole model
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_SCENE_CAMERA_HPP
+#define R3_SBRT_SCENE_CAMERA_HPP
+
+#include "camera.hpp"
+#include "render_options.hpp"
+#include "tracer.hpp"
+
+/// Camera for an image of the current region's rows x cols.
+sbrt::Camera make_camera(const RenderRequest &request,
+                         const sbrt::Tracer &tracer,
+                         const struct Cell_head &region);
+
+#endif
