@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+############################################################################
+# MODULE:    tools/demo.sh (r3.sbrt addon)
+# PURPOSE:   The main job on the built-in synthetic model: make the 3D
+#            raster, convert it to an SBRT (printing the memory comparison),
+#            render a perspective view and the geological map (top view),
+#            and write PNGs. Runs in a throw-away location.
+# USAGE:     make demo            (SIZE=S|A|B, default A; OUT=dir, default ./demo)
+# COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+############################################################################
+set -euo pipefail
+. "$(dirname "$0")/grass_env.sh"
+size=${SIZE:-A}
+out=$(mkdir -p "${OUT:-$SBRT_ROOT/demo}" && cd "${OUT:-$SBRT_ROOT/demo}" && pwd)
+sbrt_location "$(mktemp -d /tmp/r3sbrt_demo.XXXXXX)"
+cat >"$SBRT_GISDBASE/demo_job.sh" <<EOS
+set -euo pipefail
+"$SBRT_ROOT/tools/make_geomodel.sh" $size geology
+r3.sbrt.convert input=geology output=geology -p
+# a view from the south-west, 1056 x 884 pixels, vertical exaggeration 2
+g.region rows=884 cols=1056
+r3.sbrt.render --verbose input=geology output=view material=view_class zexag=2 light=300,50
+r.composite --q --o red=view.red green=view.green blue=view.blue output=view_rgb levels=256
+r.out.png --q --o input=view_rgb output="$out/r3_sbrt_demo_view.png"
+# the geological map: a top view in the model's own grid
+g.region raster_3d=geology
+r3.sbrt.render --q input=geology output=map view=top material=map_class
+r.composite --q --o red=map.red green=map.green blue=map.blue output=map_rgb levels=256
+r.out.png --q --o input=map_rgb output="$out/r3_sbrt_demo_map.png"
+r.stats -l -p -n map_class
+EOS
+in_grass PERMANENT bash "$SBRT_GISDBASE/demo_job.sh"
+echo "demo: images written to $out/r3_sbrt_demo_view.png and $out/r3_sbrt_demo_map.png"
