@@ -9,6 +9,46 @@
 
 #include <glm/geometric.hpp>
 
+namespace {
+
+/// Smallest distance along `offset` (unit) from `target` at which the eight
+/// corners of the model's box lie inside 95 % of the image (bisection).
+double framing_distance(const sbrt::Tracer &tracer, glm::dvec3 target,
+                        glm::dvec3 offset, double fov, double aspect)
+{
+    const glm::dvec3 c = tracer.centre();
+    const double r = tracer.radius();
+    const double tan_y = std::tan(fov * M_PI / 360), tan_x = tan_y * aspect;
+    const glm::dvec3 forward = -offset;
+    glm::dvec3 world_up(0, 0, 1);
+    if (std::fabs(forward.z) > 1 - 1e-12)
+        world_up = glm::dvec3(0, 1, 0);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, world_up));
+    const glm::dvec3 up = glm::cross(right, forward);
+    auto fits = [&](double d) {
+        const glm::dvec3 eye = target + offset * d;
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 corner = tracer.corner(k);
+            const glm::dvec3 v = corner - eye;
+            const double z = glm::dot(v, forward);
+            if (z <= 0)
+                return false;
+            if (std::fabs(glm::dot(v, right)) > 0.95 * tan_x * z ||
+                std::fabs(glm::dot(v, up)) > 0.95 * tan_y * z)
+                return false;
+        }
+        return true;
+    };
+    double low = 0, high = (glm::length(target - c) + r) / std::sin(fov * M_PI / 360) * 1.1;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = (low + high) / 2;
+        (fits(mid) ? high : low) = mid;
+    }
+    return high;
+}
+
+} // namespace
+
 sbrt::Camera make_camera(const RenderRequest &r, const sbrt::Tracer &tracer,
                          const struct Cell_head &region)
 {
@@ -29,11 +69,13 @@ sbrt::Camera make_camera(const RenderRequest &r, const sbrt::Tracer &tracer,
     else {
         // around the target: azimuth is where the camera looks from
         const double az = r.azimuth * M_PI / 180, el = r.elevation * M_PI / 180;
-        const double frame = radius / std::sin(r.fov * M_PI / 360) * 1.02;
-        const double distance = r.distance ? *r.distance : frame;
-        position = target + distance * glm::dvec3(std::sin(az) * std::cos(el),
-                                                  std::cos(az) * std::cos(el),
-                                                  std::sin(el));
+        const glm::dvec3 offset(std::sin(az) * std::cos(el),
+                                std::cos(az) * std::cos(el), std::sin(el));
+        const double distance =
+            r.distance ? *r.distance
+                       : framing_distance(tracer, target, offset, r.fov,
+                                          double(cols) / rows);
+        position = target + distance * offset;
     }
     if (r.view == "orthographic") {
         // rays start outside the model whatever position= says

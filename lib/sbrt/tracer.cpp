@@ -80,6 +80,13 @@ glm::dvec3 Tracer::centre() const
                        (f.bottom + top_elevation()) / 2});
 }
 
+glm::dvec3 Tracer::corner(int k) const
+{
+    const Frame &f = model_.frame();
+    return exaggerate({k & 1 ? f.east : f.west, k & 2 ? f.north : f.south,
+                       k & 4 ? top_elevation() : f.bottom});
+}
+
 double Tracer::radius() const
 {
     const Frame &f = model_.frame();

@@ -42,6 +42,9 @@ public:
     /// Centre and half-diagonal of the model's box (exaggerated).
     glm::dvec3 centre() const;
     double radius() const;
+    /// Corner k (0..7, bit 0 east, bit 1 north, bit 2 top) of the model's
+    /// box, exaggerated map coordinates.
+    glm::dvec3 corner(int k) const;
     /// Top of the highest interval, map units.
     double top_elevation() const;
 
