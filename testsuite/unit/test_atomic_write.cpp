@@ -23,11 +23,7 @@ namespace {
 
 Model model_with_seed(unsigned seed, int size)
 {
-    const auto v = sbrt_test::random_voxels(seed, size, size, 40);
-    VoxelStackBuilder b(v.frame);
-    for (int z = 0; z < v.frame.depths; ++z)
-        b.add_slice(v.slice(z));
-    return b.finish();
+    return sbrt_test::build_model(sbrt_test::random_voxels(seed, size, size, 40));
 }
 
 } // namespace

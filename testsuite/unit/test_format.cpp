@@ -21,11 +21,7 @@ namespace {
 
 std::vector<uint8_t> sample_file()
 {
-    const auto v = sbrt_test::random_voxels(21, 6, 7, 20);
-    VoxelStackBuilder b(v.frame);
-    for (int z = 0; z < v.frame.depths; ++z)
-        b.add_slice(v.slice(z));
-    return encode_stacks(b.finish());
+    return encode_stacks(sbrt_test::build_model(sbrt_test::random_voxels(21, 6, 7, 20)));
 }
 
 std::string message_of(const std::vector<uint8_t> &bytes)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "model.hpp"
+#include "voxel_builder.hpp"
 
 namespace sbrt_test {
 
@@ -55,6 +56,15 @@ inline Voxels random_voxels(unsigned seed, int rows, int cols, int depths,
             }
         }
     return v;
+}
+
+/// The SBRT of a voxel model, built slice by slice.
+inline sbrt::Model build_model(const Voxels &v)
+{
+    sbrt::VoxelStackBuilder builder(v.frame);
+    for (int z = 0; z < v.frame.depths; ++z)
+        builder.add_slice(v.slice(z));
+    return builder.finish();
 }
 
 inline std::string temp_dir(const std::string &tag)

@@ -76,14 +76,6 @@ VoxelHit march(const sbrt_test::Voxels &v, glm::dvec3 o, glm::dvec3 d)
     }
 }
 
-Model build(const sbrt_test::Voxels &v)
-{
-    VoxelStackBuilder b(v.frame);
-    for (int z = 0; z < v.frame.depths; ++z)
-        b.add_slice(v.slice(z));
-    return b.finish();
-}
-
 } // namespace
 
 TEST(Tracer, AgreesWithIndependentVoxelWalk)
@@ -99,7 +91,7 @@ TEST(Tracer, AgreesWithIndependentVoxelWalk)
         v.frame.north = v.frame.rows;
         v.frame.bottom = 0;
         v.frame.top = v.frame.depths;
-        const Model m = build(v);
+        const Model m = sbrt_test::build_model(v);
         const Tracer tracer(m, 1.0);
         std::mt19937 rng(seed);
         std::uniform_real_distribution<double> u(-1, 1);
@@ -129,7 +121,7 @@ TEST(Tracer, AgreesWithIndependentVoxelWalk)
 TEST(Tracer, TopViewSeesTheTopmostSolidVoxel)
 {
     const auto v = sbrt_test::random_voxels(42, 13, 11, 20, 5);
-    const Model m = build(v);
+    const Model m = sbrt_test::build_model(v);
     const Frame &f = v.frame;
     const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e4,
                                    f.rows, f.cols);
@@ -152,7 +144,7 @@ TEST(Tracer, TopViewSeesTheTopmostSolidVoxel)
 TEST(Tracer, ExaggerationKeepsWhatIsHitOnAVerticalRay)
 {
     const auto v = sbrt_test::random_voxels(8, 6, 6, 10, 4);
-    const Model m = build(v);
+    const Model m = sbrt_test::build_model(v);
     const Frame &f = v.frame;
     const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e5,
                                    f.rows, f.cols);

@@ -17,14 +17,6 @@ using sbrt_test::random_voxels;
 
 namespace {
 
-Model build(const sbrt_test::Voxels &v)
-{
-    VoxelStackBuilder builder(v.frame);
-    for (int z = 0; z < v.frame.depths; ++z)
-        builder.add_slice(v.slice(z));
-    return builder.finish();
-}
-
 std::vector<int32_t> expand(const Model &m, const Frame &target)
 {
     VoxelExpander expander(m, target);
@@ -41,7 +33,7 @@ TEST(VoxelRoundTrip, RandomColumnsSurviveBuildEncodeDecodeExpand)
     for (unsigned seed = 1; seed <= 20; ++seed) {
         const auto v = random_voxels(seed, 3 + seed % 7, 2 + seed % 5,
                                      1 + int(seed * 5 % 37));
-        const Model m = build(v);
+        const Model m = sbrt_test::build_model(v);
         m.validate();
         const auto bytes = encode_stacks(m);
         const Model back = decode_stacks(bytes.data(), bytes.size(), "mem");
@@ -52,7 +44,7 @@ TEST(VoxelRoundTrip, RandomColumnsSurviveBuildEncodeDecodeExpand)
 TEST(VoxelRoundTrip, IntervalsAreMaximalRuns)
 {
     const auto v = random_voxels(99, 6, 5, 40);
-    const Model m = build(v);
+    const Model m = sbrt_test::build_model(v);
     // count runs independently: every class change along a column, and a
     // trailing null run is not stored
     uint64_t runs = 0;
@@ -72,7 +64,7 @@ TEST(VoxelRoundTrip, IntervalsAreMaximalRuns)
 TEST(VoxelRoundTrip, StatsFollowTableOne)
 {
     const auto v = random_voxels(7, 10, 8, 30);
-    const Model m = build(v);
+    const Model m = sbrt_test::build_model(v);
     const Stats s = m.stats();
     EXPECT_EQ(s.voxels, 10u * 8u * 30u);
     EXPECT_EQ(s.voxel_bytes, s.voxels * 4);
@@ -91,7 +83,7 @@ TEST(VoxelRoundTrip, SingleVoxelLayersAndCaves)
     v.frame.depths = 7;
     // bottom up: 3, null (cave), 4, 4, 5 (one voxel), null, null (air)
     v.classes = {3, NULL_CLASS, 4, 4, 5, NULL_CLASS, NULL_CLASS};
-    const Model m = build(v);
+    const Model m = sbrt_test::build_model(v);
     ASSERT_EQ(m.intervals().size(), 4u);
     EXPECT_EQ(m.intervals()[1].material, EMPTY);
     EXPECT_FLOAT_EQ(m.intervals()[3].top, 5.0f);
@@ -101,7 +93,7 @@ TEST(VoxelRoundTrip, SingleVoxelLayersAndCaves)
 TEST(VoxelRoundTrip, ExpansionInAnotherRegionSamplesNearestCell)
 {
     const auto v = random_voxels(5, 4, 4, 8);
-    const Model m = build(v);
+    const Model m = sbrt_test::build_model(v);
     Frame half = v.frame; // same extent, every other column and depth
     half.cols = 2;
     half.depths = 4;
