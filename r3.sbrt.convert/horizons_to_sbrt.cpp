@@ -17,7 +17,7 @@ namespace {
 /// One 2D raster read row by row into doubles (NaN for null).
 class RasterRows {
 public:
-    explicit RasterRows(const char *name) : name_(name)
+    explicit RasterRows(const char *name)
     {
         fd_ = Rast_open_old(name, "");
         buffer_ = Rast_allocate_d_buf();
@@ -40,7 +40,6 @@ public:
     }
 
 private:
-    const char *name_;
     int fd_;
     DCELL *buffer_;
     std::vector<double> values_;

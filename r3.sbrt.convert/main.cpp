@@ -159,7 +159,8 @@ void run(const Options &o)
         print_report(input, sbrt_grass::read_sbrt_map(input), o.shell->answer);
         return;
     }
-    sbrt_grass::new_sbrt_path(output, overwrite); // fail before the work
+    // checked before the work, written after it
+    const std::string path = sbrt_grass::new_sbrt_path(output, overwrite);
     sbrt::Model model;
     std::string source;
     if (o.horizons->answers) {
@@ -174,7 +175,7 @@ void run(const Options &o)
         model = voxels_to_sbrt(input, classifier);
         source = std::string("3D raster map ") + input;
     }
-    sbrt_grass::write_sbrt_map(output, model, source);
+    sbrt_grass::write_sbrt_map(output, path, model, source);
     if (report)
         print_report(output, model, o.shell->answer);
 }

@@ -59,7 +59,7 @@ int main(int argc, char *argv[])
     module->description =
         _("Renders a stack-based terrain model (SBRT) with an exact ray "
           "caster into raster maps.");
-    RenderOptions *options = define_render_options();
+    const RenderOptions options = define_render_options();
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
     const RenderRequest request = read_render_options(options);

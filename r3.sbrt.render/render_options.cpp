@@ -9,13 +9,6 @@
 #include <cstdlib>
 #include <thread>
 
-struct RenderOptions {
-    Option *input, *output, *material, *hit_elevation, *depth;
-    Option *view, *position, *target, *azimuth, *elevation, *distance, *fov,
-        *ortho_height, *zexag;
-    Option *light, *ambient, *background, *backend, *nprocs;
-};
-
 namespace {
 
 Option *define(const char *key, int type, const char *desc,
@@ -66,9 +59,10 @@ double read_double(const Option *o)
 
 } // namespace
 
-RenderOptions *define_render_options()
+RenderOptions define_render_options()
 {
-    RenderOptions *o = new RenderOptions;
+    RenderOptions options;
+    RenderOptions *o = &options;
     o->input = G_define_option();
     o->input->key = "input";
     o->input->type = TYPE_STRING;
@@ -152,11 +146,12 @@ RenderOptions *define_render_options()
 
     G_option_exclusive(o->position, o->azimuth, NULL);
     G_option_exclusive(o->position, o->distance, NULL);
-    return o;
+    return options;
 }
 
-RenderRequest read_render_options(const RenderOptions *o)
+RenderRequest read_render_options(const RenderOptions &options)
 {
+    const RenderOptions *o = &options;
     RenderRequest r;
     r.input = o->input->answer;
     r.output = o->output->answer;

@@ -28,8 +28,15 @@ struct RenderRequest {
     int threads = 0;
 };
 
-struct RenderOptions;
-RenderOptions *define_render_options();
-RenderRequest read_render_options(const RenderOptions *options);
+/// \brief The parser's options and flags of the module.
+struct RenderOptions {
+    Option *input, *output, *material, *hit_elevation, *depth;
+    Option *view, *position, *target, *azimuth, *elevation, *distance, *fov,
+        *ortho_height, *zexag;
+    Option *light, *ambient, *background, *backend, *nprocs;
+};
+
+RenderOptions define_render_options();
+RenderRequest read_render_options(const RenderOptions &options);
 
 #endif

@@ -20,11 +20,8 @@ double framing_distance(const sbrt::Tracer &tracer, glm::dvec3 target,
     const double r = tracer.radius();
     const double tan_y = std::tan(fov * M_PI / 360), tan_x = tan_y * aspect;
     const glm::dvec3 forward = -offset;
-    glm::dvec3 world_up(0, 0, 1);
-    if (std::fabs(forward.z) > 1 - 1e-12)
-        world_up = glm::dvec3(0, 1, 0);
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, world_up));
-    const glm::dvec3 up = glm::cross(right, forward);
+    glm::dvec3 right, up;
+    sbrt::view_basis(forward, right, up);
     auto fits = [&](double d) {
         const glm::dvec3 eye = target + offset * d;
         for (int k = 0; k < 8; ++k) {

@@ -59,10 +59,9 @@ std::string new_sbrt_path(const char *name, bool overwrite)
     return path;
 }
 
-void write_sbrt_map(const char *name, const sbrt::Model &model,
-                    const std::string &source)
+void write_sbrt_map(const char *name, const std::string &path,
+                    const sbrt::Model &model, const std::string &source)
 {
-    const std::string path = new_sbrt_path(name, G_check_overwrite(0, nullptr));
     const time_t now = time(nullptr);
     char date[64];
     strftime(date, sizeof date, "%a %b %d %H:%M:%S %Y", localtime(&now));

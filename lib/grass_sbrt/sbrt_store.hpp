@@ -24,9 +24,10 @@ sbrt::Model read_sbrt_map(const char *name);
 /// Checks the name and overwrite rules, then returns the directory of the
 /// new SBRT in the current mapset.
 std::string new_sbrt_path(const char *name, bool overwrite);
-/// Writes an SBRT atomically into the current mapset, with history.
-void write_sbrt_map(const char *name, const sbrt::Model &model,
-                    const std::string &source);
+/// Writes SBRT `name` atomically to `path` (from new_sbrt_path), with
+/// history.
+void write_sbrt_map(const char *name, const std::string &path,
+                    const sbrt::Model &model, const std::string &source);
 /// "name@mapset" of every SBRT in the search path, mapset by mapset.
 std::vector<std::string> list_sbrts();
 /// Fatal error if a 3D raster `name` exists in the current mapset and

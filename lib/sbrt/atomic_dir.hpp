@@ -29,8 +29,6 @@ public:
     /// where the file system has it, else two renames) and drops the old one.
     void commit();
 
-    const std::string &temporary_path() const { return temp_; }
-
 private:
     std::string target_;
     std::string temp_;

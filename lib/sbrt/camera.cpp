@@ -13,10 +13,6 @@
 
 namespace sbrt {
 
-namespace {
-
-/// Right and up vectors of a view along `forward`; +z is up unless the
-/// view is vertical, then north (+y) is up.
 void view_basis(glm::dvec3 forward, glm::dvec3 &right, glm::dvec3 &up)
 {
     glm::dvec3 world_up(0, 0, 1);
@@ -25,6 +21,8 @@ void view_basis(glm::dvec3 forward, glm::dvec3 &right, glm::dvec3 &up)
     right = glm::normalize(glm::cross(forward, world_up));
     up = glm::cross(right, forward);
 }
+
+namespace {
 
 void check_image(int rows, int cols)
 {

@@ -19,6 +19,10 @@ struct Ray {
     glm::dvec3 direction; ///< unit length
 };
 
+/// Right and up vectors of a view along unit `forward`: +z is up unless the
+/// view is vertical, then north (+y) is up.
+void view_basis(glm::dvec3 forward, glm::dvec3 &right, glm::dvec3 &up);
+
 /// \brief Pixel (row, col) of a rows x cols image -> ray. Pixel (r, c)
 /// looks through the image-plane point at normalised device coordinates
 /// ((c + 0.5) / cols * 2 - 1, 1 - (r + 0.5) / rows * 2).
@@ -36,10 +40,8 @@ public:
                       double above, int rows, int cols);
 
     Ray ray(int row, int col) const;
-    Kind kind() const { return kind_; }
     int rows() const { return rows_; }
     int cols() const { return cols_; }
-    glm::dvec3 position() const { return position_; }
 
 private:
     Kind kind_ = Kind::perspective;

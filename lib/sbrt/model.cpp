@@ -47,20 +47,6 @@ int64_t Model::find_material(int32_t id) const
     return -1;
 }
 
-uint32_t Model::material_at(uint64_t cell, double z) const
-{
-    const uint32_t end = stack_end(cell);
-    // first interval whose top lies above z
-    auto first = intervals_.begin() + stack_begin(cell);
-    auto last = intervals_.begin() + end;
-    auto it = std::upper_bound(
-        first, last, z,
-        [](double value, const Interval &iv) { return value < iv.top; });
-    if (it == last || z < 0)
-        return EMPTY;
-    return it->material;
-}
-
 Stats Model::stats() const
 {
     Stats s;

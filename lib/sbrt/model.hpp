@@ -93,8 +93,6 @@ public:
     }
     /// Material index whose class id is `id`, or -1.
     int64_t find_material(int32_t id) const;
-    /// Material index at local height z in a cell (EMPTY above the stack).
-    uint32_t material_at(uint64_t cell, double z) const;
 
     Stats stats() const;
     /// Checks every invariant (sorted tops, merged runs, no trailing EMPTY,

@@ -89,10 +89,7 @@ glm::dvec3 Tracer::corner(int k) const
 
 double Tracer::radius() const
 {
-    const Frame &f = model_.frame();
-    const glm::dvec3 low = exaggerate({f.west, f.south, f.bottom});
-    const glm::dvec3 high = exaggerate({f.east, f.north, top_elevation()});
-    return glm::length(high - low) / 2;
+    return glm::length(corner(7) - corner(0)) / 2;
 }
 
 bool Tracer::hit_in_cell(uint64_t cell, double z_in, double z_out, double oz,

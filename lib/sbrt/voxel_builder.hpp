@@ -27,8 +27,6 @@ public:
     /// Closes the open runs; `legend` gives labels and colours by class id.
     Model finish(const std::vector<Material> &legend = {});
 
-    int slices_done() const { return depth_; }
-
 private:
     struct Run {
         uint32_t cell;
