@@ -7,6 +7,7 @@ MODULE_TOPDIR ?= /usr/lib/grass82
 SUBDIRS = \
 	lib/sbrt \
 	lib/grass_sbrt \
+	lib/sbrt_gl \
 	r3.sbrt.convert \
 	r3.sbrt.render
 

@@ -1,5 +1,6 @@
 # Shared rules of the r3.sbrt modules, included by each module Makefile after it names its program.
-# Links the static libraries lib/grass_sbrt and lib/sbrt (GRASS-NOTES 1.3).
+# Links the static libraries lib/grass_sbrt and lib/sbrt (GRASS-NOTES 1.3),
+# and lib/sbrt_gl with EGL (and OSMesa) when the module sets SBRT_USES_GL.
 MODULE_TOPDIR ?= /usr/lib/grass82
 
 SBRT_DIR = ../lib/sbrt
@@ -16,7 +17,15 @@ include $(MODULE_TOPDIR)/include/Make/Module.make
 LINK = $(CXX)
 CXXFLAGS += -std=c++17 -Wall -Wextra -O2 -pthread
 SBRT_STLIBS = $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/$(OBJDIR)/libsbrt.a
-LIBES := $(SBRT_STLIBS) $(LIBES) $(ZLIB) -pthread
+ifdef SBRT_USES_GL
+# the GL library (lib/sbrt_gl) comes before the core library it uses
+include ../lib/gl_config.make
+SBRT_GL_DIR = ../lib/sbrt_gl
+EXTRA_INC += -I$(SBRT_GL_DIR)
+EXTRA_HEADERS += $(wildcard $(SBRT_GL_DIR)/*.hpp)
+SBRT_STLIBS := $(SBRT_GL_DIR)/$(OBJDIR)/libsbrt_gl.a $(SBRT_STLIBS)
+endif
+LIBES := $(SBRT_STLIBS) $(LIBES) $(SBRT_GL_LIBS) $(ZLIB) -pthread
 DEPENDENCIES += $(SBRT_STLIBS)
 
 default: cmd

@@ -5,22 +5,24 @@
  *            (and material, elevation, depth of the first hit) as rasters
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
-#include <chrono>
 #include <cstdlib>
 
-#include "cpu_renderer.hpp"
+#include "backend.hpp"
 #include "error.hpp"
 #include "grass.hpp"
+#include "material_colors.hpp"
 #include "raster_output.hpp"
 #include "render_options.hpp"
 #include "sbrt_store.hpp"
 #include "scene_camera.hpp"
+#include "shading.hpp"
 
 namespace {
 
 void run(const RenderRequest &request)
 {
-    const sbrt::Model model = sbrt_grass::read_sbrt_map(request.input.c_str());
+    sbrt::Model model = sbrt_grass::read_sbrt_map(request.input.c_str());
+    apply_color_option(request, model);
     struct Cell_head region;
     G_get_window(&region);
     const sbrt::Tracer tracer(model, request.zexag);
@@ -31,17 +33,14 @@ void run(const RenderRequest &request)
                                               request.light_elevation);
     shading.ambient = request.ambient;
     shading.background = request.background;
+    shading.normals = request.normals == "kernel" ? sbrt::Normals::kernel
+                                                  : sbrt::Normals::face;
+    shading.kernel = request.kernel;
+    shading.smooth = request.smooth;
 
-    G_verbose_message(_("Backend: cpu (exact double-precision ray caster)"));
-    const auto start = std::chrono::steady_clock::now();
-    const sbrt::Image image = sbrt::render_cpu(model, camera, request.zexag,
-                                               shading, unsigned(request.threads));
-    const double ms = std::chrono::duration<double, std::milli>(
-                          std::chrono::steady_clock::now() - start)
-                          .count();
-    G_verbose_message(_("Rendered %d x %d pixels in %.1f ms (%.2f Mrays/s)"),
-                      image.cols, image.rows, ms,
-                      image.rows * double(image.cols) / ms / 1000);
+    std::vector<sbrt::Hit> hits = trace_hits(request, tracer, camera);
+    const sbrt::Image image = sbrt::shade(tracer, camera, std::move(hits), shading,
+                                          unsigned(request.threads));
     write_image_maps(request, model, image);
 }
 

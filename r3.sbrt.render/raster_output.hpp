@@ -7,7 +7,7 @@
 #ifndef R3_SBRT_RASTER_OUTPUT_HPP
 #define R3_SBRT_RASTER_OUTPUT_HPP
 
-#include "cpu_renderer.hpp"
+#include "shading.hpp"
 #include "render_options.hpp"
 
 /// Writes <output>.red/.green/.blue and the optional maps of the request.

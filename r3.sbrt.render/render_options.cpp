@@ -135,15 +135,48 @@ RenderOptions define_render_options()
     o->background->description = _("Colour where rays miss the model");
     o->background->guisection = _("Shading");
 
-    o->backend = define("backend", TYPE_STRING,
-                        _("Renderer: exact multithreaded CPU ray caster"),
-                        _("Settings"), "auto");
-    o->backend->options = "auto,cpu";
+    o->normals = define("normals", TYPE_STRING, _("Surface normals for lighting"),
+                        _("Shading"), "face");
+    o->normals->options = "face,kernel";
+    o->normals->descriptions =
+        _("face;Exact normal of the cell wall, top or bottom that was hit;"
+          "kernel;Image-space k x k x k kernel over the depth image "
+          "(smoother, as in Graciano et al. 2018)");
+    o->kernel = define("kernel", TYPE_INTEGER,
+                       _("Kernel size k of normals=kernel (odd)"),
+                       _("Shading"), "5");
+    o->kernel->options = "3-11";
+    o->smooth = define("smooth", TYPE_DOUBLE,
+                       _("Gaussian smoothing of the normals, sigma in pixels "
+                         "(0: none)"),
+                       _("Shading"), "0");
+    o->color = G_define_standard_option(G_OPT_M_COLR);
+    o->color->description =
+        _("Colour table for the materials instead of their stored colours");
+    o->color->guisection = _("Shading");
+    o->rules = G_define_standard_option(G_OPT_F_INPUT);
+    o->rules->key = "rules";
+    o->rules->required = NO;
+    o->rules->label = _("Colour rules for the materials (as r3.colors rules=)");
+    o->rules->description =
+        _("Lines of 'class colour', 'nv colour', 'default colour'; '-' reads stdin");
+    o->rules->guisection = _("Shading");
+
+    o->backend = define("backend", TYPE_STRING, _("Renderer"), _("Settings"),
+                        "auto");
+    o->backend->options = "auto,egl,osmesa,cpu";
+    o->backend->descriptions =
+        _("auto;GPU through EGL, else OSMesa, else (or where the only "
+          "OpenGL is a slower software one) the CPU ray caster;"
+          "egl;OpenGL compute shader, headless EGL context;"
+          "osmesa;OpenGL compute shader, OSMesa context (Mesa < 25.1);"
+          "cpu;Exact multithreaded CPU ray caster");
     o->nprocs = G_define_standard_option(G_OPT_M_NPROCS);
     o->nprocs->answer = const_cast<char *>("0");
     o->nprocs->description = _("Number of threads (0: all cores)");
     o->nprocs->guisection = _("Settings");
 
+    G_option_exclusive(o->color, o->rules, NULL);
     G_option_exclusive(o->position, o->azimuth, NULL);
     G_option_exclusive(o->position, o->distance, NULL);
     return options;
@@ -191,6 +224,17 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (G_str_to_color(o->background->answer, &red, &green, &blue) != 1)
         G_fatal_error(_("background=<%s> is not a colour"), o->background->answer);
     r.background = {uint8_t(red), uint8_t(green), uint8_t(blue)};
+    r.normals = o->normals->answer;
+    r.kernel = std::atoi(o->kernel->answer);
+    if (r.kernel % 2 == 0)
+        G_fatal_error(_("kernel=%d: the kernel size must be odd (3, 5, 7, 9 "
+                        "or 11)"),
+                      r.kernel);
+    r.smooth = read_double(o->smooth);
+    if (r.smooth < 0)
+        G_fatal_error(_("smooth=%g must not be negative"), r.smooth);
+    r.color = o->color->answer ? o->color->answer : "";
+    r.rules = o->rules->answer ? o->rules->answer : "";
     r.backend = o->backend->answer;
     r.threads = std::atoi(o->nprocs->answer);
     if (r.threads < 0)

@@ -24,6 +24,10 @@ struct RenderRequest {
     double fov = 40, zexag = 1;
     double light_azimuth = 315, light_elevation = 45, ambient = 0.35;
     std::array<uint8_t, 3> background{255, 255, 255};
+    std::string normals = "face";
+    int kernel = 5;
+    double smooth = 0;
+    std::string color, rules; ///< colour table name or rules file
     std::string backend = "auto";
     int threads = 0;
 };
@@ -33,7 +37,9 @@ struct RenderOptions {
     Option *input, *output, *material, *hit_elevation, *depth;
     Option *view, *position, *target, *azimuth, *elevation, *distance, *fov,
         *ortho_height, *zexag;
-    Option *light, *ambient, *background, *backend, *nprocs;
+    Option *light, *ambient, *background, *normals, *kernel, *smooth, *color,
+        *rules;
+    Option *backend, *nprocs;
 };
 
 RenderOptions define_render_options();

@@ -52,11 +52,13 @@ Camera Camera::perspective(glm::dvec3 position, glm::dvec3 target,
     c.kind_ = Kind::perspective;
     c.rows_ = rows;
     c.cols_ = cols;
-    c.position_ = position;
+    c.origin_ = position;
     c.forward_ = view_direction(position, target);
-    view_basis(c.forward_, c.right_, c.up_);
-    c.half_height_ = std::tan(fov_degrees * M_PI / 360.0);
-    c.half_width_ = c.half_height_ * double(cols) / rows;
+    glm::dvec3 right, up;
+    view_basis(c.forward_, right, up);
+    const double half_height = std::tan(fov_degrees * M_PI / 360.0);
+    c.du_ = right * (half_height * cols / rows);
+    c.dv_ = up * half_height;
     return c;
 }
 
@@ -71,11 +73,12 @@ Camera Camera::orthographic(glm::dvec3 position, glm::dvec3 target,
     c.rows_ = rows;
     c.cols_ = cols;
     c.forward_ = view_direction(position, target);
-    view_basis(c.forward_, c.right_, c.up_);
+    glm::dvec3 right, up;
+    view_basis(c.forward_, right, up);
     // centred on the target, rays start where the camera stands
-    c.position_ = target - c.forward_ * glm::dot(target - position, c.forward_);
-    c.half_height_ = height / 2;
-    c.half_width_ = c.half_height_ * double(cols) / rows;
+    c.origin_ = target - c.forward_ * glm::dot(target - position, c.forward_);
+    c.du_ = right * (height / 2 * cols / rows);
+    c.dv_ = up * (height / 2);
     return c;
 }
 
@@ -87,27 +90,20 @@ Camera Camera::top(double north, double south, double east, double west,
     c.kind_ = Kind::top;
     c.rows_ = rows;
     c.cols_ = cols;
-    c.north_ = north;
-    c.west_ = west;
-    c.ns_res_ = (north - south) / rows;
-    c.ew_res_ = (east - west) / cols;
-    c.above_ = above;
     c.forward_ = glm::dvec3(0, 0, -1);
-    c.position_ = glm::dvec3((east + west) / 2, (north + south) / 2, above);
+    c.origin_ = glm::dvec3((east + west) / 2, (north + south) / 2, above);
+    c.du_ = glm::dvec3((east - west) / 2, 0, 0);
+    c.dv_ = glm::dvec3(0, (north - south) / 2, 0);
     return c;
 }
 
 Ray Camera::ray(int row, int col) const
 {
-    if (kind_ == Kind::top)
-        return {glm::dvec3(west_ + (col + 0.5) * ew_res_,
-                           north_ - (row + 0.5) * ns_res_, above_),
-                forward_};
-    const double x = ((col + 0.5) / cols_ * 2 - 1) * half_width_;
-    const double y = (1 - (row + 0.5) / rows_ * 2) * half_height_;
-    if (kind_ == Kind::orthographic)
-        return {position_ + right_ * x + up_ * y, forward_};
-    return {position_, glm::normalize(forward_ + right_ * x + up_ * y)};
+    const double x = (col + 0.5) / cols_ * 2 - 1;
+    const double y = 1 - (row + 0.5) / rows_ * 2;
+    if (parallel())
+        return {origin_ + du_ * x + dv_ * y, forward_};
+    return {origin_, glm::normalize(forward_ + du_ * x + dv_ * y)};
 }
 
 } // namespace sbrt

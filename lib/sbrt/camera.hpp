@@ -25,7 +25,10 @@ void view_basis(glm::dvec3 forward, glm::dvec3 &right, glm::dvec3 &up);
 
 /// \brief Pixel (row, col) of a rows x cols image -> ray. Pixel (r, c)
 /// looks through the image-plane point at normalised device coordinates
-/// ((c + 0.5) / cols * 2 - 1, 1 - (r + 0.5) / rows * 2).
+/// (x, y) = ((c + 0.5) / cols * 2 - 1, 1 - (r + 0.5) / rows * 2).
+/// Every kind is linear in (x, y): a perspective ray starts at `origin`
+/// along normalize(forward + x du + y dv); a parallel ray starts at
+/// origin + x du + y dv along `forward`.
 class Camera {
 public:
     enum class Kind { perspective, orthographic, top };
@@ -42,13 +45,17 @@ public:
     Ray ray(int row, int col) const;
     int rows() const { return rows_; }
     int cols() const { return cols_; }
+    bool parallel() const { return kind_ != Kind::perspective; }
+    glm::dvec3 origin() const { return origin_; }
+    glm::dvec3 forward() const { return forward_; }
+    /// Image-plane steps per unit of normalised device x and y.
+    glm::dvec3 du() const { return du_; }
+    glm::dvec3 dv() const { return dv_; }
 
 private:
     Kind kind_ = Kind::perspective;
     int rows_ = 1, cols_ = 1;
-    glm::dvec3 position_{0}, forward_{0, 0, -1}, right_{1, 0, 0}, up_{0, 1, 0};
-    double half_height_ = 1, half_width_ = 1; ///< tan(fov/2) or map units
-    double north_ = 0, west_ = 0, ns_res_ = 1, ew_res_ = 1, above_ = 0;
+    glm::dvec3 origin_{0}, forward_{0, 0, -1}, du_{1, 0, 0}, dv_{0, 1, 0};
 };
 
 } // namespace sbrt

@@ -14,10 +14,6 @@
 
 namespace sbrt {
 
-namespace {
-
-constexpr double INF = std::numeric_limits<double>::infinity();
-
 glm::dvec3 face_normal(Face face)
 {
     switch (face) {
@@ -30,6 +26,10 @@ glm::dvec3 face_normal(Face face)
     default: return {0, 0, 0};
     }
 }
+
+namespace {
+
+constexpr double INF = std::numeric_limits<double>::infinity();
 
 /// Face through which a ray moving along `axis` with sign of `d` enters.
 Face entry_face(int axis, double d)
@@ -68,6 +68,19 @@ glm::dvec3 Tracer::unexaggerate(glm::dvec3 p) const
     return {p.x, p.y, b + (p.z - b) / zexag_};
 }
 
+glm::dvec3 Tracer::to_local(glm::dvec3 p) const
+{
+    const Frame &f = model_.frame();
+    return (p - glm::dvec3(f.west, f.south, f.bottom)) * scale_;
+}
+
+glm::dvec3 Tracer::from_local(glm::dvec3 local) const
+{
+    const Frame &f = model_.frame();
+    return {f.west + local.x * f.ew_res(), f.south + local.y * f.ns_res(),
+            f.bottom + local.z * f.tb_res()};
+}
+
 double Tracer::top_elevation() const
 {
     return model_.frame().bottom + z_max_local_ * model_.frame().tb_res();
@@ -97,7 +110,8 @@ bool Tracer::hit_in_cell(uint64_t cell, double z_in, double z_out, double oz,
 {
     const Interval *first = model_.intervals().data() + model_.stack_begin(cell);
     const Interval *last = model_.intervals().data() + model_.stack_end(cell);
-    if (first == last)
+    // nothing to find where the ray stays at or above the stack's top
+    if (first == last || std::min(z_in, z_out) >= double((last - 1)->top))
         return false;
     auto below_of = [&](const Interval *k) {
         return k == first ? 0.0 : double((k - 1)->top);
@@ -149,9 +163,8 @@ bool Tracer::hit_in_cell(uint64_t cell, double z_in, double z_out, double oz,
 Hit Tracer::trace(const Ray &ray) const
 {
     const Frame &f = model_.frame();
-    const glm::dvec3 o =
-        (ray.origin - glm::dvec3(f.west, f.south, f.bottom)) * scale_;
-    glm::dvec3 d = ray.direction * scale_;
+    const glm::dvec3 o = to_local(ray.origin);
+    glm::dvec3 d = local_direction(ray.direction);
     for (int a = 0; a < 3; ++a)
         if (d[a] == 0)
             d[a] = 0; // normalise -0
@@ -202,10 +215,7 @@ Hit Tracer::trace(const Ray &ray) const
                         t_in, wall, hit)) {
             hit.normal = hit.face == Face::none ? -ray.direction
                                                 : face_normal(hit.face);
-            const glm::dvec3 local = o + hit.t * d;
-            hit.point = {f.west + local.x * f.ew_res(),
-                         f.south + local.y * f.ns_res(),
-                         f.bottom + local.z * f.tb_res()};
+            hit.point = from_local(o + hit.t * d);
             return hit;
         }
         if (t_out >= t_far)

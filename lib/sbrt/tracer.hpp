@@ -18,6 +18,9 @@ namespace sbrt {
 /// Face of a hit: which plane of the cell/interval the ray entered through.
 enum class Face { none, west, east, south, north, bottom, top };
 
+/// Outward unit normal of a face (zero for Face::none).
+glm::dvec3 face_normal(Face face);
+
 /// \brief First opaque hit of a ray; t is in map units along the ray.
 struct Hit {
     double t = std::numeric_limits<double>::infinity();
@@ -39,6 +42,12 @@ public:
     /// Exaggerated map coordinates of a real map point, and back.
     glm::dvec3 exaggerate(glm::dvec3 p) const;
     glm::dvec3 unexaggerate(glm::dvec3 p) const;
+    /// The local frame: x, y in cells from the west and south edges, z in
+    /// tb_res steps from the bottom (exaggerated map -> local, and back to
+    /// real map coordinates).
+    glm::dvec3 to_local(glm::dvec3 exaggerated) const;
+    glm::dvec3 local_direction(glm::dvec3 direction) const { return direction * scale_; }
+    glm::dvec3 from_local(glm::dvec3 local) const;
     /// Centre and half-diagonal of the model's box (exaggerated).
     glm::dvec3 centre() const;
     double radius() const;
@@ -47,6 +56,12 @@ public:
     glm::dvec3 corner(int k) const;
     /// Top of the highest interval, map units.
     double top_elevation() const;
+    /// Size of a voxel in exaggerated map units (ew, ns, tb * zexag).
+    glm::dvec3 voxel_size() const { return 1.0 / scale_; }
+    /// Top of the highest interval, local units (tb_res steps).
+    double top_local() const { return z_max_local_; }
+    const Model &model() const { return model_; }
+    double zexag() const { return zexag_; }
 
 private:
     bool hit_in_cell(uint64_t cell, double z_in, double z_out, double oz,

@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "cpu_tracing.hpp"
 #include "model.hpp"
+#include "shading.hpp"
 #include "voxel_builder.hpp"
 
 namespace sbrt_test {
@@ -65,6 +67,15 @@ inline sbrt::Model build_model(const Voxels &v)
     for (int z = 0; z < v.frame.depths; ++z)
         builder.add_slice(v.slice(z));
     return builder.finish();
+}
+
+/// The CPU reference image of a model seen by `camera`.
+inline sbrt::Image render_cpu(const sbrt::Model &m, const sbrt::Camera &camera,
+                              double zexag, unsigned threads = 2)
+{
+    const sbrt::Tracer tracer(m, zexag);
+    return sbrt::shade(tracer, camera, sbrt::trace_image(tracer, camera, threads),
+                       sbrt::Shading{}, threads);
 }
 
 inline std::string temp_dir(const std::string &tag)

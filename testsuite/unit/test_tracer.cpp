@@ -11,7 +11,6 @@
 #include <gtest/gtest.h>
 
 #include "camera.hpp"
-#include "cpu_renderer.hpp"
 #include "error.hpp"
 #include "test_support.hpp"
 #include "tracer.hpp"
@@ -125,7 +124,7 @@ TEST(Tracer, TopViewSeesTheTopmostSolidVoxel)
     const Frame &f = v.frame;
     const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e4,
                                    f.rows, f.cols);
-    const Image image = render_cpu(m, cam, 1.0, Shading{}, 2);
+    const Image image = sbrt_test::render_cpu(m, cam, 1.0);
     for (int row = 0; row < f.rows; ++row)
         for (int col = 0; col < f.cols; ++col) {
             int32_t top_id = NULL_CLASS;
@@ -136,8 +135,9 @@ TEST(Tracer, TopViewSeesTheTopmostSolidVoxel)
             }
             const size_t i = size_t(row) * f.cols + col;
             ASSERT_EQ(image.material[i], top_id) << row << "," << col;
-            if (top_id != NULL_CLASS)
+            if (top_id != NULL_CLASS) {
                 EXPECT_NEAR(image.elevation[i], f.bottom + (top_z + 1) * f.tb_res(), 1e-9);
+            }
         }
 }
 
@@ -148,12 +148,13 @@ TEST(Tracer, ExaggerationKeepsWhatIsHitOnAVerticalRay)
     const Frame &f = v.frame;
     const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e5,
                                    f.rows, f.cols);
-    const Image a = render_cpu(m, cam, 1.0, Shading{}, 1);
-    const Image b = render_cpu(m, cam, 7.5, Shading{}, 1);
+    const Image a = sbrt_test::render_cpu(m, cam, 1.0, 1);
+    const Image b = sbrt_test::render_cpu(m, cam, 7.5, 1);
     EXPECT_EQ(a.material, b.material);
     for (size_t i = 0; i < a.elevation.size(); ++i)
-        if (!std::isnan(a.elevation[i]))
+        if (!std::isnan(a.elevation[i])) {
             EXPECT_NEAR(a.elevation[i], b.elevation[i], 1e-9);
+        }
 }
 
 TEST(Camera, BadCamerasAreErrors)

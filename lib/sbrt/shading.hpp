@@ -1,25 +1,31 @@
 /****************************************************************************
  * MODULE:    lib/sbrt (r3.sbrt addon)
- * PURPOSE:   Renders an image with the exact tracer on all cores: colour
- *            (Lambert shading), material, elevation and depth per pixel
+ * PURPOSE:   Turns the first hits of an image into its outputs: colour
+ *            with Lambert lighting, material, elevation and depth
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
-#ifndef SBRT_CPU_RENDERER_HPP
-#define SBRT_CPU_RENDERER_HPP
+#ifndef SBRT_SHADING_HPP
+#define SBRT_SHADING_HPP
 
 #include <array>
 #include <vector>
 
-#include "camera.hpp"
-#include "model.hpp"
+#include "tracer.hpp"
 
 namespace sbrt {
+
+/// How the normal at a hit is found: the exact normal of the face that was
+/// hit, or the hybrid image-space kernel (see kernel_normals.hpp).
+enum class Normals { face, kernel };
 
 /// \brief Lighting I = ia + kd (L.N) id with kd id = 1 - ambient.
 struct Shading {
     glm::dvec3 light{0, 0, 1}; ///< towards the light, unit length
     double ambient = 0.35;
     std::array<uint8_t, 3> background{255, 255, 255};
+    Normals normals = Normals::face;
+    int kernel = 5;      ///< kernel size k (odd, 3..11) of Normals::kernel
+    double smooth = 0;   ///< Gaussian sigma of the normals, pixels (0: off)
 
     /// Direction from azimuth (degrees clockwise from north) and elevation.
     static glm::dvec3 light_from(double azimuth, double elevation);
@@ -37,9 +43,9 @@ struct Image {
 /// Colour of a material: its stored colour, else a fixed palette entry.
 std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 
-/// Renders with `threads` threads (0: all cores).
-Image render_cpu(const Model &model, const Camera &camera, double zexag,
-                 const Shading &shading, unsigned threads = 0);
+/// Outputs of the hits of camera's rays (row-major, as trace_image gives).
+Image shade(const Tracer &tracer, const Camera &camera, std::vector<Hit> hits,
+            const Shading &shading, unsigned threads = 0);
 
 } // namespace sbrt
 

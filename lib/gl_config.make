@@ -1,0 +1,5 @@
+# GL build settings shared by lib/sbrt_gl, r3.sbrt.render and the unit
+# tests. OSMesa is built in only where its header exists (Mesa < 25.1).
+SBRT_OSMESA_HEADER := $(wildcard /usr/include/GL/osmesa.h)
+SBRT_GL_CXXFLAGS = $(if $(SBRT_OSMESA_HEADER),-DSBRT_HAVE_OSMESA)
+SBRT_GL_LIBS = -lEGL $(if $(SBRT_OSMESA_HEADER),-lOSMesa)

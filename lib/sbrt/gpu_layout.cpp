@@ -1,0 +1,68 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   GPU view block and hit records
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_layout.hpp"
+
+#include <glm/geometric.hpp>
+
+#include "error.hpp"
+
+namespace sbrt {
+
+namespace {
+
+void put(float out[4], glm::dvec3 v)
+{
+    for (int i = 0; i < 3; ++i)
+        out[i] = float(v[i]);
+    out[3] = 0;
+}
+
+} // namespace
+
+GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
+                      uint32_t loop_budget)
+{
+    const Frame &f = tracer.model().frame();
+    GpuView view{};
+    const glm::dvec3 origin = tracer.to_local(camera.origin());
+    const glm::dvec3 hi = glm::dvec3(glm::vec3(origin));
+    put(view.origin_hi, hi);
+    put(view.origin_lo, origin - hi);
+    put(view.forward, tracer.local_direction(camera.forward()));
+    put(view.du, tracer.local_direction(camera.du()));
+    put(view.dv, tracer.local_direction(camera.dv()));
+    view.grid[0] = uint32_t(f.cols);
+    view.grid[1] = uint32_t(f.rows);
+    view.grid[2] = uint32_t(camera.cols());
+    view.grid[3] = uint32_t(camera.rows());
+    view.box[0] = float(tracer.top_local());
+    view.options[0] = camera.parallel() ? 1 : 0;
+    view.options[1] = loop_budget;
+    return view;
+}
+
+Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,
+                   const GpuPixelHit &record, bool &over_budget)
+{
+    over_budget = (record.code & GPU_CODE_OVER_BUDGET) != 0;
+    Hit hit;
+    const uint32_t material = record.code & 0xffffu;
+    const uint32_t face = (record.code >> 16) & 0xffu;
+    if (over_budget || material == EMPTY)
+        return hit;
+    if (material >= tracer.model().materials().size() || face > 6)
+        fail("GPU hit record with material ", material, " and face ", face,
+             " is out of range");
+    hit.material = material;
+    hit.face = Face(face);
+    const glm::dvec3 local(record.point[0], record.point[1], record.point[2]);
+    hit.point = tracer.from_local(local);
+    hit.t = glm::length(tracer.exaggerate(hit.point) - ray.origin);
+    hit.normal = hit.face == Face::none ? -ray.direction : face_normal(hit.face);
+    return hit;
+}
+
+} // namespace sbrt

@@ -1,0 +1,62 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   C++ mirror of the GPU blocks of shaders/common/layout.glsl:
+ *            the view uniform block (std140) and the per-pixel hit record
+ *            (std430); the intervals and offsets go up as the model holds
+ *            them. Conversions between the camera, the hits and the
+ *            tracer's local frame.
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GPU_LAYOUT_HPP
+#define SBRT_GPU_LAYOUT_HPP
+
+#include <cstddef>
+#include <cstdint>
+
+#include "tracer.hpp"
+
+namespace sbrt {
+
+/// `uniform View` (std140): every member a 16-byte vec4/uvec4.
+struct GpuView {
+    float origin_hi[4];
+    float origin_lo[4];
+    float forward[4];
+    float du[4];
+    float dv[4];
+    uint32_t grid[4];    ///< model cols, rows; image cols, rows
+    float box[4];        ///< x: highest interval top, local z
+    uint32_t options[4]; ///< parallel rays, loop budget, first row, rows
+};
+static_assert(sizeof(GpuView) == 128, "std140 View block");
+static_assert(offsetof(GpuView, grid) == 80, "std140 View block");
+static_assert(offsetof(GpuView, options) == 112, "std140 View block");
+
+/// `struct Interval` (std430) is the model's own Interval.
+static_assert(sizeof(Interval) == 8 && offsetof(Interval, material) == 0 &&
+                  offsetof(Interval, top) == 4,
+              "std430 Interval");
+
+/// `struct PixelHit` (std430): vec3 then uint, 16 bytes.
+struct GpuPixelHit {
+    float point[3]; ///< local coordinates of the hit
+    uint32_t code;  ///< material | face << 16 | over budget << 24
+};
+static_assert(sizeof(GpuPixelHit) == 16, "std430 PixelHit");
+
+constexpr uint32_t GPU_CODE_OVER_BUDGET = 1u << 24;
+/// Default loop budget per pixel: below llvmpipe's 65,535 iterations with
+/// room for the loops the budget does not count.
+constexpr uint32_t GPU_LOOP_BUDGET = 60000;
+
+/// The view block of `camera` in the tracer's local frame.
+GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
+                      uint32_t loop_budget = GPU_LOOP_BUDGET);
+
+/// The hit of a record; `over_budget` tells that the GPU gave up the ray.
+Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,
+                   const GpuPixelHit &record, bool &over_budget);
+
+} // namespace sbrt
+
+#endif

@@ -1,0 +1,84 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Shading of hits into an image
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "error.hpp"
+#include "kernel_normals.hpp"
+#include "parallel.hpp"
+
+namespace sbrt {
+
+glm::dvec3 Shading::light_from(double azimuth, double elevation)
+{
+    const double az = azimuth * M_PI / 180, el = elevation * M_PI / 180;
+    return {std::sin(az) * std::cos(el), std::cos(az) * std::cos(el),
+            std::sin(el)};
+}
+
+std::array<uint8_t, 3> material_color(const Model &model, uint32_t material)
+{
+    const Material &m = model.materials()[material];
+    if (m.has_color)
+        return {m.red, m.green, m.blue};
+    // golden-angle hues: neighbouring classes get distinct colours
+    const double h = std::fmod(material * 137.508, 360.0) / 60.0;
+    const double x = 1 - std::fabs(std::fmod(h, 2.0) - 1);
+    const double rgb[6][3] = {{1, x, 0}, {x, 1, 0}, {0, 1, x},
+                              {0, x, 1}, {x, 0, 1}, {1, 0, x}};
+    const double *c = rgb[int(h) % 6];
+    return {uint8_t(60 + 180 * c[0]), uint8_t(60 + 180 * c[1]),
+            uint8_t(60 + 180 * c[2])};
+}
+
+Image shade(const Tracer &tracer, const Camera &camera, std::vector<Hit> hits,
+            const Shading &shading, unsigned threads)
+{
+    const Model &model = tracer.model();
+    Image image;
+    image.rows = camera.rows();
+    image.cols = camera.cols();
+    const size_t pixels = size_t(image.rows) * image.cols;
+    SBRT_CHECK_EQ(hits.size(), pixels, "shade");
+    if (shading.normals == Normals::kernel) {
+        apply_kernel_normals(tracer, camera, shading.kernel, hits, threads);
+        if (shading.smooth > 0)
+            smooth_normals(camera, shading.smooth, hits, threads);
+    }
+    image.rgb.assign(pixels * 3, 0);
+    image.material.assign(pixels, NULL_CLASS);
+    image.elevation.assign(pixels, NAN);
+    image.depth.assign(pixels, NAN);
+    for_each_row(image.rows, threads, [&](int row) {
+        for (int col = 0; col < image.cols; ++col) {
+            const size_t i = size_t(row) * image.cols + col;
+            const Hit &hit = hits[i];
+            std::array<uint8_t, 3> rgb = shading.background;
+            if (hit.is_hit()) {
+                const auto base = material_color(model, hit.material);
+                const double lambert =
+                    std::max(0.0, glm::dot(shading.light, hit.normal));
+                const double intensity =
+                    shading.ambient + (1 - shading.ambient) * lambert;
+                for (int k = 0; k < 3; ++k)
+                    rgb[k] = uint8_t(std::lround(
+                        std::clamp(base[k] * intensity, 0.0, 255.0)));
+                image.material[i] = model.materials()[hit.material].id;
+                image.elevation[i] = hit.point.z;
+                image.depth[i] = glm::length(
+                    hit.point - tracer.unexaggerate(camera.ray(row, col).origin));
+            }
+            std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + i * 3);
+        }
+    });
+    return image;
+}
+
+} // namespace sbrt

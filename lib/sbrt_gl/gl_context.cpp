@@ -1,0 +1,32 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   Choice of the GL backend
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gl_context.hpp"
+
+#include "error.hpp"
+
+namespace sbrt_gl {
+
+std::unique_ptr<GlContext> create_gl_context(const std::string &backend)
+{
+    if (backend == "egl")
+        return create_egl_context();
+    if (backend == "osmesa")
+        return create_osmesa_context();
+    if (backend != "auto")
+        sbrt::fail("unknown GL backend <", backend, ">");
+    std::string reasons;
+    for (auto create : {create_egl_context, create_osmesa_context}) {
+        try {
+            return create();
+        }
+        catch (const sbrt::Error &e) {
+            reasons += (reasons.empty() ? "" : "; ") + std::string(e.what());
+        }
+    }
+    sbrt::fail("no OpenGL backend works: ", reasons);
+}
+
+} // namespace sbrt_gl

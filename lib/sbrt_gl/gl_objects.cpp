@@ -1,0 +1,109 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   GL buffers and programs
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gl_objects.hpp"
+
+#include <string>
+
+#include "error.hpp"
+
+namespace sbrt_gl {
+
+GlBuffer::GlBuffer(const GlApi &gl, GLenum target, size_t bytes, const void *data)
+    : gl_(&gl), target_(target), bytes_(bytes)
+{
+    gl.GenBuffers(1, &name_);
+    gl.BindBuffer(target_, name_);
+    // a zero-sized store cannot be bound: keep at least 16 bytes
+    gl.BufferData(target_, GLsizeiptr(bytes ? bytes : 16), data,
+                  target == GL_UNIFORM_BUFFER ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW);
+    const GLenum error = gl.GetError();
+    if (error != GL_NO_ERROR) {
+        gl.DeleteBuffers(1, &name_);
+        sbrt::fail("OpenGL: cannot allocate a buffer of ", bytes, " bytes (error 0x",
+                   std::hex, error, ")");
+    }
+}
+
+GlBuffer::~GlBuffer()
+{
+    if (name_)
+        gl_->DeleteBuffers(1, &name_);
+}
+
+void GlBuffer::bind(GLuint index) const
+{
+    gl_->BindBufferBase(target_, index, name_);
+}
+
+void GlBuffer::upload(const void *data, size_t bytes)
+{
+    SBRT_CHECK_EQ(bytes, bytes_, "GlBuffer::upload");
+    gl_->BindBuffer(target_, name_);
+    gl_->BufferData(target_, GLsizeiptr(bytes), data, GL_DYNAMIC_DRAW);
+}
+
+void GlBuffer::download(void *data, size_t bytes) const
+{
+    SBRT_CHECK_EQ(bytes, bytes_, "GlBuffer::download");
+    gl_->BindBuffer(target_, name_);
+    gl_->GetBufferSubData(target_, 0, GLsizeiptr(bytes), data);
+    check_gl(*gl_, "reading a buffer back");
+}
+
+namespace {
+
+std::string shader_log(const GlApi &gl, GLuint shader)
+{
+    GLint length = 0;
+    gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(size_t(std::max(length, 1)), '\0');
+    gl.GetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
+    return log.c_str();
+}
+
+std::string program_log(const GlApi &gl, GLuint program)
+{
+    GLint length = 0;
+    gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(size_t(std::max(length, 1)), '\0');
+    gl.GetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+    return log.c_str();
+}
+
+} // namespace
+
+GlComputeProgram::GlComputeProgram(const GlApi &gl,
+                                   const std::vector<const char *> &sources)
+    : gl_(&gl)
+{
+    const GLuint shader = gl.CreateShader(GL_COMPUTE_SHADER);
+    gl.ShaderSource(shader, GLsizei(sources.size()), sources.data(), nullptr);
+    gl.CompileShader(shader);
+    GLint ok = 0;
+    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        const std::string log = shader_log(gl, shader);
+        gl.DeleteShader(shader);
+        sbrt::fail("OpenGL: the compute shader does not compile: ", log);
+    }
+    program_ = gl.CreateProgram();
+    gl.AttachShader(program_, shader);
+    gl.LinkProgram(program_);
+    gl.DeleteShader(shader); // stays alive while attached
+    gl.GetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        const std::string log = program_log(gl, program_);
+        gl.DeleteProgram(program_);
+        sbrt::fail("OpenGL: the compute program does not link: ", log);
+    }
+}
+
+GlComputeProgram::~GlComputeProgram()
+{
+    gl_->DeleteProgram(program_);
+}
+
+} // namespace sbrt_gl

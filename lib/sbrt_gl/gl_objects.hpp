@@ -1,0 +1,63 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   RAII owners of GL buffers and programs (move-only)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GL_OBJECTS_HPP
+#define SBRT_GL_OBJECTS_HPP
+
+#include <utility>
+#include <vector>
+
+#include "gl_api.hpp"
+
+namespace sbrt_gl {
+
+/// \brief A buffer object holding `bytes` bytes (copied from `data` when
+/// given), bound to an indexed target by bind().
+class GlBuffer {
+public:
+    GlBuffer(const GlApi &gl, GLenum target, size_t bytes,
+             const void *data = nullptr);
+    ~GlBuffer();
+    GlBuffer(GlBuffer &&other) noexcept
+        : gl_(other.gl_), target_(other.target_), name_(std::exchange(other.name_, 0)),
+          bytes_(other.bytes_)
+    {
+    }
+    GlBuffer(const GlBuffer &) = delete;
+    GlBuffer &operator=(const GlBuffer &) = delete;
+    GlBuffer &operator=(GlBuffer &&) = delete;
+
+    void bind(GLuint index) const;
+    void upload(const void *data, size_t bytes);
+    void download(void *data, size_t bytes) const;
+    size_t bytes() const { return bytes_; }
+
+private:
+    const GlApi *gl_;
+    GLenum target_;
+    GLuint name_ = 0;
+    size_t bytes_;
+};
+
+/// \brief A linked compute program from source strings concatenated in
+/// order; throws sbrt::Error with the compiler's log.
+class GlComputeProgram {
+public:
+    GlComputeProgram(const GlApi &gl, const std::vector<const char *> &sources);
+    ~GlComputeProgram();
+    GlComputeProgram(const GlComputeProgram &) = delete;
+    GlComputeProgram &operator=(const GlComputeProgram &) = delete;
+
+    GLuint name() const { return program_; }
+    void use() const { gl_->UseProgram(program_); }
+
+private:
+    const GlApi *gl_;
+    GLuint program_ = 0;
+};
+
+} // namespace sbrt_gl
+
+#endif

@@ -1,0 +1,148 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   GPU tracing of an image
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_tracer.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "error.hpp"
+#include "parallel.hpp"
+#include "shader_sources.hpp"
+
+namespace sbrt_gl {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// GL 4.3 core at least (compute shaders, SSBOs); the largest SSBO binding.
+size_t check_version(const GlApi &gl, const std::string &context)
+{
+    GLint major = 0, minor = 0;
+    gl.GetIntegerv(GL_MAJOR_VERSION, &major);
+    gl.GetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major * 10 + minor < 43)
+        sbrt::fail(context, ": OpenGL ", major, ".", minor,
+                   " is below 4.3 (compute shaders and storage buffers)");
+    GLint64 block = 0;
+    gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+    return size_t(std::max<GLint64>(block, 0));
+}
+
+size_t checked_bytes(size_t bytes, size_t limit, const char *what)
+{
+    if (bytes > limit)
+        sbrt::fail("the model's ", what, " take ", bytes,
+                   " bytes, more than this GPU's largest storage buffer (",
+                   limit, " bytes): render with backend=cpu");
+    return bytes;
+}
+
+} // namespace
+
+GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer)
+    : created_(Clock::now()), tracer_(tracer), gl_(context),
+      max_block_bytes_(check_version(gl_, context.name())),
+      program_(gl_, {"#version 450\n", SHADER_COMMON_LAYOUT, SHADER_RAYCAST}),
+      offsets_(gl_, GL_SHADER_STORAGE_BUFFER,
+               checked_bytes(tracer.model().offsets().size() * sizeof(uint32_t),
+                             max_block_bytes_, "cell offsets"),
+               tracer.model().offsets().data()),
+      intervals_(gl_, GL_SHADER_STORAGE_BUFFER,
+                 checked_bytes(tracer.model().intervals().size() *
+                                   sizeof(sbrt::Interval),
+                               max_block_bytes_, "intervals"),
+                 tracer.model().intervals().data()),
+      view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView))
+{
+    gl_.Finish();
+    check_gl(gl_, "uploading the model");
+    stats_.upload_ms = ms_since(created_); // with compiling the shader
+}
+
+std::string GpuTracer::gl_version() const
+{
+    return reinterpret_cast<const char *>(gl_.GetString(GL_VERSION));
+}
+
+std::string GpuTracer::gl_renderer() const
+{
+    return reinterpret_cast<const char *>(gl_.GetString(GL_RENDERER));
+}
+
+std::vector<sbrt::Hit> GpuTracer::trace_image(const sbrt::Camera &camera,
+                                              unsigned cpu_threads,
+                                              uint32_t loop_budget)
+{
+    const double upload_ms = stats_.upload_ms;
+    stats_ = GpuStats();
+    stats_.upload_ms = upload_ms;
+    const int rows = camera.rows(), cols = camera.cols();
+    const size_t row_bytes = size_t(cols) * sizeof(sbrt::GpuPixelHit);
+    if (row_bytes > max_block_bytes_)
+        sbrt::fail("an image row of ", cols, " pixels does not fit a storage buffer");
+    const int band_rows = int(std::min<size_t>(rows, max_block_bytes_ / row_bytes));
+    GlBuffer band(gl_, GL_SHADER_STORAGE_BUFFER, size_t(band_rows) * row_bytes);
+    std::vector<sbrt::GpuPixelHit> records(size_t(rows) * cols);
+
+    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget);
+    program_.use();
+    offsets_.bind(0);
+    intervals_.bind(1);
+    band.bind(2);
+    view_.bind(0);
+    for (int first = 0; first < rows; first += band_rows) {
+        const int count = std::min(band_rows, rows - first);
+        view.options[2] = uint32_t(first);
+        view.options[3] = uint32_t(count);
+        view_.upload(&view, sizeof view);
+        view_.bind(0);
+        auto start = Clock::now();
+        gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
+        gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        gl_.Finish();
+        check_gl(gl_, "the ray casting dispatch");
+        stats_.trace_ms += ms_since(start);
+        start = Clock::now();
+        if (count == band_rows)
+            band.download(records.data() + size_t(first) * cols, band.bytes());
+        else {
+            std::vector<sbrt::GpuPixelHit> last(size_t(band_rows) * cols);
+            band.download(last.data(), band.bytes());
+            std::copy_n(last.begin(), size_t(count) * cols,
+                        records.begin() + size_t(first) * cols);
+        }
+        stats_.readback_ms += ms_since(start);
+        ++stats_.bands;
+    }
+
+    const auto start = Clock::now();
+    std::vector<sbrt::Hit> hits(records.size());
+    std::vector<size_t> over_per_row(size_t(rows), 0);
+    sbrt::for_each_row(rows, cpu_threads, [&](int row) {
+        for (int col = 0; col < cols; ++col) {
+            const size_t i = size_t(row) * cols + col;
+            const sbrt::Ray ray = camera.ray(row, col);
+            bool over_budget = false;
+            hits[i] = sbrt::decode_gpu_hit(tracer_, ray, records[i], over_budget);
+            if (over_budget) {
+                hits[i] = tracer_.trace(ray);
+                ++over_per_row[size_t(row)];
+            }
+        }
+    });
+    for (size_t n : over_per_row)
+        stats_.over_budget += n;
+    stats_.readback_ms += ms_since(start);
+    return hits;
+}
+
+} // namespace sbrt_gl

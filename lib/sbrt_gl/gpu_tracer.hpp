@@ -1,0 +1,58 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   First hits of every pixel on the GPU: the model in std430
+ *            SSBOs, the compute shader shaders/raycast.comp, bands of rows
+ *            that fit the GPU's buffer limit, and the exact CPU tracer for
+ *            the rays the shader flags as over its loop budget
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GL_GPU_TRACER_HPP
+#define SBRT_GL_GPU_TRACER_HPP
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "gl_api.hpp"
+#include "gl_objects.hpp"
+#include "gpu_layout.hpp"
+
+namespace sbrt_gl {
+
+/// Figures of the last trace_image call.
+struct GpuStats {
+    double upload_ms = 0;   ///< shader compile and model upload
+    double trace_ms = 0;    ///< dispatches until the GPU is done
+    double readback_ms = 0; ///< hit records back and decoded
+    size_t over_budget = 0; ///< rays traced again on the CPU
+    int bands = 0;
+};
+
+class GpuTracer {
+public:
+    /// Needs the context current on this thread; uploads the model.
+    GpuTracer(const GlContext &context, const sbrt::Tracer &tracer);
+
+    std::vector<sbrt::Hit> trace_image(const sbrt::Camera &camera,
+                                       unsigned cpu_threads = 0,
+                                       uint32_t loop_budget = sbrt::GPU_LOOP_BUDGET);
+
+    std::string gl_version() const;
+    std::string gl_renderer() const;
+    const GpuStats &stats() const { return stats_; }
+    const GlApi &gl() const { return gl_; }
+    GLuint program() const { return program_.name(); }
+
+private:
+    std::chrono::steady_clock::time_point created_; ///< times the upload
+    const sbrt::Tracer &tracer_;
+    GlApi gl_;
+    size_t max_block_bytes_;
+    GlComputeProgram program_;
+    GlBuffer offsets_, intervals_, view_;
+    GpuStats stats_;
+};
+
+} // namespace sbrt_gl
+
+#endif

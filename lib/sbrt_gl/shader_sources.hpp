@@ -1,0 +1,17 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   The GLSL sources of shaders/, embedded at build time by
+ *            tools/embed_shaders.sh (shader_sources.cpp is generated)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GL_SHADER_SOURCES_HPP
+#define SBRT_GL_SHADER_SOURCES_HPP
+
+namespace sbrt_gl {
+
+extern const char *const SHADER_COMMON_LAYOUT; ///< shaders/common/layout.glsl
+extern const char *const SHADER_RAYCAST;       ///< shaders/raycast.comp
+
+} // namespace sbrt_gl
+
+#endif

@@ -1,0 +1,44 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   Material colours from colour tables
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "material_colors.hpp"
+
+#include <algorithm>
+
+void apply_color_option(const RenderRequest &request, sbrt::Model &model)
+{
+    if (request.color.empty() && request.rules.empty())
+        return;
+    std::vector<sbrt::Material> &materials = model.materials();
+    if (materials.size() < 2)
+        return;
+    CELL low = materials[1].id, high = materials[1].id;
+    for (size_t i = 1; i < materials.size(); ++i) {
+        low = std::min(low, materials[i].id);
+        high = std::max(high, materials[i].id);
+    }
+    struct Colors colors;
+    Rast_init_colors(&colors);
+    if (!request.color.empty())
+        Rast_make_colors(&colors, request.color.c_str(), low, high); // fatal if unknown
+    else if (request.rules == "-") {
+        if (!Rast_read_color_rules(&colors, low, high, Rast_read_color_rule, stdin))
+            G_fatal_error(_("rules=-: no valid colour rules on standard input"));
+    }
+    else if (!Rast_load_colors(&colors, request.rules.c_str(), low, high))
+        G_fatal_error(_("rules=%s: cannot read colour rules from this file"),
+                      request.rules.c_str());
+    for (size_t i = 1; i < materials.size(); ++i) {
+        int red, green, blue;
+        CELL id = materials[i].id;
+        if (!Rast_get_c_color(&id, &red, &green, &blue, &colors))
+            continue; // no rule for this class: keep its colour
+        materials[i].red = uint8_t(red);
+        materials[i].green = uint8_t(green);
+        materials[i].blue = uint8_t(blue);
+        materials[i].has_color = true;
+    }
+    Rast_free_colors(&colors);
+}

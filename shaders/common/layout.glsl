@@ -1,0 +1,42 @@
+// Blocks shared by the ray casting shaders; mirrored in C++ by
+// lib/sbrt/gpu_layout.hpp (static_asserts there, offsets checked by the
+// unit test GpuLayout.MatchesTheShader). Local frame: x in cells from the
+// west edge, y in cells from the south edge, z in tb_res steps from the
+// bottom, vertical exaggeration applied.
+
+// The view: per pixel (x, y) in normalised device coordinates, a
+// perspective ray starts at the origin along forward + x du + y dv, a
+// parallel one starts at origin + x du + y dv along forward. The origin
+// is split into a high and a low float (origin = hi + lo) so that
+// distances to cell walls keep their precision far from the model.
+layout(std140, binding = 0) uniform View {
+    vec4 origin_hi;     // xyz
+    vec4 origin_lo;     // xyz
+    vec4 forward;       // xyz
+    vec4 du;            // xyz
+    vec4 dv;            // xyz
+    uvec4 grid;         // cols, rows of the model; image cols, rows
+    vec4 box;           // x: highest interval top (local z)
+    uvec4 options;      // x: 1 = parallel rays, y: loop budget,
+                        // z: first image row of this dispatch, w: its rows
+};
+
+// The model: offsets[cell] .. offsets[cell + 1] index the intervals of a
+// cell's stack, bottom to top; cell = row_from_north * cols + col.
+struct Interval {
+    uint material;      // index into the material table, 0 = empty
+    float top;          // local z
+};
+layout(std430, binding = 0) readonly buffer Offsets { uint offsets[]; };
+layout(std430, binding = 1) readonly buffer Intervals { Interval intervals[]; };
+
+// One record per pixel of the band, row-major from its top row.
+struct PixelHit {
+    vec3 point;         // local coordinates of the hit
+    uint code;          // material | face << 16 | over budget << 24
+};
+layout(std430, binding = 2) writeonly buffer Hits { PixelHit hits[]; };
+
+const uint FACE_NONE = 0u, FACE_WEST = 1u, FACE_EAST = 2u, FACE_SOUTH = 3u,
+           FACE_NORTH = 4u, FACE_BOTTOM = 5u, FACE_TOP = 6u;
+const uint CODE_OVER_BUDGET = 1u << 24;

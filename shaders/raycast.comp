@@ -1,0 +1,206 @@
+// Exact first-hit ray casting of an SBRT: slab clip to the model's box,
+// 2D DDA over the cells, and in each cell the z-range the ray covers
+// selects the intervals it crosses (the algorithm of lib/sbrt/tracer.cpp,
+// in float).
+//
+// llvmpipe silently ends a shader invocation after 65,535 loop iterations
+// and counts every loop a SIMD vector enters, even with all lanes done.
+// So the traversal is ONE loop, a state machine whose every iteration is
+// one step: enter a cell, halve the search range of its stack, or walk one
+// interval. The loop budget (options.y) bounds it; a ray that would need
+// more is flagged, and the host traces it on the CPU.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+// a plane's signed distance from the origin hi + lo along one axis
+float from_origin(float plane, float hi, float lo)
+{
+    precise float distance = (plane - hi) - lo;
+    return distance;
+}
+
+uint entry_face(int axis, float d)
+{
+    if (axis == 0)
+        return d > 0.0 ? FACE_WEST : FACE_EAST;
+    if (axis == 1)
+        return d > 0.0 ? FACE_SOUTH : FACE_NORTH;
+    return d > 0.0 ? FACE_BOTTOM : FACE_TOP;
+}
+
+// slab clip along one axis: narrows [t_near, t_far]; false when the ray
+// runs parallel to the slab outside it
+bool clip(int axis, float hi, float lo, float d, float high, inout float t_near,
+          inout float t_far, inout int near_axis)
+{
+    if (d == 0.0) {
+        float o = hi + lo;
+        return !(o < 0.0 || o > high);
+    }
+    float t0 = from_origin(0.0, hi, lo) / d;
+    float t1 = from_origin(high, hi, lo) / d;
+    if (t0 > t1) {
+        float s = t0; t0 = t1; t1 = s;
+    }
+    if (t0 > t_near) {
+        t_near = t0;
+        near_axis = axis;
+    }
+    t_far = min(t_far, t1);
+    return true;
+}
+
+const uint ENTER = 0u, SEARCH = 1u, WALK = 2u;
+
+void main()
+{
+    // this dispatch covers the band of image rows from options.z on
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    uint image_cols = grid.z, image_rows = grid.w, row = pixel.y + options.z;
+    if (pixel.x >= image_cols || row >= image_rows || pixel.y >= options.w)
+        return;
+    uint index = pixel.y * image_cols + pixel.x;
+    float x = (float(pixel.x) + 0.5) / float(image_cols) * 2.0 - 1.0;
+    float y = 1.0 - (float(row) + 0.5) / float(image_rows) * 2.0;
+
+    vec3 hi = origin_hi.xyz, lo = origin_lo.xyz, d;
+    if (options.x == 1u) {
+        lo += x * du.xyz + y * dv.xyz;
+        d = forward.xyz;
+    }
+    else {
+        d = forward.xyz + x * du.xyz + y * dv.xyz;
+    }
+    hits[index] = PixelHit(vec3(0.0), 0u);
+
+    // 1. slab clip to [0, cols] x [0, rows] x [0, z_max], without a loop
+    float t_near = -1.0 / 0.0, t_far = 1.0 / 0.0;
+    int near_axis = -1;
+    if (!clip(0, hi.x, lo.x, d.x, float(grid.x), t_near, t_far, near_axis) ||
+        !clip(1, hi.y, lo.y, d.y, float(grid.y), t_near, t_far, near_axis) ||
+        !clip(2, hi.z, lo.z, d.z, box.x, t_near, t_far, near_axis))
+        return;
+    uint wall = near_axis >= 0 ? entry_face(near_axis, d[near_axis]) : FACE_NONE;
+    if (t_near < 0.0) {
+        t_near = 0.0; // the camera is inside the box
+        wall = FACE_NONE;
+    }
+    if (!(t_near <= t_far) || box.x <= 0.0)
+        return;
+
+    // 2. 2D DDA; wall distances from the cell index, never accumulated
+    int cols = int(grid.x), rows = int(grid.y);
+    vec3 p = (hi + t_near * d) + lo;
+    int ix = clamp(int(floor(p.x)), 0, cols - 1);
+    int iy = clamp(int(floor(p.y)), 0, rows - 1);
+    int step_x = d.x > 0.0 ? 1 : -1, step_y = d.y > 0.0 ? 1 : -1;
+    float t_in = t_near, t_out = t_near, t_max_x = 0.0, t_max_y = 0.0;
+    float z_in = 0.0, z_out = 0.0;
+    uint mode = ENTER, first = 0u, last = 0u, low = 0u, high = 0u;
+    for (uint work = 0u;; ++work) {
+        if (work >= options.y) {
+            hits[index].code = CODE_OVER_BUDGET;
+            return;
+        }
+        bool next_cell = false;
+        if (mode == ENTER) {
+            t_max_x = d.x != 0.0
+                ? from_origin(float(ix + (d.x > 0.0 ? 1 : 0)), hi.x, lo.x) / d.x
+                : 1.0 / 0.0;
+            t_max_y = d.y != 0.0
+                ? from_origin(float(iy + (d.y > 0.0 ? 1 : 0)), hi.y, lo.y) / d.y
+                : 1.0 / 0.0;
+            t_out = min(min(t_max_x, t_max_y), t_far);
+            uint cell = uint(rows - 1 - iy) * uint(cols) + uint(ix);
+            first = offsets[cell];
+            last = offsets[cell + 1u];
+            z_in = (hi.z + t_in * d.z) + lo.z;
+            z_out = (hi.z + t_out * d.z) + lo.z;
+            // nothing to find where the ray stays at or above the stack's top
+            if (first == last || min(z_in, z_out) >= intervals[last - 1u].top) {
+                next_cell = true;
+            }
+            else {
+                low = first;
+                high = last;
+                mode = SEARCH;
+            }
+        }
+        else if (mode == SEARCH && low < high) {
+            // descending: first top >= z_in (intervals are (bottom, top]);
+            // else first top > z_in (intervals are [bottom, top))
+            uint mid = (low + high) / 2u;
+            float top = intervals[mid].top;
+            if (d.z < 0.0 ? top < z_in : !(z_in < top))
+                low = mid + 1u;
+            else
+                high = mid;
+        }
+        else if (mode == SEARCH) {
+            // the interval holding z_in is `low`; solid: hit on the wall
+            if (low != last && intervals[low].material != 0u) {
+                hits[index] = PixelHit((hi + t_in * d) + lo,
+                                       intervals[low].material | wall << 16);
+                return;
+            }
+            // walk on in the ray's vertical direction: `high` is the next
+            // interval to look at from below (descending: one above it)
+            if (d.z < 0.0) {
+                high = low;
+                mode = WALK;
+            }
+            else if (low == last || d.z == 0.0) {
+                next_cell = true;
+            }
+            else {
+                high = low + 1u;
+                mode = WALK;
+            }
+        }
+        else if (d.z < 0.0) { // WALK down: look at high - 1
+            if (high == first || !(intervals[high - 1u].top > z_out)) {
+                next_cell = true;
+            }
+            else {
+                high -= 1u;
+                if (intervals[high].material != 0u) {
+                    float top = intervals[high].top;
+                    hits[index] = PixelHit((hi + (from_origin(top, hi.z, lo.z) / d.z) * d) + lo,
+                                           intervals[high].material | FACE_TOP << 16);
+                    return;
+                }
+            }
+        }
+        else { // WALK up: look at high, which starts at the previous top
+            float bottom = intervals[high - 1u].top;
+            if (high == last || !(bottom < z_out)) {
+                next_cell = true;
+            }
+            else if (intervals[high].material != 0u) {
+                hits[index] = PixelHit((hi + (from_origin(bottom, hi.z, lo.z) / d.z) * d) + lo,
+                                       intervals[high].material | FACE_BOTTOM << 16);
+                return;
+            }
+            else {
+                high += 1u;
+            }
+        }
+        if (!next_cell)
+            continue;
+        if (t_out >= t_far)
+            return;
+        if (t_max_x < t_max_y) {
+            ix += step_x;
+            t_in = t_max_x;
+            wall = entry_face(0, d.x);
+        }
+        else {
+            iy += step_y;
+            t_in = t_max_y;
+            wall = entry_face(1, d.y);
+        }
+        if (ix < 0 || ix >= cols || iy < 0 || iy >= rows)
+            return;
+        mode = ENTER;
+    }
+}

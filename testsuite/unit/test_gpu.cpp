@@ -1,0 +1,297 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   The GPU path (compute shader through EGL or OSMesa; llvmpipe
+ *            on machines without a GPU) against the exact CPU tracer: the
+ *            block layout, agreement from many cameras, the loop budget
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cmath>
+#include <cstddef>
+#include <memory>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "cpu_tracing.hpp"
+#include "error.hpp"
+#include "gpu_tracer.hpp"
+#include "test_support.hpp"
+
+using namespace sbrt;
+
+namespace {
+
+/// One GL context for every test of a suite (each backend once).
+std::unique_ptr<sbrt_gl::GlContext> make_context(const char *backend)
+{
+    try {
+        return sbrt_gl::create_gl_context(backend);
+    }
+    catch (const Error &e) {
+        ADD_FAILURE() << "no GL context (" << backend << "): " << e.what();
+        return nullptr;
+    }
+}
+
+struct Agreement {
+    size_t pixels = 0, hits = 0, same_material = 0, depth_checked = 0;
+    double max_depth_error = 0; ///< map units
+};
+
+/// GPU hits against the CPU tracer's on one camera.
+Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
+                  const Camera &camera, size_t *over_budget = nullptr,
+                  uint32_t budget = GPU_LOOP_BUDGET)
+{
+    const std::vector<Hit> want = trace_image(tracer, camera, 2);
+    const std::vector<Hit> got = gpu.trace_image(camera, 2, budget);
+    if (over_budget)
+        *over_budget = gpu.stats().over_budget;
+    Agreement a;
+    a.pixels = want.size();
+    for (size_t i = 0; i < want.size(); ++i) {
+        a.hits += want[i].is_hit();
+        if (want[i].material != got[i].material)
+            continue;
+        ++a.same_material;
+        if (want[i].is_hit()) {
+            ++a.depth_checked;
+            a.max_depth_error =
+                std::max(a.max_depth_error, std::fabs(want[i].t - got[i].t));
+        }
+    }
+    return a;
+}
+
+/// A layered model with folds, a cave and a hole through it (unit cells).
+Model geology(int rows, int cols, int depths)
+{
+    sbrt_test::Voxels v;
+    v.frame.rows = rows;
+    v.frame.cols = cols;
+    v.frame.depths = depths;
+    v.frame.west = 612000.5;   // UTM-sized coordinates: float would lose them
+    v.frame.east = v.frame.west + cols * 25.0;
+    v.frame.south = 4312000.25;
+    v.frame.north = v.frame.south + rows * 25.0;
+    v.frame.bottom = -300;
+    v.frame.top = -300 + depths * 4.0;
+    v.classes.assign(v.frame.voxels(), NULL_CLASS);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            const double surface =
+                depths * (0.7 + 0.2 * std::sin(c * 0.21) * std::cos(r * 0.17));
+            for (int z = 0; z < depths && z < surface; ++z) {
+                const double fold = z + 3 * std::sin((c + 2 * r) * 0.15);
+                int32_t id = 1 + int(std::floor(fold / 3)) % 7;
+                const bool cave = std::hypot(c - cols / 2.0, z - depths / 3.0) < 4 &&
+                                  r > rows / 4;
+                const bool hole = std::abs(r - rows / 3) < 2 && std::abs(c - cols / 4) < 2;
+                if (cave || hole)
+                    id = NULL_CLASS;
+                v.classes[(size_t(z) * rows + r) * cols + c] = id;
+            }
+        }
+    return sbrt_test::build_model(v);
+}
+
+class Gpu : public ::testing::TestWithParam<const char *> {
+protected:
+    void SetUp() override
+    {
+        context_ = make_context(GetParam());
+        if (!context_)
+            GTEST_FAIL();
+    }
+    std::unique_ptr<sbrt_gl::GlContext> context_;
+};
+
+INSTANTIATE_TEST_SUITE_P(Backends, Gpu,
+                         ::testing::Values("egl"
+#ifdef SBRT_HAVE_OSMESA
+                                           , "osmesa"
+#endif
+                                           ));
+
+/// The agreement of the issue: >= 99.9 % of materials, depth within 1e-4 of
+/// the model's size.
+void expect_agreement(const Agreement &a, double model_size, const char *view)
+{
+    EXPECT_GE(a.same_material, a.pixels - a.pixels / 1000)
+        << view << ": " << a.same_material << " of " << a.pixels;
+    EXPECT_LT(a.max_depth_error, 1e-4 * model_size) << view;
+}
+
+} // namespace
+
+TEST_P(Gpu, ReportsItsVersionAndRenderer)
+{
+    const Model m = geology(8, 8, 6);
+    const Tracer tracer(m, 1.0);
+    sbrt_gl::GpuTracer gpu(*context_, tracer);
+    EXPECT_NE(gpu.gl_version().find("4."), std::string::npos) << gpu.gl_version();
+    EXPECT_FALSE(gpu.gl_renderer().empty());
+}
+
+TEST_P(Gpu, BlockLayoutMatchesTheShader)
+{
+    const Model m = geology(4, 4, 4);
+    const Tracer tracer(m, 1.0);
+    sbrt_gl::GpuTracer gpu(*context_, tracer);
+    const sbrt_gl::GlApi &gl = gpu.gl();
+    auto offset_of = [&](GLenum interface, const char *name) {
+        const GLuint index = gl.GetProgramResourceIndex(gpu.program(), interface, name);
+        EXPECT_NE(index, GL_INVALID_INDEX) << name;
+        const GLenum property = GL_OFFSET;
+        GLint offset = -1;
+        gl.GetProgramResourceiv(gpu.program(), interface, index, 1, &property, 1,
+                                nullptr, &offset);
+        return offset;
+    };
+    EXPECT_EQ(offset_of(GL_UNIFORM, "origin_hi"), int(offsetof(GpuView, origin_hi)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "origin_lo"), int(offsetof(GpuView, origin_lo)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "forward"), int(offsetof(GpuView, forward)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "du"), int(offsetof(GpuView, du)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "dv"), int(offsetof(GpuView, dv)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "grid"), int(offsetof(GpuView, grid)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "box"), int(offsetof(GpuView, box)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "options"), int(offsetof(GpuView, options)));
+    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "intervals[0].material"),
+              int(offsetof(Interval, material)));
+    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "intervals[0].top"),
+              int(offsetof(Interval, top)));
+    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "hits[0].point"),
+              int(offsetof(GpuPixelHit, point)));
+    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "hits[0].code"),
+              int(offsetof(GpuPixelHit, code)));
+    const GLenum stride = GL_TOP_LEVEL_ARRAY_STRIDE;
+    GLint hit_stride = 0, interval_stride = 0;
+    gl.GetProgramResourceiv(
+        gpu.program(), GL_BUFFER_VARIABLE,
+        gl.GetProgramResourceIndex(gpu.program(), GL_BUFFER_VARIABLE, "hits[0].point"),
+        1, &stride, 1, nullptr, &hit_stride);
+    gl.GetProgramResourceiv(
+        gpu.program(), GL_BUFFER_VARIABLE,
+        gl.GetProgramResourceIndex(gpu.program(), GL_BUFFER_VARIABLE,
+                                   "intervals[0].top"),
+        1, &stride, 1, nullptr, &interval_stride);
+    EXPECT_EQ(hit_stride, int(sizeof(GpuPixelHit)));
+    EXPECT_EQ(interval_stride, int(sizeof(Interval)));
+}
+
+TEST_P(Gpu, AgreesWithTheCpuTracerFromManyCameras)
+{
+    const Model m = geology(48, 64, 30);
+    for (double zexag : {1.0, 3.0}) {
+        const Tracer tracer(m, zexag);
+        sbrt_gl::GpuTracer gpu(*context_, tracer);
+        const glm::dvec3 c = tracer.centre(), lo = tracer.corner(0),
+                         hi = tracer.corner(7);
+        const double size = glm::length(hi - lo);
+        struct View {
+            const char *name;
+            Camera camera;
+        };
+        const View views[] = {
+            {"oblique", Camera::perspective(c + glm::dvec3(-0.5, -0.6, 0.4) * size,
+                                            c, 40, 90, 120)},
+            // grazing: just above the highest top, looking along the surface
+            {"grazing", Camera::perspective(
+                            glm::dvec3(lo.x - 0.5 * size, c.y, hi.z + 1e-3),
+                            glm::dvec3(hi.x, c.y + 0.1 * size, hi.z - 0.02 * size),
+                            30, 80, 160)},
+            {"inside the box", Camera::perspective(
+                                   glm::dvec3(c.x, c.y, lo.z + 0.3 * (hi.z - lo.z)),
+                                   glm::dvec3(hi.x, hi.y, lo.z), 90, 80, 100)},
+            {"from below", Camera::perspective(c - glm::dvec3(0.3, 0.2, 1.5) * size,
+                                               c, 50, 70, 90)},
+            {"orthographic", Camera::orthographic(c + glm::dvec3(1, -2, 1) * size,
+                                                  c, size, 75, 100)},
+            {"horizontal", Camera::orthographic(
+                               glm::dvec3(c.x, c.y - 2 * size, lo.z + 0.4 * (hi.z - lo.z)),
+                               glm::dvec3(c.x, c.y, lo.z + 0.4 * (hi.z - lo.z)),
+                               (hi.z - lo.z) * 0.7, 60, 110)},
+            {"top", Camera::top(hi.y, lo.y, hi.x, lo.x, hi.z + size, 48, 64)},
+        };
+        for (const View &view : views) {
+            size_t over = 0;
+            const Agreement a = compare(gpu, tracer, view.camera, &over);
+            EXPECT_GT(a.hits, a.pixels / 10) << view.name;
+            EXPECT_EQ(over, 0u) << view.name;
+            expect_agreement(a, size, view.name);
+        }
+    }
+}
+
+TEST_P(Gpu, AgreesOnRandomModels)
+{
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+        const auto v = sbrt_test::random_voxels(seed, 20 + seed, 17 + 2 * seed, 25);
+        const Model m = sbrt_test::build_model(v);
+        const Tracer tracer(m, 2.0);
+        sbrt_gl::GpuTracer gpu(*context_, tracer);
+        const glm::dvec3 c = tracer.centre();
+        const double size = 2 * tracer.radius();
+        for (double az = 0.3; az < 6.28; az += 1.1) {
+            const glm::dvec3 eye =
+                c + size * glm::dvec3(std::sin(az), std::cos(az), 0.4 + 0.1 * seed);
+            expect_agreement(compare(gpu, tracer, Camera::perspective(eye, c, 45, 60, 80)),
+                             size, "random");
+        }
+    }
+}
+
+TEST_P(Gpu, LongestRayStaysWithinTheLoopBudget)
+{
+    // the largest supported grid side (16384 cells): a grazing ray along
+    // it skims the surface of every cell and hits the far end's wall
+    const int cols = 16384, rows = 4, depths = 3;
+    sbrt_test::Voxels v;
+    v.frame.rows = rows;
+    v.frame.cols = cols;
+    v.frame.depths = depths;
+    v.frame.west = 0;
+    v.frame.east = cols;
+    v.frame.south = 0;
+    v.frame.north = rows;
+    v.frame.bottom = 0;
+    v.frame.top = depths;
+    v.classes.assign(v.frame.voxels(), NULL_CLASS);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c)
+            for (int z = 0; z < (c == cols - 1 ? 3 : 1 + (c % 3 == 0)); ++z)
+                v.classes[(size_t(z) * rows + r) * cols + c] = 1 + z;
+    const Model m = sbrt_test::build_model(v);
+    const Tracer tracer(m, 1.0);
+    sbrt_gl::GpuTracer gpu(*context_, tracer);
+    const Camera camera = Camera::orthographic({-10, 2, 2.5}, {cols, 2, 2.5}, 1.0, 3, 3);
+    size_t over = 0;
+    const Agreement a = compare(gpu, tracer, camera, &over);
+    EXPECT_EQ(over, 0u);
+    EXPECT_EQ(a.same_material, a.pixels);
+    // the centre ray crosses every cell and ends on the last one's wall
+    const std::vector<Hit> hits = gpu.trace_image(camera, 1);
+    EXPECT_EQ(m.materials()[hits[4].material].id, 3);
+    EXPECT_NEAR(hits[4].point.x, cols - 1, 1e-3);
+}
+
+TEST_P(Gpu, RaysOverTheBudgetAreTracedOnTheCpu)
+{
+    const Model m = geology(40, 50, 20);
+    const Tracer tracer(m, 1.0);
+    sbrt_gl::GpuTracer gpu(*context_, tracer);
+    const glm::dvec3 c = tracer.centre();
+    const double size = 2 * tracer.radius();
+    const Camera camera = Camera::perspective(c + glm::dvec3(-0.4, -0.5, 0.3) * size,
+                                              c, 40, 60, 80);
+    size_t over = 0;
+    // a budget of 4 loop iterations: many rays give up on the GPU
+    const Agreement a = compare(gpu, tracer, camera, &over, 4);
+    EXPECT_GT(over, a.pixels / 20);
+    EXPECT_EQ(a.same_material, a.pixels);
+}
+
+TEST(GpuContext, UnknownBackendIsAnError)
+{
+    EXPECT_THROW(sbrt_gl::create_gl_context("vulkan"), Error);
+}
