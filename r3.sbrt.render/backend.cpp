@@ -93,9 +93,9 @@ std::vector<sbrt::Hit> trace_hits(const RenderRequest &request,
         const std::string renderer =
             reinterpret_cast<const char *>(gl.GetString(GL_RENDERER));
         if (is_software_renderer(renderer)) {
-            G_verbose_message(_("OpenGL renderer <%s> is software: the CPU ray "
-                                "caster is faster on the same cores"),
-                              renderer.c_str());
+            G_verbose_message(_("OpenGL renderer <%s> of %s is software: the "
+                                "CPU ray caster is faster on the same cores"),
+                              renderer.c_str(), context->name().c_str());
             context.reset();
             return trace_on_cpu(request, tracer, camera);
         }

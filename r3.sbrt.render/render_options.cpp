@@ -100,17 +100,17 @@ RenderOptions define_render_options()
     o->target->key_desc = "x,y,z";
     o->azimuth = define("azimuth", TYPE_DOUBLE,
                         _("Direction the camera looks from, degrees clockwise "
-                          "from north (without position=)"),
+                          "from north (ignored with position=)"),
                         _("Camera"), "225");
     o->azimuth->options = "0-360";
     o->elevation = define("elevation", TYPE_DOUBLE,
-                          _("Camera angle above the horizon, degrees (without "
-                            "position=)"),
+                          _("Camera angle above the horizon, degrees (ignored "
+                            "with position=)"),
                           _("Camera"), "30");
     o->elevation->options = "-90-90";
     o->distance = define("distance", TYPE_DOUBLE,
                          _("Distance from the target (default: frames the "
-                           "model; without position=)"),
+                           "model; ignored with position=)"),
                          _("Camera"));
     o->fov = define("fov", TYPE_DOUBLE,
                     _("Vertical field of view, degrees"), _("Camera"), "40");
@@ -177,8 +177,6 @@ RenderOptions define_render_options()
     o->nprocs->guisection = _("Settings");
 
     G_option_exclusive(o->color, o->rules, NULL);
-    G_option_exclusive(o->position, o->azimuth, NULL);
-    G_option_exclusive(o->position, o->distance, NULL);
     return options;
 }
 

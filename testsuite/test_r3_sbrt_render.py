@@ -24,6 +24,7 @@ class TestRenderTopView(TestCase):
         cls.use_temp_region()
         subprocess.run([MAKE_GEOMODEL, "T", "geo"], check=True)
         cls.runModule("r3.sbrt.convert", input="geo", output="geo")
+        cls.runModule("g.region", save="geo_region", overwrite=True)
         # independent: the topmost non-null voxel of every column
         cls.runModule("r3.to.rast", input="geo", output="sl")
         expr = "null()"
@@ -76,7 +77,131 @@ class TestRenderTopView(TestCase):
         univar = gs.parse_command("r.univar", map="persp_m", flags="g")
         self.assertGreater(int(univar["null_cells"]), 0)
         self.assertGreater(int(univar["n"]), 60 * 80 // 4)
-        self.runModule("g.region", raster_3d="geo")
+        self.runModule("g.region", region="geo_region")
+
+    def render_pair(self, name, **options):
+        """The same view through two backends: material and depth maps."""
+        for backend in ("cpu", name):
+            self.assertModule(
+                "r3.sbrt.render", input="geo", output=f"{backend}_img",
+                material=f"{backend}_mat", depth=f"{backend}_dep",
+                backend=backend, overwrite=True, **options,
+            )
+
+    def differing_cells(self, a, b):
+        self.runModule(
+            "r.mapcalc", overwrite=True,
+            expression=f"diff = if(isnull({a}) != isnull({b}) || "
+            f"(!isnull({a}) && {a} != {b}), 1, 0)",
+        )
+        return int(float(gs.parse_command("r.univar", map="diff", flags="g")["sum"]))
+
+    def test_gl_backends_agree_with_cpu(self):
+        """EGL and OSMesa (llvmpipe here) against the exact CPU tracer."""
+        self.runModule("g.region", rows=90, cols=120)
+        size = 2 * 640.0  # about the model's diagonal, map units
+        backends = ["egl"]
+        if os.path.exists("/usr/include/GL/osmesa.h"):  # built in (lib/gl_config.make)
+            backends.append("osmesa")
+        views = [
+            dict(),
+            dict(azimuth=100, elevation=3),  # grazing
+            dict(view="orthographic", azimuth=10, elevation=60),
+            dict(position=[200, 250, 300], target=[300, 100, 200]),  # inside
+        ]
+        for backend in backends:
+            for view in views:
+                self.render_pair(backend, **view)
+                # agree: both miss, or the same material at the same depth
+                self.runModule(
+                    "r.mapcalc", overwrite=True,
+                    expression=f"disagree = if(isnull(cpu_mat) && isnull({backend}_mat), 0, "
+                    f"if(isnull(cpu_mat) || isnull({backend}_mat), 1, "
+                    f"cpu_mat != {backend}_mat || "
+                    f"abs(cpu_dep - {backend}_dep) >= {1e-4 * size}))",
+                )
+                cells = 90 * 120
+                disagree = gs.parse_command("r.univar", map="disagree", flags="g")
+                self.assertLessEqual(int(float(disagree["sum"])), cells // 1000,
+                                     msg=f"{backend} {view}")
+                self.assertEqual(int(disagree["n"]), cells)
+        self.runModule("g.region", region="geo_region")
+
+    def test_gl_top_view_is_topmost_voxel(self):
+        self.assertModule(
+            "r3.sbrt.render", input="geo", output="gtop", view="top",
+            material="gtop_mat", backend="egl",
+        )
+        self.assertRastersNoDifference("gtop_mat", "top_class", precision=0)
+
+    def test_verbose_names_backend_and_renderer(self):
+        for backend, name in (("egl", "Backend: egl"), ("cpu", "Backend: cpu")):
+            run = subprocess.run(
+                ["r3.sbrt.render", "input=geo", "output=vb", f"backend={backend}",
+                 "--overwrite", "--verbose"],
+                capture_output=True, text=True, check=True,
+            )
+            self.assertIn(name, run.stderr)
+            if backend != "cpu":
+                self.assertIn("GL_VERSION: 4.", run.stderr)
+                self.assertIn("GL_RENDERER: ", run.stderr)
+
+    def test_missing_gl_is_a_clear_error(self):
+        # glvnd without any EGL vendor: EGL cannot work at all
+        env = dict(os.environ, __EGL_VENDOR_LIBRARY_FILENAMES="/nonexistent.json")
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=geo", "output=noegl", "backend=egl"],
+            capture_output=True, text=True, env=env,
+        )
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("backend=egl", run.stderr)
+        self.assertIn("egl (surfaceless)", run.stderr)
+        self.assertRasterDoesNotExist("noegl.red")
+        # auto falls back and still renders
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=geo", "output=noegl", "backend=auto"],
+            capture_output=True, text=True, env=env,
+        )
+        self.assertEqual(run.returncode, 0, msg=run.stderr)
+        self.assertRasterExists("noegl.red")
+
+    def test_kernel_normals_shade_but_keep_materials(self):
+        self.runModule("g.region", rows=60, cols=80)
+        self.assertModule("r3.sbrt.render", input="geo", output="nf", material="nf_m")
+        self.assertModule(
+            "r3.sbrt.render", input="geo", output="nk", material="nk_m",
+            normals="kernel", kernel=7, smooth=1.5,
+        )
+        self.assertEqual(self.differing_cells("nf_m", "nk_m"), 0)
+        self.assertGreater(self.differing_cells("nf.red", "nk.red"), 100)
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
+                              normals="kernel", kernel=4)
+        self.runModule("g.region", region="geo_region")
+
+    def test_color_rules_recolour_materials(self):
+        rules = gs.tempfile()
+        with open(rules, "w") as f:
+            f.write("13 255:0:0\ndefault 0:0:255\n")
+        self.assertModule(
+            "r3.sbrt.render", input="geo", output="rul", view="top",
+            material="rul_m", rules=rules, ambient=1,
+        )
+        # ambient=1: no shading, the pixel is the rule's colour
+        stats = gs.read_command("r.stats", flags="n", input="rul_m,rul.red,rul.blue")
+        for line in stats.splitlines():
+            cls, red, blue = (int(v) for v in line.split())
+            if cls == 13:
+                self.assertEqual((red, blue), (255, 0))
+        self.assertIn("13 255:0:0", gs.read_command("r.colors.out", map="rul_m"))
+        self.assertModule("r3.sbrt.render", input="geo", output="gry", view="top",
+                          color="grey", ambient=1)
+        self.runModule("r.mapcalc", overwrite=True,
+                       expression="notgrey = gry.red != gry.green || gry.red != gry.blue")
+        self.assertRasterMinMax("notgrey", refmin=0, refmax=0)
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
+                              color="grey", rules=rules)
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
+                              rules="/nonexistent/rules.txt")
 
     def test_bad_camera_fails(self):
         self.assertModuleFail(

@@ -121,7 +121,7 @@ std::unique_ptr<GlContext> try_devices(std::string &why)
     const char *client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!has_extension(client, "EGL_EXT_device_enumeration") ||
         !has_extension(client, "EGL_EXT_platform_device")) {
-        why = "device platform: EGL_EXT_device_enumeration or "
+        why = "egl (device platform): EGL_EXT_device_enumeration or "
               "EGL_EXT_platform_device missing";
         return nullptr;
     }
@@ -131,7 +131,7 @@ std::unique_ptr<GlContext> try_devices(std::string &why)
         eglGetProcAddress("eglQueryDeviceStringEXT"));
     EGLint count = 0;
     if (!query_devices || !query_devices(0, nullptr, &count) || count <= 0) {
-        why = "device platform: no EGL device";
+        why = "egl (device platform): no EGL device";
         return nullptr;
     }
     std::vector<EGLDeviceEXT> devices(count);
