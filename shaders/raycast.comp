@@ -81,6 +81,26 @@ void main()
         !clip(2, hi.z, lo.z, d.z, box.x, t_near, t_far, near_axis))
         return;
     uint wall = near_axis >= 0 ? entry_face(near_axis, d[near_axis]) : FACE_NONE;
+    // clip planes (unrolled by the count, not a loop over a budget):
+    // f(t) = a + b t <= 0 is kept
+    vec3 offset = lo - origin_lo.xyz; // x du + y dv for parallel rays
+    for (uint k = 0u; k < counts.x; ++k) {
+        float a = planes[k].w + dot(planes[k].xyz, offset);
+        float b = dot(planes[k].xyz, d);
+        if (b == 0.0) {
+            if (a > 0.0)
+                return;
+            continue;
+        }
+        float t = -a / b;
+        if (b > 0.0) {
+            t_far = min(t_far, t);
+        }
+        else if (t > t_near) {
+            t_near = t;
+            wall = FACE_PLANE | k << 4;
+        }
+    }
     if (t_near < 0.0) {
         t_near = 0.0; // the camera is inside the box
         wall = FACE_NONE;

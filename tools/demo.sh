@@ -19,7 +19,8 @@ set -euo pipefail
 r3.sbrt.convert input=geology output=geology -p
 # a view from the south-west, 1056 x 884 pixels, vertical exaggeration 2
 g.region rows=884 cols=1056
-r3.sbrt.render --verbose input=geology output=view material=view_class zexag=2 light=300,50
+r3.sbrt.render --verbose input=geology output=view material=view_class zexag=2 light=300,50 \\
+    normals=kernel kernel=7 smooth=1
 r.composite --q --o red=view.red green=view.green blue=view.blue output=view_rgb levels=256
 r.out.png --q --o input=view_rgb output="$out/r3_sbrt_demo_view.png"
 # the geological map: a top view in the model's own grid

@@ -41,6 +41,14 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
     view.box[0] = float(tracer.top_local());
     view.options[0] = camera.parallel() ? 1 : 0;
     view.options[1] = loop_budget;
+    // each plane's value at the camera origin, in double: the shader adds
+    // only what varies per ray
+    const std::vector<Tracer::LocalPlane> &planes = tracer.planes();
+    for (size_t k = 0; k < planes.size(); ++k) {
+        put(view.planes[k], planes[k].n);
+        view.planes[k][3] = float(glm::dot(planes[k].n, origin) + planes[k].c);
+    }
+    view.counts[0] = uint32_t(planes.size());
     return view;
 }
 
@@ -50,18 +58,25 @@ Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,
     over_budget = (record.code & GPU_CODE_OVER_BUDGET) != 0;
     Hit hit;
     const uint32_t material = record.code & 0xffffu;
-    const uint32_t face = (record.code >> 16) & 0xffu;
+    const uint32_t face = (record.code >> 16) & 0xfu;
+    const uint32_t plane = (record.code >> 20) & 0xfu;
     if (over_budget || material == EMPTY)
         return hit;
-    if (material >= tracer.model().materials().size() || face > 6)
-        fail("GPU hit record with material ", material, " and face ", face,
-             " is out of range");
+    if (material >= tracer.model().materials().size() || face > 7 ||
+        (face == uint32_t(Face::plane) && plane >= tracer.planes().size()))
+        fail("GPU hit record with material ", material, ", face ", face,
+             " and plane ", plane, " is out of range");
     hit.material = material;
     hit.face = Face(face);
     const glm::dvec3 local(record.point[0], record.point[1], record.point[2]);
     hit.point = tracer.from_local(local);
     hit.t = glm::length(tracer.exaggerate(hit.point) - ray.origin);
-    hit.normal = hit.face == Face::none ? -ray.direction : face_normal(hit.face);
+    if (hit.face == Face::plane) {
+        hit.plane = int(plane);
+        hit.normal = tracer.planes()[plane].shading_normal;
+    }
+    else
+        hit.normal = hit.face == Face::none ? -ray.direction : face_normal(hit.face);
     return hit;
 }
 

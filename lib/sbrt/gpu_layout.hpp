@@ -27,8 +27,12 @@ struct GpuView {
     uint32_t grid[4];    ///< model cols, rows; image cols, rows
     float box[4];        ///< x: highest interval top, local z
     uint32_t options[4]; ///< parallel rays, loop budget, first row, rows
+    float planes[MAX_CLIP_PLANES][4]; ///< local n, value at the origin
+    uint32_t counts[4];  ///< x: clip planes
 };
-static_assert(sizeof(GpuView) == 128, "std140 View block");
+static_assert(sizeof(GpuView) == 272, "std140 View block");
+static_assert(offsetof(GpuView, planes) == 128, "std140 View block");
+static_assert(offsetof(GpuView, counts) == 256, "std140 View block");
 static_assert(offsetof(GpuView, grid) == 80, "std140 View block");
 static_assert(offsetof(GpuView, options) == 112, "std140 View block");
 
@@ -40,7 +44,7 @@ static_assert(sizeof(Interval) == 8 && offsetof(Interval, material) == 0 &&
 /// `struct PixelHit` (std430): vec3 then uint, 16 bytes.
 struct GpuPixelHit {
     float point[3]; ///< local coordinates of the hit
-    uint32_t code;  ///< material | face << 16 | over budget << 24
+    uint32_t code;  ///< material | face << 16 | plane << 20 | over budget << 24
 };
 static_assert(sizeof(GpuPixelHit) == 16, "std430 PixelHit");
 

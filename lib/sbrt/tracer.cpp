@@ -43,7 +43,8 @@ Face entry_face(int axis, double d)
 
 } // namespace
 
-Tracer::Tracer(const Model &model, double zexag) : model_(model), zexag_(zexag)
+Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
+    : model_(model), zexag_(zexag)
 {
     if (!(zexag > 0) || !std::isfinite(zexag))
         fail("Tracer: vertical exaggeration ", zexag, " must be positive");
@@ -54,6 +55,21 @@ Tracer::Tracer(const Model &model, double zexag) : model_(model), zexag_(zexag)
                 z_max_local_, double(model.intervals()[model.stack_end(c) - 1].top));
     scale_ = glm::dvec3(1.0 / f.ew_res(), 1.0 / f.ns_res(),
                         1.0 / (f.tb_res() * zexag));
+    if (planes.size() > size_t(MAX_CLIP_PLANES))
+        fail("Tracer: ", planes.size(), " clip planes, at most ", MAX_CLIP_PLANES);
+    for (const ClipPlane &plane : planes) {
+        // n . (x - p) = 0 in real space is n' . (x' - p') = 0 in exaggerated
+        // space with n' = (nx, ny, nz / zexag)
+        const glm::dvec3 n(plane.normal.x, plane.normal.y, plane.normal.z / zexag);
+        const double length = glm::length(n);
+        if (!(length > 0) || !std::isfinite(length) ||
+            !std::isfinite(glm::length(plane.point)))
+            fail("clip plane: the normal must not be zero and all values finite");
+        const glm::dvec3 base(f.west, f.south, f.bottom);
+        planes_.push_back({n / scale_ / length,
+                           glm::dot(n, base - exaggerate(plane.point)) / length,
+                           n / length});
+    }
 }
 
 glm::dvec3 Tracer::exaggerate(glm::dvec3 p) const
@@ -189,9 +205,29 @@ Hit Tracer::trace(const Ray &ray) const
         t_far = std::min(t_far, t1);
     }
     Face wall = near_axis >= 0 ? entry_face(near_axis, d[near_axis]) : Face::none;
+    // clip planes: the kept side f(t) = a + b t <= 0 narrows [t_near, t_far]
+    int entry_plane = -1;
+    for (size_t k = 0; k < planes_.size(); ++k) {
+        const double a = glm::dot(planes_[k].n, o) + planes_[k].c;
+        const double b = glm::dot(planes_[k].n, d);
+        if (b == 0) {
+            if (a > 0)
+                return {}; // the ray runs in the removed half-space
+            continue;
+        }
+        const double t = -a / b;
+        if (b > 0)
+            t_far = std::min(t_far, t);
+        else if (t > t_near) {
+            t_near = t;
+            wall = Face::plane;
+            entry_plane = int(k);
+        }
+    }
     if (t_near < 0) {
         t_near = 0; // the camera is inside the box
         wall = Face::none;
+        entry_plane = -1;
     }
     if (!(t_near <= t_far) || z_max_local_ <= 0)
         return {};
@@ -213,8 +249,13 @@ Hit Tracer::trace(const Ray &ray) const
         Hit hit;
         if (hit_in_cell(cell, o.z + t_in * d.z, o.z + t_out * d.z, o.z, d.z,
                         t_in, wall, hit)) {
-            hit.normal = hit.face == Face::none ? -ray.direction
-                                                : face_normal(hit.face);
+            if (hit.face == Face::plane) {
+                hit.plane = entry_plane;
+                hit.normal = planes_[size_t(entry_plane)].shading_normal;
+            }
+            else
+                hit.normal = hit.face == Face::none ? -ray.direction
+                                                    : face_normal(hit.face);
             hit.point = from_local(o + hit.t * d);
             return hit;
         }

@@ -9,6 +9,7 @@
 #define SBRT_TRACER_HPP
 
 #include <limits>
+#include <vector>
 
 #include "camera.hpp"
 #include "model.hpp"
@@ -16,9 +17,19 @@
 namespace sbrt {
 
 /// Face of a hit: which plane of the cell/interval the ray entered through.
-enum class Face { none, west, east, south, north, bottom, top };
+enum class Face { none, west, east, south, north, bottom, top, plane };
 
-/// Outward unit normal of a face (zero for Face::none).
+/// \brief A clip plane in real map coordinates: everything on the side the
+/// normal points to is removed (what is left is cut open along the plane).
+struct ClipPlane {
+    glm::dvec3 point;
+    glm::dvec3 normal; ///< not zero; need not be unit length
+};
+
+/// Most clip planes one render takes (the GPU's view block holds them).
+constexpr int MAX_CLIP_PLANES = 8;
+
+/// Outward unit normal of a cell face (zero for Face::none and a plane).
 glm::dvec3 face_normal(Face face);
 
 /// \brief First opaque hit of a ray; t is in map units along the ray.
@@ -26,6 +37,7 @@ struct Hit {
     double t = std::numeric_limits<double>::infinity();
     uint32_t material = EMPTY;
     Face face = Face::none;
+    int plane = -1; ///< the clip plane hit, with Face::plane
     glm::dvec3 point{0}; ///< real (unexaggerated) map coordinates
     glm::dvec3 normal{0};
     bool is_hit() const { return material != EMPTY; }
@@ -35,7 +47,7 @@ struct Hit {
 /// vertical exaggeration `zexag` applied about the model's bottom.
 class Tracer {
 public:
-    Tracer(const Model &model, double zexag);
+    Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes = {});
 
     Hit trace(const Ray &ray) const;
 
@@ -61,6 +73,15 @@ public:
     /// Top of the highest interval, local units (tb_res steps).
     double top_local() const { return z_max_local_; }
     const Model &model() const { return model_; }
+
+    /// A clip plane in the local frame: f(l) = n . l + c, kept where f <= 0;
+    /// `shading_normal` is its unit normal in exaggerated map space.
+    struct LocalPlane {
+        glm::dvec3 n;
+        double c;
+        glm::dvec3 shading_normal;
+    };
+    const std::vector<LocalPlane> &planes() const { return planes_; }
     double zexag() const { return zexag_; }
 
 private:
@@ -69,6 +90,7 @@ private:
 
     const Model &model_;
     double zexag_;
+    std::vector<LocalPlane> planes_;
     double z_max_local_ = 0; ///< highest interval top, local units
     glm::dvec3 scale_;       ///< map -> local per axis (exaggerated map)
 };

@@ -19,6 +19,9 @@ layout(std140, binding = 0) uniform View {
     vec4 box;           // x: highest interval top (local z)
     uvec4 options;      // x: 1 = parallel rays, y: loop budget,
                         // z: first image row of this dispatch, w: its rows
+    vec4 planes[8];     // clip planes: xyz normal n (local), w: n . origin + c;
+                        // kept where n . (x - origin) + w <= 0
+    uvec4 counts;       // x: clip planes
 };
 
 // The model: offsets[cell] .. offsets[cell + 1] index the intervals of a
@@ -33,10 +36,10 @@ layout(std430, binding = 1) readonly buffer Intervals { Interval intervals[]; };
 // One record per pixel of the band, row-major from its top row.
 struct PixelHit {
     vec3 point;         // local coordinates of the hit
-    uint code;          // material | face << 16 | over budget << 24
+    uint code;          // material | face << 16 | plane << 20 | over budget << 24
 };
 layout(std430, binding = 2) writeonly buffer Hits { PixelHit hits[]; };
 
 const uint FACE_NONE = 0u, FACE_WEST = 1u, FACE_EAST = 2u, FACE_SOUTH = 3u,
-           FACE_NORTH = 4u, FACE_BOTTOM = 5u, FACE_TOP = 6u;
+           FACE_NORTH = 4u, FACE_BOTTOM = 5u, FACE_TOP = 6u, FACE_PLANE = 7u;
 const uint CODE_OVER_BUDGET = 1u << 24;

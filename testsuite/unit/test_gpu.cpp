@@ -15,6 +15,7 @@
 #include "cpu_tracing.hpp"
 #include "error.hpp"
 #include "gpu_tracer.hpp"
+#include "hidden_materials.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;
@@ -162,6 +163,8 @@ TEST_P(Gpu, BlockLayoutMatchesTheShader)
     EXPECT_EQ(offset_of(GL_UNIFORM, "grid"), int(offsetof(GpuView, grid)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "box"), int(offsetof(GpuView, box)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "options"), int(offsetof(GpuView, options)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "planes[0]"), int(offsetof(GpuView, planes)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "counts"), int(offsetof(GpuView, counts)));
     EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "intervals[0].material"),
               int(offsetof(Interval, material)));
     EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "intervals[0].top"),
@@ -226,6 +229,40 @@ TEST_P(Gpu, AgreesWithTheCpuTracerFromManyCameras)
             EXPECT_EQ(over, 0u) << view.name;
             expect_agreement(a, view.name);
         }
+    }
+}
+
+TEST_P(Gpu, AgreesWithClipPlanesAndHiddenMaterials)
+{
+    const Model full = geology(40, 56, 24);
+    const Model m = hide_materials(full, {2, 5});
+    const Frame &f = m.frame();
+    // off the cell walls and interval tops: a cut along one of them would
+    // leave every ray on an edge
+    const glm::dvec3 mid((f.west + f.east) / 2 + 0.37 * f.ew_res(),
+                         (f.south + f.north) / 2 + 0.29 * f.ns_res(),
+                         (f.bottom + f.top) / 2 + 0.41 * f.tb_res());
+    const std::vector<ClipPlane> planes = {
+        {mid, {0, 0, 1}},                         // horizontal cut
+        {mid, {1, -0.6, 0.2}},                    // oblique cut
+        {mid + glm::dvec3(0, 8 * f.ns_res(), 0), {0, 1, 0}}, // vertical section
+    };
+    for (size_t n = 1; n <= planes.size(); ++n) {
+        const Tracer tracer(m, 2.0, {planes.begin(), planes.begin() + n});
+        sbrt_gl::GpuTracer gpu(*context_, tracer);
+        const glm::dvec3 c = tracer.centre();
+        const double size = 2 * tracer.radius();
+        size_t over = 0;
+        const Agreement a = compare(
+            gpu, tracer,
+            Camera::perspective(c + glm::dvec3(0.4, 0.8, 0.5) * size, c, 40, 80, 100),
+            &over);
+        EXPECT_EQ(over, 0u);
+        expect_agreement(a, "planes");
+        const Agreement top = compare(
+            gpu, tracer,
+            Camera::top(f.north, f.south, f.east, f.west, f.top + size, f.rows, f.cols));
+        expect_agreement(top, "planes, top");
     }
 }
 

@@ -1,0 +1,122 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   Scene operations against brute force over the source voxels:
+ *            hidden materials (the subcrop map) and clip planes (a
+ *            horizontal cut is a slice of the voxels)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "cpu_tracing.hpp"
+#include "error.hpp"
+#include "hidden_materials.hpp"
+#include "test_support.hpp"
+
+using namespace sbrt;
+
+namespace {
+
+/// Index of the material of class `id` in the model.
+uint32_t index_of(const Model &m, int32_t id)
+{
+    for (uint32_t i = 1; i < m.materials().size(); ++i)
+        if (m.materials()[i].id == id)
+            return i;
+    ADD_FAILURE() << "no class " << id;
+    return 0;
+}
+
+/// The first voxel class at or below depth `from`, top down, skipping
+/// nulls and the classes in `skip`; NULL_CLASS if none.
+int32_t first_below(const sbrt_test::Voxels &v, int row, int col, int from,
+                    const std::set<int32_t> &skip = {})
+{
+    for (int z = from; z >= 0; --z) {
+        const int32_t id = v.classes[(size_t(z) * v.frame.rows + row) * v.frame.cols + col];
+        if (id != NULL_CLASS && !skip.count(id))
+            return id;
+    }
+    return NULL_CLASS;
+}
+
+} // namespace
+
+TEST(HiddenMaterials, TopViewIsTheSubcropMap)
+{
+    const auto v = sbrt_test::random_voxels(5, 17, 13, 30, 6);
+    const Model full = sbrt_test::build_model(v);
+    const std::set<int32_t> hidden_ids = {-13, 1, 15};
+    std::vector<uint32_t> hidden;
+    for (int32_t id : hidden_ids)
+        hidden.push_back(index_of(full, id));
+    const Model m = hide_materials(full, hidden);
+    m.validate(); // maximal runs, no trailing empty interval
+    EXPECT_LT(m.intervals().size(), full.intervals().size());
+    const Frame &f = v.frame;
+    const Tracer tracer(m, 1.0);
+    const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e4, f.rows, f.cols);
+    const std::vector<Hit> hits = trace_image(tracer, cam, 2);
+    for (int row = 0; row < f.rows; ++row)
+        for (int col = 0; col < f.cols; ++col) {
+            const Hit &h = hits[size_t(row) * f.cols + col];
+            const int32_t got = h.is_hit() ? m.materials()[h.material].id : NULL_CLASS;
+            ASSERT_EQ(got, first_below(v, row, col, f.depths - 1, hidden_ids))
+                << row << "," << col;
+        }
+    EXPECT_THROW(hide_materials(full, {EMPTY}), Error);
+    EXPECT_THROW(hide_materials(full, {uint32_t(full.materials().size())}), Error);
+}
+
+TEST(ClipPlanes, HorizontalCutIsAVoxelSlice)
+{
+    const auto v = sbrt_test::random_voxels(9, 15, 12, 24, 7);
+    const Model m = sbrt_test::build_model(v);
+    const Frame &f = v.frame;
+    for (int level : {3, 11, 20}) {
+        // the plane through the centres of the voxels of `level`
+        const double z0 = f.bottom + (level + 0.5) * f.tb_res();
+        for (double zexag : {1.0, 4.0}) {
+            const Tracer tracer(m, zexag, {{{0, 0, z0}, {0, 0, 1}}});
+            const Camera cam = Camera::top(f.north, f.south, f.east, f.west,
+                                           tracer.exaggerate({0, 0, f.top}).z + 10,
+                                           f.rows, f.cols);
+            const std::vector<Hit> hits = trace_image(tracer, cam, 2);
+            for (int row = 0; row < f.rows; ++row)
+                for (int col = 0; col < f.cols; ++col) {
+                    const Hit &h = hits[size_t(row) * f.cols + col];
+                    const int32_t got =
+                        h.is_hit() ? m.materials()[h.material].id : NULL_CLASS;
+                    const int32_t want = first_below(v, row, col, level);
+                    ASSERT_EQ(got, want) << level << ": " << row << "," << col;
+                    const int32_t at_level =
+                        v.classes[(size_t(level) * f.rows + row) * f.cols + col];
+                    if (at_level != NULL_CLASS) {
+                        // cut open: the hit lies on the plane, facing up
+                        EXPECT_EQ(h.face, Face::plane);
+                        EXPECT_NEAR(h.point.z, z0, 1e-9);
+                        EXPECT_NEAR(h.normal.z, 1, 1e-12);
+                    }
+                }
+        }
+    }
+}
+
+TEST(ClipPlanes, RemovedSideIsWhereTheNormalPoints)
+{
+    const auto v = sbrt_test::random_voxels(3, 10, 10, 10, 3);
+    const Model m = sbrt_test::build_model(v);
+    const Frame &f = v.frame;
+    const glm::dvec3 mid((f.west + f.east) / 2, (f.south + f.north) / 2, f.top);
+    // removing everything east of the middle: rays there miss
+    const Tracer tracer(m, 1.0, {{mid, {1, 0, 0}}});
+    const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e4, f.rows, f.cols);
+    const std::vector<Hit> hits = trace_image(tracer, cam, 1);
+    for (int row = 0; row < f.rows; ++row)
+        for (int col = f.cols / 2; col < f.cols; ++col)
+            EXPECT_FALSE(hits[size_t(row) * f.cols + col].is_hit());
+    EXPECT_THROW(Tracer(m, 1.0, {{mid, {0, 0, 0}}}), Error);
+    EXPECT_THROW(Tracer(m, 1.0, std::vector<ClipPlane>(MAX_CLIP_PLANES + 1, {mid, {1, 0, 0}})),
+                 Error);
+}
