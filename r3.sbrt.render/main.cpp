@@ -10,11 +10,13 @@
 #include "backend.hpp"
 #include "error.hpp"
 #include "grass.hpp"
+#include "hidden_materials.hpp"
 #include "material_colors.hpp"
 #include "raster_output.hpp"
 #include "render_options.hpp"
 #include "sbrt_store.hpp"
 #include "scene_camera.hpp"
+#include "scene_setup.hpp"
 #include "shading.hpp"
 
 namespace {
@@ -23,10 +25,14 @@ void run(const RenderRequest &request)
 {
     sbrt::Model model = sbrt_grass::read_sbrt_map(request.input.c_str());
     apply_color_option(request, model);
+    if (!request.hide.empty())
+        model = sbrt::hide_materials(model, hidden_materials(request, model));
     struct Cell_head region;
     G_get_window(&region);
-    const sbrt::Tracer tracer(model, request.zexag);
-    const sbrt::Camera camera = make_camera(request, tracer, region);
+    // the camera frames the whole model's box, whatever is hidden or cut
+    const sbrt::Camera camera =
+        make_camera(request, sbrt::Tracer(model, request.zexag), region);
+    const sbrt::Tracer tracer(model, request.zexag, clip_planes(request, camera));
 
     sbrt::Shading shading;
     shading.light = sbrt::Shading::light_from(request.light_azimuth,

@@ -7,7 +7,10 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <thread>
+
+#include "tracer.hpp"
 
 namespace {
 
@@ -46,6 +49,19 @@ std::optional<glm::dvec3> read_point(const Option *o)
         p[i] = std::atof(o->answers[i]);
     }
     return p;
+}
+
+std::vector<double> read_numbers(const Option *o)
+{
+    std::vector<double> values;
+    for (char **a = o->answers; a && *a; ++a) {
+        char *end = nullptr;
+        const double v = std::strtod(*a, &end);
+        if (*end || !std::isfinite(v))
+            G_fatal_error(_("Option <%s>: <%s> is not a number"), o->key, *a);
+        values.push_back(v);
+    }
+    return values;
 }
 
 double read_double(const Option *o)
@@ -162,6 +178,22 @@ RenderOptions define_render_options()
         _("Lines of 'class colour', 'nv colour', 'default colour'; '-' reads stdin");
     o->rules->guisection = _("Shading");
 
+    o->hide = define("hide", TYPE_STRING,
+                     _("Classes not drawn: class ids or labels"), _("Strata"));
+    o->hide->multiple = YES;
+    o->hide->key_desc = "class";
+    o->plane = define("plane", TYPE_DOUBLE,
+                      _("Clip planes: a point and a normal each; the side the "
+                        "normal points to is removed"),
+                      _("Sections"));
+    o->plane->multiple = YES;
+    o->plane->key_desc = "x,y,z,nx,ny,nz";
+    o->section = define("section", TYPE_DOUBLE,
+                        _("Vertical cross section through two points: the side "
+                          "facing the camera is removed"),
+                        _("Sections"));
+    o->section->key_desc = "x1,y1,x2,y2";
+
     o->backend = define("backend", TYPE_STRING, _("Renderer"), _("Settings"),
                         "auto");
     o->backend->options = "auto,egl,osmesa,cpu";
@@ -233,6 +265,35 @@ RenderRequest read_render_options(const RenderOptions &options)
         G_fatal_error(_("smooth=%g must not be negative"), r.smooth);
     r.color = o->color->answer ? o->color->answer : "";
     r.rules = o->rules->answer ? o->rules->answer : "";
+    for (char **a = o->hide->answers; a && *a; ++a)
+        r.hide.emplace_back(*a);
+    const std::vector<double> plane = read_numbers(o->plane);
+    if (plane.size() % 6)
+        G_fatal_error(_("plane= takes six numbers per plane (x,y,z,nx,ny,nz), "
+                        "not %zu"),
+                      plane.size());
+    if (plane.size() / 6 > size_t(sbrt::MAX_CLIP_PLANES))
+        G_fatal_error(_("plane= gives %zu planes; at most %d"), plane.size() / 6,
+                      sbrt::MAX_CLIP_PLANES);
+    for (size_t i = 0; i < plane.size(); i += 6) {
+        std::array<double, 6> p;
+        std::copy_n(plane.begin() + long(i), 6, p.begin());
+        if (p[3] == 0 && p[4] == 0 && p[5] == 0)
+            G_fatal_error(_("plane=%g,%g,%g,%g,%g,%g: the normal is zero"), p[0],
+                          p[1], p[2], p[3], p[4], p[5]);
+        r.planes.push_back(p);
+    }
+    const std::vector<double> section = read_numbers(o->section);
+    if (!section.empty()) {
+        if (section.size() != 4)
+            G_fatal_error(_("section= takes four numbers x1,y1,x2,y2"));
+        if (section[0] == section[2] && section[1] == section[3])
+            G_fatal_error(_("section=: the two points are the same"));
+        r.section = {section[0], section[1], section[2], section[3]};
+        if (r.planes.size() + 1 > size_t(sbrt::MAX_CLIP_PLANES))
+            G_fatal_error(_("plane= and section= give more than %d planes"),
+                          sbrt::MAX_CLIP_PLANES);
+    }
     r.backend = o->backend->answer;
     r.threads = std::atoi(o->nprocs->answer);
     if (r.threads < 0)

@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -28,6 +29,9 @@ struct RenderRequest {
     int kernel = 5;
     double smooth = 0;
     std::string color, rules; ///< colour table name or rules file
+    std::vector<std::string> hide;           ///< class ids or labels
+    std::vector<std::array<double, 6>> planes; ///< x,y,z,nx,ny,nz each
+    std::optional<std::array<double, 4>> section; ///< x1,y1,x2,y2
     std::string backend = "auto";
     int threads = 0;
 };
@@ -39,6 +43,7 @@ struct RenderOptions {
         *ortho_height, *zexag;
     Option *light, *ambient, *background, *normals, *kernel, *smooth, *color,
         *rules;
+    Option *hide, *plane, *section;
     Option *backend, *nprocs;
 };
 

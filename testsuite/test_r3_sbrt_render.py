@@ -203,6 +203,71 @@ class TestRenderTopView(TestCase):
         self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
                               rules="/nonexistent/rules.txt")
 
+    def test_hidden_strata_give_the_subcrop_map(self):
+        """view=top with hide= is the first visible class from the top."""
+        hidden = (13, 12)
+        expr = "null()"
+        for z in range(1, self.depths + 1):
+            sl = f"sl_{z:05d}"
+            # ||| is true when one side is, even if the other is null
+            skip = " ||| ".join([f"isnull({sl})"] + [f"{sl} == {h}" for h in hidden])
+            expr = f"if({skip}, {expr}, {sl})"
+        self.runModule("r.mapcalc", expression=f"subcrop = int({expr})", overwrite=True)
+        self.assertModule(
+            "r3.sbrt.render", input="geo", output="sub", view="top",
+            material="sub_mat", hide=["13", "conglomerate"],  # an id and a label
+        )
+        self.assertRastersNoDifference("sub_mat", "subcrop", precision=0)
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad", hide="nosuch")
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad", hide="99")
+
+    def test_horizontal_plane_is_a_voxel_slice(self):
+        """view=top cut at the centre of voxel level k: r3.to.rast's slice k,
+        and below the slice's nulls the first class further down."""
+        for level in (20, 41):  # 1-based like r3.to.rast
+            z0 = (level - 0.5) * 10.0
+            expr = "null()"
+            for z in range(1, level + 1):
+                sl = f"sl_{z:05d}"
+                expr = f"if(isnull({sl}), {expr}, {sl})"
+            self.runModule("r.mapcalc", expression=f"cut_want = int({expr})",
+                           overwrite=True)
+            for backend in ("cpu", "egl"):
+                self.assertModule(
+                    "r3.sbrt.render", input="geo", output="cut", view="top",
+                    material="cut_mat", plane=[0, 0, z0, 0, 0, 1], backend=backend,
+                    hit_elevation="cut_z", overwrite=True,
+                )
+                self.assertRastersNoDifference("cut_mat", "cut_want", precision=0)
+                # where the slice holds a class, the hit is on the plane
+                self.runModule(
+                    "r.mapcalc", overwrite=True,
+                    expression=f"cut_off = if(isnull(sl_{level:05d}), null(), abs(cut_z - {z0}))",
+                )
+                # float on the GPU: 1e-3 m in 640 m
+                self.assertRasterMinMax("cut_off", refmin=0, refmax=1e-3)
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
+                              plane=[0, 0, 10, 0, 0, 0])
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
+                              plane=[0, 0, 10, 0, 0])
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
+                              section=[10, 10, 10, 10])
+
+    def test_section_removes_the_side_facing_the_camera(self):
+        self.runModule("g.region", rows=60, cols=80)
+        self.assertModule("r3.sbrt.render", input="geo", output="whole", depth="whole_d")
+        # a north-south section 200 m east of the west edge, seen from the
+        # south-west (default camera): the west part is removed, so what is
+        # seen lies farther away on average
+        self.assertModule(
+            "r3.sbrt.render", input="geo", output="cut", depth="cut_d",
+            section=[200, 0, 200, 500],
+        )
+        whole = gs.parse_command("r.univar", map="whole_d", flags="g")
+        cut = gs.parse_command("r.univar", map="cut_d", flags="g")
+        self.assertGreater(float(cut["mean"]), float(whole["mean"]))
+        self.runModule("g.region", region="geo_region")
+
     def test_bad_camera_fails(self):
         self.assertModuleFail(
             "r3.sbrt.render", input="geo", output="bad",

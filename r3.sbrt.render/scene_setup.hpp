@@ -1,0 +1,25 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   The scene's visual operations from the request: hidden
+ *            classes (ids or labels) and clip planes (plane=, section=)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_SCENE_SETUP_HPP
+#define R3_SBRT_SCENE_SETUP_HPP
+
+#include <vector>
+
+#include "camera.hpp"
+#include "render_options.hpp"
+#include "tracer.hpp"
+
+/// Material indices of hide=; a fatal error names an unknown class.
+std::vector<uint32_t> hidden_materials(const RenderRequest &request,
+                                       const sbrt::Model &model);
+
+/// plane= as given, and section= with its normal turned towards the
+/// camera (the side facing the camera is removed, so the cut shows).
+std::vector<sbrt::ClipPlane> clip_planes(const RenderRequest &request,
+                                         const sbrt::Camera &camera);
+
+#endif
