@@ -28,6 +28,18 @@ Option *define(const char *key, int type, const char *desc,
     return o;
 }
 
+/// A string option with a fixed list of `choices` ("a,b") and their
+/// descriptions ("a;text;b;text") for the GUI.
+Option *define_choice(const char *key, const char *desc, const char *section,
+                      const char *answer, const char *choices,
+                      const char *descriptions)
+{
+    Option *o = define(key, TYPE_STRING, desc, section, answer);
+    o->options = choices;
+    o->descriptions = descriptions;
+    return o;
+}
+
 Option *define_map_output(const char *key, const char *desc)
 {
     Option *o = G_define_standard_option(G_OPT_R_OUTPUT);
@@ -98,14 +110,13 @@ RenderOptions define_render_options()
     o->depth = define_map_output(
         "depth", _("Raster map of the distance from the camera to the hit"));
 
-    o->view = define("view", TYPE_STRING, _("Projection of the view"),
-                     _("Camera"), "perspective");
-    o->view->options = "perspective,orthographic,top";
-    o->view->descriptions =
+    o->view = define_choice(
+        "view", _("Projection of the view"), _("Camera"), "perspective",
+        "perspective,orthographic,top",
         _("perspective;Perspective camera;"
           "orthographic;Parallel rays along target - position;"
           "top;Straight down, one pixel per cell of the current region "
-          "(georeferenced outputs)");
+          "(georeferenced outputs)"));
     o->position = define("position", TYPE_DOUBLE,
                          _("Camera position (map units, unexaggerated)"),
                          _("Camera"));
@@ -151,13 +162,12 @@ RenderOptions define_render_options()
     o->background->description = _("Colour where rays miss the model");
     o->background->guisection = _("Shading");
 
-    o->normals = define("normals", TYPE_STRING, _("Surface normals for lighting"),
-                        _("Shading"), "face");
-    o->normals->options = "face,kernel";
-    o->normals->descriptions =
+    o->normals = define_choice(
+        "normals", _("Surface normals for lighting"), _("Shading"), "face",
+        "face,kernel",
         _("face;Exact normal of the cell wall, top or bottom that was hit;"
           "kernel;Image-space k x k x k kernel over the depth image "
-          "(smoother, as in Graciano et al. 2018)");
+          "(smoother, as in Graciano et al. 2018)"));
     o->kernel = define("kernel", TYPE_INTEGER,
                        _("Kernel size k of normals=kernel (odd)"),
                        _("Shading"), "5");
@@ -194,15 +204,13 @@ RenderOptions define_render_options()
                         _("Sections"));
     o->section->key_desc = "x1,y1,x2,y2";
 
-    o->backend = define("backend", TYPE_STRING, _("Renderer"), _("Settings"),
-                        "auto");
-    o->backend->options = "auto,egl,osmesa,cpu";
-    o->backend->descriptions =
+    o->backend = define_choice(
+        "backend", _("Renderer"), _("Settings"), "auto", "auto,egl,osmesa,cpu",
         _("auto;GPU through EGL, else OSMesa, else (or where the only "
           "OpenGL is a slower software one) the CPU ray caster;"
           "egl;OpenGL compute shader, headless EGL context;"
           "osmesa;OpenGL compute shader, OSMesa context (Mesa < 25.1);"
-          "cpu;Exact multithreaded CPU ray caster");
+          "cpu;Exact multithreaded CPU ray caster"));
     o->nprocs = G_define_standard_option(G_OPT_M_NPROCS);
     o->nprocs->answer = const_cast<char *>("0");
     o->nprocs->description = _("Number of threads (0: all cores)");

@@ -55,21 +55,14 @@ void GlBuffer::download(void *data, size_t bytes) const
 
 namespace {
 
-std::string shader_log(const GlApi &gl, GLuint shader)
+/// The info log of a shader or program (getters glGet*iv, glGet*InfoLog).
+template <typename GetInteger, typename GetLog>
+std::string info_log(GetInteger get_integer, GetLog get_log, GLuint object)
 {
     GLint length = 0;
-    gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    get_integer(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(size_t(std::max(length, 1)), '\0');
-    gl.GetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
-    return log.c_str();
-}
-
-std::string program_log(const GlApi &gl, GLuint program)
-{
-    GLint length = 0;
-    gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(size_t(std::max(length, 1)), '\0');
-    gl.GetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+    get_log(object, GLsizei(log.size()), nullptr, log.data());
     return log.c_str();
 }
 
@@ -85,7 +78,7 @@ GlComputeProgram::GlComputeProgram(const GlApi &gl,
     GLint ok = 0;
     gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        const std::string log = shader_log(gl, shader);
+        const std::string log = info_log(gl.GetShaderiv, gl.GetShaderInfoLog, shader);
         gl.DeleteShader(shader);
         sbrt::fail("OpenGL: the compute shader does not compile: ", log);
     }
@@ -95,7 +88,8 @@ GlComputeProgram::GlComputeProgram(const GlApi &gl,
     gl.DeleteShader(shader); // stays alive while attached
     gl.GetProgramiv(program_, GL_LINK_STATUS, &ok);
     if (!ok) {
-        const std::string log = program_log(gl, program_);
+        const std::string log =
+            info_log(gl.GetProgramiv, gl.GetProgramInfoLog, program_);
         gl.DeleteProgram(program_);
         sbrt::fail("OpenGL: the compute program does not link: ", log);
     }

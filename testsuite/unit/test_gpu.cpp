@@ -261,7 +261,7 @@ TEST_P(Gpu, AgreesWithClipPlanesAndHiddenMaterials)
         expect_agreement(a, "planes");
         const Agreement top = compare(
             gpu, tracer,
-            Camera::top(f.north, f.south, f.east, f.west, f.top + size, f.rows, f.cols));
+            sbrt_test::top_camera(f, f.top + size));
         expect_agreement(top, "planes, top");
     }
 }

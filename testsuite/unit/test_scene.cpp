@@ -56,7 +56,7 @@ TEST(HiddenMaterials, TopViewIsTheSubcropMap)
     EXPECT_LT(m.intervals().size(), full.intervals().size());
     const Frame &f = v.frame;
     const Tracer tracer(m, 1.0);
-    const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e4, f.rows, f.cols);
+    const Camera cam = sbrt_test::top_camera(f, 1e4);
     const std::vector<Hit> hits = trace_image(tracer, cam, 2);
     for (int row = 0; row < f.rows; ++row)
         for (int col = 0; col < f.cols; ++col) {
@@ -111,7 +111,7 @@ TEST(ClipPlanes, RemovedSideIsWhereTheNormalPoints)
     const glm::dvec3 mid((f.west + f.east) / 2, (f.south + f.north) / 2, f.top);
     // removing everything east of the middle: rays there miss
     const Tracer tracer(m, 1.0, {{mid, {1, 0, 0}}});
-    const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e4, f.rows, f.cols);
+    const Camera cam = sbrt_test::top_camera(f, 1e4);
     const std::vector<Hit> hits = trace_image(tracer, cam, 1);
     for (int row = 0; row < f.rows; ++row)
         for (int col = f.cols / 2; col < f.cols; ++col)

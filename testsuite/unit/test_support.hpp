@@ -69,6 +69,12 @@ inline sbrt::Model build_model(const Voxels &v)
     return builder.finish();
 }
 
+/// A top view of the whole frame, one pixel per cell, from `above`.
+inline sbrt::Camera top_camera(const sbrt::Frame &f, double above)
+{
+    return sbrt::Camera::top(f.north, f.south, f.east, f.west, above, f.rows, f.cols);
+}
+
 /// The CPU reference image of a model seen by `camera`.
 inline sbrt::Image render_cpu(const sbrt::Model &m, const sbrt::Camera &camera,
                               double zexag, unsigned threads = 2)

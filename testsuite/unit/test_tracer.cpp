@@ -122,8 +122,7 @@ TEST(Tracer, TopViewSeesTheTopmostSolidVoxel)
     const auto v = sbrt_test::random_voxels(42, 13, 11, 20, 5);
     const Model m = sbrt_test::build_model(v);
     const Frame &f = v.frame;
-    const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e4,
-                                   f.rows, f.cols);
+    const Camera cam = sbrt_test::top_camera(f, 1e4);
     const Image image = sbrt_test::render_cpu(m, cam, 1.0);
     for (int row = 0; row < f.rows; ++row)
         for (int col = 0; col < f.cols; ++col) {
@@ -146,8 +145,7 @@ TEST(Tracer, ExaggerationKeepsWhatIsHitOnAVerticalRay)
     const auto v = sbrt_test::random_voxels(8, 6, 6, 10, 4);
     const Model m = sbrt_test::build_model(v);
     const Frame &f = v.frame;
-    const Camera cam = Camera::top(f.north, f.south, f.east, f.west, 1e5,
-                                   f.rows, f.cols);
+    const Camera cam = sbrt_test::top_camera(f, 1e5);
     const Image a = sbrt_test::render_cpu(m, cam, 1.0, 1);
     const Image b = sbrt_test::render_cpu(m, cam, 7.5, 1);
     EXPECT_EQ(a.material, b.material);
