@@ -21,8 +21,15 @@ r3.sbrt.convert input=geology output=geology -p
 g.region rows=884 cols=1056
 r3.sbrt.render --verbose input=geology output=view material=view_class zexag=2 light=300,50 \\
     normals=kernel kernel=7 smooth=1
-r.composite --q --o red=view.red green=view.green blue=view.blue output=view_rgb levels=256
-r.out.png --q --o input=view_rgb output="$out/r3_sbrt_demo_view.png"
+# the same view without the upper strata, and cut open along a section
+r3.sbrt.render --q input=geology output=hidden zexag=2 light=300,50 normals=kernel kernel=7 smooth=1 \\
+    hide=13,12,11,10
+r3.sbrt.render --q input=geology output=section zexag=2 light=300,50 normals=kernel kernel=7 smooth=1 \\
+    section=0,1200,2000,1500
+for image in view hidden section; do
+    r.composite --q --o red=\$image.red green=\$image.green blue=\$image.blue output=\${image}_rgb levels=256
+    r.out.png --q --o input=\${image}_rgb output="$out/r3_sbrt_demo_\$image.png"
+done
 # the geological map: a top view in the model's own grid
 g.region raster_3d=geology
 r3.sbrt.render --q input=geology output=map view=top material=map_class
@@ -31,4 +38,4 @@ r.out.png --q --o input=map_rgb output="$out/r3_sbrt_demo_map.png"
 r.stats -l -p -n map_class
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/demo_job.sh"
-echo "demo: images written to $out/r3_sbrt_demo_view.png and $out/r3_sbrt_demo_map.png"
+echo "demo: images written to $out: r3_sbrt_demo_view.png (perspective), _hidden.png (upper strata hidden), _section.png (cross section), _map.png (geological map)"
