@@ -35,7 +35,7 @@ g.region raster_3d=geology
 r3.sbrt.render --q input=geology output=map view=top material=map_class
 r.composite --q --o red=map.red green=map.green blue=map.blue output=map_rgb levels=256
 r.out.png --q --o input=map_rgb output="$out/r3_sbrt_demo_map.png"
-r.stats -l -p -n map_class
+r.stats -l -c -n map_class   # cells of each class at the surface
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/demo_job.sh"
 echo "demo: images written to $out: r3_sbrt_demo_view.png (perspective), _hidden.png (upper strata hidden), _section.png (cross section), _map.png (geological map)"
