@@ -5,9 +5,9 @@
  ****************************************************************************/
 #include "render_options.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <algorithm>
 #include <thread>
 
 #include "tracer.hpp"
@@ -50,19 +50,6 @@ Option *define_map_output(const char *key, const char *desc)
     return o;
 }
 
-std::optional<glm::dvec3> read_point(const Option *o)
-{
-    if (!o->answers)
-        return std::nullopt;
-    glm::dvec3 p;
-    for (int i = 0; i < 3; ++i) {
-        if (!o->answers[i])
-            G_fatal_error(_("Option <%s> needs three values x,y,z"), o->key);
-        p[i] = std::atof(o->answers[i]);
-    }
-    return p;
-}
-
 std::vector<double> read_numbers(const Option *o)
 {
     std::vector<double> values;
@@ -74,6 +61,17 @@ std::vector<double> read_numbers(const Option *o)
         values.push_back(v);
     }
     return values;
+}
+
+/// x,y,z of a point option, if given.
+std::optional<glm::dvec3> read_point(const Option *o)
+{
+    if (!o->answers)
+        return std::nullopt;
+    const std::vector<double> v = read_numbers(o);
+    if (v.size() != 3)
+        G_fatal_error(_("Option <%s> needs three values x,y,z"), o->key);
+    return glm::dvec3(v[0], v[1], v[2]);
 }
 
 double read_double(const Option *o)
@@ -253,10 +251,11 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (!(r.zexag > 0))
         G_fatal_error(_("zexag=%g: the vertical exaggeration must be positive"),
                       r.zexag);
-    if (!o->light->answers[1])
+    const std::vector<double> light = read_numbers(o->light);
+    if (light.size() != 2)
         G_fatal_error(_("light= needs azimuth,elevation"));
-    r.light_azimuth = std::atof(o->light->answers[0]);
-    r.light_elevation = std::atof(o->light->answers[1]);
+    r.light_azimuth = light[0];
+    r.light_elevation = light[1];
     r.ambient = read_double(o->ambient);
     int red, green, blue;
     if (G_str_to_color(o->background->answer, &red, &green, &blue) != 1)

@@ -47,7 +47,8 @@ void GlBuffer::upload(const void *data, size_t bytes)
 
 void GlBuffer::download(void *data, size_t bytes) const
 {
-    SBRT_CHECK_EQ(bytes, bytes_, "GlBuffer::download");
+    if (bytes > bytes_)
+        sbrt::fail("GlBuffer::download: ", bytes, " bytes from a buffer of ", bytes_);
     gl_->BindBuffer(target_, name_);
     gl_->GetBufferSubData(target_, 0, GLsizeiptr(bytes), data);
     check_gl(*gl_, "reading a buffer back");

@@ -31,6 +31,7 @@ public:
 
     void bind(GLuint index) const;
     void upload(const void *data, size_t bytes);
+    /// Reads the first `bytes` bytes back.
     void download(void *data, size_t bytes) const;
     size_t bytes() const { return bytes_; }
 

@@ -103,8 +103,7 @@ std::vector<sbrt::Hit> GpuTracer::trace_image(const sbrt::Camera &camera,
         const int count = std::min(band_rows, rows - first);
         view.options[2] = uint32_t(first);
         view.options[3] = uint32_t(count);
-        view_.upload(&view, sizeof view);
-        view_.bind(0);
+        view_.upload(&view, sizeof view); // stays bound to index 0
         auto start = Clock::now();
         gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
         gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -112,14 +111,7 @@ std::vector<sbrt::Hit> GpuTracer::trace_image(const sbrt::Camera &camera,
         check_gl(gl_, "the ray casting dispatch");
         stats_.trace_ms += ms_since(start);
         start = Clock::now();
-        if (count == band_rows)
-            band.download(records.data() + size_t(first) * cols, band.bytes());
-        else {
-            std::vector<sbrt::GpuPixelHit> last(size_t(band_rows) * cols);
-            band.download(last.data(), band.bytes());
-            std::copy_n(last.begin(), size_t(count) * cols,
-                        records.begin() + size_t(first) * cols);
-        }
+        band.download(records.data() + size_t(first) * cols, size_t(count) * row_bytes);
         stats_.readback_ms += ms_since(start);
         ++stats_.bands;
     }
