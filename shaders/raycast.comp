@@ -52,6 +52,27 @@ bool clip(int axis, float hi, float lo, float d, float high, inout float t_near,
 
 const uint ENTER = 0u, SEARCH = 1u, WALK = 2u;
 
+// light of the translucent strata crossed so far (premultiplied colour)
+// and the share of what is behind that still reaches the camera
+vec3 veil = vec3(0.0);
+float transmittance = 1.0;
+const float MIN_TRANSMITTANCE = 1.0 / 4096.0;
+
+void finish(uint index, vec3 point, uint code)
+{
+    hits[index] = PixelHit(point, code, vec4(veil, transmittance));
+}
+
+// Beer-Lambert over `length` map units of a translucent material; true
+// once (almost) nothing behind can be seen
+bool absorb(vec4 material, float length)
+{
+    float keep = exp(-material.w * length);
+    veil += transmittance * (1.0 - keep) * material.rgb;
+    transmittance *= keep;
+    return transmittance < MIN_TRANSMITTANCE;
+}
+
 void main()
 {
     // this dispatch covers the band of image rows from options.z on
@@ -71,7 +92,7 @@ void main()
     else {
         d = forward.xyz + x * du.xyz + y * dv.xyz;
     }
-    hits[index] = PixelHit(vec3(0.0), 0u);
+    finish(index, vec3(0.0), 0u);
 
     // 1. slab clip to [0, cols] x [0, rows] x [0, z_max], without a loop
     float t_near = -1.0 / 0.0, t_far = 1.0 / 0.0;
@@ -116,10 +137,13 @@ void main()
     int step_x = d.x > 0.0 ? 1 : -1, step_y = d.y > 0.0 ? 1 : -1;
     float t_in = t_near, t_out = t_near, t_max_x = 0.0, t_max_y = 0.0;
     float z_in = 0.0, z_out = 0.0;
-    uint mode = ENTER, first = 0u, last = 0u, low = 0u, high = 0u;
+    // exaggerated map length per unit of t, for the translucent strata
+    float length_per_t = length(d * box.yzw);
+    // WALK visits interval j of [first, last); k is the one holding z_in
+    uint mode = ENTER, first = 0u, last = 0u, low = 0u, high = 0u, j = 0u, k = 0u;
     for (uint work = 0u;; ++work) {
         if (work >= options.y) {
-            hits[index].code = CODE_OVER_BUDGET;
+            finish(index, vec3(0.0), CODE_OVER_BUDGET);
             return;
         }
         bool next_cell = false;
@@ -157,58 +181,62 @@ void main()
                 high = mid;
         }
         else if (mode == SEARCH) {
-            // the interval holding z_in is `low`; solid: hit on the wall
-            if (low != last && intervals[low].material != 0u) {
-                hits[index] = PixelHit((hi + t_in * d) + lo,
-                                       intervals[low].material | wall << 16);
-                return;
-            }
-            // walk on in the ray's vertical direction: `high` is the next
-            // interval to look at from below (descending: one above it)
-            if (d.z < 0.0) {
-                high = low;
-                mode = WALK;
-            }
-            else if (low == last || d.z == 0.0) {
-                next_cell = true;
-            }
-            else {
-                high = low + 1u;
-                mode = WALK;
-            }
+            k = low;
+            j = low;
+            mode = WALK;
         }
-        else if (d.z < 0.0) { // WALK down: look at high - 1
-            if (high == first || !(intervals[high - 1u].top > z_out)) {
-                next_cell = true;
+        else {
+            // WALK: the ray crosses interval j from t_enter to t_exit,
+            // entering through the wall (j == k), its top (descending) or
+            // its bottom (ascending)
+            bool down = d.z < 0.0;
+            if (!down && (j == last || (j != k && !(intervals[j - 1u].top < z_out)))) {
+                next_cell = true; // ascending: out of the cell before j
             }
             else {
-                high -= 1u;
-                if (intervals[high].material != 0u) {
-                    float top = intervals[high].top;
-                    hits[index] = PixelHit((hi + (from_origin(top, hi.z, lo.z) / d.z) * d) + lo,
-                                           intervals[high].material | FACE_TOP << 16);
-                    return;
+                uint material = j != last ? intervals[j].material : 0u;
+                if (material != 0u) {
+                    float t_enter = t_in;
+                    uint face = wall;
+                    if (j != k) {
+                        float z = down ? intervals[j].top : intervals[j - 1u].top;
+                        t_enter = from_origin(z, hi.z, lo.z) / d.z;
+                        face = down ? FACE_TOP : FACE_BOTTOM;
+                    }
+                    vec4 look = materials[material];
+                    if (look.w < 0.0) {
+                        finish(index, (hi + t_enter * d) + lo, material | face << 16);
+                        return;
+                    }
+                    float t_exit = t_out;
+                    if (down && j > first)
+                        t_exit = min(t_out, from_origin(intervals[j - 1u].top, hi.z, lo.z) / d.z);
+                    else if (!down && d.z != 0.0)
+                        t_exit = min(t_out, from_origin(intervals[j].top, hi.z, lo.z) / d.z);
+                    if (absorb(look, max(t_exit - t_enter, 0.0) * length_per_t)) {
+                        finish(index, vec3(0.0), 0u);
+                        return;
+                    }
                 }
-            }
-        }
-        else { // WALK up: look at high, which starts at the previous top
-            float bottom = intervals[high - 1u].top;
-            if (high == last || !(bottom < z_out)) {
-                next_cell = true;
-            }
-            else if (intervals[high].material != 0u) {
-                hits[index] = PixelHit((hi + (from_origin(bottom, hi.z, lo.z) / d.z) * d) + lo,
-                                       intervals[high].material | FACE_BOTTOM << 16);
-                return;
-            }
-            else {
-                high += 1u;
+                // on to the next interval the ray reaches in this cell
+                if (down) {
+                    if (j == first || !(intervals[j - 1u].top > z_out))
+                        next_cell = true;
+                    else
+                        j -= 1u;
+                }
+                else if (d.z == 0.0) {
+                    next_cell = true;
+                }
+                else {
+                    j += 1u;
+                }
             }
         }
         if (!next_cell)
             continue;
         if (t_out >= t_far)
-            return;
+            break;
         if (t_max_x < t_max_y) {
             ix += step_x;
             t_in = t_max_x;
@@ -220,7 +248,8 @@ void main()
             wall = entry_face(1, d.y);
         }
         if (ix < 0 || ix >= cols || iy < 0 || iy >= rows)
-            return;
+            break;
         mode = ENTER;
     }
+    finish(index, vec3(0.0), 0u);
 }

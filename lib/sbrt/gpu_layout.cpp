@@ -39,6 +39,8 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
     view.grid[2] = uint32_t(camera.cols());
     view.grid[3] = uint32_t(camera.rows());
     view.box[0] = float(tracer.top_local());
+    for (int a = 0; a < 3; ++a)
+        view.box[1 + a] = float(tracer.voxel_size()[a]);
     view.options[0] = camera.parallel() ? 1 : 0;
     view.options[1] = loop_budget;
     // each plane's value at the camera origin, in double: the shader adds
@@ -52,6 +54,19 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
     return view;
 }
 
+std::vector<GpuMaterial> make_gpu_materials(const Tracer &tracer)
+{
+    const Translucency &tr = tracer.scene().translucency;
+    std::vector<GpuMaterial> table(tracer.model().materials().size(),
+                                   GpuMaterial{{0, 0, 0}, -1});
+    for (size_t m = 0; m < table.size(); ++m)
+        if (!tr.opaque(uint32_t(m)))
+            table[m] = {{float(tr.color[m].r), float(tr.color[m].g),
+                         float(tr.color[m].b)},
+                        float(tr.extinction[m])};
+    return table;
+}
+
 Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,
                    const GpuPixelHit &record, bool &over_budget)
 {
@@ -60,6 +75,8 @@ Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,
     const uint32_t material = record.code & 0xffffu;
     const uint32_t face = (record.code >> 16) & 0xfu;
     const uint32_t plane = (record.code >> 20) & 0xfu;
+    hit.veil = glm::dvec3(record.veil[0], record.veil[1], record.veil[2]);
+    hit.transmittance = record.veil[3];
     if (over_budget || material == EMPTY)
         return hit;
     if (material >= tracer.model().materials().size() || face > 7 ||

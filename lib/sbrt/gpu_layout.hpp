@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "tracer.hpp"
 
@@ -25,7 +26,7 @@ struct GpuView {
     float du[4];
     float dv[4];
     uint32_t grid[4];    ///< model cols, rows; image cols, rows
-    float box[4];        ///< x: highest interval top, local z
+    float box[4];        ///< x: highest interval top, local z; yzw: voxel size
     uint32_t options[4]; ///< parallel rays, loop budget, first row, rows
     float planes[MAX_CLIP_PLANES][4]; ///< local n, value at the origin
     uint32_t counts[4];  ///< x: clip planes
@@ -41,12 +42,22 @@ static_assert(sizeof(Interval) == 8 && offsetof(Interval, material) == 0 &&
                   offsetof(Interval, top) == 4,
               "std430 Interval");
 
-/// `struct PixelHit` (std430): vec3 then uint, 16 bytes.
+/// `struct PixelHit` (std430): vec3, uint, vec4; 32 bytes.
 struct GpuPixelHit {
     float point[3]; ///< local coordinates of the hit
     uint32_t code;  ///< material | face << 16 | plane << 20 | over budget << 24
+    float veil[4];  ///< translucent strata's colour (premultiplied), transmittance
 };
-static_assert(sizeof(GpuPixelHit) == 16, "std430 PixelHit");
+static_assert(sizeof(GpuPixelHit) == 32 && offsetof(GpuPixelHit, veil) == 16,
+              "std430 PixelHit");
+
+/// An entry of `buffer Materials` (std430 vec4): colour and extinction
+/// per exaggerated map unit, negative for an opaque material.
+struct GpuMaterial {
+    float color[3];
+    float extinction;
+};
+static_assert(sizeof(GpuMaterial) == 16, "std430 vec4");
 
 constexpr uint32_t GPU_CODE_OVER_BUDGET = 1u << 24;
 /// Default loop budget per pixel: below llvmpipe's 65,535 iterations with
@@ -56,6 +67,10 @@ constexpr uint32_t GPU_LOOP_BUDGET = 60000;
 /// The view block of `camera` in the tracer's local frame.
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
                       uint32_t loop_budget = GPU_LOOP_BUDGET);
+
+/// The material table of the tracer's scene (all opaque without
+/// translucency).
+std::vector<GpuMaterial> make_gpu_materials(const Tracer &tracer);
 
 /// The hit of a record; `over_budget` tells that the GPU gave up the ray.
 Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "drape.hpp"
 #include "error.hpp"
 #include "kernel_normals.hpp"
 #include "parallel.hpp"
@@ -60,21 +61,25 @@ Image shade(const Tracer &tracer, const Camera &camera, std::vector<Hit> hits,
         for (int col = 0; col < image.cols; ++col) {
             const size_t i = size_t(row) * image.cols + col;
             const Hit &hit = hits[i];
-            std::array<uint8_t, 3> rgb = shading.background;
+            glm::dvec3 color(shading.background[0], shading.background[1],
+                             shading.background[2]);
             if (hit.is_hit()) {
                 const auto base = material_color(model, hit.material);
+                glm::dvec3 surface(base[0], base[1], base[2]);
+                if (shading.drape)
+                    surface = shading.drape->color(hit, surface);
                 const double lambert =
                     std::max(0.0, glm::dot(shading.light, hit.normal));
-                const double intensity =
-                    shading.ambient + (1 - shading.ambient) * lambert;
-                for (int k = 0; k < 3; ++k)
-                    rgb[k] = uint8_t(std::lround(
-                        std::clamp(base[k] * intensity, 0.0, 255.0)));
+                color = surface * (shading.ambient + (1 - shading.ambient) * lambert);
                 image.material[i] = model.materials()[hit.material].id;
                 image.elevation[i] = hit.point.z;
                 image.depth[i] = glm::length(
                     hit.point - tracer.unexaggerate(camera.ray(row, col).origin));
             }
+            color = 255.0 * hit.veil + hit.transmittance * color;
+            std::array<uint8_t, 3> rgb;
+            for (int k = 0; k < 3; ++k)
+                rgb[k] = uint8_t(std::lround(std::clamp(color[k], 0.0, 255.0)));
             std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + i * 3);
         }
     });

@@ -26,6 +26,7 @@ struct Shading {
     Normals normals = Normals::face;
     int kernel = 5;      ///< kernel size k (odd, 3..11) of Normals::kernel
     double smooth = 0;   ///< Gaussian sigma of the normals, pixels (0: off)
+    const class Drape *drape = nullptr; ///< an image on the terrain, or none
 
     /// Direction from azimuth (degrees clockwise from north) and elevation.
     static glm::dvec3 light_from(double azimuth, double elevation);
@@ -43,7 +44,9 @@ struct Image {
 /// Colour of a material: its stored colour, else a fixed palette entry.
 std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 
-/// Outputs of the hits of camera's rays (row-major, as trace_image gives).
+/// Outputs of the hits; a pixel's colour is the veil of the translucent
+/// strata plus, through them, the lit colour of the hit (or background).
+/// Material, elevation and depth are those of the first opaque hit. of camera's rays (row-major, as trace_image gives).
 Image shade(const Tracer &tracer, const Camera &camera, std::vector<Hit> hits,
             const Shading &shading, unsigned threads = 0);
 

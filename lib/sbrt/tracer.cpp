@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "error.hpp"
+#include "overlay_geometry.hpp"
 
 namespace sbrt {
 
@@ -30,6 +31,8 @@ glm::dvec3 face_normal(Face face)
 namespace {
 
 constexpr double INF = std::numeric_limits<double>::infinity();
+/// Marks a fence panel in a cell's overlay list (else a borehole).
+constexpr uint32_t PANEL = 1u << 31;
 
 /// Face through which a ray moving along `axis` with sign of `d` enters.
 Face entry_face(int axis, double d)
@@ -43,8 +46,28 @@ Face entry_face(int axis, double d)
 
 } // namespace
 
+/// The surface a ray enters a stretch through, with its shading normal.
+struct Tracer::Entry {
+    Face face = Face::none;
+    glm::dvec3 normal{0};
+    int plane = -1;
+};
+
+/// One ray on its way: local origin and direction, what it met so far.
+struct Tracer::Walk {
+    const Ray &ray;
+    glm::dvec3 o, d;      ///< local frame
+    double length_per_t;  ///< exaggerated map length per unit of t
+    Hit hit;
+};
+
 Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
-    : model_(model), zexag_(zexag)
+    : Tracer(model, zexag, Scene{std::move(planes), {}, {}, 0, {}, {}, true})
+{
+}
+
+Tracer::Tracer(const Model &model, double zexag, Scene scene)
+    : model_(model), zexag_(zexag), scene_(std::move(scene))
 {
     if (!(zexag > 0) || !std::isfinite(zexag))
         fail("Tracer: vertical exaggeration ", zexag, " must be positive");
@@ -53,8 +76,12 @@ Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
         if (model.stack_size(c))
             z_max_local_ = std::max(
                 z_max_local_, double(model.intervals()[model.stack_end(c) - 1].top));
+    for (const Borehole &b : scene_.boreholes)
+        if (!b.stack.empty())
+            z_max_local_ = std::max(z_max_local_, double(b.stack.back().top));
     scale_ = glm::dvec3(1.0 / f.ew_res(), 1.0 / f.ns_res(),
                         1.0 / (f.tb_res() * zexag));
+    const std::vector<ClipPlane> &planes = scene_.planes;
     if (planes.size() > size_t(MAX_CLIP_PLANES))
         fail("Tracer: ", planes.size(), " clip planes, at most ", MAX_CLIP_PLANES);
     for (const ClipPlane &plane : planes) {
@@ -69,6 +96,40 @@ Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
         planes_.push_back({n / scale_ / length,
                            glm::dot(n, base - exaggerate(plane.point)) / length,
                            n / length});
+    }
+    const Translucency &tr = scene_.translucency;
+    if (!tr.empty() && (tr.extinction.size() != model.materials().size() ||
+                        tr.color.size() != model.materials().size()))
+        fail("Tracer: translucency given for ", tr.extinction.size(),
+             " materials, the model has ", model.materials().size());
+    if (!scene_.boreholes.empty() && !(scene_.borehole_radius > 0))
+        fail("Tracer: the borehole radius must be positive");
+    index_overlays();
+}
+
+void Tracer::index_overlays()
+{
+    const Frame &f = model_.frame();
+    std::vector<std::vector<uint32_t>> lists;
+    auto add = [&](const std::vector<uint64_t> &cells, uint32_t item) {
+        if (lists.empty())
+            lists.resize(f.cells());
+        for (uint64_t c : cells)
+            lists[c].push_back(item);
+    };
+    for (size_t k = 0; k < scene_.boreholes.size(); ++k) {
+        const glm::dvec2 c(scene_.boreholes[k].x, scene_.boreholes[k].y);
+        add(cells_near_segment(f, c, c, scene_.borehole_radius), uint32_t(k));
+    }
+    for (size_t k = 0; k < scene_.fence.size(); ++k)
+        add(cells_near_segment(f, scene_.fence[k].a, scene_.fence[k].b, 0),
+            uint32_t(k) | PANEL);
+    if (lists.empty())
+        return;
+    overlay_offsets_.assign(f.cells() + 1, 0);
+    for (uint64_t c = 0; c < f.cells(); ++c) {
+        overlay_items_.insert(overlay_items_.end(), lists[c].begin(), lists[c].end());
+        overlay_offsets_[c + 1] = uint32_t(overlay_items_.size());
     }
 }
 
@@ -121,66 +182,197 @@ double Tracer::radius() const
     return glm::length(corner(7) - corner(0)) / 2;
 }
 
-bool Tracer::hit_in_cell(uint64_t cell, double z_in, double z_out, double oz,
-                         double dz, double t_in, Face wall, Hit &hit) const
+bool Tracer::meet(uint32_t material, double t_enter, double t_exit, Entry entry,
+                  Walk &walk) const
 {
-    const Interval *first = model_.intervals().data() + model_.stack_begin(cell);
-    const Interval *last = model_.intervals().data() + model_.stack_end(cell);
+    if (material == EMPTY)
+        return false;
+    const Translucency &tr = scene_.translucency;
+    if (tr.opaque(material)) {
+        walk.hit.t = t_enter;
+        walk.hit.material = material;
+        walk.hit.face = entry.face;
+        walk.hit.plane = entry.plane;
+        walk.hit.normal = entry.normal;
+        return true;
+    }
+    // Beer-Lambert over the exact length the ray travels in the interval;
+    // a zero-length crossing (a fence curtain, a surface) absorbs alpha
+    const double length = t_exit > t_enter
+                              ? (t_exit - t_enter) * walk.length_per_t
+                              : tr.length;
+    const double keep = std::exp(-tr.extinction[material] * length);
+    walk.hit.veil += walk.hit.transmittance * (1 - keep) * tr.color[material];
+    walk.hit.transmittance *= keep;
+    return walk.hit.transmittance < MIN_TRANSMITTANCE;
+}
+
+bool Tracer::walk_stack(const Interval *first, const Interval *last, double t_a,
+                        double t_b, Entry entry, Walk &walk) const
+{
+    const double oz = walk.o.z, dz = walk.d.z;
+    const double z_a = oz + t_a * dz, z_b = oz + t_b * dz;
     // nothing to find where the ray stays at or above the stack's top
-    if (first == last || std::min(z_in, z_out) >= double((last - 1)->top))
+    if (first == last || std::min(z_a, z_b) >= double((last - 1)->top))
         return false;
-    auto below_of = [&](const Interval *k) {
-        return k == first ? 0.0 : double((k - 1)->top);
-    };
+    auto t_at = [&](float z) { return (double(z) - oz) / dz; };
+    const Entry top{Face::top, {0, 0, 1}}, bottom{Face::bottom, {0, 0, -1}};
     if (dz < 0) {
-        // descending: intervals (bottom, top]; the one holding z_in, then
-        // down while their tops stay above z_out
+        // descending: intervals (bottom, top]; the one holding z_a, then
+        // down while their tops stay above z_b
         const Interval *k = std::lower_bound(
-            first, last, z_in,
+            first, last, z_a,
             [](const Interval &iv, double z) { return double(iv.top) < z; });
-        if (k != last && k->material != EMPTY) {
-            hit = {t_in, k->material, wall};
-            return true;
-        }
-        for (const Interval *j = k; j-- > first;) {
-            if (!(double(j->top) > z_out))
-                return false;
-            if (j->material != EMPTY) {
-                hit = {(double(j->top) - oz) / dz, j->material, Face::top};
-                return true;
+        for (const Interval *j = k;; --j) {
+            if (j != last) {
+                const double exit = j > first ? std::min(t_b, t_at((j - 1)->top)) : t_b;
+                if (meet(j->material, j == k ? t_a : t_at(j->top), exit,
+                         j == k ? entry : top, walk))
+                    return true;
             }
+            if (j == first || !(double((j - 1)->top) > z_b))
+                return false;
         }
-        return false;
     }
     // ascending or level: intervals [bottom, top)
     const Interval *k = std::upper_bound(
-        first, last, z_in,
+        first, last, z_a,
         [](double z, const Interval &iv) { return z < double(iv.top); });
-    if (k == last)
-        return false;
-    if (k->material != EMPTY) {
-        hit = {t_in, k->material, wall};
-        return true;
-    }
-    if (dz == 0)
-        return false;
-    for (const Interval *j = k + 1; j < last; ++j) {
-        const double bottom = below_of(j);
-        if (!(bottom < z_out))
+    for (const Interval *j = k; j != last; ++j) {
+        if (j != k && !(double((j - 1)->top) < z_b))
             return false;
-        if (j->material != EMPTY) {
-            hit = {(bottom - oz) / dz, j->material, Face::bottom};
+        const double exit = dz == 0 ? t_b : std::min(t_b, t_at(j->top));
+        if (meet(j->material, j == k ? t_a : t_at((j - 1)->top), exit,
+                 j == k ? entry : bottom, walk))
             return true;
-        }
+        if (dz == 0)
+            return false;
     }
     return false;
+}
+
+bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, Entry entry,
+                        Walk &walk) const
+{
+    if (!overlay_items_.empty() &&
+        overlay_offsets_[cell] != overlay_offsets_[cell + 1])
+        return cross_overlays(cell, t_in, t_out, entry, walk);
+    if (!scene_.draw_model)
+        return false;
+    const Interval *intervals = model_.intervals().data();
+    return walk_stack(intervals + model_.stack_begin(cell),
+                      intervals + model_.stack_end(cell), t_in, t_out, entry, walk);
+}
+
+bool Tracer::cross_borehole(const Borehole &borehole, double t_a, double t_b,
+                            Entry entry, Walk &walk) const
+{
+    auto walk_half = [&](const std::vector<Interval> &stack, double a, double b,
+                         Entry e) {
+        return walk_stack(stack.data(), stack.data() + stack.size(), a, b, e, walk);
+    };
+    if (!scene_.split)
+        return walk_half(borehole.stack, t_a, t_b, entry);
+    // a split cylinder: the log on the side `split` points to
+    const glm::dvec2 s = *scene_.split;
+    const glm::dvec2 q(walk.ray.origin.x - borehole.x, walk.ray.origin.y - borehole.y);
+    const glm::dvec2 d(walk.ray.direction);
+    const double s0 = glm::dot(q, s), s1 = glm::dot(d, s);
+    auto stack_at = [&](double t) -> const std::vector<Interval> & {
+        return s0 + t * s1 >= 0 ? borehole.stack : borehole.model_stack;
+    };
+    const double t_split = s1 != 0 ? -s0 / s1 : INF;
+    if (!(t_split > t_a && t_split < t_b))
+        return walk_half(stack_at((t_a + t_b) / 2), t_a, t_b, entry);
+    if (walk_half(stack_at((t_a + t_split) / 2), t_a, t_split, entry))
+        return true;
+    const glm::dvec3 n(s1 > 0 ? -s : s, 0);
+    return walk_half(stack_at((t_split + t_b) / 2), t_split, t_b,
+                     {Face::split, n});
+}
+
+bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
+                            Entry entry, Walk &walk) const
+{
+    // the overlays this ray meets in the cell, in the order it meets them:
+    // borehole cylinders as spans, fence curtains as points
+    struct Event {
+        double start, end;
+        uint32_t item;
+        glm::dvec3 normal;
+    };
+    std::vector<Event> events;
+    const glm::dvec2 o(walk.ray.origin), d(walk.ray.direction);
+    for (uint32_t i = overlay_offsets_[cell]; i < overlay_offsets_[cell + 1]; ++i) {
+        const uint32_t item = overlay_items_[i];
+        if (item & PANEL) {
+            double t;
+            glm::dvec2 n;
+            if (ray_panel(o, d, scene_.fence[item & ~PANEL], t, n) && t >= t_in &&
+                t < t_out)
+                events.push_back({t, t, item, glm::dvec3(n, 0)});
+            continue;
+        }
+        const Borehole &b = scene_.boreholes[item];
+        double t0, t1;
+        if (!ray_cylinder(o, d, {b.x, b.y}, scene_.borehole_radius, t0, t1) ||
+            t1 <= t_in || t0 >= t_out)
+            continue;
+        // the mantle's normal where the ray enters it in this cell
+        const glm::dvec3 n =
+            t0 >= t_in ? glm::dvec3(glm::normalize(o + t0 * d - glm::dvec2(b.x, b.y)), 0)
+                       : glm::dvec3(0);
+        events.push_back({std::max(t0, t_in), std::min(t1, t_out), item, n});
+    }
+    std::sort(events.begin(), events.end(),
+              [](const Event &a, const Event &b) { return a.start < b.start; });
+    const Interval *intervals = model_.intervals().data();
+    const Interval *first = intervals + model_.stack_begin(cell);
+    const Interval *last = intervals + model_.stack_end(cell);
+    double cursor = t_in;
+    for (const Event &e : events) {
+        const bool panel = (e.item & PANEL) != 0;
+        if (panel ? e.start < cursor : e.end <= cursor)
+            continue; // inside a cylinder already crossed
+        if (scene_.draw_model && e.start > cursor &&
+            walk_stack(first, last, cursor, e.start, entry, walk))
+            return true;
+        if (panel) {
+            // the class of the model at the curtain's point
+            const double z = walk.o.z + e.start * walk.d.z;
+            const Interval *k = std::upper_bound(
+                first, last, z,
+                [](double v, const Interval &iv) { return v < double(iv.top); });
+            entry = {Face::fence, e.normal};
+            if (k != last && meet(k->material, e.start, e.start, entry, walk))
+                return true;
+            cursor = e.start;
+            continue;
+        }
+        const double start = std::max(e.start, cursor);
+        const Entry side = start == e.start && glm::length(e.normal) > 0
+                               ? Entry{Face::cylinder, e.normal, -1}
+                               : entry;
+        if (cross_borehole(scene_.boreholes[e.item], start, e.end, side, walk))
+            return true;
+        cursor = e.end;
+        // leaving the cylinder into the model: its mantle, seen from inside
+        const glm::dvec2 at = o + cursor * d -
+                              glm::dvec2(scene_.boreholes[e.item].x,
+                                         scene_.boreholes[e.item].y);
+        entry = {Face::cylinder, glm::dvec3(-glm::normalize(at), 0)};
+    }
+    return scene_.draw_model && cursor < t_out &&
+           walk_stack(first, last, cursor, t_out, entry, walk);
 }
 
 Hit Tracer::trace(const Ray &ray) const
 {
     const Frame &f = model_.frame();
-    const glm::dvec3 o = to_local(ray.origin);
-    glm::dvec3 d = local_direction(ray.direction);
+    Walk walk{ray, to_local(ray.origin), local_direction(ray.direction),
+              glm::length(ray.direction), Hit()};
+    const glm::dvec3 o = walk.o;
+    glm::dvec3 &d = walk.d;
     for (int a = 0; a < 3; ++a)
         if (d[a] == 0)
             d[a] = 0; // normalise -0
@@ -204,9 +396,12 @@ Hit Tracer::trace(const Ray &ray) const
         }
         t_far = std::min(t_far, t1);
     }
-    Face wall = near_axis >= 0 ? entry_face(near_axis, d[near_axis]) : Face::none;
+    Entry wall;
+    if (near_axis >= 0) {
+        wall.face = entry_face(near_axis, d[near_axis]);
+        wall.normal = face_normal(wall.face);
+    }
     // clip planes: the kept side f(t) = a + b t <= 0 narrows [t_near, t_far]
-    int entry_plane = -1;
     for (size_t k = 0; k < planes_.size(); ++k) {
         const double a = glm::dot(planes_[k].n, o) + planes_[k].c;
         const double b = glm::dot(planes_[k].n, d);
@@ -220,14 +415,12 @@ Hit Tracer::trace(const Ray &ray) const
             t_far = std::min(t_far, t);
         else if (t > t_near) {
             t_near = t;
-            wall = Face::plane;
-            entry_plane = int(k);
+            wall = {Face::plane, planes_[k].shading_normal, int(k)};
         }
     }
     if (t_near < 0) {
         t_near = 0; // the camera is inside the box
-        wall = Face::none;
-        entry_plane = -1;
+        wall = {Face::none, -ray.direction};
     }
     if (!(t_near <= t_far) || z_max_local_ <= 0)
         return {};
@@ -246,18 +439,10 @@ Hit Tracer::trace(const Ray &ray) const
     for (int steps = 0; steps <= f.cols + f.rows + 1; ++steps) {
         const double t_out = std::min({t_max_x, t_max_y, t_far});
         const uint64_t cell = model_.cell_index(f.rows - 1 - iy, ix);
-        Hit hit;
-        if (hit_in_cell(cell, o.z + t_in * d.z, o.z + t_out * d.z, o.z, d.z,
-                        t_in, wall, hit)) {
-            if (hit.face == Face::plane) {
-                hit.plane = entry_plane;
-                hit.normal = planes_[size_t(entry_plane)].shading_normal;
-            }
-            else
-                hit.normal = hit.face == Face::none ? -ray.direction
-                                                    : face_normal(hit.face);
-            hit.point = from_local(o + hit.t * d);
-            return hit;
+        if (cross_cell(cell, t_in, t_out, wall, walk)) {
+            if (walk.hit.is_hit())
+                walk.hit.point = from_local(o + walk.hit.t * d);
+            return walk.hit;
         }
         if (t_out >= t_far)
             break;
@@ -265,18 +450,20 @@ Hit Tracer::trace(const Ray &ray) const
             ix += step_x;
             t_in = t_max_x;
             t_max_x += t_delta_x;
-            wall = entry_face(0, d.x);
+            wall.face = entry_face(0, d.x);
         }
         else {
             iy += step_y;
             t_in = t_max_y;
             t_max_y += t_delta_y;
-            wall = entry_face(1, d.y);
+            wall.face = entry_face(1, d.y);
         }
+        wall.normal = face_normal(wall.face);
+        wall.plane = -1;
         if (ix < 0 || ix >= f.cols || iy < 0 || iy >= f.rows)
             break;
     }
-    return {};
+    return walk.hit;
 }
 
 } // namespace sbrt

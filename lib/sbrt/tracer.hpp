@@ -13,26 +13,21 @@
 
 #include "camera.hpp"
 #include "model.hpp"
+#include "scene.hpp"
 
 namespace sbrt {
 
-/// Face of a hit: which plane of the cell/interval the ray entered through.
-enum class Face { none, west, east, south, north, bottom, top, plane };
+/// Face of a hit: which surface the ray entered the material through (a
+/// cell's wall, an interval's bottom or top, a clip plane, a borehole's
+/// mantle or the plane splitting it, a fence curtain).
+enum class Face { none, west, east, south, north, bottom, top, plane, cylinder,
+                  fence, split };
 
-/// \brief A clip plane in real map coordinates: everything on the side the
-/// normal points to is removed (what is left is cut open along the plane).
-struct ClipPlane {
-    glm::dvec3 point;
-    glm::dvec3 normal; ///< not zero; need not be unit length
-};
-
-/// Most clip planes one render takes (the GPU's view block holds them).
-constexpr int MAX_CLIP_PLANES = 8;
-
-/// Outward unit normal of a cell face (zero for Face::none and a plane).
+/// Outward unit normal of a cell face (zero for the other faces).
 glm::dvec3 face_normal(Face face);
 
-/// \brief First opaque hit of a ray; t is in map units along the ray.
+/// \brief What a ray meets: its first opaque hit (t in map units along the
+/// ray), and the light of the translucent strata in front of it.
 struct Hit {
     double t = std::numeric_limits<double>::infinity();
     uint32_t material = EMPTY;
@@ -40,14 +35,24 @@ struct Hit {
     int plane = -1; ///< the clip plane hit, with Face::plane
     glm::dvec3 point{0}; ///< real (unexaggerated) map coordinates
     glm::dvec3 normal{0};
+    /// Colour (0..1, premultiplied) the translucent strata add in front of
+    /// the hit, and the share of the hit's (or background's) light that
+    /// reaches the camera through them.
+    glm::dvec3 veil{0};
+    double transmittance = 1;
     bool is_hit() const { return material != EMPTY; }
 };
+
+/// Below this transmittance a ray stops: what is behind adds less than a
+/// tenth of one 8-bit colour level.
+constexpr double MIN_TRANSMITTANCE = 1.0 / 4096;
 
 /// \brief Exact traversal of an SBRT. Rays are in map coordinates with
 /// vertical exaggeration `zexag` applied about the model's bottom.
 class Tracer {
 public:
-    Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes = {});
+    Tracer(const Model &model, double zexag, Scene scene = {});
+    Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes);
 
     Hit trace(const Ray &ray) const;
 
@@ -83,14 +88,32 @@ public:
     };
     const std::vector<LocalPlane> &planes() const { return planes_; }
     double zexag() const { return zexag_; }
+    const Scene &scene() const { return scene_; }
+    /// Whether the scene holds more than the model's stacks and planes
+    /// (boreholes or a fence: only this CPU tracer draws them).
+    bool has_overlays() const { return !overlay_items_.empty(); }
 
 private:
-    bool hit_in_cell(uint64_t cell, double z_in, double z_out, double oz,
-                     double dz, double t_in, Face wall, Hit &hit) const;
+    struct Walk;
+    struct Entry;
+    bool cross_cell(uint64_t cell, double t_in, double t_out, Entry entry,
+                    Walk &walk) const;
+    bool cross_overlays(uint64_t cell, double t_in, double t_out, Entry entry,
+                        Walk &walk) const;
+    bool cross_borehole(const Borehole &borehole, double t_a, double t_b,
+                        Entry entry, Walk &walk) const;
+    bool walk_stack(const Interval *first, const Interval *last, double t_a,
+                    double t_b, Entry entry, Walk &walk) const;
+    bool meet(uint32_t material, double t_enter, double t_exit, Entry entry,
+              Walk &walk) const;
+    void index_overlays();
 
     const Model &model_;
     double zexag_;
+    Scene scene_;
     std::vector<LocalPlane> planes_;
+    /// cells' lists of boreholes (index) and fence panels (index | PANEL)
+    std::vector<uint32_t> overlay_offsets_, overlay_items_;
     double z_max_local_ = 0; ///< highest interval top, local units
     glm::dvec3 scale_;       ///< map -> local per axis (exaggerated map)
 };

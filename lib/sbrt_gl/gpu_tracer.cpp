@@ -46,6 +46,17 @@ size_t checked_bytes(size_t bytes, size_t limit, const char *what)
     return bytes;
 }
 
+/// How each material looks (binding 3).
+GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
+{
+    if (tracer.has_overlays())
+        sbrt::fail("boreholes and fence curtains are drawn by the CPU tracer "
+                   "only: render them with backend=cpu");
+    const std::vector<sbrt::GpuMaterial> table = sbrt::make_gpu_materials(tracer);
+    return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER,
+                    table.size() * sizeof(sbrt::GpuMaterial), table.data());
+}
+
 } // namespace
 
 GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer)
@@ -61,6 +72,7 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer)
                                    sizeof(sbrt::Interval),
                                max_block_bytes_, "intervals"),
                  tracer.model().intervals().data()),
+      materials_(material_buffer(gl_, tracer)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView))
 {
     gl_.Finish();
@@ -98,6 +110,7 @@ std::vector<sbrt::Hit> GpuTracer::trace_image(const sbrt::Camera &camera,
     offsets_.bind(0);
     intervals_.bind(1);
     band.bind(2);
+    materials_.bind(3);
     view_.bind(0);
     for (int first = 0; first < rows; first += band_rows) {
         const int count = std::min(band_rows, rows - first);

@@ -49,7 +49,7 @@ private:
     GlApi gl_;
     size_t max_block_bytes_;
     GlComputeProgram program_;
-    GlBuffer offsets_, intervals_, view_;
+    GlBuffer offsets_, intervals_, materials_, view_;
     GpuStats stats_;
 };
 

@@ -16,7 +16,8 @@ layout(std140, binding = 0) uniform View {
     vec4 du;            // xyz
     vec4 dv;            // xyz
     uvec4 grid;         // cols, rows of the model; image cols, rows
-    vec4 box;           // x: highest interval top (local z)
+    vec4 box;           // x: highest interval top (local z); yzw: size of
+                        // a local unit in exaggerated map units
     uvec4 options;      // x: 1 = parallel rays, y: loop budget,
                         // z: first image row of this dispatch, w: its rows
     vec4 planes[8];     // clip planes: xyz normal n (local), w: n . origin + c;
@@ -33,10 +34,16 @@ struct Interval {
 layout(std430, binding = 0) readonly buffer Offsets { uint offsets[]; };
 layout(std430, binding = 1) readonly buffer Intervals { Interval intervals[]; };
 
+// How each material looks: rgb colour (0..1) and its Beer-Lambert
+// extinction per exaggerated map unit; negative for an opaque material.
+layout(std430, binding = 3) readonly buffer Materials { vec4 materials[]; };
+
 // One record per pixel of the band, row-major from its top row.
 struct PixelHit {
     vec3 point;         // local coordinates of the hit
     uint code;          // material | face << 16 | plane << 20 | over budget << 24
+    vec4 veil;          // rgb: light of the translucent strata in front of
+                        // the hit (premultiplied); a: transmittance
 };
 layout(std430, binding = 2) writeonly buffer Hits { PixelHit hits[]; };
 
