@@ -173,6 +173,8 @@ TEST_P(Gpu, BlockLayoutMatchesTheShader)
               int(offsetof(GpuPixelHit, point)));
     EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "hits[0].code"),
               int(offsetof(GpuPixelHit, code)));
+    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "hits[0].veil"),
+              int(offsetof(GpuPixelHit, veil)));
     const GLenum stride = GL_TOP_LEVEL_ARRAY_STRIDE;
     GLint hit_stride = 0, interval_stride = 0;
     gl.GetProgramResourceiv(
@@ -263,6 +265,41 @@ TEST_P(Gpu, AgreesWithClipPlanesAndHiddenMaterials)
             gpu, tracer,
             sbrt_test::top_camera(f, f.top + size));
         expect_agreement(top, "planes, top");
+    }
+}
+
+TEST_P(Gpu, AgreesOnTranslucentStrata)
+{
+    const Model m = geology(36, 44, 24);
+    Translucency tr;
+    tr.extinction.assign(m.materials().size(), std::numeric_limits<double>::infinity());
+    tr.color.assign(m.materials().size(), glm::dvec3(0));
+    for (uint32_t k : {1u, 3u, 4u, 6u}) { // four of the seven strata
+        tr.extinction[k] = extinction_of(0.2 + 0.1 * k, 25.0);
+        tr.color[k] = glm::dvec3(0.1 * k, 1 - 0.1 * k, 0.5);
+    }
+    for (double zexag : {1.0, 3.0}) {
+        const Tracer tracer(m, zexag, Scene{{}, tr, {}, 0, {}, {}, true});
+        sbrt_gl::GpuTracer gpu(*context_, tracer);
+        const glm::dvec3 c = tracer.centre();
+        const double size = 2 * tracer.radius();
+        for (const Camera &camera :
+             {Camera::perspective(c + glm::dvec3(0.5, -0.7, 0.45) * size, c, 40, 70, 90),
+              sbrt_test::top_camera(m.frame(), m.frame().top + size)}) {
+            const std::vector<Hit> want = trace_image(tracer, camera, 2);
+            const std::vector<Hit> got = gpu.trace_image(camera, 2);
+            size_t agreeing = 0, veiled = 0;
+            for (size_t i = 0; i < want.size(); ++i) {
+                veiled += want[i].transmittance < 0.99;
+                double worst = std::fabs(want[i].transmittance - got[i].transmittance);
+                for (int k = 0; k < 3; ++k)
+                    worst = std::max(worst, std::fabs(want[i].veil[k] - got[i].veil[k]));
+                agreeing += want[i].material == got[i].material && worst < 2e-3;
+            }
+            EXPECT_GT(veiled, want.size() / 10);
+            EXPECT_GE(agreeing, want.size() - want.size() / 1000)
+                << agreeing << " of " << want.size();
+        }
     }
 }
 
