@@ -1,14 +1,22 @@
 # Shared rules of the r3.sbrt modules, included by each module Makefile after it names its program.
 # Links the static libraries lib/grass_sbrt and lib/sbrt (GRASS-NOTES 1.3),
-# and lib/sbrt_gl with EGL (and OSMesa) when the module sets SBRT_USES_GL.
+# lib/sbrt_gl with EGL (and OSMesa) when the module sets SBRT_USES_GL, and
+# GRASS's vector and database libraries when it sets SBRT_USES_VECTOR.
 MODULE_TOPDIR ?= /usr/lib/grass82
 
 SBRT_DIR = ../lib/sbrt
 GRASS_SBRT_DIR = ../lib/grass_sbrt
 
-LIBES = $(RASTER3DLIB) $(RASTERLIB) $(GISLIB)
+# recursive (=): Grass.make defines the library variables later
+LIBES = $(SBRT_VECTOR_LIBES) $(RASTER3DLIB) $(RASTERLIB) $(GISLIB)
 DEPENDENCIES = $(RASTER3DDEP) $(RASTERDEP) $(GISDEP)
 EXTRA_INC = -I$(SBRT_DIR) -I$(GRASS_SBRT_DIR)
+ifdef SBRT_USES_VECTOR
+SBRT_VECTOR_LIBES = $(VECTORLIB) $(DBMILIB)
+DEPENDENCIES += $(VECTORDEP) $(DBMIDEP)
+EXTRA_INC += $(VECT_INC)
+EXTRA_CFLAGS += $(VECT_CFLAGS)
+endif
 EXTRA_HEADERS = $(wildcard $(SBRT_DIR)/*.hpp $(GRASS_SBRT_DIR)/*.hpp *.hpp)
 ifdef SBRT_USES_GL
 include ../lib/gl_config.make

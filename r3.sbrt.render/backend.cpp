@@ -78,6 +78,13 @@ std::vector<sbrt::Hit> trace_hits(const RenderRequest &request,
 {
     if (request.backend == "cpu")
         return trace_on_cpu(request, tracer, camera);
+    if (tracer.has_overlays()) {
+        if (request.backend != "auto")
+            G_warning(_("backend=%s: boreholes and fence curtains are drawn by "
+                        "the CPU ray caster only; using it"),
+                      request.backend.c_str());
+        return trace_on_cpu(request, tracer, camera);
+    }
     std::unique_ptr<sbrt_gl::GlContext> context;
     try {
         context = sbrt_gl::create_gl_context(request.backend);

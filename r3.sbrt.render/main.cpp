@@ -5,9 +5,15 @@
  *            (and material, elevation, depth of the first hit) as rasters
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <algorithm>
 #include <cstdlib>
+#include <optional>
+
+#include <glm/geometric.hpp>
 
 #include "backend.hpp"
+#include "borehole_setup.hpp"
+#include "drape.hpp"
 #include "error.hpp"
 #include "grass.hpp"
 #include "hidden_materials.hpp"
@@ -18,21 +24,60 @@
 #include "scene_camera.hpp"
 #include "scene_setup.hpp"
 #include "shading.hpp"
+#include "texture_input.hpp"
+#include "vector_input.hpp"
 
 namespace {
+
+/// The scene of the request: planes, translucent strata, boreholes, fence.
+sbrt::Scene make_scene(const RenderRequest &request, const sbrt::Model &original,
+                       sbrt::Model &model, const std::vector<uint32_t> &hidden,
+                       const sbrt::Camera &camera)
+{
+    sbrt::Scene scene;
+    scene.planes = clip_planes(request, camera);
+    if (!request.boreholes.empty()) {
+        scene.boreholes = make_boreholes(request, original, model, hidden);
+        const sbrt::Frame &f = model.frame();
+        scene.borehole_radius =
+            request.borehole_radius.value_or(0.4 * std::min(f.ew_res(), f.ns_res()));
+        if (request.split_logs) {
+            // the log on the left half as the camera sees it
+            const glm::dvec2 right(camera.du());
+            scene.split = -glm::normalize(right);
+        }
+        report_borehole_bytes(model, scene.boreholes, request.boreholes_only);
+    }
+    if (!request.fence.empty())
+        scene.fence = read_fence(request.fence);
+    scene.draw_model = !request.boreholes_only && request.fence.empty();
+    // after the boreholes: a log may have added classes
+    scene.translucency = translucency(request, model);
+    return scene;
+}
 
 void run(const RenderRequest &request)
 {
     sbrt::Model model = sbrt_grass::read_sbrt_map(request.input.c_str());
     apply_color_option(request, model);
-    if (!request.hide.empty())
-        model = sbrt::hide_materials(model, hidden_materials(request, model));
+    std::optional<sbrt::Drape> drape;
+    if (!request.texture.empty())
+        drape.emplace(model, read_texture(request.texture), request.texture_blend);
+    const std::vector<uint32_t> hidden = hidden_materials(request, model);
+    // the boreholes need the model as read where strata are hidden
+    const sbrt::Model original = hidden.empty() || request.boreholes.empty()
+                                     ? sbrt::Model()
+                                     : model;
+    if (!hidden.empty())
+        model = sbrt::hide_materials(model, hidden);
     struct Cell_head region;
     G_get_window(&region);
     // the camera frames the whole model's box, whatever is hidden or cut
     const sbrt::Camera camera =
         make_camera(request, sbrt::Tracer(model, request.zexag), region);
-    const sbrt::Tracer tracer(model, request.zexag, clip_planes(request, camera));
+    sbrt::Scene scene = make_scene(request, hidden.empty() ? model : original,
+                                   model, hidden, camera);
+    const sbrt::Tracer tracer(model, request.zexag, std::move(scene));
 
     sbrt::Shading shading;
     shading.light = sbrt::Shading::light_from(request.light_azimuth,
@@ -43,6 +88,7 @@ void run(const RenderRequest &request)
                                                   : sbrt::Normals::face;
     shading.kernel = request.kernel;
     shading.smooth = request.smooth;
+    shading.drape = drape ? &*drape : nullptr;
 
     std::vector<sbrt::Hit> hits = trace_hits(request, tracer, camera);
     const sbrt::Image image = sbrt::shade(tracer, camera, std::move(hits), shading,

@@ -190,6 +190,17 @@ RenderOptions define_render_options()
                      _("Classes not drawn: class ids or labels"), _("Strata"));
     o->hide->multiple = YES;
     o->hide->key_desc = "class";
+    o->opacity = define("opacity", TYPE_STRING,
+                        _("Translucent classes: class id or label and the share "
+                          "of light (0-1) it absorbs over opacity_length"),
+                        _("Strata"));
+    o->opacity->multiple = YES;
+    o->opacity->key_desc = "class:alpha";
+    o->opacity_length = define("opacity_length", TYPE_DOUBLE,
+                               _("Length over which opacity= alphas apply, map "
+                                 "units (default: one cell)"),
+                               _("Strata"));
+
     o->plane = define("plane", TYPE_DOUBLE,
                       _("Clip planes: a point and a normal each; the side the "
                         "normal points to is removed"),
@@ -201,6 +212,71 @@ RenderOptions define_render_options()
                           "facing the camera is removed"),
                         _("Sections"));
     o->section->key_desc = "x1,y1,x2,y2";
+    o->fence = G_define_standard_option(G_OPT_V_INPUT);
+    o->fence->key = "fence";
+    o->fence->required = NO;
+    o->fence->label = _("Vector line map of a fence diagram");
+    o->fence->description = _("Draws only the vertical curtains below its lines "
+                              "(with boreholes= the cylinders too)");
+    o->fence->guisection = _("Sections");
+
+    o->boreholes = G_define_standard_option(G_OPT_V_INPUT);
+    o->boreholes->key = "boreholes";
+    o->boreholes->required = NO;
+    o->boreholes->label = _("Vector point map of boreholes");
+    o->boreholes->description = _("Each point is drawn as a vertical cylinder "
+                                  "showing the classes of the stack below it "
+                                  "(or its logged intervals)");
+    o->boreholes->guisection = _("Boreholes");
+    o->layer = G_define_standard_option(G_OPT_V_FIELD);
+    o->layer->guisection = _("Boreholes");
+    o->where = G_define_standard_option(G_OPT_DB_WHERE);
+    o->where->guisection = _("Boreholes");
+    o->borehole_radius = define("borehole_radius", TYPE_DOUBLE,
+                                _("Radius of the borehole cylinders, map units "
+                                  "(default: 0.4 of the cell size)"),
+                                _("Boreholes"));
+    o->log_top = G_define_standard_option(G_OPT_DB_COLUMN);
+    o->log_top->key = "log_top";
+    o->log_top->description = _("Column of the top of each logged interval");
+    o->log_top->guisection = _("Boreholes");
+    o->log_bottom = G_define_standard_option(G_OPT_DB_COLUMN);
+    o->log_bottom->key = "log_bottom";
+    o->log_bottom->description = _("Column of the bottom of each logged interval");
+    o->log_bottom->guisection = _("Boreholes");
+    o->log_class = G_define_standard_option(G_OPT_DB_COLUMN);
+    o->log_class->key = "log_class";
+    o->log_class->description =
+        _("Column of the class of each logged interval (one row per interval)");
+    o->log_class->guisection = _("Boreholes");
+    o->log_reference = define_choice(
+        "log_reference", _("What log_top= and log_bottom= measure"),
+        _("Boreholes"), "elevation", "elevation,depth",
+        _("elevation;Elevations (map z);"
+          "depth;Depths below the point's z (2D points: below the model's "
+          "surface at the point)"));
+    o->boreholes_only = G_define_flag();
+    o->boreholes_only->key = 'b';
+    o->boreholes_only->description = _("Show only the boreholes, not the model");
+    o->boreholes_only->guisection = _("Boreholes");
+    o->split_logs = G_define_flag();
+    o->split_logs->key = 'm';
+    o->split_logs->description =
+        _("Split each borehole: its log on the left half, the model on the right");
+    o->split_logs->guisection = _("Boreholes");
+
+    o->texture = G_define_standard_option(G_OPT_R_INPUTS);
+    o->texture->key = "texture";
+    o->texture->required = NO;
+    o->texture->label = _("Raster map(s) draped on the terrain surface");
+    o->texture->description =
+        _("One map with a colour table, or three maps red,green,blue (0-255)");
+    o->texture->guisection = _("Drape");
+    o->texture_blend = define("texture_blend", TYPE_DOUBLE,
+                              _("Share of the texture in the surface colour "
+                                "(0: class colours, 1: texture only)"),
+                              _("Drape"), "1");
+    o->texture_blend->options = "0-1";
 
     o->backend = define_choice(
         "backend", _("Renderer"), _("Settings"), "auto", "auto,egl,osmesa,cpu",
@@ -215,6 +291,10 @@ RenderOptions define_render_options()
     o->nprocs->guisection = _("Settings");
 
     G_option_exclusive(o->color, o->rules, NULL);
+    G_option_requires(o->boreholes_only, o->boreholes, NULL);
+    G_option_requires(o->split_logs, o->log_class, NULL);
+    G_option_requires(o->log_class, o->boreholes, NULL);
+    G_option_requires_all(o->log_class, o->log_top, o->log_bottom, NULL);
     return options;
 }
 
@@ -301,6 +381,49 @@ RenderRequest read_render_options(const RenderOptions &options)
             G_fatal_error(_("plane= and section= give more than %d planes"),
                           sbrt::MAX_CLIP_PLANES);
     }
+    for (char **a = o->opacity->answers; a && *a; ++a) {
+        const std::string pair = *a;
+        const size_t colon = pair.rfind(':');
+        char *end = nullptr;
+        const double alpha = colon == std::string::npos
+                                 ? NAN
+                                 : std::strtod(pair.c_str() + colon + 1, &end);
+        if (colon == std::string::npos || colon == 0 || *end ||
+            !(alpha >= 0 && alpha <= 1))
+            G_fatal_error(_("opacity=%s: give class:alpha with alpha from 0 "
+                            "(invisible) to 1 (opaque)"),
+                          pair.c_str());
+        r.opacity.emplace_back(pair.substr(0, colon), alpha);
+    }
+    if (o->opacity_length->answer) {
+        r.opacity_length = read_double(o->opacity_length);
+        if (!(*r.opacity_length > 0))
+            G_fatal_error(_("opacity_length= must be positive"));
+    }
+    r.fence = o->fence->answer ? o->fence->answer : "";
+    r.boreholes = o->boreholes->answer ? o->boreholes->answer : "";
+    r.layer = o->layer->answer ? o->layer->answer : "1";
+    r.where = o->where->answer ? o->where->answer : "";
+    if (o->borehole_radius->answer) {
+        r.borehole_radius = read_double(o->borehole_radius);
+        if (!(*r.borehole_radius > 0))
+            G_fatal_error(_("borehole_radius= must be positive"));
+    }
+    r.boreholes_only = o->boreholes_only->answer;
+    r.log_top = o->log_top->answer ? o->log_top->answer : "";
+    r.log_bottom = o->log_bottom->answer ? o->log_bottom->answer : "";
+    r.log_class = o->log_class->answer ? o->log_class->answer : "";
+    r.log_reference = o->log_reference->answer;
+    r.split_logs = o->split_logs->answer;
+    for (char **a = o->texture->answers; a && *a; ++a)
+        r.texture.emplace_back(*a);
+    if (r.texture.size() != 0 && r.texture.size() != 1 && r.texture.size() != 3)
+        G_fatal_error(_("texture= takes one map (with its colour table) or three "
+                        "maps red,green,blue, not %zu"),
+                      r.texture.size());
+    r.texture_blend = read_double(o->texture_blend);
+    if (!(r.texture_blend >= 0 && r.texture_blend <= 1))
+        G_fatal_error(_("texture_blend=%g must lie in 0..1"), r.texture_blend);
     r.backend = o->backend->answer;
     r.threads = std::atoi(o->nprocs->answer);
     if (r.threads < 0)

@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -30,8 +31,19 @@ struct RenderRequest {
     double smooth = 0;
     std::string color, rules; ///< colour table name or rules file
     std::vector<std::string> hide;           ///< class ids or labels
+    std::vector<std::pair<std::string, double>> opacity; ///< class, alpha
+    std::optional<double> opacity_length;    ///< map units (default a cell)
     std::vector<std::array<double, 6>> planes; ///< x,y,z,nx,ny,nz each
     std::optional<std::array<double, 4>> section; ///< x1,y1,x2,y2
+    std::string fence;                       ///< vector line map
+    std::string boreholes, layer = "1", where; ///< vector point map
+    std::optional<double> borehole_radius;   ///< map units (default 0.4 cell)
+    bool boreholes_only = false;             ///< -b
+    std::string log_top, log_bottom, log_class; ///< columns of the logs
+    std::string log_reference = "elevation";
+    bool split_logs = false;                 ///< -m
+    std::vector<std::string> texture;        ///< one map, or red,green,blue
+    double texture_blend = 1;
     std::string backend = "auto";
     int threads = 0;
 };
@@ -43,7 +55,11 @@ struct RenderOptions {
         *ortho_height, *zexag;
     Option *light, *ambient, *background, *normals, *kernel, *smooth, *color,
         *rules;
-    Option *hide, *plane, *section;
+    Option *hide, *opacity, *opacity_length, *plane, *section, *fence;
+    Option *boreholes, *layer, *where, *borehole_radius, *log_top, *log_bottom,
+        *log_class, *log_reference;
+    Flag *boreholes_only, *split_logs;
+    Option *texture, *texture_blend;
     Option *backend, *nprocs;
 };
 

@@ -1,41 +1,67 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.render
- * PURPOSE:   Hidden classes and clip planes
+ * PURPOSE:   Hidden and translucent classes, clip planes
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "scene_setup.hpp"
 
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include <glm/geometric.hpp>
 
+#include "shading.hpp"
+
+uint32_t find_class(const sbrt::Model &model, const std::string &name,
+                    const char *option, const std::string &input)
+{
+    const std::vector<sbrt::Material> &materials = model.materials();
+    char *end = nullptr;
+    const long id = std::strtol(name.c_str(), &end, 10);
+    const bool numeric = !name.empty() && *end == '\0';
+    for (uint32_t i = 1; i < materials.size(); ++i)
+        if ((numeric && materials[i].id == id) ||
+            G_strcasecmp(materials[i].label.c_str(), name.c_str()) == 0)
+            return i;
+    std::string classes;
+    for (uint32_t i = 1; i < materials.size(); ++i)
+        classes += (i > 1 ? ", " : "") + std::to_string(materials[i].id) +
+                   (materials[i].label.empty() ? "" : " (" + materials[i].label + ")");
+    G_fatal_error(_("%s=%s: SBRT <%s> has no class with this id or label; its "
+                    "classes are %s"),
+                  option, name.c_str(), input.c_str(), classes.c_str());
+}
+
 std::vector<uint32_t> hidden_materials(const RenderRequest &request,
                                        const sbrt::Model &model)
 {
-    const std::vector<sbrt::Material> &materials = model.materials();
     std::vector<uint32_t> hidden;
-    for (const std::string &name : request.hide) {
-        char *end = nullptr;
-        const long id = std::strtol(name.c_str(), &end, 10);
-        const bool numeric = !name.empty() && *end == '\0';
-        uint32_t found = sbrt::EMPTY;
-        for (uint32_t i = 1; i < materials.size() && found == sbrt::EMPTY; ++i)
-            if ((numeric && materials[i].id == id) ||
-                G_strcasecmp(materials[i].label.c_str(), name.c_str()) == 0)
-                found = i;
-        if (found == sbrt::EMPTY) {
-            std::string classes;
-            for (uint32_t i = 1; i < materials.size(); ++i)
-                classes += (i > 1 ? ", " : "") + std::to_string(materials[i].id) +
-                           (materials[i].label.empty() ? "" : " (" + materials[i].label + ")");
-            G_fatal_error(_("hide=%s: SBRT <%s> has no class with this id or "
-                            "label; its classes are %s"),
-                          name.c_str(), request.input.c_str(), classes.c_str());
-        }
-        hidden.push_back(found);
-    }
+    for (const std::string &name : request.hide)
+        hidden.push_back(find_class(model, name, "hide", request.input));
     return hidden;
+}
+
+sbrt::Translucency translucency(const RenderRequest &request,
+                                const sbrt::Model &model)
+{
+    sbrt::Translucency tr;
+    if (request.opacity.empty())
+        return tr;
+    const sbrt::Frame &f = model.frame();
+    tr.length = request.opacity_length.value_or(std::sqrt(f.ew_res() * f.ns_res()));
+    const size_t count = model.materials().size();
+    tr.extinction.assign(count, std::numeric_limits<double>::infinity());
+    tr.color.assign(count, glm::dvec3(0));
+    for (uint32_t m = 1; m < count; ++m) {
+        const auto rgb = sbrt::material_color(model, m);
+        tr.color[m] = glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0;
+    }
+    for (const auto &[name, alpha] : request.opacity)
+        tr.extinction[find_class(model, name, "opacity", request.input)] =
+            sbrt::extinction_of(alpha, tr.length);
+    return tr;
 }
 
 std::vector<sbrt::ClipPlane> clip_planes(const RenderRequest &request,

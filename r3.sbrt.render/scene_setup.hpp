@@ -1,7 +1,8 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.render
  * PURPOSE:   The scene's visual operations from the request: hidden
- *            classes (ids or labels) and clip planes (plane=, section=)
+ *            and translucent classes (ids or labels) and clip planes
+ *            (plane=, section=)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef R3_SBRT_SCENE_SETUP_HPP
@@ -13,9 +14,19 @@
 #include "render_options.hpp"
 #include "tracer.hpp"
 
+/// Material index of a class given by id or label in `option`; a fatal
+/// error lists the classes when none matches.
+uint32_t find_class(const sbrt::Model &model, const std::string &name,
+                    const char *option, const std::string &input);
+
 /// Material indices of hide=; a fatal error names an unknown class.
 std::vector<uint32_t> hidden_materials(const RenderRequest &request,
                                        const sbrt::Model &model);
+
+/// opacity= as extinctions (alpha over opacity_length=, default one
+/// cell) and the materials' colours; empty without opacity=.
+sbrt::Translucency translucency(const RenderRequest &request,
+                                const sbrt::Model &model);
 
 /// plane= as given, and section= with its normal turned towards the
 /// camera (the side facing the camera is removed, so the cut shows).

@@ -55,20 +55,42 @@ Drape::Drape(const Model &model, Texture texture, double blend)
             surface_[c] = model.intervals()[model.stack_end(c) - 1].top;
 }
 
+float Drape::surface(int row, int col) const
+{
+    if (row < 0 || row >= frame_.rows || col < 0 || col >= frame_.cols)
+        return -1;
+    return surface_[uint64_t(row) * uint64_t(frame_.cols) + uint64_t(col)];
+}
+
+bool Drape::on_surface(const Hit &hit) const
+{
+    const double z = frame_.local_z(hit.point.z);
+    const double u = (hit.point.x - frame_.west) / frame_.ew_res();
+    const double v = (frame_.north - hit.point.y) / frame_.ns_res(); // rows
+    constexpr double EPS = 1e-3; // the GPU's points are floats
+    if (hit.face == Face::top) {
+        const float top = surface(std::clamp(int(std::floor(v)), 0, frame_.rows - 1),
+                                  std::clamp(int(std::floor(u)), 0, frame_.cols - 1));
+        return top >= 0 && std::fabs(z - top) <= EPS;
+    }
+    // a wall of the terrain's staircase: between the cell's surface and
+    // the lower surface of the neighbour it faces (not the model's sides)
+    int row = 0, col = 0, d_row = 0, d_col = 0;
+    switch (hit.face) {
+    case Face::west: col = int(std::lround(u)); row = int(std::floor(v)); d_col = -1; break;
+    case Face::east: col = int(std::lround(u)) - 1; row = int(std::floor(v)); d_col = 1; break;
+    case Face::north: row = int(std::lround(v)); col = int(std::floor(u)); d_row = -1; break;
+    case Face::south: row = int(std::lround(v)) - 1; col = int(std::floor(u)); d_row = 1; break;
+    default: return false;
+    }
+    const float own = surface(row, col), facing = surface(row + d_row, col + d_col);
+    return own >= 0 && facing >= 0 && z <= own + EPS && z >= facing - EPS;
+}
+
 glm::dvec3 Drape::color(const Hit &hit, glm::dvec3 class_color) const
 {
-    if (hit.face != Face::top)
-        return class_color;
-    const int col = std::clamp(
-        int(std::floor((hit.point.x - frame_.west) / frame_.ew_res())), 0, frame_.cols - 1);
-    const int row = std::clamp(
-        int(std::floor((frame_.north - hit.point.y) / frame_.ns_res())), 0, frame_.rows - 1);
-    const float top = surface_[uint64_t(row) * uint64_t(frame_.cols) + uint64_t(col)];
-    // a top face at the surface's height (the GPU's points are floats)
-    if (top < 0 || std::fabs(frame_.local_z(hit.point.z) - top) > 1e-3)
-        return class_color;
     glm::dvec3 rgb;
-    if (!texture_.sample(hit.point.x, hit.point.y, rgb))
+    if (!on_surface(hit) || !texture_.sample(hit.point.x, hit.point.y, rgb))
         return class_color;
     return class_color + blend_ * (rgb - class_color);
 }

@@ -32,18 +32,26 @@ struct Texture {
     bool sample(double x, double y, glm::dvec3 &rgb_out) const;
 };
 
-/// \brief What is draped where: the texture on the surface of `model`.
+/// \brief What is draped where: the texture on the surface of `model`, its
+/// cells' tops and the walls of the staircase between them.
 class Drape {
 public:
     /// `model` is the model as read, before strata are hidden: the drape
     /// stays on the terrain, never on a subcrop.
     Drape(const Model &model, Texture texture, double blend);
 
-    /// The colour of `hit` with the texture mixed in where the hit lies on
-    /// the terrain surface (the top face of a cell's topmost interval).
+    /// The colour of `hit` with the texture mixed in where it lies on the
+    /// terrain surface.
     glm::dvec3 color(const Hit &hit, glm::dvec3 class_color) const;
 
+    /// Whether the hit lies on the terrain: on the top of a cell's topmost
+    /// interval, or on a wall between a cell's top and the lower top of
+    /// the neighbour it faces.
+    bool on_surface(const Hit &hit) const;
+
 private:
+    float surface(int row, int col) const; ///< local z; < 0: none or outside
+
     Frame frame_;
     std::vector<float> surface_; ///< per cell, local z; < 0 where empty
     Texture texture_;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "error.hpp"
@@ -124,12 +125,25 @@ void Tracer::index_overlays()
     for (size_t k = 0; k < scene_.fence.size(); ++k)
         add(cells_near_segment(f, scene_.fence[k].a, scene_.fence[k].b, 0),
             uint32_t(k) | PANEL);
+    box_low_ = glm::dvec2(0);
+    box_high_ = glm::dvec2(f.cols, f.rows);
     if (lists.empty())
         return;
+    if (!scene_.draw_model) {
+        // rays need to cross only the cells with overlays
+        box_low_ = box_high_;
+        box_high_ = glm::dvec2(0);
+    }
     overlay_offsets_.assign(f.cells() + 1, 0);
     for (uint64_t c = 0; c < f.cells(); ++c) {
         overlay_items_.insert(overlay_items_.end(), lists[c].begin(), lists[c].end());
         overlay_offsets_[c + 1] = uint32_t(overlay_items_.size());
+        if (!lists[c].empty() && !scene_.draw_model) {
+            const glm::dvec2 cell(double(c % uint64_t(f.cols)),
+                                  double(f.rows - 1 - int(c / uint64_t(f.cols))));
+            box_low_ = glm::min(box_low_, cell);
+            box_high_ = glm::max(box_high_, cell + 1.0);
+        }
     }
 }
 
@@ -377,17 +391,18 @@ Hit Tracer::trace(const Ray &ray) const
         if (d[a] == 0)
             d[a] = 0; // normalise -0
 
-    // 1. slab clip to the box [0, cols] x [0, rows] x [0, z_max]
-    const glm::dvec3 high(f.cols, f.rows, z_max_local_);
+    // 1. slab clip to the box [0, cols] x [0, rows] x [0, z_max] (the
+    // overlays' cells only, where the model is not drawn)
+    const glm::dvec3 low(box_low_, 0), high(box_high_, z_max_local_);
     double t_near = -INF, t_far = INF;
     int near_axis = -1;
     for (int a = 0; a < 3; ++a) {
         if (d[a] == 0) {
-            if (o[a] < 0 || o[a] > high[a])
+            if (o[a] < low[a] || o[a] > high[a])
                 return {};
             continue;
         }
-        double t0 = (0 - o[a]) / d[a], t1 = (high[a] - o[a]) / d[a];
+        double t0 = (low[a] - o[a]) / d[a], t1 = (high[a] - o[a]) / d[a];
         if (t0 > t1)
             std::swap(t0, t1);
         if (t0 > t_near) {

@@ -114,6 +114,9 @@ private:
     std::vector<LocalPlane> planes_;
     /// cells' lists of boreholes (index) and fence panels (index | PANEL)
     std::vector<uint32_t> overlay_offsets_, overlay_items_;
+    /// local x, y box the rays are clipped to: the grid, or only the cells
+    /// with overlays where the model is not drawn
+    glm::dvec2 box_low_{0}, box_high_{0};
     double z_max_local_ = 0; ///< highest interval top, local units
     glm::dvec3 scale_;       ///< map -> local per axis (exaggerated map)
 };

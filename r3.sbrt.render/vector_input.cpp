@@ -1,0 +1,224 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   Vector points, lines and attribute rows
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "vector_input.hpp"
+
+#include <algorithm>
+
+#include "grass.hpp"
+extern "C" {
+#include <grass/dbmi.h>
+#include <grass/vector.h>
+}
+
+namespace {
+
+/// An open vector map at level 1 (no topology needed), closed on scope exit.
+class VectorMap {
+public:
+    VectorMap(const std::string &name, const char *layer)
+        : points_(Vect_new_line_struct()), cats_(Vect_new_cats_struct())
+    {
+        Vect_set_open_level(1);
+        if (Vect_open_old2(&map_, name.c_str(), "", layer) < 0)
+            G_fatal_error(_("Unable to open vector map <%s>"), name.c_str());
+    }
+    ~VectorMap()
+    {
+        Vect_destroy_line_struct(points_);
+        Vect_destroy_cats_struct(cats_);
+        Vect_close(&map_);
+    }
+    VectorMap(const VectorMap &) = delete;
+    VectorMap &operator=(const VectorMap &) = delete;
+
+    /// The next feature's type (0 at the end); its points and categories.
+    int next()
+    {
+        const int type = Vect_read_next_line(&map_, points_, cats_);
+        if (type == -1)
+            G_fatal_error(_("Unable to read vector map <%s>"), Vect_get_full_name(&map_));
+        return type < 0 ? 0 : type;
+    }
+    const line_pnts &points() const { return *points_; }
+    line_cats *cats() { return cats_; }
+    Map_info &map() { return map_; }
+
+private:
+    Map_info map_;
+    line_pnts *points_;
+    line_cats *cats_;
+};
+
+/// A database driver open on a layer's table, shut down on scope exit.
+class LayerTable {
+public:
+    LayerTable(Map_info &map, int layer, const char *what)
+    {
+        info_ = Vect_get_field(&map, layer);
+        if (!info_)
+            G_fatal_error(_("%s: vector map <%s> has no attribute table in layer "
+                            "%d (connect one with v.db.connect)"),
+                          what, Vect_get_full_name(&map), layer);
+        driver_ = db_start_driver_open_database(info_->driver,
+                                                Vect_subst_var(info_->database, &map));
+        if (!driver_)
+            G_fatal_error(_("Unable to open database <%s> by driver <%s>"),
+                          info_->database, info_->driver);
+    }
+    ~LayerTable()
+    {
+        db_close_database_shutdown_driver(driver_);
+        G_free(info_); // its strings live as long as the module, as in GRASS's own modules
+    }
+    LayerTable(const LayerTable &) = delete;
+    LayerTable &operator=(const LayerTable &) = delete;
+    dbDriver *driver() { return driver_; }
+    const field_info &info() const { return *info_; }
+
+private:
+    field_info *info_ = nullptr;
+    dbDriver *driver_ = nullptr;
+};
+
+/// A number from a fetched column (integer or floating point), or false
+/// for NULL.
+bool column_number(dbTable *table, int k, const char *name, double &out)
+{
+    dbColumn *column = db_get_table_column(table, k);
+    dbValue *value = db_get_column_value(column);
+    if (db_test_value_isnull(value))
+        return false;
+    switch (db_sqltype_to_Ctype(db_get_column_sqltype(column))) {
+    case DB_C_TYPE_INT:
+        out = db_get_value_int(value);
+        return true;
+    case DB_C_TYPE_DOUBLE:
+        out = db_get_value_double(value);
+        return true;
+    default:
+        G_fatal_error(_("Column <%s> is not numeric"), name);
+    }
+}
+
+} // namespace
+
+std::vector<BoreholePoint> read_borehole_points(const RenderRequest &request,
+                                                bool &is_3d)
+{
+    VectorMap vector(request.boreholes, request.layer.c_str());
+    const int layer = Vect_get_field_number(&vector.map(), request.layer.c_str());
+    is_3d = Vect_is_3d(&vector.map());
+    std::vector<int> selected; // sorted categories where= selects
+    if (!request.where.empty()) {
+        LayerTable table(vector.map(), layer, "where=");
+        int *cats = nullptr;
+        const int n = db_select_int(table.driver(), table.info().table,
+                                    table.info().key, request.where.c_str(), &cats);
+        if (n < 0)
+            G_fatal_error(_("where=%s: the query failed on table <%s>"),
+                          request.where.c_str(), table.info().table);
+        selected.assign(cats, cats + n);
+        G_free(cats);
+        std::sort(selected.begin(), selected.end());
+    }
+    std::vector<BoreholePoint> points;
+    size_t others = 0;
+    while (const int type = vector.next()) {
+        if (!(type & GV_POINTS)) {
+            others += (type & (GV_LINES | GV_FACE)) != 0;
+            continue;
+        }
+        BoreholePoint p;
+        if (!Vect_cat_get(vector.cats(), layer, &p.cat) && layer > 0)
+            continue; // not in layer=
+        if (!request.where.empty() &&
+            !std::binary_search(selected.begin(), selected.end(), p.cat))
+            continue;
+        p.x = vector.points().x[0];
+        p.y = vector.points().y[0];
+        p.z = vector.points().z[0];
+        points.push_back(p);
+    }
+    if (points.empty())
+        G_fatal_error(_("boreholes=%s has no points in layer %d%s (it holds %zu "
+                        "lines or boundaries): boreholes= needs a vector map of "
+                        "points"),
+                      request.boreholes.c_str(), layer,
+                      request.where.empty() ? "" : _(" that where= selects"), others);
+    if (others)
+        G_warning(_("boreholes=%s: %zu lines or boundaries skipped (only points "
+                    "are boreholes)"),
+                  request.boreholes.c_str(), others);
+    return points;
+}
+
+std::map<int, std::vector<LogRow>> read_borehole_logs(const RenderRequest &request)
+{
+    VectorMap vector(request.boreholes, request.layer.c_str());
+    const int layer = Vect_get_field_number(&vector.map(), request.layer.c_str());
+    LayerTable table(vector.map(), layer, "log_class=");
+    std::string sql = std::string("SELECT ") + table.info().key + ", " +
+                      request.log_top + ", " + request.log_bottom + ", " +
+                      request.log_class + " FROM " + table.info().table;
+    dbString statement;
+    db_init_string(&statement);
+    db_set_string(&statement, sql.c_str());
+    dbCursor cursor;
+    if (db_open_select_cursor(table.driver(), &statement, &cursor, DB_SEQUENTIAL) !=
+        DB_OK)
+        G_fatal_error(_("Unable to read the logs (%s): check log_top=, "
+                        "log_bottom= and log_class= against the columns of "
+                        "table <%s>"),
+                      sql.c_str(), table.info().table);
+    db_free_string(&statement);
+    std::map<int, std::vector<LogRow>> logs;
+    dbTable *result = db_get_cursor_table(&cursor);
+    const char *names[4] = {table.info().key, request.log_top.c_str(),
+                            request.log_bottom.c_str(), request.log_class.c_str()};
+    size_t incomplete = 0;
+    for (;;) {
+        int more = 0;
+        if (db_fetch(&cursor, DB_NEXT, &more) != DB_OK)
+            G_fatal_error(_("Unable to fetch a row of table <%s>"), table.info().table);
+        if (!more)
+            break;
+        double v[4];
+        bool complete = true;
+        for (int k = 0; k < 4; ++k)
+            complete = column_number(result, k, names[k], v[k]) && complete;
+        if (!complete) {
+            ++incomplete;
+            continue;
+        }
+        logs[int(v[0])].push_back({v[1], v[2], int(v[3])});
+    }
+    db_close_cursor(&cursor);
+    if (incomplete)
+        G_warning(_("%zu log rows with NULL values skipped"), incomplete);
+    return logs;
+}
+
+std::vector<sbrt::FencePanel> read_fence(const std::string &name)
+{
+    VectorMap vector(name, "-1");
+    std::vector<sbrt::FencePanel> panels;
+    size_t points = 0;
+    while (const int type = vector.next()) {
+        if (!(type & GV_LINES)) {
+            points += (type & GV_POINTS) != 0;
+            continue;
+        }
+        const line_pnts &p = vector.points();
+        for (int k = 0; k + 1 < p.n_points; ++k)
+            if (p.x[k] != p.x[k + 1] || p.y[k] != p.y[k + 1])
+                panels.push_back({{p.x[k], p.y[k]}, {p.x[k + 1], p.y[k + 1]}});
+    }
+    if (panels.empty())
+        G_fatal_error(_("fence=%s has no lines (it holds %zu points): a fence "
+                        "diagram needs a vector map of lines"),
+                      name.c_str(), points);
+    return panels;
+}
