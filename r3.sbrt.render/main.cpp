@@ -63,6 +63,12 @@ void run(const RenderRequest &request)
     std::optional<sbrt::Drape> drape;
     if (!request.texture.empty())
         drape.emplace(model, read_texture(request.texture), request.texture_blend);
+    struct Cell_head region;
+    G_get_window(&region);
+    // the camera frames the model as read, whatever is hidden or cut: the
+    // view stays put while strata are switched off
+    const sbrt::Camera camera =
+        make_camera(request, sbrt::Tracer(model, request.zexag), region);
     const std::vector<uint32_t> hidden = hidden_materials(request, model);
     // the boreholes need the model as read where strata are hidden
     const sbrt::Model original = hidden.empty() || request.boreholes.empty()
@@ -70,11 +76,6 @@ void run(const RenderRequest &request)
                                      : model;
     if (!hidden.empty())
         model = sbrt::hide_materials(model, hidden);
-    struct Cell_head region;
-    G_get_window(&region);
-    // the camera frames the whole model's box, whatever is hidden or cut
-    const sbrt::Camera camera =
-        make_camera(request, sbrt::Tracer(model, request.zexag), region);
     sbrt::Scene scene = make_scene(request, hidden.empty() ? model : original,
                                    model, hidden, camera);
     const sbrt::Tracer tracer(model, request.zexag, std::move(scene));
