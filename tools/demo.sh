@@ -17,25 +17,30 @@ cat >"$SBRT_GISDBASE/demo_job.sh" <<EOS
 set -euo pipefail
 "$SBRT_ROOT/tools/make_geomodel.sh" $size geology
 r3.sbrt.convert input=geology output=geology -p
-# a view from the south-west, 1056 x 884 pixels, vertical exaggeration 2
+TMPDIR_SCENE="$SBRT_GISDBASE"
+. "$SBRT_ROOT/tools/geology_scene.sh"
+make_geology_inputs
+# the views from the south-west, 1056 x 884 pixels, vertical exaggeration 2:
+# the paper's Figure 12 (full model, strata hidden, drape, boreholes with
+# strata hidden, cross section), a fence diagram and the logged wells alone
 g.region rows=884 cols=1056
-r3.sbrt.render --verbose input=geology output=view material=view_class zexag=2 light=300,50 \\
-    normals=kernel kernel=7 smooth=1
-# the same view without the upper strata, and cut open along a section
-r3.sbrt.render --q input=geology output=hidden zexag=2 light=300,50 normals=kernel kernel=7 smooth=1 \\
-    hide=13,12,11,10
-r3.sbrt.render --q input=geology output=section zexag=2 light=300,50 normals=kernel kernel=7 smooth=1 \\
-    section=0,1200,2000,1500
-for image in view hidden section; do
+for entry in "\${GEOLOGY_VIEWS[@]}"; do
+    image=\${entry%%|*}
+    r3.sbrt.render --q input=geology output=\$image zexag=2 light=300,50 \\
+        normals=kernel kernel=7 smooth=1 \${entry#*|}
     r.composite --q --o red=\$image.red green=\$image.green blue=\$image.blue output=\${image}_rgb levels=256
     r.out.png --q --o input=\${image}_rgb output="$out/r3_sbrt_demo_\$image.png"
 done
-# the geological map: a top view in the model's own grid
+# the geological map: a top view in the model's own grid, and its legend
+# from the labels and colours the material map carries (d.legend)
 g.region raster_3d=geology
 r3.sbrt.render --q input=geology output=map view=top material=map_class
 r.composite --q --o red=map.red green=map.green blue=map.blue output=map_rgb levels=256
 r.out.png --q --o input=map_rgb output="$out/r3_sbrt_demo_map.png"
+GRASS_RENDER_IMMEDIATE=cairo GRASS_RENDER_FILE="$out/r3_sbrt_demo_legend.png" \\
+GRASS_RENDER_WIDTH=820 GRASS_RENDER_HEIGHT=500 GRASS_RENDER_FILE_READ=TRUE \\
+    bash -c 'd.rast -n map=map_class; d.legend -c -n raster=map_class at=5,95,77,81 fontsize=12'
 r.stats -l -c -n map_class   # cells of each class at the surface
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/demo_job.sh"
-echo "demo: images written to $out: r3_sbrt_demo_view.png (perspective), _hidden.png (upper strata hidden), _section.png (cross section), _map.png (geological map)"
+echo "demo: images written to $out: r3_sbrt_demo_view.png (perspective), _hidden.png (upper strata hidden), _drape.png (orthophoto draped), _boreholes.png (wells, strata hidden), _section.png (cross section), _fence.png (fence diagram), _logs.png (wells alone: log and model halves), _map.png and _legend.png (geological map)"
