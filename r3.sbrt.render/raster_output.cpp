@@ -1,6 +1,6 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.render
- * PURPOSE:   Image -> raster maps
+ * PURPOSE:   Image -> raster maps (and a PNG file)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "raster_output.hpp"
@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "legend.hpp"
+#include "png_writer.hpp"
 
 namespace {
 
@@ -68,6 +69,8 @@ void write_image_maps(const RenderRequest &request, const sbrt::Model &model,
         Rast_free_colors(&colors);
         write_history(name, request);
     }
+    if (!request.png.empty())
+        sbrt::write_png(request.png, image.rows, image.cols, image.rgb);
     if (!request.material.empty()) {
         write_map<int>(request.material, CELL_TYPE, image.rows, image.cols,
                        [&](size_t i) { return image.material[i]; });

@@ -107,6 +107,11 @@ RenderOptions define_render_options()
         "hit_elevation", _("Raster map of the elevation (z) of the first hit"));
     o->depth = define_map_output(
         "depth", _("Raster map of the distance from the camera to the hit"));
+    o->png = G_define_standard_option(G_OPT_F_OUTPUT);
+    o->png->key = "png";
+    o->png->required = NO;
+    o->png->description = _("PNG file of the image too");
+    o->png->guisection = _("Output");
 
     o->view = define_choice(
         "view", _("Projection of the view"), _("Camera"), "perspective",
@@ -307,6 +312,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.material = o->material->answer ? o->material->answer : "";
     r.hit_elevation = o->hit_elevation->answer ? o->hit_elevation->answer : "";
     r.depth = o->depth->answer ? o->depth->answer : "";
+    r.png = o->png->answer ? o->png->answer : "";
     r.view = o->view->answer;
     r.position = read_point(o->position);
     r.target = read_point(o->target);

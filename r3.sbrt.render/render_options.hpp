@@ -18,7 +18,7 @@
 
 /// \brief Everything the user asked for, validated, map units.
 struct RenderRequest {
-    std::string input, output, material, hit_elevation, depth;
+    std::string input, output, material, hit_elevation, depth, png;
     std::string view = "perspective";
     std::optional<glm::dvec3> position, target;
     double azimuth = 225, elevation = 30;
@@ -50,7 +50,7 @@ struct RenderRequest {
 
 /// \brief The parser's options and flags of the module.
 struct RenderOptions {
-    Option *input, *output, *material, *hit_elevation, *depth;
+    Option *input, *output, *material, *hit_elevation, *depth, *png;
     Option *view, *position, *target, *azimuth, *elevation, *distance, *fov,
         *ortho_height, *zexag;
     Option *light, *ambient, *background, *normals, *kernel, *smooth, *color,

@@ -270,6 +270,29 @@ class TestRenderTopView(TestCase):
         self.assertGreater(float(cut["mean"]), float(whole["mean"]))
         self.runModule("g.region", region="geo_region")
 
+    def test_png_file_holds_the_image(self):
+        import struct
+        import zlib
+
+        self.runModule("g.region", rows=30, cols=40)
+        png = gs.tempfile() + ".png"
+        self.assertModule("r3.sbrt.render", input="geo", output="pn", png=png)
+        with open(png, "rb") as f:
+            data = f.read()
+        self.assertEqual(data[:8], b"\x89PNG\r\n\x1a\n")
+        width, height, depth, colour = struct.unpack(">IIBB", data[16:26])
+        self.assertEqual((width, height, depth, colour), (40, 30, 8, 2))
+        # the pixels, unfiltered rows, against the red, green, blue maps
+        idat = data.index(b"IDAT")
+        size = struct.unpack(">I", data[idat - 4:idat])[0]
+        raw = zlib.decompress(data[idat + 4:idat + 4 + size])
+        for k, band in enumerate(("red", "green", "blue")):
+            text = gs.read_command("r.out.ascii", input=f"pn.{band}", flags="h")
+            want = [int(v) for v in text.split()]
+            got = [raw[r * (40 * 3 + 1) + 1 + c * 3 + k] for r in range(30) for c in range(40)]
+            self.assertEqual(got, want, msg=band)
+        self.runModule("g.region", region="geo_region")
+
     def test_bad_camera_fails(self):
         self.assertModuleFail(
             "r3.sbrt.render", input="geo", output="bad",

@@ -26,20 +26,18 @@ make_geology_inputs
 g.region rows=884 cols=1056
 for entry in "\${GEOLOGY_VIEWS[@]}"; do
     image=\${entry%%|*}
-    r3.sbrt.render --q input=geology output=\$image zexag=2 light=300,50 \\
-        normals=kernel kernel=7 smooth=1 \${entry#*|}
-    r.composite --q --o red=\$image.red green=\$image.green blue=\$image.blue output=\${image}_rgb levels=256
-    r.out.png --q --o input=\${image}_rgb output="$out/r3_sbrt_demo_\$image.png"
+    r3.sbrt.render --q --o input=geology output=\$image zexag=2 light=300,50 \\
+        normals=kernel kernel=7 smooth=1 png="$out/r3_sbrt_demo_\$image.png" \${entry#*|}
 done
 # the geological map: a top view in the model's own grid, and its legend
 # from the labels and colours the material map carries (d.legend)
 g.region raster_3d=geology
-r3.sbrt.render --q input=geology output=map view=top material=map_class
-r.composite --q --o red=map.red green=map.green blue=map.blue output=map_rgb levels=256
-r.out.png --q --o input=map_rgb output="$out/r3_sbrt_demo_map.png"
+r3.sbrt.render --q --o input=geology output=map view=top material=map_class \\
+    png="$out/r3_sbrt_demo_map.png"
+rm -f "$out/r3_sbrt_demo_legend.png" # the commands below draw over it
 GRASS_RENDER_IMMEDIATE=cairo GRASS_RENDER_FILE="$out/r3_sbrt_demo_legend.png" \\
-GRASS_RENDER_WIDTH=820 GRASS_RENDER_HEIGHT=500 GRASS_RENDER_FILE_READ=TRUE \\
-    bash -c 'd.rast -n map=map_class; d.legend -c -n raster=map_class at=5,95,77,81 fontsize=12'
+GRASS_RENDER_WIDTH=900 GRASS_RENDER_HEIGHT=500 GRASS_RENDER_FILE_READ=TRUE \\
+    bash -c 'd.rast -n map=map_class; d.legend -c -n raster=map_class at=5,95,71,75 fontsize=12'
 r.stats -l -c -n map_class   # cells of each class at the surface
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/demo_job.sh"

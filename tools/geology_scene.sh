@@ -32,16 +32,17 @@ L 2
  300 2250
  1750 2250
 FENCE
-    # an "orthophoto": fields and woods from smooth noise on the model's grid
+    # an "orthophoto": fields and woods (r.mapcalc's sin() takes degrees)
+    # crossed by a winding road, on the model's grid
     g.region --q raster_3d=geology
-    r.surf.fractal --q --o output=ortho_noise dimension=2.2 number=0 seed=3
-    r.mapcalc --q --o expression="ortho = int(100 + 12 * ortho_noise / 1000.0 + 30 * sin(x() / 3.0) * cos(y() / 4.0))"
+    r.mapcalc --q --o expression="ortho = if(abs(y() - 1300 - 200 * sin(x() * 0.2)) < 12, 250, int(110 + 45 * sin(x() * 0.9) * cos(y() * 0.7) + 30 * sin((x() + y()) * 2.3) + 15 * sin(x() * 7.1) * sin(y() * 5.3)))"
     r.colors --q map=ortho rules=- <<'COLORS'
-0% 40:70:30
-40% 90:120:50
-55% 150:160:90
-70% 200:190:140
-100% 235:225:200
+40 35:65:30
+90 70:110:45
+130 150:160:80
+170 205:190:130
+200 225:215:170
+250 180:170:160
 COLORS
 }
 
