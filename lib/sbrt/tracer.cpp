@@ -34,6 +34,9 @@ namespace {
 constexpr double INF = std::numeric_limits<double>::infinity();
 /// Marks a fence panel in a cell's overlay list (else a borehole).
 constexpr uint32_t PANEL = 1u << 31;
+/// Up to this many overlays, a ray without the model meets each of them
+/// directly rather than walking the cells between them.
+constexpr size_t DIRECT_OVERLAYS = 256;
 
 /// Face through which a ray moving along `axis` with sign of `d` enters.
 Face entry_face(int axis, double d)
@@ -127,6 +130,11 @@ void Tracer::index_overlays()
             uint32_t(k) | PANEL);
     box_low_ = glm::dvec2(0);
     box_high_ = glm::dvec2(f.cols, f.rows);
+    overlay_count_ = scene_.boreholes.size() + scene_.fence.size();
+    for (size_t k = 0; k < scene_.boreholes.size(); ++k)
+        all_overlays_.push_back(uint32_t(k));
+    for (size_t k = 0; k < scene_.fence.size(); ++k)
+        all_overlays_.push_back(uint32_t(k) | PANEL);
     if (lists.empty())
         return;
     if (!scene_.draw_model) {
@@ -305,60 +313,78 @@ bool Tracer::cross_borehole(const Borehole &borehole, double t_a, double t_b,
                      {Face::split, n});
 }
 
-bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
-                            Entry entry, Walk &walk) const
+/// An overlay a ray meets: a borehole cylinder's span or a fence
+/// curtain's point (start == end), with the surface's normal at its start.
+struct Tracer::Event {
+    double start, end;
+    uint32_t item;
+    glm::dvec3 normal;
+};
+
+void Tracer::overlay_events(const uint32_t *first, const uint32_t *last,
+                            double t_lo, double t_hi, const Walk &walk,
+                            std::vector<Event> &events) const
 {
-    // the overlays this ray meets in the cell, in the order it meets them:
-    // borehole cylinders as spans, fence curtains as points
-    struct Event {
-        double start, end;
-        uint32_t item;
-        glm::dvec3 normal;
-    };
-    std::vector<Event> events;
     const glm::dvec2 o(walk.ray.origin), d(walk.ray.direction);
-    for (uint32_t i = overlay_offsets_[cell]; i < overlay_offsets_[cell + 1]; ++i) {
-        const uint32_t item = overlay_items_[i];
+    for (const uint32_t *i = first; i != last; ++i) {
+        const uint32_t item = *i;
         if (item & PANEL) {
             double t;
             glm::dvec2 n;
-            if (ray_panel(o, d, scene_.fence[item & ~PANEL], t, n) && t >= t_in &&
-                t < t_out)
+            if (ray_panel(o, d, scene_.fence[item & ~PANEL], t, n) && t >= t_lo &&
+                t < t_hi)
                 events.push_back({t, t, item, glm::dvec3(n, 0)});
             continue;
         }
         const Borehole &b = scene_.boreholes[item];
         double t0, t1;
         if (!ray_cylinder(o, d, {b.x, b.y}, scene_.borehole_radius, t0, t1) ||
-            t1 <= t_in || t0 >= t_out)
+            t1 <= t_lo || t0 >= t_hi)
             continue;
-        // the mantle's normal where the ray enters it in this cell
+        // the mantle's normal where the ray enters it in this stretch
         const glm::dvec3 n =
-            t0 >= t_in ? glm::dvec3(glm::normalize(o + t0 * d - glm::dvec2(b.x, b.y)), 0)
+            t0 >= t_lo ? glm::dvec3(glm::normalize(o + t0 * d - glm::dvec2(b.x, b.y)), 0)
                        : glm::dvec3(0);
-        events.push_back({std::max(t0, t_in), std::min(t1, t_out), item, n});
+        events.push_back({std::max(t0, t_lo), std::min(t1, t_hi), item, n});
     }
     std::sort(events.begin(), events.end(),
               [](const Event &a, const Event &b) { return a.start < b.start; });
-    const Interval *intervals = model_.intervals().data();
-    const Interval *first = intervals + model_.stack_begin(cell);
-    const Interval *last = intervals + model_.stack_end(cell);
+}
+
+const Interval *Tracer::stack_at(glm::dvec3 local, const Interval *&last) const
+{
+    const Frame &f = model_.frame();
+    const int col = std::clamp(int(std::floor(local.x)), 0, f.cols - 1);
+    const int row = f.rows - 1 - std::clamp(int(std::floor(local.y)), 0, f.rows - 1);
+    const uint64_t cell = model_.cell_index(row, col);
+    last = model_.intervals().data() + model_.stack_end(cell);
+    return model_.intervals().data() + model_.stack_begin(cell);
+}
+
+bool Tracer::cross_events(const std::vector<Event> &events, double t_in,
+                          double t_out, Entry entry, const Interval *first,
+                          const Interval *last, Walk &walk) const
+{
+    // `first`..`last`: the model's stack between the overlays, if drawn
+    const bool model = first != nullptr;
     double cursor = t_in;
     for (const Event &e : events) {
         const bool panel = (e.item & PANEL) != 0;
         if (panel ? e.start < cursor : e.end <= cursor)
             continue; // inside a cylinder already crossed
-        if (scene_.draw_model && e.start > cursor &&
+        if (model && e.start > cursor &&
             walk_stack(first, last, cursor, e.start, entry, walk))
             return true;
         if (panel) {
             // the class of the model at the curtain's point
-            const double z = walk.o.z + e.start * walk.d.z;
+            const glm::dvec3 p = walk.o + e.start * walk.d;
+            const Interval *stack_last = last;
+            const Interval *stack_first = model ? first : stack_at(p, stack_last);
             const Interval *k = std::upper_bound(
-                first, last, z,
+                stack_first, stack_last, p.z,
                 [](double v, const Interval &iv) { return v < double(iv.top); });
-            entry = {Face::fence, e.normal};
-            if (k != last && meet(k->material, e.start, e.start, entry, walk))
+            entry = {Face::fence, e.normal, -1};
+            if (k != stack_last && meet(k->material, e.start, e.start, entry, walk))
                 return true;
             cursor = e.start;
             continue;
@@ -367,17 +393,32 @@ bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
         const Entry side = start == e.start && glm::length(e.normal) > 0
                                ? Entry{Face::cylinder, e.normal, -1}
                                : entry;
-        if (cross_borehole(scene_.boreholes[e.item], start, e.end, side, walk))
+        const Borehole &b = scene_.boreholes[e.item];
+        if (cross_borehole(b, start, e.end, side, walk))
             return true;
         cursor = e.end;
         // leaving the cylinder into the model: its mantle, seen from inside
-        const glm::dvec2 at = o + cursor * d -
-                              glm::dvec2(scene_.boreholes[e.item].x,
-                                         scene_.boreholes[e.item].y);
-        entry = {Face::cylinder, glm::dvec3(-glm::normalize(at), 0)};
+        const glm::dvec2 at = glm::dvec2(walk.ray.origin) +
+                              cursor * glm::dvec2(walk.ray.direction) -
+                              glm::dvec2(b.x, b.y);
+        entry = {Face::cylinder, glm::dvec3(-glm::normalize(at), 0), -1};
     }
-    return scene_.draw_model && cursor < t_out &&
-           walk_stack(first, last, cursor, t_out, entry, walk);
+    return model && cursor < t_out && walk_stack(first, last, cursor, t_out, entry, walk);
+}
+
+bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
+                            Entry entry, Walk &walk) const
+{
+    std::vector<Event> events;
+    overlay_events(overlay_items_.data() + overlay_offsets_[cell],
+                   overlay_items_.data() + overlay_offsets_[cell + 1], t_in, t_out,
+                   walk, events);
+    if (!scene_.draw_model)
+        return cross_events(events, t_in, t_out, entry, nullptr, nullptr, walk);
+    const Interval *intervals = model_.intervals().data();
+    return cross_events(events, t_in, t_out, entry,
+                        intervals + model_.stack_begin(cell),
+                        intervals + model_.stack_end(cell), walk);
 }
 
 Hit Tracer::trace(const Ray &ray) const
@@ -439,6 +480,18 @@ Hit Tracer::trace(const Ray &ray) const
     }
     if (!(t_near <= t_far) || z_max_local_ <= 0)
         return {};
+
+    // only a few overlays and no model: meet each overlay directly, no
+    // walk over the cells between them
+    if (!scene_.draw_model && overlay_count_ <= DIRECT_OVERLAYS) {
+        std::vector<Event> events;
+        overlay_events(all_overlays_.data(), all_overlays_.data() + all_overlays_.size(),
+                       t_near, t_far, walk, events);
+        if (cross_events(events, t_near, t_far, wall, nullptr, nullptr, walk) &&
+            walk.hit.is_hit())
+            walk.hit.point = from_local(o + walk.hit.t * d);
+        return walk.hit;
+    }
 
     // 2. 2D DDA (Amanatides-Woo) over the cells from the entry point
     const glm::dvec3 p = o + t_near * d;

@@ -96,6 +96,14 @@ public:
 private:
     struct Walk;
     struct Entry;
+    struct Event;
+    void overlay_events(const uint32_t *first, const uint32_t *last, double t_lo,
+                        double t_hi, const Walk &walk, std::vector<Event> &events) const;
+    bool cross_events(const std::vector<Event> &events, double t_in, double t_out,
+                      Entry entry, const Interval *first, const Interval *last,
+                      Walk &walk) const;
+    /// The model's stack of the cell holding local point p.
+    const Interval *stack_at(glm::dvec3 local, const Interval *&last) const;
     bool cross_cell(uint64_t cell, double t_in, double t_out, Entry entry,
                     Walk &walk) const;
     bool cross_overlays(uint64_t cell, double t_in, double t_out, Entry entry,
@@ -114,6 +122,8 @@ private:
     std::vector<LocalPlane> planes_;
     /// cells' lists of boreholes (index) and fence panels (index | PANEL)
     std::vector<uint32_t> overlay_offsets_, overlay_items_;
+    std::vector<uint32_t> all_overlays_; ///< every overlay, coded the same
+    size_t overlay_count_ = 0;
     /// local x, y box the rays are clipped to: the grid, or only the cells
     /// with overlays where the model is not drawn
     glm::dvec2 box_low_{0}, box_high_{0};

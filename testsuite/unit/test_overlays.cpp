@@ -311,3 +311,36 @@ TEST(Fence, CurtainShowsTheClassAtEachPoint)
     EXPECT_GT(solid, 100u);
     EXPECT_GT(holes, 10u);
 }
+
+TEST(Boreholes, ManyBoreholesWalkTheCells)
+{
+    // more boreholes than are met directly: the rays walk the cells (and
+    // the box of the cells with boreholes); one borehole per cell centre
+    const auto v = sbrt_test::random_voxels(17, 20, 22, 16, 6);
+    const Model m = sbrt_test::build_model(v);
+    const Frame &f = v.frame;
+    Scene scene;
+    scene.borehole_radius = 0.4 * std::min(f.ew_res(), f.ns_res());
+    scene.draw_model = false;
+    for (int row = 1; row < f.rows - 1; ++row) // not the outer ring
+        for (int col = 1; col < f.cols - 1; ++col) {
+            Borehole b;
+            b.x = f.west + (col + 0.5) * f.ew_res();
+            b.y = f.north - (row + 0.5) * f.ns_res();
+            const uint64_t cell = m.cell_index(row, col);
+            b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
+                           m.intervals().begin() + m.stack_end(cell));
+            b.model_stack = b.stack;
+            scene.boreholes.push_back(b);
+        }
+    ASSERT_GT(scene.boreholes.size(), 256u);
+    const Tracer plain(m, 1.0), cylinders(m, 1.0, scene);
+    const Camera cam = sbrt_test::top_camera(f, 1e3);
+    const auto want = trace_image(plain, cam, 2), got = trace_image(cylinders, cam, 2);
+    for (int row = 0; row < f.rows; ++row)
+        for (int col = 0; col < f.cols; ++col) {
+            const size_t i = size_t(row) * f.cols + col;
+            const bool ring = row == 0 || col == 0 || row == f.rows - 1 || col == f.cols - 1;
+            ASSERT_EQ(got[i].material, ring ? EMPTY : want[i].material) << row << "," << col;
+        }
+}
