@@ -12,26 +12,15 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-MAKE_GEOMODEL = os.path.join(HERE, "..", "tools", "make_geomodel.sh")
+from geomodel_fixture import T_DEPTHS, set_up_t_model
 
 
 class TestRenderTopView(TestCase):
-    depths = 64
+    depths = T_DEPTHS
 
     @classmethod
     def setUpClass(cls):
-        cls.use_temp_region()
-        subprocess.run([MAKE_GEOMODEL, "T", "geo"], check=True)
-        cls.runModule("r3.sbrt.convert", input="geo", output="geo")
-        cls.runModule("g.region", save="geo_region", overwrite=True)
-        # independent: the topmost non-null voxel of every column
-        cls.runModule("r3.to.rast", input="geo", output="sl")
-        expr = "null()"
-        for z in range(1, cls.depths + 1):
-            s = f"sl_{z:05d}"
-            expr = f"if(isnull({s}), {expr}, {s})"
-        cls.runModule("r.mapcalc", expression=f"top_class = int({expr})")
+        set_up_t_model(cls)
         # elevation of that voxel's top: 640 m / 64 depths = 10 m per voxel
         zexpr = "null()"
         for z in range(1, cls.depths + 1):

@@ -7,15 +7,13 @@ PURPOSE:   r3.sbrt.render's geological operations against GRASS's own tools
            input
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
-import os
 import subprocess
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-MAKE_GEOMODEL = os.path.join(HERE, "..", "tools", "make_geomodel.sh")
+from geomodel_fixture import set_up_t_model
 
 # the T model: 40 x 50 cells of 50 m, 64 voxels of 10 m from 0 to 640 m
 DEPTHS, TB, RES = 64, 10.0, 50.0
@@ -28,16 +26,7 @@ ZEXAG = RES / TB
 class TestGeologicalOperations(TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.use_temp_region()
-        subprocess.run([MAKE_GEOMODEL, "T", "geo"], check=True)
-        cls.runModule("r3.sbrt.convert", input="geo", output="geo")
-        cls.runModule("g.region", save="geo_region", overwrite=True)
-        # the class seen from above in each cell: the topmost voxel's
-        cls.runModule("r3.to.rast", input="geo", output="sl")
-        expr = "null()"
-        for z in range(1, DEPTHS + 1):
-            expr = f"if(isnull(sl_{z:05d}), {expr}, sl_{z:05d})"
-        cls.runModule("r.mapcalc", expression=f"top_class = int({expr})")
+        set_up_t_model(cls)
         # the vertical section along y = Y0 by r3.cross.rast, level by
         # level: a constant elevation at each voxel centre, read along the
         # line (r3.cross.rast takes its sample positions from the 2D grid,

@@ -77,6 +77,22 @@ Hit march(const sbrt_test::Voxels &v, const Model &m, const Translucency &tr,
     return hit;
 }
 
+/// A borehole at map (x, y) showing the model's stack of the cell there.
+Borehole borehole_at(const Model &m, double x, double y)
+{
+    const Frame &f = m.frame();
+    const int col = int(std::floor((x - f.west) / f.ew_res()));
+    const int row = int(std::floor((f.north - y) / f.ns_res()));
+    const uint64_t cell = m.cell_index(row, col);
+    Borehole b;
+    b.x = x;
+    b.y = y;
+    b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
+                   m.intervals().begin() + m.stack_end(cell));
+    b.model_stack = b.stack;
+    return b;
+}
+
 } // namespace
 
 TEST(Translucency, VerticalRaysAbsorbTheStrataThicknessExactly)
@@ -175,14 +191,9 @@ TEST(Boreholes, CylinderShowsTheStackAtItsPoint)
     const auto v = sbrt_test::random_voxels(8, 10, 12, 30, 6);
     const Model m = sbrt_test::build_model(v);
     const Frame &f = v.frame;
-    Borehole b;
-    b.x = f.west + 6.3 * f.ew_res();
-    b.y = f.south + 4.6 * f.ns_res();
+    const Borehole b =
+        borehole_at(m, f.west + 6.3 * f.ew_res(), f.south + 4.6 * f.ns_res());
     const int row = f.rows - 1 - 4, col = 6;
-    const uint64_t cell = m.cell_index(row, col);
-    b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
-                   m.intervals().begin() + m.stack_end(cell));
-    b.model_stack = b.stack;
     const double r = 1.7;
     Scene scene;
     scene.boreholes = {b};
@@ -252,16 +263,9 @@ TEST(Boreholes, InsideTheDrawnModelTheyChangeNoMaterial)
     const Frame &f = v.frame;
     Scene scene;
     scene.borehole_radius = 0.4 * f.ew_res();
-    for (int k = 0; k < 5; ++k) {
-        Borehole b;
-        b.x = f.west + (2.5 + 2 * k) * f.ew_res();
-        b.y = f.south + (3.5 + k) * f.ns_res();
-        const uint64_t cell = m.cell_index(f.rows - 1 - (3 + k), 2 + 2 * k);
-        b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
-                       m.intervals().begin() + m.stack_end(cell));
-        b.model_stack = b.stack;
-        scene.boreholes.push_back(b);
-    }
+    for (int k = 0; k < 5; ++k)
+        scene.boreholes.push_back(borehole_at(m, f.west + (2.5 + 2 * k) * f.ew_res(),
+                                              f.south + (3.5 + k) * f.ns_res()));
     const Tracer plain(m, 1.0), with(m, 1.0, scene);
     const Camera cam = sbrt_test::top_camera(f, 1e3);
     const auto a = trace_image(plain, cam, 2), b = trace_image(with, cam, 2);
@@ -323,16 +327,9 @@ TEST(Boreholes, ManyBoreholesWalkTheCells)
     scene.borehole_radius = 0.4 * std::min(f.ew_res(), f.ns_res());
     scene.draw_model = false;
     for (int row = 1; row < f.rows - 1; ++row) // not the outer ring
-        for (int col = 1; col < f.cols - 1; ++col) {
-            Borehole b;
-            b.x = f.west + (col + 0.5) * f.ew_res();
-            b.y = f.north - (row + 0.5) * f.ns_res();
-            const uint64_t cell = m.cell_index(row, col);
-            b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
-                           m.intervals().begin() + m.stack_end(cell));
-            b.model_stack = b.stack;
-            scene.boreholes.push_back(b);
-        }
+        for (int col = 1; col < f.cols - 1; ++col)
+            scene.boreholes.push_back(borehole_at(m, f.west + (col + 0.5) * f.ew_res(),
+                                                  f.north - (row + 0.5) * f.ns_res()));
     ASSERT_GT(scene.boreholes.size(), 256u);
     const Tracer plain(m, 1.0), cylinders(m, 1.0, scene);
     const Camera cam = sbrt_test::top_camera(f, 1e3);

@@ -1,0 +1,27 @@
+"""
+MODULE:    testsuite/geomodel_fixture.py (r3.sbrt addon)
+PURPOSE:   The set-up the render tests share: the synthetic T model as a 3D
+           raster and an SBRT, its slices, and the class of its topmost
+           non-null voxel per cell (an independent r3.to.rast + r.mapcalc)
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import os
+import subprocess
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+MAKE_GEOMODEL = os.path.join(HERE, "..", "tools", "make_geomodel.sh")
+T_DEPTHS = 64
+
+
+def set_up_t_model(case):
+    """In a gunittest TestCase's setUpClass: maps geo (3D raster and SBRT),
+    sl_00001.. (slices), top_class; the region saved as geo_region."""
+    case.use_temp_region()
+    subprocess.run([MAKE_GEOMODEL, "T", "geo"], check=True)
+    case.runModule("r3.sbrt.convert", input="geo", output="geo")
+    case.runModule("g.region", save="geo_region", overwrite=True)
+    case.runModule("r3.to.rast", input="geo", output="sl")
+    expr = "null()"
+    for z in range(1, T_DEPTHS + 1):
+        expr = f"if(isnull(sl_{z:05d}), {expr}, sl_{z:05d})"
+    case.runModule("r.mapcalc", expression=f"top_class = int({expr})")
