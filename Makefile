@@ -38,6 +38,7 @@ test: setup
 clean:
 	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) clean; done
 	$(MAKE) -C testsuite/unit clean
+	$(MAKE) -C testsuite/fuzz clean
 	rm -rf dist testreport
 
 .PHONY: default install setup demo test clean

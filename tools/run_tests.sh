@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 ############################################################################
 # MODULE:    tools/run_tests.sh (r3.sbrt addon)
-# PURPOSE:   Runs every test: the C++ unit tests of lib/sbrt and each
-#            gunittest file of testsuite/ in its own fresh mapset; ends with
-#            the line "N passed, N failed" (test cases, all kinds together)
+# PURPOSE:   Runs every test: the C++ unit tests of lib/sbrt (also under
+#            ASan+UBSan), the fuzz target of the SBRT reader (FUZZ_SECONDS,
+#            default 60), and each gunittest file of testsuite/ in its own
+#            fresh mapset; ends with the line "N passed, N failed" (test
+#            cases, all kinds together)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -uo pipefail
@@ -26,7 +28,37 @@ else
     cat "$log/unit_build.log"; failed=$((failed + 1))
 fi
 
-# 2. gunittest files, each in a fresh mapset of a throw-away location
+# 2. the unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer
+san_flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+if make -s -C testsuite/unit BUILD=build-san SAN_FLAGS="$san_flags" build-san/sbrt_unit_tests \
+    >"$log/unit_san_build.log" 2>&1; then
+    LSAN_OPTIONS=suppressions=$SBRT_ROOT/testsuite/unit/lsan.supp \
+        testsuite/unit/build-san/sbrt_unit_tests >"$log/unit_san.log" 2>&1
+    rc=$?
+    p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log/unit_san.log")
+    f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log/unit_san.log")
+    p=${p:-0}; f=${f:-0}
+    if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
+        f=1 # a sanitizer report ends the run
+        grep -E "ERROR: |runtime error|SUMMARY" "$log/unit_san.log" | head -20
+    fi
+    passed=$((passed + p)); failed=$((failed + f))
+    echo "unit tests under ASan+UBSan: $p passed, $f failed"
+else
+    cat "$log/unit_san_build.log"; failed=$((failed + 1))
+fi
+
+# 3. the SBRT reader fuzzed for FUZZ_SECONDS (libFuzzer, ASan+UBSan): one test
+if make -s -C testsuite/fuzz run FUZZ_SECONDS="${FUZZ_SECONDS:-60}" >"$log/fuzz.log" 2>&1; then
+    passed=$((passed + 1))
+    echo "fuzz (SBRT reader): passed, $(sed -n 's/^stat::number_of_executed_units: *//p' "$log/fuzz.log") inputs in ${FUZZ_SECONDS:-60} s"
+else
+    failed=$((failed + 1))
+    grep -E "ERROR|==[0-9]+==|crash-|leak-|timeout-" "$log/fuzz.log" | head -20
+    echo "fuzz (SBRT reader): failed (log $log/fuzz.log)"
+fi
+
+# 4. gunittest files, each in a fresh mapset of a throw-away location
 sbrt_location "$log/grassdata"
 for test in testsuite/test_*.py; do
     name=$(basename "$test" .py)

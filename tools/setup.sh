@@ -13,6 +13,7 @@ packages=(
     libglm-dev                       # vector maths
     libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
     libgtest-dev                     # unit tests
+    clang libclang-rt-14-dev         # libFuzzer and the sanitizers' runtimes
 )
 missing=()
 for p in "${packages[@]}"; do

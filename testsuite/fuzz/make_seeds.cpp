@@ -1,0 +1,34 @@
+/****************************************************************************
+ * MODULE:    testsuite/fuzz (r3.sbrt addon)
+ * PURPOSE:   Seed corpus of the reader's fuzz target: valid stacks files of
+ *            small random models (flag byte 1: checksums recomputed, and 0)
+ * USAGE:     make_seeds DIR
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "format.hpp"
+#include "../unit/test_support.hpp"
+
+int main(int argc, char **argv)
+{
+    if (argc != 2) {
+        std::cerr << "usage: make_seeds DIR\n";
+        return 2;
+    }
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+        const auto v = sbrt_test::random_voxels(seed, 2 + seed, 3 + seed, 6, 4);
+        const std::vector<uint8_t> stacks = sbrt::encode_stacks(sbrt_test::build_model(v));
+        for (uint8_t flag : {uint8_t(0), uint8_t(1)}) {
+            std::ofstream out(std::string(argv[1]) + "/seed_" + std::to_string(seed) +
+                                  "_" + std::to_string(flag),
+                              std::ios::binary);
+            out.put(char(flag));
+            out.write(reinterpret_cast<const char *>(stacks.data()),
+                      std::streamsize(stacks.size()));
+        }
+    }
+    return 0;
+}

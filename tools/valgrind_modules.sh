@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+############################################################################
+# MODULE:    tools/valgrind_modules.sh (r3.sbrt addon)
+# PURPOSE:   Runs both modules under valgrind's memcheck on the small T
+#            model (convert both ways, render with every operation on the
+#            CPU backend): any invalid read or write, use of uninitialised
+#            memory or bad free fails the run. Leaks are not counted: GRASS
+#            modules leave their allocations to process exit by design.
+#            Prints "valgrind: N passed, N failed" (one per module run).
+# USAGE:     tools/valgrind_modules.sh    (after make)
+# COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+############################################################################
+set -uo pipefail
+. "$(dirname "$0")/grass_env.sh"
+sbrt_location "$(mktemp -d /tmp/r3sbrt_valgrind.XXXXXX)"
+cat >"$SBRT_GISDBASE/valgrind_job.sh" <<'EOS'
+set -uo pipefail
+tools=$1
+"$tools/make_geomodel.sh" T geo >/dev/null
+printf '1|525|1225|a\n2|1475|1975|b\n' | v.in.ascii --q input=- output=wells separator=pipe \
+    columns="cat int, x double precision, y double precision, name varchar(8)" x=2 y=3 cat=1
+printf 'L 3\n 100 300\n 1000 1500\n 1900 1000\n' | v.in.ascii --q -n input=- output=fence format=standard
+r.mapcalc --q expression="tex = col() * 5"
+r.colors --q map=tex color=grey
+memcheck() { # name module options...
+    local name=$1; shift
+    if valgrind --tool=memcheck --error-exitcode=99 --leak-check=no --track-origins=yes \
+        --log-file="$(g.gisenv get=GISDBASE)/vg_$name.log" "$(command -v "$1")" "${@:2}" \
+        >/dev/null 2>&1; then
+        echo "valgrind $name: clean"
+        return 0
+    fi
+    echo "valgrind $name: FAILED"
+    grep -A12 -E "Invalid|uninitialised|Mismatched|free\(\)" \
+        "$(g.gisenv get=GISDBASE)/vg_$name.log" | head -30
+    return 1
+}
+passed=0 failed=0
+count() { if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); fi; }
+count memcheck convert r3.sbrt.convert input=geo output=geo
+count memcheck convert_back r3.sbrt.convert -r input=geo output=geo_back
+g.region --q rows=48 cols=64
+count memcheck render r3.sbrt.render input=geo output=img material=m depth=d \
+    hit_elevation=z backend=cpu normals=kernel kernel=5 smooth=1 png=/tmp/r3sbrt_vg.png
+count memcheck render_strata r3.sbrt.render input=geo output=img backend=cpu \
+    hide=13 opacity=12:0.5 plane=0,0,300,0,0,1 section=0,1200,2000,1500 texture=tex
+count memcheck render_boreholes r3.sbrt.render input=geo output=img backend=cpu \
+    boreholes=wells borehole_radius=30 -b -m log_top=cat log_bottom=cat log_class=cat
+count memcheck render_fence r3.sbrt.render input=geo output=img backend=cpu fence=fence
+echo "valgrind: $passed passed, $failed failed"
+EOS
+in_grass PERMANENT bash "$SBRT_GISDBASE/valgrind_job.sh" "$SBRT_ROOT/tools" 2>&1 | grep -E "^valgrind|Invalid|uninit|^==|at 0x|by 0x" 
