@@ -3,7 +3,8 @@
 # MODULE:    tools/run_tests.sh (r3.sbrt addon)
 # PURPOSE:   Runs every test: the C++ unit tests of lib/sbrt (also under
 #            ASan+UBSan), the fuzz target of the SBRT reader (FUZZ_SECONDS,
-#            default 60), and each gunittest file of testsuite/ in its own
+#            default 60), both modules under valgrind on a small model, and
+#            each gunittest file of testsuite/ in its own
 #            fresh mapset; ends with the line "N passed, N failed" (test
 #            cases, all kinds together)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
@@ -58,7 +59,16 @@ else
     echo "fuzz (SBRT reader): failed (log $log/fuzz.log)"
 fi
 
-# 4. gunittest files, each in a fresh mapset of a throw-away location
+# 4. both modules under valgrind's memcheck on a small model: one test a run
+tools/valgrind_modules.sh >"$log/valgrind.log" 2>&1
+p=$(sed -n 's/^valgrind: \([0-9]*\) passed.*/\1/p' "$log/valgrind.log")
+f=$(sed -n 's/^valgrind: [0-9]* passed, \([0-9]*\) failed/\1/p' "$log/valgrind.log")
+[ -z "$p" ] && { p=0; f=1; tail -20 "$log/valgrind.log"; }
+[ "${f:-0}" -gt 0 ] && grep -v "clean$" "$log/valgrind.log" | head -30
+passed=$((passed + p)); failed=$((failed + ${f:-0}))
+echo "modules under valgrind: $p passed, ${f:-0} failed"
+
+# 5. gunittest files, each in a fresh mapset of a throw-away location
 sbrt_location "$log/grassdata"
 for test in testsuite/test_*.py; do
     name=$(basename "$test" .py)

@@ -14,6 +14,7 @@ packages=(
     libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
     libgtest-dev                     # unit tests
     clang libclang-rt-14-dev         # libFuzzer and the sanitizers' runtimes
+    valgrind                         # memcheck of the modules
 )
 missing=()
 for p in "${packages[@]}"; do
