@@ -84,14 +84,12 @@ void main()
     float x = (float(pixel.x) + 0.5) / float(image_cols) * 2.0 - 1.0;
     float y = 1.0 - (float(row) + 0.5) / float(image_rows) * 2.0;
 
-    vec3 hi = origin_hi.xyz, lo = origin_lo.xyz, d;
-    if (options.x == 1u) {
-        lo += x * du.xyz + y * dv.xyz;
-        d = forward.xyz;
-    }
-    else {
-        d = forward.xyz + x * du.xyz + y * dv.xyz;
-    }
+    // rays pass through base + x spread_u + y spread_v, near the model,
+    // and start at t_min (the eye): a far camera keeps its precision
+    vec3 offset = x * spread_u.xyz + y * spread_v.xyz;
+    vec3 hi = origin_hi.xyz, lo = origin_lo.xyz + offset;
+    vec3 d = forward.xyz + x * du.xyz + y * dv.xyz;
+    float t_min = spread_u.w;
     finish(index, vec3(0.0), 0u);
 
     // 1. slab clip to [0, cols] x [0, rows] x [0, z_max], without a loop
@@ -104,7 +102,6 @@ void main()
     uint wall = near_axis >= 0 ? entry_face(near_axis, d[near_axis]) : FACE_NONE;
     // clip planes (unrolled by the count, not a loop over a budget):
     // f(t) = a + b t <= 0 is kept
-    vec3 offset = lo - origin_lo.xyz; // x du + y dv for parallel rays
     for (uint k = 0u; k < counts.x; ++k) {
         float a = planes[k].w + dot(planes[k].xyz, offset);
         float b = dot(planes[k].xyz, d);
@@ -122,8 +119,8 @@ void main()
             wall = FACE_PLANE | k << 4;
         }
     }
-    if (t_near < 0.0) {
-        t_near = 0.0; // the camera is inside the box
+    if (t_near < t_min) {
+        t_near = t_min; // the camera is inside the box
         wall = FACE_NONE;
     }
     if (!(t_near <= t_far) || box.x <= 0.0)

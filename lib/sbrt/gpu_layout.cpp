@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "gpu_layout.hpp"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 #include "error.hpp"
@@ -27,13 +29,31 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
 {
     const Frame &f = tracer.model().frame();
     GpuView view{};
-    const glm::dvec3 origin = tracer.to_local(camera.origin());
+    // rays are re-based on the plane through the model's centre across the
+    // view: a camera far away keeps its precision (float directions and
+    // distances would lose the model); the eye is at t = -s
+    const glm::dvec3 eye = tracer.to_local(camera.origin());
+    const glm::dvec3 forward = tracer.local_direction(camera.forward());
+    const glm::dvec3 du = tracer.local_direction(camera.du());
+    const glm::dvec3 dv = tracer.local_direction(camera.dv());
+    const glm::dvec3 centre = tracer.to_local(tracer.centre());
+    const double s = std::max(0.0, glm::dot(centre - eye, forward) / glm::dot(forward, forward));
+    const glm::dvec3 origin = eye + s * forward;
     const glm::dvec3 hi = glm::dvec3(glm::vec3(origin));
     put(view.origin_hi, hi);
     put(view.origin_lo, origin - hi);
-    put(view.forward, tracer.local_direction(camera.forward()));
-    put(view.du, tracer.local_direction(camera.du()));
-    put(view.dv, tracer.local_direction(camera.dv()));
+    put(view.forward, forward);
+    if (camera.parallel()) {
+        put(view.spread_u, du);
+        put(view.spread_v, dv);
+    }
+    else {
+        put(view.du, du);
+        put(view.dv, dv);
+        put(view.spread_u, s * du);
+        put(view.spread_v, s * dv);
+    }
+    view.spread_u[3] = float(-s);
     view.grid[0] = uint32_t(f.cols);
     view.grid[1] = uint32_t(f.rows);
     view.grid[2] = uint32_t(camera.cols());
@@ -43,8 +63,8 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
         view.box[1 + a] = float(tracer.voxel_size()[a]);
     view.options[0] = camera.parallel() ? 1 : 0;
     view.options[1] = loop_budget;
-    // each plane's value at the camera origin, in double: the shader adds
-    // only what varies per ray
+    // each plane's value at the base, in double: the shader adds only what
+    // varies per ray
     const std::vector<Tracer::LocalPlane> &planes = tracer.planes();
     for (size_t k = 0; k < planes.size(); ++k) {
         put(view.planes[k], planes[k].n);

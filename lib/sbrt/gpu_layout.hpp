@@ -25,17 +25,19 @@ struct GpuView {
     float forward[4];
     float du[4];
     float dv[4];
+    float spread_u[4];   ///< w: t where the rays start
+    float spread_v[4];
     uint32_t grid[4];    ///< model cols, rows; image cols, rows
     float box[4];        ///< x: highest interval top, local z; yzw: voxel size
     uint32_t options[4]; ///< parallel rays, loop budget, first row, rows
     float planes[MAX_CLIP_PLANES][4]; ///< local n, value at the origin
     uint32_t counts[4];  ///< x: clip planes
 };
-static_assert(sizeof(GpuView) == 272, "std140 View block");
-static_assert(offsetof(GpuView, planes) == 128, "std140 View block");
-static_assert(offsetof(GpuView, counts) == 256, "std140 View block");
-static_assert(offsetof(GpuView, grid) == 80, "std140 View block");
-static_assert(offsetof(GpuView, options) == 112, "std140 View block");
+static_assert(sizeof(GpuView) == 304, "std140 View block");
+static_assert(offsetof(GpuView, planes) == 160, "std140 View block");
+static_assert(offsetof(GpuView, counts) == 288, "std140 View block");
+static_assert(offsetof(GpuView, grid) == 112, "std140 View block");
+static_assert(offsetof(GpuView, options) == 144, "std140 View block");
 
 /// `struct Interval` (std430) is the model's own Interval.
 static_assert(sizeof(Interval) == 8 && offsetof(Interval, material) == 0 &&

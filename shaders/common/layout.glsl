@@ -4,24 +4,28 @@
 // west edge, y in cells from the south edge, z in tb_res steps from the
 // bottom, vertical exaggeration applied.
 
-// The view: per pixel (x, y) in normalised device coordinates, a
-// perspective ray starts at the origin along forward + x du + y dv, a
-// parallel one starts at origin + x du + y dv along forward. The origin
-// is split into a high and a low float (origin = hi + lo) so that
-// distances to cell walls keep their precision far from the model.
+// The view: per pixel (x, y) in normalised device coordinates, a ray
+// passes through base + x spread_u + y spread_v (base = hi + lo, a point
+// near the model) along forward + x du + y dv (du = dv = 0 for parallel
+// rays), and starts at t = spread_u.w (the eye; 0 where the camera is
+// near). Starting from near the model keeps the precision of a camera far
+// away; the base is split into a high and a low float so that distances
+// to cell walls keep theirs far from the origin of the map.
 layout(std140, binding = 0) uniform View {
-    vec4 origin_hi;     // xyz
-    vec4 origin_lo;     // xyz
+    vec4 origin_hi;     // xyz: base, high part
+    vec4 origin_lo;     // xyz: base, low part
     vec4 forward;       // xyz
-    vec4 du;            // xyz
-    vec4 dv;            // xyz
+    vec4 du;            // xyz: direction per unit of x
+    vec4 dv;            // xyz: direction per unit of y
+    vec4 spread_u;      // xyz: base per unit of x; w: t where rays start
+    vec4 spread_v;      // xyz: base per unit of y
     uvec4 grid;         // cols, rows of the model; image cols, rows
     vec4 box;           // x: highest interval top (local z); yzw: size of
                         // a local unit in exaggerated map units
     uvec4 options;      // x: 1 = parallel rays, y: loop budget,
                         // z: first image row of this dispatch, w: its rows
-    vec4 planes[8];     // clip planes: xyz normal n (local), w: n . origin + c;
-                        // kept where n . (x - origin) + w <= 0
+    vec4 planes[8];     // clip planes: xyz normal n (local), w: n . base + c;
+                        // kept where n . (x - base) + w <= 0
     uvec4 counts;       // x: clip planes
 };
 

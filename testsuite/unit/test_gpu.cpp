@@ -16,92 +16,13 @@
 #include "error.hpp"
 #include "gpu_tracer.hpp"
 #include "hidden_materials.hpp"
+#include "gpu_compare.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;
+using namespace sbrt_test;
 
 namespace {
-
-/// One GL context for every test of a suite (each backend once).
-std::unique_ptr<sbrt_gl::GlContext> make_context(const char *backend)
-{
-    try {
-        return sbrt_gl::create_gl_context(backend);
-    }
-    catch (const Error &e) {
-        ADD_FAILURE() << "no GL context (" << backend << "): " << e.what();
-        return nullptr;
-    }
-}
-
-/// Pixels agree when both rays hit the same material at depths within
-/// `depth_tolerance` map units, or both miss.
-struct Agreement {
-    size_t pixels = 0, hits = 0, same_material = 0, agreeing = 0;
-};
-
-/// GPU hits against the CPU tracer's on one camera.
-Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
-                  const Camera &camera, double depth_tolerance,
-                  size_t *over_budget, uint32_t budget)
-{
-    const std::vector<Hit> want = trace_image(tracer, camera, 2);
-    const std::vector<Hit> got = gpu.trace_image(camera, 2, budget);
-    if (over_budget)
-        *over_budget = gpu.stats().over_budget;
-    Agreement a;
-    a.pixels = want.size();
-    for (size_t i = 0; i < want.size(); ++i) {
-        a.hits += want[i].is_hit();
-        if (want[i].material != got[i].material)
-            continue;
-        ++a.same_material;
-        a.agreeing += !want[i].is_hit() ||
-                      std::fabs(want[i].t - got[i].t) < depth_tolerance;
-    }
-    return a;
-}
-
-/// The same with the issue's tolerance: 1e-4 of the model's size.
-Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
-                  const Camera &camera, size_t *over_budget = nullptr,
-                  uint32_t budget = GPU_LOOP_BUDGET)
-{
-    return compare(gpu, tracer, camera, 1e-4 * 2 * tracer.radius(), over_budget,
-                   budget);
-}
-
-/// A layered model with folds, a cave and a hole through it (unit cells).
-Model geology(int rows, int cols, int depths)
-{
-    sbrt_test::Voxels v;
-    v.frame.rows = rows;
-    v.frame.cols = cols;
-    v.frame.depths = depths;
-    v.frame.west = 612000.5;   // UTM-sized coordinates: float would lose them
-    v.frame.east = v.frame.west + cols * 25.0;
-    v.frame.south = 4312000.25;
-    v.frame.north = v.frame.south + rows * 25.0;
-    v.frame.bottom = -300;
-    v.frame.top = -300 + depths * 4.0;
-    v.classes.assign(v.frame.voxels(), NULL_CLASS);
-    for (int r = 0; r < rows; ++r)
-        for (int c = 0; c < cols; ++c) {
-            const double surface =
-                depths * (0.7 + 0.2 * std::sin(c * 0.21) * std::cos(r * 0.17));
-            for (int z = 0; z < depths && z < surface; ++z) {
-                const double fold = z + 3 * std::sin((c + 2 * r) * 0.15);
-                int32_t id = 1 + int(std::floor(fold / 3)) % 7;
-                const bool cave = std::hypot(c - cols / 2.0, z - depths / 3.0) < 4 &&
-                                  r > rows / 4;
-                const bool hole = std::abs(r - rows / 3) < 2 && std::abs(c - cols / 4) < 2;
-                if (cave || hole)
-                    id = NULL_CLASS;
-                v.classes[(size_t(z) * rows + r) * cols + c] = id;
-            }
-        }
-    return sbrt_test::build_model(v);
-}
 
 class Gpu : public ::testing::TestWithParam<const char *> {
 protected:
@@ -120,14 +41,6 @@ INSTANTIATE_TEST_SUITE_P(Backends, Gpu,
                                            , "osmesa"
 #endif
                                            ));
-
-/// The agreement of the issue: >= 99.9 % of the pixels see the same
-/// material at the same depth (within 1e-4 of the model's size).
-void expect_agreement(const Agreement &a, const char *view)
-{
-    EXPECT_GE(a.agreeing, a.pixels - a.pixels / 1000)
-        << view << ": " << a.agreeing << " of " << a.pixels;
-}
 
 } // namespace
 
@@ -158,6 +71,8 @@ TEST_P(Gpu, BlockLayoutMatchesTheShader)
     EXPECT_EQ(offset_of(GL_UNIFORM, "origin_hi"), int(offsetof(GpuView, origin_hi)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "origin_lo"), int(offsetof(GpuView, origin_lo)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "forward"), int(offsetof(GpuView, forward)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "spread_u"), int(offsetof(GpuView, spread_u)));
+    EXPECT_EQ(offset_of(GL_UNIFORM, "spread_v"), int(offsetof(GpuView, spread_v)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "du"), int(offsetof(GpuView, du)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "dv"), int(offsetof(GpuView, dv)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "grid"), int(offsetof(GpuView, grid)));

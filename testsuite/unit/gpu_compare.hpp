@@ -1,0 +1,121 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   What the GPU tests share: a GL context, the agreement of GPU
+ *            hits with the CPU tracer's, a folded and faulted test model
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_TEST_GPU_COMPARE_HPP
+#define SBRT_TEST_GPU_COMPARE_HPP
+
+#include <cmath>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "cpu_tracing.hpp"
+#include "error.hpp"
+#include "gpu_tracer.hpp"
+#include "test_support.hpp"
+
+namespace sbrt_test {
+
+using namespace sbrt;
+
+/// One GL context for every test of a suite (each backend once).
+inline std::unique_ptr<sbrt_gl::GlContext> make_context(const char *backend)
+{
+    try {
+        return sbrt_gl::create_gl_context(backend);
+    }
+    catch (const Error &e) {
+        ADD_FAILURE() << "no GL context (" << backend << "): " << e.what();
+        return nullptr;
+    }
+}
+
+/// Pixels agree when both rays hit the same material at depths within
+/// `depth_tolerance` map units, or both miss.
+struct Agreement {
+    size_t pixels = 0, hits = 0, same_material = 0, agreeing = 0;
+};
+
+/// GPU hits against the CPU tracer's on one camera.
+inline Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
+                         const Camera &camera, double depth_tolerance,
+                  size_t *over_budget, uint32_t budget)
+{
+    const std::vector<Hit> want = trace_image(tracer, camera, 2);
+    const std::vector<Hit> got = gpu.trace_image(camera, 2, budget);
+    if (over_budget)
+        *over_budget = gpu.stats().over_budget;
+    Agreement a;
+    a.pixels = want.size();
+    for (size_t i = 0; i < want.size(); ++i) {
+        a.hits += want[i].is_hit();
+        if (want[i].material != got[i].material)
+            continue;
+        ++a.same_material;
+        a.agreeing += !want[i].is_hit() ||
+                      std::fabs(want[i].t - got[i].t) < depth_tolerance;
+    }
+    return a;
+}
+
+/// The same with the issue's tolerance: 1e-4 of the model's size.
+inline Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
+                         const Camera &camera, size_t *over_budget = nullptr,
+                  uint32_t budget = GPU_LOOP_BUDGET)
+{
+    return compare(gpu, tracer, camera, 1e-4 * 2 * tracer.radius(), over_budget,
+                   budget);
+}
+
+/// Where and how large the cells of geology() are.
+struct Placement {
+    double west = 612000.5, south = 4312000.25; // UTM-sized: float would lose them
+    double cell = 25, tb = 4, bottom = -300;
+};
+
+/// A layered model with folds, a cave and a hole through it.
+inline Model geology(int rows, int cols, int depths, Placement at = {})
+{
+    Voxels v;
+    v.frame.rows = rows;
+    v.frame.cols = cols;
+    v.frame.depths = depths;
+    v.frame.west = at.west;
+    v.frame.east = at.west + cols * at.cell;
+    v.frame.south = at.south;
+    v.frame.north = at.south + rows * at.cell;
+    v.frame.bottom = at.bottom;
+    v.frame.top = at.bottom + depths * at.tb;
+    v.classes.assign(v.frame.voxels(), NULL_CLASS);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            const double surface =
+                depths * (0.7 + 0.2 * std::sin(c * 0.21) * std::cos(r * 0.17));
+            for (int z = 0; z < depths && z < surface; ++z) {
+                const double fold = z + 3 * std::sin((c + 2 * r) * 0.15);
+                int32_t id = 1 + int(std::floor(fold / 3)) % 7;
+                const bool cave = std::hypot(c - cols / 2.0, z - depths / 3.0) < 4 &&
+                                  r > rows / 4;
+                const bool hole = std::abs(r - rows / 3) < 2 && std::abs(c - cols / 4) < 2;
+                if (cave || hole)
+                    id = NULL_CLASS;
+                v.classes[(size_t(z) * rows + r) * cols + c] = id;
+            }
+        }
+    return build_model(v);
+}
+
+/// The agreement of the issue: >= 99.9 % of the pixels see the same
+/// material at the same depth (within 1e-4 of the model's size).
+inline void expect_agreement(const Agreement &a, const char *view)
+{
+    EXPECT_GE(a.agreeing, a.pixels - a.pixels / 1000)
+        << view << ": " << a.agreeing << " of " << a.pixels;
+}
+
+} // namespace sbrt_test
+
+#endif
