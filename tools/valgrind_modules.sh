@@ -24,15 +24,22 @@ r.mapcalc --q expression="tex = col() * 5"
 r.colors --q map=tex color=grey
 memcheck() { # name module options...
     local name=$1; shift
-    if valgrind --tool=memcheck --error-exitcode=99 --leak-check=no --track-origins=yes \
-        --log-file="$(g.gisenv get=GISDBASE)/vg_$name.log" "$(command -v "$1")" "${@:2}" \
-        >/dev/null 2>&1; then
+    local log_file
+    log_file="$(g.gisenv get=GISDBASE)/vg_$name.log"
+    valgrind --tool=memcheck --error-exitcode=99 --leak-check=no --track-origins=yes \
+        --log-file="$log_file" "$(command -v "$1")" "${@:2}" >"$log_file.out" 2>&1
+    local rc=$?
+    if [ "$rc" -eq 0 ]; then
         echo "valgrind $name: clean"
         return 0
     fi
-    echo "valgrind $name: FAILED"
-    grep -A12 -E "Invalid|uninitialised|Mismatched|free\(\)" \
-        "$(g.gisenv get=GISDBASE)/vg_$name.log" | head -30
+    if [ "$rc" -eq 99 ]; then
+        echo "valgrind $name: FAILED (memory errors)"
+        grep -A12 -E "Invalid|uninitialised|Mismatched|free\(\)" "$log_file" | head -30
+    else
+        echo "valgrind $name: FAILED (the module exited with $rc)"
+        tail -5 "$log_file.out"
+    fi
     return 1
 }
 passed=0 failed=0
@@ -41,7 +48,7 @@ count memcheck convert r3.sbrt.convert input=geo output=geo
 count memcheck convert_back r3.sbrt.convert -r input=geo output=geo_back
 g.region --q rows=48 cols=64
 count memcheck render r3.sbrt.render input=geo output=img material=m depth=d \
-    hit_elevation=z backend=cpu normals=kernel kernel=5 smooth=1 png=/tmp/r3sbrt_vg.png
+    hit_elevation=z backend=cpu normals=kernel kernel=5 smooth=1 png="$(g.gisenv get=GISDBASE)/vg.png"
 count memcheck render_strata r3.sbrt.render input=geo output=img backend=cpu \
     hide=13 opacity=12:0.5 plane=0,0,300,0,0,1 section=0,1200,2000,1500 texture=tex
 count memcheck render_boreholes r3.sbrt.render input=geo output=img backend=cpu \
@@ -49,4 +56,5 @@ count memcheck render_boreholes r3.sbrt.render input=geo output=img backend=cpu 
 count memcheck render_fence r3.sbrt.render input=geo output=img backend=cpu fence=fence
 echo "valgrind: $passed passed, $failed failed"
 EOS
-in_grass PERMANENT bash "$SBRT_GISDBASE/valgrind_job.sh" "$SBRT_ROOT/tools" 2>&1 | grep -E "^valgrind|Invalid|uninit|^==|at 0x|by 0x" 
+in_grass PERMANENT bash "$SBRT_GISDBASE/valgrind_job.sh" "$SBRT_ROOT/tools" 2>&1 |
+    grep -vE "^(Starting|Cleaning|Executing|Execution) "
