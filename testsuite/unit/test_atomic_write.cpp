@@ -63,14 +63,17 @@ TEST(AtomicWrite, SigkillAtAnyMomentLeavesOldOrNewReadable)
     const auto new_bytes = encode_stacks(new_model);
     write_sbrt(dir, old_model, "old\n");
     int saw_new = 0;
-    for (int trial = 0; trial < 24; ++trial) {
+    // kills from 0.3 ms on; where no write got through (a slow machine, a
+    // sanitizer build), on with doubling delays up to seconds
+    for (int trial = 0; trial < 24 || (saw_new == 0 && trial < 36); ++trial) {
         const pid_t child = fork();
         ASSERT_GE(child, 0);
         if (child == 0) {
             for (;;)
                 write_sbrt(dir, trial % 2 ? new_model : old_model, "x\n");
         }
-        std::this_thread::sleep_for(std::chrono::microseconds(300 + trial * 997));
+        const long delay_us = trial < 24 ? 300 + trial * 997 : 25000L << ((trial - 24) / 2);
+        std::this_thread::sleep_for(std::chrono::microseconds(delay_us));
         kill(child, SIGKILL);
         waitpid(child, nullptr, 0);
         const auto got = encode_stacks(read_sbrt(dir));
