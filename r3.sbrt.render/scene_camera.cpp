@@ -51,11 +51,21 @@ sbrt::Camera make_camera(const RenderRequest &r, const sbrt::Tracer &tracer,
 {
     const int rows = region.rows, cols = region.cols;
     const double radius = tracer.radius();
-    if (r.view == "top")
+    if (r.view == "top") {
+        const sbrt::Frame &f = tracer.model().frame();
+        if (!(region.west < f.east && region.east > f.west && region.south < f.north &&
+              region.north > f.south))
+            G_fatal_error(_("view=top: the current region (n=%f s=%f e=%f w=%f) "
+                            "does not overlap SBRT <%s> (n=%f s=%f e=%f w=%f); "
+                            "set it with g.region (e.g. raster_3d= of the "
+                            "source map)"),
+                          region.north, region.south, region.east, region.west,
+                          r.input.c_str(), f.north, f.south, f.east, f.west);
         return sbrt::Camera::top(region.north, region.south, region.east,
                                  region.west,
                                  tracer.centre().z + 2 * radius + 1, rows,
                                  cols);
+    }
 
     const glm::dvec3 target =
         r.target ? tracer.exaggerate(*r.target) : tracer.centre();

@@ -290,6 +290,11 @@ class TestRenderTopView(TestCase):
         self.assertModuleFail("r3.sbrt.render", input="geo", output="bad", fov=0)
         self.assertModuleFail("r3.sbrt.render", input="geo", output="bad", fov=180)
         self.assertModuleFail("r3.sbrt.render", input="geo", output="bad", zexag=0)
+        # a top view of a region away from the model: an error, not a blank map
+        self.runModule("g.region", n=9000, s=8000, e=9000, w=8000, res=100)
+        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad", view="top")
+        self.assertRasterDoesNotExist("bad.red")
+        self.runModule("g.region", region="geo_region")
 
     def test_missing_and_corrupt_sbrt_fail(self):
         self.assertModuleFail("r3.sbrt.render", input="nosuch", output="bad")
