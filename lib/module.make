@@ -18,26 +18,27 @@ EXTRA_INC += $(VECT_INC)
 EXTRA_CFLAGS += $(VECT_CFLAGS)
 endif
 EXTRA_HEADERS = $(wildcard $(SBRT_DIR)/*.hpp $(GRASS_SBRT_DIR)/*.hpp *.hpp)
+# the static libraries (recursive: OBJDIR comes from Grass.make); the GL
+# library (lib/sbrt_gl) comes before the core library it uses
+SBRT_STLIBS = $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/$(OBJDIR)/libsbrt.a
 ifdef SBRT_USES_GL
 include ../lib/gl_config.make
 SBRT_GL_DIR = ../lib/sbrt_gl
 EXTRA_INC += -I$(SBRT_GL_DIR)
 EXTRA_HEADERS += $(wildcard $(SBRT_GL_DIR)/*.hpp)
+SBRT_STLIBS = $(SBRT_GL_DIR)/$(OBJDIR)/libsbrt_gl.a \
+              $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/$(OBJDIR)/libsbrt.a
 endif
+# a changed library relinks the module
+DEPENDENCIES += $(SBRT_STLIBS)
 
-# before the include: the compile rules take their prerequisites from
-# EXTRA_HEADERS when they are defined
+# before the include: the compile and link rules take their prerequisites
+# from EXTRA_HEADERS and DEPENDENCIES when they are defined
 include $(MODULE_TOPDIR)/include/Make/Module.make
 
 # After the include: Vars.make/Compile.make reset LINK = $(CC).
 LINK = $(CXX)
 CXXFLAGS += -std=c++17 -Wall -Wextra -O2 -pthread
-SBRT_STLIBS = $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/$(OBJDIR)/libsbrt.a
-ifdef SBRT_USES_GL
-# the GL library (lib/sbrt_gl) comes before the core library it uses
-SBRT_STLIBS := $(SBRT_GL_DIR)/$(OBJDIR)/libsbrt_gl.a $(SBRT_STLIBS)
-endif
 LIBES := $(SBRT_STLIBS) $(LIBES) $(SBRT_GL_LIBS) $(ZLIB) -pthread
-DEPENDENCIES += $(SBRT_STLIBS)
 
 default: cmd

@@ -192,6 +192,26 @@ class TestConvertRulesAndErrors(TestCase):
         self.assertModuleFail("r3.sbrt.convert", input="allnull", output="x")
         self.assertModuleFail("r3.sbrt.convert", flags="r", input="nosuch", output="x")
 
+    def test_infinite_values_and_too_many_classes_fail(self):
+        self.runModule("r3.mapcalc", expression="infs = if(depth() == 2, exp(1000.0), 1.0)",
+                       overwrite=True)
+        run = subprocess.run(["r3.sbrt.convert", "input=infs", "output=infs"],
+                             capture_output=True, text=True)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("inf", run.stderr)
+        self.assertFalse(os.path.exists(sbrt_dir("infs")))
+        # 70,000 distinct values: more classes than an SBRT holds
+        self.runModule("g.region", n=100, s=0, e=70, w=0, b=0, t=10, res=1, res3=1, tbres=1)
+        self.runModule("r3.mapcalc", overwrite=True,
+                       expression="many = row() * 1000 + col() * 10 + depth()")
+        run = subprocess.run(["r3.sbrt.convert", "input=many", "output=many"],
+                             capture_output=True, text=True)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("65535", run.stderr)
+        self.assertIn("rules=", run.stderr)
+        self.assertFalse(os.path.exists(sbrt_dir("many")))
+        self.runModule("g.region", n=5, s=0, e=5, w=0, b=0, t=4, res=1, res3=1, tbres=1)
+
     def test_corrupt_sbrt_fails_clearly(self):
         self.runModule("r3.mapcalc", expression="ones = 1", overwrite=True)
         self.assertModule("r3.sbrt.convert", input="ones", output="broken")

@@ -22,8 +22,9 @@ uint32_t VoxelStackBuilder::material_of(int32_t id)
     if (found != material_of_class_.end())
         return found->second;
     if (class_of_material_.size() >= MAX_MATERIALS)
-        fail("VoxelStackBuilder: more than ", MAX_MATERIALS - 1,
-             " distinct classes (class ", id, ")");
+        fail("more than ", MAX_MATERIALS - 1, " distinct classes (at class ", id,
+             "): an SBRT holds at most ", MAX_MATERIALS - 1,
+             "; group the values into classes (r3.sbrt.convert rules=)");
     const uint32_t index = uint32_t(class_of_material_.size());
     class_of_material_.push_back(id);
     material_of_class_.emplace(id, index);
