@@ -106,4 +106,19 @@ Ray Camera::ray(int row, int col) const
     return {origin_, glm::normalize(forward_ + du_ * x + dv_ * y)};
 }
 
+bool Camera::project(glm::dvec3 p, double &x, double &y) const
+{
+    // forward is unit length; du and dv are orthogonal to it and each other
+    const glm::dvec3 v = p - origin_;
+    double scale = 1;
+    if (kind_ == Kind::perspective) {
+        scale = glm::dot(v, forward_);
+        if (!(scale > 0))
+            return false;
+    }
+    x = glm::dot(v, du_) / (scale * glm::dot(du_, du_));
+    y = glm::dot(v, dv_) / (scale * glm::dot(dv_, dv_));
+    return std::isfinite(x) && std::isfinite(y);
+}
+
 } // namespace sbrt

@@ -43,6 +43,9 @@ public:
                       double above, int rows, int cols);
 
     Ray ray(int row, int col) const;
+    /// Normalised device coordinates (x, y) of the ray through point p;
+    /// false where p is not in front of a perspective camera.
+    bool project(glm::dvec3 p, double &x, double &y) const;
     int rows() const { return rows_; }
     int cols() const { return cols_; }
     bool parallel() const { return kind_ != Kind::perspective; }

@@ -5,18 +5,62 @@
  ****************************************************************************/
 #include "cpu_tracing.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "parallel.hpp"
 
 namespace sbrt {
+
+namespace {
+
+/// Pixels whose rays may hit something: all of them, or, where the tracer
+/// draws only overlays, those the projections of their boxes cover.
+std::vector<uint8_t> pixels_to_trace(const Tracer &tracer, const Camera &camera)
+{
+    const int rows = camera.rows(), cols = camera.cols();
+    const auto boxes = tracer.overlay_bounds();
+    std::vector<uint8_t> mask(size_t(rows) * cols, boxes.empty() ? 1 : 0);
+    for (const auto &box : boxes) {
+        double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 p(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z);
+            double x, y;
+            if (!camera.project(p, x, y)) {
+                std::fill(mask.begin(), mask.end(), 1); // the camera is among them
+                return mask;
+            }
+            x0 = std::min(x0, x);
+            x1 = std::max(x1, x);
+            y0 = std::min(y0, y);
+            y1 = std::max(y1, y);
+        }
+        // pixel centres at ((c + 0.5) / cols * 2 - 1, 1 - (r + 0.5) / rows * 2);
+        // one pixel of margin
+        const int c0 = std::max(0, int(std::floor((x0 + 1) / 2 * cols - 0.5)) - 1);
+        const int c1 = std::min(cols - 1, int(std::ceil((x1 + 1) / 2 * cols - 0.5)) + 1);
+        const int r0 = std::max(0, int(std::floor((1 - y1) / 2 * rows - 0.5)) - 1);
+        const int r1 = std::min(rows - 1, int(std::ceil((1 - y0) / 2 * rows - 0.5)) + 1);
+        for (int r = r0; r <= r1; ++r)
+            for (int c = c0; c <= c1; ++c)
+                mask[size_t(r) * cols + c] = 1;
+    }
+    return mask;
+}
+
+} // namespace
 
 std::vector<Hit> trace_image(const Tracer &tracer, const Camera &camera,
                              unsigned threads)
 {
     std::vector<Hit> hits(size_t(camera.rows()) * camera.cols());
+    const std::vector<uint8_t> mask = pixels_to_trace(tracer, camera);
     for_each_row(camera.rows(), threads, [&](int row) {
-        for (int col = 0; col < camera.cols(); ++col)
-            hits[size_t(row) * camera.cols() + col] =
-                tracer.trace(camera.ray(row, col));
+        for (int col = 0; col < camera.cols(); ++col) {
+            const size_t i = size_t(row) * camera.cols() + col;
+            if (mask[i])
+                hits[i] = tracer.trace(camera.ray(row, col));
+        }
     });
     return hits;
 }

@@ -155,6 +155,21 @@ void Tracer::index_overlays()
     }
 }
 
+std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_bounds() const
+{
+    std::vector<std::array<glm::dvec3, 2>> boxes;
+    if (scene_.draw_model)
+        return boxes;
+    const double low = corner(0).z, high = corner(7).z;
+    const double r = scene_.borehole_radius;
+    for (const Borehole &b : scene_.boreholes)
+        boxes.push_back({glm::dvec3(b.x - r, b.y - r, low), glm::dvec3(b.x + r, b.y + r, high)});
+    for (const FencePanel &p : scene_.fence)
+        boxes.push_back({glm::dvec3(glm::min(p.a, p.b), low),
+                         glm::dvec3(glm::max(p.a, p.b), high)});
+    return boxes;
+}
+
 glm::dvec3 Tracer::exaggerate(glm::dvec3 p) const
 {
     const double b = model_.frame().bottom;

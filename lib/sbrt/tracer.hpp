@@ -8,6 +8,7 @@
 #ifndef SBRT_TRACER_HPP
 #define SBRT_TRACER_HPP
 
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -92,6 +93,10 @@ public:
     /// Whether the scene holds more than the model's stacks and planes
     /// (boreholes or a fence: only this CPU tracer draws them).
     bool has_overlays() const { return !overlay_items_.empty(); }
+    /// Boxes (low, high corners; exaggerated map coordinates) that hold
+    /// everything this tracer can hit where it does not draw the model;
+    /// empty where it does.
+    std::vector<std::array<glm::dvec3, 2>> overlay_bounds() const;
 
 private:
     struct Walk;

@@ -341,3 +341,40 @@ TEST(Boreholes, ManyBoreholesWalkTheCells)
             ASSERT_EQ(got[i].material, ring ? EMPTY : want[i].material) << row << "," << col;
         }
 }
+
+TEST(Overlays, ImagesTraceOnlyWhereTheOverlaysProject)
+{
+    // without the model only the pixels the overlays' boxes cover are
+    // traced: the image equals tracing every pixel, from any camera
+    const auto v = sbrt_test::random_voxels(23, 16, 14, 20, 5);
+    const Model m = sbrt_test::build_model(v);
+    const Frame &f = m.frame();
+    Scene scene;
+    scene.borehole_radius = 0.4 * f.ew_res();
+    scene.boreholes = {borehole_at(m, f.west + 3.5 * f.ew_res(), f.south + 4.5 * f.ns_res()),
+                       borehole_at(m, f.west + 10.2 * f.ew_res(), f.south + 11.7 * f.ns_res())};
+    scene.fence = {{{f.west + 2 * f.ew_res(), f.north - 2 * f.ns_res()},
+                    {f.west + 9 * f.ew_res(), f.north - 5 * f.ns_res()}}};
+    scene.draw_model = false;
+    const Tracer tracer(m, 2.0, scene);
+    ASSERT_EQ(tracer.overlay_bounds().size(), 3u);
+    const glm::dvec3 c = tracer.centre();
+    const double size = 2 * tracer.radius();
+    size_t hits = 0;
+    for (const Camera &cam :
+         {Camera::perspective(c + glm::dvec3(0.6, -0.8, 0.5) * size, c, 40, 60, 80),
+          Camera::orthographic(c + glm::dvec3(-0.7, 0.5, 0.3) * size, c, size, 60, 80),
+          Camera::perspective(c + glm::dvec3(0.01, 0.02, 0.01) * size, c + glm::dvec3(1, 0, 0),
+                              70, 30, 40), // among the overlays
+          sbrt_test::top_camera(f, 1e3)}) {
+        const auto image = trace_image(tracer, cam, 2);
+        for (int row = 0; row < cam.rows(); ++row)
+            for (int col = 0; col < cam.cols(); ++col) {
+                const Hit want = tracer.trace(cam.ray(row, col));
+                const Hit &got = image[size_t(row) * cam.cols() + col];
+                ASSERT_EQ(got.material, want.material) << row << "," << col;
+                hits += got.is_hit();
+            }
+    }
+    EXPECT_GT(hits, 100u);
+}
