@@ -40,14 +40,36 @@ Option *define_choice(const char *key, const char *desc, const char *section,
     return o;
 }
 
-Option *define_map_output(const char *key, const char *desc)
+/// An optional GRASS standard option (G_OPT_*) under its own `key`.
+Option *define_standard(STD_OPT kind, const char *key, const char *desc,
+                        const char *section)
 {
-    Option *o = G_define_standard_option(G_OPT_R_OUTPUT);
+    Option *o = G_define_standard_option(kind);
     o->key = key;
     o->required = NO;
     o->description = desc;
-    o->guisection = _("Output");
+    o->guisection = section;
     return o;
+}
+
+Option *define_map_output(const char *key, const char *desc)
+{
+    return define_standard(G_OPT_R_OUTPUT, key, desc, _("Output"));
+}
+
+Flag *define_flag(char key, const char *desc, const char *section)
+{
+    Flag *f = G_define_flag();
+    f->key = key;
+    f->description = desc;
+    f->guisection = section;
+    return f;
+}
+
+/// The answer of an optional option, or `otherwise`.
+std::string answer_or(const Option *o, const char *otherwise = "")
+{
+    return o->answer ? o->answer : otherwise;
 }
 
 std::vector<double> read_numbers(const Option *o)
@@ -107,11 +129,8 @@ RenderOptions define_render_options()
         "hit_elevation", _("Raster map of the elevation (z) of the first hit"));
     o->depth = define_map_output(
         "depth", _("Raster map of the distance from the camera to the hit"));
-    o->png = G_define_standard_option(G_OPT_F_OUTPUT);
-    o->png->key = "png";
-    o->png->required = NO;
-    o->png->description = _("PNG file of the image too");
-    o->png->guisection = _("Output");
+    o->png = define_standard(G_OPT_F_OUTPUT, "png", _("PNG file of the image too"),
+                             _("Output"));
 
     o->view = define_choice(
         "view", _("Projection of the view"), _("Camera"), "perspective",
@@ -183,13 +202,11 @@ RenderOptions define_render_options()
     o->color->description =
         _("Colour table for the materials instead of their stored colours");
     o->color->guisection = _("Shading");
-    o->rules = G_define_standard_option(G_OPT_F_INPUT);
-    o->rules->key = "rules";
-    o->rules->required = NO;
+    o->rules = define_standard(
+        G_OPT_F_INPUT, "rules",
+        _("Lines of 'class colour', 'nv colour', 'default colour'; '-' reads stdin"),
+        _("Shading"));
     o->rules->label = _("Colour rules for the materials (as r3.colors rules=)");
-    o->rules->description =
-        _("Lines of 'class colour', 'nv colour', 'default colour'; '-' reads stdin");
-    o->rules->guisection = _("Shading");
 
     o->hide = define("hide", TYPE_STRING,
                      _("Classes not drawn: class ids or labels"), _("Strata"));
@@ -217,22 +234,18 @@ RenderOptions define_render_options()
                           "facing the camera is removed"),
                         _("Sections"));
     o->section->key_desc = "x1,y1,x2,y2";
-    o->fence = G_define_standard_option(G_OPT_V_INPUT);
-    o->fence->key = "fence";
-    o->fence->required = NO;
+    o->fence = define_standard(G_OPT_V_INPUT, "fence",
+                               _("Draws only the vertical curtains below its "
+                                 "lines (with boreholes= the cylinders too)"),
+                               _("Sections"));
     o->fence->label = _("Vector line map of a fence diagram");
-    o->fence->description = _("Draws only the vertical curtains below its lines "
-                              "(with boreholes= the cylinders too)");
-    o->fence->guisection = _("Sections");
 
-    o->boreholes = G_define_standard_option(G_OPT_V_INPUT);
-    o->boreholes->key = "boreholes";
-    o->boreholes->required = NO;
+    o->boreholes = define_standard(G_OPT_V_INPUT, "boreholes",
+                                   _("Each point is drawn as a vertical cylinder "
+                                     "showing the classes of the stack below "
+                                     "it (or its logged intervals)"),
+                                   _("Boreholes"));
     o->boreholes->label = _("Vector point map of boreholes");
-    o->boreholes->description = _("Each point is drawn as a vertical cylinder "
-                                  "showing the classes of the stack below it "
-                                  "(or its logged intervals)");
-    o->boreholes->guisection = _("Boreholes");
     o->layer = G_define_standard_option(G_OPT_V_FIELD);
     o->layer->guisection = _("Boreholes");
     o->where = G_define_standard_option(G_OPT_DB_WHERE);
@@ -241,42 +254,33 @@ RenderOptions define_render_options()
                                 _("Radius of the borehole cylinders, map units "
                                   "(default: 0.4 of the cell size)"),
                                 _("Boreholes"));
-    o->log_top = G_define_standard_option(G_OPT_DB_COLUMN);
-    o->log_top->key = "log_top";
-    o->log_top->description = _("Column of the top of each logged interval");
-    o->log_top->guisection = _("Boreholes");
-    o->log_bottom = G_define_standard_option(G_OPT_DB_COLUMN);
-    o->log_bottom->key = "log_bottom";
-    o->log_bottom->description = _("Column of the bottom of each logged interval");
-    o->log_bottom->guisection = _("Boreholes");
-    o->log_class = G_define_standard_option(G_OPT_DB_COLUMN);
-    o->log_class->key = "log_class";
-    o->log_class->description =
-        _("Column of the class of each logged interval (one row per interval)");
-    o->log_class->guisection = _("Boreholes");
+    o->log_top = define_standard(G_OPT_DB_COLUMN, "log_top",
+                                 _("Column of the top of each logged interval"),
+                                 _("Boreholes"));
+    o->log_bottom = define_standard(G_OPT_DB_COLUMN, "log_bottom",
+                                    _("Column of the bottom of each logged interval"),
+                                    _("Boreholes"));
+    o->log_class = define_standard(
+        G_OPT_DB_COLUMN, "log_class",
+        _("Column of the class of each logged interval (one row per interval)"),
+        _("Boreholes"));
     o->log_reference = define_choice(
         "log_reference", _("What log_top= and log_bottom= measure"),
         _("Boreholes"), "elevation", "elevation,depth",
         _("elevation;Elevations (map z);"
           "depth;Depths below the point's z (2D points: below the model's "
           "surface at the point)"));
-    o->boreholes_only = G_define_flag();
-    o->boreholes_only->key = 'b';
-    o->boreholes_only->description = _("Show only the boreholes, not the model");
-    o->boreholes_only->guisection = _("Boreholes");
-    o->split_logs = G_define_flag();
-    o->split_logs->key = 'm';
-    o->split_logs->description =
-        _("Split each borehole: its log on the left half, the model on the right");
-    o->split_logs->guisection = _("Boreholes");
+    o->boreholes_only =
+        define_flag('b', _("Show only the boreholes, not the model"), _("Boreholes"));
+    o->split_logs = define_flag(
+        'm', _("Split each borehole: its log on the left half, the model on the right"),
+        _("Boreholes"));
 
-    o->texture = G_define_standard_option(G_OPT_R_INPUTS);
-    o->texture->key = "texture";
-    o->texture->required = NO;
+    o->texture = define_standard(
+        G_OPT_R_INPUTS, "texture",
+        _("One map with a colour table, or three maps red,green,blue (0-255)"),
+        _("Drape"));
     o->texture->label = _("Raster map(s) draped on the terrain surface");
-    o->texture->description =
-        _("One map with a colour table, or three maps red,green,blue (0-255)");
-    o->texture->guisection = _("Drape");
     o->texture_blend = define("texture_blend", TYPE_DOUBLE,
                               _("Share of the texture in the surface colour "
                                 "(0: class colours, 1: texture only)"),
@@ -309,10 +313,10 @@ RenderRequest read_render_options(const RenderOptions &options)
     RenderRequest r;
     r.input = o->input->answer;
     r.output = o->output->answer;
-    r.material = o->material->answer ? o->material->answer : "";
-    r.hit_elevation = o->hit_elevation->answer ? o->hit_elevation->answer : "";
-    r.depth = o->depth->answer ? o->depth->answer : "";
-    r.png = o->png->answer ? o->png->answer : "";
+    r.material = answer_or(o->material);
+    r.hit_elevation = answer_or(o->hit_elevation);
+    r.depth = answer_or(o->depth);
+    r.png = answer_or(o->png);
     r.view = o->view->answer;
     r.position = read_point(o->position);
     r.target = read_point(o->target);
@@ -356,8 +360,8 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.smooth = read_double(o->smooth);
     if (r.smooth < 0)
         G_fatal_error(_("smooth=%g must not be negative"), r.smooth);
-    r.color = o->color->answer ? o->color->answer : "";
-    r.rules = o->rules->answer ? o->rules->answer : "";
+    r.color = answer_or(o->color);
+    r.rules = answer_or(o->rules);
     for (char **a = o->hide->answers; a && *a; ++a)
         r.hide.emplace_back(*a);
     const std::vector<double> plane = read_numbers(o->plane);
@@ -406,19 +410,19 @@ RenderRequest read_render_options(const RenderOptions &options)
         if (!(*r.opacity_length > 0))
             G_fatal_error(_("opacity_length= must be positive"));
     }
-    r.fence = o->fence->answer ? o->fence->answer : "";
-    r.boreholes = o->boreholes->answer ? o->boreholes->answer : "";
-    r.layer = o->layer->answer ? o->layer->answer : "1";
-    r.where = o->where->answer ? o->where->answer : "";
+    r.fence = answer_or(o->fence);
+    r.boreholes = answer_or(o->boreholes);
+    r.layer = answer_or(o->layer, "1");
+    r.where = answer_or(o->where);
     if (o->borehole_radius->answer) {
         r.borehole_radius = read_double(o->borehole_radius);
         if (!(*r.borehole_radius > 0))
             G_fatal_error(_("borehole_radius= must be positive"));
     }
     r.boreholes_only = o->boreholes_only->answer;
-    r.log_top = o->log_top->answer ? o->log_top->answer : "";
-    r.log_bottom = o->log_bottom->answer ? o->log_bottom->answer : "";
-    r.log_class = o->log_class->answer ? o->log_class->answer : "";
+    r.log_top = answer_or(o->log_top);
+    r.log_bottom = answer_or(o->log_bottom);
+    r.log_class = answer_or(o->log_class);
     r.log_reference = o->log_reference->answer;
     r.split_logs = o->split_logs->answer;
     for (char **a = o->texture->answers; a && *a; ++a)
