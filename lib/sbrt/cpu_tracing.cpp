@@ -14,22 +14,22 @@ namespace sbrt {
 
 namespace {
 
-/// Pixels whose rays may hit something: all of them, or, where the tracer
-/// draws only overlays, those the projections of their boxes cover.
+/// Where the tracer draws only overlays, the pixels whose rays may hit
+/// something: those the projections of their boxes cover; empty for all.
 std::vector<uint8_t> pixels_to_trace(const Tracer &tracer, const Camera &camera)
 {
     const int rows = camera.rows(), cols = camera.cols();
     const auto boxes = tracer.overlay_bounds();
-    std::vector<uint8_t> mask(size_t(rows) * cols, boxes.empty() ? 1 : 0);
+    if (boxes.empty())
+        return {};
+    std::vector<uint8_t> mask(size_t(rows) * cols, 0);
     for (const auto &box : boxes) {
         double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
         for (int k = 0; k < 8; ++k) {
             const glm::dvec3 p(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z);
             double x, y;
-            if (!camera.project(p, x, y)) {
-                std::fill(mask.begin(), mask.end(), 1); // the camera is among them
-                return mask;
-            }
+            if (!camera.project(p, x, y))
+                return {}; // the camera is among them
             x0 = std::min(x0, x);
             x1 = std::max(x1, x);
             y0 = std::min(y0, y);
@@ -58,7 +58,7 @@ std::vector<Hit> trace_image(const Tracer &tracer, const Camera &camera,
     for_each_row(camera.rows(), threads, [&](int row) {
         for (int col = 0; col < camera.cols(); ++col) {
             const size_t i = size_t(row) * camera.cols() + col;
-            if (mask[i])
+            if (mask.empty() || mask[i])
                 hits[i] = tracer.trace(camera.ray(row, col));
         }
     });

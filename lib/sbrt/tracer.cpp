@@ -114,29 +114,31 @@ Tracer::Tracer(const Model &model, double zexag, Scene scene)
 void Tracer::index_overlays()
 {
     const Frame &f = model_.frame();
-    std::vector<std::vector<uint32_t>> lists;
-    auto add = [&](const std::vector<uint64_t> &cells, uint32_t item) {
-        if (lists.empty())
-            lists.resize(f.cells());
-        for (uint64_t c : cells)
-            lists[c].push_back(item);
-    };
-    for (size_t k = 0; k < scene_.boreholes.size(); ++k) {
-        const glm::dvec2 c(scene_.boreholes[k].x, scene_.boreholes[k].y);
-        add(cells_near_segment(f, c, c, scene_.borehole_radius), uint32_t(k));
-    }
-    for (size_t k = 0; k < scene_.fence.size(); ++k)
-        add(cells_near_segment(f, scene_.fence[k].a, scene_.fence[k].b, 0),
-            uint32_t(k) | PANEL);
     box_low_ = glm::dvec2(0);
     box_high_ = glm::dvec2(f.cols, f.rows);
-    overlay_count_ = scene_.boreholes.size() + scene_.fence.size();
     for (size_t k = 0; k < scene_.boreholes.size(); ++k)
         all_overlays_.push_back(uint32_t(k));
     for (size_t k = 0; k < scene_.fence.size(); ++k)
         all_overlays_.push_back(uint32_t(k) | PANEL);
-    if (lists.empty())
+    if (all_overlays_.empty())
         return;
+    // each overlay in the lists of the cells it may touch
+    std::vector<std::vector<uint32_t>> lists(f.cells());
+    for (uint32_t item : all_overlays_) {
+        // a curtain's segment, or a borehole's axis widened by its radius
+        glm::dvec2 a, b;
+        double margin = 0;
+        if (item & PANEL) {
+            a = scene_.fence[item & ~PANEL].a;
+            b = scene_.fence[item & ~PANEL].b;
+        }
+        else {
+            a = b = glm::dvec2(scene_.boreholes[item].x, scene_.boreholes[item].y);
+            margin = scene_.borehole_radius;
+        }
+        for (uint64_t c : cells_near_segment(f, a, b, margin))
+            lists[c].push_back(item);
+    }
     if (!scene_.draw_model) {
         // rays need to cross only the cells with overlays
         box_low_ = box_high_;
@@ -498,7 +500,7 @@ Hit Tracer::trace(const Ray &ray) const
 
     // only a few overlays and no model: meet each overlay directly, no
     // walk over the cells between them
-    if (!scene_.draw_model && overlay_count_ <= DIRECT_OVERLAYS) {
+    if (!scene_.draw_model && all_overlays_.size() <= DIRECT_OVERLAYS) {
         std::vector<Event> events;
         overlay_events(all_overlays_.data(), all_overlays_.data() + all_overlays_.size(),
                        t_near, t_far, walk, events);

@@ -128,7 +128,6 @@ private:
     /// cells' lists of boreholes (index) and fence panels (index | PANEL)
     std::vector<uint32_t> overlay_offsets_, overlay_items_;
     std::vector<uint32_t> all_overlays_; ///< every overlay, coded the same
-    size_t overlay_count_ = 0;
     /// local x, y box the rays are clipped to: the grid, or only the cells
     /// with overlays where the model is not drawn
     glm::dvec2 box_low_{0}, box_high_{0};
