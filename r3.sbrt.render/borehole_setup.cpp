@@ -78,11 +78,10 @@ std::vector<sbrt::Borehole> make_boreholes(const RenderRequest &request,
                                            sbrt::Model &shown,
                                            const std::vector<uint32_t> &hidden)
 {
-    bool is_3d = false;
-    const std::vector<BoreholePoint> points = read_borehole_points(request, is_3d);
-    std::map<int, std::vector<LogRow>> logs;
-    if (!request.log_class.empty())
-        logs = read_borehole_logs(request);
+    const BoreholeInput input = read_boreholes(request);
+    const std::vector<BoreholePoint> &points = input.points;
+    const std::map<int, std::vector<LogRow>> &logs = input.logs;
+    const bool is_3d = input.is_3d;
     const sbrt::Frame &f = shown.frame();
     // with -b the cylinders are all there is, and hide= applies to them;
     // else they keep every class, to show what hide= took off the model

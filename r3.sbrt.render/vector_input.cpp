@@ -6,6 +6,7 @@
 #include "vector_input.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "grass.hpp"
 extern "C" {
@@ -103,63 +104,25 @@ bool column_number(dbTable *table, int k, const char *name, double &out)
     }
 }
 
-} // namespace
-
-std::vector<BoreholePoint> read_borehole_points(const RenderRequest &request,
-                                                bool &is_3d)
+/// The sorted categories of the table's rows that `where` selects.
+std::vector<int> selected_categories(LayerTable &table, const std::string &where)
 {
-    VectorMap vector(request.boreholes, request.layer.c_str());
-    const int layer = Vect_get_field_number(&vector.map(), request.layer.c_str());
-    is_3d = Vect_is_3d(&vector.map());
-    std::vector<int> selected; // sorted categories where= selects
-    if (!request.where.empty()) {
-        LayerTable table(vector.map(), layer, "where=");
-        int *cats = nullptr;
-        const int n = db_select_int(table.driver(), table.info().table,
-                                    table.info().key, request.where.c_str(), &cats);
-        if (n < 0)
-            G_fatal_error(_("where=%s: the query failed on table <%s>"),
-                          request.where.c_str(), table.info().table);
-        selected.assign(cats, cats + n);
-        G_free(cats);
-        std::sort(selected.begin(), selected.end());
-    }
-    std::vector<BoreholePoint> points;
-    size_t others = 0;
-    while (const int type = vector.next()) {
-        if (!(type & GV_POINTS)) {
-            others += (type & (GV_LINES | GV_FACE)) != 0;
-            continue;
-        }
-        BoreholePoint p;
-        if (!Vect_cat_get(vector.cats(), layer, &p.cat) && layer > 0)
-            continue; // not in layer=
-        if (!request.where.empty() &&
-            !std::binary_search(selected.begin(), selected.end(), p.cat))
-            continue;
-        p.x = vector.points().x[0];
-        p.y = vector.points().y[0];
-        p.z = vector.points().z[0];
-        points.push_back(p);
-    }
-    if (points.empty())
-        G_fatal_error(_("boreholes=%s has no points in layer %d%s (it holds %zu "
-                        "lines or boundaries): boreholes= needs a vector map of "
-                        "points"),
-                      request.boreholes.c_str(), layer,
-                      request.where.empty() ? "" : _(" that where= selects"), others);
-    if (others)
-        G_warning(_("boreholes=%s: %zu lines or boundaries skipped (only points "
-                    "are boreholes)"),
-                  request.boreholes.c_str(), others);
-    return points;
+    int *cats = nullptr;
+    const int n = db_select_int(table.driver(), table.info().table, table.info().key,
+                                where.c_str(), &cats);
+    if (n < 0)
+        G_fatal_error(_("where=%s: the query failed on table <%s>"), where.c_str(),
+                      table.info().table);
+    std::vector<int> selected(cats, cats + n);
+    G_free(cats);
+    std::sort(selected.begin(), selected.end());
+    return selected;
 }
 
-std::map<int, std::vector<LogRow>> read_borehole_logs(const RenderRequest &request)
+/// The rows of log_top=, log_bottom=, log_class= grouped by category.
+std::map<int, std::vector<LogRow>> logged_intervals(LayerTable &table,
+                                                    const RenderRequest &request)
 {
-    VectorMap vector(request.boreholes, request.layer.c_str());
-    const int layer = Vect_get_field_number(&vector.map(), request.layer.c_str());
-    LayerTable table(vector.map(), layer, "log_class=");
     std::string sql = std::string("SELECT ") + table.info().key + ", " +
                       request.log_top + ", " + request.log_bottom + ", " +
                       request.log_class + " FROM " + table.info().table;
@@ -199,6 +162,54 @@ std::map<int, std::vector<LogRow>> read_borehole_logs(const RenderRequest &reque
     if (incomplete)
         G_warning(_("%zu log rows with NULL values skipped"), incomplete);
     return logs;
+}
+
+} // namespace
+
+BoreholeInput read_boreholes(const RenderRequest &request)
+{
+    VectorMap vector(request.boreholes, request.layer.c_str());
+    const int layer = Vect_get_field_number(&vector.map(), request.layer.c_str());
+    BoreholeInput in;
+    in.is_3d = Vect_is_3d(&vector.map());
+    // the layer's table, opened once for where= and the logs
+    std::optional<LayerTable> table;
+    if (!request.where.empty() || !request.log_class.empty())
+        table.emplace(vector.map(), layer,
+                      request.where.empty() ? "log_class=" : "where=");
+    std::vector<int> selected;
+    if (!request.where.empty())
+        selected = selected_categories(*table, request.where);
+    size_t others = 0;
+    while (const int type = vector.next()) {
+        if (!(type & GV_POINTS)) {
+            others += (type & (GV_LINES | GV_FACE)) != 0;
+            continue;
+        }
+        BoreholePoint p;
+        if (!Vect_cat_get(vector.cats(), layer, &p.cat) && layer > 0)
+            continue; // not in layer=
+        if (!request.where.empty() &&
+            !std::binary_search(selected.begin(), selected.end(), p.cat))
+            continue;
+        p.x = vector.points().x[0];
+        p.y = vector.points().y[0];
+        p.z = vector.points().z[0];
+        in.points.push_back(p);
+    }
+    if (in.points.empty())
+        G_fatal_error(_("boreholes=%s has no points in layer %d%s (it holds %zu "
+                        "lines or boundaries): boreholes= needs a vector map of "
+                        "points"),
+                      request.boreholes.c_str(), layer,
+                      request.where.empty() ? "" : _(" that where= selects"), others);
+    if (others)
+        G_warning(_("boreholes=%s: %zu lines or boundaries skipped (only points "
+                    "are boreholes)"),
+                  request.boreholes.c_str(), others);
+    if (!request.log_class.empty())
+        in.logs = logged_intervals(*table, request);
+    return in;
 }
 
 std::vector<sbrt::FencePanel> read_fence(const std::string &name)

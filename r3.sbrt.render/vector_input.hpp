@@ -26,14 +26,19 @@ struct LogRow {
     int class_id = 0;
 };
 
-/// The points of boreholes= in layer= that where= selects; a fatal error
-/// where the map has no such points. `is_3d` tells whether z is given.
-std::vector<BoreholePoint> read_borehole_points(const RenderRequest &request,
-                                                bool &is_3d);
+/// \brief What boreholes= gives: the points of layer= that where=
+/// selects (z given where the map is 3D), and with log_class= the rows of
+/// log_top=, log_bottom=, log_class= in the layer's table grouped by
+/// category (one row per interval; several per point).
+struct BoreholeInput {
+    std::vector<BoreholePoint> points;
+    bool is_3d = false;
+    std::map<int, std::vector<LogRow>> logs;
+};
 
-/// The rows of log_top=, log_bottom=, log_class= in the table of layer=,
-/// grouped by category (one row per interval; several per point).
-std::map<int, std::vector<LogRow>> read_borehole_logs(const RenderRequest &request);
+/// The boreholes of the request; a fatal error where the map holds no
+/// such points or the logs cannot be read.
+BoreholeInput read_boreholes(const RenderRequest &request);
 
 /// The segments of the lines of fence=; a fatal error without lines.
 std::vector<sbrt::FencePanel> read_fence(const std::string &name);
