@@ -51,6 +51,7 @@ sbrt::Scene make_scene(const RenderRequest &request, const sbrt::Model &original
     if (!request.fence.empty())
         scene.fence = read_fence(request.fence);
     scene.draw_model = !request.boreholes_only && request.fence.empty();
+    scene.skip_empty_space = !request.walk_every_cell;
     // after the boreholes: a log may have added classes
     scene.translucency = translucency(request, model);
     return scene;

@@ -298,6 +298,10 @@ RenderOptions define_render_options()
     o->nprocs->answer = const_cast<char *>("0");
     o->nprocs->description = _("Number of threads (0: all cores)");
     o->nprocs->guisection = _("Settings");
+    o->walk_every_cell = define_flag(
+        'e', _("Walk every cell: no empty-space skipping (the same image, "
+               "slower; for benchmarks)"),
+        _("Settings"));
 
     G_option_exclusive(o->color, o->rules, NULL);
     G_option_requires(o->boreholes_only, o->boreholes, NULL);
@@ -435,6 +439,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (!(r.texture_blend >= 0 && r.texture_blend <= 1))
         G_fatal_error(_("texture_blend=%g must lie in 0..1"), r.texture_blend);
     r.backend = o->backend->answer;
+    r.walk_every_cell = o->walk_every_cell->answer;
     r.threads = std::atoi(o->nprocs->answer);
     if (r.threads < 0)
         r.threads = std::max(1, int(std::thread::hardware_concurrency()) + r.threads);

@@ -46,6 +46,7 @@ struct RenderRequest {
     double texture_blend = 1;
     std::string backend = "auto";
     int threads = 0;
+    bool walk_every_cell = false;            ///< -e: no empty-space skipping
 };
 
 /// \brief The parser's options and flags of the module.
@@ -61,6 +62,7 @@ struct RenderOptions {
     Flag *boreholes_only, *split_logs;
     Option *texture, *texture_blend;
     Option *backend, *nprocs;
+    Flag *walk_every_cell;
 };
 
 RenderOptions define_render_options();

@@ -84,6 +84,10 @@ struct Scene {
     std::optional<glm::dvec2> split;
     std::vector<FencePanel> fence;
     bool draw_model = true;
+    /// Rays cross cells and blocks of cells that hold nothing at their
+    /// height in one step (a min-max pyramid); false walks every cell
+    /// (the same image, for benchmarks).
+    bool skip_empty_space = true;
 };
 
 } // namespace sbrt

@@ -38,6 +38,14 @@ constexpr uint32_t PANEL = 1u << 31;
 /// directly rather than walking the cells between them.
 constexpr size_t DIRECT_OVERLAYS = 256;
 
+/// Whether a ray whose height runs from z_a to z_b stays out of `range`:
+/// at or above its top (as walk_stack reads a stack) or below its bottom.
+bool passes(const ZRange &range, double z_a, double z_b)
+{
+    return range.empty() || std::min(z_a, z_b) >= double(range.high) ||
+           std::max(z_a, z_b) < double(range.low);
+}
+
 /// Face through which a ray moving along `axis` with sign of `d` enters.
 Face entry_face(int axis, double d)
 {
@@ -109,6 +117,37 @@ Tracer::Tracer(const Model &model, double zexag, Scene scene)
     if (!scene_.boreholes.empty() && !(scene_.borehole_radius > 0))
         fail("Tracer: the borehole radius must be positive");
     index_overlays();
+    build_pyramid();
+}
+
+void Tracer::build_pyramid()
+{
+    if (!scene_.skip_empty_space || !scene_.draw_model)
+        return;
+    const Frame &f = model_.frame();
+    pyramid_ = MinMaxPyramid(model_, [&](int x, int y, ZRange &range) {
+        if (range.empty())
+            return;
+        const uint64_t cell = model_.cell_index(f.rows - 1 - y, x);
+        if (!overlay_items_.empty() &&
+            overlay_offsets_[cell] != overlay_offsets_[cell + 1]) {
+            range = {0, float(z_max_local_)}; // overlays: always walked
+            return;
+        }
+        // a column that lies wholly on the removed side of a clip plane
+        for (const LocalPlane &plane : planes_) {
+            bool removed = true;
+            for (int k = 0; k < 8 && removed; ++k) {
+                const glm::dvec3 l(x + (k & 1), y + ((k >> 1) & 1),
+                                   k & 4 ? range.high : range.low);
+                removed = glm::dot(plane.n, l) + plane.c > 0;
+            }
+            if (removed) {
+                range = ZRange();
+                return;
+            }
+        }
+    });
 }
 
 void Tracer::index_overlays()
@@ -438,6 +477,39 @@ bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
                         intervals + model_.stack_end(cell), walk);
 }
 
+std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
+                                                double t_far, int ix, int iy) const
+{
+    const Frame &f = model_.frame();
+    const glm::dvec3 &o = walk.o, &d = walk.d;
+    std::optional<Jump> jump;
+    for (int level = 1; level < pyramid_.levels(); ++level) {
+        // the node's cells [x0, x1) x [y0, y1) and where the ray leaves them
+        const int x0 = (ix >> level) << level, y0 = (iy >> level) << level;
+        const int x1 = std::min(x0 + (1 << level), f.cols);
+        const int y1 = std::min(y0 + (1 << level), f.rows);
+        const double tx = d.x > 0 ? (x1 - o.x) / d.x : d.x < 0 ? (x0 - o.x) / d.x : INF;
+        const double ty = d.y > 0 ? (y1 - o.y) / d.y : d.y < 0 ? (y0 - o.y) / d.y : INF;
+        const double t = std::min({tx, ty, t_far});
+        if (!passes(pyramid_.node(level, ix >> level, iy >> level), z_in, o.z + t * d.z))
+            break;
+        // the cell beyond; a tie goes the way the cell walk goes (y first)
+        Jump j{t, 0, 0, Face::none};
+        if (tx < ty) {
+            j.ix = d.x > 0 ? x1 : x0 - 1;
+            j.iy = std::clamp(int(std::floor(o.y + t * d.y)), y0, y1 - 1);
+            j.face = entry_face(0, d.x);
+        }
+        else {
+            j.iy = d.y > 0 ? y1 : y0 - 1;
+            j.ix = std::clamp(int(std::floor(o.x + t * d.x)), x0, x1 - 1);
+            j.face = entry_face(1, d.y);
+        }
+        jump = j;
+    }
+    return jump;
+}
+
 Hit Tracer::trace(const Ray &ray) const
 {
     const Frame &f = model_.frame();
@@ -522,9 +594,28 @@ Hit Tracer::trace(const Ray &ray) const
     double t_in = t_near;
     // bounded: a ray crosses at most cols + rows cells
     for (int steps = 0; steps <= f.cols + f.rows + 1; ++steps) {
-        const double t_out = std::min({t_max_x, t_max_y, t_far});
+        const double t_out = std::max(t_in, std::min({t_max_x, t_max_y, t_far}));
         const uint64_t cell = model_.cell_index(f.rows - 1 - iy, ix);
-        if (cross_cell(cell, t_in, t_out, wall, walk)) {
+        const double z_in = o.z + t_in * d.z;
+        if (pyramid_.levels() > 0 &&
+            passes(pyramid_.node(0, ix, iy), z_in, o.z + t_out * d.z)) {
+            // nothing here at the ray's height: leave the largest block of
+            // cells around that holds nothing at its height either
+            if (const std::optional<Jump> jump = leave_block(walk, z_in, t_far, ix, iy)) {
+                if (jump->t >= t_far)
+                    break;
+                ix = jump->ix;
+                iy = jump->iy;
+                t_in = jump->t;
+                wall = {jump->face, face_normal(jump->face), -1};
+                if (ix < 0 || ix >= f.cols || iy < 0 || iy >= f.rows)
+                    break;
+                t_max_x = d.x != 0 ? ((ix + (d.x > 0)) - o.x) / d.x : INF;
+                t_max_y = d.y != 0 ? ((iy + (d.y > 0)) - o.y) / d.y : INF;
+                continue;
+            }
+        }
+        else if (cross_cell(cell, t_in, t_out, wall, walk)) {
             if (walk.hit.is_hit())
                 walk.hit.point = from_local(o + walk.hit.t * d);
             return walk.hit;

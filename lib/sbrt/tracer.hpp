@@ -10,9 +10,11 @@
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "camera.hpp"
+#include "minmax_pyramid.hpp"
 #include "model.hpp"
 #include "scene.hpp"
 
@@ -97,11 +99,23 @@ public:
     /// everything this tracer can hit where it does not draw the model;
     /// empty where it does.
     std::vector<std::array<glm::dvec3, 2>> overlay_bounds() const;
+    /// The empty-space pyramid over what is drawn (no levels when skipping
+    /// is off or the model is not drawn).
+    const MinMaxPyramid &pyramid() const { return pyramid_; }
 
 private:
     struct Walk;
     struct Entry;
     struct Event;
+    /// Where a ray leaves a block of cells it may skip: the parameter and
+    /// the cell beyond, entered through `face`.
+    struct Jump {
+        double t;
+        int ix, iy;
+        Face face;
+    };
+    std::optional<Jump> leave_block(const Walk &walk, double z_in, double t_far,
+                                    int ix, int iy) const;
     void overlay_events(const uint32_t *first, const uint32_t *last, double t_lo,
                         double t_hi, const Walk &walk, std::vector<Event> &events) const;
     bool cross_events(const std::vector<Event> &events, double t_in, double t_out,
@@ -120,6 +134,7 @@ private:
     bool meet(uint32_t material, double t_enter, double t_exit, Entry entry,
               Walk &walk) const;
     void index_overlays();
+    void build_pyramid();
 
     const Model &model_;
     double zexag_;
@@ -132,6 +147,7 @@ private:
     /// with overlays where the model is not drawn
     glm::dvec2 box_low_{0}, box_high_{0};
     double z_max_local_ = 0; ///< highest interval top, local units
+    MinMaxPyramid pyramid_;
     glm::dvec3 scale_;       ///< map -> local per axis (exaggerated map)
 };
 
