@@ -24,6 +24,7 @@
 #include "scene_camera.hpp"
 #include "scene_setup.hpp"
 #include "shading.hpp"
+#include "skipping_report.hpp"
 #include "texture_input.hpp"
 #include "vector_input.hpp"
 
@@ -75,11 +76,23 @@ void run(const RenderRequest &request)
     const sbrt::Model original = hidden.empty() || request.boreholes.empty()
                                      ? sbrt::Model()
                                      : model;
-    if (!hidden.empty())
-        model = sbrt::hide_materials(model, hidden);
+    if (!hidden.empty()) {
+        sbrt::Model left = sbrt::hide_materials(model, hidden);
+        report_hidden(model, left, hidden.size());
+        model = std::move(left);
+    }
     sbrt::Scene scene = make_scene(request, hidden.empty() ? model : original,
                                    model, hidden, camera);
+    // what no ray of the camera reaches is neither traced nor uploaded
+    const bool prune = scene.skip_empty_space && scene.draw_model;
+    sbrt::Pruning pruning;
+    if (prune) {
+        pruning = sbrt::prune_for_view(sbrt::Tracer(model, request.zexag, scene), camera);
+        model = std::move(pruning.model); // `pruning` keeps the counts
+    }
     const sbrt::Tracer tracer(model, request.zexag, std::move(scene));
+    if (prune)
+        report_pruning(pruning, tracer);
 
     sbrt::Shading shading;
     shading.light = sbrt::Shading::light_from(request.light_azimuth,

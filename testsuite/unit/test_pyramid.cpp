@@ -16,6 +16,7 @@
 #include "gpu_compare.hpp"
 #include "hidden_materials.hpp"
 #include "minmax_pyramid.hpp"
+#include "scene_pruning.hpp"
 
 using namespace sbrt;
 
@@ -146,4 +147,44 @@ TEST(EmptySpaceSkipping, CellsCutAwayByAPlaneAreEmpty)
             want += x >= 17 || brute_range(m, x, x + 1, y, y + 1).empty();
     EXPECT_GT(want, 15u * 32u);
     EXPECT_EQ(tracer.pyramid().empty_cells(), want);
+}
+
+TEST(ScenePruning, LeavesOutWhatNoRayReachesAndKeepsTheImage)
+{
+    const Model m = sbrt_test::geology(60, 90, 40);
+    const Tracer probe(m, 1.0);
+    Scene cut;
+    cut.planes = {{probe.centre(), {0, 1, 0}}}; // keep the south half
+    const Tracer tracer(m, 1.0, cut);
+    // close up on the south-west corner: most cells are out of view
+    const glm::dvec3 corner = probe.corner(0);
+    const Camera camera = Camera::perspective(
+        corner + glm::dvec3(-300, -300, 400), corner + glm::dvec3(200, 200, 0), 30, 96, 128);
+    const Pruning p = prune_for_view(tracer, camera);
+    EXPECT_GT(p.cut_away.cells, 60u * 90u / 2 - 2 * 90u);
+    EXPECT_GT(p.outside_view.cells, 60u * 90u / 4);
+    EXPECT_EQ(p.model.intervals().size() + p.cut_away.intervals + p.outside_view.intervals,
+              m.intervals().size());
+    EXPECT_EQ(p.cut_away.bytes, p.cut_away.intervals * sizeof(Interval));
+    p.model.validate();
+    const Tracer pruned(p.model, 1.0, cut);
+    const std::vector<Hit> want = trace_image(tracer, camera, 2);
+    const std::vector<Hit> got = trace_image(pruned, camera, 2);
+    size_t differ = 0, hits = 0;
+    for (size_t i = 0; i < want.size(); ++i) {
+        hits += want[i].is_hit();
+        differ += got[i].material != want[i].material || got[i].face != want[i].face ||
+                  (want[i].is_hit() && std::fabs(got[i].t - want[i].t) > 1e-6);
+    }
+    EXPECT_GT(hits, want.size() / 4);
+    EXPECT_EQ(differ, 0u);
+}
+
+TEST(ScenePruning, BoxesBeyondAnEdgeOrBehindAreOutOfView)
+{
+    const Camera c = Camera::perspective({0, 0, 0}, {0, 10, 0}, 90, 10, 10);
+    EXPECT_FALSE(outside_view(c, {-1, 5, -1}, {1, 6, 1}));  // straight ahead
+    EXPECT_TRUE(outside_view(c, {-1, -6, -1}, {1, -5, 1})); // behind
+    EXPECT_TRUE(outside_view(c, {20, 5, -1}, {21, 6, 1}));  // far right
+    EXPECT_FALSE(outside_view(c, {-1, -1, -1}, {1, 1, 1})); // around the eye
 }

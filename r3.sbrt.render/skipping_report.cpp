@@ -1,0 +1,51 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   Verbose messages on what the scene skips
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "skipping_report.hpp"
+
+#include "grass.hpp"
+
+namespace {
+
+unsigned long long ull(uint64_t n)
+{
+    return (unsigned long long)n;
+}
+
+void report_left_out(const char *why, const sbrt::Pruned &p)
+{
+    G_verbose_message(_("Skipped, %s: %llu stacks, %llu intervals, %llu bytes "
+                        "(not traced or uploaded)"),
+                      why, ull(p.cells), ull(p.intervals), ull(p.bytes));
+}
+
+} // namespace
+
+void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidden)
+{
+    const uint64_t removed = read.intervals().size() - left.intervals().size();
+    uint64_t emptied = 0;
+    for (uint64_t c = 0; c < read.frame().cells(); ++c)
+        emptied += read.stack_size(c) && !left.stack_size(c);
+    G_verbose_message(_("Skipped, %zu hidden strata: %llu intervals removed or "
+                        "merged (%llu bytes), %llu stacks left empty"),
+                      hidden, ull(removed), ull(removed * sizeof(sbrt::Interval)),
+                      ull(emptied));
+}
+
+void report_pruning(const sbrt::Pruning &pruning, const sbrt::Tracer &tracer)
+{
+    report_left_out(_("out of the view"), pruning.outside_view);
+    if (!tracer.planes().empty())
+        report_left_out(_("cut away by the planes"), pruning.cut_away);
+    const sbrt::MinMaxPyramid &p = tracer.pyramid();
+    const sbrt::Model &m = tracer.model();
+    G_verbose_message(_("Empty-space skipping: %d-level min-max pyramid (%llu "
+                        "bytes); %llu of %llu cells hold nothing to draw; %zu "
+                        "intervals (%llu bytes) left to trace"),
+                      p.levels(), ull(p.bytes()), ull(p.empty_cells()),
+                      ull(m.frame().cells()), m.intervals().size(),
+                      ull(m.intervals().size() * sizeof(sbrt::Interval)));
+}

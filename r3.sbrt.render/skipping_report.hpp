@@ -1,0 +1,18 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   Verbose messages: what the scene leaves out (hidden strata,
+ *            stacks out of view or cut away) and the empty-space pyramid
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_RENDER_SKIPPING_REPORT_HPP
+#define R3_SBRT_RENDER_SKIPPING_REPORT_HPP
+
+#include "scene_pruning.hpp"
+
+/// Intervals and bytes hide= removed (the model as read against what is left).
+void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidden);
+
+/// What pruning left out, and the pyramid of the tracer that draws the rest.
+void report_pruning(const sbrt::Pruning &pruning, const sbrt::Tracer &tracer);
+
+#endif
