@@ -1,0 +1,265 @@
+/****************************************************************************
+ * MODULE:    testsuite/benchmark/trace_bench (r3.sbrt addon)
+ * PURPOSE:   In-process timings on an SBRT file, best of `repeat`:
+ *              skipping  the exact tracer with and without empty-space
+ *                        skipping (and on the GPU where a context opens)
+ *              error     time against error: the exact method, the sampled
+ *                        one (steps 1..1/16 cell, adaptive), kernel
+ *                        normals k = 3..11, each against the exact CPU
+ *                        reference with face normals
+ * USAGE:     trace_bench skipping|error SBRT_DIR position=x,y,z
+ *            target=x,y,z [fov=25] [zexag=1] [cols=1056] [rows=884]
+ *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "cpu_tracing.hpp"
+#include "error.hpp"
+#include "format.hpp"
+#include "gpu_tracer.hpp"
+#include "hidden_materials.hpp"
+#include "sampled_tracer.hpp"
+#include "shading.hpp"
+
+using namespace sbrt;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Args {
+    std::map<std::string, std::string> values;
+    std::string get(const std::string &key, const std::string &fallback) const
+    {
+        auto it = values.find(key);
+        return it == values.end() ? fallback : it->second;
+    }
+    std::vector<double> numbers(const std::string &key) const
+    {
+        std::vector<double> out;
+        std::stringstream in(get(key, ""));
+        for (std::string item; std::getline(in, item, ',');)
+            out.push_back(std::stod(item));
+        return out;
+    }
+    glm::dvec3 point(const std::string &key) const
+    {
+        const std::vector<double> v = numbers(key);
+        if (v.size() != 3)
+            fail(key, "= needs x,y,z");
+        return {v[0], v[1], v[2]};
+    }
+};
+
+/// Best wall time (ms) of `repeat` runs of f.
+double best_ms(int repeat, const std::function<void()> &f)
+{
+    double best = INFINITY;
+    for (int i = 0; i < repeat; ++i) {
+        const auto start = Clock::now();
+        f();
+        best = std::min(best, std::chrono::duration<double, std::milli>(
+                                  Clock::now() - start).count());
+    }
+    return best;
+}
+
+/// The model, less the classes of hide=.
+Model load(const std::string &dir, const Args &args)
+{
+    Model m = read_sbrt(dir);
+    std::vector<uint32_t> hidden;
+    for (double id : args.numbers("hide")) {
+        const int64_t k = m.find_material(int32_t(id));
+        if (k < 0)
+            fail("hide: no class ", id);
+        hidden.push_back(uint32_t(k));
+    }
+    return hidden.empty() ? m : hide_materials(m, hidden);
+}
+
+std::unique_ptr<sbrt_gl::GlContext> gl_context(const Args &args)
+{
+    const std::string name = args.get("gpu", "egl");
+    if (name == "none")
+        return nullptr;
+    try {
+        return sbrt_gl::create_gl_context(name);
+    }
+    catch (const Error &e) {
+        std::fprintf(stderr, "no GL context (%s): %s\n", name.c_str(), e.what());
+        return nullptr;
+    }
+}
+
+void skipping(const Model &model, const Args &args, const Camera &camera_of_zexag,
+              double zexag, int repeat)
+{
+    const std::string label = args.get("label", "view");
+    const double rays = double(camera_of_zexag.rows()) * camera_of_zexag.cols();
+    std::unique_ptr<sbrt_gl::GlContext> context = gl_context(args);
+    double ms[1][2] = {{NAN, NAN}}; // [cpu][skip]
+    for (int skip = 1; skip >= 0; --skip) {
+        Scene scene;
+        scene.skip_empty_space = skip;
+        const Tracer tracer(model, zexag, scene);
+        ms[0][skip] = best_ms(repeat, [&] { trace_image(tracer, camera_of_zexag); });
+        std::printf("skipping view=%s backend=cpu skipping=%s ms=%.1f Mrays/s=%.2f\n",
+                    label.c_str(), skip ? "on" : "off", ms[0][skip], rays / ms[0][skip] / 1e3);
+    }
+    std::printf("skipping view=%s backend=cpu off/on=%.2f\n", label.c_str(), ms[0][0] / ms[0][1]);
+    if (context) {
+        // the GL path on the same view: `auto` picks the faster
+        const Tracer tracer(model, zexag);
+        sbrt_gl::GpuTracer gpu(*context, tracer);
+        const double gl_ms = best_ms(repeat, [&] { gpu.trace_image(camera_of_zexag); });
+        std::printf("skipping view=%s backend=%s renderer=\"%s\" ms=%.1f Mrays/s=%.2f "
+                    "gl/cpu=%.2f\n",
+                    label.c_str(), context->name().c_str(), gpu.gl_renderer().c_str(),
+                    gl_ms, rays / gl_ms / 1e3, gl_ms / ms[0][1]);
+    }
+}
+
+/// Error of an image against the reference.
+struct ImageError {
+    double material = 0, material_off_edges = 0, rmse = 0, worst_depth = 0,
+           p999_depth = 0;
+};
+
+ImageError image_error(const Image &ref, const Image &img, double size)
+{
+    ImageError e;
+    const int rows = ref.rows, cols = ref.cols;
+    size_t wrong = 0, wrong_inside = 0, inside = 0;
+    double squares = 0;
+    std::vector<double> depth;
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            const size_t i = size_t(r) * cols + c;
+            bool edge = false;
+            for (int dr = -1; dr <= 1 && !edge; ++dr)
+                for (int dc = -1; dc <= 1 && !edge; ++dc) {
+                    const int rr = std::clamp(r + dr, 0, rows - 1);
+                    const int cc = std::clamp(c + dc, 0, cols - 1);
+                    edge = ref.material[size_t(rr) * cols + cc] != ref.material[i];
+                }
+            const bool differs = img.material[i] != ref.material[i];
+            wrong += differs;
+            inside += !edge;
+            wrong_inside += differs && !edge;
+            for (int k = 0; k < 3; ++k) {
+                const double d = double(img.rgb[3 * i + k]) - ref.rgb[3 * i + k];
+                squares += d * d;
+            }
+            if (!differs && std::isfinite(ref.depth[i]))
+                depth.push_back(std::fabs(img.depth[i] - ref.depth[i]) / size);
+        }
+    e.material = 100.0 * wrong / ref.material.size();
+    e.material_off_edges = inside ? 100.0 * wrong_inside / inside : 0;
+    e.rmse = std::sqrt(squares / (3.0 * ref.material.size()));
+    if (!depth.empty()) {
+        std::sort(depth.begin(), depth.end());
+        e.worst_depth = depth.back();
+        e.p999_depth = depth[size_t(0.999 * (depth.size() - 1))];
+    }
+    return e;
+}
+
+void print_error(const char *method, const std::string &setting, double ms,
+                 const ImageError &e)
+{
+    std::printf("error method=%s setting=%s ms=%.1f material_error_pct=%.4f "
+                "material_error_off_edges_pct=%.4f colour_rmse=%.3f "
+                "depth_error_max=%.2e depth_error_p99.9=%.2e\n",
+                method, setting.c_str(), ms, e.material, e.material_off_edges, e.rmse,
+                e.worst_depth, e.p999_depth);
+}
+
+void time_against_error(const Model &model, const Args &args, const Camera &camera,
+                        double zexag, int repeat)
+{
+    const Tracer tracer(model, zexag);
+    const double size = 2 * tracer.radius();
+    Shading face;
+    auto render = [&](const std::vector<Hit> &hits, const Shading &s) {
+        return shade(tracer, camera, hits, s);
+    };
+    const Image ref = render(trace_image(tracer, camera), face);
+    // exact, face normals (the reference itself: its time)
+    Image img;
+    double ms = best_ms(repeat, [&] { img = render(trace_image(tracer, camera), face); });
+    print_error("exact", "face", ms, image_error(ref, img, size));
+    for (int k = 3; k <= 11; k += 2) {
+        Shading kernel = face;
+        kernel.normals = Normals::kernel;
+        kernel.kernel = k;
+        ms = best_ms(repeat, [&] { img = render(trace_image(tracer, camera), kernel); });
+        print_error("exact", "kernel" + std::to_string(k), ms, image_error(ref, img, size));
+    }
+    if (std::unique_ptr<sbrt_gl::GlContext> context = gl_context(args)) {
+        sbrt_gl::GpuTracer gpu(*context, tracer);
+        ms = best_ms(repeat, [&] { img = render(gpu.trace_image(camera), face); });
+        print_error("exact_gl", "face", ms, image_error(ref, img, size));
+    }
+    for (int inverse : {1, 2, 4, 8, 16}) {
+        const Sampling s{1.0 / inverse, 0};
+        ms = best_ms(repeat, [&] { img = render(sample_image(tracer, camera, s), face); });
+        print_error("sampled", "1/" + std::to_string(inverse), ms, image_error(ref, img, size));
+    }
+    for (int inverse : {4, 16}) {
+        const Sampling s{1.0, 1.0 / inverse};
+        ms = best_ms(repeat, [&] { img = render(sample_image(tracer, camera, s), face); });
+        print_error("adaptive", "1+1/" + std::to_string(inverse), ms,
+                    image_error(ref, img, size));
+    }
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: %s skipping|error SBRT_DIR key=value...\n", argv[0]);
+        return 2;
+    }
+    try {
+        Args args;
+        for (int i = 3; i < argc; ++i) {
+            const std::string a = argv[i];
+            const size_t eq = a.find('=');
+            if (eq == std::string::npos)
+                fail("argument ", a, " is not key=value");
+            args.values[a.substr(0, eq)] = a.substr(eq + 1);
+        }
+        const Model model = load(argv[2], args);
+        const double zexag = std::stod(args.get("zexag", "1"));
+        const int repeat = std::stoi(args.get("repeat", "3"));
+        const Tracer probe(model, zexag);
+        const Camera camera = Camera::perspective(
+            probe.exaggerate(args.point("position")), probe.exaggerate(args.point("target")),
+            std::stod(args.get("fov", "25")), std::stoi(args.get("rows", "884")),
+            std::stoi(args.get("cols", "1056")));
+        const std::string mode = argv[1];
+        if (mode == "skipping")
+            skipping(model, args, camera, zexag, repeat);
+        else if (mode == "error")
+            time_against_error(model, args, camera, zexag, repeat);
+        else
+            fail("unknown mode ", mode);
+    }
+    catch (const std::exception &e) {
+        std::fprintf(stderr, "trace_bench: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
