@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include <unistd.h>
+
 #include <glm/geometric.hpp>
 
 namespace {
@@ -46,10 +48,25 @@ double framing_distance(const sbrt::Tracer &tracer, glm::dvec3 target,
 
 } // namespace
 
+void check_image_fits(int rows, int cols)
+{
+    // the CPU hits (104 bytes), the outputs (rgb, class, elevation, depth:
+    // 23) and the kernel normals' buffers (32) of every pixel
+    const double needed = double(rows) * cols * (sizeof(sbrt::Hit) + 23 + 32);
+    const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (memory > 0 && needed > 0.8 * memory)
+        G_fatal_error(_("An image of %d x %d pixels needs about %.1f GB of memory "
+                        "for its rays and outputs; this machine has %.1f GB. "
+                        "Set fewer rows and columns (g.region rows= cols=) and "
+                        "render the view in parts, or use a larger machine."),
+                      cols, rows, needed / 1e9, memory / 1e9);
+}
+
 sbrt::Camera make_camera(const RenderRequest &r, const sbrt::Tracer &tracer,
                          const struct Cell_head &region)
 {
     const int rows = region.rows, cols = region.cols;
+    check_image_fits(rows, cols);
     const double radius = tracer.radius();
     if (r.view == "top") {
         const sbrt::Frame &f = tracer.model().frame();

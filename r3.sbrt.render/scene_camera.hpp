@@ -10,6 +10,10 @@
 #include "render_options.hpp"
 #include "tracer.hpp"
 
+/// Fatal error unless an image of rows x cols fits in this machine's
+/// memory (what the CPU hits and the outputs take, with a margin).
+void check_image_fits(int rows, int cols);
+
 /// Camera for an image of the current region's rows x cols.
 sbrt::Camera make_camera(const RenderRequest &request,
                          const sbrt::Tracer &tracer,

@@ -9,11 +9,21 @@
 
 namespace sbrt {
 
+namespace {
+
+/// The frame, checked before anything is allocated for its cells.
+const Frame &checked(const Frame &frame)
+{
+    frame.validate("VoxelStackBuilder");
+    return frame;
+}
+
+} // namespace
+
 VoxelStackBuilder::VoxelStackBuilder(const Frame &frame)
-    : frame_(frame), open_class_(frame.cells(), NULL_CLASS),
+    : frame_(checked(frame)), open_class_(frame.cells(), NULL_CLASS),
       open_material_(frame.cells(), EMPTY), class_of_material_{NULL_CLASS}
 {
-    frame_.validate("VoxelStackBuilder");
 }
 
 uint32_t VoxelStackBuilder::material_of(int32_t id)

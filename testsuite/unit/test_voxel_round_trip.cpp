@@ -139,3 +139,23 @@ TEST(VoxelRoundTrip, WrongSliceCountIsAnError)
     builder.add_slice(v.slice(0));
     EXPECT_THROW(builder.finish(), Error);
 }
+
+TEST(VoxelRoundTrip, GridsBeyondThe32BitIndicesAreClearErrors)
+{
+    // 70000 x 70000 cells overflow the 32-bit offsets and cell indices:
+    // refused with the limit, before anything is allocated for them
+    Frame f;
+    f.rows = f.cols = 70000;
+    f.north = f.east = 70000;
+    try {
+        VoxelStackBuilder builder(f);
+        FAIL() << "a grid of 4.9e9 cells was accepted";
+    }
+    catch (const Error &e) {
+        EXPECT_NE(std::string(e.what()).find("too many cells"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("2^31-1"), std::string::npos) << e.what();
+    }
+    f.rows = 1;
+    f.depths = (1 << 24) + 1; // heights no longer exact in float32
+    EXPECT_THROW(VoxelStackBuilder{f}, Error);
+}

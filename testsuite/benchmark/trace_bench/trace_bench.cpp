@@ -10,6 +10,7 @@
  * USAGE:     trace_bench skipping|error SBRT_DIR position=x,y,z
  *            target=x,y,z [fov=25] [zexag=1] [cols=1056] [rows=884]
  *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
+ *            [classes=FILE: error writes the reference's class ids, int32]
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <chrono>
@@ -195,6 +196,13 @@ void time_against_error(const Model &model, const Args &args, const Camera &came
         return shade(tracer, camera, hits, s);
     };
     const Image ref = render(trace_image(tracer, camera), face);
+    if (const std::string path = args.get("classes", ""); !path.empty()) {
+        // the reference's class ids, int32 row-major (NULL_CLASS: missed)
+        std::FILE *out = std::fopen(path.c_str(), "wb");
+        if (!out || std::fwrite(ref.material.data(), sizeof(int32_t), ref.material.size(),
+                                out) != ref.material.size() || std::fclose(out) != 0)
+            fail("cannot write ", path);
+    }
     // exact, face normals (the reference itself: its time)
     Image img;
     double ms = best_ms(repeat, [&] { img = render(trace_image(tracer, camera), face); });
