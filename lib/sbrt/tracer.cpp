@@ -484,6 +484,9 @@ std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
     const glm::dvec3 &o = walk.o, &d = walk.d;
     std::optional<Jump> jump;
     for (int level = 1; level < pyramid_.levels(); ++level) {
+        const ZRange &node = pyramid_.node(level, ix >> level, iy >> level);
+        if (!passes(node, z_in, z_in))
+            break; // the ray starts among the node's material
         // the node's cells [x0, x1) x [y0, y1) and where the ray leaves them
         const int x0 = (ix >> level) << level, y0 = (iy >> level) << level;
         const int x1 = std::min(x0 + (1 << level), f.cols);
@@ -491,7 +494,7 @@ std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
         const double tx = d.x > 0 ? (x1 - o.x) / d.x : d.x < 0 ? (x0 - o.x) / d.x : INF;
         const double ty = d.y > 0 ? (y1 - o.y) / d.y : d.y < 0 ? (y0 - o.y) / d.y : INF;
         const double t = std::min({tx, ty, t_far});
-        if (!passes(pyramid_.node(level, ix >> level, iy >> level), z_in, o.z + t * d.z))
+        if (!passes(node, z_in, o.z + t * d.z))
             break;
         // the cell beyond; a tie goes the way the cell walk goes (y first)
         Jump j{t, 0, 0, Face::none};
