@@ -137,6 +137,33 @@ class TestRenderTopView(TestCase):
                 self.assertIn("GL_VERSION: 4.", run.stderr)
                 self.assertIn("GL_RENDERER: ", run.stderr)
 
+    def test_skipping_keeps_the_image_and_reports_what_it_skipped(self):
+        # a close view of one corner, strata hidden, a plane: much to skip
+        self.runModule("g.region", rows=60, cols=80)
+        view = dict(input="geo", position=(-300, -300, 900), target=(500, 600, 200),
+                    fov=30, hide="13", plane=(1000, 1250, 300, 1, 0, 0), backend="cpu")
+        text = {k: ",".join(map(str, v)) if isinstance(v, tuple) else v
+                for k, v in view.items()}
+        run = subprocess.run(
+            ["r3.sbrt.render", "output=sk", "material=sk_m", "depth=sk_d",
+             "--overwrite", "--verbose"] + [f"{k}={v}" for k, v in text.items()],
+            capture_output=True, text=True, check=True,
+        )
+        for line in ("Skipped, 1 hidden strata:", "Skipped, out of the view:",
+                     "Skipped, cut away by the planes:", "Empty-space skipping:"):
+            self.assertIn(line, run.stderr)
+        self.assertModule("r3.sbrt.render", flags="e", output="ns", material="ns_m",
+                          depth="ns_d", overwrite=True, **view)
+        hits = int(gs.parse_command("r.univar", map="sk_m", flags="g")["n"])
+        self.assertGreater(hits, 600)
+        # the same image with every cell walked
+        for a, b in (("sk_m", "ns_m"), ("sk.red", "ns.red"), ("sk_d", "ns_d")):
+            self.runModule("r.mapcalc", overwrite=True,
+                           expression=f"sk_diff = if(isnull({a}) != isnull({b}) || "
+                                      f"abs({a} - {b}) > 0.000001, 1, 0)")
+            self.assertRasterMinMax("sk_diff", refmin=0, refmax=0, msg=f"{a} vs {b}")
+        self.runModule("g.region", region="geo_region")
+
     def test_missing_gl_is_a_clear_error(self):
         # glvnd without any EGL vendor: EGL cannot work at all
         env = dict(os.environ, __EGL_VENDOR_LIBRARY_FILENAMES="/nonexistent.json")
