@@ -323,6 +323,19 @@ class TestRenderTopView(TestCase):
         self.assertRasterDoesNotExist("bad.red")
         self.runModule("g.region", region="geo_region")
 
+    def test_image_too_large_for_memory_is_a_clear_error(self):
+        # 200,000 x 200,000 pixels would need some 6 TB for rays and outputs
+        self.runModule("g.region", rows=200000, cols=200000)
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=geo", "output=huge", "backend=cpu"],
+            capture_output=True, text=True,
+        )
+        self.runModule("g.region", region="geo_region")
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("200000 x 200000 pixels needs about", run.stderr)
+        self.assertIn("g.region rows= cols=", run.stderr)
+        self.assertRasterDoesNotExist("huge.red")
+
     def test_missing_and_corrupt_sbrt_fail(self):
         self.assertModuleFail("r3.sbrt.render", input="nosuch", output="bad")
         self.runModule("r3.sbrt.convert", input="geo", output="broken")
