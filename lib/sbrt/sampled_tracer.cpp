@@ -60,22 +60,12 @@ Hit sample_ray(const Tracer &tracer, const Ray &ray, const Sampling &sampling)
     const Frame &f = model.frame();
     const glm::dvec3 o = tracer.to_local(ray.origin);
     const glm::dvec3 d = tracer.local_direction(ray.direction);
-    // box clip
-    const glm::dvec3 high(f.cols, f.rows, tracer.top_local());
+    // from the camera (t = 0) on, inside the model's box
     double t_near = 0, t_far = INFINITY;
-    for (int a = 0; a < 3; ++a) {
-        if (d[a] == 0) {
-            if (o[a] < 0 || o[a] > high[a])
-                return {};
-            continue;
-        }
-        double t0 = -o[a] / d[a], t1 = (high[a] - o[a]) / d[a];
-        if (t0 > t1)
-            std::swap(t0, t1);
-        t_near = std::max(t_near, t0);
-        t_far = std::min(t_far, t1);
-    }
-    if (!(t_near < t_far))
+    int near_axis = -1;
+    if (!clip_to_box(o, d, glm::dvec3(0), glm::dvec3(f.cols, f.rows, tracer.top_local()),
+                     t_near, t_far, near_axis) ||
+        !(t_near < t_far))
         return {};
     const double per_cell = 1 / glm::length(d); // t per local unit
     double dt = sampling.step * per_cell;

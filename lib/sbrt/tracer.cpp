@@ -16,6 +16,27 @@
 
 namespace sbrt {
 
+bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 low, glm::dvec3 high,
+                 double &t_near, double &t_far, int &near_axis)
+{
+    for (int a = 0; a < 3; ++a) {
+        if (d[a] == 0) {
+            if (o[a] < low[a] || o[a] > high[a])
+                return false;
+            continue;
+        }
+        double t0 = (low[a] - o[a]) / d[a], t1 = (high[a] - o[a]) / d[a];
+        if (t0 > t1)
+            std::swap(t0, t1);
+        if (t0 > t_near) {
+            t_near = t0;
+            near_axis = a;
+        }
+        t_far = std::min(t_far, t1);
+    }
+    return true;
+}
+
 glm::dvec3 face_normal(Face face)
 {
     switch (face) {
@@ -526,24 +547,11 @@ Hit Tracer::trace(const Ray &ray) const
 
     // 1. slab clip to the box [0, cols] x [0, rows] x [0, z_max] (the
     // overlays' cells only, where the model is not drawn)
-    const glm::dvec3 low(box_low_, 0), high(box_high_, z_max_local_);
     double t_near = -INF, t_far = INF;
     int near_axis = -1;
-    for (int a = 0; a < 3; ++a) {
-        if (d[a] == 0) {
-            if (o[a] < low[a] || o[a] > high[a])
-                return {};
-            continue;
-        }
-        double t0 = (low[a] - o[a]) / d[a], t1 = (high[a] - o[a]) / d[a];
-        if (t0 > t1)
-            std::swap(t0, t1);
-        if (t0 > t_near) {
-            t_near = t0;
-            near_axis = a;
-        }
-        t_far = std::min(t_far, t1);
-    }
+    if (!clip_to_box(o, d, glm::dvec3(box_low_, 0), glm::dvec3(box_high_, z_max_local_),
+                     t_near, t_far, near_axis))
+        return {};
     Entry wall;
     if (near_axis >= 0) {
         wall.face = entry_face(near_axis, d[near_axis]);
@@ -590,15 +598,18 @@ Hit Tracer::trace(const Ray &ray) const
     int ix = std::clamp(int(std::floor(p.x)), 0, f.cols - 1);
     int iy = std::clamp(int(std::floor(p.y)), 0, f.rows - 1);
     const int step_x = d.x > 0 ? 1 : -1, step_y = d.y > 0 ? 1 : -1;
-    double t_max_x = d.x != 0 ? ((ix + (d.x > 0)) - o.x) / d.x : INF;
-    double t_max_y = d.y != 0 ? ((iy + (d.y > 0)) - o.y) / d.y : INF;
+    // t where the ray reaches the far wall of cell index i along axis a
+    auto far_wall = [&](int i, int a) {
+        return d[a] != 0 ? ((i + (d[a] > 0)) - o[a]) / d[a] : INF;
+    };
+    double t_max_x = far_wall(ix, 0);
+    double t_max_y = far_wall(iy, 1);
     const double t_delta_x = d.x != 0 ? std::fabs(1 / d.x) : INF;
     const double t_delta_y = d.y != 0 ? std::fabs(1 / d.y) : INF;
     double t_in = t_near;
     // bounded: a ray crosses at most cols + rows cells
     for (int steps = 0; steps <= f.cols + f.rows + 1; ++steps) {
         const double t_out = std::max(t_in, std::min({t_max_x, t_max_y, t_far}));
-        const uint64_t cell = model_.cell_index(f.rows - 1 - iy, ix);
         const double z_in = o.z + t_in * d.z;
         if (pyramid_.levels() > 0 &&
             passes(pyramid_.node(0, ix, iy), z_in, o.z + t_out * d.z)) {
@@ -613,12 +624,13 @@ Hit Tracer::trace(const Ray &ray) const
                 wall = {jump->face, face_normal(jump->face), -1};
                 if (ix < 0 || ix >= f.cols || iy < 0 || iy >= f.rows)
                     break;
-                t_max_x = d.x != 0 ? ((ix + (d.x > 0)) - o.x) / d.x : INF;
-                t_max_y = d.y != 0 ? ((iy + (d.y > 0)) - o.y) / d.y : INF;
+                t_max_x = far_wall(ix, 0);
+                t_max_y = far_wall(iy, 1);
                 continue;
             }
         }
-        else if (cross_cell(cell, t_in, t_out, wall, walk)) {
+        else if (cross_cell(model_.cell_index(f.rows - 1 - iy, ix), t_in, t_out, wall,
+                            walk)) {
             if (walk.hit.is_hit())
                 walk.hit.point = from_local(o + walk.hit.t * d);
             return walk.hit;

@@ -50,6 +50,13 @@ struct Hit {
 /// tenth of one 8-bit colour level.
 constexpr double MIN_TRANSMITTANCE = 1.0 / 4096;
 
+/// Slab clip of the ray o + t d to the box [low, high]: narrows [t_near,
+/// t_far] and sets `near_axis` to the axis of the wall it enters through
+/// (unchanged where no wall narrows t_near); false where the ray runs
+/// parallel to a slab outside it.
+bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 low, glm::dvec3 high,
+                 double &t_near, double &t_far, int &near_axis);
+
 /// \brief Exact traversal of an SBRT. Rays are in map coordinates with
 /// vertical exaggeration `zexag` applied about the model's bottom.
 class Tracer {

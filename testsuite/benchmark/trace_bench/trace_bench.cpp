@@ -103,31 +103,31 @@ std::unique_ptr<sbrt_gl::GlContext> gl_context(const Args &args)
     }
 }
 
-void skipping(const Model &model, const Args &args, const Camera &camera_of_zexag,
+void skipping(const Model &model, const Args &args, const Camera &camera,
               double zexag, int repeat)
 {
     const std::string label = args.get("label", "view");
-    const double rays = double(camera_of_zexag.rows()) * camera_of_zexag.cols();
+    const double rays = double(camera.rows()) * camera.cols();
     std::unique_ptr<sbrt_gl::GlContext> context = gl_context(args);
-    double ms[1][2] = {{NAN, NAN}}; // [cpu][skip]
+    double ms[2] = {NAN, NAN}; // skipping off, on
     for (int skip = 1; skip >= 0; --skip) {
         Scene scene;
         scene.skip_empty_space = skip;
         const Tracer tracer(model, zexag, scene);
-        ms[0][skip] = best_ms(repeat, [&] { trace_image(tracer, camera_of_zexag); });
+        ms[skip] = best_ms(repeat, [&] { trace_image(tracer, camera); });
         std::printf("skipping view=%s backend=cpu skipping=%s ms=%.1f Mrays/s=%.2f\n",
-                    label.c_str(), skip ? "on" : "off", ms[0][skip], rays / ms[0][skip] / 1e3);
+                    label.c_str(), skip ? "on" : "off", ms[skip], rays / ms[skip] / 1e3);
     }
-    std::printf("skipping view=%s backend=cpu off/on=%.2f\n", label.c_str(), ms[0][0] / ms[0][1]);
+    std::printf("skipping view=%s backend=cpu off/on=%.2f\n", label.c_str(), ms[0] / ms[1]);
     if (context) {
         // the GL path on the same view: `auto` picks the faster
         const Tracer tracer(model, zexag);
         sbrt_gl::GpuTracer gpu(*context, tracer);
-        const double gl_ms = best_ms(repeat, [&] { gpu.trace_image(camera_of_zexag); });
+        const double gl_ms = best_ms(repeat, [&] { gpu.trace_image(camera); });
         std::printf("skipping view=%s backend=%s renderer=\"%s\" ms=%.1f Mrays/s=%.2f "
                     "gl/cpu=%.2f\n",
                     label.c_str(), context->name().c_str(), gpu.gl_renderer().c_str(),
-                    gl_ms, rays / gl_ms / 1e3, gl_ms / ms[0][1]);
+                    gl_ms, rays / gl_ms / 1e3, gl_ms / ms[1]);
     }
 }
 
