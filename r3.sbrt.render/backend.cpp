@@ -31,32 +31,32 @@ void report(const char *what, int rows, int cols, double ms)
                       cols, rows, ms, rows * double(cols) / ms / 1000);
 }
 
-std::vector<sbrt::Hit> trace_on_cpu(const RenderRequest &request,
-                                    const sbrt::Tracer &tracer,
-                                    const sbrt::Camera &camera)
+sbrt::HitImage trace_on_cpu(const RenderRequest &request,
+                            const sbrt::Tracer &tracer,
+                            const sbrt::Camera &camera)
 {
     G_verbose_message(_("Backend: cpu (exact double-precision ray caster, %d "
                         "threads)"),
                       request.threads ? request.threads
                                       : int(std::thread::hardware_concurrency()));
     const auto start = Clock::now();
-    std::vector<sbrt::Hit> hits =
+    sbrt::HitImage hits =
         sbrt::trace_image(tracer, camera, unsigned(request.threads));
     report(_("CPU tracing"), camera.rows(), camera.cols(),
            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     return hits;
 }
 
-std::vector<sbrt::Hit> trace_on_gpu(const RenderRequest &request,
-                                    const sbrt::Tracer &tracer,
-                                    const sbrt::Camera &camera,
-                                    const sbrt_gl::GlContext &context)
+sbrt::HitImage trace_on_gpu(const RenderRequest &request,
+                            const sbrt::Tracer &tracer,
+                            const sbrt::Camera &camera,
+                            const sbrt_gl::GlContext &context)
 {
     sbrt_gl::GpuTracer gpu(context, tracer);
     G_verbose_message(_("Backend: %s"), context.name().c_str());
     G_verbose_message(_("GL_VERSION: %s"), gpu.gl_version().c_str());
     G_verbose_message(_("GL_RENDERER: %s"), gpu.gl_renderer().c_str());
-    std::vector<sbrt::Hit> hits =
+    sbrt::HitImage hits =
         gpu.trace_image(camera, unsigned(request.threads));
     const sbrt_gl::GpuStats &s = gpu.stats();
     G_verbose_message(_("Model upload: %.1f ms; read back: %.1f ms; %d "
@@ -72,9 +72,9 @@ std::vector<sbrt::Hit> trace_on_gpu(const RenderRequest &request,
 
 } // namespace
 
-std::vector<sbrt::Hit> trace_hits(const RenderRequest &request,
-                                  const sbrt::Tracer &tracer,
-                                  const sbrt::Camera &camera)
+sbrt::HitImage trace_hits(const RenderRequest &request,
+                          const sbrt::Tracer &tracer,
+                          const sbrt::Camera &camera)
 {
     if (request.backend == "cpu")
         return trace_on_cpu(request, tracer, camera);

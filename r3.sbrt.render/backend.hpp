@@ -7,16 +7,13 @@
 #ifndef R3_SBRT_BACKEND_HPP
 #define R3_SBRT_BACKEND_HPP
 
-#include <vector>
-
 #include "render_options.hpp"
-#include "tracer.hpp"
+#include "hit_image.hpp"
 
 /// backend=egl|osmesa fail with the reason; backend=auto takes a hardware
 /// GL context where one works and the CPU otherwise (a software OpenGL is
 /// slower than the CPU ray caster on the same cores).
-std::vector<sbrt::Hit> trace_hits(const RenderRequest &request,
-                                  const sbrt::Tracer &tracer,
-                                  const sbrt::Camera &camera);
+sbrt::HitImage trace_hits(const RenderRequest &request, const sbrt::Tracer &tracer,
+                          const sbrt::Camera &camera);
 
 #endif

@@ -105,7 +105,7 @@ void run(const RenderRequest &request)
     shading.smooth = request.smooth;
     shading.drape = drape ? &*drape : nullptr;
 
-    std::vector<sbrt::Hit> hits = trace_hits(request, tracer, camera);
+    sbrt::HitImage hits = trace_hits(request, tracer, camera);
     const sbrt::Image image = sbrt::shade(tracer, camera, std::move(hits), shading,
                                           unsigned(request.threads));
     write_image_maps(request, model, image);

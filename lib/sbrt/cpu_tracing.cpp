@@ -50,16 +50,15 @@ std::vector<uint8_t> pixels_to_trace(const Tracer &tracer, const Camera &camera)
 
 } // namespace
 
-std::vector<Hit> trace_image(const Tracer &tracer, const Camera &camera,
-                             unsigned threads)
+HitImage trace_image(const Tracer &tracer, const Camera &camera,
+                     unsigned threads)
 {
-    std::vector<Hit> hits(size_t(camera.rows()) * camera.cols());
+    HitImage hits(size_t(camera.rows()) * camera.cols());
     const std::vector<uint8_t> mask = pixels_to_trace(tracer, camera);
     for_each_row(camera.rows(), threads, [&](int row) {
         for (int col = 0; col < camera.cols(); ++col) {
             const size_t i = size_t(row) * camera.cols() + col;
-            if (mask.empty() || mask[i])
-                hits[i] = tracer.trace(camera.ray(row, col));
+            hits[i] = mask.empty() || mask[i] ? tracer.trace(camera.ray(row, col)) : Hit();
         }
     });
     return hits;

@@ -9,13 +9,13 @@
 
 #include <vector>
 
-#include "tracer.hpp"
+#include "hit_image.hpp"
 
 namespace sbrt {
 
 /// Hits of camera.ray(r, c), row-major; `threads` 0 means all cores.
-std::vector<Hit> trace_image(const Tracer &tracer, const Camera &camera,
-                             unsigned threads = 0);
+HitImage trace_image(const Tracer &tracer, const Camera &camera,
+                     unsigned threads = 0);
 
 } // namespace sbrt
 

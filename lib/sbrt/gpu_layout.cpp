@@ -95,7 +95,7 @@ Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,
     const uint32_t material = record.code & 0xffffu;
     const uint32_t face = (record.code >> 16) & 0xfu;
     const uint32_t plane = (record.code >> 20) & 0xfu;
-    hit.veil = glm::dvec3(record.veil[0], record.veil[1], record.veil[2]);
+    hit.veil = glm::vec3(record.veil[0], record.veil[1], record.veil[2]);
     hit.transmittance = record.veil[3];
     if (over_budget || material == EMPTY)
         return hit;
@@ -109,7 +109,7 @@ Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,
     hit.point = tracer.from_local(local);
     hit.t = glm::length(tracer.exaggerate(hit.point) - ray.origin);
     if (hit.face == Face::plane) {
-        hit.plane = int(plane);
+        hit.plane = int8_t(plane);
         hit.normal = tracer.planes()[plane].shading_normal;
     }
     else

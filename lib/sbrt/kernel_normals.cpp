@@ -25,7 +25,7 @@ struct KernelCell {
 } // namespace
 
 void apply_kernel_normals(const Tracer &tracer, const Camera &camera, int k,
-                          std::vector<Hit> &hits, unsigned threads)
+                          HitImage &hits, unsigned threads)
 {
     if (k < 3 || k > 11 || k % 2 == 0)
         fail("kernel size ", k, " must be odd, from 3 to 11");
@@ -91,7 +91,7 @@ void apply_kernel_normals(const Tracer &tracer, const Camera &camera, int k,
     });
 }
 
-void smooth_normals(const Camera &camera, double sigma, std::vector<Hit> &hits,
+void smooth_normals(const Camera &camera, double sigma, HitImage &hits,
                     unsigned threads)
 {
     if (!(sigma > 0))

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "tracer.hpp"
+#include "hit_image.hpp"
 
 namespace sbrt {
 
@@ -22,10 +22,10 @@ namespace sbrt {
 /// is the normalised sum of the unit vectors towards the empty centres. The
 /// face normal stays where the kernel finds no empty centre.
 void apply_kernel_normals(const Tracer &tracer, const Camera &camera, int k,
-                          std::vector<Hit> &hits, unsigned threads = 0);
+                          HitImage &hits, unsigned threads = 0);
 
 /// Gaussian smoothing of the normals over the pixels that hit the model.
-void smooth_normals(const Camera &camera, double sigma, std::vector<Hit> &hits,
+void smooth_normals(const Camera &camera, double sigma, HitImage &hits,
                     unsigned threads = 0);
 
 } // namespace sbrt

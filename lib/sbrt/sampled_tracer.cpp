@@ -97,10 +97,10 @@ Hit sample_ray(const Tracer &tracer, const Ray &ray, const Sampling &sampling)
     return {};
 }
 
-std::vector<Hit> sample_image(const Tracer &tracer, const Camera &camera,
-                              const Sampling &sampling, unsigned threads)
+HitImage sample_image(const Tracer &tracer, const Camera &camera,
+                      const Sampling &sampling, unsigned threads)
 {
-    std::vector<Hit> hits(size_t(camera.rows()) * camera.cols());
+    HitImage hits(size_t(camera.rows()) * camera.cols());
     for_each_row(camera.rows(), threads, [&](int row) {
         for (int col = 0; col < camera.cols(); ++col)
             hits[size_t(row) * camera.cols() + col] =

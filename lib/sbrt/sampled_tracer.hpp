@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "tracer.hpp"
+#include "hit_image.hpp"
 
 namespace sbrt {
 
@@ -29,8 +29,8 @@ struct Sampling {
 Hit sample_ray(const Tracer &tracer, const Ray &ray, const Sampling &sampling);
 
 /// sample_ray for every pixel, row-major, on `threads` threads (0: all).
-std::vector<Hit> sample_image(const Tracer &tracer, const Camera &camera,
-                              const Sampling &sampling, unsigned threads = 0);
+HitImage sample_image(const Tracer &tracer, const Camera &camera,
+                      const Sampling &sampling, unsigned threads = 0);
 
 } // namespace sbrt
 

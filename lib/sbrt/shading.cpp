@@ -39,7 +39,7 @@ std::array<uint8_t, 3> material_color(const Model &model, uint32_t material)
             uint8_t(60 + 180 * c[2])};
 }
 
-Image shade(const Tracer &tracer, const Camera &camera, std::vector<Hit> hits,
+Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
             const Shading &shading, unsigned threads)
 {
     const Model &model = tracer.model();
@@ -69,14 +69,14 @@ Image shade(const Tracer &tracer, const Camera &camera, std::vector<Hit> hits,
                 if (shading.drape)
                     surface = shading.drape->color(hit, surface);
                 const double lambert =
-                    std::max(0.0, glm::dot(shading.light, hit.normal));
+                    std::max(0.0, glm::dot(shading.light, glm::dvec3(hit.normal)));
                 color = surface * (shading.ambient + (1 - shading.ambient) * lambert);
                 image.material[i] = model.materials()[hit.material].id;
                 image.elevation[i] = hit.point.z;
                 image.depth[i] = glm::length(
                     hit.point - tracer.unexaggerate(camera.ray(row, col).origin));
             }
-            color = 255.0 * hit.veil + hit.transmittance * color;
+            color = 255.0 * glm::dvec3(hit.veil) + double(hit.transmittance) * color;
             std::array<uint8_t, 3> rgb;
             for (int k = 0; k < 3; ++k)
                 rgb[k] = uint8_t(std::lround(std::clamp(color[k], 0.0, 255.0)));

@@ -10,7 +10,7 @@
 #include <array>
 #include <vector>
 
-#include "tracer.hpp"
+#include "hit_image.hpp"
 
 namespace sbrt {
 
@@ -47,7 +47,7 @@ std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 /// Outputs of the hits; a pixel's colour is the veil of the translucent
 /// strata plus, through them, the lit colour of the hit (or background).
 /// Material, elevation and depth are those of the first opaque hit. of camera's rays (row-major, as trace_image gives).
-Image shade(const Tracer &tracer, const Camera &camera, std::vector<Hit> hits,
+Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
             const Shading &shading, unsigned threads = 0);
 
 } // namespace sbrt

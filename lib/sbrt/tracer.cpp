@@ -79,7 +79,8 @@ Face entry_face(int axis, double d)
 
 } // namespace
 
-/// The surface a ray enters a stretch through, with its shading normal.
+/// The surface a ray enters a stretch through, with its shading normal
+/// (a cell's faces leave it unset: face_normal gives it, at a hit only).
 struct Tracer::Entry {
     Face face = Face::none;
     glm::dvec3 normal{0};
@@ -92,6 +93,7 @@ struct Tracer::Walk {
     glm::dvec3 o, d;      ///< local frame
     double length_per_t;  ///< exaggerated map length per unit of t
     Hit hit;
+    glm::dvec2 inv_d{0};  ///< 1 / d.x, 1 / d.y (inf along a wall)
 };
 
 Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
@@ -291,8 +293,10 @@ bool Tracer::meet(uint32_t material, double t_enter, double t_exit, Entry entry,
         walk.hit.t = t_enter;
         walk.hit.material = material;
         walk.hit.face = entry.face;
-        walk.hit.plane = entry.plane;
-        walk.hit.normal = entry.normal;
+        walk.hit.plane = int8_t(entry.plane);
+        walk.hit.normal = entry.face >= Face::west && entry.face <= Face::top
+                              ? face_normal(entry.face)
+                              : entry.normal;
         return true;
     }
     // Beer-Lambert over the exact length the ray travels in the interval;
@@ -301,8 +305,8 @@ bool Tracer::meet(uint32_t material, double t_enter, double t_exit, Entry entry,
                               ? (t_exit - t_enter) * walk.length_per_t
                               : tr.length;
     const double keep = std::exp(-tr.extinction[material] * length);
-    walk.hit.veil += walk.hit.transmittance * (1 - keep) * tr.color[material];
-    walk.hit.transmittance *= keep;
+    walk.hit.veil += glm::vec3(walk.hit.transmittance * (1 - keep) * tr.color[material]);
+    walk.hit.transmittance = float(walk.hit.transmittance * keep);
     return walk.hit.transmittance < MIN_TRANSMITTANCE;
 }
 
@@ -315,7 +319,7 @@ bool Tracer::walk_stack(const Interval *first, const Interval *last, double t_a,
     if (first == last || std::min(z_a, z_b) >= double((last - 1)->top))
         return false;
     auto t_at = [&](float z) { return (double(z) - oz) / dz; };
-    const Entry top{Face::top, {0, 0, 1}}, bottom{Face::bottom, {0, 0, -1}};
+    const Entry top{Face::top}, bottom{Face::bottom};
     if (dz < 0) {
         // descending: intervals (bottom, top]; the one holding z_a, then
         // down while their tops stay above z_b
@@ -503,35 +507,40 @@ std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
 {
     const Frame &f = model_.frame();
     const glm::dvec3 &o = walk.o, &d = walk.d;
-    std::optional<Jump> jump;
+    // the largest block so far: its exit and the axis the ray leaves along
+    // (-1: none); kept in plain locals, a Jump is made once at the end
+    double t_exit = 0;
+    int exit_axis = -1, x0 = 0, x1 = 0, y0 = 0, y1 = 0;
     for (int level = 1; level < pyramid_.levels(); ++level) {
         const ZRange &node = pyramid_.node(level, ix >> level, iy >> level);
         if (!passes(node, z_in, z_in))
             break; // the ray starts among the node's material
-        // the node's cells [x0, x1) x [y0, y1) and where the ray leaves them
-        const int x0 = (ix >> level) << level, y0 = (iy >> level) << level;
-        const int x1 = std::min(x0 + (1 << level), f.cols);
-        const int y1 = std::min(y0 + (1 << level), f.rows);
-        const double tx = d.x > 0 ? (x1 - o.x) / d.x : d.x < 0 ? (x0 - o.x) / d.x : INF;
-        const double ty = d.y > 0 ? (y1 - o.y) / d.y : d.y < 0 ? (y0 - o.y) / d.y : INF;
+        // the node's cells [nx0, nx1) x [ny0, ny1) and where the ray leaves them
+        const int nx0 = (ix >> level) << level, ny0 = (iy >> level) << level;
+        const int nx1 = std::min(nx0 + (1 << level), f.cols);
+        const int ny1 = std::min(ny0 + (1 << level), f.rows);
+        const double tx = d.x > 0   ? (nx1 - o.x) * walk.inv_d.x
+                          : d.x < 0 ? (nx0 - o.x) * walk.inv_d.x
+                                    : INF;
+        const double ty = d.y > 0   ? (ny1 - o.y) * walk.inv_d.y
+                          : d.y < 0 ? (ny0 - o.y) * walk.inv_d.y
+                                    : INF;
         const double t = std::min({tx, ty, t_far});
         if (!passes(node, z_in, o.z + t * d.z))
             break;
-        // the cell beyond; a tie goes the way the cell walk goes (y first)
-        Jump j{t, 0, 0, Face::none};
-        if (tx < ty) {
-            j.ix = d.x > 0 ? x1 : x0 - 1;
-            j.iy = std::clamp(int(std::floor(o.y + t * d.y)), y0, y1 - 1);
-            j.face = entry_face(0, d.x);
-        }
-        else {
-            j.iy = d.y > 0 ? y1 : y0 - 1;
-            j.ix = std::clamp(int(std::floor(o.x + t * d.x)), x0, x1 - 1);
-            j.face = entry_face(1, d.y);
-        }
-        jump = j;
+        t_exit = t;
+        exit_axis = tx < ty ? 0 : 1; // a tie goes the way the cell walk goes
+        x0 = nx0, x1 = nx1, y0 = ny0, y1 = ny1;
     }
-    return jump;
+    if (exit_axis < 0)
+        return std::nullopt;
+    // the cell beyond
+    if (exit_axis == 0)
+        return Jump{t_exit, d.x > 0 ? x1 : x0 - 1,
+                    std::clamp(int(std::floor(o.y + t_exit * d.y)), y0, y1 - 1),
+                    entry_face(0, d.x)};
+    return Jump{t_exit, std::clamp(int(std::floor(o.x + t_exit * d.x)), x0, x1 - 1),
+                d.y > 0 ? y1 : y0 - 1, entry_face(1, d.y)};
 }
 
 Hit Tracer::trace(const Ray &ray) const
@@ -544,6 +553,7 @@ Hit Tracer::trace(const Ray &ray) const
     for (int a = 0; a < 3; ++a)
         if (d[a] == 0)
             d[a] = 0; // normalise -0
+    walk.inv_d = 1.0 / glm::dvec2(d);
 
     // 1. slab clip to the box [0, cols] x [0, rows] x [0, z_max] (the
     // overlays' cells only, where the model is not drawn)
@@ -553,10 +563,8 @@ Hit Tracer::trace(const Ray &ray) const
                      t_near, t_far, near_axis))
         return {};
     Entry wall;
-    if (near_axis >= 0) {
+    if (near_axis >= 0)
         wall.face = entry_face(near_axis, d[near_axis]);
-        wall.normal = face_normal(wall.face);
-    }
     // clip planes: the kept side f(t) = a + b t <= 0 narrows [t_near, t_far]
     for (size_t k = 0; k < planes_.size(); ++k) {
         const double a = glm::dot(planes_[k].n, o) + planes_[k].c;
@@ -607,6 +615,10 @@ Hit Tracer::trace(const Ray &ray) const
     const double t_delta_x = d.x != 0 ? std::fabs(1 / d.x) : INF;
     const double t_delta_y = d.y != 0 ? std::fabs(1 / d.y) : INF;
     double t_in = t_near;
+    // the block of 2 x 2 cells the ray last failed to skip: while it is in
+    // there, the cell walk goes on without trying (close above material, a
+    // try costs more than it saves)
+    int stuck_x = -1, stuck_y = -1;
     // bounded: a ray crosses at most cols + rows cells
     for (int steps = 0; steps <= f.cols + f.rows + 1; ++steps) {
         const double t_out = std::max(t_in, std::min({t_max_x, t_max_y, t_far}));
@@ -615,13 +627,21 @@ Hit Tracer::trace(const Ray &ray) const
             passes(pyramid_.node(0, ix, iy), z_in, o.z + t_out * d.z)) {
             // nothing here at the ray's height: leave the largest block of
             // cells around that holds nothing at its height either
-            if (const std::optional<Jump> jump = leave_block(walk, z_in, t_far, ix, iy)) {
+            std::optional<Jump> jump;
+            if ((ix >> 1) != stuck_x || (iy >> 1) != stuck_y) {
+                jump = leave_block(walk, z_in, t_far, ix, iy);
+                if (!jump) {
+                    stuck_x = ix >> 1;
+                    stuck_y = iy >> 1;
+                }
+            }
+            if (jump) {
                 if (jump->t >= t_far)
                     break;
                 ix = jump->ix;
                 iy = jump->iy;
                 t_in = jump->t;
-                wall = {jump->face, face_normal(jump->face), -1};
+                wall = {jump->face, {}, -1};
                 if (ix < 0 || ix >= f.cols || iy < 0 || iy >= f.rows)
                     break;
                 t_max_x = far_wall(ix, 0);
@@ -649,7 +669,6 @@ Hit Tracer::trace(const Ray &ray) const
             t_max_y += t_delta_y;
             wall.face = entry_face(1, d.y);
         }
-        wall.normal = face_normal(wall.face);
         wall.plane = -1;
         if (ix < 0 || ix >= f.cols || iy < 0 || iy >= f.rows)
             break;

@@ -23,26 +23,28 @@ namespace sbrt {
 /// Face of a hit: which surface the ray entered the material through (a
 /// cell's wall, an interval's bottom or top, a clip plane, a borehole's
 /// mantle or the plane splitting it, a fence curtain).
-enum class Face { none, west, east, south, north, bottom, top, plane, cylinder,
-                  fence, split };
+enum class Face : uint8_t { none, west, east, south, north, bottom, top, plane,
+                            cylinder, fence, split };
 
 /// Outward unit normal of a cell face (zero for the other faces).
 glm::dvec3 face_normal(Face face);
 
 /// \brief What a ray meets: its first opaque hit (t in map units along the
-/// ray), and the light of the translucent strata in front of it.
+/// ray), and the light of the translucent strata in front of it. One per
+/// pixel, so kept small (72 bytes): the position in double precision, the
+/// shading terms in single.
 struct Hit {
     double t = std::numeric_limits<double>::infinity();
-    uint32_t material = EMPTY;
-    Face face = Face::none;
-    int plane = -1; ///< the clip plane hit, with Face::plane
     glm::dvec3 point{0}; ///< real (unexaggerated) map coordinates
-    glm::dvec3 normal{0};
+    glm::vec3 normal{0};
     /// Colour (0..1, premultiplied) the translucent strata add in front of
     /// the hit, and the share of the hit's (or background's) light that
     /// reaches the camera through them.
-    glm::dvec3 veil{0};
-    double transmittance = 1;
+    glm::vec3 veil{0};
+    float transmittance = 1;
+    uint32_t material = EMPTY;
+    Face face = Face::none;
+    int8_t plane = -1; ///< the clip plane hit, with Face::plane
     bool is_hit() const { return material != EMPTY; }
 };
 

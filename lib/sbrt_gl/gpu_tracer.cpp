@@ -90,9 +90,9 @@ std::string GpuTracer::gl_renderer() const
     return reinterpret_cast<const char *>(gl_.GetString(GL_RENDERER));
 }
 
-std::vector<sbrt::Hit> GpuTracer::trace_image(const sbrt::Camera &camera,
-                                              unsigned cpu_threads,
-                                              uint32_t loop_budget)
+sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
+                                      unsigned cpu_threads,
+                                      uint32_t loop_budget)
 {
     const double upload_ms = stats_.upload_ms;
     stats_ = GpuStats();
@@ -130,7 +130,7 @@ std::vector<sbrt::Hit> GpuTracer::trace_image(const sbrt::Camera &camera,
     }
 
     const auto start = Clock::now();
-    std::vector<sbrt::Hit> hits(records.size());
+    sbrt::HitImage hits(records.size());
     std::vector<size_t> over_per_row(size_t(rows), 0);
     sbrt::for_each_row(rows, cpu_threads, [&](int row) {
         for (int col = 0; col < cols; ++col) {

@@ -16,6 +16,7 @@
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
 #include "gpu_layout.hpp"
+#include "hit_image.hpp"
 
 namespace sbrt_gl {
 
@@ -33,9 +34,9 @@ public:
     /// Needs the context current on this thread; uploads the model.
     GpuTracer(const GlContext &context, const sbrt::Tracer &tracer);
 
-    std::vector<sbrt::Hit> trace_image(const sbrt::Camera &camera,
-                                       unsigned cpu_threads = 0,
-                                       uint32_t loop_budget = sbrt::GPU_LOOP_BUDGET);
+    sbrt::HitImage trace_image(const sbrt::Camera &camera,
+                               unsigned cpu_threads = 0,
+                               uint32_t loop_budget = sbrt::GPU_LOOP_BUDGET);
 
     std::string gl_version() const;
     std::string gl_renderer() const;

@@ -44,8 +44,8 @@ inline Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
                          const Camera &camera, double depth_tolerance,
                   size_t *over_budget, uint32_t budget)
 {
-    const std::vector<Hit> want = trace_image(tracer, camera, 2);
-    const std::vector<Hit> got = gpu.trace_image(camera, 2, budget);
+    const HitImage want = trace_image(tracer, camera, 2);
+    const HitImage got = gpu.trace_image(camera, 2, budget);
     if (over_budget)
         *over_budget = gpu.stats().over_budget;
     Agreement a;

@@ -201,14 +201,14 @@ TEST_P(Gpu, AgreesOnTranslucentStrata)
         for (const Camera &camera :
              {Camera::perspective(c + glm::dvec3(0.5, -0.7, 0.45) * size, c, 40, 70, 90),
               sbrt_test::top_camera(m.frame(), m.frame().top + size)}) {
-            const std::vector<Hit> want = trace_image(tracer, camera, 2);
-            const std::vector<Hit> got = gpu.trace_image(camera, 2);
+            const HitImage want = trace_image(tracer, camera, 2);
+            const HitImage got = gpu.trace_image(camera, 2);
             size_t agreeing = 0, veiled = 0;
             for (size_t i = 0; i < want.size(); ++i) {
                 veiled += want[i].transmittance < 0.99;
-                double worst = std::fabs(want[i].transmittance - got[i].transmittance);
+                double worst = std::fabs(double(want[i].transmittance) - got[i].transmittance);
                 for (int k = 0; k < 3; ++k)
-                    worst = std::max(worst, std::fabs(want[i].veil[k] - got[i].veil[k]));
+                    worst = std::max(worst, std::fabs(double(want[i].veil[k]) - got[i].veil[k]));
                 agreeing += want[i].material == got[i].material && worst < 2e-3;
             }
             EXPECT_GT(veiled, want.size() / 10);
@@ -265,7 +265,7 @@ TEST_P(Gpu, LongestRayStaysWithinTheLoopBudget)
     EXPECT_EQ(over, 0u);
     EXPECT_EQ(a.agreeing, a.pixels);
     // the centre ray crosses every cell and ends on the last one's wall
-    const std::vector<Hit> hits = gpu.trace_image(camera, 1);
+    const HitImage hits = gpu.trace_image(camera, 1);
     EXPECT_EQ(m.materials()[hits[4].material].id, 3);
     EXPECT_NEAR(hits[4].point.x, cols - 1, 1e-3);
 }

@@ -60,6 +60,8 @@ Hit march(const sbrt_test::Voxels &v, const Model &m, const Translucency &tr,
           const Tracer &tracer, const Ray &ray, double t_end, double step)
 {
     Hit hit;
+    glm::dvec3 veil(0); // accumulated in double, stored as the tracer stores it
+    double transmittance = 1;
     for (double t = step / 2; t < t_end; t += step) {
         const int32_t id = voxel_class(v, tracer.unexaggerate(ray.origin + t * ray.direction));
         if (id == NULL_CLASS)
@@ -71,9 +73,11 @@ Hit march(const sbrt_test::Voxels &v, const Model &m, const Translucency &tr,
             break;
         }
         const double keep = std::exp(-tr.extinction[k] * step);
-        hit.veil += hit.transmittance * (1 - keep) * tr.color[k];
-        hit.transmittance *= keep;
+        veil += transmittance * (1 - keep) * tr.color[k];
+        transmittance *= keep;
     }
+    hit.veil = veil;
+    hit.transmittance = float(transmittance);
     return hit;
 }
 
@@ -103,12 +107,14 @@ TEST(Translucency, VerticalRaysAbsorbTheStrataThicknessExactly)
     const double zexag = 3;
     const Translucency tr = translucent(m, {-13, 1}, 0.3, 7.5);
     const Tracer tracer(m, zexag, Scene{{}, tr, {}, 0, {}, {}, true});
-    const std::vector<Hit> hits = trace_image(tracer, sbrt_test::top_camera(f, 1e4), 2);
+    const HitImage hits = trace_image(tracer, sbrt_test::top_camera(f, 1e4), 2);
     for (int row = 0; row < f.rows; ++row)
         for (int col = 0; col < f.cols; ++col) {
             // voxel by voxel from the top: each translucent voxel is tb_res
             // * zexag long for a vertical ray
             Hit want;
+            glm::dvec3 veil(0);
+            double transmittance = 1;
             for (int z = f.depths - 1; z >= 0 && !want.is_hit(); --z) {
                 const int32_t id = v.classes[(size_t(z) * f.rows + row) * f.cols + col];
                 if (id == NULL_CLASS)
@@ -119,14 +125,15 @@ TEST(Translucency, VerticalRaysAbsorbTheStrataThicknessExactly)
                     continue;
                 }
                 const double keep = std::exp(-tr.extinction[k] * f.tb_res() * zexag);
-                want.veil += want.transmittance * (1 - keep) * tr.color[k];
-                want.transmittance *= keep;
+                veil += transmittance * (1 - keep) * tr.color[k];
+                transmittance *= keep;
             }
+            // the hit keeps its shading terms in single precision
             const Hit &got = hits[size_t(row) * f.cols + col];
             ASSERT_EQ(got.material, want.material) << row << "," << col;
-            ASSERT_NEAR(got.transmittance, want.transmittance, 1e-12);
+            ASSERT_NEAR(got.transmittance, transmittance, 1e-6);
             for (int c = 0; c < 3; ++c)
-                ASSERT_NEAR(got.veil[c], want.veil[c], 1e-12);
+                ASSERT_NEAR(got.veil[c], veil[c], 1e-6);
         }
 }
 
@@ -183,7 +190,7 @@ TEST(Translucency, SplittingAStratumDoesNotChangeTheResult)
     const Tracer tracer(m, 1.0, Scene{{}, tr, {}, 0, {}, {}, true});
     const Hit hit = tracer.trace({{-10, 1.3, 2.2}, {1, 0, 0}});
     EXPECT_FALSE(hit.is_hit());
-    EXPECT_NEAR(hit.transmittance, std::pow(0.9, 20), 1e-12);
+    EXPECT_NEAR(hit.transmittance, std::pow(0.9, 20), 1e-6);
 }
 
 TEST(Boreholes, CylinderShowsTheStackAtItsPoint)
@@ -219,8 +226,8 @@ TEST(Boreholes, CylinderShowsTheStackAtItsPoint)
         EXPECT_EQ(hit.face, Face::cylinder);
         const double x_in = b.x - std::sqrt(r * r - dy * dy);
         EXPECT_NEAR(hit.point.x, x_in, 1e-9);
-        EXPECT_NEAR(hit.normal.x, -std::sqrt(1 - 0.36), 1e-9);
-        EXPECT_NEAR(hit.normal.y, 0.6, 1e-9);
+        EXPECT_NEAR(hit.normal.x, -std::sqrt(1 - 0.36), 1e-6);
+        EXPECT_NEAR(hit.normal.y, 0.6, 1e-6);
     }
     EXPECT_GT(solid, 5u);
     // a ray passing beside the cylinder meets nothing: the model is not drawn
@@ -310,7 +317,7 @@ TEST(Fence, CurtainShowsTheClassAtEachPoint)
             EXPECT_EQ(hit.face, Face::fence);
             EXPECT_NEAR(hit.t, 200, 1e-8);
             // turned towards the ray's origin, on the +normal side
-            EXPECT_NEAR(glm::dot(hit.normal, glm::dvec3(normal, 0)), 1, 1e-12);
+            EXPECT_NEAR(glm::dot(glm::dvec3(hit.normal), glm::dvec3(normal, 0)), 1, 1e-6);
         }
     EXPECT_GT(solid, 100u);
     EXPECT_GT(holes, 10u);

@@ -53,8 +53,8 @@ void expect_same_image(const Model &m, Scene scene, const Camera &camera,
     const Tracer skipping(m, zexag, scene), plain(m, zexag, walk_all);
     ASSERT_GT(skipping.pyramid().levels(), 1);
     ASSERT_EQ(plain.pyramid().levels(), 0);
-    const std::vector<Hit> got = trace_image(skipping, camera, 2);
-    const std::vector<Hit> want = trace_image(plain, camera, 2);
+    const HitImage got = trace_image(skipping, camera, 2);
+    const HitImage want = trace_image(plain, camera, 2);
     size_t differ = 0, hits = 0;
     const double tolerance = 1e-9 * 2 * plain.radius();
     for (size_t i = 0; i < want.size(); ++i) {
@@ -168,8 +168,8 @@ TEST(ScenePruning, LeavesOutWhatNoRayReachesAndKeepsTheImage)
     EXPECT_EQ(p.cut_away.bytes, p.cut_away.intervals * sizeof(Interval));
     p.model.validate();
     const Tracer pruned(p.model, 1.0, cut);
-    const std::vector<Hit> want = trace_image(tracer, camera, 2);
-    const std::vector<Hit> got = trace_image(pruned, camera, 2);
+    const HitImage want = trace_image(tracer, camera, 2);
+    const HitImage got = trace_image(pruned, camera, 2);
     size_t differ = 0, hits = 0;
     for (size_t i = 0; i < want.size(); ++i) {
         hits += want[i].is_hit();

@@ -28,8 +28,8 @@ struct Errors {
 
 Errors errors(const Tracer &tracer, const Camera &camera, const Sampling &s)
 {
-    const std::vector<Hit> exact = trace_image(tracer, camera, 2);
-    const std::vector<Hit> sampled = sample_image(tracer, camera, s, 2);
+    const HitImage exact = trace_image(tracer, camera, 2);
+    const HitImage sampled = sample_image(tracer, camera, s, 2);
     const double step_t = (s.fine_step > 0 ? s.fine_step : s.step) /
                           glm::length(tracer.local_direction({0, 0, 1}));
     Errors e;

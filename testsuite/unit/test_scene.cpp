@@ -57,7 +57,7 @@ TEST(HiddenMaterials, TopViewIsTheSubcropMap)
     const Frame &f = v.frame;
     const Tracer tracer(m, 1.0);
     const Camera cam = sbrt_test::top_camera(f, 1e4);
-    const std::vector<Hit> hits = trace_image(tracer, cam, 2);
+    const HitImage hits = trace_image(tracer, cam, 2);
     for (int row = 0; row < f.rows; ++row)
         for (int col = 0; col < f.cols; ++col) {
             const Hit &h = hits[size_t(row) * f.cols + col];
@@ -82,7 +82,7 @@ TEST(ClipPlanes, HorizontalCutIsAVoxelSlice)
             const Camera cam = Camera::top(f.north, f.south, f.east, f.west,
                                            tracer.exaggerate({0, 0, f.top}).z + 10,
                                            f.rows, f.cols);
-            const std::vector<Hit> hits = trace_image(tracer, cam, 2);
+            const HitImage hits = trace_image(tracer, cam, 2);
             for (int row = 0; row < f.rows; ++row)
                 for (int col = 0; col < f.cols; ++col) {
                     const Hit &h = hits[size_t(row) * f.cols + col];
@@ -112,7 +112,7 @@ TEST(ClipPlanes, RemovedSideIsWhereTheNormalPoints)
     // removing everything east of the middle: rays there miss
     const Tracer tracer(m, 1.0, {{mid, {1, 0, 0}}});
     const Camera cam = sbrt_test::top_camera(f, 1e4);
-    const std::vector<Hit> hits = trace_image(tracer, cam, 1);
+    const HitImage hits = trace_image(tracer, cam, 1);
     for (int row = 0; row < f.rows; ++row)
         for (int col = f.cols / 2; col < f.cols; ++col)
             EXPECT_FALSE(hits[size_t(row) * f.cols + col].is_hit());

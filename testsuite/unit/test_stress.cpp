@@ -31,8 +31,8 @@ void stress(const char *name, const Tracer &tracer, const Camera &camera,
     static std::unique_ptr<sbrt_gl::GlContext> context = make_context("egl");
     ASSERT_TRUE(context);
     sbrt_gl::GpuTracer gpu(*context, tracer);
-    const std::vector<Hit> want = trace_image(tracer, camera, 2);
-    const std::vector<Hit> got = gpu.trace_image(camera, 2);
+    const HitImage want = trace_image(tracer, camera, 2);
+    const HitImage got = gpu.trace_image(camera, 2);
     const double size = 2 * tracer.radius();
     size_t hits = 0, agreeing = 0;
     double worst = 0;
