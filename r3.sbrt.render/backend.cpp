@@ -52,8 +52,15 @@ sbrt::HitImage trace_on_gpu(const RenderRequest &request,
                             const sbrt::Camera &camera,
                             const sbrt_gl::GlContext &context)
 {
-    sbrt_gl::GpuTracer gpu(context, tracer);
+    sbrt_gl::GpuTracer gpu(context, tracer, sbrt::parse_gpu_layout(request.gpu_layout));
     G_verbose_message(_("Backend: %s"), context.name().c_str());
+    const sbrt::GpuMemory &m = gpu.memory();
+    G_verbose_message(_("GPU memory, layout=%s: %llu bytes (index %llu, intervals "
+                        "%llu), of which %llu hold nothing"),
+                      sbrt::gpu_layout_name(gpu.layout()),
+                      (unsigned long long)m.total(), (unsigned long long)m.index_bytes,
+                      (unsigned long long)m.interval_bytes,
+                      (unsigned long long)m.waste_bytes);
     G_verbose_message(_("GL_VERSION: %s"), gpu.gl_version().c_str());
     G_verbose_message(_("GL_RENDERER: %s"), gpu.gl_renderer().c_str());
     sbrt::HitImage hits =

@@ -294,6 +294,12 @@ RenderOptions define_render_options()
           "egl;OpenGL compute shader, headless EGL context;"
           "osmesa;OpenGL compute shader, OSMesa context (Mesa < 25.1);"
           "cpu;Exact multithreaded CPU ray caster"));
+    o->gpu_layout = define_choice(
+        "layout", _("How the GPU holds the model (OpenGL backends)"), _("Settings"),
+        "ssbo", "ssbo,textures",
+        _("ssbo;two storage buffers, cell offsets and intervals (5-SSBO);"
+          "textures;an index texture over the grid and the intervals packed "
+          "into a 2D texture (1-Textures; grids up to the largest texture)"));
     o->nprocs = G_define_standard_option(G_OPT_M_NPROCS);
     o->nprocs->answer = const_cast<char *>("0");
     o->nprocs->description = _("Number of threads (0: all cores)");
@@ -439,6 +445,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (!(r.texture_blend >= 0 && r.texture_blend <= 1))
         G_fatal_error(_("texture_blend=%g must lie in 0..1"), r.texture_blend);
     r.backend = o->backend->answer;
+    r.gpu_layout = o->gpu_layout->answer;
     r.walk_every_cell = o->walk_every_cell->answer;
     r.threads = std::atoi(o->nprocs->answer);
     if (r.threads < 0)

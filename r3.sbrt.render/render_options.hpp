@@ -45,6 +45,7 @@ struct RenderRequest {
     std::vector<std::string> texture;        ///< one map, or red,green,blue
     double texture_blend = 1;
     std::string backend = "auto";
+    std::string gpu_layout = "ssbo";         ///< layout=: ssbo or textures
     int threads = 0;
     bool walk_every_cell = false;            ///< -e: no empty-space skipping
 };
@@ -61,7 +62,7 @@ struct RenderOptions {
         *log_class, *log_reference;
     Flag *boreholes_only, *split_logs;
     Option *texture, *texture_blend;
-    Option *backend, *nprocs;
+    Option *backend, *gpu_layout, *nprocs;
     Flag *walk_every_cell;
 };
 

@@ -81,6 +81,9 @@ void main()
     if (pixel.x >= image_cols || row >= image_rows || pixel.y >= options.w)
         return;
     uint index = pixel.y * image_cols + pixel.x;
+#ifdef SBRT_TEXTURES
+    interval_texture_width = uint(textureSize(interval_texture, 0).x);
+#endif
     float x = (float(pixel.x) + 0.5) / float(image_cols) * 2.0 - 1.0;
     float y = 1.0 - (float(row) + 0.5) / float(image_rows) * 2.0;
 
@@ -152,13 +155,13 @@ void main()
                 ? from_origin(float(iy + (d.y > 0.0 ? 1 : 0)), hi.y, lo.y) / d.y
                 : 1.0 / 0.0;
             t_out = min(min(t_max_x, t_max_y), t_far);
-            uint cell = uint(rows - 1 - iy) * uint(cols) + uint(ix);
-            first = offsets[cell];
-            last = offsets[cell + 1u];
+            uvec2 stack = stack_range(ix, rows - 1 - iy);
+            first = stack.x;
+            last = stack.y;
             z_in = (hi.z + t_in * d.z) + lo.z;
             z_out = (hi.z + t_out * d.z) + lo.z;
             // nothing to find where the ray stays at or above the stack's top
-            if (first == last || min(z_in, z_out) >= intervals[last - 1u].top) {
+            if (first == last || min(z_in, z_out) >= interval_top(last - 1u)) {
                 next_cell = true;
             }
             else {
@@ -171,7 +174,7 @@ void main()
             // descending: first top >= z_in (intervals are (bottom, top]);
             // else first top > z_in (intervals are [bottom, top))
             uint mid = (low + high) / 2u;
-            float top = intervals[mid].top;
+            float top = interval_top(mid);
             if (d.z < 0.0 ? top < z_in : !(z_in < top))
                 low = mid + 1u;
             else
@@ -187,16 +190,16 @@ void main()
             // entering through the wall (j == k), its top (descending) or
             // its bottom (ascending)
             bool down = d.z < 0.0;
-            if (!down && (j == last || (j != k && !(intervals[j - 1u].top < z_out)))) {
+            if (!down && (j == last || (j != k && !(interval_top(j - 1u) < z_out)))) {
                 next_cell = true; // ascending: out of the cell before j
             }
             else {
-                uint material = j != last ? intervals[j].material : 0u;
+                uint material = j != last ? interval_material(j) : 0u;
                 if (material != 0u) {
                     float t_enter = t_in;
                     uint face = wall;
                     if (j != k) {
-                        float z = down ? intervals[j].top : intervals[j - 1u].top;
+                        float z = down ? interval_top(j) : interval_top(j - 1u);
                         t_enter = from_origin(z, hi.z, lo.z) / d.z;
                         face = down ? FACE_TOP : FACE_BOTTOM;
                     }
@@ -207,9 +210,9 @@ void main()
                     }
                     float t_exit = t_out;
                     if (down && j > first)
-                        t_exit = min(t_out, from_origin(intervals[j - 1u].top, hi.z, lo.z) / d.z);
+                        t_exit = min(t_out, from_origin(interval_top(j - 1u), hi.z, lo.z) / d.z);
                     else if (!down && d.z != 0.0)
-                        t_exit = min(t_out, from_origin(intervals[j].top, hi.z, lo.z) / d.z);
+                        t_exit = min(t_out, from_origin(interval_top(j), hi.z, lo.z) / d.z);
                     if (absorb(look, max(t_exit - t_enter, 0.0) * length_per_t)) {
                         finish(index, vec3(0.0), 0u);
                         return;
@@ -217,7 +220,7 @@ void main()
                 }
                 // on to the next interval the ray reaches in this cell
                 if (down) {
-                    if (j == first || !(intervals[j - 1u].top > z_out))
+                    if (j == first || !(interval_top(j - 1u) > z_out))
                         next_cell = true;
                     else
                         j -= 1u;

@@ -118,6 +118,29 @@ class TestRenderTopView(TestCase):
                 self.assertEqual(int(disagree["n"]), cells)
         self.runModule("g.region", region="geo_region")
 
+    def test_texture_layout_gives_the_same_maps(self):
+        """layout=textures (1-Textures) against layout=ssbo and the CPU."""
+        self.runModule("g.region", rows=70, cols=90)
+        view = dict(azimuth=100, elevation=25)
+        for layout in ("ssbo", "textures"):
+            self.assertModule(
+                "r3.sbrt.render", input="geo", output=f"lay_{layout}",
+                material=f"lay_{layout}_m", depth=f"lay_{layout}_d", backend="egl",
+                layout=layout, overwrite=True, **view,
+            )
+        self.render_pair("egl", **view)
+        self.assertEqual(self.differing_cells("lay_ssbo_m", "lay_textures_m"), 0)
+        self.assertRastersNoDifference("lay_ssbo_d", "lay_textures_d", precision=0)
+        self.assertLessEqual(self.differing_cells("cpu_mat", "lay_textures_m"),
+                             70 * 90 // 1000)
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=geo", "output=lay_v", "backend=egl",
+             "layout=textures", "--overwrite", "--verbose"],
+            capture_output=True, text=True, check=True,
+        )
+        self.assertIn("GPU memory, layout=textures:", run.stderr)
+        self.runModule("g.region", region="geo_region")
+
     def test_gl_top_view_is_topmost_voxel(self):
         self.assertModule(
             "r3.sbrt.render", input="geo", output="gtop", view="top",

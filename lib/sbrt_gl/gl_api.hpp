@@ -43,6 +43,13 @@ namespace sbrt_gl {
     X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                            \
     X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                              \
     X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                                  \
+    X(PFNGLGENTEXTURESPROC, GenTextures)                                      \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                \
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                  \
+    X(PFNGLBINDTEXTUREPROC, BindTexture)                                      \
+    X(PFNGLTEXSTORAGE2DPROC, TexStorage2D)                                    \
+    X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                                  \
+    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                  \
     X(PFNGLFINISHPROC, Finish)
 
 /// \brief Entry points of one context; call as gl.GetString(...).

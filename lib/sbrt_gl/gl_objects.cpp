@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "gl_objects.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "error.hpp"
@@ -52,6 +53,39 @@ void GlBuffer::download(void *data, size_t bytes) const
     gl_->BindBuffer(target_, name_);
     gl_->GetBufferSubData(target_, 0, GLsizeiptr(bytes), data);
     check_gl(*gl_, "reading a buffer back");
+}
+
+GlUintTexture::GlUintTexture(const GlApi &gl, int cols, int rows,
+                             const uint32_t *texels)
+    : gl_(&gl)
+{
+    gl.GenTextures(1, &name_);
+    gl.BindTexture(GL_TEXTURE_2D, name_);
+    gl.TexStorage2D(GL_TEXTURE_2D, 1, GL_RG32UI, std::max(cols, 1), std::max(rows, 1));
+    // integer textures are complete with nearest filtering only
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    if (cols > 0 && rows > 0)
+        gl.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, cols, rows, GL_RG_INTEGER,
+                         GL_UNSIGNED_INT, texels);
+    const GLenum error = gl.GetError();
+    if (error != GL_NO_ERROR) {
+        gl.DeleteTextures(1, &name_);
+        sbrt::fail("OpenGL: cannot make a texture of ", cols, " x ", rows,
+                   " texels (error 0x", std::hex, error, ")");
+    }
+}
+
+GlUintTexture::~GlUintTexture()
+{
+    if (name_)
+        gl_->DeleteTextures(1, &name_);
+}
+
+void GlUintTexture::bind(GLuint unit) const
+{
+    gl_->ActiveTexture(GL_TEXTURE0 + unit);
+    gl_->BindTexture(GL_TEXTURE_2D, name_);
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #ifndef SBRT_GL_OBJECTS_HPP
 #define SBRT_GL_OBJECTS_HPP
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -40,6 +41,29 @@ private:
     GLenum target_;
     GLuint name_ = 0;
     size_t bytes_;
+};
+
+/// \brief An immutable 2D texture of two 32-bit unsigned integers per texel
+/// (GL_RG32UI, one level, nearest texel), read by texelFetch from a
+/// usampler2D; bind() puts it on a texture unit.
+class GlUintTexture {
+public:
+    /// `texels` holds 2 * cols * rows values, row 0 first.
+    GlUintTexture(const GlApi &gl, int cols, int rows, const uint32_t *texels);
+    ~GlUintTexture();
+    GlUintTexture(GlUintTexture &&other) noexcept
+        : gl_(other.gl_), name_(std::exchange(other.name_, 0))
+    {
+    }
+    GlUintTexture(const GlUintTexture &) = delete;
+    GlUintTexture &operator=(const GlUintTexture &) = delete;
+    GlUintTexture &operator=(GlUintTexture &&) = delete;
+
+    void bind(GLuint unit) const;
+
+private:
+    const GlApi *gl_;
+    GLuint name_ = 0;
 };
 
 /// \brief A linked compute program from source strings concatenated in

@@ -46,6 +46,14 @@ size_t checked_bytes(size_t bytes, size_t limit, const char *what)
     return bytes;
 }
 
+/// The largest width and height of a 2D texture.
+int max_texture_side(const GlApi &gl)
+{
+    GLint side = 0;
+    gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &side);
+    return std::max(side, 1);
+}
+
 /// How each material looks (binding 3).
 GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 {
@@ -59,22 +67,34 @@ GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 
 } // namespace
 
-GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer)
+GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
+                     sbrt::GpuLayout layout)
     : created_(Clock::now()), tracer_(tracer), gl_(context),
-      max_block_bytes_(check_version(gl_, context.name())),
-      program_(gl_, {"#version 450\n", SHADER_COMMON_LAYOUT, SHADER_RAYCAST}),
-      offsets_(gl_, GL_SHADER_STORAGE_BUFFER,
-               checked_bytes(tracer.model().offsets().size() * sizeof(uint32_t),
-                             max_block_bytes_, "cell offsets"),
-               tracer.model().offsets().data()),
-      intervals_(gl_, GL_SHADER_STORAGE_BUFFER,
-                 checked_bytes(tracer.model().intervals().size() *
-                                   sizeof(sbrt::Interval),
-                               max_block_bytes_, "intervals"),
-                 tracer.model().intervals().data()),
+      max_block_bytes_(check_version(gl_, context.name())), layout_(layout),
+      memory_(sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl_))),
+      program_(gl_, {"#version 450\n",
+                     layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
+                     SHADER_COMMON_LAYOUT, SHADER_RAYCAST}),
       materials_(material_buffer(gl_, tracer)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView))
 {
+    const sbrt::Model &model = tracer.model();
+    if (layout == sbrt::GpuLayout::ssbo) {
+        offsets_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                         checked_bytes(memory_.index_bytes, max_block_bytes_, "cell offsets"),
+                         model.offsets().data());
+        intervals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                           checked_bytes(memory_.interval_bytes, max_block_bytes_,
+                                         "intervals"),
+                           model.intervals().data());
+    }
+    else {
+        const sbrt::Frame &f = model.frame();
+        index_texture_.emplace(gl_, f.cols, f.rows, sbrt::index_texels(model).data());
+        interval_texture_.emplace(
+            gl_, memory_.texture_cols, memory_.texture_rows,
+            sbrt::interval_texels(model, memory_.texture_cols, memory_.texture_rows).data());
+    }
     gl_.Finish();
     check_gl(gl_, "uploading the model");
     stats_.upload_ms = ms_since(created_); // with compiling the shader
@@ -107,8 +127,14 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
 
     sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget);
     program_.use();
-    offsets_.bind(0);
-    intervals_.bind(1);
+    if (layout_ == sbrt::GpuLayout::ssbo) {
+        offsets_->bind(0);
+        intervals_->bind(1);
+    }
+    else {
+        index_texture_->bind(0);
+        interval_texture_->bind(1);
+    }
     band.bind(2);
     materials_.bind(3);
     view_.bind(0);

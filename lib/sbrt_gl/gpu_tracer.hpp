@@ -10,12 +10,14 @@
 #define SBRT_GL_GPU_TRACER_HPP
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
 #include "gpu_layout.hpp"
+#include "gpu_memory_layout.hpp"
 #include "hit_image.hpp"
 
 namespace sbrt_gl {
@@ -31,8 +33,10 @@ struct GpuStats {
 
 class GpuTracer {
 public:
-    /// Needs the context current on this thread; uploads the model.
-    GpuTracer(const GlContext &context, const sbrt::Tracer &tracer);
+    /// Needs the context current on this thread; uploads the model in
+    /// `layout`.
+    GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
+              sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo);
 
     sbrt::HitImage trace_image(const sbrt::Camera &camera,
                                unsigned cpu_threads = 0,
@@ -41,6 +45,9 @@ public:
     std::string gl_version() const;
     std::string gl_renderer() const;
     const GpuStats &stats() const { return stats_; }
+    /// What the model takes on the GPU in its layout.
+    const sbrt::GpuMemory &memory() const { return memory_; }
+    sbrt::GpuLayout layout() const { return layout_; }
     const GlApi &gl() const { return gl_; }
     GLuint program() const { return program_.name(); }
 
@@ -49,8 +56,13 @@ private:
     const sbrt::Tracer &tracer_;
     GlApi gl_;
     size_t max_block_bytes_;
+    sbrt::GpuLayout layout_;
+    sbrt::GpuMemory memory_;
     GlComputeProgram program_;
-    GlBuffer offsets_, intervals_, materials_, view_;
+    /// the model: two buffers (ssbo) or two textures (textures)
+    std::optional<GlBuffer> offsets_, intervals_;
+    std::optional<GlUintTexture> index_texture_, interval_texture_;
+    GlBuffer materials_, view_;
     GpuStats stats_;
 };
 

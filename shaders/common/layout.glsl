@@ -29,14 +29,48 @@ layout(std140, binding = 0) uniform View {
     uvec4 counts;       // x: clip planes
 };
 
-// The model: offsets[cell] .. offsets[cell + 1] index the intervals of a
-// cell's stack, bottom to top; cell = row_from_north * cols + col.
+// The model, in one of two layouts (section 4.2 of Graciano et al.), read
+// through stack_range, interval_material and interval_top. A cell's stack
+// is the intervals [first, last), bottom to top; an interval is its
+// material (index into the material table, 0 = empty) and its top (local z).
+#ifdef SBRT_TEXTURES
+// 1-Textures: texel (col, row from the north) of the index texture holds
+// the cell's first interval and count; texel (j % width, j / width) of the
+// interval texture holds interval j's material and the bits of its top.
+layout(binding = 0) uniform usampler2D index_texture;
+layout(binding = 1) uniform usampler2D interval_texture;
+uint interval_texture_width = 1u; // set once per invocation by main
+
+uvec2 stack_range(int col, int row_from_north)
+{
+    uvec2 texel = texelFetch(index_texture, ivec2(col, row_from_north), 0).rg;
+    return uvec2(texel.x, texel.x + texel.y);
+}
+uvec2 interval_texel(uint j)
+{
+    return texelFetch(interval_texture,
+                      ivec2(j % interval_texture_width, j / interval_texture_width), 0).rg;
+}
+uint interval_material(uint j) { return interval_texel(j).x; }
+float interval_top(uint j) { return uintBitsToFloat(interval_texel(j).y); }
+#else
+// 5-SSBO: offsets[cell] .. offsets[cell + 1], cell = row_from_north * cols
+// + col, index the intervals buffer.
 struct Interval {
-    uint material;      // index into the material table, 0 = empty
-    float top;          // local z
+    uint material;
+    float top;
 };
 layout(std430, binding = 0) readonly buffer Offsets { uint offsets[]; };
 layout(std430, binding = 1) readonly buffer Intervals { Interval intervals[]; };
+
+uvec2 stack_range(int col, int row_from_north)
+{
+    uint cell = uint(row_from_north) * grid.x + uint(col);
+    return uvec2(offsets[cell], offsets[cell + 1u]);
+}
+uint interval_material(uint j) { return intervals[j].material; }
+float interval_top(uint j) { return intervals[j].top; }
+#endif
 
 // How each material looks: rgb colour (0..1) and its Beer-Lambert
 // extinction per exaggerated map unit; negative for an opaque material.

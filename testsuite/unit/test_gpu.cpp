@@ -7,7 +7,10 @@
  ****************************************************************************/
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <memory>
+#include <string>
+#include <tuple>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -17,6 +20,7 @@
 #include "gpu_tracer.hpp"
 #include "hidden_materials.hpp"
 #include "gpu_compare.hpp"
+#include "gpu_memory_layout.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;
@@ -24,23 +28,31 @@ using namespace sbrt_test;
 
 namespace {
 
-class Gpu : public ::testing::TestWithParam<const char *> {
+/// Each test runs on every GL backend and in both GPU memory layouts.
+class Gpu : public ::testing::TestWithParam<std::tuple<const char *, GpuLayout>> {
 protected:
     void SetUp() override
     {
-        context_ = make_context(GetParam());
+        context_ = make_context(std::get<0>(GetParam()));
         if (!context_)
             GTEST_FAIL();
     }
+    GpuLayout layout() const { return std::get<1>(GetParam()); }
     std::unique_ptr<sbrt_gl::GlContext> context_;
 };
 
-INSTANTIATE_TEST_SUITE_P(Backends, Gpu,
-                         ::testing::Values("egl"
+INSTANTIATE_TEST_SUITE_P(
+    Backends, Gpu,
+    ::testing::Combine(::testing::Values("egl"
 #ifdef SBRT_HAVE_OSMESA
-                                           , "osmesa"
+                                         , "osmesa"
 #endif
-                                           ));
+                                         ),
+                       ::testing::Values(GpuLayout::ssbo, GpuLayout::textures)),
+    [](const auto &info) {
+        return std::string(std::get<0>(info.param)) + "_" +
+               gpu_layout_name(std::get<1>(info.param));
+    });
 
 } // namespace
 
@@ -48,7 +60,7 @@ TEST_P(Gpu, ReportsItsVersionAndRenderer)
 {
     const Model m = geology(8, 8, 6);
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer);
+    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
     EXPECT_NE(gpu.gl_version().find("4."), std::string::npos) << gpu.gl_version();
     EXPECT_FALSE(gpu.gl_renderer().empty());
 }
@@ -57,7 +69,7 @@ TEST_P(Gpu, BlockLayoutMatchesTheShader)
 {
     const Model m = geology(4, 4, 4);
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer);
+    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
     const sbrt_gl::GlApi &gl = gpu.gl();
     auto offset_of = [&](GLenum interface, const char *name) {
         const GLuint index = gl.GetProgramResourceIndex(gpu.program(), interface, name);
@@ -80,10 +92,6 @@ TEST_P(Gpu, BlockLayoutMatchesTheShader)
     EXPECT_EQ(offset_of(GL_UNIFORM, "options"), int(offsetof(GpuView, options)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "planes[0]"), int(offsetof(GpuView, planes)));
     EXPECT_EQ(offset_of(GL_UNIFORM, "counts"), int(offsetof(GpuView, counts)));
-    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "intervals[0].material"),
-              int(offsetof(Interval, material)));
-    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "intervals[0].top"),
-              int(offsetof(Interval, top)));
     EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "hits[0].point"),
               int(offsetof(GpuPixelHit, point)));
     EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "hits[0].code"),
@@ -91,17 +99,33 @@ TEST_P(Gpu, BlockLayoutMatchesTheShader)
     EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "hits[0].veil"),
               int(offsetof(GpuPixelHit, veil)));
     const GLenum stride = GL_TOP_LEVEL_ARRAY_STRIDE;
-    GLint hit_stride = 0, interval_stride = 0;
+    GLint hit_stride = 0;
     gl.GetProgramResourceiv(
         gpu.program(), GL_BUFFER_VARIABLE,
         gl.GetProgramResourceIndex(gpu.program(), GL_BUFFER_VARIABLE, "hits[0].point"),
         1, &stride, 1, nullptr, &hit_stride);
+    EXPECT_EQ(hit_stride, int(sizeof(GpuPixelHit)));
+    if (layout() == GpuLayout::textures) {
+        // the model is read from the two textures, not from buffers
+        EXPECT_NE(gl.GetProgramResourceIndex(gpu.program(), GL_UNIFORM, "index_texture"),
+                  GL_INVALID_INDEX);
+        EXPECT_NE(gl.GetProgramResourceIndex(gpu.program(), GL_UNIFORM, "interval_texture"),
+                  GL_INVALID_INDEX);
+        EXPECT_EQ(gl.GetProgramResourceIndex(gpu.program(), GL_BUFFER_VARIABLE,
+                                             "intervals[0].top"),
+                  GL_INVALID_INDEX);
+        return;
+    }
+    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "intervals[0].material"),
+              int(offsetof(Interval, material)));
+    EXPECT_EQ(offset_of(GL_BUFFER_VARIABLE, "intervals[0].top"),
+              int(offsetof(Interval, top)));
+    GLint interval_stride = 0;
     gl.GetProgramResourceiv(
         gpu.program(), GL_BUFFER_VARIABLE,
         gl.GetProgramResourceIndex(gpu.program(), GL_BUFFER_VARIABLE,
                                    "intervals[0].top"),
         1, &stride, 1, nullptr, &interval_stride);
-    EXPECT_EQ(hit_stride, int(sizeof(GpuPixelHit)));
     EXPECT_EQ(interval_stride, int(sizeof(Interval)));
 }
 
@@ -110,7 +134,7 @@ TEST_P(Gpu, AgreesWithTheCpuTracerFromManyCameras)
     const Model m = geology(48, 64, 30);
     for (double zexag : {1.0, 3.0}) {
         const Tracer tracer(m, zexag);
-        sbrt_gl::GpuTracer gpu(*context_, tracer);
+        sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
         const glm::dvec3 c = tracer.centre(), lo = tracer.corner(0),
                          hi = tracer.corner(7);
         const double size = glm::length(hi - lo);
@@ -166,7 +190,7 @@ TEST_P(Gpu, AgreesWithClipPlanesAndHiddenMaterials)
     };
     for (size_t n = 1; n <= planes.size(); ++n) {
         const Tracer tracer(m, 2.0, {planes.begin(), planes.begin() + n});
-        sbrt_gl::GpuTracer gpu(*context_, tracer);
+        sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
         const glm::dvec3 c = tracer.centre();
         const double size = 2 * tracer.radius();
         size_t over = 0;
@@ -195,7 +219,7 @@ TEST_P(Gpu, AgreesOnTranslucentStrata)
     }
     for (double zexag : {1.0, 3.0}) {
         const Tracer tracer(m, zexag, Scene{{}, tr, {}, 0, {}, {}, true});
-        sbrt_gl::GpuTracer gpu(*context_, tracer);
+        sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
         const glm::dvec3 c = tracer.centre();
         const double size = 2 * tracer.radius();
         for (const Camera &camera :
@@ -224,7 +248,7 @@ TEST_P(Gpu, AgreesOnRandomModels)
         const auto v = sbrt_test::random_voxels(seed, 20 + seed, 17 + 2 * seed, 25);
         const Model m = sbrt_test::build_model(v);
         const Tracer tracer(m, 2.0);
-        sbrt_gl::GpuTracer gpu(*context_, tracer);
+        sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
         const glm::dvec3 c = tracer.centre();
         const double size = 2 * tracer.radius();
         for (double az = 0.3; az < 6.28; az += 1.1) {
@@ -258,7 +282,7 @@ TEST_P(Gpu, LongestRayStaysWithinTheLoopBudget)
                 v.classes[(size_t(z) * rows + r) * cols + c] = 1 + z;
     const Model m = sbrt_test::build_model(v);
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer);
+    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
     const Camera camera = Camera::orthographic({-10, 2, 2.5}, {cols, 2, 2.5}, 1.0, 3, 3);
     size_t over = 0;
     const Agreement a = compare(gpu, tracer, camera, &over);
@@ -274,7 +298,7 @@ TEST_P(Gpu, RaysOverTheBudgetAreTracedOnTheCpu)
 {
     const Model m = geology(40, 50, 20);
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer);
+    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
     const glm::dvec3 c = tracer.centre();
     const double size = 2 * tracer.radius();
     const Camera camera = Camera::perspective(c + glm::dvec3(-0.4, -0.5, 0.3) * size,
@@ -289,4 +313,43 @@ TEST_P(Gpu, RaysOverTheBudgetAreTracedOnTheCpu)
 TEST(GpuContext, UnknownBackendIsAnError)
 {
     EXPECT_THROW(sbrt_gl::create_gl_context("vulkan"), Error);
+}
+
+TEST(GpuMemoryLayout, TexturesHoldEveryIntervalWithLessThanARowWasted)
+{
+    const Model m = geology(30, 41, 20);
+    const uint64_t n = m.intervals().size();
+    const GpuMemory ssbo = gpu_memory(m, GpuLayout::ssbo, 16384);
+    EXPECT_EQ(ssbo.index_bytes, (m.frame().cells() + 1) * 4);
+    EXPECT_EQ(ssbo.interval_bytes, n * 8);
+    EXPECT_EQ(ssbo.waste_bytes, 0u);
+    for (int max_side : {16384, 128, 82}) {
+        const GpuMemory tex = gpu_memory(m, GpuLayout::textures, max_side);
+        EXPECT_LE(tex.texture_cols, max_side);
+        EXPECT_GE(uint64_t(tex.texture_cols) * tex.texture_rows, n);
+        EXPECT_LT(uint64_t(tex.texture_cols) * (tex.texture_rows - 1), n);
+        EXPECT_EQ(tex.index_bytes, m.frame().cells() * 8);
+        EXPECT_EQ(tex.waste_bytes, tex.interval_bytes - n * 8);
+        // the texels hold each interval where the shader looks for it
+        const std::vector<uint32_t> texels =
+            interval_texels(m, tex.texture_cols, tex.texture_rows);
+        for (uint64_t j = 0; j < n; j += 7) {
+            const size_t x = j % tex.texture_cols, y = j / tex.texture_cols;
+            const size_t at = 2 * (y * tex.texture_cols + x);
+            EXPECT_EQ(texels[at], m.intervals()[j].material);
+            float top;
+            std::memcpy(&top, &texels[at + 1], sizeof top);
+            EXPECT_EQ(top, m.intervals()[j].top);
+        }
+    }
+    const std::vector<uint32_t> index = index_texels(m);
+    for (uint64_t cell = 0; cell < m.frame().cells(); ++cell) {
+        EXPECT_EQ(index[2 * cell], m.stack_begin(cell));
+        EXPECT_EQ(index[2 * cell] + index[2 * cell + 1], m.stack_end(cell));
+    }
+    // a grid wider than the largest texture, too many intervals: clear errors
+    ASSERT_EQ(n, 6578u); // needs 82 x 81 texels at least
+    EXPECT_THROW(gpu_memory(m, GpuLayout::textures, 40), Error);
+    EXPECT_THROW(gpu_memory(m, GpuLayout::textures, 80), Error);
+    EXPECT_THROW(parse_gpu_layout("3d-texture"), Error);
 }

@@ -1,0 +1,90 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   GPU memory layouts of a model: texels, memory, waste
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_memory_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "error.hpp"
+
+namespace sbrt {
+
+GpuLayout parse_gpu_layout(const std::string &name)
+{
+    if (name == "ssbo")
+        return GpuLayout::ssbo;
+    if (name == "textures")
+        return GpuLayout::textures;
+    fail("GPU layout '", name, "' is neither ssbo nor textures");
+}
+
+const char *gpu_layout_name(GpuLayout layout)
+{
+    return layout == GpuLayout::ssbo ? "ssbo" : "textures";
+}
+
+void interval_texture_size(uint64_t intervals, int max_side, int &cols, int &rows)
+{
+    const uint64_t side = uint64_t(max_side);
+    if (intervals > side * side)
+        fail("the model's ", intervals, " intervals do not fit a ", max_side, " x ",
+             max_side, " texture, this GPU's largest: use layout=ssbo");
+    const uint64_t n = std::max<uint64_t>(intervals, 1);
+    uint64_t c = uint64_t(std::ceil(std::sqrt(double(n))));
+    while (c * c < n) // sqrt of a large integer may round down
+        ++c;
+    c = std::min(c, side);
+    cols = int(c);
+    rows = int((n + c - 1) / c);
+}
+
+GpuMemory gpu_memory(const Model &model, GpuLayout layout, int max_side)
+{
+    const Frame &f = model.frame();
+    const uint64_t n = model.intervals().size();
+    GpuMemory m;
+    if (layout == GpuLayout::ssbo) {
+        m.index_bytes = model.offsets().size() * sizeof(uint32_t);
+        m.interval_bytes = n * sizeof(Interval);
+        return m;
+    }
+    if (f.cols > max_side || f.rows > max_side)
+        fail("the grid of ", f.cols, " x ", f.rows, " cells exceeds this GPU's largest "
+             "texture (", max_side, " x ", max_side, "): use layout=ssbo");
+    interval_texture_size(n, max_side, m.texture_cols, m.texture_rows);
+    m.index_bytes = f.cells() * TEXEL_BYTES;
+    m.interval_bytes = uint64_t(m.texture_cols) * m.texture_rows * TEXEL_BYTES;
+    m.waste_bytes = m.interval_bytes - n * TEXEL_BYTES;
+    return m;
+}
+
+std::vector<uint32_t> index_texels(const Model &model)
+{
+    const Frame &f = model.frame();
+    std::vector<uint32_t> texels(2 * f.cells());
+    // cell_index(row, col) runs row-major from the north, as the texture
+    for (uint64_t cell = 0; cell < f.cells(); ++cell) {
+        texels[2 * cell] = model.stack_begin(cell);
+        texels[2 * cell + 1] = model.stack_end(cell) - model.stack_begin(cell);
+    }
+    return texels;
+}
+
+std::vector<uint32_t> interval_texels(const Model &model, int cols, int rows)
+{
+    const std::vector<Interval> &intervals = model.intervals();
+    if (uint64_t(cols) * uint64_t(rows) < intervals.size())
+        fail("interval texture of ", cols, " x ", rows, " texels is too small");
+    std::vector<uint32_t> texels(2 * size_t(cols) * rows, 0);
+    for (size_t j = 0; j < intervals.size(); ++j) {
+        texels[2 * j] = intervals[j].material;
+        std::memcpy(&texels[2 * j + 1], &intervals[j].top, sizeof(float));
+    }
+    return texels;
+}
+
+} // namespace sbrt
