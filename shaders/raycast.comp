@@ -50,7 +50,21 @@ bool clip(int axis, float hi, float lo, float d, float high, inout float t_near,
     return true;
 }
 
-const uint ENTER = 0u, SEARCH = 1u, WALK = 2u;
+const uint ENTER = 0u, SEARCH = 1u, WALK = 2u, CLIMB = 3u;
+
+vec2 pyramid_node(uint level, int ix, int iy)
+{
+    uvec4 l = levels[level];
+    return nodes[l.x + uint(iy >> level) * l.y + uint(ix >> level)];
+}
+
+// whether a ray whose height runs from z_a to z_b stays out of a node's
+// range: at or above its top (as the stack walk reads it) or below its
+// bottom
+bool passes(vec2 range, float z_a, float z_b)
+{
+    return range.x > range.y || min(z_a, z_b) >= range.y || max(z_a, z_b) < range.x;
+}
 
 // light of the translucent strata crossed so far (premultiplied colour)
 // and the share of what is behind that still reaches the camera
@@ -71,6 +85,33 @@ bool absorb(vec4 material, float length)
     veil += transmittance * (1.0 - keep) * material.rgb;
     transmittance *= keep;
     return transmittance < MIN_TRANSMITTANCE;
+}
+
+// Pyramid node of `level` around cell (ix, iy): true where the ray, at
+// height z_in when it enters the cell, stays out of the node's range until
+// it leaves the node's block (or reaches t_far); then t_exit, exit_axis
+// and block describe that block and where the ray leaves it
+bool climb(uint level, int ix, int iy, vec3 hi, vec3 lo, vec3 d, float z_in,
+           float t_far, inout float t_exit, inout int exit_axis, inout ivec4 block)
+{
+    vec2 node = pyramid_node(level, ix, iy);
+    if (!passes(node, z_in, z_in))
+        return false;
+    int x0 = (ix >> level) << level, y0 = (iy >> level) << level;
+    int x1 = min(x0 + (1 << level), int(grid.x)), y1 = min(y0 + (1 << level), int(grid.y));
+    float tx = d.x > 0.0 ? from_origin(float(x1), hi.x, lo.x) / d.x
+             : d.x < 0.0 ? from_origin(float(x0), hi.x, lo.x) / d.x
+                         : 1.0 / 0.0;
+    float ty = d.y > 0.0 ? from_origin(float(y1), hi.y, lo.y) / d.y
+             : d.y < 0.0 ? from_origin(float(y0), hi.y, lo.y) / d.y
+                         : 1.0 / 0.0;
+    float t = min(min(tx, ty), t_far);
+    if (!passes(node, z_in, (hi.z + t * d.z) + lo.z))
+        return false;
+    t_exit = t;
+    exit_axis = tx < ty ? 0 : 1; // a tie goes the way the DDA goes
+    block = ivec4(x0, y0, x1, y1);
+    return true;
 }
 
 void main()
@@ -141,6 +182,18 @@ void main()
     float length_per_t = length(d * box.yzw);
     // WALK visits interval j of [first, last); k is the one holding z_in
     uint mode = ENTER, first = 0u, last = 0u, low = 0u, high = 0u, j = 0u, k = 0u;
+    // CLIMB: the pyramid level tried next and the largest block so far that
+    // holds nothing at the ray's height: where the ray leaves it, along
+    // which axis (-1: none yet), and its cells [block.x, block.z) x
+    // [block.y, block.w)
+    uint level = 0u;
+    int exit_axis = -1;
+    float t_exit = 0.0;
+    ivec4 block = ivec4(0);
+    // the block of 2 x 2 cells where the last climb failed: while the ray
+    // is in there, it walks the cells without the pyramid (close above
+    // material, a climb costs more than it saves)
+    int stuck_x = -1, stuck_y = -1;
     for (uint work = 0u;; ++work) {
         if (work >= options.y) {
             finish(index, vec3(0.0), CODE_OVER_BUDGET);
@@ -155,19 +208,69 @@ void main()
                 ? from_origin(float(iy + (d.y > 0.0 ? 1 : 0)), hi.y, lo.y) / d.y
                 : 1.0 / 0.0;
             t_out = min(min(t_max_x, t_max_y), t_far);
-            uvec2 stack = stack_range(ix, rows - 1 - iy);
-            first = stack.x;
-            last = stack.y;
             z_in = (hi.z + t_in * d.z) + lo.z;
             z_out = (hi.z + t_out * d.z) + lo.z;
-            // nothing to find where the ray stays at or above the stack's top
-            if (first == last || min(z_in, z_out) >= interval_top(last - 1u)) {
+            bool stuck = (ix >> 1) == stuck_x && (iy >> 1) == stuck_y;
+            if (counts.y > 0u && !stuck && passes(pyramid_node(0u, ix, iy), z_in, z_out)) {
+                // nothing here at the ray's height: look for the largest
+                // block around that holds nothing at its height either; the
+                // first level at once, so that a ray close above material
+                // takes one step per cell, as without the pyramid
+                exit_axis = -1;
+                if (counts.y > 1u && climb(1u, ix, iy, hi, lo, d, z_in, t_far, t_exit,
+                                           exit_axis, block)) {
+                    level = 2u;
+                    mode = CLIMB;
+                    continue;
+                }
+                stuck_x = ix >> 1;
+                stuck_y = iy >> 1;
                 next_cell = true;
             }
             else {
-                low = first;
-                high = last;
-                mode = SEARCH;
+                uvec2 stack = stack_range(ix, rows - 1 - iy);
+                first = stack.x;
+                last = stack.y;
+                // nothing to find where the ray stays at or above the stack's top
+                if (first == last || min(z_in, z_out) >= interval_top(last - 1u)) {
+                    next_cell = true;
+                }
+                else {
+                    low = first;
+                    high = last;
+                    mode = SEARCH;
+                }
+            }
+        }
+        else if (mode == CLIMB) {
+            bool climbed = level < counts.y &&
+                           climb(level, ix, iy, hi, lo, d, z_in, t_far, t_exit,
+                                 exit_axis, block);
+            level += 1u;
+            if (climbed)
+                continue;
+            if (exit_axis < 0) {
+                next_cell = true; // no block: on to the next cell
+            }
+            else {
+                // jump to the cell beyond the block
+                if (t_exit >= t_far)
+                    break;
+                vec3 at = (hi + t_exit * d) + lo;
+                if (exit_axis == 0) {
+                    ix = d.x > 0.0 ? block.z : block.x - 1;
+                    iy = clamp(int(floor(at.y)), block.y, block.w - 1);
+                }
+                else {
+                    iy = d.y > 0.0 ? block.w : block.y - 1;
+                    ix = clamp(int(floor(at.x)), block.x, block.z - 1);
+                }
+                t_in = t_exit;
+                wall = entry_face(exit_axis, d[exit_axis]);
+                if (ix < 0 || ix >= cols || iy < 0 || iy >= rows)
+                    break;
+                mode = ENTER;
+                continue;
             }
         }
         else if (mode == SEARCH && low < high) {

@@ -6,6 +6,7 @@
 #include "gpu_layout.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 #include <glm/geometric.hpp>
 
@@ -71,7 +72,29 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
         view.planes[k][3] = float(glm::dot(planes[k].n, origin) + planes[k].c);
     }
     view.counts[0] = uint32_t(planes.size());
+    view.counts[1] = uint32_t(tracer.pyramid().levels());
     return view;
+}
+
+std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid)
+{
+    if (pyramid.levels() > GPU_MAX_PYRAMID_LEVELS)
+        fail("a pyramid of ", pyramid.levels(), " levels, the GPU holds ",
+             GPU_MAX_PYRAMID_LEVELS);
+    const std::vector<ZRange> nodes = pyramid.flattened();
+    std::vector<uint32_t> words(4 * GPU_MAX_PYRAMID_LEVELS + 2 * nodes.size(), 0);
+    uint32_t offset = 0;
+    for (int level = 0; level < pyramid.levels(); ++level) {
+        words[4 * level] = offset;
+        words[4 * level + 1] = uint32_t(pyramid.cols(level));
+        words[4 * level + 2] = uint32_t(pyramid.rows(level));
+        offset += uint32_t(pyramid.cols(level)) * uint32_t(pyramid.rows(level));
+    }
+    static_assert(sizeof(ZRange) == 2 * sizeof(uint32_t), "two floats");
+    if (!nodes.empty())
+        std::memcpy(&words[4 * GPU_MAX_PYRAMID_LEVELS], nodes.data(),
+                    nodes.size() * sizeof(ZRange));
+    return words;
 }
 
 std::vector<GpuMaterial> make_gpu_materials(const Tracer &tracer)

@@ -66,6 +66,14 @@ constexpr uint32_t GPU_CODE_OVER_BUDGET = 1u << 24;
 /// room for the loops the budget does not count.
 constexpr uint32_t GPU_LOOP_BUDGET = 60000;
 
+/// Levels the `Pyramid` buffer has room for (MAX_PYRAMID_LEVELS).
+constexpr int GPU_MAX_PYRAMID_LEVELS = 32;
+
+/// `buffer Pyramid` (std430): per level (offset, cols, rows, 0) for
+/// GPU_MAX_PYRAMID_LEVELS levels, then every node's (low, high) as floats,
+/// level 0 first; all as 32-bit words.
+std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
+
 /// The view block of `camera` in the tracer's local frame.
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
                       uint32_t loop_budget = GPU_LOOP_BUDGET);

@@ -54,6 +54,16 @@ int max_texture_side(const GlApi &gl)
     return std::max(side, 1);
 }
 
+/// The empty-space pyramid (binding 4).
+GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::Tracer &tracer, size_t limit)
+{
+    const std::vector<uint32_t> words = sbrt::make_gpu_pyramid(tracer.pyramid());
+    return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER,
+                    checked_bytes(words.size() * sizeof(uint32_t), limit,
+                                  "empty-space pyramid"),
+                    words.data());
+}
+
 /// How each material looks (binding 3).
 GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 {
@@ -76,7 +86,8 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
                      layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
                      SHADER_COMMON_LAYOUT, SHADER_RAYCAST}),
       materials_(material_buffer(gl_, tracer)),
-      view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView))
+      view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
+      pyramid_(pyramid_buffer(gl_, tracer, max_block_bytes_))
 {
     const sbrt::Model &model = tracer.model();
     if (layout == sbrt::GpuLayout::ssbo) {
@@ -137,6 +148,7 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
     }
     band.bind(2);
     materials_.bind(3);
+    pyramid_.bind(4);
     view_.bind(0);
     for (int first = 0; first < rows; first += band_rows) {
         const int count = std::min(band_rows, rows - first);

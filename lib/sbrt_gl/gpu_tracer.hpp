@@ -48,6 +48,8 @@ public:
     /// What the model takes on the GPU in its layout.
     const sbrt::GpuMemory &memory() const { return memory_; }
     sbrt::GpuLayout layout() const { return layout_; }
+    /// Bytes of the empty-space pyramid on the GPU.
+    size_t pyramid_bytes() const { return pyramid_.bytes(); }
     const GlApi &gl() const { return gl_; }
     GLuint program() const { return program_.name(); }
 
@@ -63,6 +65,7 @@ private:
     std::optional<GlBuffer> offsets_, intervals_;
     std::optional<GlUintTexture> index_texture_, interval_texture_;
     GlBuffer materials_, view_;
+    GlBuffer pyramid_; ///< empty-space skipping (levels() 0: off)
     GpuStats stats_;
 };
 

@@ -26,7 +26,8 @@ layout(std140, binding = 0) uniform View {
                         // z: first image row of this dispatch, w: its rows
     vec4 planes[8];     // clip planes: xyz normal n (local), w: n . base + c;
                         // kept where n . (x - base) + w <= 0
-    uvec4 counts;       // x: clip planes
+    uvec4 counts;       // x: clip planes; y: levels of the pyramid (0: no
+                        // empty-space skipping)
 };
 
 // The model, in one of two layouts (section 4.2 of Graciano et al.), read
@@ -71,6 +72,17 @@ uvec2 stack_range(int col, int row_from_north)
 uint interval_material(uint j) { return intervals[j].material; }
 float interval_top(uint j) { return intervals[j].top; }
 #endif
+
+// Empty-space skipping: the min-max pyramid of lib/sbrt/minmax_pyramid.hpp.
+// Level L has (offset, cols, rows) in levels[L]; its node (x, y), x from
+// the west and y from the south, is nodes[offset + y * cols + x]: the
+// lowest bottom and highest top (local z) of what is drawn in its cells,
+// low > high where they hold nothing.
+const uint MAX_PYRAMID_LEVELS = 32u;
+layout(std430, binding = 4) readonly buffer Pyramid {
+    uvec4 levels[MAX_PYRAMID_LEVELS];
+    vec2 nodes[];
+};
 
 // How each material looks: rgb colour (0..1) and its Beer-Lambert
 // extinction per exaggerated map unit; negative for an opaque material.

@@ -294,6 +294,41 @@ TEST_P(Gpu, LongestRayStaysWithinTheLoopBudget)
     EXPECT_NEAR(hits[4].point.x, cols - 1, 1e-3);
 }
 
+TEST_P(Gpu, SkipsEmptySpaceWithThePyramidAndKeepsTheImage)
+{
+    // five of the seven strata hidden: most rays cross empty space
+    const Model m = hide_materials(geology(48, 64, 30), {1, 2, 3, 4, 5});
+    Scene plain;
+    plain.skip_empty_space = false;
+    const Tracer skipping(m, 2.0), walking(m, 2.0, plain);
+    ASSERT_GT(skipping.pyramid().levels(), 3);
+    sbrt_gl::GpuTracer gpu_skipping(*context_, skipping, layout());
+    sbrt_gl::GpuTracer gpu_walking(*context_, walking, layout());
+    const glm::dvec3 c = skipping.centre();
+    const double size = 2 * skipping.radius();
+    const Camera cameras[] = {
+        Camera::perspective(c + glm::dvec3(-0.5, -0.6, 0.4) * size, c, 40, 90, 120),
+        Camera::perspective(c + glm::dvec3(0.9, 0.2, 0.05) * size, c, 40, 90, 120),
+        Camera::perspective(c - glm::dvec3(0.3, 0.2, 1.5) * size, c, 50, 70, 90),
+    };
+    for (const Camera &camera : cameras) {
+        size_t over = 0;
+        expect_agreement(compare(gpu_skipping, skipping, camera, &over), "skipping");
+        EXPECT_EQ(over, 0u);
+        // a loop budget that walking every cell exceeds on many rays: the
+        // pyramid's steps over empty blocks stay within it
+        size_t over_skipping = 0, over_walking = 0;
+        const Agreement a =
+            compare(gpu_skipping, skipping, camera, &over_skipping, 16);
+        compare(gpu_walking, walking, camera, &over_walking, 16);
+        expect_agreement(a, "skipping, small budget");
+        EXPECT_GT(over_walking, a.pixels / 50);
+        EXPECT_LT(over_skipping * 2, over_walking)
+            << over_skipping << " rays over the budget with skipping, " << over_walking
+            << " without";
+    }
+}
+
 TEST_P(Gpu, RaysOverTheBudgetAreTracedOnTheCpu)
 {
     const Model m = geology(40, 50, 20);

@@ -136,15 +136,25 @@ void skipping(const Model &model, const Args &args, const Camera &camera,
         std::printf("skipping view=%s backend=cpu skipping=%s ms=%.1f Mrays/s=%.2f\n",
                     label.c_str(), skip ? "on" : "off", ms[skip], rays / ms[skip] / 1e3);
     std::printf("skipping view=%s backend=cpu off/on=%.2f\n", label.c_str(), ms[0] / ms[1]);
-    if (context) {
-        // the GL path on the same view: `auto` picks the faster
-        const Tracer tracer(model, zexag);
-        sbrt_gl::GpuTracer gpu(*context, tracer);
-        const double gl_ms = best_ms(repeat, [&] { gpu.trace_image(camera); });
-        std::printf("skipping view=%s backend=%s renderer=\"%s\" ms=%.1f Mrays/s=%.2f "
-                    "gl/cpu=%.2f\n",
-                    label.c_str(), context->name().c_str(), gpu.gl_renderer().c_str(),
-                    gl_ms, rays / gl_ms / 1e3, gl_ms / ms[1]);
+    if (!context)
+        return;
+    // the GL path on the same view, in both memory layouts: `auto` picks
+    // the faster of it and the CPU
+    for (GpuLayout layout : {GpuLayout::ssbo, GpuLayout::textures}) {
+        sbrt_gl::GpuTracer gpu_plain(*context, plain, layout);
+        sbrt_gl::GpuTracer gpu(*context, skipping, layout);
+        const auto [gl_off, gl_on] = best_ms_in_turns(
+            repeat, [&] { gpu_plain.trace_image(camera); }, [&] { gpu.trace_image(camera); });
+        const GpuMemory &m = gpu.memory();
+        std::printf("skipping view=%s backend=%s layout=%s renderer=\"%s\" ms=%.1f "
+                    "Mrays/s=%.2f skipping_off_ms=%.1f off/on=%.2f gl/cpu=%.2f "
+                    "gpu_bytes=%llu index_bytes=%llu interval_bytes=%llu waste_bytes=%llu "
+                    "pyramid_bytes=%zu\n",
+                    label.c_str(), context->name().c_str(), gpu_layout_name(layout),
+                    gpu.gl_renderer().c_str(), gl_on, rays / gl_on / 1e3, gl_off,
+                    gl_off / gl_on, gl_on / on_ms, (unsigned long long)m.total(),
+                    (unsigned long long)m.index_bytes, (unsigned long long)m.interval_bytes,
+                    (unsigned long long)m.waste_bytes, gpu.pyramid_bytes());
     }
 }
 
