@@ -97,13 +97,40 @@ Camera Camera::top(double north, double south, double east, double west,
     return c;
 }
 
+Camera Camera::rows_window(int first, int count) const
+{
+    if (first < 0 || count < 1 || first + count > rows_)
+        fail("Camera: rows ", first, " to ", first + count, " are not within the ",
+             rows_, " rows of the image");
+    // y of row first + r in the image = offset + scale * y of row r in the
+    // window, from y = 1 - (row + 0.5) / rows * 2
+    Camera c = *this;
+    c.rows_ = count;
+    c.window_scale_ = window_scale_ * count / rows_;
+    c.window_offset_ = window_offset_ + window_scale_ * (1 - (2.0 * first + count) / rows_);
+    return c;
+}
+
 Ray Camera::ray(int row, int col) const
 {
     const double x = (col + 0.5) / cols_ * 2 - 1;
-    const double y = 1 - (row + 0.5) / rows_ * 2;
+    const double y = window_offset_ + window_scale_ * (1 - (row + 0.5) / rows_ * 2);
     if (parallel())
         return {origin_ + du_ * x + dv_ * y, forward_};
     return {origin_, glm::normalize(forward_ + du_ * x + dv_ * y)};
+}
+
+void Camera::linear_rays(glm::dvec3 &origin, glm::dvec3 &forward, glm::dvec3 &du,
+                         glm::dvec3 &dv) const
+{
+    origin = origin_;
+    forward = forward_;
+    if (parallel())
+        origin += window_offset_ * dv_;
+    else
+        forward += window_offset_ * dv_;
+    du = du_;
+    dv = window_scale_ * dv_;
 }
 
 bool Camera::project(glm::dvec3 p, double &x, double &y) const
@@ -117,7 +144,7 @@ bool Camera::project(glm::dvec3 p, double &x, double &y) const
             return false;
     }
     x = glm::dot(v, du_) / (scale * glm::dot(du_, du_));
-    y = glm::dot(v, dv_) / (scale * glm::dot(dv_, dv_));
+    y = (glm::dot(v, dv_) / (scale * glm::dot(dv_, dv_)) - window_offset_) / window_scale_;
     return std::isfinite(x) && std::isfinite(y);
 }
 

@@ -42,7 +42,19 @@ public:
     static Camera top(double north, double south, double east, double west,
                       double above, int rows, int cols);
 
+    /// Rows [first, first + count) of this image as an image of their own,
+    /// with the same rays (up to rounding): a large image traced band by
+    /// band.
+    Camera rows_window(int first, int count) const;
+    bool is_window() const { return window_scale_ != 1 || window_offset_ != 0; }
+
     Ray ray(int row, int col) const;
+    /// The rays of this image (a window's own) as linear forms in (x, y):
+    /// a perspective ray starts at `origin` along normalize(forward + x du
+    /// + y dv); a parallel ray starts at origin + x du + y dv along
+    /// `forward`.
+    void linear_rays(glm::dvec3 &origin, glm::dvec3 &forward, glm::dvec3 &du,
+                     glm::dvec3 &dv) const;
     /// Normalised device coordinates (x, y) of the ray through point p;
     /// false where p is not in front of a perspective camera.
     bool project(glm::dvec3 p, double &x, double &y) const;
@@ -51,7 +63,8 @@ public:
     bool parallel() const { return kind_ != Kind::perspective; }
     glm::dvec3 origin() const { return origin_; }
     glm::dvec3 forward() const { return forward_; }
-    /// Image-plane steps per unit of normalised device x and y.
+    /// Image-plane steps per unit of normalised device x and y (of the
+    /// whole image, where this is a window).
     glm::dvec3 du() const { return du_; }
     glm::dvec3 dv() const { return dv_; }
 
@@ -59,6 +72,8 @@ private:
     Kind kind_ = Kind::perspective;
     int rows_ = 1, cols_ = 1;
     glm::dvec3 origin_{0}, forward_{0, 0, -1}, du_{1, 0, 0}, dv_{0, 1, 0};
+    /// a window's y = offset + scale * its own y (see rows_window)
+    double window_offset_ = 0, window_scale_ = 1;
 };
 
 } // namespace sbrt

@@ -33,10 +33,12 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
     // rays are re-based on the plane through the model's centre across the
     // view: a camera far away keeps its precision (float directions and
     // distances would lose the model); the eye is at t = -s
-    const glm::dvec3 eye = tracer.to_local(camera.origin());
-    const glm::dvec3 forward = tracer.local_direction(camera.forward());
-    const glm::dvec3 du = tracer.local_direction(camera.du());
-    const glm::dvec3 dv = tracer.local_direction(camera.dv());
+    glm::dvec3 map_origin, map_forward, map_du, map_dv;
+    camera.linear_rays(map_origin, map_forward, map_du, map_dv);
+    const glm::dvec3 eye = tracer.to_local(map_origin);
+    const glm::dvec3 forward = tracer.local_direction(map_forward);
+    const glm::dvec3 du = tracer.local_direction(map_du);
+    const glm::dvec3 dv = tracer.local_direction(map_dv);
     const glm::dvec3 centre = tracer.to_local(tracer.centre());
     const double s = std::max(0.0, glm::dot(centre - eye, forward) / glm::dot(forward, forward));
     const glm::dvec3 origin = eye + s * forward;

@@ -29,6 +29,8 @@ void apply_kernel_normals(const Tracer &tracer, const Camera &camera, int k,
 {
     if (k < 3 || k > 11 || k % 2 == 0)
         fail("kernel size ", k, " must be odd, from 3 to 11");
+    if (camera.is_window())
+        fail("kernel normals need the whole image, not a window of its rows");
     const int rows = camera.rows(), cols = camera.cols();
     const glm::dvec3 origin = camera.origin(), forward = camera.forward();
     const glm::dvec3 du = camera.du(), dv = camera.dv();
