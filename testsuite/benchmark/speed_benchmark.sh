@@ -38,8 +38,15 @@ set -euo pipefail
 size=$1 tools=$2 bench=$3 repeat=$4 camera_best=$5 camera_worst=$6 hidden=$7
 map=geo_$size
 [ -n "$(g.list type=raster_3d pattern=$map)" ] || "$tools/make_geomodel.sh" "$size" "$map" >/dev/null
-sbrt=$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)/PERMANENT/sbrt/$map
-[ -e "$sbrt" ] || r3.sbrt.convert --q input=$map output=$map
+loc=$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)
+sbrt=""
+for m in $(g.mapsets -p sep=space); do
+    [ -e "$loc/$m/sbrt/$map" ] && { sbrt=$loc/$m/sbrt/$map; break; }
+done
+if [ -z "$sbrt" ]; then
+    r3.sbrt.convert --q input=$map output=$map
+    sbrt=$loc/$(g.gisenv get=MAPSET)/sbrt/$map
+fi
 g.region --q raster_3d=$map
 g.region --q rows=884 cols=1056
 # twelve wells on a 4 x 3 grid over the model
@@ -85,7 +92,8 @@ in_process hidden "$camera_best" "$hidden"
 }
 EOS
 for s in $sizes; do
-    in_grass PERMANENT bash "$SBRT_GISDBASE/speed_one.sh" "$s" "$SBRT_ROOT/tools" "$bench" \
+    # a mapset of its own: the models in PERMANENT may be in use
+    in_grass speed bash "$SBRT_GISDBASE/speed_one.sh" "$s" "$SBRT_ROOT/tools" "$bench" \
         "$repeat" "$camera_best" "$camera_worst" "$hidden" 2>&1 | grep "^speed" |
         awk -v size="$s" '
         { print }
