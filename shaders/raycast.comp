@@ -184,7 +184,7 @@ void main()
     uint mode = ENTER, first = 0u, last = 0u, low = 0u, high = 0u, j = 0u, k = 0u;
     // CLIMB: the pyramid level tried next and the largest block so far that
     // holds nothing at the ray's height: where the ray leaves it, along
-    // which axis (-1: none yet), and its cells [block.x, block.z) x
+    // which axis, and its cells [block.x, block.z) x
     // [block.y, block.w)
     uint level = 0u;
     int exit_axis = -1;
@@ -216,7 +216,6 @@ void main()
                 // block around that holds nothing at its height either; the
                 // first level at once, so that a ray close above material
                 // takes one step per cell, as without the pyramid
-                exit_axis = -1;
                 if (counts.y > 1u && climb(1u, ix, iy, hi, lo, d, z_in, t_far, t_exit,
                                            exit_axis, block)) {
                     level = 2u;
@@ -249,29 +248,25 @@ void main()
             level += 1u;
             if (climbed)
                 continue;
-            if (exit_axis < 0) {
-                next_cell = true; // no block: on to the next cell
+            // CLIMB starts once level 1 held a block: jump to the cell
+            // beyond the largest block found
+            if (t_exit >= t_far)
+                break;
+            vec3 at = (hi + t_exit * d) + lo;
+            if (exit_axis == 0) {
+                ix = d.x > 0.0 ? block.z : block.x - 1;
+                iy = clamp(int(floor(at.y)), block.y, block.w - 1);
             }
             else {
-                // jump to the cell beyond the block
-                if (t_exit >= t_far)
-                    break;
-                vec3 at = (hi + t_exit * d) + lo;
-                if (exit_axis == 0) {
-                    ix = d.x > 0.0 ? block.z : block.x - 1;
-                    iy = clamp(int(floor(at.y)), block.y, block.w - 1);
-                }
-                else {
-                    iy = d.y > 0.0 ? block.w : block.y - 1;
-                    ix = clamp(int(floor(at.x)), block.x, block.z - 1);
-                }
-                t_in = t_exit;
-                wall = entry_face(exit_axis, d[exit_axis]);
-                if (ix < 0 || ix >= cols || iy < 0 || iy >= rows)
-                    break;
-                mode = ENTER;
-                continue;
+                iy = d.y > 0.0 ? block.w : block.y - 1;
+                ix = clamp(int(floor(at.x)), block.x, block.z - 1);
             }
+            t_in = t_exit;
+            wall = entry_face(exit_axis, d[exit_axis]);
+            if (ix < 0 || ix >= cols || iy < 0 || iy >= rows)
+                break;
+            mode = ENTER;
+            continue;
         }
         else if (mode == SEARCH && low < high) {
             // descending: first top >= z_in (intervals are (bottom, top]);
