@@ -21,6 +21,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -219,8 +220,8 @@ void time_against_error(const Model &model, const Args &args, const Camera &came
     const Tracer tracer(model, zexag);
     const double size = 2 * tracer.radius();
     Shading face;
-    auto render = [&](const HitImage &hits, const Shading &s) {
-        return shade(tracer, camera, hits, s);
+    auto render = [&](HitImage hits, const Shading &s) {
+        return shade(tracer, camera, std::move(hits), s);
     };
     const Image ref = render(trace_image(tracer, camera), face);
     if (const std::string path = args.get("classes", ""); !path.empty()) {
