@@ -63,7 +63,8 @@ Hit sample_ray(const Tracer &tracer, const Ray &ray, const Sampling &sampling)
     // from the camera (t = 0) on, inside the model's box
     double t_near = 0, t_far = INFINITY;
     int near_axis = -1;
-    if (!clip_to_box(o, d, glm::dvec3(0), glm::dvec3(f.cols, f.rows, tracer.top_local()),
+    if (!clip_to_box(o, d, 1.0 / d, glm::dvec3(0),
+                     glm::dvec3(f.cols, f.rows, tracer.top_local()),
                      t_near, t_far, near_axis) ||
         !(t_near < t_far))
         return {};

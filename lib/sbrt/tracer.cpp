@@ -16,8 +16,8 @@
 
 namespace sbrt {
 
-bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 low, glm::dvec3 high,
-                 double &t_near, double &t_far, int &near_axis)
+bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 inv_d, glm::dvec3 low,
+                 glm::dvec3 high, double &t_near, double &t_far, int &near_axis)
 {
     for (int a = 0; a < 3; ++a) {
         if (d[a] == 0) {
@@ -25,7 +25,7 @@ bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 low, glm::dvec3 high,
                 return false;
             continue;
         }
-        double t0 = (low[a] - o[a]) / d[a], t1 = (high[a] - o[a]) / d[a];
+        double t0 = (low[a] - o[a]) * inv_d[a], t1 = (high[a] - o[a]) * inv_d[a];
         if (t0 > t1)
             std::swap(t0, t1);
         if (t0 > t_near) {
@@ -91,9 +91,8 @@ struct Tracer::Entry {
 struct Tracer::Walk {
     const Ray &ray;
     glm::dvec3 o, d;      ///< local frame
-    double length_per_t;  ///< exaggerated map length per unit of t
     Hit hit;
-    glm::dvec2 inv_d{0};  ///< 1 / d.x, 1 / d.y (inf along a wall)
+    glm::dvec3 inv_d{0};  ///< 1 / d per axis (inf along a wall)
 };
 
 Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
@@ -283,7 +282,7 @@ double Tracer::radius() const
     return glm::length(corner(7) - corner(0)) / 2;
 }
 
-bool Tracer::meet(uint32_t material, double t_enter, double t_exit, Entry entry,
+bool Tracer::meet(uint32_t material, double t_enter, double t_exit, const Entry &entry,
                   Walk &walk) const
 {
     if (material == EMPTY)
@@ -302,7 +301,7 @@ bool Tracer::meet(uint32_t material, double t_enter, double t_exit, Entry entry,
     // Beer-Lambert over the exact length the ray travels in the interval;
     // a zero-length crossing (a fence curtain, a surface) absorbs alpha
     const double length = t_exit > t_enter
-                              ? (t_exit - t_enter) * walk.length_per_t
+                              ? (t_exit - t_enter) * glm::length(walk.ray.direction)
                               : tr.length;
     const double keep = std::exp(-tr.extinction[material] * length);
     walk.hit.veil += glm::vec3(walk.hit.transmittance * (1 - keep) * tr.color[material]);
@@ -311,14 +310,15 @@ bool Tracer::meet(uint32_t material, double t_enter, double t_exit, Entry entry,
 }
 
 bool Tracer::walk_stack(const Interval *first, const Interval *last, double t_a,
-                        double t_b, Entry entry, Walk &walk) const
+                        double t_b, const Entry &entry, Walk &walk) const
 {
     const double oz = walk.o.z, dz = walk.d.z;
     const double z_a = oz + t_a * dz, z_b = oz + t_b * dz;
     // nothing to find where the ray stays at or above the stack's top
     if (first == last || std::min(z_a, z_b) >= double((last - 1)->top))
         return false;
-    auto t_at = [&](float z) { return (double(z) - oz) / dz; };
+    const double inv_dz = walk.inv_d.z;
+    auto t_at = [&](float z) { return (double(z) - oz) * inv_dz; };
     const Entry top{Face::top}, bottom{Face::bottom};
     if (dz < 0) {
         // descending: intervals (bottom, top]; the one holding z_a, then
@@ -354,7 +354,7 @@ bool Tracer::walk_stack(const Interval *first, const Interval *last, double t_a,
     return false;
 }
 
-bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, Entry entry,
+bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &entry,
                         Walk &walk) const
 {
     if (!overlay_items_.empty() &&
@@ -368,10 +368,10 @@ bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, Entry entry,
 }
 
 bool Tracer::cross_borehole(const Borehole &borehole, double t_a, double t_b,
-                            Entry entry, Walk &walk) const
+                            const Entry &entry, Walk &walk) const
 {
     auto walk_half = [&](const std::vector<Interval> &stack, double a, double b,
-                         Entry e) {
+                         const Entry &e) {
         return walk_stack(stack.data(), stack.data() + stack.size(), a, b, e, walk);
     };
     if (!scene_.split)
@@ -488,7 +488,7 @@ bool Tracer::cross_events(const std::vector<Event> &events, double t_in,
 }
 
 bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
-                            Entry entry, Walk &walk) const
+                            const Entry &entry, Walk &walk) const
 {
     std::vector<Event> events;
     overlay_events(overlay_items_.data() + overlay_offsets_[cell],
@@ -543,24 +543,23 @@ std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
                 d.y > 0 ? y1 : y0 - 1, entry_face(1, d.y)};
 }
 
-Hit Tracer::trace(const Ray &ray) const
+Hit Tracer::trace(const Ray &ray, double t_start) const
 {
     const Frame &f = model_.frame();
-    Walk walk{ray, to_local(ray.origin), local_direction(ray.direction),
-              glm::length(ray.direction), Hit()};
+    Walk walk{ray, to_local(ray.origin), local_direction(ray.direction), Hit()};
     const glm::dvec3 o = walk.o;
     glm::dvec3 &d = walk.d;
     for (int a = 0; a < 3; ++a)
         if (d[a] == 0)
             d[a] = 0; // normalise -0
-    walk.inv_d = 1.0 / glm::dvec2(d);
+    walk.inv_d = 1.0 / d;
 
     // 1. slab clip to the box [0, cols] x [0, rows] x [0, z_max] (the
     // overlays' cells only, where the model is not drawn)
     double t_near = -INF, t_far = INF;
     int near_axis = -1;
-    if (!clip_to_box(o, d, glm::dvec3(box_low_, 0), glm::dvec3(box_high_, z_max_local_),
-                     t_near, t_far, near_axis))
+    if (!clip_to_box(o, d, walk.inv_d, glm::dvec3(box_low_, 0),
+                     glm::dvec3(box_high_, z_max_local_), t_near, t_far, near_axis))
         return {};
     Entry wall;
     if (near_axis >= 0)
@@ -586,6 +585,10 @@ Hit Tracer::trace(const Ray &ray) const
         t_near = 0; // the camera is inside the box
         wall = {Face::none, -ray.direction};
     }
+    if (t_start > t_near) {
+        t_near = t_start; // nothing to meet before: start in the air
+        wall = {Face::none, -ray.direction};
+    }
     if (!(t_near <= t_far) || z_max_local_ <= 0)
         return {};
 
@@ -608,12 +611,12 @@ Hit Tracer::trace(const Ray &ray) const
     const int step_x = d.x > 0 ? 1 : -1, step_y = d.y > 0 ? 1 : -1;
     // t where the ray reaches the far wall of cell index i along axis a
     auto far_wall = [&](int i, int a) {
-        return d[a] != 0 ? ((i + (d[a] > 0)) - o[a]) / d[a] : INF;
+        return d[a] != 0 ? ((i + (d[a] > 0)) - o[a]) * walk.inv_d[a] : INF;
     };
     double t_max_x = far_wall(ix, 0);
     double t_max_y = far_wall(iy, 1);
-    const double t_delta_x = d.x != 0 ? std::fabs(1 / d.x) : INF;
-    const double t_delta_y = d.y != 0 ? std::fabs(1 / d.y) : INF;
+    const double t_delta_x = std::fabs(walk.inv_d.x); // inf along a wall
+    const double t_delta_y = std::fabs(walk.inv_d.y);
     double t_in = t_near;
     // the block of 2 x 2 cells the ray last failed to skip: while it is in
     // there, the cell walk goes on without trying (close above material, a

@@ -56,8 +56,9 @@ constexpr double MIN_TRANSMITTANCE = 1.0 / 4096;
 /// t_far] and sets `near_axis` to the axis of the wall it enters through
 /// (unchanged where no wall narrows t_near); false where the ray runs
 /// parallel to a slab outside it.
-bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 low, glm::dvec3 high,
-                 double &t_near, double &t_far, int &near_axis);
+/// `inv_d` is 1 / d per axis (taken where d is not 0).
+bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 inv_d, glm::dvec3 low,
+                 glm::dvec3 high, double &t_near, double &t_far, int &near_axis);
 
 /// \brief Exact traversal of an SBRT. Rays are in map coordinates with
 /// vertical exaggeration `zexag` applied about the model's bottom.
@@ -66,7 +67,9 @@ public:
     Tracer(const Model &model, double zexag, Scene scene = {});
     Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes);
 
-    Hit trace(const Ray &ray) const;
+    /// The first hit of `ray`; `t_start` (a lower bound of the hit's t, as a
+    /// coarse first pass gives) lets the walk begin further along.
+    Hit trace(const Ray &ray, double t_start = 0) const;
 
     /// Exaggerated map coordinates of a real map point, and back.
     glm::dvec3 exaggerate(glm::dvec3 p) const;
@@ -132,15 +135,15 @@ private:
                       Walk &walk) const;
     /// The model's stack of the cell holding local point p.
     const Interval *stack_at(glm::dvec3 local, const Interval *&last) const;
-    bool cross_cell(uint64_t cell, double t_in, double t_out, Entry entry,
+    bool cross_cell(uint64_t cell, double t_in, double t_out, const Entry &entry,
                     Walk &walk) const;
-    bool cross_overlays(uint64_t cell, double t_in, double t_out, Entry entry,
+    bool cross_overlays(uint64_t cell, double t_in, double t_out, const Entry &entry,
                         Walk &walk) const;
     bool cross_borehole(const Borehole &borehole, double t_a, double t_b,
-                        Entry entry, Walk &walk) const;
+                        const Entry &entry, Walk &walk) const;
     bool walk_stack(const Interval *first, const Interval *last, double t_a,
-                    double t_b, Entry entry, Walk &walk) const;
-    bool meet(uint32_t material, double t_enter, double t_exit, Entry entry,
+                    double t_b, const Entry &entry, Walk &walk) const;
+    bool meet(uint32_t material, double t_enter, double t_exit, const Entry &entry,
               Walk &walk) const;
     void index_overlays();
     void build_pyramid();
