@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "first_hit_bounds.hpp"
 #include "parallel.hpp"
 
 namespace sbrt {
@@ -50,15 +51,25 @@ std::vector<uint8_t> pixels_to_trace(const Tracer &tracer, const Camera &camera)
 
 } // namespace
 
-HitImage trace_image(const Tracer &tracer, const Camera &camera,
-                     unsigned threads)
+HitImage trace_image(const Tracer &tracer, const Camera &camera, unsigned threads,
+                     bool first_pass)
 {
     HitImage hits(size_t(camera.rows()) * camera.cols());
     const std::vector<uint8_t> mask = pixels_to_trace(tracer, camera);
+    // no pyramid (skipping off, the model not drawn): every bound is 0
+    const FirstHitBounds bounds =
+        first_pass
+            ? FirstHitBounds(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET, threads)
+            : FirstHitBounds(camera);
     for_each_row(camera.rows(), threads, [&](int row) {
         for (int col = 0; col < camera.cols(); ++col) {
             const size_t i = size_t(row) * camera.cols() + col;
-            hits[i] = mask.empty() || mask[i] ? tracer.trace(camera.ray(row, col)) : Hit();
+            if (!mask.empty() && !mask[i]) {
+                hits[i] = Hit();
+                continue;
+            }
+            const Ray ray = camera.ray(row, col);
+            hits[i] = tracer.trace(ray, bounds.t_start(row, col, ray));
         }
     });
     return hits;

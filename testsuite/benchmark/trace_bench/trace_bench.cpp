@@ -2,7 +2,9 @@
  * MODULE:    testsuite/benchmark/trace_bench (r3.sbrt addon)
  * PURPOSE:   In-process timings on an SBRT file, best of `repeat`:
  *              skipping  the exact tracer with and without empty-space
- *                        skipping (and on the GPU where a context opens)
+ *                        skipping, and with skipping but without the
+ *                        coarse first pass (and on the GPU where a
+ *                        context opens)
  *              error     time against error: the exact method, the sampled
  *                        one (steps 1..1/16 cell, adaptive), kernel
  *                        normals k = 3..11, each against the exact CPU
@@ -22,6 +24,7 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -80,16 +83,15 @@ double best_ms(int repeat, const std::function<void()> &f)
     return best;
 }
 
-/// Best wall times (ms) of `repeat` runs of a and of b, taken in turns, so
-/// that a busy spell of a shared machine slows both alike.
-std::pair<double, double> best_ms_in_turns(int repeat, const std::function<void()> &a,
-                                           const std::function<void()> &b)
+/// Best wall times (ms) of `repeat` runs of each function, taken in turns,
+/// so that a busy spell of a shared machine slows them all alike.
+std::vector<double> best_ms_in_turns(int repeat,
+                                     const std::vector<std::function<void()>> &functions)
 {
-    std::pair<double, double> best{INFINITY, INFINITY};
-    for (int i = 0; i < repeat; ++i) {
-        best.first = std::min(best.first, run_ms(a));
-        best.second = std::min(best.second, run_ms(b));
-    }
+    std::vector<double> best(functions.size(), INFINITY);
+    for (int i = 0; i < repeat; ++i)
+        for (size_t k = 0; k < functions.size(); ++k)
+            best[k] = std::min(best[k], run_ms(functions[k]));
     return best;
 }
 
@@ -130,13 +132,19 @@ void skipping(const Model &model, const Args &args, const Camera &camera,
     Scene no_skipping;
     no_skipping.skip_empty_space = false;
     const Tracer plain(model, zexag, no_skipping), skipping(model, zexag);
-    const auto [off_ms, on_ms] = best_ms_in_turns(
-        repeat, [&] { trace_image(plain, camera); }, [&] { trace_image(skipping, camera); });
-    const double ms[2] = {off_ms, on_ms};
-    for (int skip = 1; skip >= 0; --skip)
-        std::printf("skipping view=%s backend=cpu skipping=%s ms=%.1f Mrays/s=%.2f\n",
-                    label.c_str(), skip ? "on" : "off", ms[skip], rays / ms[skip] / 1e3);
-    std::printf("skipping view=%s backend=cpu off/on=%.2f\n", label.c_str(), ms[0] / ms[1]);
+    // skipping off; on without the coarse first pass; on with it
+    const std::vector<double> ms = best_ms_in_turns(
+        repeat, {[&] { trace_image(plain, camera); },
+                 [&] { trace_image(skipping, camera, 0, false); },
+                 [&] { trace_image(skipping, camera); }});
+    const double off_ms = ms[0], on_ms = ms[2];
+    for (int k : {2, 1, 0})
+        std::printf("skipping view=%s backend=cpu skipping=%s first_pass=%s ms=%.1f "
+                    "Mrays/s=%.2f\n",
+                    label.c_str(), k ? "on" : "off", k == 2 ? "on" : "off", ms[k],
+                    rays / ms[k] / 1e3);
+    std::printf("skipping view=%s backend=cpu off/on=%.2f first_pass_off/on=%.2f\n",
+                label.c_str(), off_ms / on_ms, ms[1] / on_ms);
     if (!context)
         return;
     // the GL path on the same view, in both memory layouts: `auto` picks
@@ -144,8 +152,10 @@ void skipping(const Model &model, const Args &args, const Camera &camera,
     for (GpuLayout layout : {GpuLayout::ssbo, GpuLayout::textures}) {
         sbrt_gl::GpuTracer gpu_plain(*context, plain, layout);
         sbrt_gl::GpuTracer gpu(*context, skipping, layout);
-        const auto [gl_off, gl_on] = best_ms_in_turns(
-            repeat, [&] { gpu_plain.trace_image(camera); }, [&] { gpu.trace_image(camera); });
+        const std::vector<double> gl_ms =
+            best_ms_in_turns(repeat, {[&] { gpu_plain.trace_image(camera); },
+                                      [&] { gpu.trace_image(camera); }});
+        const double gl_off = gl_ms[0], gl_on = gl_ms[1];
         const GpuMemory &m = gpu.memory();
         std::printf("skipping view=%s backend=%s layout=%s renderer=\"%s\" ms=%.1f "
                     "Mrays/s=%.2f skipping_off_ms=%.1f off/on=%.2f gl/cpu=%.2f "
