@@ -12,9 +12,12 @@
 #              with and without skipping (-e);
 #            - boreholes only (-b, 12 wells) against the full model.
 #            Scenes, all with zexag=2: best (the peers' camera, rays hit
-#            soon), worst (low over the model's south-west corner, rays
-#            graze the terrain), hidden (the peers' camera with strata 1-13
-#            hidden: only the lenses and the dike are left), boreholes.
+#            soon), worst (low from the east, rays cross the air over the
+#            eastern plateau to the scarp: the fewest rays per second
+#            without skipping, the paper's worst case), grazing (low over
+#            the south-west corner: most rays hit a side wall or graze the
+#            top), hidden (the peers' camera with strata 1-13 hidden: only
+#            the lenses and the dike are left), boreholes.
 #            The peers on the same data: peers_benchmark.sh (A, B).
 # USAGE:     make && testsuite/benchmark/speed_benchmark.sh [SIZES]  (A B C)
 #            Model C (800 x 1000 x 800 voxels) takes ~10 min to make once.
@@ -30,12 +33,14 @@ bench=$here/trace_bench/build/trace_bench
 repeat=${SBRT_BENCH_REPEAT:-3}
 
 camera_best="position=4375,5000,2500 target=1000,1250,320 fov=25 zexag=2"
-camera_worst="position=-1500,-1000,700 target=1000,1250,550 fov=40 zexag=2"
+camera_worst="position=2600,1250,640 target=1000,1250,560 fov=40 zexag=2"
+camera_grazing="position=-1500,-1000,700 target=1000,1250,550 fov=40 zexag=2"
 hidden="1,2,3,4,5,6,7,8,9,10,11,12,13"
 
 cat >"$SBRT_GISDBASE/speed_one.sh" <<'EOS'
 set -euo pipefail
-size=$1 tools=$2 bench=$3 repeat=$4 camera_best=$5 camera_worst=$6 hidden=$7
+size=$1 tools=$2 bench=$3 repeat=$4 camera_best=$5 camera_worst=$6 camera_grazing=$7
+hidden=$8
 map=geo_$size
 [ -n "$(g.list type=raster_3d pattern=$map)" ] || "$tools/make_geomodel.sh" "$size" "$map" >/dev/null
 loc=$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)
@@ -78,6 +83,7 @@ module() { # label options...
 }
 in_process best "$camera_best"
 in_process worst "$camera_worst"
+in_process grazing "$camera_grazing"
 in_process hidden "$camera_best" "$hidden"
 # shellcheck disable=SC2086
 {
@@ -85,6 +91,8 @@ in_process hidden "$camera_best" "$hidden"
     module best_no_skipping $camera_best -e
     module worst $camera_worst
     module worst_no_skipping $camera_worst -e
+    module grazing $camera_grazing
+    module grazing_no_skipping $camera_grazing -e
     module hidden $camera_best hide=$hidden
     module hidden_no_skipping $camera_best hide=$hidden -e
     module boreholes_only $camera_best boreholes=speed_wells -b
@@ -94,7 +102,7 @@ EOS
 for s in $sizes; do
     # a mapset of its own: the models in PERMANENT may be in use
     in_grass speed bash "$SBRT_GISDBASE/speed_one.sh" "$s" "$SBRT_ROOT/tools" "$bench" \
-        "$repeat" "$camera_best" "$camera_worst" "$hidden" 2>&1 | grep "^speed" |
+        "$repeat" "$camera_best" "$camera_worst" "$camera_grazing" "$hidden" 2>&1 | grep "^speed" |
         awk -v size="$s" '
         { print }
         /scene=.* module_s=/ {
