@@ -40,8 +40,14 @@ sbrt::HitImage trace_on_cpu(const RenderRequest &request,
                       request.threads ? request.threads
                                       : int(std::thread::hardware_concurrency()));
     const auto start = Clock::now();
+    sbrt::FirstPassReport first_pass;
     sbrt::HitImage hits =
-        sbrt::trace_image(tracer, camera, unsigned(request.threads));
+        sbrt::trace_image(tracer, camera, unsigned(request.threads), true, &first_pass);
+    if (first_pass.tiles)
+        G_verbose_message(_("First pass: %zu tiles of %d x %d pixels, %zu of them "
+                            "meet nothing (%.1f ms)"),
+                          first_pass.tiles, sbrt::FIRST_PASS_TILE, sbrt::FIRST_PASS_TILE,
+                          first_pass.empty_tiles, first_pass.ms);
     report(_("CPU tracing"), camera.rows(), camera.cols(),
            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     return hits;

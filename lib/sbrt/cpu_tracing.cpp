@@ -6,6 +6,7 @@
 #include "cpu_tracing.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "first_hit_bounds.hpp"
@@ -52,15 +53,21 @@ std::vector<uint8_t> pixels_to_trace(const Tracer &tracer, const Camera &camera)
 } // namespace
 
 HitImage trace_image(const Tracer &tracer, const Camera &camera, unsigned threads,
-                     bool first_pass)
+                     bool first_pass, FirstPassReport *report)
 {
     HitImage hits(size_t(camera.rows()) * camera.cols());
     const std::vector<uint8_t> mask = pixels_to_trace(tracer, camera);
     // no pyramid (skipping off, the model not drawn): every bound is 0
+    const auto start = std::chrono::steady_clock::now();
     const FirstHitBounds bounds =
         first_pass
             ? FirstHitBounds(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET, threads)
             : FirstHitBounds(camera);
+    if (report)
+        *report = {bounds.tiles(), bounds.empty_tiles(),
+                   std::chrono::duration<double, std::milli>(
+                       std::chrono::steady_clock::now() - start)
+                       .count()};
     for_each_row(camera.rows(), threads, [&](int row) {
         for (int col = 0; col < camera.cols(); ++col) {
             const size_t i = size_t(row) * camera.cols() + col;

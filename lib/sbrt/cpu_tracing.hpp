@@ -18,11 +18,19 @@ namespace sbrt {
 /// (0.6x on A); 8 and 16, with budgets of 16 to 64, are within noise.
 constexpr int FIRST_PASS_TILE = 8, FIRST_PASS_BUDGET = 32;
 
+/// What the coarse first pass did: its tiles, those whose rays all meet
+/// nothing (not walked at all), its time.
+struct FirstPassReport {
+    size_t tiles = 0, empty_tiles = 0;
+    double ms = 0;
+};
+
 /// Hits of camera.ray(r, c), row-major; `threads` 0 means all cores. With
 /// `first_pass` (and the tracer's pyramid) each ray starts where the coarse
 /// first pass (FirstHitBounds) puts its tile's first possible hit.
 HitImage trace_image(const Tracer &tracer, const Camera &camera,
-                     unsigned threads = 0, bool first_pass = true);
+                     unsigned threads = 0, bool first_pass = true,
+                     FirstPassReport *report = nullptr);
 
 } // namespace sbrt
 
