@@ -173,7 +173,8 @@ class TestRenderTopView(TestCase):
             capture_output=True, text=True, check=True,
         )
         for line in ("Skipped, 1 hidden strata:", "Skipped, out of the view:",
-                     "Skipped, cut away by the planes:", "Empty-space skipping:"):
+                     "Skipped, cut away by the planes:", "Empty-space skipping:",
+                     "First pass: "):
             self.assertIn(line, run.stderr)
         self.assertModule("r3.sbrt.render", flags="e", output="ns", material="ns_m",
                           depth="ns_d", overwrite=True, **view)
