@@ -84,6 +84,10 @@ FirstHitBounds::FirstHitBounds(const Tracer &tracer, const Camera &camera, int t
     tile_cols_ = (camera.cols() + tile_ - 1) / tile_;
     const int tile_rows = (camera.rows() + tile_ - 1) / tile_;
     s_bounds_.resize(size_t(tile_rows) * tile_cols_);
+    for (int row = 0; row < camera.rows(); ++row)
+        row_offset_.push_back(uint32_t(row / tile_ * tile_cols_));
+    for (int col = 0; col < camera.cols(); ++col)
+        col_tile_.push_back(uint32_t(col / tile_));
     for_each_row(tile_rows, threads, [&](int ty) {
         for (int tx = 0; tx < tile_cols_; ++tx)
             s_bounds_[size_t(ty) * tile_cols_ + tx] =
@@ -149,7 +153,7 @@ double FirstHitBounds::t_start(int row, int col, const Ray &ray) const
 {
     if (s_bounds_.empty())
         return 0;
-    const double s = s_bounds_[size_t(row / tile_) * tile_cols_ + col / tile_];
+    const double s = s_bounds_[size_t(row_offset_[size_t(row)]) + col_tile_[size_t(col)]];
     if (s <= 0 || s == INF || camera_.parallel())
         return s; // a parallel ray's direction is unit: t = s
     // ray.direction = D / |D| with D . forward = 1 (du, dv are orthogonal

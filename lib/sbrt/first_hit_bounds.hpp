@@ -9,6 +9,7 @@
 #ifndef SBRT_FIRST_HIT_BOUNDS_HPP
 #define SBRT_FIRST_HIT_BOUNDS_HPP
 
+#include <cstdint>
 #include <vector>
 
 #include "camera.hpp"
@@ -46,6 +47,9 @@ private:
     const Camera &camera_;
     int tile_, budget_, tile_cols_ = 0;
     std::vector<double> s_bounds_; ///< per tile, row-major
+    /// Per image row, its tile row's first bound; per column, its tile
+    /// column (no division per pixel).
+    std::vector<uint32_t> row_offset_, col_tile_;
 };
 
 } // namespace sbrt
