@@ -581,12 +581,11 @@ Hit Tracer::trace(const Ray &ray, double t_start) const
             wall = {Face::plane, planes_[k].shading_normal, int(k)};
         }
     }
-    if (t_near < 0) {
-        t_near = 0; // the camera is inside the box
-        wall = {Face::none, -ray.direction};
-    }
-    if (t_start > t_near) {
-        t_near = t_start; // nothing to meet before: start in the air
+    // the walk starts no earlier than the camera (t = 0: the camera is in
+    // the box) nor than t_start (nothing to meet before: in the air)
+    const double start = std::max(t_start, 0.0);
+    if (t_near < start) {
+        t_near = start;
         wall = {Face::none, -ray.direction};
     }
     if (!(t_near <= t_far) || z_max_local_ <= 0)
