@@ -113,8 +113,8 @@ Camera Camera::rows_window(int first, int count) const
 
 Ray Camera::ray(int row, int col) const
 {
-    const double x = (col + 0.5) / cols_ * 2 - 1;
-    const double y = window_offset_ + window_scale_ * (1 - (row + 0.5) / rows_ * 2);
+    const glm::dvec2 own = pixel_ndc(row, col);
+    const double x = own.x, y = window_offset_ + window_scale_ * own.y;
     if (parallel())
         return {origin_ + du_ * x + dv_ * y, forward_};
     return {origin_, glm::normalize(forward_ + du_ * x + dv_ * y)};

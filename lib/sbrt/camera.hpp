@@ -7,6 +7,7 @@
 #ifndef SBRT_CAMERA_HPP
 #define SBRT_CAMERA_HPP
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "model.hpp"
@@ -49,6 +50,12 @@ public:
     bool is_window() const { return window_scale_ != 1 || window_offset_ != 0; }
 
     Ray ray(int row, int col) const;
+    /// Normalised device coordinates of the centre of pixel (row, col) of
+    /// this image (a window's own), as linear_rays takes them.
+    glm::dvec2 pixel_ndc(int row, int col) const
+    {
+        return {(col + 0.5) / cols_ * 2 - 1, 1 - (row + 0.5) / rows_ * 2};
+    }
     /// The rays of this image (a window's own) as linear forms in (x, y):
     /// a perspective ray starts at `origin` along normalize(forward + x du
     /// + y dv); a parallel ray starts at origin + x du + y dv along

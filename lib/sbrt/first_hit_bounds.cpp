@@ -106,14 +106,13 @@ double FirstHitBounds::tile_bound(const Tracer &tracer, int row0, int col0) cons
     Beam beam;
     for (int k = 0; k < 4; ++k) {
         const int row = k & 1 ? row1 : row0, col = k & 2 ? col1 : col0;
-        const double x = (col + 0.5) / camera_.cols() * 2 - 1;
-        const double y = 1 - (row + 0.5) / camera_.rows() * 2;
+        const glm::dvec2 p = camera_.pixel_ndc(row, col);
         if (camera_.parallel())
-            beam.add(tracer.to_local(origin + du * x + dv * y),
+            beam.add(tracer.to_local(origin + du * p.x + dv * p.y),
                      tracer.local_direction(forward));
         else
             beam.add(tracer.to_local(origin),
-                     tracer.local_direction(forward + du * x + dv * y));
+                     tracer.local_direction(forward + du * p.x + dv * p.y));
     }
     // best first: the frontier's nearest node bounds every cell below it
     const MinMaxPyramid &pyramid = tracer.pyramid();
