@@ -9,6 +9,7 @@
 #ifndef SBRT_HIT_IMAGE_HPP
 #define SBRT_HIT_IMAGE_HPP
 
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -46,9 +47,9 @@ struct UnfilledAllocator : std::allocator<T> {
     /// faults instead of 16,000.
     T *allocate(size_t n)
     {
-        const size_t bytes = n * sizeof(T);
         if (n > SIZE_MAX / sizeof(T))
             throw std::bad_alloc();
+        const size_t bytes = n * sizeof(T);
         if (bytes < HUGE_PAGE)
             return std::allocator<T>::allocate(n);
         const size_t rounded = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
