@@ -68,9 +68,12 @@ void run(const RenderRequest &request)
     struct Cell_head region;
     G_get_window(&region);
     // the camera frames the model as read, whatever is hidden or cut: the
-    // view stays put while strata are switched off
+    // view stays put while strata are switched off (its box only: no
+    // pyramid for this tracer)
+    sbrt::Scene framing;
+    framing.skip_empty_space = false;
     const sbrt::Camera camera =
-        make_camera(request, sbrt::Tracer(model, request.zexag), region);
+        make_camera(request, sbrt::Tracer(model, request.zexag, framing), region);
     const std::vector<uint32_t> hidden = hidden_materials(request, model);
     // the boreholes need the model as read where strata are hidden
     const sbrt::Model original = hidden.empty() || request.boreholes.empty()
