@@ -1,14 +1,17 @@
 /****************************************************************************
  * MODULE:    lib/sbrt (r3.sbrt addon)
- * PURPOSE:   First hits of every pixel's ray with the exact tracer on all
- *            cores (backend=cpu, and the reference of the GPU path)
+ * PURPOSE:   First hits of the rows of an image with the exact tracer on
+ *            all cores (backend=cpu, and the reference of the GPU path)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_CPU_TRACING_HPP
 #define SBRT_CPU_TRACING_HPP
 
+#include <array>
+#include <optional>
 #include <vector>
 
+#include "first_hit_bounds.hpp"
 #include "hit_image.hpp"
 
 namespace sbrt {
@@ -25,9 +28,44 @@ struct FirstPassReport {
     double ms = 0;
 };
 
-/// Hits of camera.ray(r, c), row-major; `threads` 0 means all cores. With
-/// `first_pass` (and the tracer's pyramid) each ray starts where the coarse
-/// first pass (FirstHitBounds) puts its tile's first possible hit.
+/// \brief Whatever traces the rows of one camera's image: the CPU tracer
+/// below, or a GPU (lib/sbrt_gl). The streamed renderer asks it for bands
+/// of rows, in any order, each row possibly more than once (the same hits).
+class RowTracer {
+public:
+    virtual ~RowTracer() = default;
+    /// Hits of rows [first, first + count), row-major, into `out`.
+    virtual void trace_rows(int first, int count, Hit *out) = 0;
+};
+
+/// \brief The exact CPU tracer over the rows of `camera`, on `threads`
+/// threads (0: all cores). With `first_pass` (and the tracer's pyramid)
+/// each ray starts where the coarse first pass (FirstHitBounds) puts its
+/// tile's first possible hit. Holds references to both arguments.
+class CpuRowTracer : public RowTracer {
+public:
+    CpuRowTracer(const Tracer &tracer, const Camera &camera, unsigned threads = 0,
+                 bool first_pass = true);
+    void trace_rows(int first, int count, Hit *out) override;
+    /// The hits of one row (thread-safe).
+    void trace_row(int row, Hit *out) const;
+    const FirstPassReport &first_pass() const { return report_; }
+
+private:
+    /// Where the tracer draws only overlays: pixel rectangles (first row,
+    /// last row, first column, last column) outside which no ray can hit
+    /// anything; none where every pixel is traced.
+    std::optional<std::vector<std::array<int, 4>>> overlay_rects_;
+    const Tracer &tracer_;
+    const Camera &camera_;
+    unsigned threads_;
+    FirstPassReport report_;
+    std::optional<FirstHitBounds> bounds_;
+};
+
+/// Hits of camera.ray(r, c), row-major, for the whole image (tests,
+/// benchmarks and the reference; the module streams bands through
+/// Renderer); `threads` 0 means all cores.
 HitImage trace_image(const Tracer &tracer, const Camera &camera,
                      unsigned threads = 0, bool first_pass = true,
                      FirstPassReport *report = nullptr);

@@ -5,90 +5,104 @@
  ****************************************************************************/
 #include "kernel_normals.hpp"
 
-#include <cmath>
-
-#include <glm/geometric.hpp>
+#include <algorithm>
 
 #include "error.hpp"
 #include "parallel.hpp"
 
 namespace sbrt {
 
-namespace {
-
-/// A kernel cell's offset from the centre in the camera's terms.
-struct KernelCell {
-    glm::dvec3 unit; ///< unit vector from the centre (map space)
-    double along_du, along_dv, along_forward;
-};
-
-} // namespace
-
-void apply_kernel_normals(const Tracer &tracer, const Camera &camera, int k,
-                          HitImage &hits, unsigned threads)
+KernelNormals::KernelNormals(const Tracer &tracer, const Camera &camera, int k)
+    : tracer_(tracer), rows_(camera.rows()), cols_(camera.cols()),
+      parallel_(camera.parallel()), origin_(camera.origin()),
+      forward_(camera.forward()), du_(camera.du()), dv_(camera.dv()),
+      du2_(glm::dot(du_, du_)), dv2_(glm::dot(dv_, dv_)),
+      voxel_x_(tracer.voxel_size().x)
 {
     if (k < 3 || k > 11 || k % 2 == 0)
         fail("kernel size ", k, " must be odd, from 3 to 11");
     if (camera.is_window())
         fail("kernel normals need the whole image, not a window of its rows");
-    const int rows = camera.rows(), cols = camera.cols();
-    const glm::dvec3 origin = camera.origin(), forward = camera.forward();
-    const glm::dvec3 du = camera.du(), dv = camera.dv();
-    const double du2 = glm::dot(du, du), dv2 = glm::dot(dv, dv);
-
-    // depth along the view axis of the surface seen at each pixel
-    std::vector<double> depth(hits.size(), INFINITY);
-    std::vector<glm::dvec3> point(hits.size());
-    for (size_t i = 0; i < hits.size(); ++i)
-        if (hits[i].is_hit()) {
-            point[i] = tracer.exaggerate(hits[i].point);
-            depth[i] = glm::dot(point[i] - origin, forward);
-        }
-
     const glm::dvec3 voxel = tracer.voxel_size();
-    std::vector<KernelCell> kernel;
     const int h = k / 2;
+    auto cell = [&](int a, int b, int c) {
+        const glm::dvec3 off = glm::dvec3(a, b, c) * voxel;
+        return Cell{glm::normalize(off), glm::dot(off, du_), glm::dot(off, dv_),
+                    glm::dot(off, forward_)};
+    };
     for (int a = -h; a <= h; ++a)
         for (int b = -h; b <= h; ++b)
-            for (int c = -h; c <= h; ++c) {
-                if (!a && !b && !c)
-                    continue;
-                const glm::dvec3 off = glm::dvec3(a, b, c) * voxel;
-                kernel.push_back({glm::normalize(off), glm::dot(off, du),
-                                  glm::dot(off, dv), glm::dot(off, forward)});
-            }
+            for (int c = -h; c <= h; ++c)
+                if (a || b || c)
+                    cells_.push_back(cell(a, b, c));
+    for (int i = 0; i < 8; ++i)
+        corners_[i] = cell(i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h);
+}
 
+double KernelNormals::view_depth(const Hit &hit) const
+{
+    if (!hit.is_hit())
+        return INFINITY;
+    return glm::dot(tracer_.exaggerate(hit.point) - origin_, forward_);
+}
+
+std::pair<int, int> KernelNormals::row_reach(const Hit *hits) const
+{
+    // every cell centre lies in the box of the eight corner cells, and a
+    // projection maps a box in front of the camera into the hull of its
+    // corners' images: their rows bound the cells' rows
+    double y_low = INFINITY, y_high = -INFINITY;
+    for (int col = 0; col < cols_; ++col) {
+        const Hit &hit = hits[col];
+        if (!hit.is_hit())
+            continue;
+        const glm::dvec3 v = tracer_.exaggerate(hit.point) - origin_;
+        const double p_dv = glm::dot(v, dv_), depth = glm::dot(v, forward_);
+        for (const Cell &corner : corners_) {
+            const double z = depth + corner.along_forward;
+            double y = (p_dv + corner.along_dv) / dv2_;
+            if (!parallel_) {
+                if (!(z > 0))
+                    return {0, rows_}; // the box reaches behind the camera
+                y /= z;
+            }
+            y_low = std::min(y_low, y);
+            y_high = std::max(y_high, y);
+        }
+    }
+    if (y_low > y_high)
+        return {0, 0};
+    // row = floor((1 - y) / 2 * rows), a row of margin for the rounding
+    const double first = std::floor((1 - y_high) / 2 * rows_) - 1;
+    const double last = std::floor((1 - y_low) / 2 * rows_) + 2;
+    return {int(std::clamp(first, 0.0, double(rows_))),
+            int(std::clamp(last, 0.0, double(rows_)))};
+}
+
+std::vector<double> gaussian_weights(double sigma)
+{
+    const int radius = int(std::ceil(3 * sigma));
+    std::vector<double> weight(2 * radius + 1);
+    for (int d = -radius; d <= radius; ++d)
+        weight[d + radius] = std::exp(-d * d / (2 * sigma * sigma));
+    return weight;
+}
+
+void apply_kernel_normals(const Tracer &tracer, const Camera &camera, int k,
+                          HitImage &hits, unsigned threads)
+{
+    const KernelNormals kernel(tracer, camera, k);
+    const int rows = camera.rows(), cols = camera.cols();
+    std::vector<double> depth(hits.size());
+    for (size_t i = 0; i < hits.size(); ++i)
+        depth[i] = kernel.view_depth(hits[i]);
+    const auto depth_at = [&](int r, int c) { return depth[size_t(r) * cols + c]; };
+    // in place: the kernel reads points and depths, never normals
     for_each_row(rows, threads, [&](int row) {
         for (int col = 0; col < cols; ++col) {
             const size_t i = size_t(row) * cols + col;
-            if (!hits[i].is_hit())
-                continue;
-            const glm::dvec3 v = point[i] - origin;
-            const double p_du = glm::dot(v, du), p_dv = glm::dot(v, dv);
-            const double p_depth = depth[i];
-            const double tolerance = 1e-6 * (std::fabs(p_depth) + voxel.x);
-            glm::dvec3 sum(0);
-            for (const KernelCell &cell : kernel) {
-                const double z = p_depth + cell.along_forward;
-                double x = (p_du + cell.along_du) / du2;
-                double y = (p_dv + cell.along_dv) / dv2;
-                if (!camera.parallel()) {
-                    if (!(z > 0))
-                        continue;
-                    x /= z;
-                    y /= z;
-                }
-                const double c = std::floor((x + 1) / 2 * cols);
-                const double r = std::floor((1 - y) / 2 * rows);
-                if (c < 0 || c >= cols || r < 0 || r >= rows)
-                    continue;
-                const double seen = depth[size_t(r) * cols + size_t(c)];
-                if (z < seen - tolerance)
-                    sum += cell.unit; // in front of the surface: empty
-            }
-            const double length = glm::length(sum);
-            if (length > 0)
-                hits[i].normal = sum / length;
+            if (hits[i].is_hit())
+                kernel.normal(hits[i], depth[i], depth_at, hits[i].normal);
         }
     });
 }
@@ -99,10 +113,8 @@ void smooth_normals(const Camera &camera, double sigma, HitImage &hits,
     if (!(sigma > 0))
         return;
     const int rows = camera.rows(), cols = camera.cols();
-    const int radius = int(std::ceil(3 * sigma));
-    std::vector<double> weight(2 * radius + 1);
-    for (int d = -radius; d <= radius; ++d)
-        weight[d + radius] = std::exp(-d * d / (2 * sigma * sigma));
+    const std::vector<double> weight = gaussian_weights(sigma);
+    const int radius = int(weight.size() / 2);
     // separable: along rows, then along columns, over hit pixels only
     auto pass = [&](std::vector<glm::dvec3> &out, const std::vector<glm::dvec3> &in,
                     int step_row, int step_col) {

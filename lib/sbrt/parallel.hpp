@@ -1,7 +1,8 @@
 /****************************************************************************
  * MODULE:    lib/sbrt (r3.sbrt addon)
  * PURPOSE:   Runs a function on every row of an image with a pool of
- *            threads taking rows from an atomic counter
+ *            threads taking rows from an atomic counter; an exception
+ *            thrown on any thread reaches the caller
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_PARALLEL_HPP
@@ -9,29 +10,58 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
 namespace sbrt {
 
-/// Calls row_function(row) for row in [0, rows) on `threads` threads
-/// (0: all cores); returns when all rows are done.
-template <typename RowFunction>
-void for_each_row(int rows, unsigned threads, const RowFunction &row_function)
+/// Threads to use for `threads` (0: all cores).
+inline unsigned thread_count(unsigned threads)
 {
-    if (threads == 0)
-        threads = std::max(1u, std::thread::hardware_concurrency());
-    std::atomic<int> next{0};
+    return threads ? threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// Calls row_function(row) for row in [first, last) on `threads` threads
+/// (0: all cores), rows taken one at a time (dynamic scheduling); returns
+/// when all rows are done. The first exception thrown by row_function, on
+/// any thread, stops the other threads taking rows and is rethrown here
+/// (a thread never ends the process with std::terminate).
+template <typename RowFunction>
+void for_each_row(int first, int last, unsigned threads, const RowFunction &row_function)
+{
+    threads = thread_count(threads);
+    std::atomic<int> next{first};
+    std::exception_ptr error;
+    std::mutex error_mutex;
     auto work = [&]() {
-        for (int row; (row = next++) < rows;)
-            row_function(row);
+        try {
+            for (int row; (row = next++) < last;)
+                row_function(row);
+        }
+        catch (...) {
+            next = last; // the others stop at their next row
+            const std::lock_guard<std::mutex> lock(error_mutex);
+            if (!error)
+                error = std::current_exception();
+        }
     };
     std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads && t < unsigned(rows); ++t)
+    for (unsigned t = 1; t < threads && int(t) < last - first; ++t)
         pool.emplace_back(work);
     work();
     for (std::thread &t : pool)
         t.join();
+    if (error)
+        std::rethrow_exception(error);
+}
+
+/// for_each_row over [0, rows).
+template <typename RowFunction>
+void for_each_row(int rows, unsigned threads, const RowFunction &row_function)
+{
+    for_each_row(0, rows, threads, row_function);
 }
 
 } // namespace sbrt

@@ -39,6 +39,27 @@ std::array<uint8_t, 3> material_color(const Model &model, uint32_t material)
             uint8_t(60 + 180 * c[2])};
 }
 
+std::array<uint8_t, 3> shade_pixel(const Model &model, const Shading &shading,
+                                   const Hit &hit)
+{
+    glm::dvec3 color(shading.background[0], shading.background[1],
+                     shading.background[2]);
+    if (hit.is_hit()) {
+        const auto base = material_color(model, hit.material);
+        glm::dvec3 surface(base[0], base[1], base[2]);
+        if (shading.drape)
+            surface = shading.drape->color(hit, surface);
+        const double lambert =
+            std::max(0.0, glm::dot(shading.light, glm::dvec3(hit.normal)));
+        color = surface * (shading.ambient + (1 - shading.ambient) * lambert);
+    }
+    color = 255.0 * glm::dvec3(hit.veil) + double(hit.transmittance) * color;
+    std::array<uint8_t, 3> rgb;
+    for (int k = 0; k < 3; ++k)
+        rgb[k] = uint8_t(std::lround(std::clamp(color[k], 0.0, 255.0)));
+    return rgb;
+}
+
 Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
             const Shading &shading, unsigned threads)
 {
@@ -61,25 +82,13 @@ Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
         for (int col = 0; col < image.cols; ++col) {
             const size_t i = size_t(row) * image.cols + col;
             const Hit &hit = hits[i];
-            glm::dvec3 color(shading.background[0], shading.background[1],
-                             shading.background[2]);
             if (hit.is_hit()) {
-                const auto base = material_color(model, hit.material);
-                glm::dvec3 surface(base[0], base[1], base[2]);
-                if (shading.drape)
-                    surface = shading.drape->color(hit, surface);
-                const double lambert =
-                    std::max(0.0, glm::dot(shading.light, glm::dvec3(hit.normal)));
-                color = surface * (shading.ambient + (1 - shading.ambient) * lambert);
                 image.material[i] = model.materials()[hit.material].id;
                 image.elevation[i] = hit.point.z;
                 image.depth[i] = glm::length(
                     hit.point - tracer.unexaggerate(camera.ray(row, col).origin));
             }
-            color = 255.0 * glm::dvec3(hit.veil) + double(hit.transmittance) * color;
-            std::array<uint8_t, 3> rgb;
-            for (int k = 0; k < 3; ++k)
-                rgb[k] = uint8_t(std::lround(std::clamp(color[k], 0.0, 255.0)));
+            const auto rgb = shade_pixel(model, shading, hit);
             std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + i * 3);
         }
     });

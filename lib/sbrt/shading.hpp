@@ -44,9 +44,15 @@ struct Image {
 /// Colour of a material: its stored colour, else a fixed palette entry.
 std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 
-/// Outputs of the hits; a pixel's colour is the veil of the translucent
-/// strata plus, through them, the lit colour of the hit (or background).
-/// Material, elevation and depth are those of the first opaque hit. of camera's rays (row-major, as trace_image gives).
+/// A pixel's colour: the veil of the translucent strata plus, through
+/// them, the lit colour of the hit (or the background).
+std::array<uint8_t, 3> shade_pixel(const Model &model, const Shading &shading,
+                                   const Hit &hit);
+
+/// The whole-image reference of the pipeline (tests and benchmarks; the
+/// module streams through Renderer): outputs of the hits of camera's rays
+/// (row-major, as trace_image gives). Material, elevation and depth are
+/// those of the first opaque hit.
 Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
             const Shading &shading, unsigned threads = 0);
 

@@ -1,0 +1,308 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The streamed render pipeline
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "band_writer.hpp"
+#include "error.hpp"
+#include "hit_window.hpp"
+#include "kernel_normals.hpp"
+#include "parallel.hpp"
+
+namespace sbrt {
+
+namespace {
+
+/// Sizes the band's vectors for `rows` rows of the outputs asked for.
+void prepare_band(Band &band, int first_row, int rows, int cols, const Outputs &outputs)
+{
+    band.first_row = first_row;
+    band.rows = rows;
+    band.cols = cols;
+    const size_t n = band.pixels();
+    band.rgb.resize(n * 3);
+    band.material.resize(outputs.material ? n : 0);
+    band.elevation.resize(outputs.elevation ? n : 0);
+    band.depth.resize(outputs.depth ? n : 0);
+}
+
+/// \brief Shades rows of hits into a band: the colour and the outputs asked
+/// for.
+struct RowShader {
+    const Tracer &tracer;
+    const Shading &shading;
+    const Camera &camera;
+
+    void operator()(const Hit *hits, int row, Band &band) const
+    {
+        const Model &model = tracer.model();
+        const size_t first = size_t(row - band.first_row) * band.cols;
+        for (int col = 0; col < band.cols; ++col) {
+            const Hit &hit = hits[col];
+            const size_t i = first + col;
+            const auto rgb = shade_pixel(model, shading, hit);
+            std::copy(rgb.begin(), rgb.end(), band.rgb.begin() + ptrdiff_t(i) * 3);
+            if (!band.material.empty())
+                band.material[i] = hit.is_hit() ? model.materials()[hit.material].id
+                                                : NULL_CLASS;
+            if (!band.elevation.empty())
+                band.elevation[i] = hit.is_hit() ? hit.point.z : NAN;
+            if (!band.depth.empty())
+                band.depth[i] = hit.is_hit()
+                                    ? glm::length(hit.point -
+                                                  tracer.unexaggerate(
+                                                      camera.ray(row, col).origin))
+                                    : NAN;
+        }
+    }
+};
+
+/// \brief Kernel normals (and their smoothing) band by band over a window
+/// of traced rows: a band's pixels read the depths of the rows their
+/// kernel cells project to, and smoothing reads the kernel normals of
+/// `radius` rows on either side.
+class KernelBands {
+public:
+    KernelBands(const Tracer &tracer, const Camera &camera, const Shading &shading,
+                RowTracer &rows, unsigned threads)
+        : kernel_(tracer, camera, shading.kernel), window_(rows, camera.cols()),
+          rows_(camera.rows()), cols_(camera.cols()), threads_(threads)
+    {
+        if (shading.smooth > 0)
+            weight_ = gaussian_weights(shading.smooth);
+        radius_ = weight_.empty() ? 0 : int(weight_.size() / 2);
+    }
+
+    /// Rows [first, last) with their final normals, in the window.
+    void prepare(int first, int last)
+    {
+        const int lo = std::max(0, first - radius_), hi = std::min(rows_, last + radius_);
+        window_.drop_before(std::min(lo, lowest_reach_from(lo)));
+        window_.cover(lo, hi);
+        add_depths(lo, hi);
+        // the rows the kernel reads for rows [lo, hi)
+        for_each_row(lo, hi, threads_, [&](int r) {
+            HitWindow::Row &row = window_.row(r);
+            if (row.reach.first < 0)
+                row.reach = kernel_.row_reach(row.hits.data());
+        });
+        int need_lo = lo, need_hi = hi;
+        for (int r = lo; r < hi; ++r) {
+            const auto reach = window_.row(r).reach;
+            if (reach.first < reach.second) {
+                need_lo = std::min(need_lo, reach.first);
+                need_hi = std::max(need_hi, reach.second);
+                reach_above_ = std::max(reach_above_, r - reach.first);
+            }
+        }
+        window_.cover(need_lo, need_hi);
+        add_depths(need_lo, need_hi);
+        apply_kernel(lo, hi);
+        if (radius_)
+            smooth(first, last, lo, hi);
+    }
+
+    const Hit *hits(int row) { return window_.row(row).hits.data(); }
+    int most_rows() const { return window_.most_rows(); }
+
+private:
+    /// The lowest row a later band may read, as far as the bands so far
+    /// tell (rows dropped too early are traced again: the same hits).
+    int lowest_reach_from(int row) const { return row - reach_above_; }
+
+    void add_depths(int first, int last)
+    {
+        for_each_row(first, last, threads_, [&](int r) {
+            HitWindow::Row &row = window_.row(r);
+            if (!row.depth.empty())
+                return;
+            row.depth.resize(size_t(cols_));
+            for (int c = 0; c < cols_; ++c)
+                row.depth[size_t(c)] = kernel_.view_depth(row.hits[size_t(c)]);
+        });
+    }
+
+    void apply_kernel(int first, int last)
+    {
+        // the window's depth rows, for lookups without the deque
+        const int base = window_.first();
+        std::vector<const double *> depth_rows;
+        for (int r = base; r < window_.last(); ++r)
+            depth_rows.push_back(window_.row(r).depth.data());
+        const auto depth_at = [&](int r, int c) {
+            return depth_rows[size_t(r - base)][c];
+        };
+        for_each_row(first, last, threads_, [&](int r) {
+            HitWindow::Row &row = window_.row(r);
+            if (row.kernel_done)
+                return;
+            for (int c = 0; c < cols_; ++c) {
+                Hit &hit = row.hits[size_t(c)];
+                if (hit.is_hit())
+                    kernel_.normal(hit, row.depth[size_t(c)], depth_at, hit.normal);
+            }
+            row.kernel_done = true;
+        });
+    }
+
+    /// Gaussian smoothing as smooth_normals does it: along each row of
+    /// [lo, hi), then down the columns of [first, last).
+    void smooth(int first, int last, int lo, int hi)
+    {
+        for_each_row(lo, hi, threads_, [&](int r) {
+            HitWindow::Row &row = window_.row(r);
+            if (!row.across.empty())
+                return;
+            row.across.assign(size_t(cols_), glm::dvec3(0));
+            for (int c = 0; c < cols_; ++c) {
+                if (!row.hits[size_t(c)].is_hit())
+                    continue;
+                glm::dvec3 sum(0);
+                for (int d = -radius_; d <= radius_; ++d) {
+                    const int cc = c + d;
+                    if (cc >= 0 && cc < cols_ && row.hits[size_t(cc)].is_hit())
+                        sum += weight_[size_t(d + radius_)] *
+                               glm::dvec3(row.hits[size_t(cc)].normal);
+                }
+                row.across[size_t(c)] = sum;
+            }
+        });
+        // every row of [lo, hi) has its first pass before any normal of
+        // [first, last) changes
+        for_each_row(first, last, threads_, [&](int r) {
+            std::vector<glm::dvec3> down(size_t(cols_), glm::dvec3(0));
+            HitWindow::Row &row = window_.row(r);
+            for (int c = 0; c < cols_; ++c) {
+                if (!row.hits[size_t(c)].is_hit())
+                    continue;
+                for (int d = -radius_; d <= radius_; ++d) {
+                    const int rr = r + d;
+                    if (rr < 0 || rr >= rows_)
+                        continue;
+                    HitWindow::Row &other = window_.row(rr);
+                    if (other.hits[size_t(c)].is_hit())
+                        down[size_t(c)] += weight_[size_t(d + radius_)] * other.across[size_t(c)];
+                }
+            }
+            for (int c = 0; c < cols_; ++c) {
+                const double length = glm::length(down[size_t(c)]);
+                if (row.hits[size_t(c)].is_hit() && length > 0)
+                    row.hits[size_t(c)].normal = down[size_t(c)] / length;
+            }
+        });
+    }
+
+    KernelNormals kernel_;
+    HitWindow window_;
+    int rows_, cols_;
+    unsigned threads_;
+    std::vector<double> weight_;
+    int radius_ = 0;
+    int reach_above_ = 0;
+};
+
+} // namespace
+
+Renderer::Renderer(Model model, double zexag, Scene scene, Shading shading,
+                   RenderSettings settings)
+    : model_(std::make_unique<const Model>(std::move(model))),
+      tracer_(std::make_unique<const Tracer>(*model_, zexag, std::move(scene))),
+      shading_(shading), settings_(settings)
+{
+}
+
+RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
+                              const BandSink &sink, RowTracer *rows) const
+{
+    const auto start = std::chrono::steady_clock::now();
+    if (camera.is_window())
+        fail("Renderer::render: a whole image, not a window of its rows");
+    const unsigned threads = thread_count(settings_.threads);
+    const int image_rows = camera.rows(), cols = camera.cols();
+    RenderReport report;
+    // enough rows per band that every thread takes several (dynamic
+    // scheduling evens out rows of different cost)
+    report.band_rows = std::min(image_rows, settings_.band_rows > 0
+                                                ? settings_.band_rows
+                                                : std::max(16, 4 * int(threads)));
+    std::optional<CpuRowTracer> cpu;
+    if (!rows) {
+        cpu.emplace(*tracer_, camera, threads, settings_.first_pass);
+        report.first_pass = cpu->first_pass();
+    }
+    RowTracer &source = rows ? *rows : *cpu;
+    const RowShader shade{*tracer_, shading_, camera};
+    std::optional<KernelBands> kernel;
+    if (shading_.normals == Normals::kernel)
+        kernel.emplace(*tracer_, camera, shading_, source, threads);
+    HitImage band_hits(kernel ? 0 : size_t(report.band_rows) * cols);
+
+    BandWriter writer(sink);
+    for (int first = 0; first < image_rows; first += report.band_rows) {
+        const int count = std::min(report.band_rows, image_rows - first);
+        Band band = writer.take();
+        prepare_band(band, first, count, cols, outputs);
+        if (kernel) {
+            kernel->prepare(first, first + count);
+            for_each_row(first, first + count, threads,
+                         [&](int row) { shade(kernel->hits(row), row, band); });
+        }
+        else if (cpu) {
+            // trace and shade a row at once, while its hits are in cache
+            for_each_row(first, first + count, threads, [&](int row) {
+                Hit *hits = band_hits.data() + size_t(row - first) * cols;
+                cpu->trace_row(row, hits);
+                shade(hits, row, band);
+            });
+        }
+        else {
+            source.trace_rows(first, count, band_hits.data());
+            for_each_row(first, first + count, threads, [&](int row) {
+                shade(band_hits.data() + size_t(row - first) * cols, row, band);
+            });
+        }
+        writer.submit(std::move(band));
+        ++report.bands;
+    }
+    writer.finish();
+    report.most_rows_held = kernel ? kernel->most_rows() : report.band_rows;
+    report.ms = std::chrono::duration<double, std::milli>(
+                    std::chrono::steady_clock::now() - start)
+                    .count();
+    return report;
+}
+
+Image Renderer::render_image(const Camera &camera, const Outputs &outputs,
+                             RowTracer *rows) const
+{
+    Image image;
+    image.rows = camera.rows();
+    image.cols = camera.cols();
+    const size_t pixels = size_t(image.rows) * image.cols;
+    image.rgb.resize(pixels * 3);
+    image.material.assign(outputs.material ? pixels : 0, NULL_CLASS);
+    image.elevation.assign(outputs.elevation ? pixels : 0, NAN);
+    image.depth.assign(outputs.depth ? pixels : 0, NAN);
+    const auto gather = [&](const Band &band) {
+        const size_t at = size_t(band.first_row) * band.cols;
+        std::copy(band.rgb.begin(), band.rgb.end(), image.rgb.begin() + ptrdiff_t(at) * 3);
+        std::copy(band.material.begin(), band.material.end(),
+                  image.material.begin() + ptrdiff_t(band.material.empty() ? 0 : at));
+        std::copy(band.elevation.begin(), band.elevation.end(),
+                  image.elevation.begin() + ptrdiff_t(band.elevation.empty() ? 0 : at));
+        std::copy(band.depth.begin(), band.depth.end(),
+                  image.depth.begin() + ptrdiff_t(band.depth.empty() ? 0 : at));
+    };
+    render(camera, outputs, gather, rows);
+    return image;
+}
+
+} // namespace sbrt
