@@ -5,17 +5,13 @@
  ****************************************************************************/
 #include "backend.hpp"
 
-#include <chrono>
-#include <memory>
-#include <thread>
+#include <optional>
 
-#include "cpu_tracing.hpp"
 #include "error.hpp"
 #include "gpu_tracer.hpp"
+#include "parallel.hpp"
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 bool is_software_renderer(const std::string &renderer)
 {
@@ -25,41 +21,42 @@ bool is_software_renderer(const std::string &renderer)
     return false;
 }
 
-void report(const char *what, int rows, int cols, double ms)
+void report(const char *what, const sbrt::Camera &camera, double ms)
 {
     G_verbose_message(_("%s: %d x %d rays in %.1f ms (%.2f Mrays/s)"), what,
-                      cols, rows, ms, rows * double(cols) / ms / 1000);
+                      camera.cols(), camera.rows(), ms,
+                      camera.rows() * double(camera.cols()) / ms / 1000);
 }
 
-sbrt::HitImage trace_on_cpu(const RenderRequest &request,
-                            const sbrt::Tracer &tracer,
-                            const sbrt::Camera &camera)
+void report_bands(const sbrt::RenderReport &r)
 {
-    G_verbose_message(_("Backend: cpu (exact double-precision ray caster, %d "
+    G_verbose_message(_("Streamed: %d bands of %d rows, at most %d rows of hits "
+                        "held"),
+                      r.bands, r.band_rows, r.most_rows_held);
+}
+
+void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
+                   const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                   const sbrt::BandSink &sink)
+{
+    G_verbose_message(_("Backend: cpu (exact double-precision ray caster, %u "
                         "threads)"),
-                      request.threads ? request.threads
-                                      : int(std::thread::hardware_concurrency()));
-    const auto start = Clock::now();
-    sbrt::FirstPassReport first_pass;
-    sbrt::HitImage hits =
-        sbrt::trace_image(tracer, camera, unsigned(request.threads), true, &first_pass);
-    if (first_pass.tiles)
+                      sbrt::thread_count(unsigned(request.threads)));
+    const sbrt::RenderReport r = renderer.render(camera, outputs, sink);
+    if (r.first_pass.tiles)
         G_verbose_message(_("First pass: %zu tiles of %d x %d pixels, %zu of them "
                             "meet nothing (%.1f ms)"),
-                          first_pass.tiles, sbrt::FIRST_PASS_TILE, sbrt::FIRST_PASS_TILE,
-                          first_pass.empty_tiles, first_pass.ms);
-    report(_("CPU tracing"), camera.rows(), camera.cols(),
-           std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    return hits;
+                          r.first_pass.tiles, sbrt::FIRST_PASS_TILE,
+                          sbrt::FIRST_PASS_TILE, r.first_pass.empty_tiles,
+                          r.first_pass.ms);
+    report_bands(r);
+    report(_("CPU tracing"), camera, r.ms);
 }
 
-sbrt::HitImage trace_on_gpu(const RenderRequest &request,
-                            const sbrt::Tracer &tracer,
-                            const sbrt::Camera &camera,
-                            const sbrt_gl::GlContext &context)
+void render_on_gpu(const RenderRequest &request, const sbrt::Renderer &renderer,
+                   const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                   const sbrt::BandSink &sink, sbrt_gl::GpuTracer &gpu)
 {
-    sbrt_gl::GpuTracer gpu(context, tracer, sbrt::parse_gpu_layout(request.gpu_layout));
-    G_verbose_message(_("Backend: %s"), context.name().c_str());
     const sbrt::GpuMemory &m = gpu.memory();
     G_verbose_message(_("GPU memory, layout=%s: %llu bytes (index %llu, intervals "
                         "%llu), of which %llu hold nothing"),
@@ -69,34 +66,34 @@ sbrt::HitImage trace_on_gpu(const RenderRequest &request,
                       (unsigned long long)m.waste_bytes);
     G_verbose_message(_("GL_VERSION: %s"), gpu.gl_version().c_str());
     G_verbose_message(_("GL_RENDERER: %s"), gpu.gl_renderer().c_str());
-    sbrt::HitImage hits =
-        gpu.trace_image(camera, unsigned(request.threads));
+    gpu.reset_stats();
+    sbrt_gl::GpuRowTracer rows(gpu, camera, unsigned(request.threads));
+    const sbrt::RenderReport r = renderer.render(camera, outputs, sink, &rows);
     const sbrt_gl::GpuStats &s = gpu.stats();
     G_verbose_message(_("Model upload: %.1f ms; read back: %.1f ms; %d "
                         "band(s)"),
                       s.upload_ms, s.readback_ms, s.bands);
-    report(_("GPU tracing"), camera.rows(), camera.cols(), s.trace_ms);
+    report_bands(r);
+    report(_("GPU tracing"), camera, s.trace_ms);
     if (s.over_budget)
         G_verbose_message(_("%zu rays exceeded the shader's loop budget and "
                             "were traced on the CPU"),
                           s.over_budget);
-    return hits;
 }
 
 } // namespace
 
-sbrt::HitImage trace_hits(const RenderRequest &request,
-                          const sbrt::Tracer &tracer,
-                          const sbrt::Camera &camera)
+std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &request,
+                                                      bool overlays)
 {
     if (request.backend == "cpu")
-        return trace_on_cpu(request, tracer, camera);
-    if (tracer.has_overlays()) {
+        return nullptr;
+    if (overlays) {
         if (request.backend != "auto")
             G_warning(_("backend=%s: boreholes and fence curtains are drawn by "
                         "the CPU ray caster only; using it"),
                       request.backend.c_str());
-        return trace_on_cpu(request, tracer, camera);
+        return nullptr;
     }
     std::unique_ptr<sbrt_gl::GlContext> context;
     try {
@@ -106,7 +103,7 @@ sbrt::HitImage trace_hits(const RenderRequest &request,
         if (request.backend != "auto")
             G_fatal_error(_("backend=%s: %s"), request.backend.c_str(), e.what());
         G_verbose_message(_("No OpenGL context (%s): using the CPU"), e.what());
-        return trace_on_cpu(request, tracer, camera);
+        return nullptr;
     }
     if (request.backend == "auto") {
         const sbrt_gl::GlApi gl(*context);
@@ -116,9 +113,34 @@ sbrt::HitImage trace_hits(const RenderRequest &request,
             G_verbose_message(_("OpenGL renderer <%s> of %s is software: the "
                                 "CPU ray caster is faster on the same cores"),
                               renderer.c_str(), context->name().c_str());
-            context.reset();
-            return trace_on_cpu(request, tracer, camera);
+            return nullptr;
         }
     }
-    return trace_on_gpu(request, tracer, camera, *context);
+    G_verbose_message(_("Backend: %s"), context->name().c_str());
+    return context;
+}
+
+void render_on_backend(const RenderRequest &request, const sbrt::Renderer &renderer,
+                       const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                       const sbrt::BandSink &sink, sbrt_gl::GlContext *context)
+{
+    if (!context) {
+        render_on_cpu(request, renderer, camera, outputs, sink);
+        return;
+    }
+    std::optional<sbrt_gl::GpuTracer> gpu;
+    try {
+        gpu.emplace(*context, renderer.tracer(),
+                    sbrt::parse_gpu_layout(request.gpu_layout));
+    }
+    catch (const sbrt::Error &e) {
+        // the model does not fit this GPU's buffers
+        if (request.backend != "auto")
+            throw;
+        G_message(_("The GPU cannot take this model (%s): rendering on the CPU"),
+                  e.what());
+        render_on_cpu(request, renderer, camera, outputs, sink);
+        return;
+    }
+    render_on_gpu(request, renderer, camera, outputs, sink, *gpu);
 }

@@ -19,11 +19,11 @@
 #include "hidden_materials.hpp"
 #include "material_colors.hpp"
 #include "raster_output.hpp"
+#include "scene_pruning.hpp"
 #include "render_options.hpp"
 #include "sbrt_store.hpp"
 #include "scene_camera.hpp"
 #include "scene_setup.hpp"
-#include "shading.hpp"
 #include "skipping_report.hpp"
 #include "texture_input.hpp"
 #include "vector_input.hpp"
@@ -58,8 +58,24 @@ sbrt::Scene make_scene(const RenderRequest &request, const sbrt::Model &original
     return scene;
 }
 
+sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drape)
+{
+    sbrt::Shading shading;
+    shading.light = sbrt::Shading::light_from(request.light_azimuth,
+                                              request.light_elevation);
+    shading.ambient = request.ambient;
+    shading.background = request.background;
+    shading.normals = request.normals == "kernel" ? sbrt::Normals::kernel
+                                                  : sbrt::Normals::face;
+    shading.kernel = request.kernel;
+    shading.smooth = request.smooth;
+    shading.drape = drape;
+    return shading;
+}
+
 void run(const RenderRequest &request)
 {
+    // 1. the model, its colours, the drape, the camera
     sbrt::Model model = sbrt_grass::read_sbrt_map(request.input.c_str());
     apply_color_option(request, model);
     std::optional<sbrt::Drape> drape;
@@ -74,6 +90,8 @@ void run(const RenderRequest &request)
     framing.skip_empty_space = false;
     const sbrt::Camera camera =
         make_camera(request, sbrt::Tracer(model, request.zexag, framing), region);
+
+    // 2. the scene: hidden strata, planes, boreholes, fence, translucency
     const std::vector<uint32_t> hidden = hidden_materials(request, model);
     // the boreholes need the model as read where strata are hidden
     const sbrt::Model original = hidden.empty() || request.boreholes.empty()
@@ -86,32 +104,27 @@ void run(const RenderRequest &request)
     }
     sbrt::Scene scene = make_scene(request, hidden.empty() ? model : original,
                                    model, hidden, camera);
-    // what no ray of the camera reaches is neither traced nor uploaded
-    const bool prune = scene.skip_empty_space && scene.draw_model;
-    sbrt::Pruning pruning;
-    if (prune) {
-        pruning = sbrt::prune_for_view(sbrt::Tracer(model, request.zexag, scene), camera);
-        model = std::move(pruning.model); // `pruning` keeps the counts
+
+    // 3. the backend; on a GPU what no ray of the camera reaches is not
+    // uploaded (the CPU never reads it anyway)
+    const std::unique_ptr<sbrt_gl::GlContext> context = choose_gl_context(
+        request, !scene.boreholes.empty() || !scene.fence.empty());
+    if (context && scene.skip_empty_space && scene.draw_model) {
+        sbrt::Pruning pruning =
+            sbrt::prune_for_view(sbrt::Tracer(model, request.zexag, scene), camera);
+        report_pruning(pruning, scene.planes.size());
+        model = std::move(pruning.model);
     }
-    const sbrt::Tracer tracer(model, request.zexag, std::move(scene));
-    if (prune)
-        report_pruning(pruning, tracer);
 
-    sbrt::Shading shading;
-    shading.light = sbrt::Shading::light_from(request.light_azimuth,
-                                              request.light_elevation);
-    shading.ambient = request.ambient;
-    shading.background = request.background;
-    shading.normals = request.normals == "kernel" ? sbrt::Normals::kernel
-                                                  : sbrt::Normals::face;
-    shading.kernel = request.kernel;
-    shading.smooth = request.smooth;
-    shading.drape = drape ? &*drape : nullptr;
-
-    sbrt::HitImage hits = trace_hits(request, tracer, camera);
-    const sbrt::Image image = sbrt::shade(tracer, camera, std::move(hits), shading,
-                                          unsigned(request.threads));
-    write_image_maps(request, model, image);
+    // 4. prepare once, then trace, shade and write band by band
+    const sbrt::Renderer renderer(std::move(model), request.zexag, std::move(scene),
+                                  make_shading(request, drape ? &*drape : nullptr),
+                                  {unsigned(request.threads), true, 0});
+    report_pyramid(renderer.tracer());
+    ImageMaps maps(request, camera.rows(), camera.cols());
+    render_on_backend(request, renderer, camera, maps.outputs(),
+                      [&](const sbrt::Band &band) { maps.write(band); }, context.get());
+    maps.close(renderer.model());
 }
 
 } // namespace

@@ -1,17 +1,53 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.render
- * PURPOSE:   Writes a rendered image as GRASS raster maps with colour
- *            tables, category labels and history
+ * PURPOSE:   The output maps (and PNG file) of a render, written row by row
+ *            as the renderer's bands arrive
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef R3_SBRT_RASTER_OUTPUT_HPP
 #define R3_SBRT_RASTER_OUTPUT_HPP
 
-#include "shading.hpp"
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "band.hpp"
+#include "model.hpp"
+#include "png_file.hpp"
 #include "render_options.hpp"
 
-/// Writes <output>.red/.green/.blue and the optional maps of the request.
-void write_image_maps(const RenderRequest &request, const sbrt::Model &model,
-                      const sbrt::Image &image);
+/// \brief <output>.red/.green/.blue and the optional maps of the request,
+/// open for writing; the image is the current region's rows x cols. Maps
+/// appear only when close() is reached (GRASS writes new maps aside).
+class ImageMaps {
+public:
+    ImageMaps(const RenderRequest &request, int rows, int cols);
+    ImageMaps(const ImageMaps &) = delete;
+    ImageMaps &operator=(const ImageMaps &) = delete;
+
+    /// The outputs a render must compute for these maps.
+    sbrt::Outputs outputs() const;
+    /// The band's rows into every map (the bands in order, from the top).
+    void write(const sbrt::Band &band);
+    /// Closes the maps with their colours, categories (classes of `model`)
+    /// and history; moves the PNG into place.
+    void close(const sbrt::Model &model);
+
+private:
+    struct Map {
+        std::string name;
+        int fd;
+        RASTER_MAP_TYPE type;
+    };
+    Map open(const std::string &name, RASTER_MAP_TYPE type);
+
+    const RenderRequest &request_;
+    int rows_, cols_;
+    std::vector<Map> rgb_;
+    std::vector<Map> material_, elevation_, depth_; ///< empty or one map
+    std::vector<CELL> cells_;
+    std::vector<DCELL> dcells_;
+    std::unique_ptr<sbrt::PngFile> png_;
+};
 
 #endif

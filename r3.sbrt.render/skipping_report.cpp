@@ -35,12 +35,18 @@ void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidd
                       ull(emptied));
 }
 
-void report_pruning(const sbrt::Pruning &pruning, const sbrt::Tracer &tracer)
+void report_pruning(const sbrt::Pruning &pruning, size_t planes)
 {
     report_left_out(_("out of the view"), pruning.outside_view);
-    if (!tracer.planes().empty())
+    if (planes)
         report_left_out(_("cut away by the planes"), pruning.cut_away);
+}
+
+void report_pyramid(const sbrt::Tracer &tracer)
+{
     const sbrt::MinMaxPyramid &p = tracer.pyramid();
+    if (!p.levels())
+        return; // skipping off, or only overlays drawn
     const sbrt::Model &m = tracer.model();
     G_verbose_message(_("Empty-space skipping: %d-level min-max pyramid (%llu "
                         "bytes); %llu of %llu cells hold nothing to draw; %zu "

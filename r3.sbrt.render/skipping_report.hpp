@@ -12,7 +12,11 @@
 /// Intervals and bytes hide= removed (the model as read against what is left).
 void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidden);
 
-/// What pruning left out, and the pyramid of the tracer that draws the rest.
-void report_pruning(const sbrt::Pruning &pruning, const sbrt::Tracer &tracer);
+/// What pruning left out (for the GPU: stacks out of the view and, with
+/// `planes`, those cut away).
+void report_pruning(const sbrt::Pruning &pruning, size_t planes);
+
+/// The empty-space pyramid of the tracer that draws the scene.
+void report_pyramid(const sbrt::Tracer &tracer);
 
 #endif

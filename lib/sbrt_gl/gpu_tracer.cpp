@@ -121,20 +121,34 @@ std::string GpuTracer::gl_renderer() const
     return reinterpret_cast<const char *>(gl_.GetString(GL_RENDERER));
 }
 
-sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
-                                      unsigned cpu_threads,
-                                      uint32_t loop_budget)
+void GpuTracer::reset_stats()
 {
     const double upload_ms = stats_.upload_ms;
     stats_ = GpuStats();
     stats_.upload_ms = upload_ms;
-    const int rows = camera.rows(), cols = camera.cols();
+}
+
+sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
+                                      unsigned cpu_threads,
+                                      uint32_t loop_budget)
+{
+    reset_stats();
+    sbrt::HitImage hits(size_t(camera.rows()) * camera.cols());
+    trace_rows(camera, 0, camera.rows(), hits.data(), cpu_threads, loop_budget);
+    return hits;
+}
+
+void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_count,
+                           sbrt::Hit *out, unsigned cpu_threads, uint32_t loop_budget)
+{
+    const int cols = camera.cols();
     const size_t row_bytes = size_t(cols) * sizeof(sbrt::GpuPixelHit);
     if (row_bytes > max_block_bytes_)
         sbrt::fail("an image row of ", cols, " pixels does not fit a storage buffer");
-    const int band_rows = int(std::min<size_t>(rows, max_block_bytes_ / row_bytes));
-    GlBuffer band(gl_, GL_SHADER_STORAGE_BUFFER, size_t(band_rows) * row_bytes);
-    std::vector<sbrt::GpuPixelHit> records(size_t(rows) * cols);
+    const int band_rows = int(std::min<size_t>(row_count, max_block_bytes_ / row_bytes));
+    if (!band_ || band_->bytes() < size_t(band_rows) * row_bytes)
+        band_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, size_t(band_rows) * row_bytes);
+    records_.resize(size_t(row_count) * cols);
 
     sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget);
     program_.use();
@@ -146,12 +160,12 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
         index_texture_->bind(0);
         interval_texture_->bind(1);
     }
-    band.bind(2);
+    band_->bind(2);
     materials_.bind(3);
     pyramid_.bind(4);
     view_.bind(0);
-    for (int first = 0; first < rows; first += band_rows) {
-        const int count = std::min(band_rows, rows - first);
+    for (int first = first_row; first < first_row + row_count; first += band_rows) {
+        const int count = std::min(band_rows, first_row + row_count - first);
         view.options[2] = uint32_t(first);
         view.options[3] = uint32_t(count);
         view_.upload(&view, sizeof view); // stays bound to index 0
@@ -162,30 +176,29 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
         check_gl(gl_, "the ray casting dispatch");
         stats_.trace_ms += ms_since(start);
         start = Clock::now();
-        band.download(records.data() + size_t(first) * cols, size_t(count) * row_bytes);
+        band_->download(records_.data() + size_t(first - first_row) * cols,
+                        size_t(count) * row_bytes);
         stats_.readback_ms += ms_since(start);
         ++stats_.bands;
     }
 
     const auto start = Clock::now();
-    sbrt::HitImage hits(records.size());
-    std::vector<size_t> over_per_row(size_t(rows), 0);
-    sbrt::for_each_row(rows, cpu_threads, [&](int row) {
+    std::vector<size_t> over_per_row(size_t(row_count), 0);
+    sbrt::for_each_row(first_row, first_row + row_count, cpu_threads, [&](int row) {
         for (int col = 0; col < cols; ++col) {
-            const size_t i = size_t(row) * cols + col;
+            const size_t i = size_t(row - first_row) * cols + col;
             const sbrt::Ray ray = camera.ray(row, col);
             bool over_budget = false;
-            hits[i] = sbrt::decode_gpu_hit(tracer_, ray, records[i], over_budget);
+            out[i] = sbrt::decode_gpu_hit(tracer_, ray, records_[i], over_budget);
             if (over_budget) {
-                hits[i] = tracer_.trace(ray);
-                ++over_per_row[size_t(row)];
+                out[i] = tracer_.trace(ray);
+                ++over_per_row[size_t(row - first_row)];
             }
         }
     });
     for (size_t n : over_per_row)
         stats_.over_budget += n;
     stats_.readback_ms += ms_since(start);
-    return hits;
 }
 
 } // namespace sbrt_gl

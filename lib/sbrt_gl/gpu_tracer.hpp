@@ -17,12 +17,14 @@
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
 #include "gpu_layout.hpp"
+#include "cpu_tracing.hpp"
 #include "gpu_memory_layout.hpp"
 #include "hit_image.hpp"
 
 namespace sbrt_gl {
 
-/// Figures of the last trace_image call.
+/// Figures of the last trace_image call (or of the trace_rows calls since
+/// reset_stats).
 struct GpuStats {
     double upload_ms = 0;   ///< shader compile and model upload
     double trace_ms = 0;    ///< dispatches until the GPU is done
@@ -41,6 +43,14 @@ public:
     sbrt::HitImage trace_image(const sbrt::Camera &camera,
                                unsigned cpu_threads = 0,
                                uint32_t loop_budget = sbrt::GPU_LOOP_BUDGET);
+
+    /// Hits of rows [first, first + count) of `camera`'s image (the rays
+    /// of the whole image), row-major into `out`; records decoded on
+    /// `cpu_threads` threads. Adds to stats().
+    void trace_rows(const sbrt::Camera &camera, int first, int count, sbrt::Hit *out,
+                    unsigned cpu_threads = 0,
+                    uint32_t loop_budget = sbrt::GPU_LOOP_BUDGET);
+    void reset_stats();
 
     std::string gl_version() const;
     std::string gl_renderer() const;
@@ -66,7 +76,27 @@ private:
     std::optional<GlUintTexture> index_texture_, interval_texture_;
     GlBuffer materials_, view_;
     GlBuffer pyramid_; ///< empty-space skipping (levels() 0: off)
+    std::optional<GlBuffer> band_; ///< the hit records of a band of rows
+    std::vector<sbrt::GpuPixelHit> records_;
     GpuStats stats_;
+};
+
+/// \brief The GPU as the streamed renderer's row tracer of one camera.
+class GpuRowTracer : public sbrt::RowTracer {
+public:
+    GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads = 0)
+        : gpu_(gpu), camera_(camera), threads_(cpu_threads)
+    {
+    }
+    void trace_rows(int first, int count, sbrt::Hit *out) override
+    {
+        gpu_.trace_rows(camera_, first, count, out, threads_);
+    }
+
+private:
+    GpuTracer &gpu_;
+    const sbrt::Camera &camera_;
+    unsigned threads_;
 };
 
 } // namespace sbrt_gl
