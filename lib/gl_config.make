@@ -2,4 +2,5 @@
 # tests. OSMesa is built in only where its header exists (Mesa < 25.1).
 SBRT_OSMESA_HEADER := $(wildcard /usr/include/GL/osmesa.h)
 SBRT_GL_CXXFLAGS = $(if $(SBRT_OSMESA_HEADER),-DSBRT_HAVE_OSMESA)
-SBRT_GL_LIBS = -lEGL $(if $(SBRT_OSMESA_HEADER),-lOSMesa)
+# libOSMesa is loaded at run time (osmesa_context.cpp), never linked
+SBRT_GL_LIBS = -lEGL -ldl

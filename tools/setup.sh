@@ -15,6 +15,8 @@ packages=(
     libgtest-dev                     # unit tests
     clang libclang-rt-14-dev         # libFuzzer and the sanitizers' runtimes
     valgrind                         # memcheck of the modules
+    libpng-dev                       # the PNG file of a render
+    python3-pil                      # tests read the PNG back with a real decoder
 )
 missing=()
 for p in "${packages[@]}"; do
