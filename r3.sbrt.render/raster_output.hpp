@@ -42,7 +42,7 @@ private:
     Map open(const std::string &name, RASTER_MAP_TYPE type);
 
     const RenderRequest &request_;
-    int rows_, cols_;
+    int cols_;
     std::vector<Map> rgb_;
     std::vector<Map> material_, elevation_, depth_; ///< empty or one map
     std::vector<CELL> cells_;
