@@ -56,17 +56,62 @@ bool ray_panel(glm::dvec2 o, glm::dvec2 d, const FencePanel &panel, double &t,
     return true;
 }
 
+namespace {
+
+/// Clips the segment a -> b to the box [low, high] (Liang-Barsky); false
+/// where it misses the box.
+bool clip_segment(glm::dvec2 &a, glm::dvec2 &b, glm::dvec2 low, glm::dvec2 high)
+{
+    double t0 = 0, t1 = 1;
+    const glm::dvec2 d = b - a;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (d[axis] == 0) {
+            if (a[axis] < low[axis] || a[axis] > high[axis])
+                return false;
+            continue;
+        }
+        double ta = (low[axis] - a[axis]) / d[axis], tb = (high[axis] - a[axis]) / d[axis];
+        if (ta > tb)
+            std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        if (t0 > t1)
+            return false;
+    }
+    const glm::dvec2 start = a;
+    a = start + t0 * d;
+    b = start + t1 * d;
+    return true;
+}
+
+} // namespace
+
 std::vector<uint64_t> cells_near_segment(const Frame &frame, glm::dvec2 a,
                                          glm::dvec2 b, double margin)
 {
-    // samples at most half a cell apart, each with the cells within the
-    // margin (plus one cell, so rounding at a wall never loses a cell)
     const double ew = frame.ew_res(), ns = frame.ns_res();
+    // only the part of the segment that can come near a cell: a segment
+    // far outside the frame has no sample count or cell index in an int
+    const glm::dvec2 pad(margin + 2 * ew, margin + 2 * ns);
+    if (!(margin >= 0) ||
+        !clip_segment(a, b, glm::dvec2(frame.west, frame.south) - pad,
+                      glm::dvec2(frame.east, frame.north) + pad))
+        return {};
     const double cells_long =
         std::max(std::fabs(b.x - a.x) / ew, std::fabs(b.y - a.y) / ns);
+    const double reach_cols = std::ceil(margin / ew) + 1, reach_rows = std::ceil(margin / ns) + 1;
+    if (cells_long > 4.0 * (frame.rows + frame.cols) || reach_cols > frame.cols ||
+        reach_rows > frame.rows) {
+        // a margin beyond the frame's size: every cell (a superset is safe)
+        std::vector<uint64_t> all(frame.cells());
+        for (uint64_t c = 0; c < all.size(); ++c)
+            all[c] = c;
+        return all;
+    }
+    // samples at most half a cell apart, each with the cells within the
+    // margin (plus one cell, so rounding at a wall never loses a cell)
     const int samples = int(std::ceil(cells_long * 2)) + 1;
-    const int reach_x = int(std::ceil(margin / ew)) + 1;
-    const int reach_y = int(std::ceil(margin / ns)) + 1;
+    const int reach_x = int(reach_cols), reach_y = int(reach_rows);
     std::vector<uint64_t> cells;
     for (int k = 0; k <= samples; ++k) {
         const glm::dvec2 p = a + (b - a) * (double(k) / samples);

@@ -12,6 +12,7 @@
 
 #include "cpu_tracing.hpp"
 #include "error.hpp"
+#include "overlay_geometry.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;
@@ -384,4 +385,37 @@ TEST(Overlays, ImagesTraceOnlyWhereTheOverlaysProject)
             }
     }
     EXPECT_GT(hits, 100u);
+}
+
+TEST(Fence, SegmentsFarOutsideTheFrameAreClippedNotOverflowed)
+{
+    // regression (issue 15): a fence vertex at 1e10 map units made
+    // cells_near_segment convert 1e10 to int (undefined behaviour)
+    const auto v = sbrt_test::random_voxels(31, 12, 15, 16, 5);
+    const Model m = sbrt_test::build_model(v);
+    const Frame &f = v.frame;
+    const double y = f.south + 6.4 * f.ns_res();
+    EXPECT_TRUE(cells_near_segment(f, {-1e10, f.north + 1e9}, {1e10, f.north + 1e9}, 0)
+                    .empty());
+    const auto far = cells_near_segment(f, {-1e10, y}, {1e10, y}, 0);
+    const auto near = cells_near_segment(f, {f.west - 1, y}, {f.east + 1, y}, 0);
+    EXPECT_EQ(far, near);
+    EXPECT_GE(far.size(), size_t(f.cols));
+    // a margin wider than the frame: every cell is a candidate
+    EXPECT_EQ(cells_near_segment(f, {f.west, y}, {f.west, y}, 1e12).size(), f.cells());
+    // the same curtain drawn from both: the same hits
+    Scene far_scene, near_scene;
+    far_scene.fence = {{{-1e10, y}, {1e10, y}}};
+    near_scene.fence = {{{f.west - 1e3, y}, {f.east + 1e3, y}}};
+    far_scene.draw_model = near_scene.draw_model = false;
+    const Tracer a(m, 1.0, far_scene), b(m, 1.0, near_scene);
+    const glm::dvec3 c = a.centre();
+    const Camera cam = Camera::perspective(c + glm::dvec3(30, -200, 80), c, 50, 30, 40);
+    const auto ha = trace_image(a, cam, 2), hb = trace_image(b, cam, 2);
+    size_t hits = 0;
+    for (size_t i = 0; i < ha.size(); ++i) {
+        ASSERT_EQ(ha[i].material, hb[i].material) << i;
+        hits += ha[i].is_hit();
+    }
+    EXPECT_GT(hits, 0u);
 }
