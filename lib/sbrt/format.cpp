@@ -6,6 +6,7 @@
 #include "format.hpp"
 
 #include <cerrno>
+#include <cstddef>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -17,6 +18,7 @@
 #include "atomic_dir.hpp"
 #include "byte_io.hpp"
 #include "error.hpp"
+#include "mapped_file.hpp"
 
 namespace sbrt {
 
@@ -105,6 +107,34 @@ std::vector<uint8_t> encode_stacks(const Model &model)
     return std::move(head.bytes());
 }
 
+namespace {
+
+uint32_t load_u32(const uint8_t *p)
+{
+    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 |
+           uint32_t(p[3]) << 24;
+}
+
+/// Intervals as stored: u32 material, f32 top, little-endian, 8 bytes each.
+void load_intervals(const uint8_t *p, std::vector<Interval> &intervals)
+{
+    static_assert(sizeof(Interval) == 8 && offsetof(Interval, top) == 4,
+                  "Interval is the file's record");
+    if constexpr (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) {
+        if (!intervals.empty())
+            std::memcpy(intervals.data(), p, intervals.size() * sizeof(Interval));
+        return;
+    }
+    for (Interval &iv : intervals) {
+        iv.material = load_u32(p);
+        const uint32_t bits = load_u32(p + 4);
+        std::memcpy(&iv.top, &bits, 4);
+        p += 8;
+    }
+}
+
+} // namespace
+
 Model decode_stacks(const uint8_t *data, size_t size, const std::string &what)
 {
     ByteReader in(data, size, what);
@@ -178,10 +208,13 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what)
         m.blue = in.u8();
         m.has_color = (in.u8() & 1) != 0;
     }
+    // the sections' sizes were checked against the file above: read them
+    // straight from memory (little-endian, as the file is)
     std::vector<uint32_t> offsets(f.cells() + 1, 0);
     uint64_t total = 0;
+    const uint8_t *counts = data + at_counts;
     for (uint64_t c = 0; c < f.cells(); ++c) {
-        total += in.u32();
+        total += load_u32(counts + 4 * c);
         if (total > interval_count)
             fail(what, ": stack sizes exceed the interval count");
         offsets[c + 1] = uint32_t(total);
@@ -190,10 +223,7 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what)
         fail(what, ": stack sizes sum to ", total, ", header says ",
              interval_count);
     std::vector<Interval> intervals(interval_count);
-    for (Interval &iv : intervals) {
-        iv.material = in.u32();
-        iv.top = in.f32();
-    }
+    load_intervals(data + at_intervals, intervals);
     materials[0].label = "EMPTY";
     Model model(f, std::move(materials), std::move(offsets),
                 std::move(intervals));
@@ -293,7 +323,7 @@ void write_sbrt(const std::string &directory, const Model &model,
 Model read_sbrt(const std::string &directory)
 {
     const std::string stacks_path = directory + "/stacks";
-    const std::vector<uint8_t> bytes = read_file_bytes(stacks_path);
+    const MappedFile bytes(stacks_path);
     Model model = decode_stacks(bytes.data(), bytes.size(), stacks_path);
     const std::string cats_path = directory + "/cats";
     struct stat st;

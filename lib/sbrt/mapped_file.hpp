@@ -1,0 +1,36 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   A regular file mapped read-only into memory (RAII): the SBRT
+ *            reader decodes from the page cache, with no buffer of the
+ *            whole file filled first
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_MAPPED_FILE_HPP
+#define SBRT_MAPPED_FILE_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace sbrt {
+
+/// \brief The bytes of a regular file; throws sbrt::Error where it cannot
+/// be opened or mapped.
+class MappedFile {
+public:
+    explicit MappedFile(const std::string &path);
+    ~MappedFile();
+    MappedFile(const MappedFile &) = delete;
+    MappedFile &operator=(const MappedFile &) = delete;
+
+    const uint8_t *data() const { return static_cast<const uint8_t *>(data_); }
+    size_t size() const { return size_; }
+
+private:
+    void *data_ = nullptr;
+    size_t size_ = 0;
+};
+
+} // namespace sbrt
+
+#endif
