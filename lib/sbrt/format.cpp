@@ -116,7 +116,7 @@ uint32_t load_u32(const uint8_t *p)
 }
 
 /// Intervals as stored: u32 material, f32 top, little-endian, 8 bytes each.
-void load_intervals(const uint8_t *p, std::vector<Interval> &intervals)
+void load_intervals(const uint8_t *p, Intervals &intervals)
 {
     static_assert(sizeof(Interval) == 8 && offsetof(Interval, top) == 4,
                   "Interval is the file's record");
@@ -222,7 +222,7 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what)
     if (total != interval_count)
         fail(what, ": stack sizes sum to ", total, ", header says ",
              interval_count);
-    std::vector<Interval> intervals(interval_count);
+    Intervals intervals(interval_count);
     load_intervals(data + at_intervals, intervals);
     materials[0].label = "EMPTY";
     Model model(f, std::move(materials), std::move(offsets),

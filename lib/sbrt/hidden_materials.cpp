@@ -19,7 +19,7 @@ Model hide_materials(const Model &model, const std::vector<uint32_t> &hidden)
     }
     const uint64_t cells = model.frame().cells();
     std::vector<uint32_t> offsets(cells + 1, 0);
-    std::vector<Interval> intervals;
+    Intervals intervals;
     intervals.reserve(model.intervals().size());
     for (uint64_t c = 0; c < cells; ++c) {
         const size_t stack_start = intervals.size();

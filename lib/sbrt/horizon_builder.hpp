@@ -37,7 +37,7 @@ private:
     std::vector<Material> materials_;
     std::vector<uint32_t> unit_material_;
     std::vector<uint32_t> offsets_{0};
-    std::vector<Interval> intervals_;
+    Intervals intervals_;
     std::vector<double> effective_top_;
     int row_ = 0;
     uint64_t clamped_ = 0;

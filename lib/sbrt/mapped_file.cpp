@@ -29,15 +29,14 @@ MappedFile::MappedFile(const std::string &path)
     }
     size_ = size_t(st.st_size);
     if (size_ > 0) {
-        data_ = mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+        // populated at once: one call instead of a page fault per 4 KiB
+        data_ = mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
         if (data_ == MAP_FAILED) {
             const int error = errno;
             data_ = nullptr;
             close(fd);
             fail(path, ": cannot map ", size_, " bytes: ", std::strerror(error));
         }
-        // read front to back once: let the kernel read ahead
-        madvise(data_, size_, MADV_SEQUENTIAL);
     }
     close(fd); // the mapping stays
 }

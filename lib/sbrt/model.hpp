@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "unfilled_allocator.hpp"
+
 namespace sbrt {
 
 /// Class id that stands for "no value" (GRASS's CELL null is INT_MIN too).
@@ -67,19 +69,23 @@ struct Stats {
     double compression_percent = 0;
 };
 
+/// The intervals of a model, every cell's stack in turn: written by whoever
+/// makes them, never zero-filled first (a model's largest array).
+using Intervals = std::vector<Interval, UnfilledAllocator<Interval>>;
+
 /// \brief The whole model: frame, one stack per cell, materials.
 class Model {
 public:
     Model() = default;
     /// Takes ownership of the arrays; `offsets` has cells + 1 entries.
     Model(Frame frame, std::vector<Material> materials,
-          std::vector<uint32_t> offsets, std::vector<Interval> intervals);
+          std::vector<uint32_t> offsets, Intervals intervals);
 
     const Frame &frame() const { return frame_; }
     const std::vector<Material> &materials() const { return materials_; }
     std::vector<Material> &materials() { return materials_; }
     const std::vector<uint32_t> &offsets() const { return offsets_; }
-    const std::vector<Interval> &intervals() const { return intervals_; }
+    const Intervals &intervals() const { return intervals_; }
 
     uint64_t cell_index(int row, int col) const
     {
@@ -103,7 +109,7 @@ private:
     Frame frame_;
     std::vector<Material> materials_;
     std::vector<uint32_t> offsets_;
-    std::vector<Interval> intervals_;
+    Intervals intervals_;
 };
 
 } // namespace sbrt

@@ -37,7 +37,7 @@ Pruning prune_for_view(const Tracer &tracer, const Camera &camera)
     const MinMaxPyramid &pyramid = tracer.pyramid();
     Pruning out;
     std::vector<uint32_t> offsets(f.cells() + 1, 0);
-    std::vector<Interval> intervals;
+    Intervals intervals;
     intervals.reserve(model.intervals().size());
     for (int row = 0; row < f.rows; ++row)
         for (int col = 0; col < f.cols; ++col) {

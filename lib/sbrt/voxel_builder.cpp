@@ -86,7 +86,7 @@ Model VoxelStackBuilder::finish(const std::vector<Material> &legend)
         ++offsets[r.cell + 1];
     for (uint32_t c = 0; c < cells; ++c)
         offsets[c + 1] += offsets[c];
-    std::vector<Interval> intervals(runs_.size());
+    Intervals intervals(runs_.size());
     {
         std::vector<uint32_t> next(offsets.begin(), offsets.end() - 1);
         for (const Run &r : runs_)

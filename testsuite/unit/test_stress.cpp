@@ -130,7 +130,7 @@ TEST(Stress, ThinLayersAreNeverSkipped)
     for (int k = 1; k < 5; ++k)
         materials[size_t(k)].id = k;
     std::vector<uint32_t> offsets(f.cells() + 1);
-    std::vector<Interval> intervals;
+    Intervals intervals;
     for (uint64_t c = 0; c < f.cells(); ++c) {
         const float base = 10.0f + float(c % 7);
         for (Interval iv : {Interval{1, base}, Interval{2, base + 1.0f},

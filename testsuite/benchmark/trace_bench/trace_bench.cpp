@@ -5,14 +5,20 @@
  *                        skipping, and with skipping but without the
  *                        coarse first pass (and on the GPU where a
  *                        context opens)
+ *              frame     the streamed pipeline in process: load, prepare
+ *                        (Renderer), a whole frame (trace, shade, the RGB
+ *                        bands handed to a sink), warm, on threads= (0:
+ *                        all cores); beside it the whole-image reference
+ *                        (trace_image, then shade)
  *              error     time against error: the exact method, the sampled
  *                        one (steps 1..1/16 cell, adaptive), kernel
  *                        normals k = 3..11, each against the exact CPU
  *                        reference with face normals
- * USAGE:     trace_bench skipping|error SBRT_DIR position=x,y,z
+ * USAGE:     trace_bench skipping|frame|error SBRT_DIR position=x,y,z
  *            target=x,y,z [fov=25] [zexag=1] [cols=1056] [rows=884]
  *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
- *            [classes=FILE: error writes the reference's class ids, int32]
+ *            [threads=N] [classes=FILE: error writes the reference's class
+ *            ids, int32]
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <chrono>
@@ -33,6 +39,8 @@
 #include "format.hpp"
 #include "gpu_tracer.hpp"
 #include "hidden_materials.hpp"
+#include "parallel.hpp"
+#include "renderer.hpp"
 #include "sampled_tracer.hpp"
 #include "shading.hpp"
 
@@ -106,7 +114,9 @@ Model load(const std::string &dir, const Args &args)
             fail("hide: no class ", id);
         hidden.push_back(uint32_t(k));
     }
-    return hidden.empty() ? m : hide_materials(m, hidden);
+    if (hidden.empty())
+        return m; // moved, not copied
+    return hide_materials(m, hidden);
 }
 
 std::unique_ptr<sbrt_gl::GlContext> gl_context(const Args &args)
@@ -272,10 +282,45 @@ void time_against_error(const Model &model, const Args &args, const Camera &came
 
 } // namespace
 
+/// The streamed frame in process, warm (best of `repeat`), and the
+/// whole-image reference, taken in turns.
+void frame(const std::string &dir, const Args &args, const Camera &camera, double zexag,
+           int repeat)
+{
+    const std::string label = args.get("label", "view");
+    const unsigned threads = unsigned(std::stoi(args.get("threads", "0")));
+    Model model;
+    const double load_ms = run_ms([&] { model = load(dir, args); });
+    std::unique_ptr<Renderer> renderer;
+    const double prepare_ms = run_ms([&] {
+        renderer = std::make_unique<Renderer>(std::move(model), zexag, Scene{}, Shading{},
+                                              RenderSettings{threads, true, 0});
+    });
+    size_t checksum = 0;
+    const auto sink = [&](const Band &band) {
+        for (size_t i = 0; i < band.rgb.size(); i += 61)
+            checksum += band.rgb[i];
+    };
+    const Tracer &tracer = renderer->tracer();
+    const std::vector<double> ms = best_ms_in_turns(
+        repeat, {[&] { renderer->render(camera, {}, sink); },
+                 [&] {
+                     const Image image =
+                         shade(tracer, camera, trace_image(tracer, camera, threads),
+                               renderer->shading(), threads);
+                     checksum += image.rgb[image.rgb.size() / 2];
+                 }});
+    const double rays = double(camera.rows()) * camera.cols();
+    std::printf("frame label=%s threads=%u cols=%d rows=%d load_ms=%.1f prepare_ms=%.1f "
+                "frame_ms=%.1f mrays=%.2f reference_ms=%.1f (checksum %zu)\n",
+                label.c_str(), thread_count(threads), camera.cols(), camera.rows(),
+                load_ms, prepare_ms, ms[0], rays / ms[0] / 1000, ms[1], checksum);
+}
+
 int main(int argc, char *argv[])
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s skipping|error SBRT_DIR key=value...\n", argv[0]);
+        std::fprintf(stderr, "usage: %s skipping|frame|error SBRT_DIR key=value...\n", argv[0]);
         return 2;
     }
     try {
@@ -287,16 +332,19 @@ int main(int argc, char *argv[])
                 fail("argument ", a, " is not key=value");
             args.values[a.substr(0, eq)] = a.substr(eq + 1);
         }
-        const Model model = load(argv[2], args);
+        const std::string mode = argv[1];
+        const Model model = mode == "frame" ? Model() : load(argv[2], args);
         const double zexag = std::stod(args.get("zexag", "1"));
         const int repeat = std::stoi(args.get("repeat", "3"));
-        const Tracer probe(model, zexag);
+        const Model framed = mode == "frame" ? read_sbrt(argv[2]) : Model();
+        const Tracer probe(mode == "frame" ? framed : model, zexag);
         const Camera camera = Camera::perspective(
             probe.exaggerate(args.point("position")), probe.exaggerate(args.point("target")),
             std::stod(args.get("fov", "25")), std::stoi(args.get("rows", "884")),
             std::stoi(args.get("cols", "1056")));
-        const std::string mode = argv[1];
-        if (mode == "skipping")
+        if (mode == "frame")
+            frame(argv[2], args, camera, zexag, repeat);
+        else if (mode == "skipping")
             skipping(model, args, camera, zexag, repeat);
         else if (mode == "error")
             time_against_error(model, args, camera, zexag, repeat);

@@ -1,0 +1,82 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   An allocator for large arrays of plain records that the code
+ *            writes itself: no zero fill first, and blocks of 2 MiB and
+ *            more on huge pages where Linux allows (a page fault costs
+ *            about 10 us on the virtual machines measured: 16,000 of them
+ *            for a 67 MB image of hits, 5,000 for B's intervals)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_UNFILLED_ALLOCATOR_HPP
+#define SBRT_UNFILLED_ALLOCATOR_HPP
+
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace sbrt {
+
+/// std::allocator, except that a value-initialising construct (resize(n),
+/// vector(n)) leaves the element unwritten; copies are constructed as usual.
+template <typename T>
+struct UnfilledAllocator : std::allocator<T> {
+    static constexpr size_t HUGE_PAGE = size_t(2) << 20;
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
+                  "only for plain records");
+    using value_type = T;
+    template <typename U>
+    struct rebind {
+        using other = UnfilledAllocator<U>;
+    };
+    UnfilledAllocator() = default;
+    template <typename U>
+    UnfilledAllocator(const UnfilledAllocator<U> &) noexcept
+    {
+    }
+    /// Blocks of 2 MiB and more are 2 MiB aligned and, on Linux, advised
+    /// to be backed by huge pages: a 67 MB image of hits then costs 32 page
+    /// faults instead of 16,000.
+    T *allocate(size_t n)
+    {
+        if (n > SIZE_MAX / sizeof(T))
+            throw std::bad_alloc();
+        const size_t bytes = n * sizeof(T);
+        if (bytes < HUGE_PAGE)
+            return std::allocator<T>::allocate(n);
+        const size_t rounded = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
+        void *p = std::aligned_alloc(HUGE_PAGE, rounded);
+        if (!p)
+            throw std::bad_alloc();
+#if defined(MADV_HUGEPAGE)
+        madvise(p, rounded, MADV_HUGEPAGE); // advice only: no check
+#endif
+        return static_cast<T *>(p);
+    }
+    void deallocate(T *p, size_t n) noexcept
+    {
+        if (n * sizeof(T) < HUGE_PAGE)
+            std::allocator<T>::deallocate(p, n);
+        else
+            std::free(p);
+    }
+    template <typename U>
+    void construct(U *) noexcept
+    {
+    }
+    template <typename U, typename... Args>
+    void construct(U *p, Args &&...args)
+    {
+        ::new (static_cast<void *>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
+} // namespace sbrt
+
+#endif
