@@ -115,15 +115,22 @@ uint32_t load_u32(const uint8_t *p)
            uint32_t(p[3]) << 24;
 }
 
-/// Intervals as stored: u32 material, f32 top, little-endian, 8 bytes each.
-void load_intervals(const uint8_t *p, Intervals &intervals)
+/// Intervals as stored: u32 material, f32 top, little-endian, 8 bytes
+/// each; a view of them where `keep` holds them and the host reads them as
+/// they are.
+IntervalArray load_intervals(const uint8_t *p, size_t count,
+                             std::shared_ptr<const void> keep)
 {
     static_assert(sizeof(Interval) == 8 && offsetof(Interval, top) == 4,
                   "Interval is the file's record");
-    if constexpr (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) {
-        if (!intervals.empty())
-            std::memcpy(intervals.data(), p, intervals.size() * sizeof(Interval));
-        return;
+    constexpr bool native = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
+    if (native && keep && reinterpret_cast<uintptr_t>(p) % alignof(Interval) == 0)
+        return IntervalArray(std::move(keep), reinterpret_cast<const Interval *>(p), count);
+    Intervals intervals(count);
+    if (native) {
+        if (count)
+            std::memcpy(intervals.data(), p, count * sizeof(Interval));
+        return intervals;
     }
     for (Interval &iv : intervals) {
         iv.material = load_u32(p);
@@ -131,11 +138,13 @@ void load_intervals(const uint8_t *p, Intervals &intervals)
         std::memcpy(&iv.top, &bits, 4);
         p += 8;
     }
+    return intervals;
 }
 
 } // namespace
 
-Model decode_stacks(const uint8_t *data, size_t size, const std::string &what)
+Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
+                    std::shared_ptr<const void> keep)
 {
     ByteReader in(data, size, what);
     if (size < sizeof MAGIC || std::memcmp(data, MAGIC, sizeof MAGIC) != 0)
@@ -222,8 +231,8 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what)
     if (total != interval_count)
         fail(what, ": stack sizes sum to ", total, ", header says ",
              interval_count);
-    Intervals intervals(interval_count);
-    load_intervals(data + at_intervals, intervals);
+    IntervalArray intervals =
+        load_intervals(data + at_intervals, size_t(interval_count), std::move(keep));
     materials[0].label = "EMPTY";
     Model model(f, std::move(materials), std::move(offsets),
                 std::move(intervals));
@@ -323,8 +332,8 @@ void write_sbrt(const std::string &directory, const Model &model,
 Model read_sbrt(const std::string &directory)
 {
     const std::string stacks_path = directory + "/stacks";
-    const MappedFile bytes(stacks_path);
-    Model model = decode_stacks(bytes.data(), bytes.size(), stacks_path);
+    const auto file = std::make_shared<const MappedFile>(stacks_path);
+    Model model = decode_stacks(file->data(), file->size(), stacks_path, file);
     const std::string cats_path = directory + "/cats";
     struct stat st;
     if (stat(cats_path.c_str(), &st) == 0) {

@@ -8,6 +8,7 @@
 #define SBRT_FORMAT_HPP
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,11 @@ constexpr uint32_t STACKS_HEADER_SIZE = 8 + 4 + 4 + 6 * 8 + 5 * 4 + 4 + 8 +
 std::vector<uint8_t> encode_stacks(const Model &model);
 /// Decodes untrusted bytes: checks magic, version, sizes, offsets against
 /// `size`, checksums and every model invariant; throws sbrt::Error listing
-/// what is wrong. `what` names the source in messages.
-Model decode_stacks(const uint8_t *data, size_t size, const std::string &what);
+/// what is wrong. `what` names the source in messages. Where `keep` holds
+/// `data` alive (a mapped file), the model's intervals are a view of it on
+/// little-endian hosts, not a copy.
+Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
+                    std::shared_ptr<const void> keep = nullptr);
 
 /// Text `cats`: one "id:label" line per material with a label.
 std::string encode_cats(const Model &model);

@@ -76,7 +76,7 @@ std::vector<uint32_t> index_texels(const Model &model)
 
 std::vector<uint32_t> interval_texels(const Model &model, int cols, int rows)
 {
-    const Intervals &intervals = model.intervals();
+    const IntervalArray &intervals = model.intervals();
     if (uint64_t(cols) * uint64_t(rows) < intervals.size())
         fail("interval texture of ", cols, " x ", rows, " texels is too small");
     std::vector<uint32_t> texels(2 * size_t(cols) * rows, 0);

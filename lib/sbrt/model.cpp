@@ -33,7 +33,7 @@ void Frame::validate(const char *where) const
 }
 
 Model::Model(Frame frame, std::vector<Material> materials,
-             std::vector<uint32_t> offsets, Intervals intervals)
+             std::vector<uint32_t> offsets, IntervalArray intervals)
     : frame_(frame), materials_(std::move(materials)),
       offsets_(std::move(offsets)), intervals_(std::move(intervals))
 {

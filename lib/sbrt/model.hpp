@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "unfilled_allocator.hpp"
+#include "interval_array.hpp"
 
 namespace sbrt {
 
@@ -42,13 +42,6 @@ struct Frame {
     void validate(const char *where) const;
 };
 
-/// \brief One interval of a stack: it ends at `top` (local units) and starts
-/// at the previous interval's top, or at 0 for the first one.
-struct Interval {
-    uint32_t material;
-    float top;
-};
-
 /// \brief A class of the source map with its legend.
 struct Material {
     int32_t id = NULL_CLASS;
@@ -69,23 +62,19 @@ struct Stats {
     double compression_percent = 0;
 };
 
-/// The intervals of a model, every cell's stack in turn: written by whoever
-/// makes them, never zero-filled first (a model's largest array).
-using Intervals = std::vector<Interval, UnfilledAllocator<Interval>>;
-
 /// \brief The whole model: frame, one stack per cell, materials.
 class Model {
 public:
     Model() = default;
     /// Takes ownership of the arrays; `offsets` has cells + 1 entries.
     Model(Frame frame, std::vector<Material> materials,
-          std::vector<uint32_t> offsets, Intervals intervals);
+          std::vector<uint32_t> offsets, IntervalArray intervals);
 
     const Frame &frame() const { return frame_; }
     const std::vector<Material> &materials() const { return materials_; }
     std::vector<Material> &materials() { return materials_; }
     const std::vector<uint32_t> &offsets() const { return offsets_; }
-    const Intervals &intervals() const { return intervals_; }
+    const IntervalArray &intervals() const { return intervals_; }
 
     uint64_t cell_index(int row, int col) const
     {
@@ -109,7 +98,7 @@ private:
     Frame frame_;
     std::vector<Material> materials_;
     std::vector<uint32_t> offsets_;
-    Intervals intervals_;
+    IntervalArray intervals_;
 };
 
 } // namespace sbrt

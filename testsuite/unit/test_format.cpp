@@ -4,6 +4,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <cstdio>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -127,4 +128,34 @@ TEST(Format, HugeCountsAreRejectedBeforeAllocation)
 TEST(Format, MissingDirectoryIsAnError)
 {
     EXPECT_THROW(read_sbrt("/nonexistent/sbrt/none"), Error);
+}
+
+TEST(Format, ReadMapsTheIntervalsWithoutACopy)
+{
+    const auto v = sbrt_test::random_voxels(41, 9, 11, 30);
+    const Model written = sbrt_test::build_model(v);
+    const std::string dir = sbrt_test::temp_dir("mapped") + "/m";
+    write_sbrt(dir, written, "test\n");
+    auto same = [&](const Model &m) {
+        ASSERT_EQ(m.intervals().size(), written.intervals().size());
+        for (size_t i = 0; i < m.intervals().size(); ++i) {
+            ASSERT_EQ(m.intervals()[i].material, written.intervals()[i].material) << i;
+            ASSERT_EQ(m.intervals()[i].top, written.intervals()[i].top) << i;
+        }
+    };
+    std::optional<Model> read(read_sbrt(dir));
+    EXPECT_TRUE(read->intervals().is_view());
+    same(*read);
+    // a copy shares the mapping and outlives the model it was copied from
+    const Model copy = *read;
+    read.reset();
+    EXPECT_TRUE(copy.intervals().is_view());
+    same(copy);
+    // replacing the SBRT (atomically, as every writer here does) leaves
+    // the mapped model as it was read
+    write_sbrt(dir, sbrt_test::build_model(sbrt_test::random_voxels(42, 9, 11, 30)), "new\n");
+    same(copy);
+    // decoded from bytes nobody keeps: a copy of its own
+    const std::vector<uint8_t> bytes = encode_stacks(written);
+    EXPECT_FALSE(decode_stacks(bytes.data(), bytes.size(), "bytes").intervals().is_view());
 }
