@@ -72,10 +72,60 @@ vec3 veil = vec3(0.0);
 float transmittance = 1.0;
 const float MIN_TRANSMITTANCE = 1.0 / 4096.0;
 
-void finish(uint index, vec3 point, uint code)
+// the ray of this invocation (local frame) and the t of the camera's eye
+vec3 ray_d = vec3(0.0);
+float t_eye = 0.0;
+
+#ifdef SBRT_SHADE
+// The outputs of the pixel, as lib/sbrt/shading.cpp's shade_pixel makes
+// them (in float: a colour level may differ where the double is within
+// rounding of a half)
+void finish(uint index, vec3 point, uint code, float t)
+{
+    uint base = index * outputs.x;
+    if ((code & CODE_OVER_BUDGET) != 0u) {
+        words[base] = 0u;
+        return;
+    }
+    uint material = code & 0xffffu;
+    vec3 color = background.rgb;
+    if (material != 0u) {
+        uint face = (code >> 16) & 0xfu;
+        vec3 n;
+        if (face == FACE_PLANE)
+            n = plane_normals[(code >> 20) & 0xfu].xyz;
+        else if (face == FACE_NONE)
+            n = -normalize(ray_d * box.yzw); // the camera is in the material
+        else
+            n = vec3(face == FACE_WEST ? -1.0 : face == FACE_EAST ? 1.0 : 0.0,
+                     face == FACE_SOUTH ? -1.0 : face == FACE_NORTH ? 1.0 : 0.0,
+                     face == FACE_BOTTOM ? -1.0 : face == FACE_TOP ? 1.0 : 0.0);
+        uint rgb = looks[material].x;
+        vec3 surface = vec3(float(rgb & 255u), float((rgb >> 8) & 255u),
+                            float((rgb >> 16) & 255u));
+        float lambert = max(0.0, dot(light.xyz, n));
+        color = surface * (light.w + (1.0 - light.w) * lambert);
+    }
+    color = 255.0 * veil + transmittance * color;
+    uvec3 c = uvec3(floor(clamp(color, 0.0, 255.0) + 0.5));
+    words[base] = c.r | c.g << 8 | c.b << 16 | 255u << 24;
+    uint k = base + 1u;
+    const uint NAN_BITS = 0x7fc00000u;
+    if ((outputs.y & 1u) != 0u)
+        words[k++] = material != 0u ? looks[material].y : 0x80000000u;
+    if ((outputs.y & 2u) != 0u)
+        words[k++] = material != 0u
+            ? floatBitsToUint(real_unit.w + point.z * elevation_step.x) : NAN_BITS;
+    if ((outputs.y & 4u) != 0u)
+        words[k++] = material != 0u
+            ? floatBitsToUint(length((t - t_eye) * ray_d * real_unit.xyz)) : NAN_BITS;
+}
+#else
+void finish(uint index, vec3 point, uint code, float t)
 {
     hits[index] = PixelHit(point, code, vec4(veil, transmittance));
 }
+#endif
 
 // Beer-Lambert over `length` map units of a translucent material; true
 // once (almost) nothing behind can be seen
@@ -134,7 +184,9 @@ void main()
     vec3 hi = origin_hi.xyz, lo = origin_lo.xyz + offset;
     vec3 d = forward.xyz + x * du.xyz + y * dv.xyz;
     float t_min = spread_u.w;
-    finish(index, vec3(0.0), 0u);
+    ray_d = d;
+    t_eye = t_min;
+    finish(index, vec3(0.0), 0u, 0.0);
 
     // 1. slab clip to [0, cols] x [0, rows] x [0, z_max], without a loop
     float t_near = -1.0 / 0.0, t_far = 1.0 / 0.0;
@@ -196,7 +248,7 @@ void main()
     int stuck_x = -1, stuck_y = -1;
     for (uint work = 0u;; ++work) {
         if (work >= options.y) {
-            finish(index, vec3(0.0), CODE_OVER_BUDGET);
+            finish(index, vec3(0.0), CODE_OVER_BUDGET, 0.0);
             return;
         }
         bool next_cell = false;
@@ -303,7 +355,7 @@ void main()
                     }
                     vec4 look = materials[material];
                     if (look.w < 0.0) {
-                        finish(index, (hi + t_enter * d) + lo, material | face << 16);
+                        finish(index, (hi + t_enter * d) + lo, material | face << 16, t_enter);
                         return;
                     }
                     float t_exit = t_out;
@@ -312,7 +364,7 @@ void main()
                     else if (!down && d.z != 0.0)
                         t_exit = min(t_out, from_origin(interval_top(j), hi.z, lo.z) / d.z);
                     if (absorb(look, max(t_exit - t_enter, 0.0) * length_per_t)) {
-                        finish(index, vec3(0.0), 0u);
+                        finish(index, vec3(0.0), 0u, 0.0);
                         return;
                     }
                 }
@@ -349,5 +401,5 @@ void main()
             break;
         mode = ENTER;
     }
-    finish(index, vec3(0.0), 0u);
+    finish(index, vec3(0.0), 0u, 0.0);
 }

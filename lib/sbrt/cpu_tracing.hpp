@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "band.hpp"
 #include "first_hit_bounds.hpp"
 #include "hit_image.hpp"
 
@@ -36,6 +37,13 @@ public:
     virtual ~RowTracer() = default;
     /// Hits of rows [first, first + count), row-major, into `out`.
     virtual void trace_rows(int first, int count, Hit *out) = 0;
+    /// Where the tracer shades too (a GPU): the band's outputs of those
+    /// rows (band sized for them); false where it does not.
+    virtual bool shade_rows(int /*first*/, int /*count*/, const Outputs & /*outputs*/,
+                            Band & /*band*/)
+    {
+        return false;
+    }
 };
 
 /// \brief The exact CPU tracer over the rows of `camera`, on `threads`

@@ -99,6 +99,42 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid)
     return words;
 }
 
+GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
+                        const Outputs &outputs)
+{
+    if (shading.normals != Normals::face || shading.drape)
+        fail("the GPU shades face normals without a drape only");
+    GpuShade shade{};
+    put(shade.light, shading.light);
+    shade.light[3] = float(shading.ambient);
+    for (int k = 0; k < 3; ++k)
+        shade.background[k] = float(shading.background[size_t(k)]);
+    const glm::dvec3 zero = tracer.from_local(glm::dvec3(0));
+    put(shade.real_unit, tracer.from_local(glm::dvec3(1)) - zero);
+    shade.real_unit[3] = float(zero.z);
+    shade.elevation_step[0] = float(tracer.from_local(glm::dvec3(0, 0, 1)).z - zero.z);
+    const std::vector<Tracer::LocalPlane> &planes = tracer.planes();
+    for (size_t k = 0; k < planes.size(); ++k)
+        put(shade.plane_normals[k], planes[k].shading_normal);
+    shade.outputs[1] = (outputs.material ? GPU_OUT_CLASS : 0) |
+                       (outputs.elevation ? GPU_OUT_ELEVATION : 0) |
+                       (outputs.depth ? GPU_OUT_DEPTH : 0);
+    shade.outputs[0] = 1 + outputs.material + outputs.elevation + outputs.depth;
+    return shade;
+}
+
+std::vector<GpuLook> make_gpu_looks(const Tracer &tracer)
+{
+    const Model &model = tracer.model();
+    std::vector<GpuLook> looks(model.materials().size(), GpuLook{0, NULL_CLASS, {0, 0}});
+    for (size_t m = 1; m < looks.size(); ++m) {
+        const auto rgb = material_color(model, uint32_t(m));
+        looks[m].rgb = uint32_t(rgb[0]) | uint32_t(rgb[1]) << 8 | uint32_t(rgb[2]) << 16;
+        looks[m].id = model.materials()[m].id;
+    }
+    return looks;
+}
+
 std::vector<GpuMaterial> make_gpu_materials(const Tracer &tracer)
 {
     const Translucency &tr = tracer.scene().translucency;

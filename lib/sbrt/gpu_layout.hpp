@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "band.hpp"
+#include "shading.hpp"
 #include "tracer.hpp"
 
 namespace sbrt {
@@ -61,6 +63,31 @@ struct GpuMaterial {
 };
 static_assert(sizeof(GpuMaterial) == 16, "std430 vec4");
 
+/// `uniform Shade` (std140): what shading on the GPU needs besides the view.
+struct GpuShade {
+    float light[4];          ///< towards the light, unit; w: ambient share
+    float background[4];     ///< rgb 0..255
+    float real_unit[4];      ///< real map length per local unit; w: elevation at z 0
+    float elevation_step[4]; ///< x: elevation per local z unit
+    float plane_normals[MAX_CLIP_PLANES][4];
+    uint32_t outputs[4];     ///< words per pixel; 1 class, 2 elevation, 4 depth
+};
+static_assert(sizeof(GpuShade) == 208 && offsetof(GpuShade, plane_normals) == 64 &&
+                  offsetof(GpuShade, outputs) == 192,
+              "std140 Shade block");
+
+/// An entry of `buffer Looks` (std430 uvec4): colour r | g << 8 | b << 16
+/// and class id of a material.
+struct GpuLook {
+    uint32_t rgb;
+    int32_t id;
+    uint32_t unused[2];
+};
+static_assert(sizeof(GpuLook) == 16, "std430 uvec4");
+
+/// Bits of GpuShade::outputs[1].
+constexpr uint32_t GPU_OUT_CLASS = 1, GPU_OUT_ELEVATION = 2, GPU_OUT_DEPTH = 4;
+
 constexpr uint32_t GPU_CODE_OVER_BUDGET = 1u << 24;
 /// Default loop budget per pixel: below llvmpipe's 65,535 iterations with
 /// room for the loops the budget does not count.
@@ -77,6 +104,13 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
 /// The view block of `camera` in the tracer's local frame.
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
                       uint32_t loop_budget = GPU_LOOP_BUDGET);
+
+/// The Shade block of the tracer's scene lit by `shading`, for `outputs`.
+GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
+                        const Outputs &outputs);
+
+/// The colour and class id of every material of the tracer's model.
+std::vector<GpuLook> make_gpu_looks(const Tracer &tracer);
 
 /// The material table of the tracer's scene (all opaque without
 /// translucency).

@@ -263,7 +263,7 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
                 shade(hits, row, band);
             });
         }
-        else {
+        else if (!source.shade_rows(first, count, outputs, band)) {
             source.trace_rows(first, count, band_hits.data());
             for_each_row(first, first + count, threads, [&](int row) {
                 shade(band_hits.data() + size_t(row - first) * cols, row, band);

@@ -7,6 +7,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include <glm/geometric.hpp>
 
 #include "error.hpp"
 #include "parallel.hpp"
@@ -108,6 +112,12 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
     }
     gl_.Finish();
     check_gl(gl_, "uploading the model");
+    // llvmpipe ends an invocation after 65,535 loop iterations; a GPU does
+    // not: its rays run to the end
+    const std::string renderer = gl_renderer();
+    if (renderer.find("llvmpipe") == std::string::npos &&
+        renderer.find("softpipe") == std::string::npos)
+        loop_budget_ = UINT32_MAX;
     stats_.upload_ms = ms_since(created_); // with compiling the shader
 }
 
@@ -138,20 +148,8 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
     return hits;
 }
 
-void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_count,
-                           sbrt::Hit *out, unsigned cpu_threads, uint32_t loop_budget)
+void GpuTracer::bind_model() const
 {
-    const int cols = camera.cols();
-    const size_t row_bytes = size_t(cols) * sizeof(sbrt::GpuPixelHit);
-    if (row_bytes > max_block_bytes_)
-        sbrt::fail("an image row of ", cols, " pixels does not fit a storage buffer");
-    const int band_rows = int(std::min<size_t>(row_count, max_block_bytes_ / row_bytes));
-    if (!band_ || band_->bytes() < size_t(band_rows) * row_bytes)
-        band_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, size_t(band_rows) * row_bytes);
-    records_.resize(size_t(row_count) * cols);
-
-    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget);
-    program_.use();
     if (layout_ == sbrt::GpuLayout::ssbo) {
         offsets_->bind(0);
         intervals_->bind(1);
@@ -160,10 +158,18 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
         index_texture_->bind(0);
         interval_texture_->bind(1);
     }
-    band_->bind(2);
     materials_.bind(3);
     pyramid_.bind(4);
     view_.bind(0);
+}
+
+void GpuTracer::dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, int first_row,
+                         int row_count, GlBuffer &buffer, size_t bytes_per_pixel, void *out)
+{
+    const int cols = camera.cols();
+    const size_t row_bytes = size_t(cols) * bytes_per_pixel;
+    const int band_rows = int(buffer.bytes() / row_bytes);
+    buffer.bind(2);
     for (int first = first_row; first < first_row + row_count; first += band_rows) {
         const int count = std::min(band_rows, first_row + row_count - first);
         view.options[2] = uint32_t(first);
@@ -176,11 +182,41 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
         check_gl(gl_, "the ray casting dispatch");
         stats_.trace_ms += ms_since(start);
         start = Clock::now();
-        band_->download(records_.data() + size_t(first - first_row) * cols,
+        buffer.download(static_cast<uint8_t *>(out) + size_t(first - first_row) * row_bytes,
                         size_t(count) * row_bytes);
         stats_.readback_ms += ms_since(start);
         ++stats_.bands;
     }
+}
+
+namespace {
+
+/// A storage buffer for up to `rows` rows of `row_bytes`, within the GPU's
+/// largest binding: the one in `buffer` where it is large enough.
+void ensure_band_buffer(const GlApi &gl, std::optional<GlBuffer> &buffer, int rows,
+                        size_t row_bytes, size_t max_block_bytes)
+{
+    if (row_bytes > max_block_bytes)
+        sbrt::fail("an image row of ", row_bytes, " bytes does not fit a storage buffer");
+    const size_t bytes = std::min(size_t(rows), max_block_bytes / row_bytes) * row_bytes;
+    if (!buffer || buffer->bytes() < bytes)
+        buffer.emplace(gl, GL_SHADER_STORAGE_BUFFER, bytes);
+}
+
+} // namespace
+
+void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_count,
+                           sbrt::Hit *out, unsigned cpu_threads, uint32_t loop_budget)
+{
+    const int cols = camera.cols();
+    ensure_band_buffer(gl_, band_, row_count, size_t(cols) * sizeof(sbrt::GpuPixelHit),
+                       max_block_bytes_);
+    records_.resize(size_t(row_count) * cols);
+    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget);
+    program_.use();
+    bind_model();
+    dispatch(camera, view, first_row, row_count, *band_, sizeof(sbrt::GpuPixelHit),
+             records_.data());
 
     const auto start = Clock::now();
     std::vector<size_t> over_per_row(size_t(row_count), 0);
@@ -194,6 +230,85 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
                 out[i] = tracer_.trace(ray);
                 ++over_per_row[size_t(row - first_row)];
             }
+        }
+    });
+    for (size_t n : over_per_row)
+        stats_.over_budget += n;
+    stats_.readback_ms += ms_since(start);
+}
+
+void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_count,
+                           const sbrt::Shading &shading, const sbrt::Outputs &outputs,
+                           sbrt::Band &band, unsigned cpu_threads)
+{
+    const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
+    if (!shade_program_) {
+        const auto start = Clock::now();
+        shade_program_.emplace(
+            gl_, std::vector<const char *>{
+                     "#version 450\n",
+                     layout_ == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
+                     "#define SBRT_SHADE 1\n", SHADER_COMMON_LAYOUT, SHADER_RAYCAST});
+        const std::vector<sbrt::GpuLook> looks = sbrt::make_gpu_looks(tracer_);
+        looks_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, looks.size() * sizeof(sbrt::GpuLook),
+                       looks.data());
+        shade_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuShade));
+        stats_.upload_ms += ms_since(start);
+    }
+    const int cols = camera.cols();
+    const size_t words_per_pixel = shade.outputs[0];
+    ensure_band_buffer(gl_, pixels_, row_count, size_t(cols) * words_per_pixel * 4,
+                       max_block_bytes_);
+    words_.resize(size_t(row_count) * cols * words_per_pixel);
+    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
+    shade_program_->use();
+    bind_model();
+    shade_->upload(&shade, sizeof shade);
+    shade_->bind(1);
+    looks_->bind(5);
+    dispatch(camera, view, first_row, row_count, *pixels_, words_per_pixel * 4,
+             words_.data());
+
+    // the words into the band; rays over the budget traced and shaded here
+    const auto start = Clock::now();
+    std::vector<size_t> over_per_row(size_t(row_count), 0);
+    const sbrt::Model &model = tracer_.model();
+    sbrt::for_each_row(first_row, first_row + row_count, cpu_threads, [&](int row) {
+        for (int col = 0; col < cols; ++col) {
+            const size_t i = size_t(row - band.first_row) * cols + col;
+            const uint32_t *w = words_.data() + size_t(row - first_row) * cols * words_per_pixel +
+                                size_t(col) * words_per_pixel;
+            if ((w[0] >> 24) == 0) {
+                const sbrt::Ray ray = camera.ray(row, col);
+                const sbrt::Hit hit = tracer_.trace(ray);
+                const auto rgb = sbrt::shade_pixel(model, shading, hit);
+                std::copy(rgb.begin(), rgb.end(), band.rgb.begin() + ptrdiff_t(i) * 3);
+                if (outputs.material)
+                    band.material[i] =
+                        hit.is_hit() ? model.materials()[hit.material].id : sbrt::NULL_CLASS;
+                if (outputs.elevation)
+                    band.elevation[i] = hit.is_hit() ? hit.point.z : NAN;
+                if (outputs.depth)
+                    band.depth[i] = hit.is_hit() ? glm::length(hit.point -
+                                                               tracer_.unexaggerate(ray.origin))
+                                                 : NAN;
+                ++over_per_row[size_t(row - first_row)];
+                continue;
+            }
+            for (int k = 0; k < 3; ++k)
+                band.rgb[i * 3 + size_t(k)] = uint8_t(w[0] >> (8 * k));
+            size_t next = 1;
+            auto as_float = [](uint32_t bits) {
+                float f;
+                std::memcpy(&f, &bits, 4);
+                return double(f);
+            };
+            if (outputs.material)
+                band.material[i] = int32_t(w[next++]);
+            if (outputs.elevation)
+                band.elevation[i] = as_float(w[next++]);
+            if (outputs.depth)
+                band.depth[i] = as_float(w[next++]);
         }
     });
     for (size_t n : over_per_row)

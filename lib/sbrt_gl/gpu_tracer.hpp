@@ -52,6 +52,19 @@ public:
                     uint32_t loop_budget = sbrt::GPU_LOOP_BUDGET);
     void reset_stats();
 
+    /// Rows [first, first + count) of `camera`'s image traced and shaded on
+    /// the GPU (face normals, no drape: make_gpu_shade): only the band's
+    /// outputs come back, RGB and those of `outputs`; rays over the loop
+    /// budget are traced and shaded again on the host. Adds to stats().
+    void shade_rows(const sbrt::Camera &camera, int first, int count,
+                    const sbrt::Shading &shading, const sbrt::Outputs &outputs,
+                    sbrt::Band &band, unsigned cpu_threads = 0);
+    /// The loop budget of this GL: llvmpipe's (GPU_LOOP_BUDGET), none on
+    /// a GPU.
+    uint32_t loop_budget() const { return loop_budget_; }
+    /// The shading program (compiled by the first shade_rows), or 0.
+    GLuint shade_program() const { return shade_program_ ? shade_program_->name() : 0; }
+
     std::string gl_version() const;
     std::string gl_renderer() const;
     const GpuStats &stats() const { return stats_; }
@@ -64,6 +77,13 @@ public:
     GLuint program() const { return program_.name(); }
 
 private:
+    /// Binds the model, the materials, the pyramid and the view block.
+    void bind_model() const;
+    /// Dispatches rows [first, first + count) in bands of at most
+    /// `band_rows`, reading `bytes_per_pixel` of each back into `out`.
+    void dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, int first, int count,
+                  GlBuffer &buffer, size_t bytes_per_pixel, void *out);
+
     std::chrono::steady_clock::time_point created_; ///< times the upload
     const sbrt::Tracer &tracer_;
     GlApi gl_;
@@ -78,7 +98,13 @@ private:
     GlBuffer pyramid_; ///< empty-space skipping (levels() 0: off)
     std::optional<GlBuffer> band_; ///< the hit records of a band of rows
     std::vector<sbrt::GpuPixelHit> records_;
+    /// shading on the GPU: its program, the materials' looks, the Shade
+    /// block, the band's output words
+    std::optional<GlComputeProgram> shade_program_;
+    std::optional<GlBuffer> looks_, shade_, pixels_;
+    std::vector<uint32_t> words_;
     GpuStats stats_;
+    uint32_t loop_budget_ = sbrt::GPU_LOOP_BUDGET;
 };
 
 /// \brief The GPU as the streamed renderer's row tracer of one camera.
@@ -90,13 +116,24 @@ public:
     }
     void trace_rows(int first, int count, sbrt::Hit *out) override
     {
-        gpu_.trace_rows(camera_, first, count, out, threads_);
+        gpu_.trace_rows(camera_, first, count, out, threads_, gpu_.loop_budget());
+    }
+    /// With `shading` (face normals, no drape) the GPU shades too.
+    void shade_on_gpu(const sbrt::Shading *shading) { shading_ = shading; }
+    bool shade_rows(int first, int count, const sbrt::Outputs &outputs,
+                    sbrt::Band &band) override
+    {
+        if (!shading_)
+            return false;
+        gpu_.shade_rows(camera_, first, count, *shading_, outputs, band, threads_);
+        return true;
     }
 
 private:
     GpuTracer &gpu_;
     const sbrt::Camera &camera_;
     unsigned threads_;
+    const sbrt::Shading *shading_ = nullptr;
 };
 
 } // namespace sbrt_gl

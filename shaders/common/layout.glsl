@@ -88,6 +88,29 @@ layout(std430, binding = 4) readonly buffer Pyramid {
 // extinction per exaggerated map unit; negative for an opaque material.
 layout(std430, binding = 3) readonly buffer Materials { vec4 materials[]; };
 
+#ifdef SBRT_SHADE
+// Shaded on the GPU: per pixel of the band, row-major from its top row,
+// Shade.outputs.x words: RGBA8 (alpha 0: over the loop budget, traced again
+// on the host), then those of Shade.outputs.y: the class id, the elevation
+// and the depth (float bits; NaN where the ray meets nothing).
+layout(std430, binding = 2) writeonly buffer Pixels { uint words[]; };
+
+// What shading needs besides the view; mirrored by sbrt::GpuShade.
+layout(std140, binding = 1) uniform Shade {
+    vec4 light;            // xyz: towards the light (exaggerated map space,
+                           // unit length); w: ambient share
+    vec4 background;       // rgb: 0..255
+    vec4 real_unit;        // xyz: real map length of a local unit per axis;
+                           // w: elevation of local z = 0
+    vec4 elevation_step;   // x: elevation per local z unit
+    vec4 plane_normals[8]; // xyz: shading normal of each clip plane
+    uvec4 outputs;         // x: words per pixel; y: 1 class id, 2 elevation,
+                           // 4 depth
+};
+
+// Per material: x: its colour r | g << 8 | b << 16; y: its class id.
+layout(std430, binding = 5) readonly buffer Looks { uvec4 looks[]; };
+#else
 // One record per pixel of the band, row-major from its top row.
 struct PixelHit {
     vec3 point;         // local coordinates of the hit
@@ -96,6 +119,7 @@ struct PixelHit {
                         // the hit (premultiplied); a: transmittance
 };
 layout(std430, binding = 2) writeonly buffer Hits { PixelHit hits[]; };
+#endif
 
 const uint FACE_NONE = 0u, FACE_WEST = 1u, FACE_EAST = 2u, FACE_SOUTH = 3u,
            FACE_NORTH = 4u, FACE_BOTTOM = 5u, FACE_TOP = 6u, FACE_PLANE = 7u;

@@ -21,6 +21,7 @@
 #include "hidden_materials.hpp"
 #include "gpu_compare.hpp"
 #include "gpu_memory_layout.hpp"
+#include "renderer.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;
@@ -387,4 +388,87 @@ TEST(GpuMemoryLayout, TexturesHoldEveryIntervalWithLessThanARowWasted)
     EXPECT_THROW(gpu_memory(m, GpuLayout::textures, 40), Error);
     EXPECT_THROW(gpu_memory(m, GpuLayout::textures, 80), Error);
     EXPECT_THROW(parse_gpu_layout("3d-texture"), Error);
+}
+
+namespace {
+
+/// The streamed render with the GPU shading against the CPU's: colour
+/// levels within 1, classes equal but on a share of edge pixels,
+/// elevation and depth within float rounding of the model's size.
+void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layout,
+                               const Renderer &renderer, const Camera &camera,
+                               const std::string &what)
+{
+    sbrt_gl::GpuTracer gpu(context, renderer.tracer(), layout);
+    sbrt_gl::GpuRowTracer rows(gpu, camera, 2);
+    rows.shade_on_gpu(&renderer.shading());
+    const Outputs all{true, true, true};
+    const Image want = renderer.render_image(camera, all);
+    const Image got = renderer.render_image(camera, all, &rows);
+    EXPECT_NE(gpu.shade_program(), 0u) << "the GPU did not shade: " << what;
+    const size_t n = want.material.size();
+    size_t classes = 0, colours = 0, far = 0, hits = 0;
+    const double tolerance = 2e-5 * 2 * renderer.tracer().radius();
+    for (size_t i = 0; i < n; ++i) {
+        classes += got.material[i] != want.material[i];
+        for (int k = 0; k < 3; ++k)
+            colours += std::abs(int(got.rgb[i * 3 + k]) - int(want.rgb[i * 3 + k])) > 1;
+        if (got.material[i] == want.material[i] && want.material[i] != NULL_CLASS) {
+            ++hits;
+            far += !(std::fabs(got.elevation[i] - want.elevation[i]) <= tolerance &&
+                     std::fabs(got.depth[i] - want.depth[i]) <= tolerance);
+        }
+        else if (want.material[i] == NULL_CLASS && got.material[i] == NULL_CLASS) {
+            far += !(std::isnan(got.elevation[i]) && std::isnan(got.depth[i]));
+        }
+    }
+    EXPECT_GT(hits, n / 10) << what;
+    EXPECT_LE(classes, n / 500 + 1) << what;
+    EXPECT_LE(colours, n / 200 + classes * 3) << what;
+    EXPECT_EQ(far, 0u) << what;
+}
+
+} // namespace
+
+TEST_P(Gpu, ShadesOnTheGpuAsTheCpuDoes)
+{
+    const Model m = geology(40, 56, 30);
+    const Frame &f = m.frame();
+    Shading lit;
+    lit.light = Shading::light_from(300, 35);
+    lit.ambient = 0.25;
+    lit.background = {10, 20, 30};
+    const Renderer plain(m, 2.0, Scene{}, lit, {2, true, 16});
+    const Tracer &t = plain.tracer();
+    for (double azimuth : {30.0, 210.0}) {
+        const glm::dvec3 dir(std::sin(azimuth * M_PI / 180), std::cos(azimuth * M_PI / 180), 0.6);
+        expect_gpu_shading_as_cpu(*context_, layout(), plain,
+                                  Camera::perspective(t.centre() + 2.2 * t.radius() * dir,
+                                                      t.centre(), 40, 61, 83),
+                                  "view " + std::to_string(azimuth));
+    }
+    // parallel rays from above
+    const glm::dvec3 c = t.centre();
+    expect_gpu_shading_as_cpu(*context_, layout(), plain,
+                              Camera::orthographic(c + glm::dvec3(300, -400, 500), c,
+                                                   1.5 * t.radius(), 47, 64),
+                              "orthographic");
+    // clip planes (their shading normals) and translucent strata (the veil)
+    Scene scene;
+    scene.planes = {{{(f.west + f.east) / 2, (f.south + f.north) / 2, 0}, {1, 0.5, 0}}};
+    scene.translucency.length = f.ew_res();
+    scene.translucency.extinction.assign(m.materials().size(), INFINITY);
+    scene.translucency.color.assign(m.materials().size(), glm::dvec3(0.2, 0.5, 0.9));
+    scene.translucency.extinction[1] = extinction_of(0.3, f.ew_res());
+    const Renderer cut(m, 2.0, scene, lit, {2, true, 16});
+    const glm::dvec3 dir(0.8, -0.3, 0.5);
+    expect_gpu_shading_as_cpu(*context_, layout(), cut,
+                              Camera::perspective(c + 2.2 * t.radius() * dir, c, 40, 61, 83),
+                              "planes and translucency");
+    // the camera inside the model (faces none)
+    const glm::dvec3 inside = c + glm::dvec3(0, 0, -0.1 * t.radius());
+    expect_gpu_shading_as_cpu(*context_, layout(), plain,
+                              Camera::perspective(inside, inside + glm::dvec3(1, 0.3, -0.2),
+                                                  70, 40, 50),
+                              "inside");
 }
