@@ -37,6 +37,9 @@ public:
     virtual ~RowTracer() = default;
     /// Hits of rows [first, first + count), row-major, into `out`.
     virtual void trace_rows(int first, int count, Hit *out) = 0;
+    /// Rows per band this tracer works best with for an image `cols`
+    /// wide; 0: the renderer's choice.
+    virtual int preferred_band_rows(int /*cols*/) const { return 0; }
     /// Where the tracer shades too (a GPU): the band's outputs of those
     /// rows (band sized for them); false where it does not.
     virtual bool shade_rows(int /*first*/, int /*count*/, const Outputs & /*outputs*/,

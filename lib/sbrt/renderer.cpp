@@ -230,9 +230,10 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     RenderReport report;
     // enough rows per band that every thread takes several (dynamic
     // scheduling evens out rows of different cost)
-    report.band_rows = std::min(image_rows, settings_.band_rows > 0
-                                                ? settings_.band_rows
-                                                : std::max(16, 4 * int(threads)));
+    const int preferred = rows ? rows->preferred_band_rows(cols) : 0;
+    report.band_rows = std::min(image_rows, settings_.band_rows > 0 ? settings_.band_rows
+                                            : preferred > 0        ? preferred
+                                                                   : std::max(16, 4 * int(threads)));
     std::optional<CpuRowTracer> cpu;
     if (!rows) {
         cpu.emplace(*tracer_, camera, threads, settings_.first_pass);
@@ -243,8 +244,15 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     std::optional<KernelBands> kernel;
     if (shading_.normals == Normals::kernel)
         kernel.emplace(*tracer_, camera, shading_, source, threads);
-    HitImage band_hits(kernel ? 0 : size_t(report.band_rows) * cols);
+    // hits of a band, made when a band is first traced on this side
+    HitImage band_hits;
+    const auto hits_of_band = [&] {
+        if (band_hits.empty())
+            band_hits = HitImage(size_t(report.band_rows) * cols);
+        return band_hits.data();
+    };
 
+    bool shaded_by_tracer = false;
     BandWriter writer(sink);
     for (int first = 0; first < image_rows; first += report.band_rows) {
         const int count = std::min(report.band_rows, image_rows - first);
@@ -257,23 +265,30 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
         }
         else if (cpu) {
             // trace and shade a row at once, while its hits are in cache
+            Hit *const band_start = hits_of_band();
             for_each_row(first, first + count, threads, [&](int row) {
-                Hit *hits = band_hits.data() + size_t(row - first) * cols;
+                Hit *hits = band_start + size_t(row - first) * cols;
                 cpu->trace_row(row, hits);
                 shade(hits, row, band);
             });
         }
-        else if (!source.shade_rows(first, count, outputs, band)) {
-            source.trace_rows(first, count, band_hits.data());
+        else if (source.shade_rows(first, count, outputs, band)) {
+            shaded_by_tracer = true; // no hits on this side
+        }
+        else {
+            Hit *const band_start = hits_of_band();
+            source.trace_rows(first, count, band_start);
             for_each_row(first, first + count, threads, [&](int row) {
-                shade(band_hits.data() + size_t(row - first) * cols, row, band);
+                shade(band_start + size_t(row - first) * cols, row, band);
             });
         }
         writer.submit(std::move(band));
         ++report.bands;
     }
     writer.finish();
-    report.most_rows_held = kernel ? kernel->most_rows() : report.band_rows;
+    report.most_rows_held = kernel             ? kernel->most_rows()
+                            : shaded_by_tracer ? 0
+                                               : report.band_rows;
     report.ms = std::chrono::duration<double, std::milli>(
                     std::chrono::steady_clock::now() - start)
                     .count();

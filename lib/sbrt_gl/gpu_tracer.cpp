@@ -86,9 +86,6 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
     : created_(Clock::now()), tracer_(tracer), gl_(context),
       max_block_bytes_(check_version(gl_, context.name())), layout_(layout),
       memory_(sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl_))),
-      program_(gl_, {"#version 450\n",
-                     layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
-                     SHADER_COMMON_LAYOUT, SHADER_RAYCAST}),
       materials_(material_buffer(gl_, tracer)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
       pyramid_(pyramid_buffer(gl_, tracer, max_block_bytes_))
@@ -146,6 +143,19 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
     sbrt::HitImage hits(size_t(camera.rows()) * camera.cols());
     trace_rows(camera, 0, camera.rows(), hits.data(), cpu_threads, loop_budget);
     return hits;
+}
+
+const GlComputeProgram &GpuTracer::record_program() const
+{
+    // compiled when first used: a render shaded on the GPU never needs it
+    if (!program_)
+        program_.emplace(gl_, std::vector<const char *>{
+                                  "#version 450\n",
+                                  layout_ == sbrt::GpuLayout::textures
+                                      ? "#define SBRT_TEXTURES 1\n"
+                                      : "",
+                                  SHADER_COMMON_LAYOUT, SHADER_RAYCAST});
+    return *program_;
 }
 
 void GpuTracer::bind_model() const
@@ -213,7 +223,7 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
                        max_block_bytes_);
     records_.resize(size_t(row_count) * cols);
     sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget);
-    program_.use();
+    record_program().use();
     bind_model();
     dispatch(camera, view, first_row, row_count, *band_, sizeof(sbrt::GpuPixelHit),
              records_.data());

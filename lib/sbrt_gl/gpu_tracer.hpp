@@ -9,6 +9,7 @@
 #ifndef SBRT_GL_GPU_TRACER_HPP
 #define SBRT_GL_GPU_TRACER_HPP
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <string>
@@ -74,9 +75,11 @@ public:
     /// Bytes of the empty-space pyramid on the GPU.
     size_t pyramid_bytes() const { return pyramid_.bytes(); }
     const GlApi &gl() const { return gl_; }
-    GLuint program() const { return program_.name(); }
+    /// The program that writes hit records (compiled when first asked for).
+    GLuint program() const { return record_program().name(); }
 
 private:
+    const GlComputeProgram &record_program() const;
     /// Binds the model, the materials, the pyramid and the view block.
     void bind_model() const;
     /// Dispatches rows [first, first + count) in bands of at most
@@ -90,7 +93,7 @@ private:
     size_t max_block_bytes_;
     sbrt::GpuLayout layout_;
     sbrt::GpuMemory memory_;
-    GlComputeProgram program_;
+    mutable std::optional<GlComputeProgram> program_; ///< hit records
     /// the model: two buffers (ssbo) or two textures (textures)
     std::optional<GlBuffer> offsets_, intervals_;
     std::optional<GlUintTexture> index_texture_, interval_texture_;
@@ -120,6 +123,11 @@ public:
     }
     /// With `shading` (face normals, no drape) the GPU shades too.
     void shade_on_gpu(const sbrt::Shading *shading) { shading_ = shading; }
+    /// Bands of a million pixels or more: enough rays to fill a GPU.
+    int preferred_band_rows(int cols) const override
+    {
+        return std::max(1, (1 << 20) / std::max(cols, 1));
+    }
     bool shade_rows(int first, int count, const sbrt::Outputs &outputs,
                     sbrt::Band &band) override
     {
