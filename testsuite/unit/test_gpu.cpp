@@ -433,7 +433,6 @@ void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layo
 TEST_P(Gpu, ShadesOnTheGpuAsTheCpuDoes)
 {
     const Model m = geology(40, 56, 30);
-    const Frame &f = m.frame();
     Shading lit;
     lit.light = Shading::light_from(300, 35);
     lit.ambient = 0.25;
@@ -454,13 +453,7 @@ TEST_P(Gpu, ShadesOnTheGpuAsTheCpuDoes)
                                                    1.5 * t.radius(), 47, 64),
                               "orthographic");
     // clip planes (their shading normals) and translucent strata (the veil)
-    Scene scene;
-    scene.planes = {{{(f.west + f.east) / 2, (f.south + f.north) / 2, 0}, {1, 0.5, 0}}};
-    scene.translucency.length = f.ew_res();
-    scene.translucency.extinction.assign(m.materials().size(), INFINITY);
-    scene.translucency.color.assign(m.materials().size(), glm::dvec3(0.2, 0.5, 0.9));
-    scene.translucency.extinction[1] = extinction_of(0.3, f.ew_res());
-    const Renderer cut(m, 2.0, scene, lit, {2, true, 16});
+    const Renderer cut(m, 2.0, sbrt_test::cut_and_translucent_scene(m), lit, {2, true, 16});
     const glm::dvec3 dir(0.8, -0.3, 0.5);
     expect_gpu_shading_as_cpu(*context_, layout(), cut,
                               Camera::perspective(c + 2.2 * t.radius() * dir, c, 40, 61, 83),

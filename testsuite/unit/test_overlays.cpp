@@ -82,21 +82,6 @@ Hit march(const sbrt_test::Voxels &v, const Model &m, const Translucency &tr,
     return hit;
 }
 
-/// A borehole at map (x, y) showing the model's stack of the cell there.
-Borehole borehole_at(const Model &m, double x, double y)
-{
-    const Frame &f = m.frame();
-    const int col = int(std::floor((x - f.west) / f.ew_res()));
-    const int row = int(std::floor((f.north - y) / f.ns_res()));
-    const uint64_t cell = m.cell_index(row, col);
-    Borehole b;
-    b.x = x;
-    b.y = y;
-    b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
-                   m.intervals().begin() + m.stack_end(cell));
-    b.model_stack = b.stack;
-    return b;
-}
 
 } // namespace
 
@@ -200,7 +185,7 @@ TEST(Boreholes, CylinderShowsTheStackAtItsPoint)
     const Model m = sbrt_test::build_model(v);
     const Frame &f = v.frame;
     const Borehole b =
-        borehole_at(m, f.west + 6.3 * f.ew_res(), f.south + 4.6 * f.ns_res());
+        sbrt_test::borehole_at(m, f.west + 6.3 * f.ew_res(), f.south + 4.6 * f.ns_res());
     const int row = f.rows - 1 - 4, col = 6;
     const double r = 1.7;
     Scene scene;
@@ -272,7 +257,7 @@ TEST(Boreholes, InsideTheDrawnModelTheyChangeNoMaterial)
     Scene scene;
     scene.borehole_radius = 0.4 * f.ew_res();
     for (int k = 0; k < 5; ++k)
-        scene.boreholes.push_back(borehole_at(m, f.west + (2.5 + 2 * k) * f.ew_res(),
+        scene.boreholes.push_back(sbrt_test::borehole_at(m, f.west + (2.5 + 2 * k) * f.ew_res(),
                                               f.south + (3.5 + k) * f.ns_res()));
     const Tracer plain(m, 1.0), with(m, 1.0, scene);
     const Camera cam = sbrt_test::top_camera(f, 1e3);
@@ -336,7 +321,7 @@ TEST(Boreholes, ManyBoreholesWalkTheCells)
     scene.draw_model = false;
     for (int row = 1; row < f.rows - 1; ++row) // not the outer ring
         for (int col = 1; col < f.cols - 1; ++col)
-            scene.boreholes.push_back(borehole_at(m, f.west + (col + 0.5) * f.ew_res(),
+            scene.boreholes.push_back(sbrt_test::borehole_at(m, f.west + (col + 0.5) * f.ew_res(),
                                                   f.north - (row + 0.5) * f.ns_res()));
     ASSERT_GT(scene.boreholes.size(), 256u);
     const Tracer plain(m, 1.0), cylinders(m, 1.0, scene);
@@ -359,8 +344,8 @@ TEST(Overlays, ImagesTraceOnlyWhereTheOverlaysProject)
     const Frame &f = m.frame();
     Scene scene;
     scene.borehole_radius = 0.4 * f.ew_res();
-    scene.boreholes = {borehole_at(m, f.west + 3.5 * f.ew_res(), f.south + 4.5 * f.ns_res()),
-                       borehole_at(m, f.west + 10.2 * f.ew_res(), f.south + 11.7 * f.ns_res())};
+    scene.boreholes = {sbrt_test::borehole_at(m, f.west + 3.5 * f.ew_res(), f.south + 4.5 * f.ns_res()),
+                       sbrt_test::borehole_at(m, f.west + 10.2 * f.ew_res(), f.south + 11.7 * f.ns_res())};
     scene.fence = {{{f.west + 2 * f.ew_res(), f.north - 2 * f.ns_res()},
                     {f.west + 9 * f.ew_res(), f.north - 5 * f.ns_res()}}};
     scene.draw_model = false;

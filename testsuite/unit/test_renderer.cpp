@@ -9,6 +9,7 @@
  *            exceptions of worker threads and of the sink reach the caller
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -160,32 +161,17 @@ TEST(Renderer, InsideTheModelAndWithHiddenStrataOverlaysAndPlanes)
     }
     // a clip plane and translucent strata
     {
-        Scene scene;
-        scene.planes = {{{(f.west + f.east) / 2, (f.south + f.north) / 2, 0}, {1, 0.5, 0}}};
-        scene.translucency.length = f.ew_res();
-        scene.translucency.extinction.assign(m.materials().size(), INFINITY);
-        scene.translucency.color.assign(m.materials().size(), glm::dvec3(0.2, 0.5, 0.9));
-        scene.translucency.extinction[1] = extinction_of(0.3, f.ew_res());
-        const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 9});
+        const Renderer renderer(m, 2.0, sbrt_test::cut_and_translucent_scene(m), Shading{},
+                                {2, true, 9});
         expect_as_reference(renderer, view(renderer.tracer(), 60, 35), nullptr, "planes");
     }
     // boreholes only: the tracer traces only the pixels of their boxes
     {
         Scene scene;
-        for (int k = 0; k < 3; ++k) {
-            const double x = f.west + (5.5 + 15 * k) * f.ew_res();
-            const double y = f.south + (8.5 + 10 * k) * f.ns_res();
-            const uint64_t cell =
-                m.cell_index(int(std::floor((f.north - y) / f.ns_res())),
-                             int(std::floor((x - f.west) / f.ew_res())));
-            Borehole b;
-            b.x = x;
-            b.y = y;
-            b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
-                           m.intervals().begin() + m.stack_end(cell));
-            b.model_stack = b.stack;
-            scene.boreholes.push_back(b);
-        }
+        for (int k = 0; k < 3; ++k)
+            scene.boreholes.push_back(
+                sbrt_test::borehole_at(m, f.west + (5.5 + 15 * k) * f.ew_res(),
+                                       f.south + (8.5 + 10 * k) * f.ns_res()));
         scene.borehole_radius = 0.4 * f.ew_res();
         scene.draw_model = false;
         const Renderer renderer(m, 2.0, scene, kernel_shading(3, 0), {2, true, 4});
@@ -240,12 +226,13 @@ TEST(Renderer, ExceptionsOfWorkersAndOfTheSinkReachTheCaller)
     // a row tracer that fails half way, and a sink that fails
     const Model m = sbrt_test::geology(30, 40, 24);
     const Renderer renderer(m, 1.5, Scene{}, Shading{}, {2, true, 4});
-    const Camera camera = view(renderer.tracer(), 300, 40);
+    const Camera camera = view(renderer.tracer(), 300, 40, 2.2, 61, 99);
     struct Failing : RowTracer {
-        void trace_rows(int first, int, Hit *) override
+        void trace_rows(int first, int count, Hit *out) override
         {
             if (first >= 20)
                 fail("the GPU is gone");
+            std::fill(out, out + size_t(count) * 99, Hit()); // rows of 99 pixels
         }
     } failing;
     EXPECT_THROW(renderer.render(camera, {}, [](const Band &) {}, &failing), Error);

@@ -6,12 +6,14 @@
 #ifndef SBRT_TEST_SUPPORT_HPP
 #define SBRT_TEST_SUPPORT_HPP
 
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "cpu_tracing.hpp"
 #include "model.hpp"
+#include "scene.hpp"
 #include "shading.hpp"
 #include "voxel_builder.hpp"
 
@@ -82,6 +84,36 @@ inline sbrt::Image render_cpu(const sbrt::Model &m, const sbrt::Camera &camera,
     const sbrt::Tracer tracer(m, zexag);
     return sbrt::shade(tracer, camera, sbrt::trace_image(tracer, camera, threads),
                        sbrt::Shading{}, threads);
+}
+
+/// A borehole at map (x, y) showing the model's own stack there.
+inline sbrt::Borehole borehole_at(const sbrt::Model &m, double x, double y)
+{
+    const sbrt::Frame &f = m.frame();
+    const int col = int(std::floor((x - f.west) / f.ew_res()));
+    const int row = int(std::floor((f.north - y) / f.ns_res()));
+    const uint64_t cell = m.cell_index(row, col);
+    sbrt::Borehole b;
+    b.x = x;
+    b.y = y;
+    b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
+                   m.intervals().begin() + m.stack_end(cell));
+    b.model_stack = b.stack;
+    return b;
+}
+
+/// A scene with a vertical clip plane through the model's centre and
+/// material 1 translucent (alpha 0.3 per cell), the rest opaque.
+inline sbrt::Scene cut_and_translucent_scene(const sbrt::Model &m)
+{
+    const sbrt::Frame &f = m.frame();
+    sbrt::Scene scene;
+    scene.planes = {{{(f.west + f.east) / 2, (f.south + f.north) / 2, 0}, {1, 0.5, 0}}};
+    scene.translucency.length = f.ew_res();
+    scene.translucency.extinction.assign(m.materials().size(), INFINITY);
+    scene.translucency.color.assign(m.materials().size(), glm::dvec3(0.2, 0.5, 0.9));
+    scene.translucency.extinction[1] = sbrt::extinction_of(0.3, f.ew_res());
+    return scene;
 }
 
 inline std::string temp_dir(const std::string &tag)
