@@ -31,8 +31,9 @@ void report(const char *what, const sbrt::Camera &camera, double ms)
 void report_bands(const sbrt::RenderReport &r)
 {
     G_verbose_message(_("Streamed: %d bands of %d rows, at most %d rows of hits "
-                        "held"),
-                      r.bands, r.band_rows, r.most_rows_held);
+                        "held; %.1f ms in all, of which the maps took %.1f ms "
+                        "on their own thread"),
+                      r.bands, r.band_rows, r.most_rows_held, r.ms, r.sink_ms);
 }
 
 void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
@@ -50,7 +51,7 @@ void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
                           sbrt::FIRST_PASS_TILE, r.first_pass.empty_tiles,
                           r.first_pass.ms);
     report_bands(r);
-    report(_("CPU tracing"), camera, r.ms);
+    report(_("CPU shading and tracing"), camera, r.trace_ms);
 }
 
 void render_on_gpu(const RenderRequest &request, const sbrt::Renderer &renderer,

@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "band_writer.hpp"
 
+#include <chrono>
+
 namespace sbrt {
 
 BandWriter::BandWriter(const BandSink &sink, size_t buffers)
@@ -34,6 +36,7 @@ void BandWriter::run()
         busy_ = true;
         if (!error_) {
             lock.unlock();
+            const auto start = std::chrono::steady_clock::now();
             try {
                 sink_(band);
             }
@@ -43,6 +46,9 @@ void BandWriter::run()
                 lock.unlock();
             }
             lock.lock();
+            sink_ms_ += std::chrono::duration<double, std::milli>(
+                            std::chrono::steady_clock::now() - start)
+                            .count();
         }
         busy_ = false;
         free_.push_back(std::move(band));

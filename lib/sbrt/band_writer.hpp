@@ -35,6 +35,8 @@ public:
     void submit(Band band);
     /// Waits until the sink took every band; rethrows its exception.
     void finish();
+    /// Time the sink took so far (ms; read after finish()).
+    double sink_ms() const { return sink_ms_; }
 
 private:
     void run();
@@ -46,6 +48,7 @@ private:
     std::deque<Band> queued_, free_;
     size_t unallocated_;
     bool closing_ = false, busy_ = false;
+    double sink_ms_ = 0;
     std::exception_ptr error_;
     std::thread thread_;
 };

@@ -257,6 +257,7 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     for (int first = 0; first < image_rows; first += report.band_rows) {
         const int count = std::min(report.band_rows, image_rows - first);
         Band band = writer.take();
+        const auto band_start = std::chrono::steady_clock::now();
         prepare_band(band, first, count, cols, outputs);
         if (kernel) {
             kernel->prepare(first, first + count);
@@ -282,10 +283,14 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
                 shade(band_start + size_t(row - first) * cols, row, band);
             });
         }
+        report.trace_ms += std::chrono::duration<double, std::milli>(
+                               std::chrono::steady_clock::now() - band_start)
+                               .count();
         writer.submit(std::move(band));
         ++report.bands;
     }
     writer.finish();
+    report.sink_ms = writer.sink_ms();
     report.most_rows_held = kernel             ? kernel->most_rows()
                             : shaded_by_tracer ? 0
                                                : report.band_rows;

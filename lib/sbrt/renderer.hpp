@@ -29,7 +29,9 @@ struct RenderReport {
     int bands = 0, band_rows = 0;
     /// Most rows of hits held at once (a band, or the kernel's window).
     int most_rows_held = 0;
-    double ms = 0; ///< prepare, trace, shade and emit, the sink included
+    double ms = 0;       ///< prepare, trace, shade and emit, the sink included
+    double trace_ms = 0; ///< tracing and shading the bands (this thread)
+    double sink_ms = 0;  ///< the sink's time (its own thread, overlapping)
 };
 
 /// \brief A prepared scene (the model after hiding and pruning, its

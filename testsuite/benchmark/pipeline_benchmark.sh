@@ -65,7 +65,8 @@ one() { # label env... -- options...
     env "${envs[@]}" /usr/bin/time -f "%e %M" -o /tmp/r3sbrt_pipe_time r3.sbrt.render --o --verbose \
         input=$map output=pipe_img "$@" 2>/tmp/r3sbrt_pipe_log >/dev/null
     read -r wall rss </tmp/r3sbrt_pipe_time
-    ms=$(sed -n 's/.*tracing: .* rays in \([0-9.]*\) ms.*/\1/p' /tmp/r3sbrt_pipe_log)
+    # the whole streamed render: tracing, shading and the maps
+    ms=$(tr '\n' ' ' </tmp/r3sbrt_pipe_log | sed -n 's/.*held; \([0-9.]*\) ms in all.*/\1/p')
     echo "$label $wall $rss $ms"
 }
 best() { # label env... -- options...: best of 3 (the first also reported: cold)
