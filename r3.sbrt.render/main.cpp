@@ -7,6 +7,7 @@
  ****************************************************************************/
 #include <algorithm>
 #include <cstdlib>
+#include <new>
 #include <optional>
 
 #include <glm/geometric.hpp>
@@ -150,6 +151,15 @@ int main(int argc, char *argv[])
     }
     catch (const sbrt::Error &e) {
         G_fatal_error("%s", e.what());
+    }
+    catch (const std::bad_alloc &) {
+        G_fatal_error(_("Out of memory while rendering <%s>: render a smaller image "
+                        "(g.region rows= cols=) or fewer outputs"),
+                      request.input.c_str());
+    }
+    catch (const std::exception &e) {
+        // thrown on a worker thread and carried here (sbrt::for_each_row)
+        G_fatal_error(_("Rendering <%s> failed: %s"), request.input.c_str(), e.what());
     }
     exit(EXIT_SUCCESS);
 }
