@@ -325,6 +325,20 @@ class TestRenderTopView(TestCase):
         self.assertGreater(float(cut["mean"]), float(whole["mean"]))
         self.runModule("g.region", region="geo_region")
 
+    def test_maps_are_lz4_unless_grass_compressor_says_otherwise(self):
+        self.runModule("g.region", rows=30, cols=40)
+        env = {k: v for k, v in os.environ.items() if k != "GRASS_COMPRESSOR"}
+        subprocess.run(["r3.sbrt.render", "input=geo", "output=lz", "material=lz_m",
+                        "--overwrite", "--quiet"], env=env, check=True)
+        subprocess.run(["r3.sbrt.render", "input=geo", "output=zs", "--overwrite",
+                        "--quiet"], env=dict(env, GRASS_COMPRESSOR="ZSTD"), check=True)
+        for name, method in (("lz.red", "LZ4"), ("lz_m", "LZ4"), ("zs.red", "ZSTD")):
+            line = gs.read_command("r.compress", map=name, flags="g").strip()
+            self.assertEqual(line.split("|")[2], method, msg=line)
+        # the same pixels whatever the compressor
+        self.assertRastersNoDifference("lz.red", "zs.red", precision=0)
+        self.runModule("g.region", region="geo_region")
+
     def test_png_file_holds_the_image(self):
         from PIL import Image
 
