@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "scene_camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <unistd.h>
@@ -48,25 +49,31 @@ double framing_distance(const sbrt::Tracer &tracer, glm::dvec3 target,
 
 } // namespace
 
-void check_image_fits(int rows, int cols)
+void check_image_fits(int rows, int cols, bool kernel_normals)
 {
-    // the CPU hits (104 bytes), the outputs (rgb, class, elevation, depth:
-    // 23) and the kernel normals' buffers (32) of every pixel
-    const double needed = double(rows) * cols * (sizeof(sbrt::Hit) + 23 + 32);
+    // streamed: two bands in flight, each of hits (72 bytes) and outputs
+    // (rgb, class, elevation, depth: 23) per pixel, 64 rows at most; the
+    // kernel's window of rows may reach the whole image (a camera inside
+    // the model), with its depths and smoothing (32 bytes)
+    const double per_pixel = double(sizeof(sbrt::Hit) + 23);
+    const double needed =
+        kernel_normals ? double(rows) * cols * (per_pixel + 32)
+                       : 2.0 * std::min(rows, 64) * double(cols) * per_pixel;
     const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
     if (memory > 0 && needed > 0.8 * memory)
         G_fatal_error(_("An image of %d x %d pixels needs about %.1f GB of memory "
-                        "for its rays and outputs; this machine has %.1f GB. "
+                        "for its rays and outputs%s; this machine has %.1f GB. "
                         "Set fewer rows and columns (g.region rows= cols=) and "
                         "render the view in parts, or use a larger machine."),
-                      cols, rows, needed / 1e9, memory / 1e9);
+                      cols, rows, needed / 1e9,
+                      kernel_normals ? _(" with normals=kernel") : "", memory / 1e9);
 }
 
 sbrt::Camera make_camera(const RenderRequest &r, const sbrt::Tracer &tracer,
                          const struct Cell_head &region)
 {
     const int rows = region.rows, cols = region.cols;
-    check_image_fits(rows, cols);
+    check_image_fits(rows, cols, r.normals == "kernel");
     const double radius = tracer.radius();
     if (r.view == "top") {
         const sbrt::Frame &f = tracer.model().frame();

@@ -11,8 +11,9 @@
 #include "tracer.hpp"
 
 /// Fatal error unless an image of rows x cols fits in this machine's
-/// memory (what the CPU hits and the outputs take, with a margin).
-void check_image_fits(int rows, int cols);
+/// memory (what the streamed bands take, or with `kernel_normals` the
+/// kernel's window at its largest, the whole image; with a margin).
+void check_image_fits(int rows, int cols, bool kernel_normals);
 
 /// Camera for an image of the current region's rows x cols.
 sbrt::Camera make_camera(const RenderRequest &request,
