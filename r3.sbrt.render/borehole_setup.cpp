@@ -40,39 +40,6 @@ std::vector<sbrt::Interval> stack_of(const sbrt::Model &model, uint64_t cell)
 
 } // namespace
 
-std::vector<sbrt::Interval> log_stack(const sbrt::Frame &frame,
-                                      std::vector<LoggedInterval> logged,
-                                      const std::vector<uint32_t> &hidden)
-{
-    std::sort(logged.begin(), logged.end(),
-              [](const LoggedInterval &a, const LoggedInterval &b) {
-                  return a.bottom < b.bottom;
-              });
-    std::vector<sbrt::Interval> stack;
-    auto push = [&](uint32_t material, float top) {
-        if (!stack.empty() && stack.back().material == material)
-            stack.back().top = top;
-        else
-            stack.push_back({material, top});
-    };
-    float reached = 0; // local z the stack covers so far
-    for (const LoggedInterval &iv : logged) {
-        const float bottom = float(std::max(0.0, frame.local_z(iv.bottom)));
-        const float top = float(frame.local_z(iv.top));
-        if (!(top > reached))
-            continue; // below the model or inside an interval below
-        if (bottom > reached)
-            push(sbrt::EMPTY, bottom);
-        const bool is_hidden =
-            std::find(hidden.begin(), hidden.end(), iv.material) != hidden.end();
-        push(is_hidden ? sbrt::EMPTY : iv.material, top);
-        reached = top;
-    }
-    while (!stack.empty() && stack.back().material == sbrt::EMPTY)
-        stack.pop_back();
-    return stack;
-}
-
 std::vector<sbrt::Borehole> make_boreholes(const RenderRequest &request,
                                            const sbrt::Model &original,
                                            sbrt::Model &shown,
@@ -118,7 +85,7 @@ std::vector<sbrt::Borehole> make_boreholes(const RenderRequest &request,
                            : f.bottom;
             }
             const bool depth = request.log_reference == "depth";
-            std::vector<LoggedInterval> logged;
+            std::vector<sbrt::LoggedInterval> logged;
             for (const LogRow &row_ : log->second) {
                 double top = depth ? collar - row_.top : row_.top;
                 double bottom = depth ? collar - row_.bottom : row_.bottom;
@@ -131,7 +98,7 @@ std::vector<sbrt::Borehole> make_boreholes(const RenderRequest &request,
                 }
                 logged.push_back({bottom, top, material_of(shown, row_.class_id)});
             }
-            b.stack = log_stack(f, std::move(logged), hidden_here);
+            b.stack = sbrt::log_stack(f, std::move(logged), hidden_here);
         }
         boreholes.push_back(std::move(b));
     }

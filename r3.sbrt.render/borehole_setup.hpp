@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render_options.hpp"
+#include "scene_parts.hpp"
 #include "scene.hpp"
 
 /// The boreholes of the request. `shown` is the model drawn (strata of
@@ -30,17 +31,5 @@ void report_borehole_bytes(const sbrt::Model &model,
                            const std::vector<sbrt::Borehole> &boreholes,
                            bool only);
 
-/// \brief One logged interval in elevations (map z), its material index.
-struct LoggedInterval {
-    double bottom, top;
-    uint32_t material;
-};
-
-/// The stack of logged intervals in the model's local frame, bottom up:
-/// gaps are empty; where two overlap, the lower one keeps the overlap;
-/// materials in `hidden` are empty.
-std::vector<sbrt::Interval> log_stack(const sbrt::Frame &frame,
-                                      std::vector<LoggedInterval> logged,
-                                      const std::vector<uint32_t> &hidden);
 
 #endif

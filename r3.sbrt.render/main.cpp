@@ -66,8 +66,7 @@ sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drap
                                               request.light_elevation);
     shading.ambient = request.ambient;
     shading.background = request.background;
-    shading.normals = request.normals == "kernel" ? sbrt::Normals::kernel
-                                                  : sbrt::Normals::face;
+    shading.normals = request.normals;
     shading.kernel = request.kernel;
     shading.smooth = request.smooth;
     shading.drape = drape;

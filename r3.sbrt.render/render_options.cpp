@@ -327,24 +327,28 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.hit_elevation = answer_or(o->hit_elevation);
     r.depth = answer_or(o->depth);
     r.png = answer_or(o->png);
-    r.view = o->view->answer;
-    r.position = read_point(o->position);
-    r.target = read_point(o->target);
-    r.azimuth = read_double(o->azimuth);
-    r.elevation = read_double(o->elevation);
+    sbrt::View &v = r.view;
+    const std::string kind = o->view->answer;
+    v.kind = kind == "top"            ? sbrt::ViewKind::top
+             : kind == "orthographic" ? sbrt::ViewKind::orthographic
+                                      : sbrt::ViewKind::perspective;
+    v.position = read_point(o->position);
+    v.target = read_point(o->target);
+    v.azimuth = read_double(o->azimuth);
+    v.elevation = read_double(o->elevation);
     if (o->distance->answer) {
-        r.distance = read_double(o->distance);
-        if (!(*r.distance > 0))
+        v.distance = read_double(o->distance);
+        if (!(*v.distance > 0))
             G_fatal_error(_("distance= must be positive"));
     }
-    r.fov = read_double(o->fov);
-    if (!(r.fov > 0 && r.fov < 180))
+    v.fov = read_double(o->fov);
+    if (!(v.fov > 0 && v.fov < 180))
         G_fatal_error(_("fov=%g: the field of view must lie between 0 and "
                         "180 degrees"),
-                      r.fov);
+                      v.fov);
     if (o->ortho_height->answer) {
-        r.ortho_height = read_double(o->ortho_height);
-        if (!(*r.ortho_height > 0))
+        v.ortho_height = read_double(o->ortho_height);
+        if (!(*v.ortho_height > 0))
             G_fatal_error(_("ortho_height= must be positive"));
     }
     r.zexag = read_double(o->zexag);
@@ -361,7 +365,8 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (G_str_to_color(o->background->answer, &red, &green, &blue) != 1)
         G_fatal_error(_("background=<%s> is not a colour"), o->background->answer);
     r.background = {uint8_t(red), uint8_t(green), uint8_t(blue)};
-    r.normals = o->normals->answer;
+    r.normals = std::string(o->normals->answer) == "kernel" ? sbrt::Normals::kernel
+                                                            : sbrt::Normals::face;
     r.kernel = std::atoi(o->kernel->answer);
     if (r.kernel % 2 == 0)
         G_fatal_error(_("kernel=%d: the kernel size must be odd (3, 5, 7, 9 "
@@ -450,7 +455,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.threads = std::atoi(o->nprocs->answer);
     if (r.threads < 0)
         r.threads = std::max(1, int(std::thread::hardware_concurrency()) + r.threads);
-    if (r.position && r.target && *r.position == *r.target)
+    if (r.view.position && r.view.target && *r.view.position == *r.view.target)
         G_fatal_error(_("position= and target= are the same point: the "
                         "camera has no direction"));
     return r;

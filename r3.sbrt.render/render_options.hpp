@@ -15,18 +15,17 @@
 #include <glm/vec3.hpp>
 
 #include "grass.hpp"
+#include "shading.hpp"
+#include "view.hpp"
 
 /// \brief Everything the user asked for, validated, map units.
 struct RenderRequest {
     std::string input, output, material, hit_elevation, depth, png;
-    std::string view = "perspective";
-    std::optional<glm::dvec3> position, target;
-    double azimuth = 225, elevation = 30;
-    std::optional<double> distance, ortho_height;
-    double fov = 40, zexag = 1;
+    sbrt::View view;   ///< the camera as asked for (map units, degrees)
+    double zexag = 1;
     double light_azimuth = 315, light_elevation = 45, ambient = 0.35;
     std::array<uint8_t, 3> background{255, 255, 255};
-    std::string normals = "face";
+    sbrt::Normals normals = sbrt::Normals::face;
     int kernel = 5;
     double smooth = 0;
     std::string color, rules; ///< colour table name or rules file

@@ -12,7 +12,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "shading.hpp"
+#include "scene_parts.hpp"
 
 uint32_t find_class(const sbrt::Model &model, const std::string &name,
                     const char *option, const std::string &input)
@@ -46,22 +46,14 @@ std::vector<uint32_t> hidden_materials(const RenderRequest &request,
 sbrt::Translucency translucency(const RenderRequest &request,
                                 const sbrt::Model &model)
 {
-    sbrt::Translucency tr;
     if (request.opacity.empty())
-        return tr;
+        return {};
     const sbrt::Frame &f = model.frame();
-    tr.length = request.opacity_length.value_or(std::sqrt(f.ew_res() * f.ns_res()));
-    const size_t count = model.materials().size();
-    tr.extinction.assign(count, std::numeric_limits<double>::infinity());
-    tr.color.assign(count, glm::dvec3(0));
-    for (uint32_t m = 1; m < count; ++m) {
-        const auto rgb = sbrt::material_color(model, m);
-        tr.color[m] = glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0;
-    }
+    std::vector<std::pair<uint32_t, double>> alphas;
     for (const auto &[name, alpha] : request.opacity)
-        tr.extinction[find_class(model, name, "opacity", request.input)] =
-            sbrt::extinction_of(alpha, tr.length);
-    return tr;
+        alphas.emplace_back(find_class(model, name, "opacity", request.input), alpha);
+    return sbrt::make_translucency(
+        model, alphas, request.opacity_length.value_or(std::sqrt(f.ew_res() * f.ns_res())));
 }
 
 std::vector<sbrt::ClipPlane> clip_planes(const RenderRequest &request,
@@ -72,16 +64,7 @@ std::vector<sbrt::ClipPlane> clip_planes(const RenderRequest &request,
         planes.push_back({{p[0], p[1], p[2]}, {p[3], p[4], p[5]}});
     if (request.section) {
         const auto &s = *request.section;
-        const glm::dvec3 point(s[0], s[1], 0);
-        // horizontal normal to the left of (x1,y1) -> (x2,y2)
-        glm::dvec3 normal(-(s[3] - s[1]), s[2] - s[0], 0);
-        // towards the camera: the side the camera is on is removed
-        const double facing = camera.parallel()
-                                  ? glm::dot(normal, -camera.forward())
-                                  : glm::dot(normal, camera.origin() - point);
-        if (facing < 0)
-            normal = -normal;
-        planes.push_back({point, normal});
+        planes.push_back(sbrt::section_plane({s[0], s[1]}, {s[2], s[3]}, camera));
     }
     return planes;
 }
