@@ -39,19 +39,9 @@ camera="position=4375,5000,2500 target=1000,1250,320 fov=25 zexag=2"
 cat >"$SBRT_GISDBASE/pipeline_one.sh" <<'EOS'
 set -euo pipefail
 size=$1 tools=$2 bench=$3 repeat=$4 camera=$5
-map=geo_$size
-[ -n "$(g.list type=raster_3d pattern=$map)" ] || "$tools/make_geomodel.sh" "$size" "$map" >/dev/null
+. "$tools/bench_model.sh"
+bench_model "$size" "$tools" # sets map= and sbrt=
 loc=$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)
-sbrt=""
-for m in $(g.mapsets -p sep=space); do
-    [ -e "$loc/$m/sbrt/$map" ] && { sbrt=$loc/$m/sbrt/$map; break; }
-done
-if [ -z "$sbrt" ]; then
-    r3.sbrt.convert --q input=$map output=$map
-    sbrt=$loc/$(g.gisenv get=MAPSET)/sbrt/$map
-fi
-g.region --q raster_3d=$map
-g.region --q rows=884 cols=1056
 cores=$(nproc)
 # in process
 "$bench" frame "$sbrt" $camera repeat="$repeat" threads=1 label=$size | sed "s/^/pipeline size=$size /"

@@ -41,19 +41,8 @@ cat >"$SBRT_GISDBASE/speed_one.sh" <<'EOS'
 set -euo pipefail
 size=$1 tools=$2 bench=$3 repeat=$4 camera_best=$5 camera_worst=$6 camera_grazing=$7
 hidden=$8
-map=geo_$size
-[ -n "$(g.list type=raster_3d pattern=$map)" ] || "$tools/make_geomodel.sh" "$size" "$map" >/dev/null
-loc=$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)
-sbrt=""
-for m in $(g.mapsets -p sep=space); do
-    [ -e "$loc/$m/sbrt/$map" ] && { sbrt=$loc/$m/sbrt/$map; break; }
-done
-if [ -z "$sbrt" ]; then
-    r3.sbrt.convert --q input=$map output=$map
-    sbrt=$loc/$(g.gisenv get=MAPSET)/sbrt/$map
-fi
-g.region --q raster_3d=$map
-g.region --q rows=884 cols=1056
+. "$tools/bench_model.sh"
+bench_model "$size" "$tools" # sets map= and sbrt=
 # twelve wells on a 4 x 3 grid over the model
 [ -n "$(g.list type=vector pattern=speed_wells)" ] || {
     for x in 250 750 1250 1750; do for y in 400 1250 2100; do echo "$x|$y"; done; done |
