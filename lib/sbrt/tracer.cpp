@@ -12,9 +12,11 @@
 #include <glm/geometric.hpp>
 
 #include "error.hpp"
-#include "overlay_geometry.hpp"
+#include "tracer_walk.hpp"
 
 namespace sbrt {
+
+using namespace tracer_detail;
 
 bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 inv_d, glm::dvec3 low,
                  glm::dvec3 high, double &t_near, double &t_far, int &near_axis)
@@ -49,51 +51,6 @@ glm::dvec3 face_normal(Face face)
     default: return {0, 0, 0};
     }
 }
-
-namespace {
-
-constexpr double INF = std::numeric_limits<double>::infinity();
-/// Marks a fence panel in a cell's overlay list (else a borehole).
-constexpr uint32_t PANEL = 1u << 31;
-/// Up to this many overlays, a ray without the model meets each of them
-/// directly rather than walking the cells between them.
-constexpr size_t DIRECT_OVERLAYS = 256;
-
-/// Whether a ray whose height runs from z_a to z_b stays out of `range`:
-/// at or above its top (as walk_stack reads a stack) or below its bottom.
-bool passes(const ZRange &range, double z_a, double z_b)
-{
-    return range.empty() || std::min(z_a, z_b) >= double(range.high) ||
-           std::max(z_a, z_b) < double(range.low);
-}
-
-/// Face through which a ray moving along `axis` with sign of `d` enters.
-Face entry_face(int axis, double d)
-{
-    if (axis == 0)
-        return d > 0 ? Face::west : Face::east;
-    if (axis == 1)
-        return d > 0 ? Face::south : Face::north;
-    return d > 0 ? Face::bottom : Face::top;
-}
-
-} // namespace
-
-/// The surface a ray enters a stretch through, with its shading normal
-/// (a cell's faces leave it unset: face_normal gives it, at a hit only).
-struct Tracer::Entry {
-    Face face = Face::none;
-    glm::dvec3 normal{0};
-    int plane = -1;
-};
-
-/// One ray on its way: local origin and direction, what it met so far.
-struct Tracer::Walk {
-    const Ray &ray;
-    glm::dvec3 o, d;      ///< local frame
-    Hit hit;
-    glm::dvec3 inv_d{0};  ///< 1 / d per axis (inf along a wall)
-};
 
 Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
     : Tracer(model, zexag, Scene{std::move(planes), {}, {}, 0, {}, {}, true})
@@ -170,67 +127,6 @@ void Tracer::build_pyramid()
             }
         }
     });
-}
-
-void Tracer::index_overlays()
-{
-    const Frame &f = model_.frame();
-    box_low_ = glm::dvec2(0);
-    box_high_ = glm::dvec2(f.cols, f.rows);
-    for (size_t k = 0; k < scene_.boreholes.size(); ++k)
-        all_overlays_.push_back(uint32_t(k));
-    for (size_t k = 0; k < scene_.fence.size(); ++k)
-        all_overlays_.push_back(uint32_t(k) | PANEL);
-    if (all_overlays_.empty())
-        return;
-    // each overlay in the lists of the cells it may touch
-    std::vector<std::vector<uint32_t>> lists(f.cells());
-    for (uint32_t item : all_overlays_) {
-        // a curtain's segment, or a borehole's axis widened by its radius
-        glm::dvec2 a, b;
-        double margin = 0;
-        if (item & PANEL) {
-            a = scene_.fence[item & ~PANEL].a;
-            b = scene_.fence[item & ~PANEL].b;
-        }
-        else {
-            a = b = glm::dvec2(scene_.boreholes[item].x, scene_.boreholes[item].y);
-            margin = scene_.borehole_radius;
-        }
-        for (uint64_t c : cells_near_segment(f, a, b, margin))
-            lists[c].push_back(item);
-    }
-    if (!scene_.draw_model) {
-        // rays need to cross only the cells with overlays
-        box_low_ = box_high_;
-        box_high_ = glm::dvec2(0);
-    }
-    overlay_offsets_.assign(f.cells() + 1, 0);
-    for (uint64_t c = 0; c < f.cells(); ++c) {
-        overlay_items_.insert(overlay_items_.end(), lists[c].begin(), lists[c].end());
-        overlay_offsets_[c + 1] = uint32_t(overlay_items_.size());
-        if (!lists[c].empty() && !scene_.draw_model) {
-            const glm::dvec2 cell(double(c % uint64_t(f.cols)),
-                                  double(f.rows - 1 - int(c / uint64_t(f.cols))));
-            box_low_ = glm::min(box_low_, cell);
-            box_high_ = glm::max(box_high_, cell + 1.0);
-        }
-    }
-}
-
-std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_bounds() const
-{
-    std::vector<std::array<glm::dvec3, 2>> boxes;
-    if (scene_.draw_model)
-        return boxes;
-    const double low = corner(0).z, high = corner(7).z;
-    const double r = scene_.borehole_radius;
-    for (const Borehole &b : scene_.boreholes)
-        boxes.push_back({glm::dvec3(b.x - r, b.y - r, low), glm::dvec3(b.x + r, b.y + r, high)});
-    for (const FencePanel &p : scene_.fence)
-        boxes.push_back({glm::dvec3(glm::min(p.a, p.b), low),
-                         glm::dvec3(glm::max(p.a, p.b), high)});
-    return boxes;
 }
 
 glm::dvec3 Tracer::exaggerate(glm::dvec3 p) const
@@ -365,141 +261,6 @@ bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &e
     const Interval *intervals = model_.intervals().data();
     return walk_stack(intervals + model_.stack_begin(cell),
                       intervals + model_.stack_end(cell), t_in, t_out, entry, walk);
-}
-
-bool Tracer::cross_borehole(const Borehole &borehole, double t_a, double t_b,
-                            const Entry &entry, Walk &walk) const
-{
-    auto walk_half = [&](const std::vector<Interval> &stack, double a, double b,
-                         const Entry &e) {
-        return walk_stack(stack.data(), stack.data() + stack.size(), a, b, e, walk);
-    };
-    if (!scene_.split)
-        return walk_half(borehole.stack, t_a, t_b, entry);
-    // a split cylinder: the log on the side `split` points to
-    const glm::dvec2 s = *scene_.split;
-    const glm::dvec2 q(walk.ray.origin.x - borehole.x, walk.ray.origin.y - borehole.y);
-    const glm::dvec2 d(walk.ray.direction);
-    const double s0 = glm::dot(q, s), s1 = glm::dot(d, s);
-    auto stack_at = [&](double t) -> const std::vector<Interval> & {
-        return s0 + t * s1 >= 0 ? borehole.stack : borehole.model_stack;
-    };
-    const double t_split = s1 != 0 ? -s0 / s1 : INF;
-    if (!(t_split > t_a && t_split < t_b))
-        return walk_half(stack_at((t_a + t_b) / 2), t_a, t_b, entry);
-    if (walk_half(stack_at((t_a + t_split) / 2), t_a, t_split, entry))
-        return true;
-    const glm::dvec3 n(s1 > 0 ? -s : s, 0);
-    return walk_half(stack_at((t_split + t_b) / 2), t_split, t_b,
-                     {Face::split, n});
-}
-
-/// An overlay a ray meets: a borehole cylinder's span or a fence
-/// curtain's point (start == end), with the surface's normal at its start.
-struct Tracer::Event {
-    double start, end;
-    uint32_t item;
-    glm::dvec3 normal;
-};
-
-void Tracer::overlay_events(const uint32_t *first, const uint32_t *last,
-                            double t_lo, double t_hi, const Walk &walk,
-                            std::vector<Event> &events) const
-{
-    const glm::dvec2 o(walk.ray.origin), d(walk.ray.direction);
-    for (const uint32_t *i = first; i != last; ++i) {
-        const uint32_t item = *i;
-        if (item & PANEL) {
-            double t;
-            glm::dvec2 n;
-            if (ray_panel(o, d, scene_.fence[item & ~PANEL], t, n) && t >= t_lo &&
-                t < t_hi)
-                events.push_back({t, t, item, glm::dvec3(n, 0)});
-            continue;
-        }
-        const Borehole &b = scene_.boreholes[item];
-        double t0, t1;
-        if (!ray_cylinder(o, d, {b.x, b.y}, scene_.borehole_radius, t0, t1) ||
-            t1 <= t_lo || t0 >= t_hi)
-            continue;
-        // the mantle's normal where the ray enters it in this stretch
-        const glm::dvec3 n =
-            t0 >= t_lo ? glm::dvec3(glm::normalize(o + t0 * d - glm::dvec2(b.x, b.y)), 0)
-                       : glm::dvec3(0);
-        events.push_back({std::max(t0, t_lo), std::min(t1, t_hi), item, n});
-    }
-    std::sort(events.begin(), events.end(),
-              [](const Event &a, const Event &b) { return a.start < b.start; });
-}
-
-const Interval *Tracer::stack_at(glm::dvec3 local, const Interval *&last) const
-{
-    const Frame &f = model_.frame();
-    const int col = std::clamp(int(std::floor(local.x)), 0, f.cols - 1);
-    const int row = f.rows - 1 - std::clamp(int(std::floor(local.y)), 0, f.rows - 1);
-    const uint64_t cell = model_.cell_index(row, col);
-    last = model_.intervals().data() + model_.stack_end(cell);
-    return model_.intervals().data() + model_.stack_begin(cell);
-}
-
-bool Tracer::cross_events(const std::vector<Event> &events, double t_in,
-                          double t_out, Entry entry, const Interval *first,
-                          const Interval *last, Walk &walk) const
-{
-    // `first`..`last`: the model's stack between the overlays, if drawn
-    const bool model = first != nullptr;
-    double cursor = t_in;
-    for (const Event &e : events) {
-        const bool panel = (e.item & PANEL) != 0;
-        if (panel ? e.start < cursor : e.end <= cursor)
-            continue; // inside a cylinder already crossed
-        if (model && e.start > cursor &&
-            walk_stack(first, last, cursor, e.start, entry, walk))
-            return true;
-        if (panel) {
-            // the class of the model at the curtain's point
-            const glm::dvec3 p = walk.o + e.start * walk.d;
-            const Interval *stack_last = last;
-            const Interval *stack_first = model ? first : stack_at(p, stack_last);
-            const Interval *k = std::upper_bound(
-                stack_first, stack_last, p.z,
-                [](double v, const Interval &iv) { return v < double(iv.top); });
-            entry = {Face::fence, e.normal, -1};
-            if (k != stack_last && meet(k->material, e.start, e.start, entry, walk))
-                return true;
-            cursor = e.start;
-            continue;
-        }
-        const double start = std::max(e.start, cursor);
-        const Entry side = start == e.start && glm::length(e.normal) > 0
-                               ? Entry{Face::cylinder, e.normal, -1}
-                               : entry;
-        const Borehole &b = scene_.boreholes[e.item];
-        if (cross_borehole(b, start, e.end, side, walk))
-            return true;
-        cursor = e.end;
-        // leaving the cylinder into the model: its mantle, seen from inside
-        const glm::dvec2 at = glm::dvec2(walk.ray.origin) +
-                              cursor * glm::dvec2(walk.ray.direction) -
-                              glm::dvec2(b.x, b.y);
-        entry = {Face::cylinder, glm::dvec3(-glm::normalize(at), 0), -1};
-    }
-    return model && cursor < t_out && walk_stack(first, last, cursor, t_out, entry, walk);
-}
-
-bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
-                            const Entry &entry, Walk &walk) const
-{
-    std::vector<Event> events;
-    overlay_events(overlay_items_.data() + overlay_offsets_[cell],
-                   overlay_items_.data() + overlay_offsets_[cell + 1], t_in, t_out,
-                   walk, events);
-    if (!scene_.draw_model)
-        return cross_events(events, t_in, t_out, entry, nullptr, nullptr, walk);
-    const Interval *intervals = model_.intervals().data();
-    return cross_events(events, t_in, t_out, entry,
-                        intervals + model_.stack_begin(cell),
-                        intervals + model_.stack_end(cell), walk);
 }
 
 std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
