@@ -28,8 +28,11 @@ class OsmesaLibrary {
 public:
     OsmesaLibrary()
     {
+        // RTLD_NODELETE: Mesa keeps global state (its LLVM, per-context
+        // allocations) past OSMesaDestroyContext; unmapping the library
+        // under it is unsafe, and leak reports then name no module
         for (const char *name : {"libOSMesa.so.8", "libOSMesa.so"})
-            if ((handle_ = dlopen(name, RTLD_NOW | RTLD_LOCAL)))
+            if ((handle_ = dlopen(name, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE)))
                 break;
         if (!handle_)
             sbrt::fail("osmesa: cannot load libOSMesa.so.8 (", dlerror(),
