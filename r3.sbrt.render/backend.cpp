@@ -13,14 +13,6 @@
 
 namespace {
 
-bool is_software_renderer(const std::string &renderer)
-{
-    for (const char *name : {"llvmpipe", "softpipe", "swrast", "Software"})
-        if (renderer.find(name) != std::string::npos)
-            return true;
-    return false;
-}
-
 void report(const char *what, const sbrt::Camera &camera, double ms)
 {
     G_verbose_message(_("%s: %d x %d rays in %.1f ms (%.2f Mrays/s)"), what,
@@ -72,7 +64,7 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Renderer &renderer,
     // face normals without a drape are shaded on the GPU too: only the
     // outputs come back
     const sbrt::Shading &shading = renderer.shading();
-    const bool on_gpu = shading.normals == sbrt::Normals::face && !shading.drape;
+    const bool on_gpu = sbrt::gpu_can_shade(shading);
     if (on_gpu)
         rows.shade_on_gpu(&shading);
     G_verbose_message(on_gpu ? _("Shading: on the GPU")
@@ -118,7 +110,7 @@ std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &reque
         const sbrt_gl::GlApi gl(*context);
         const std::string renderer =
             reinterpret_cast<const char *>(gl.GetString(GL_RENDERER));
-        if (is_software_renderer(renderer)) {
+        if (sbrt_gl::is_software_renderer(renderer)) {
             G_verbose_message(_("OpenGL renderer <%s> of %s is software: the "
                                 "CPU ray caster is faster on the same cores"),
                               renderer.c_str(), context->name().c_str());

@@ -102,7 +102,7 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid)
 GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
                         const Outputs &outputs)
 {
-    if (shading.normals != Normals::face || shading.drape)
+    if (!gpu_can_shade(shading))
         fail("the GPU shades face normals without a drape only");
     GpuShade shade{};
     put(shade.light, shading.light);

@@ -105,7 +105,15 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
                       uint32_t loop_budget = GPU_LOOP_BUDGET);
 
-/// The Shade block of the tracer's scene lit by `shading`, for `outputs`.
+/// Whether the GPU shades with `shading` itself: face normals, no drape
+/// (kernel normals and drapes are shaded on the CPU).
+inline bool gpu_can_shade(const Shading &shading)
+{
+    return shading.normals == Normals::face && !shading.drape;
+}
+
+/// The Shade block of the tracer's scene lit by `shading` (gpu_can_shade),
+/// for `outputs`.
 GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
                         const Outputs &outputs);
 

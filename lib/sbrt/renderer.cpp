@@ -43,25 +43,8 @@ struct RowShader {
 
     void operator()(const Hit *hits, int row, Band &band) const
     {
-        const Model &model = tracer.model();
-        const size_t first = size_t(row - band.first_row) * band.cols;
-        for (int col = 0; col < band.cols; ++col) {
-            const Hit &hit = hits[col];
-            const size_t i = first + col;
-            const auto rgb = shade_pixel(model, shading, hit);
-            std::copy(rgb.begin(), rgb.end(), band.rgb.begin() + ptrdiff_t(i) * 3);
-            if (!band.material.empty())
-                band.material[i] = hit.is_hit() ? model.materials()[hit.material].id
-                                                : NULL_CLASS;
-            if (!band.elevation.empty())
-                band.elevation[i] = hit.is_hit() ? hit.point.z : NAN;
-            if (!band.depth.empty())
-                band.depth[i] = hit.is_hit()
-                                    ? glm::length(hit.point -
-                                                  tracer.unexaggerate(
-                                                      camera.ray(row, col).origin))
-                                    : NAN;
-        }
+        for (int col = 0; col < band.cols; ++col)
+            shade_into_band(tracer, shading, camera, hits[col], row, col, band);
     }
 };
 
@@ -257,7 +240,7 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     for (int first = 0; first < image_rows; first += report.band_rows) {
         const int count = std::min(report.band_rows, image_rows - first);
         Band band = writer.take();
-        const auto band_start = std::chrono::steady_clock::now();
+        const auto band_clock = std::chrono::steady_clock::now();
         prepare_band(band, first, count, cols, outputs);
         if (kernel) {
             kernel->prepare(first, first + count);
@@ -266,9 +249,9 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
         }
         else if (cpu) {
             // trace and shade a row at once, while its hits are in cache
-            Hit *const band_start = hits_of_band();
+            Hit *const band_hits_at = hits_of_band();
             for_each_row(first, first + count, threads, [&](int row) {
-                Hit *hits = band_start + size_t(row - first) * cols;
+                Hit *hits = band_hits_at + size_t(row - first) * cols;
                 cpu->trace_row(row, hits);
                 shade(hits, row, band);
             });
@@ -277,14 +260,14 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
             shaded_by_tracer = true; // no hits on this side
         }
         else {
-            Hit *const band_start = hits_of_band();
-            source.trace_rows(first, count, band_start);
+            Hit *const band_hits_at = hits_of_band();
+            source.trace_rows(first, count, band_hits_at);
             for_each_row(first, first + count, threads, [&](int row) {
-                shade(band_start + size_t(row - first) * cols, row, band);
+                shade(band_hits_at + size_t(row - first) * cols, row, band);
             });
         }
         report.trace_ms += std::chrono::duration<double, std::milli>(
-                               std::chrono::steady_clock::now() - band_start)
+                               std::chrono::steady_clock::now() - band_clock)
                                .count();
         writer.submit(std::move(band));
         ++report.bands;

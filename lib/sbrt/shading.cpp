@@ -60,6 +60,24 @@ std::array<uint8_t, 3> shade_pixel(const Model &model, const Shading &shading,
     return rgb;
 }
 
+void shade_into_band(const Tracer &tracer, const Shading &shading, const Camera &camera,
+                     const Hit &hit, int row, int col, Band &band)
+{
+    const Model &model = tracer.model();
+    const size_t i = size_t(row - band.first_row) * size_t(band.cols) + size_t(col);
+    const auto rgb = shade_pixel(model, shading, hit);
+    std::copy(rgb.begin(), rgb.end(), band.rgb.begin() + ptrdiff_t(i) * 3);
+    if (!band.material.empty())
+        band.material[i] = hit.is_hit() ? model.materials()[hit.material].id : NULL_CLASS;
+    if (!band.elevation.empty())
+        band.elevation[i] = hit.is_hit() ? hit.point.z : NAN;
+    if (!band.depth.empty())
+        band.depth[i] =
+            hit.is_hit()
+                ? glm::length(hit.point - tracer.unexaggerate(camera.ray(row, col).origin))
+                : NAN;
+}
+
 Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
             const Shading &shading, unsigned threads)
 {

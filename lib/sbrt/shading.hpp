@@ -10,6 +10,7 @@
 #include <array>
 #include <vector>
 
+#include "band.hpp"
 #include "hit_image.hpp"
 
 namespace sbrt {
@@ -48,6 +49,12 @@ std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 /// them, the lit colour of the hit (or the background).
 std::array<uint8_t, 3> shade_pixel(const Model &model, const Shading &shading,
                                    const Hit &hit);
+
+/// Pixel (row, col) of `band` (a band of camera's image): the colour of
+/// `hit` and the outputs the band holds (class id, elevation, depth from
+/// the ray's origin; NULL_CLASS and NaN where the ray met nothing).
+void shade_into_band(const Tracer &tracer, const Shading &shading, const Camera &camera,
+                     const Hit &hit, int row, int col, Band &band);
 
 /// The whole-image reference of the pipeline (tests and benchmarks; the
 /// module streams through Renderer): outputs of the hits of camera's rays

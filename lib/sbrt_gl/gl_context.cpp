@@ -29,4 +29,12 @@ std::unique_ptr<GlContext> create_gl_context(const std::string &backend)
     sbrt::fail("no OpenGL backend works: ", reasons);
 }
 
+bool is_software_renderer(const std::string &renderer)
+{
+    for (const char *name : {"llvmpipe", "softpipe", "swrast", "Software"})
+        if (renderer.find(name) != std::string::npos)
+            return true;
+    return false;
+}
+
 } // namespace sbrt_gl

@@ -36,6 +36,10 @@ std::unique_ptr<GlContext> create_osmesa_context();
 /// sbrt::Error listing each backend tried and why it failed.
 std::unique_ptr<GlContext> create_gl_context(const std::string &backend);
 
+/// Whether a GL_RENDERER string names a software rasteriser (Mesa's
+/// llvmpipe, softpipe, swrast, or a driver that says "Software").
+bool is_software_renderer(const std::string &renderer);
+
 } // namespace sbrt_gl
 
 #endif

@@ -7,10 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstring>
-
-#include <glm/geometric.hpp>
 
 #include "error.hpp"
 #include "parallel.hpp"
@@ -111,9 +108,7 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
     check_gl(gl_, "uploading the model");
     // llvmpipe ends an invocation after 65,535 loop iterations; a GPU does
     // not: its rays run to the end
-    const std::string renderer = gl_renderer();
-    if (renderer.find("llvmpipe") == std::string::npos &&
-        renderer.find("softpipe") == std::string::npos)
+    if (!is_software_renderer(gl_renderer()))
         loop_budget_ = UINT32_MAX;
     stats_.upload_ms = ms_since(created_); // with compiling the shader
 }
@@ -145,16 +140,24 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
     return hits;
 }
 
+namespace {
+
+/// The ray casting shader for `layout`, writing hit records or, with
+/// `shade`, the shaded outputs (SBRT_SHADE).
+std::vector<const char *> raycast_sources(sbrt::GpuLayout layout, bool shade)
+{
+    return {"#version 450\n",
+            layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
+            shade ? "#define SBRT_SHADE 1\n" : "", SHADER_COMMON_LAYOUT, SHADER_RAYCAST};
+}
+
+} // namespace
+
 const GlComputeProgram &GpuTracer::record_program() const
 {
     // compiled when first used: a render shaded on the GPU never needs it
     if (!program_)
-        program_.emplace(gl_, std::vector<const char *>{
-                                  "#version 450\n",
-                                  layout_ == sbrt::GpuLayout::textures
-                                      ? "#define SBRT_TEXTURES 1\n"
-                                      : "",
-                                  SHADER_COMMON_LAYOUT, SHADER_RAYCAST});
+        program_.emplace(gl_, raycast_sources(layout_, false));
     return *program_;
 }
 
@@ -254,11 +257,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     if (!shade_program_) {
         const auto start = Clock::now();
-        shade_program_.emplace(
-            gl_, std::vector<const char *>{
-                     "#version 450\n",
-                     layout_ == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
-                     "#define SBRT_SHADE 1\n", SHADER_COMMON_LAYOUT, SHADER_RAYCAST});
+        shade_program_.emplace(gl_, raycast_sources(layout_, true));
         const std::vector<sbrt::GpuLook> looks = sbrt::make_gpu_looks(tracer_);
         looks_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, looks.size() * sizeof(sbrt::GpuLook),
                        looks.data());
@@ -282,26 +281,14 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     // the words into the band; rays over the budget traced and shaded here
     const auto start = Clock::now();
     std::vector<size_t> over_per_row(size_t(row_count), 0);
-    const sbrt::Model &model = tracer_.model();
     sbrt::for_each_row(first_row, first_row + row_count, cpu_threads, [&](int row) {
         for (int col = 0; col < cols; ++col) {
             const size_t i = size_t(row - band.first_row) * cols + col;
             const uint32_t *w = words_.data() + size_t(row - first_row) * cols * words_per_pixel +
                                 size_t(col) * words_per_pixel;
             if ((w[0] >> 24) == 0) {
-                const sbrt::Ray ray = camera.ray(row, col);
-                const sbrt::Hit hit = tracer_.trace(ray);
-                const auto rgb = sbrt::shade_pixel(model, shading, hit);
-                std::copy(rgb.begin(), rgb.end(), band.rgb.begin() + ptrdiff_t(i) * 3);
-                if (outputs.material)
-                    band.material[i] =
-                        hit.is_hit() ? model.materials()[hit.material].id : sbrt::NULL_CLASS;
-                if (outputs.elevation)
-                    band.elevation[i] = hit.is_hit() ? hit.point.z : NAN;
-                if (outputs.depth)
-                    band.depth[i] = hit.is_hit() ? glm::length(hit.point -
-                                                               tracer_.unexaggerate(ray.origin))
-                                                 : NAN;
+                const sbrt::Hit hit = tracer_.trace(camera.ray(row, col));
+                sbrt::shade_into_band(tracer_, shading, camera, hit, row, col, band);
                 ++over_per_row[size_t(row - first_row)];
                 continue;
             }
