@@ -17,6 +17,7 @@ packages=(
     valgrind                         # memcheck of the modules
     libpng-dev                       # the PNG file of a render
     python3-pil                      # tests read the PNG back with a real decoder
+    libcairo2-dev fonts-dejavu-core  # the PNG's annotations: legend, north arrow, scale bar
 )
 missing=()
 for p in "${packages[@]}"; do
