@@ -3,6 +3,12 @@
  * PURPOSE:   voxels -> SBRT -> file -> SBRT -> voxels is identical
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "atomic_dir.hpp"
@@ -61,18 +67,82 @@ TEST(VoxelRoundTrip, IntervalsAreMaximalRuns)
     EXPECT_EQ(m.intervals().size(), runs);
 }
 
-TEST(VoxelRoundTrip, StatsFollowTableOne)
+TEST(VoxelRoundTrip, StatsOfAHandMadeModel)
+{
+    // 2 cells x 4 depths, bottom up; figures counted by hand:
+    //   cell 0: 5, 5, null, 9  -> 5 (2 voxels), EMPTY (cave), 9: 3 intervals
+    //   cell 1: 9, null, null, null -> 9 (trailing air not stored): 1
+    sbrt_test::Voxels v;
+    v.frame.rows = 1;
+    v.frame.cols = 2;
+    v.frame.depths = 4;
+    v.classes = {5, 9, 5, NULL_CLASS, NULL_CLASS, NULL_CLASS, 9, NULL_CLASS};
+    const Stats s = sbrt_test::build_model(v).stats();
+    EXPECT_EQ(s.voxels, 8u);
+    EXPECT_EQ(s.voxel_bytes, 32u);    // 8 FCELL voxels
+    EXPECT_EQ(s.intervals, 4u);
+    EXPECT_EQ(s.solid_intervals, 3u); // all but the cave
+    EXPECT_EQ(s.max_stack, 3u);
+    EXPECT_DOUBLE_EQ(s.mean_stack, 2.0);
+    // 2 counts of 4 bytes + 4 intervals of 8 + 3 materials (EMPTY, 5, 9) of 8
+    EXPECT_EQ(s.sbrt_bytes, 64u);
+    EXPECT_DOUBLE_EQ(s.compression_percent, -100.0); // twice the voxels' size
+}
+
+TEST(VoxelRoundTrip, StatsAgreeWithTheVoxelsAndTheFileOnDisk)
 {
     const auto v = random_voxels(7, 10, 8, 30);
     const Model m = sbrt_test::build_model(v);
     const Stats s = m.stats();
+
+    // brute force from the source voxels: walk each column bottom up,
+    // a new interval at every class change, the trailing null run not stored
+    const uint64_t cells = uint64_t(v.frame.rows) * v.frame.cols;
+    uint64_t intervals = 0, solid = 0;
+    uint32_t max_stack = 0;
+    std::set<int32_t> classes;
+    for (uint64_t c = 0; c < cells; ++c) {
+        std::vector<int32_t> column;
+        for (int z = 0; z < v.frame.depths; ++z)
+            column.push_back(v.classes[z * cells + c]);
+        while (!column.empty() && column.back() == NULL_CLASS)
+            column.pop_back();
+        uint32_t runs = 0;
+        for (size_t z = 0; z < column.size(); ++z) {
+            if (column[z] != NULL_CLASS)
+                classes.insert(column[z]);
+            if (z > 0 && column[z] == column[z - 1])
+                continue;
+            ++runs;
+            solid += column[z] != NULL_CLASS;
+        }
+        intervals += runs;
+        max_stack = std::max(max_stack, runs);
+    }
+    ASSERT_GT(intervals, cells); // the seed gives stacks of several runs
     EXPECT_EQ(s.voxels, 10u * 8u * 30u);
-    EXPECT_EQ(s.voxel_bytes, s.voxels * 4);
-    EXPECT_EQ(s.intervals, m.intervals().size());
-    EXPECT_EQ(s.sbrt_bytes, 80u * 4u + s.intervals * 8u + m.materials().size() * 8u);
-    EXPECT_NEAR(s.mean_stack, double(s.intervals) / 80.0, 1e-12);
-    EXPECT_NEAR(s.compression_percent,
-                100.0 * (1 - double(s.sbrt_bytes) / s.voxel_bytes), 1e-9);
+    EXPECT_EQ(s.voxel_bytes, 10u * 8u * 30u * 4u);
+    EXPECT_EQ(s.intervals, intervals);
+    EXPECT_EQ(s.solid_intervals, solid);
+    EXPECT_LT(s.solid_intervals, s.intervals); // the seed has caves
+    EXPECT_EQ(s.max_stack, max_stack);
+    EXPECT_DOUBLE_EQ(s.mean_stack, double(intervals) / double(cells));
+
+    // the bytes are those of the stacks file on disk less its fixed header
+    // (136 bytes: magic 8, version 4, header size 4, 6 f64, 5 u32/i32,
+    // material count 4, interval count 8, 3 u64 offsets, 4 crc32)
+    const std::string parent = sbrt_test::temp_dir("stats");
+    write_sbrt(parent + "/m", m, "stats\n");
+    struct stat st;
+    ASSERT_EQ(stat((parent + "/m/stacks").c_str(), &st), 0);
+    remove_tree(parent);
+    const uint64_t file_bytes = uint64_t(st.st_size);
+    ASSERT_GT(file_bytes, 136u);
+    EXPECT_EQ(s.sbrt_bytes, file_bytes - 136u);
+    // the materials the file holds: EMPTY and one per class of the voxels
+    EXPECT_EQ(m.materials().size(), classes.size() + 1);
+    EXPECT_DOUBLE_EQ(s.compression_percent,
+                     100.0 * (1.0 - double(file_bytes - 136) / (10 * 8 * 30 * 4)));
 }
 
 TEST(VoxelRoundTrip, SingleVoxelLayersAndCaves)
