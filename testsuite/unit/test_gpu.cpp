@@ -351,10 +351,52 @@ TEST(GpuContext, UnknownBackendIsAnError)
     EXPECT_THROW(sbrt_gl::create_gl_context("vulkan"), Error);
 }
 
+namespace {
+
+/// Voxels of 30 x 41 cells x 20 depths whose interval count follows from
+/// how they are made: cell k holds 5 runs, 6 where k % 8 < 3, below 0 to 3
+/// voxels of air (not stored); neighbouring runs differ in class, run 1 is
+/// a cave (an EMPTY interval) in every other cell. `runs` gets the count.
+Voxels counted_columns(uint64_t &runs)
+{
+    Voxels v;
+    v.frame.rows = 30;
+    v.frame.cols = 41;
+    v.frame.depths = 20;
+    v.frame.west = 612000.5;
+    v.frame.east = v.frame.west + 41 * 25.0;
+    v.frame.south = 4312000.25;
+    v.frame.north = v.frame.south + 30 * 25.0;
+    v.frame.bottom = -300;
+    v.frame.top = -300 + 20 * 4.0;
+    v.classes.assign(v.frame.voxels(), NULL_CLASS);
+    runs = 0;
+    const int cells = 30 * 41;
+    for (int k = 0; k < cells; ++k) {
+        const int count = k % 8 < 3 ? 6 : 5;
+        const int solid = 20 - k % 4; // voxels under the air
+        for (int j = 0; j < count; ++j) {
+            const bool cave = j == 1 && k % 2 == 0;
+            const int32_t id = cave ? NULL_CLASS : 1 + (j + k) % 7;
+            for (int z = j * solid / count; z < (j + 1) * solid / count; ++z)
+                v.classes[size_t(z) * cells + k] = id;
+        }
+        runs += count;
+    }
+    return v;
+}
+
+} // namespace
+
 TEST(GpuMemoryLayout, TexturesHoldEveryIntervalWithLessThanARowWasted)
 {
-    const Model m = geology(30, 41, 20);
+    uint64_t runs = 0;
+    const Model m = build_model(counted_columns(runs));
     const uint64_t n = m.intervals().size();
+    // 1230 cells x 5 runs + 462 cells with a sixth: 6612 intervals, more
+    // than 81 x 81 texels, so at a largest side of 82 the texture is 82 x 81
+    ASSERT_EQ(runs, 1230u * 5u + 462u);
+    ASSERT_EQ(n, runs);
     const GpuMemory ssbo = gpu_memory(m, GpuLayout::ssbo, 16384);
     EXPECT_EQ(ssbo.index_bytes, (m.frame().cells() + 1) * 4);
     EXPECT_EQ(ssbo.interval_bytes, n * 8);
@@ -378,13 +420,16 @@ TEST(GpuMemoryLayout, TexturesHoldEveryIntervalWithLessThanARowWasted)
             EXPECT_EQ(top, m.intervals()[j].top);
         }
     }
+    const GpuMemory at_82 = gpu_memory(m, GpuLayout::textures, 82);
+    EXPECT_EQ(at_82.texture_cols, 82);
+    EXPECT_EQ(at_82.texture_rows, 81);
     const std::vector<uint32_t> index = index_texels(m);
     for (uint64_t cell = 0; cell < m.frame().cells(); ++cell) {
         EXPECT_EQ(index[2 * cell], m.stack_begin(cell));
         EXPECT_EQ(index[2 * cell] + index[2 * cell + 1], m.stack_end(cell));
     }
     // a grid wider than the largest texture, too many intervals: clear errors
-    ASSERT_EQ(n, 6578u); // needs 82 x 81 texels at least
+    // needs 82 x 81 texels at least (n > 81 x 81), so 80 x 80 is too few
     EXPECT_THROW(gpu_memory(m, GpuLayout::textures, 40), Error);
     EXPECT_THROW(gpu_memory(m, GpuLayout::textures, 80), Error);
     EXPECT_THROW(parse_gpu_layout("3d-texture"), Error);
