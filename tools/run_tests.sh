@@ -86,6 +86,34 @@ for test in testsuite/test_*.py; do
     passed=$((passed + good)); failed=$((failed + bad))
     echo "$name: $good passed, $bad failed"
 done
+
+# 6. the notebook docs/r3_sbrt.ipynb executed by nbconvert: one test, passed
+# when it runs through and each cell that shows an image (its last line is
+# Image(...) or ....show()) has a PNG among its outputs
+if jupyter nbconvert --to notebook --execute docs/r3_sbrt.ipynb --output-dir "$log" \
+    >"$log/notebook.log" 2>&1 &&
+    python3 - "$log/r3_sbrt.ipynb" >>"$log/notebook.log" 2>&1 <<'PY'
+import base64, sys
+import nbformat
+cells = [c for c in nbformat.read(sys.argv[1], 4).cells if c.cell_type == "code"]
+shows = [c for c in cells if c.source.strip() and (
+    c.source.strip().splitlines()[-1].startswith("Image(")
+    or c.source.strip().endswith(".show()"))]
+pngs = [[base64.b64decode(o["data"]["image/png"]) for o in c.outputs
+         if "image/png" in o.get("data", {})] for c in shows]
+good = sum(1 for p in pngs if p and all(b.startswith(b"\x89PNG") for b in p))
+print(f"notebook: {good} of {len(shows)} cells that show an image have one")
+sys.exit(not (len(shows) >= 5 and good == len(shows)))
+PY
+then
+    passed=$((passed + 1))
+    echo "notebook (docs/r3_sbrt.ipynb): passed"
+else
+    failed=$((failed + 1))
+    grep -E "Error|error|notebook:" "$log/notebook.log" | head -20
+    echo "notebook (docs/r3_sbrt.ipynb): failed (log $log/notebook.log)"
+fi
+
 echo "logs in $log"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
