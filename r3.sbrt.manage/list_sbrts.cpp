@@ -1,0 +1,54 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.manage
+ * PURPOSE:   -l: the SBRTs of the search path or of mapset=, as g.list
+ *            lists maps
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstdio>
+
+#include "manage.hpp"
+#include "sbrt_manage.hpp"
+
+std::vector<std::string> mapsets_to_list(const Option *mapset)
+{
+    std::vector<std::string> mapsets;
+    if (!mapset->answers) {
+        for (int i = 0; const char *name = G_get_mapset_name(i); ++i)
+            mapsets.push_back(name);
+        return mapsets;
+    }
+    for (int i = 0; const char *name = mapset->answers[i]; ++i) {
+        if (std::string(name) == "*") {
+            char **all = G_get_available_mapsets();
+            for (int j = 0; all && all[j]; ++j)
+                mapsets.push_back(all[j]);
+        }
+        else if (std::string(name) == ".") {
+            mapsets.push_back(G_mapset());
+        }
+        else if (G_mapset_permissions(name) == -1) {
+            G_fatal_error(_("Mapset <%s> does not exist"), name);
+        }
+        else {
+            mapsets.push_back(name);
+        }
+    }
+    return mapsets;
+}
+
+void print_sbrts(const std::vector<std::string> &mapsets, bool qualified)
+{
+    const std::vector<sbrt_grass::StoredSbrt> sbrts =
+        sbrt_grass::list_stored_sbrts(mapsets);
+    for (size_t i = 0; i < sbrts.size(); ++i) {
+        // a bare name must say which SBRT it is: g.list adds the mapset to
+        // a name that several of the listed mapsets hold
+        const bool ambiguous =
+            (i + 1 < sbrts.size() && sbrts[i + 1].name == sbrts[i].name) ||
+            (i > 0 && sbrts[i - 1].name == sbrts[i].name);
+        if (qualified || ambiguous)
+            fprintf(stdout, "%s\n", sbrts[i].qualified().c_str());
+        else
+            fprintf(stdout, "%s\n", sbrts[i].name.c_str());
+    }
+}

@@ -1,0 +1,129 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.manage
+ * AUTHOR(S): r3.sbrt authors
+ * PURPOSE:   Lists, copies, renames and removes SBRTs (the mapset element
+ *            sbrt/<name>) in GRASS's manner, since g.list, g.copy,
+ *            g.rename and g.remove know only the elements of their
+ *            element_list
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstdlib>
+
+#include "error.hpp"
+#include "manage.hpp"
+
+namespace {
+
+struct Options {
+    Option *copy, *rename, *remove, *mapset;
+    Flag *list, *qualified, *force;
+};
+
+/// An option of name pairs, as g.copy and g.rename define theirs.
+Option *define_pair_option(const char *key, const char *key_desc,
+                           const char *description)
+{
+    Option *o = G_define_option();
+    o->key = key;
+    o->type = TYPE_STRING;
+    o->key_desc = key_desc;
+    o->required = NO;
+    o->gisprompt = "old,sbrt,sbrt";
+    o->description = description;
+    return o;
+}
+
+Options define_options()
+{
+    Options o;
+    o.copy = define_pair_option(
+        "copy", "from,to",
+        _("SBRT(s) to copy into the current mapset (from may be name@mapset)"));
+    o.copy->guisection = _("Copy");
+    o.rename = define_pair_option(
+        "rename", "old,new", _("SBRT(s) of the current mapset to rename"));
+    o.rename->guisection = _("Rename");
+
+    o.remove = G_define_option();
+    o.remove->key = "remove";
+    o.remove->type = TYPE_STRING;
+    o.remove->key_desc = "name";
+    o.remove->multiple = YES;
+    o.remove->required = NO;
+    o.remove->gisprompt = "old,sbrt,sbrt";
+    o.remove->description = _("SBRT(s) of the current mapset to remove");
+    o.remove->guisection = _("Remove");
+    o.force = G_define_flag();
+    o.force->key = 'f';
+    o.force->description =
+        _("Force removal (without it remove= only prints what it would "
+          "remove)");
+    o.force->guisection = _("Remove");
+
+    o.list = G_define_flag();
+    o.list->key = 'l';
+    o.list->description = _("List the SBRTs (default: of the search path)");
+    o.list->guisection = _("List");
+    o.qualified = G_define_flag();
+    o.qualified->key = 'm';
+    o.qualified->description =
+        _("Print fully-qualified names (including mapsets)");
+    o.qualified->guisection = _("List");
+    o.mapset = G_define_standard_option(G_OPT_M_MAPSET);
+    o.mapset->multiple = YES;
+    o.mapset->label = _("Name of mapset to list (default: current search path)");
+    o.mapset->description =
+        _("'.' for current mapset; '*' for all mapsets in location");
+    o.mapset->guisection = _("List");
+
+    G_option_required(o.list, o.copy, o.rename, o.remove, NULL);
+    G_option_exclusive(o.list, o.copy, o.rename, o.remove, NULL);
+    G_option_requires(o.qualified, o.list, NULL);
+    G_option_requires(o.mapset, o.list, NULL);
+    G_option_requires(o.force, o.remove, NULL);
+    return o;
+}
+
+void run(const Options &o)
+{
+    const bool overwrite = G_check_overwrite(0, nullptr);
+    if (o.list->answer)
+        print_sbrts(mapsets_to_list(o.mapset), o.qualified->answer);
+    else if (o.copy->answers)
+        copy_sbrts(o.copy, overwrite);
+    else if (o.rename->answers)
+        rename_sbrts(o.rename, overwrite);
+    else
+        remove_sbrts(o.remove, o.force->answer);
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    G_gisinit(argv[0]);
+    GModule *module = G_define_module();
+    G_add_keyword(_("raster3d"));
+    G_add_keyword(_("map management"));
+    G_add_keyword(_("list"));
+    G_add_keyword(_("copy"));
+    G_add_keyword(_("rename"));
+    G_add_keyword(_("remove"));
+    G_add_keyword(_("SBRT"));
+    module->label = _("Lists, copies, renames and removes SBRTs.");
+    module->description =
+        _("Manages stack-based representations of terrains (SBRT) as "
+          "g.list, g.copy, g.rename and g.remove manage maps.");
+    // offers --overwrite in the usage, as g.copy and g.rename do
+    module->overwrite = 1;
+    const Options options = define_options();
+    if (G_parser(argc, argv))
+        exit(EXIT_FAILURE);
+    try {
+        run(options);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error("%s", e.what());
+    }
+    exit(EXIT_SUCCESS);
+}
