@@ -9,6 +9,7 @@ SUBDIRS = \
 	lib/grass_sbrt \
 	lib/sbrt_gl \
 	r3.sbrt.convert \
+	r3.sbrt.manage \
 	r3.sbrt.render
 
 # Plain "make" never installs into the system GISBASE: local builds land in
