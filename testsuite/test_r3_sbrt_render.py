@@ -56,10 +56,50 @@ class TestRenderTopView(TestCase):
         self.runModule("g.region", rows=60, cols=80)
         self.assertModule(
             "r3.sbrt.render", input="geo", output="persp", depth="persp_d",
-            material="persp_m",
+            material="persp_m", background="30:60:90", light=[315, 45], ambient=0.35,
         )
-        for band in ("red", "green", "blue"):
-            self.assertRasterMinMax(f"persp.{band}", refmin=0, refmax=255)
+        # the image against the class colours of the source 3D raster (the
+        # r3.colors rules of make_geomodel.sh), not the renderer's: a miss is
+        # the background; a hit on class k is k's colour times one shading
+        # factor f = ambient + (1 - ambient) * lambert in [0.35, 1] for all
+        # three channels, within a level (rounding; the GPU shades in float)
+        colours = {}
+        for line in gs.read_command("r3.colors.out", map="geo").splitlines():
+            value, rgb = line.split()
+            if value not in ("nv", "default"):
+                colours[int(float(value))] = [int(c) for c in rgb.split(":")]
+        stats = gs.read_command(
+            "r.stats", flags="c", input="persp_m,persp.red,persp.green,persp.blue"
+        )
+        misses = hits = 0
+        factors = []  # the range of f each hit's colour allows
+        for line in stats.splitlines():
+            cls, *rgb, count = line.split()
+            if cls == "*" and rgb == ["*"] * 3:
+                continue  # the region beyond the maps' extent
+            rgb = [int(c) for c in rgb]
+            if cls == "*":
+                self.assertEqual(rgb, [30, 60, 90], msg="a miss is the background")
+                misses += int(count)
+                continue
+            low, high = 0.35 - 1e-9, 1 + 1e-9
+            for level, full in zip(rgb, colours[int(cls)]):
+                low = max(low, (level - 1) / full)
+                high = min(high, (level + 1) / full)
+            self.assertLessEqual(
+                low, high, msg=f"class {cls}: {rgb} is not {colours[int(cls)]} shaded"
+            )
+            factors.append((low, high))
+            hits += int(count)
+        self.assertGreater(misses, 0)
+        self.assertGreater(hits, 60 * 80 // 4)
+        # tops under the light at 45 degrees: f = 0.35 + 0.65 sin 45; faces
+        # turned from it: the ambient share alone
+        top = 0.35 + 0.65 * 0.5**0.5
+        self.assertTrue(any(low <= top <= high for low, high in factors),
+                        msg=f"no top lit at f = {top:.4f}")
+        self.assertTrue(any(low < 0.35 + 1e-6 for low, _ in factors),
+                        msg="no face in the ambient light alone")
         info = gs.raster_info("persp_d")
         self.assertGreater(info["min"], 0)
         # the default camera frames the model: the corners see background
