@@ -40,8 +40,8 @@ Outcome copy_one(const char *key, const char *from, const char *to,
         G_warning(_("<%s> is an illegal file name. Skipping."), to);
         return Outcome::skipped;
     }
-    G_message(_("Copying %s <%s> to current mapset as <%s>"),
-              SBRT_DESCRIPTION, source->qualified().c_str(), to);
+    G_message(_("Copying %s <%s> to current mapset as <%s>"), SBRT_DESCRIPTION,
+              source->qualified().c_str(), to);
     try {
         sbrt_grass::copy_sbrt(*source, to);
     }
@@ -61,9 +61,8 @@ void copy_sbrts(const Option *copy, bool overwrite)
     bool failed = false;
     // the parser has checked that the names come in pairs
     for (int i = 0; copy->answers[i] && copy->answers[i + 1]; i += 2) {
-        const Outcome outcome =
-            copy_one(copy->key, copy->answers[i], copy->answers[i + 1],
-                     overwrite);
+        const Outcome outcome = copy_one(copy->key, copy->answers[i],
+                                         copy->answers[i + 1], overwrite);
         copied += outcome == Outcome::copied;
         failed |= outcome == Outcome::failed;
     }

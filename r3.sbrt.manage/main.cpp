@@ -40,8 +40,8 @@ Options define_options()
         "copy", "from,to",
         _("SBRT(s) to copy into the current mapset (from may be name@mapset)"));
     o.copy->guisection = _("Copy");
-    o.rename = define_pair_option(
-        "rename", "old,new", _("SBRT(s) of the current mapset to rename"));
+    o.rename = define_pair_option("rename", "old,new",
+                                  _("SBRT(s) of the current mapset to rename"));
     o.rename->guisection = _("Rename");
 
     o.remove = G_define_option();
@@ -71,7 +71,8 @@ Options define_options()
     o.qualified->guisection = _("List");
     o.mapset = G_define_standard_option(G_OPT_M_MAPSET);
     o.mapset->multiple = YES;
-    o.mapset->label = _("Name of mapset to list (default: current search path)");
+    o.mapset->label =
+        _("Name of mapset to list (default: current search path)");
     o.mapset->description =
         _("'.' for current mapset; '*' for all mapsets in location");
     o.mapset->guisection = _("List");

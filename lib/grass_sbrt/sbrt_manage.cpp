@@ -80,8 +80,7 @@ void copy_tree_synced(const fs::path &from, const fs::path &to)
     std::error_code ec;
     fs::create_directory(to, ec);
     if (ec)
-        fail("copy_sbrt: cannot create ", to.string(), " (", ec.message(),
-             ")");
+        fail("copy_sbrt: cannot create ", to.string(), " (", ec.message(), ")");
     for (fs::recursive_directory_iterator it(from, ec), end; !ec && it != end;
          it.increment(ec)) {
         const fs::path copy = to / fs::relative(it->path(), from);
@@ -94,8 +93,7 @@ void copy_tree_synced(const fs::path &from, const fs::path &to)
                  copy.string(), " (", ec.message(), ")");
     }
     if (ec)
-        fail("copy_sbrt: cannot read ", from.string(), " (", ec.message(),
-             ")");
+        fail("copy_sbrt: cannot read ", from.string(), " (", ec.message(), ")");
 }
 
 /// Appends to `hist` who copied the SBRT from where, in write_sbrt_map's
@@ -134,8 +132,8 @@ void replace_directory(const fs::path &from, const fs::path &target,
     fs::rename(from, target, ec);
     if (ec) {
         fs::rename(aside, target, ec);
-        fail(where, ": cannot rename ", from.string(), " to ",
-             target.string(), " (", ec.message(), ")");
+        fail(where, ": cannot rename ", from.string(), " to ", target.string(),
+             " (", ec.message(), ")");
     }
     fs::remove_all(aside, ec);
 }
@@ -244,8 +242,7 @@ void copy_sbrt(const StoredSbrt &source, const std::string &target)
     require_legal_name(target, "copy_sbrt");
     G_make_mapset_object_group(ELEMENT);
     StagedCopy staged(sbrt_directory(target, G_mapset()));
-    copy_tree_synced(sbrt_directory(source.name, source.mapset),
-                     staged.path());
+    copy_tree_synced(sbrt_directory(source.name, source.mapset), staged.path());
     append_copy_history(staged.path(), source);
     staged.publish();
 }
@@ -258,8 +255,7 @@ void rename_sbrt(const std::string &from, const std::string &to)
     std::error_code ec;
     if (!fs::is_directory(old_path, ec))
         fail("rename_sbrt: no SBRT at ", old_path.string());
-    replace_directory(old_path, sbrt_directory(to, G_mapset()),
-                      "rename_sbrt");
+    replace_directory(old_path, sbrt_directory(to, G_mapset()), "rename_sbrt");
     sync_path(old_path.parent_path());
 }
 
