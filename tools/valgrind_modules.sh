@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 ############################################################################
 # MODULE:    tools/valgrind_modules.sh (r3.sbrt addon)
-# PURPOSE:   Runs both modules under valgrind's memcheck on the small T
-#            model (convert both ways, render with every operation on the
-#            CPU backend): any invalid read or write, use of uninitialised
-#            memory or bad free fails the run. Leaks are not counted: GRASS
-#            modules leave their allocations to process exit by design.
+# PURPOSE:   Runs the modules under valgrind's memcheck on the small T
+#            model (convert both ways, list and copy the SBRT, render with
+#            every operation on the CPU backend): any invalid read or
+#            write, use of uninitialised memory or bad free fails the run.
+#            Leaks are not counted: GRASS modules leave their allocations
+#            to process exit by design.
 #            Prints "valgrind: N passed, N failed" (one per module run).
 # USAGE:     tools/valgrind_modules.sh    (after make)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
@@ -46,6 +47,8 @@ passed=0 failed=0
 count() { if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); fi; }
 count memcheck convert r3.sbrt.convert input=geo output=geo
 count memcheck convert_back r3.sbrt.convert -r input=geo output=geo_back
+count memcheck manage_list r3.sbrt.manage -l -m
+count memcheck manage_copy r3.sbrt.manage copy=geo,geo_copy
 g.region --q rows=48 cols=64
 count memcheck render r3.sbrt.render input=geo output=img material=m depth=d \
     hit_elevation=z backend=cpu normals=kernel kernel=5 smooth=1 png="$(g.gisenv get=GISDBASE)/vg.png"
