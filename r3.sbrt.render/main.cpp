@@ -12,6 +12,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "annotation_setup.hpp"
 #include "backend.hpp"
 #include "borehole_setup.hpp"
 #include "drape.hpp"
@@ -121,7 +122,12 @@ void run(const RenderRequest &request)
                                   make_shading(request, drape ? &*drape : nullptr),
                                   {unsigned(request.threads), true, 0});
     report_pyramid(renderer.tracer());
-    ImageMaps maps(request, camera.rows(), camera.cols());
+    const struct Cell_head window =
+        request.view.kind == sbrt::ViewKind::top
+            ? region
+            : image_window(region, camera.rows(), camera.cols());
+    ImageMaps maps(request, window,
+                   make_annotations(request, renderer.tracer(), camera, region));
     render_on_backend(request, renderer, camera, maps.outputs(),
                       [&](const sbrt::Band &band) { maps.write(band); }, context.get());
     maps.close(renderer.model());
@@ -153,7 +159,7 @@ int main(int argc, char *argv[])
     }
     catch (const std::bad_alloc &) {
         G_fatal_error(_("Out of memory while rendering <%s>: render a smaller image "
-                        "(g.region rows= cols=) or fewer outputs"),
+                        "(size=; view=top: g.region rows= cols=) or fewer outputs"),
                       request.input.c_str());
     }
     catch (const std::exception &e) {

@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "raster_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -23,14 +24,38 @@ void write_history(const std::string &name, const RenderRequest &request)
 
 } // namespace
 
-ImageMaps::ImageMaps(const RenderRequest &request, int rows, int cols)
-    : request_(request), cols_(cols), cells_(size_t(cols)), dcells_(size_t(cols))
+struct Cell_head image_window(const struct Cell_head &region, int rows, int cols)
 {
+    const double cell = std::min((region.east - region.west) / cols,
+                                 (region.north - region.south) / rows);
+    const double x = (region.east + region.west) / 2,
+                 y = (region.north + region.south) / 2;
+    struct Cell_head window = region;
+    window.rows = window.rows3 = rows;
+    window.cols = window.cols3 = cols;
+    window.west = x - cell * cols / 2;
+    window.east = x + cell * cols / 2;
+    window.south = y - cell * rows / 2;
+    window.north = y + cell * rows / 2;
+    window.ew_res = window.ew_res3 = cell;
+    window.ns_res = window.ns_res3 = cell;
+    G_adjust_Cell_head(&window, 1, 1);
+    return window;
+}
+
+ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &window,
+                     PngAnnotations annotations)
+    : request_(request), cols_(window.cols), cells_(size_t(window.cols)),
+      dcells_(size_t(window.cols))
+{
+    struct Cell_head output_window = window;
+    Rast_set_output_window(&output_window);
     // Measured on B, 1056 x 884 (three RGB maps): LZ4 writes in 100 ms of
     // render against 125 with GRASS's default ZSTD, for 444 KB against 326
     // KB; an image is rendered again more often than it is stored for long.
     // The user's GRASS_COMPRESSOR stays in force.
     setenv("GRASS_COMPRESSOR", "LZ4", 0);
+    composite_ = std::make_unique<RgbComposite>(request.output, window.rows, cols_);
     for (const char *band : {"red", "green", "blue"})
         rgb_.push_back(open(request.output + "." + band, CELL_TYPE));
     if (!request.material.empty())
@@ -40,7 +65,8 @@ ImageMaps::ImageMaps(const RenderRequest &request, int rows, int cols)
     if (!request.depth.empty())
         depth_.push_back(open(request.depth, DCELL_TYPE));
     if (!request.png.empty())
-        png_ = std::make_unique<sbrt::PngFile>(request.png, rows, cols);
+        png_ = std::make_unique<AnnotatedPng>(request.png, window.rows, cols_,
+                                              std::move(annotations));
 }
 
 ImageMaps::Map ImageMaps::open(const std::string &name, RASTER_MAP_TYPE type)
@@ -50,7 +76,8 @@ ImageMaps::Map ImageMaps::open(const std::string &name, RASTER_MAP_TYPE type)
 
 sbrt::Outputs ImageMaps::outputs() const
 {
-    return {!material_.empty(), !elevation_.empty(), !depth_.empty()};
+    const bool legend = png_ && png_->needs_classes();
+    return {!material_.empty() || legend, !elevation_.empty(), !depth_.empty()};
 }
 
 void ImageMaps::write(const sbrt::Band &band)
@@ -58,6 +85,7 @@ void ImageMaps::write(const sbrt::Band &band)
     const size_t cols = size_t(cols_);
     for (int r = 0; r < band.rows; ++r) {
         const size_t row = size_t(r) * cols;
+        composite_->write_row(band.rgb.data() + row * 3);
         for (size_t k = 0; k < 3; ++k) {
             const uint8_t *rgb = band.rgb.data() + row * 3 + k;
             for (size_t c = 0; c < cols; ++c)
@@ -89,11 +117,18 @@ void ImageMaps::write(const sbrt::Band &band)
         }
     }
     if (png_)
-        png_->write_rows(band.rgb.data(), band.rows);
+        png_->write(band);
 }
 
 void ImageMaps::close(const sbrt::Model &model)
 {
+    if (!composite_->close())
+        G_verbose_message(_("<%s>: more than %zu red-green pairs; its colours are "
+                            "within 2 levels of the image's (<%s.red>, .green, "
+                            ".blue are exact)"),
+                          composite_->name().c_str(), RgbComposite::MAX_EXACT_RULES,
+                          request_.output.c_str());
+    write_history(composite_->name(), request_);
     for (const Map &map : rgb_) {
         Rast_close(map.fd);
         struct Colors colors;

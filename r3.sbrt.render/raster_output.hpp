@@ -13,19 +13,27 @@
 
 #include "band.hpp"
 #include "model.hpp"
-#include "png_file.hpp"
+#include "png_annotations.hpp"
 #include "render_options.hpp"
+#include "rgb_composite.hpp"
 
-/// \brief <output>.red/.green/.blue and the optional maps of the request,
-/// open for writing; the image is the current region's rows x cols. Maps
-/// appear only when close() is reached (GRASS writes new maps aside).
+/// The raster window of a rows x cols image of a perspective or
+/// orthographic view: square cells, as large as fit in `region`, centred
+/// on it (the region itself is not changed).
+struct Cell_head image_window(const struct Cell_head &region, int rows, int cols);
+
+/// \brief <output> (the image with exact colours), <output>.red/.green/.blue
+/// and the optional maps of the request, open for writing in `window`
+/// (rows x cols of the image), and the PNG. Maps appear only when close()
+/// is reached (GRASS writes new maps aside).
 class ImageMaps {
 public:
-    ImageMaps(const RenderRequest &request, int rows, int cols);
+    ImageMaps(const RenderRequest &request, const struct Cell_head &window,
+              PngAnnotations annotations);
     ImageMaps(const ImageMaps &) = delete;
     ImageMaps &operator=(const ImageMaps &) = delete;
 
-    /// The outputs a render must compute for these maps.
+    /// The outputs a render must compute for these maps (and the legend).
     sbrt::Outputs outputs() const;
     /// The band's rows into every map (the bands in order, from the top).
     void write(const sbrt::Band &band);
@@ -43,11 +51,12 @@ private:
 
     const RenderRequest &request_;
     int cols_;
+    std::unique_ptr<RgbComposite> composite_;
     std::vector<Map> rgb_;
     std::vector<Map> material_, elevation_, depth_; ///< empty or one map
     std::vector<CELL> cells_;
     std::vector<DCELL> dcells_;
-    std::unique_ptr<sbrt::PngFile> png_;
+    std::unique_ptr<AnnotatedPng> png_;
 };
 
 #endif

@@ -131,6 +131,10 @@ RenderOptions define_render_options()
         "depth", _("Raster map of the distance from the camera to the hit"));
     o->png = define_standard(G_OPT_F_OUTPUT, "png", _("PNG file of the image too"),
                              _("Output"));
+    o->plain_png = define_flag(
+        'n', _("No annotations in the PNG (legend, north arrow, vertical "
+               "exaggeration, scale bar)"),
+        _("Output"));
 
     o->view = define_choice(
         "view", _("Projection of the view"), _("Camera"), "perspective",
@@ -139,6 +143,11 @@ RenderOptions define_render_options()
           "orthographic;Parallel rays along target - position;"
           "top;Straight down, one pixel per cell of the current region "
           "(georeferenced outputs)"));
+    o->size = define("size", TYPE_INTEGER,
+                     _("Image size in pixels of perspective and orthographic "
+                       "views (default: 640,480; view=top: the region's)"),
+                     _("Camera"));
+    o->size->key_desc = "width,height";
     o->position = define("position", TYPE_DOUBLE,
                          _("Camera position (map units, unexaggerated)"),
                          _("Camera"));
@@ -327,11 +336,26 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.hit_elevation = answer_or(o->hit_elevation);
     r.depth = answer_or(o->depth);
     r.png = answer_or(o->png);
+    r.annotate = !o->plain_png->answer;
     sbrt::View &v = r.view;
     const std::string kind = o->view->answer;
     v.kind = kind == "top"            ? sbrt::ViewKind::top
              : kind == "orthographic" ? sbrt::ViewKind::orthographic
                                       : sbrt::ViewKind::perspective;
+    if (o->size->answers) {
+        const std::vector<double> size = read_numbers(o->size);
+        if (size.size() != 2 || size[0] < 1 || size[1] < 1 ||
+            size[0] != std::floor(size[0]) || size[1] != std::floor(size[1]) ||
+            size[0] > 65536 || size[1] > 65536)
+            G_fatal_error(_("size= takes the image's width,height in pixels "
+                            "(1 to 65536 each), e.g. size=1056,884"));
+        if (v.kind == sbrt::ViewKind::top)
+            G_warning(_("size= is ignored with view=top: a top view has one "
+                        "pixel per cell of the current region (set it with "
+                        "g.region)"));
+        r.width = int(size[0]);
+        r.height = int(size[1]);
+    }
     v.position = read_point(o->position);
     v.target = read_point(o->target);
     v.azimuth = read_double(o->azimuth);

@@ -21,6 +21,8 @@
 /// \brief Everything the user asked for, validated, map units.
 struct RenderRequest {
     std::string input, output, material, hit_elevation, depth, png;
+    bool annotate = true;  ///< the PNG's legend, north arrow, scale bar (not -n)
+    int width = 640, height = 480; ///< size=: perspective and orthographic
     sbrt::View view;   ///< the camera as asked for (map units, degrees)
     double zexag = 1;
     double light_azimuth = 315, light_elevation = 45, ambient = 0.35;
@@ -52,7 +54,8 @@ struct RenderRequest {
 /// \brief The parser's options and flags of the module.
 struct RenderOptions {
     Option *input, *output, *material, *hit_elevation, *depth, *png;
-    Option *view, *position, *target, *azimuth, *elevation, *distance, *fov,
+    Flag *plain_png;
+    Option *view, *size, *position, *target, *azimuth, *elevation, *distance, *fov,
         *ortho_height, *zexag;
     Option *light, *ambient, *background, *normals, *kernel, *smooth, *color,
         *rules;

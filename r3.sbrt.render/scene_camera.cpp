@@ -27,8 +27,8 @@ void check_image_fits(int rows, int cols, bool kernel_normals)
     if (memory > 0 && needed > 0.8 * memory)
         G_fatal_error(_("An image of %d x %d pixels needs about %.1f GB of memory "
                         "for its rays and outputs%s; this machine has %.1f GB. "
-                        "Set fewer rows and columns (g.region rows= cols=) and "
-                        "render the view in parts, or use a larger machine."),
+                        "Render a smaller image (size=, or for view=top g.region "
+                        "rows= cols=) or use a larger machine."),
                       cols, rows, needed / 1e9,
                       kernel_normals ? _(" with normals=kernel") : "", memory / 1e9);
 }
@@ -36,10 +36,12 @@ void check_image_fits(int rows, int cols, bool kernel_normals)
 sbrt::Camera make_camera(const RenderRequest &r, const sbrt::Tracer &tracer,
                          const struct Cell_head &region)
 {
+    if (r.view.kind != sbrt::ViewKind::top) {
+        check_image_fits(r.height, r.width, r.normals == sbrt::Normals::kernel);
+        return sbrt::view_camera(r.view, tracer, r.height, r.width);
+    }
     const int rows = region.rows, cols = region.cols;
     check_image_fits(rows, cols, r.normals == sbrt::Normals::kernel);
-    if (r.view.kind != sbrt::ViewKind::top)
-        return sbrt::view_camera(r.view, tracer, rows, cols);
     // georeferenced: one ray down through the centre of each region cell
     const sbrt::Frame &f = tracer.model().frame();
     if (!(region.west < f.east && region.east > f.west && region.south < f.north &&

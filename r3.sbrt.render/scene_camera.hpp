@@ -15,7 +15,8 @@
 /// kernel's window at its largest, the whole image; with a margin).
 void check_image_fits(int rows, int cols, bool kernel_normals);
 
-/// Camera for an image of the current region's rows x cols.
+/// Camera of the request: size= pixels, or for view=top one pixel per
+/// cell of the current region.
 sbrt::Camera make_camera(const RenderRequest &request,
                          const sbrt::Tracer &tracer,
                          const struct Cell_head &region);

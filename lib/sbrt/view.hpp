@@ -9,6 +9,7 @@
 #define SBRT_VIEW_HPP
 
 #include <optional>
+#include <vector>
 
 #include "camera.hpp"
 #include "tracer.hpp"
@@ -30,12 +31,22 @@ struct View {
     std::optional<double> ortho_height; ///< none: the model's diameter
 };
 
-/// Smallest distance along `offset` (unit, from `target` towards the
-/// camera) at which the eight corners of the model's box lie inside 95 %
-/// of an image of `aspect` (width / height) with vertical field `fov`.
-double framing_distance(const Tracer &tracer, glm::dvec3 target, glm::dvec3 offset,
-                        double fov, double aspect);
+/// Corners of the boxes over up to 8 x 8 blocks of the grid, each from the
+/// model's bottom to the highest top in its block (exaggerated): a hull of
+/// the model, tighter than its box where the terrain is not flat.
+std::vector<glm::dvec3> framing_hull(const Tracer &tracer);
 
+/// Smallest distance along `offset` (unit, from `target` towards the
+/// camera) at which `points` lie inside 95 % of an image of `aspect`
+/// (width / height) with vertical field `fov`.
+double framing_distance(const std::vector<glm::dvec3> &points, glm::dvec3 target,
+                        glm::dvec3 offset, double fov, double aspect);
+
+/// The camera of `view` (not ViewKind::top) for a rows x cols image. Unless
+/// position= is given, the model fills the image: without target= the
+/// camera looks at the centre of the model's image (not of its box), the
+/// distance (or an orthographic view's height) makes the hull reach 95 %
+/// of the image on its tighter side.
 /// The camera of `view` (not ViewKind::top) for a rows x cols image.
 Camera view_camera(const View &view, const Tracer &tracer, int rows, int cols);
 

@@ -5,7 +5,9 @@
  *            (section facing the camera, translucent strata, borehole logs)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <array>
 #include <cmath>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -20,40 +22,133 @@ using namespace sbrt;
 
 namespace {
 
-/// Largest |x| and |y| of the model's corners in normalised device
-/// coordinates; false where one is behind the camera.
-bool corner_extent(const Tracer &t, const Camera &camera, double &x_max, double &y_max)
+/// Extent of the model's framing hull in normalised device coordinates:
+/// x_low, x_high, y_low, y_high; false where a point is behind the camera.
+bool hull_extent(const Tracer &t, const Camera &camera, double e[4])
 {
-    x_max = y_max = 0;
-    for (int k = 0; k < 8; ++k) {
+    e[0] = e[2] = 1e9;
+    e[1] = e[3] = -1e9;
+    for (const glm::dvec3 &p : framing_hull(t)) {
         double x, y;
-        if (!camera.project(t.corner(k), x, y))
+        if (!camera.project(p, x, y))
             return false;
-        x_max = std::max(x_max, std::fabs(x));
-        y_max = std::max(y_max, std::fabs(y));
+        e[0] = std::min(e[0], x);
+        e[1] = std::max(e[1], x);
+        e[2] = std::min(e[2], y);
+        e[3] = std::max(e[3], y);
     }
     return true;
 }
 
+/// Rows and columns of the image's border (`margin` of its size) where
+/// the traced model shows: [top, bottom, left, right] counts of hits.
+std::array<int, 4> hits_near_edges(const Tracer &t, const Camera &c, double margin)
+{
+    std::array<int, 4> near{0, 0, 0, 0};
+    const int mr = std::max(1, int(margin * c.rows())), mc = std::max(1, int(margin * c.cols()));
+    for (int r = 0; r < c.rows(); ++r)
+        for (int col = 0; col < c.cols(); ++col) {
+            if (!t.trace(c.ray(r, col)).is_hit())
+                continue;
+            near[0] += r < mr;
+            near[1] += r >= c.rows() - mr;
+            near[2] += col < mc;
+            near[3] += col >= c.cols() - mc;
+        }
+    return near;
+}
+
 } // namespace
 
-TEST(View, DefaultDistanceFramesTheWholeModelTightly)
+TEST(View, DefaultViewFramesTheModelTightlyAndCentred)
 {
     const Model m = sbrt_test::geology(40, 56, 30);
     const Tracer t(m, 2.0);
-    for (double azimuth : {0.0, 135.0, 225.0, 300.0})
-        for (double elevation : {5.0, 30.0, 70.0})
-            for (const auto &[rows, cols] : {std::pair{480, 640}, {884, 1056}, {600, 300}}) {
+    for (const ViewKind kind : {ViewKind::perspective, ViewKind::orthographic})
+        for (double azimuth : {0.0, 135.0, 225.0, 300.0})
+            for (double elevation : {5.0, 30.0, 70.0})
+                for (const auto &[rows, cols] : {std::pair{480, 640}, {884, 1056}, {600, 300}}) {
+                    View v;
+                    v.kind = kind;
+                    v.azimuth = azimuth;
+                    v.elevation = elevation;
+                    const Camera camera = view_camera(v, t, rows, cols);
+                    double e[4];
+                    ASSERT_TRUE(hull_extent(t, camera, e));
+                    const std::string what = std::to_string(int(kind)) + " " +
+                                             std::to_string(azimuth) + " " +
+                                             std::to_string(elevation) + " " +
+                                             std::to_string(rows) + "x" + std::to_string(cols);
+                    for (double edge : {-e[0], e[1], -e[2], e[3]})
+                        EXPECT_LE(edge, 0.95 + 1e-6) << what;
+                    // centred on both axes; the tighter axis reaches the
+                    // margin on both sides
+                    EXPECT_NEAR(e[0] + e[1], 0, 0.02) << what;
+                    EXPECT_NEAR(e[2] + e[3], 0, 0.02) << what;
+                    EXPECT_GT(std::max(std::min(-e[0], e[1]), std::min(-e[2], e[3])), 0.93)
+                        << what;
+                }
+}
+
+TEST(View, TracedModelFillsTheImageWithoutTouchingItsBorder)
+{
+    // what the rays see, not the hull: nothing cut off, no empty band
+    const Model m = sbrt_test::geology(40, 56, 30);
+    const Tracer t(m, 2.0);
+    for (const ViewKind kind : {ViewKind::perspective, ViewKind::orthographic})
+        for (double azimuth : {45.0, 225.0})
+            for (const auto &[rows, cols] : {std::pair{48, 64}, {64, 32}}) {
                 View v;
+                v.kind = kind;
                 v.azimuth = azimuth;
-                v.elevation = elevation;
-                const Camera camera = view_camera(v, t, rows, cols);
-                double x, y;
-                ASSERT_TRUE(corner_extent(t, camera, x, y));
-                EXPECT_LE(std::max(x, y), 0.95 + 1e-6) << azimuth << " " << elevation << " " << rows << "x" << cols << " x " << x << " y " << y;
-                // tight: the box reaches the frame's margin on one side
-                EXPECT_GT(std::max(x, y), 0.94) << azimuth << " " << elevation;
+                const Camera c = view_camera(v, t, rows, cols);
+                const auto outer = hits_near_edges(t, c, 0.02);
+                EXPECT_EQ(outer, (std::array<int, 4>{0, 0, 0, 0}))
+                    << int(kind) << " " << azimuth << " " << rows << "x" << cols;
+                const auto band = hits_near_edges(t, c, 0.09);
+                // the tighter axis: hits within 9 % of both of its edges
+                const bool vertical = band[0] > 0 && band[1] > 0;
+                const bool horizontal = band[2] > 0 && band[3] > 0;
+                EXPECT_TRUE(vertical || horizontal)
+                    << int(kind) << " " << azimuth << " " << rows << "x" << cols << " "
+                    << band[0] << " " << band[1] << " " << band[2] << " " << band[3];
             }
+}
+
+TEST(View, HullHoldsEveryColumnAndIsTighterThanTheBox)
+{
+    const Model m = sbrt_test::geology(40, 56, 30);
+    const Tracer t(m, 2.0);
+    const std::vector<glm::dvec3> hull = framing_hull(t);
+    ASSERT_EQ(hull.size(), 8u * 8u * 8u);
+    double hull_top_sum = 0;
+    for (const glm::dvec3 &p : hull) {
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_GE(p[k], t.corner(0)[k] - 1e-6);
+            EXPECT_LE(p[k], t.corner(7)[k] + 1e-6);
+        }
+        hull_top_sum += p.z;
+    }
+    // every column's top lies under the hull point above its block
+    const Frame &f = m.frame();
+    for (int row = 0; row < f.rows; ++row)
+        for (int col = 0; col < f.cols; ++col) {
+            const uint64_t cell = m.cell_index(row, col);
+            if (m.stack_size(cell) == 0)
+                continue;
+            const double top =
+                t.exaggerate(t.from_local({0, 0, m.intervals()[m.stack_end(cell) - 1].top})).z;
+            const double x = f.west + (col + 0.5) * f.ew_res(),
+                         y = f.north - (row + 0.5) * f.ns_res();
+            double above = -1e300;
+            for (const glm::dvec3 &p : hull)
+                if (std::fabs(p.x - x) <= f.ew_res() * f.cols / 8.0 &&
+                    std::fabs(p.y - y) <= f.ns_res() * f.rows / 8.0)
+                    above = std::max(above, p.z);
+            EXPECT_GE(above, top - 1e-6) << row << " " << col;
+        }
+    // the geology model's terrain is not flat: lower on average than the box
+    EXPECT_LT(hull_top_sum / double(hull.size()), (t.corner(0).z + t.corner(7).z) / 2);
 }
 
 TEST(View, AzimuthIsWhereTheCameraLooksFrom)
@@ -63,6 +158,7 @@ TEST(View, AzimuthIsWhereTheCameraLooksFrom)
     View v;
     v.elevation = 20;
     v.distance = 5000;
+    v.target = t.unexaggerate(t.centre());
     v.azimuth = 180; // from the south
     Camera c = view_camera(v, t, 40, 50);
     EXPECT_LT(c.origin().y, t.centre().y);

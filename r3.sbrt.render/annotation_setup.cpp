@@ -1,0 +1,72 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   What the PNG of a request is annotated with
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "annotation_setup.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "shading.hpp"
+
+namespace {
+
+/// Where north points on the image at the model's centre (x right, y
+/// down), if the camera sees it.
+std::optional<glm::dvec2> north_on_image(const sbrt::Tracer &tracer,
+                                         const sbrt::Camera &camera)
+{
+    // a point ahead of the camera, at the depth of the model's centre
+    const glm::dvec3 ahead = camera.forward();
+    double depth = glm::dot(tracer.centre() - camera.origin(), ahead);
+    if (!(depth > 0))
+        depth = tracer.radius();
+    const glm::dvec3 p = camera.origin() + depth * ahead;
+    const glm::dvec3 q = p + glm::dvec3(0, 0.01 * tracer.radius(), 0);
+    double px, py, qx, qy;
+    if (!camera.project(p, px, py) || !camera.project(q, qx, qy))
+        return std::nullopt;
+    // normalised device coordinates -> pixels (rows grow downwards)
+    const glm::dvec2 d((qx - px) * camera.cols(), -(qy - py) * camera.rows());
+    const double length = glm::length(d);
+    if (!(length > 1e-9))
+        return std::nullopt;
+    return d / length;
+}
+
+} // namespace
+
+PngAnnotations make_annotations(const RenderRequest &request,
+                                const sbrt::Tracer &tracer,
+                                const sbrt::Camera &camera,
+                                const struct Cell_head &region)
+{
+    PngAnnotations a;
+    if (request.png.empty() || !request.annotate)
+        return a;
+    const sbrt::Model &model = tracer.model();
+    const std::string input = request.input;
+    a.title = input.substr(0, input.find('@'));
+    for (size_t i = 1; i < model.materials().size(); ++i) {
+        const sbrt::Material &m = model.materials()[i];
+        a.classes.push_back({m.id, m.label, sbrt::material_color(model, uint32_t(i))});
+    }
+    a.north = north_on_image(tracer, camera);
+    if (request.view.kind != sbrt::ViewKind::top) {
+        a.zexag = request.zexag;
+        return a;
+    }
+    // metres per cell across the middle of the region
+    const double y = (region.north + region.south) / 2;
+    if (G_projection() == PROJECTION_XY) {
+        a.metres_per_pixel = region.ew_res;
+        a.scale_in_metres = false;
+    }
+    else {
+        G_begin_distance_calculations();
+        a.metres_per_pixel = G_distance(region.west, y, region.west + region.ew_res, y);
+    }
+    return a;
+}

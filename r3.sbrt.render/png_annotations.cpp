@@ -1,0 +1,371 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   The PNG of a render with its legend, north arrow, vertical
+ *            exaggeration and scale bar
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "png_annotations.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <cairo.h>
+
+#include "error.hpp"
+#include "model.hpp"
+
+namespace {
+
+/// Sizes in pixels, grown with the image from those of a 480-row one.
+struct Layout {
+    explicit Layout(int rows)
+        : scale(std::clamp(rows / 480.0, 0.6, 4.0)), font(12 * scale),
+          line(1.5 * font), pad(8 * scale), arrow(34 * scale),
+          bar(6 * scale)
+    {
+    }
+    double scale, font, line, pad, arrow, bar;
+};
+
+/// Owns a cairo context drawing on a surface (RAII for both).
+class Canvas {
+public:
+    Canvas(int width, int height)
+        : surface_(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)),
+          cr_(cairo_create(surface_))
+    {
+        if (cairo_status(cr_) != CAIRO_STATUS_SUCCESS)
+            throw sbrt::Error(std::string("cannot draw the PNG's annotations: ") +
+                              cairo_status_to_string(cairo_status(cr_)));
+        cairo_select_font_face(cr_, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                               CAIRO_FONT_WEIGHT_NORMAL);
+    }
+    ~Canvas()
+    {
+        cairo_destroy(cr_);
+        cairo_surface_destroy(surface_);
+    }
+    Canvas(const Canvas &) = delete;
+    Canvas &operator=(const Canvas &) = delete;
+
+    cairo_t *cr() const { return cr_; }
+    /// Pixel rows of the surface (xRGB words) <-> packed rgb rows.
+    void load(const uint8_t *rgb, int rows, int cols)
+    {
+        cairo_surface_flush(surface_);
+        for (int r = 0; r < rows; ++r) {
+            uint32_t *px = row(r);
+            for (int c = 0; c < cols; ++c, rgb += 3)
+                px[c] = uint32_t(rgb[0]) << 16 | uint32_t(rgb[1]) << 8 | rgb[2];
+        }
+        cairo_surface_mark_dirty(surface_);
+    }
+    void store(uint8_t *rgb, int rows, int cols)
+    {
+        cairo_surface_flush(surface_);
+        for (int r = 0; r < rows; ++r) {
+            const uint32_t *px = row(r);
+            for (int c = 0; c < cols; ++c, rgb += 3) {
+                rgb[0] = uint8_t(px[c] >> 16);
+                rgb[1] = uint8_t(px[c] >> 8);
+                rgb[2] = uint8_t(px[c]);
+            }
+        }
+    }
+
+private:
+    uint32_t *row(int r) const
+    {
+        return reinterpret_cast<uint32_t *>(cairo_image_surface_get_data(surface_) +
+                                            size_t(r) *
+                                                cairo_image_surface_get_stride(surface_));
+    }
+    cairo_surface_t *surface_;
+    cairo_t *cr_;
+};
+
+double text_width(cairo_t *cr, const std::string &text)
+{
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, text.c_str(), &extents);
+    return extents.x_advance;
+}
+
+std::string legend_text(const LegendClass &c)
+{
+    return c.label.empty() ? "class " + std::to_string(c.id) : c.label;
+}
+
+/// An arrow of length l.arrow centred on (x, y) pointing along `north`
+/// (image directions, unit), an N beyond its tip.
+void draw_north_arrow(cairo_t *cr, const Layout &l, glm::dvec2 north, double x, double y)
+{
+    const glm::dvec2 d = north, n(-north.y, north.x);
+    const glm::dvec2 c(x, y), tip = c + 0.5 * l.arrow * d, tail = c - 0.5 * l.arrow * d;
+    const double half = 0.3 * l.arrow;
+    const glm::dvec2 left = tail + half * n, right = tail - half * n,
+                     notch = c - 0.2 * l.arrow * d;
+    // one half filled, the whole outlined: readable in black and white
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_move_to(cr, tip.x, tip.y);
+    cairo_line_to(cr, left.x, left.y);
+    cairo_line_to(cr, notch.x, notch.y);
+    cairo_close_path(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_fill(cr);
+    cairo_move_to(cr, tip.x, tip.y);
+    cairo_line_to(cr, left.x, left.y);
+    cairo_line_to(cr, notch.x, notch.y);
+    cairo_line_to(cr, right.x, right.y);
+    cairo_close_path(cr);
+    cairo_set_line_width(cr, 1.2 * l.scale);
+    cairo_stroke(cr);
+
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                           CAIRO_FONT_WEIGHT_BOLD);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, "N", &e);
+    const glm::dvec2 at = tip + (0.8 * l.font) * d;
+    cairo_move_to(cr, at.x - e.x_bearing - e.width / 2, at.y - e.y_bearing - e.height / 2);
+    cairo_show_text(cr, "N");
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                           CAIRO_FONT_WEIGHT_NORMAL);
+}
+
+/// A "nice" length (1, 2 or 5 times a power of ten) of at most `most`.
+double nice_length(double most)
+{
+    const double ten = std::pow(10.0, std::floor(std::log10(most)));
+    for (double m : {5.0, 2.0, 1.0})
+        if (m * ten <= most)
+            return m * ten;
+    return ten;
+}
+
+std::string length_text(double metres, bool in_metres)
+{
+    char text[32];
+    if (!in_metres)
+        std::snprintf(text, sizeof text, "%g map units", metres);
+    else if (metres >= 1000)
+        std::snprintf(text, sizeof text, "%g km", metres / 1000);
+    else
+        std::snprintf(text, sizeof text, "%g m", metres);
+    return text;
+}
+
+/// A bar of four black and white parts, its bottom-left corner at (x,
+/// bottom), with its length below; `length` pixels.
+void draw_scale_bar(cairo_t *cr, const Layout &l, double length, const std::string &text,
+                    double x, double bottom)
+{
+    const double left = std::round(x), top = std::round(bottom - l.line - l.bar);
+    for (int part = 0; part < 4; ++part) {
+        cairo_rectangle(cr, left + part * length / 4, top, length / 4, l.bar);
+        const double shade = part % 2 ? 1 : 0;
+        cairo_set_source_rgb(cr, shade, shade, shade);
+        cairo_fill(cr);
+    }
+    cairo_rectangle(cr, left, top, length, l.bar);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1);
+    cairo_stroke(cr);
+    cairo_move_to(cr, left, bottom - 0.4 * l.font);
+    cairo_show_text(cr, ("0 - " + text).c_str());
+}
+
+/// The panel's contents, measured before it is drawn.
+struct Panel {
+    Panel(cairo_t *cr, const Layout &l, const PngAnnotations &a,
+          std::vector<const LegendClass *> shown, int cols, int rows)
+        : shown(std::move(shown))
+    {
+        cairo_set_font_size(cr, l.font);
+        if (a.zexag) {
+            char text[64];
+            std::snprintf(text, sizeof text, "Vertical exaggeration %g\u00d7", *a.zexag);
+            zexag = text;
+        }
+        if (a.metres_per_pixel) {
+            // a nice length of at most a quarter of the image, 120 pt
+            const double most =
+                std::min(0.25 * cols, 120 * l.scale) * *a.metres_per_pixel;
+            const double metres = nice_length(most);
+            scale_text = length_text(metres, a.scale_in_metres);
+            scale_length = std::round(metres / *a.metres_per_pixel);
+        }
+        double bottom = l.pad;
+        if (a.north)
+            bottom += l.arrow + 2 * l.font + l.pad;
+        if (!zexag.empty())
+            bottom += l.line;
+        if (!scale_text.empty())
+            bottom += l.line + l.bar + l.pad;
+        bottom_height = bottom;
+        // the title, the classes that fit, a line saying how many more
+        const int lines = int(std::floor((rows - bottom_height - 2 * l.pad) / l.line));
+        if (lines < 2 || this->shown.empty())
+            this->shown.clear();
+        else if (int(this->shown.size()) + 1 > lines) {
+            more = this->shown.size() - size_t(lines - 2);
+            this->shown.resize(size_t(lines - 2));
+        }
+        double w = std::max({text_width(cr, zexag),
+                             text_width(cr, "0 - " + scale_text), scale_length,
+                             l.arrow + 2 * l.font});
+        for (const LegendClass *c : this->shown)
+            w = std::max(w, l.font + l.pad + text_width(cr, legend_text(*c)));
+        if (more)
+            w = std::max(w, text_width(cr, more_text()));
+        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                               CAIRO_FONT_WEIGHT_BOLD);
+        if (!this->shown.empty())
+            w = std::max(w, text_width(cr, a.title));
+        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                               CAIRO_FONT_WEIGHT_NORMAL);
+        width = int(std::ceil(w + 2 * l.pad));
+    }
+    std::string more_text() const { return "+ " + std::to_string(more) + " more"; }
+
+    std::vector<const LegendClass *> shown;
+    size_t more = 0;
+    std::string zexag, scale_text;
+    double scale_length = 0, bottom_height = 0;
+    int width = 0;
+};
+
+void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Panel &p,
+                int rows)
+{
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
+    cairo_set_line_width(cr, 1);
+    cairo_move_to(cr, 0.5, 0);
+    cairo_line_to(cr, 0.5, rows);
+    cairo_stroke(cr);
+    cairo_set_font_size(cr, l.font);
+
+    // legend from the top; baselines 0.3 font above a line's bottom
+    const double x = l.pad;
+    double y = l.pad + l.line - 0.3 * l.font;
+    if (!p.shown.empty()) {
+        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                               CAIRO_FONT_WEIGHT_BOLD);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_move_to(cr, x, y);
+        cairo_show_text(cr, a.title.c_str());
+        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                               CAIRO_FONT_WEIGHT_NORMAL);
+    }
+    for (const LegendClass *c : p.shown) {
+        y += l.line;
+        const double swatch = std::round(l.font);
+        cairo_rectangle(cr, std::round(x) + 0.5, std::round(y - 0.9 * l.font) + 0.5, swatch,
+                        swatch);
+        cairo_set_source_rgb(cr, c->color[0] / 255.0, c->color[1] / 255.0,
+                             c->color[2] / 255.0);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        cairo_stroke(cr);
+        cairo_move_to(cr, x + l.font + l.pad, y);
+        cairo_show_text(cr, legend_text(*c).c_str());
+    }
+    if (p.more) {
+        y += l.line;
+        cairo_move_to(cr, x, y);
+        cairo_show_text(cr, p.more_text().c_str());
+    }
+
+    // from the bottom up: scale bar, exaggeration, north arrow
+    double bottom = rows - l.pad;
+    if (!p.scale_text.empty()) {
+        draw_scale_bar(cr, l, p.scale_length, p.scale_text, x, bottom);
+        bottom -= l.line + l.bar + l.pad;
+    }
+    if (!p.zexag.empty()) {
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_move_to(cr, x, bottom - 0.3 * l.font);
+        cairo_show_text(cr, p.zexag.c_str());
+        bottom -= l.line;
+    }
+    if (a.north)
+        draw_north_arrow(cr, l, *a.north, x + l.font + l.arrow / 2,
+                         bottom - l.pad - l.font - l.arrow / 2);
+}
+
+} // namespace
+
+AnnotatedPng::AnnotatedPng(const std::string &path, int rows, int cols,
+                           PngAnnotations annotations)
+    : path_(path), rows_(rows), cols_(cols), annotations_(std::move(annotations)),
+      seen_(annotations_.classes.size(), false)
+{
+    if (!annotated()) {
+        png_.emplace(path, rows, cols);
+        return;
+    }
+    // fail now, not after the render, where the file cannot be written
+    sbrt::PngFile(path, 1, 1);
+    image_.resize(size_t(rows) * size_t(cols) * 3);
+    for (size_t i = 0; i < annotations_.classes.size(); ++i)
+        class_index_.emplace(annotations_.classes[i].id, i);
+}
+
+void AnnotatedPng::count_classes(const sbrt::Band &band)
+{
+    if (!needs_classes())
+        return;
+    if (band.material.size() != band.pixels())
+        throw sbrt::Error("the PNG's legend needs the class of each pixel");
+    int32_t last = sbrt::NULL_CLASS;
+    for (const int32_t id : band.material) {
+        if (id == last || id == sbrt::NULL_CLASS)
+            continue;
+        last = id;
+        const auto found = class_index_.find(id);
+        if (found != class_index_.end())
+            seen_[found->second] = true;
+    }
+}
+
+void AnnotatedPng::write(const sbrt::Band &band)
+{
+    if (png_) {
+        png_->write_rows(band.rgb.data(), band.rows);
+        return;
+    }
+    count_classes(band);
+    std::copy(band.rgb.begin(), band.rgb.end(),
+              image_.begin() + long(size_t(band.first_row) * size_t(cols_) * 3));
+}
+
+void AnnotatedPng::finish()
+{
+    if (png_) {
+        png_->finish();
+        return;
+    }
+    const Layout l(rows_);
+    std::vector<const LegendClass *> shown;
+    for (size_t i = 0; i < seen_.size(); ++i)
+        if (seen_[i])
+            shown.push_back(&annotations_.classes[i]);
+    const Panel panel(Canvas(1, 1).cr(), l, annotations_, std::move(shown), cols_, rows_);
+    Canvas canvas(panel.width, rows_);
+    draw_panel(canvas.cr(), l, annotations_, panel, rows_);
+    std::vector<uint8_t> side(size_t(panel.width) * size_t(rows_) * 3);
+    canvas.store(side.data(), rows_, panel.width);
+
+    const int width = cols_ + panel.width;
+    sbrt::PngFile png(path_, rows_, width);
+    std::vector<uint8_t> row(size_t(width) * 3);
+    const size_t image_row = size_t(cols_) * 3, side_row = size_t(panel.width) * 3;
+    for (int r = 0; r < rows_; ++r) {
+        std::copy_n(image_.data() + size_t(r) * image_row, image_row, row.data());
+        std::copy_n(side.data() + size_t(r) * side_row, side_row, row.data() + image_row);
+        png.write_rows(row.data(), 1);
+    }
+    png.finish();
+}
