@@ -4,11 +4,18 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
-#include <thread>
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -16,6 +23,8 @@
 #include "format.hpp"
 #include "test_support.hpp"
 #include "voxel_builder.hpp"
+
+extern char **environ;
 
 using namespace sbrt;
 
@@ -53,33 +62,180 @@ TEST(AtomicWrite, CommitReplacesAWholeDirectory)
     remove_tree(dir.substr(0, dir.rfind('/')));
 }
 
-TEST(AtomicWrite, SigkillAtAnyMomentLeavesOldOrNewReadable)
+namespace {
+
+/// Set in the environment of the writer process the kill test starts.
+constexpr const char *WRITER_ENV = "SBRT_TEST_ATOMIC_WRITER";
+
+/// The writer process: this test binary exec'ed with WRITER_ENV =
+/// "seed size history_bytes directory", run here before main() and before
+/// any thread, writes model_with_seed(seed, size) to `directory` under the
+/// file size limit its parent set (RLIMIT_FSIZE survives exec). The first
+/// write past the limit raises SIGXFSZ, turned into SIGKILL: the process
+/// dies at exactly that byte of that file, nothing of it cleaned up.
+void run_writer(const char *spec)
+{
+    unsigned seed = 0;
+    int size = 0;
+    size_t history = 0;
+    int at = 0;
+    if (std::sscanf(spec, "%u %d %zu %n", &seed, &size, &history, &at) != 3)
+        _exit(2);
+    std::signal(SIGXFSZ, [](int) { kill(getpid(), SIGKILL); });
+    try {
+        write_sbrt(spec + at, model_with_seed(seed, size), std::string(history, 'h'));
+    }
+    catch (...) {
+        _exit(3);
+    }
+    _exit(0);
+}
+
+/// Where this process is such a writer, it writes and exits here.
+const bool writer_checked = [] {
+    if (const char *spec = std::getenv(WRITER_ENV))
+        run_writer(spec);
+    return true;
+}();
+
+/// Writes model_with_seed(seed, size) to `dir` with a history of
+/// `history` bytes in a fresh process that may write `limit` bytes into any
+/// one file; returns its pid, `status` its wait status. Between fork and
+/// exec the child calls only async-signal-safe functions: this process may
+/// hold GL threads from other tests.
+pid_t write_in_child(const std::string &dir, unsigned seed, int size, size_t history,
+                     rlim_t limit, int &status)
+{
+    std::string spec = std::string(WRITER_ENV) + "=" + std::to_string(seed) + " " +
+                       std::to_string(size) + " " + std::to_string(history) + " " + dir;
+    std::vector<char *> env;
+    for (char **e = environ; *e; ++e)
+        if (std::string(*e).rfind(std::string(WRITER_ENV) + "=", 0) != 0)
+            env.push_back(*e);
+    env.push_back(spec.data());
+    env.push_back(nullptr);
+    rlimit fsize;
+    if (getrlimit(RLIMIT_FSIZE, &fsize) == 0 && fsize.rlim_max != RLIM_INFINITY)
+        limit = std::min(limit, fsize.rlim_max);
+    fsize.rlim_cur = fsize.rlim_max = limit;
+    char name[] = "sbrt_unit_tests";
+    char *argv[] = {name, nullptr};
+    const pid_t child = fork();
+    if (child == 0) {
+        if (setrlimit(RLIMIT_FSIZE, &fsize) == 0)
+            execve("/proc/self/exe", argv, env.data());
+        _exit(127);
+    }
+    status = -1;
+    if (child > 0)
+        waitpid(child, &status, 0);
+    return child;
+}
+
+std::set<std::string> entries(const std::string &dir)
+{
+    std::set<std::string> names;
+    for (const auto &e : std::filesystem::directory_iterator(dir))
+        names.insert(e.path().filename().string());
+    return names;
+}
+
+std::string file_text(const std::string &path)
+{
+    const std::vector<uint8_t> bytes = read_file_bytes(path);
+    return std::string(bytes.begin(), bytes.end());
+}
+
+/// The files of an SBRT directory, name -> content.
+std::vector<std::pair<std::string, std::string>> snapshot(const std::string &dir)
+{
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string &name : entries(dir))
+        files.emplace_back(name, file_text(dir + "/" + name));
+    return files;
+}
+
+} // namespace
+
+TEST(AtomicWrite, KilledMidWriteLeavesNoTargetOrTheWholeOldOne)
 {
     const std::string parent = sbrt_test::temp_dir("kill");
     const std::string dir = parent + "/m";
-    const Model old_model = model_with_seed(3, 8);
-    const Model new_model = model_with_seed(4, 120);
-    const auto old_bytes = encode_stacks(old_model);
-    const auto new_bytes = encode_stacks(new_model);
-    write_sbrt(dir, old_model, "old\n");
-    int saw_new = 0;
-    // kills from 0.3 ms on; where no write got through (a slow machine, a
-    // sanitizer build), on with doubling delays up to seconds
-    for (int trial = 0; trial < 24 || (saw_new == 0 && trial < 36); ++trial) {
-        const pid_t child = fork();
-        ASSERT_GE(child, 0);
-        if (child == 0) {
-            for (;;)
-                write_sbrt(dir, trial % 2 ? new_model : old_model, "x\n");
-        }
-        const long delay_us = trial < 24 ? 300 + trial * 997 : 25000L << ((trial - 24) / 2);
-        std::this_thread::sleep_for(std::chrono::microseconds(delay_us));
-        kill(child, SIGKILL);
-        waitpid(child, nullptr, 0);
-        const auto got = encode_stacks(read_sbrt(dir));
-        EXPECT_TRUE(got == old_bytes || got == new_bytes) << "trial " << trial;
-        saw_new += got == new_bytes;
+    const unsigned new_seed = 4;
+    const int new_size = 8;
+    const Model new_model = model_with_seed(new_seed, new_size);
+    const std::string stacks = [&] {
+        const auto bytes = encode_stacks(new_model);
+        return std::string(bytes.begin(), bytes.end());
+    }();
+    const size_t history = 3 * stacks.size();
+    // stacks, header, cats, hist are written in this order: under a limit
+    // below the size of stacks the kill lands in stacks; from it on, in
+    // hist, the last file before the commit, once header and cats are whole
+    ASSERT_LT(encode_header(new_model).size(), stacks.size());
+    ASSERT_LT(encode_cats(new_model).size(), stacks.size());
+    const size_t n = stacks.size();
+    const std::vector<size_t> in_stacks = {0, 1, STACKS_HEADER_SIZE - 1, STACKS_HEADER_SIZE,
+                                           n / 2, n - 1};
+    const std::vector<size_t> in_hist = {n, n + 1, history / 2, history - 1};
+
+    // a write that runs to its end: the new SBRT and no temporary left
+    // (the control: the writer process does write)
+    int status = 0;
+    write_in_child(dir, new_seed, new_size, history, RLIM_INFINITY, status);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
+    EXPECT_EQ(entries(parent), std::set<std::string>{"m"});
+    EXPECT_EQ(file_text(dir + "/stacks"), stacks);
+    EXPECT_EQ(file_text(dir + "/hist"), std::string(history, 'h'));
+    remove_tree(dir);
+
+    for (const bool had_old : {false, true}) {
+        if (had_old)
+            write_sbrt(dir, model_with_seed(3, 6), "old\n");
+        const auto old_files = had_old ? snapshot(dir) : decltype(snapshot(dir)){};
+        for (const bool hist_killed : {false, true})
+            for (const size_t limit : hist_killed ? in_hist : in_stacks) {
+                const std::string what = std::string(had_old ? "over an old SBRT" : "new") +
+                                         ", killed at byte " + std::to_string(limit) +
+                                         (hist_killed ? " of hist" : " of stacks");
+                const pid_t child =
+                    write_in_child(dir, new_seed, new_size, history, limit, status);
+                ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL)
+                    << what << ": status " << status;
+                // the destination: absent, or the whole old one
+                std::set<std::string> names = entries(parent);
+                if (!had_old)
+                    EXPECT_FALSE(std::filesystem::exists(dir)) << what;
+                else {
+                    ASSERT_EQ(names.erase("m"), 1u) << what;
+                    EXPECT_EQ(snapshot(dir), old_files) << what;
+                    EXPECT_EQ(encode_stacks(read_sbrt(dir)),
+                              encode_stacks(model_with_seed(3, 6)))
+                        << what;
+                }
+                // what is left: one hidden sibling of the killed process,
+                // which listings skip, holding the write up to the kill
+                ASSERT_EQ(names.size(), 1u) << what;
+                const std::string temp = *names.begin();
+                EXPECT_EQ(temp[0], '.') << what << ": " << temp;
+                EXPECT_NE(temp.find(std::to_string(child)), std::string::npos) << temp;
+                const std::string written = parent + "/" + temp;
+                if (hist_killed) {
+                    EXPECT_EQ(file_text(written + "/stacks"), stacks) << what;
+                    EXPECT_EQ(file_text(written + "/hist"), std::string(limit, 'h')) << what;
+                }
+                else {
+                    EXPECT_EQ(file_text(written + "/stacks"), stacks.substr(0, limit))
+                        << what;
+                    EXPECT_FALSE(std::filesystem::exists(written + "/header")) << what;
+                }
+                // the library never removes another process's temporary
+                remove_tree(written);
+            }
     }
-    EXPECT_GT(saw_new, 0); // the writes did get through sometimes
+    // and a later write replaces the old SBRT whole
+    write_sbrt(dir, new_model, "new\n");
+    EXPECT_EQ(file_text(dir + "/stacks"), stacks);
+    EXPECT_EQ(entries(parent), std::set<std::string>{"m"});
     remove_tree(parent);
 }
