@@ -13,12 +13,13 @@
 #include "convert.hpp"
 #include "error.hpp"
 #include "grass.hpp"
+#include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 
 namespace {
 
 struct Options {
-    Option *input, *output, *horizons, *materials, *bottom, *rules;
+    Option *input, *sbrt, *output, *horizons, *materials, *bottom, *rules;
     Flag *reverse, *print, *shell, *list;
 };
 
@@ -28,7 +29,18 @@ Options define_options()
     o.input = G_define_standard_option(G_OPT_R3_INPUT);
     o.input->required = NO;
     o.input->description =
-        _("3D raster map to convert (with -r, or -p/-g without output: SBRT)");
+        _("3D raster map to convert (with -r, or -p/-g without output: an "
+          "SBRT, as sbrt=)");
+
+    o.sbrt = G_define_option();
+    o.sbrt->key = "sbrt";
+    o.sbrt->type = TYPE_STRING;
+    o.sbrt->key_desc = "name";
+    o.sbrt->required = NO;
+    o.sbrt->gisprompt = "old,sbrt,sbrt";
+    o.sbrt->description =
+        _("Existing SBRT to expand into the 3D raster output= (-r) or to "
+          "describe (-p, -g)");
 
     o.output = G_define_option();
     o.output->key = "output";
@@ -90,7 +102,8 @@ Options define_options()
     o.list->guisection = _("Print");
     o.list->suppress_required = YES;
 
-    G_option_exclusive(o.input, o.horizons, NULL);
+    G_option_exclusive(o.input, o.horizons, o.sbrt, NULL);
+    G_option_excludes(o.sbrt, o.rules, NULL);
     G_option_requires(o.materials, o.horizons, NULL);
     G_option_requires(o.horizons, o.materials, NULL);
     G_option_requires(o.bottom, o.horizons, NULL);
@@ -143,20 +156,27 @@ void run(const Options &o)
     const char *input = o.input->answer;
     const char *output = o.output->answer;
     const bool overwrite = G_check_overwrite(0, nullptr);
+    // an existing SBRT: sbrt= (the dialogs' drop-down), or input= as before
+    const char *sbrt = o.sbrt->answer ? o.sbrt->answer : input;
 
     if (o.reverse->answer) {
-        if (!input || !output)
-            G_fatal_error(_("-r needs input= (an SBRT) and output= (a new 3D "
+        if (!sbrt || !output)
+            G_fatal_error(_("-r needs sbrt= (an SBRT) and output= (a new 3D "
                             "raster map)"));
         sbrt_grass::check_new_raster3d(output, overwrite);
-        sbrt_to_voxels(input, output);
+        sbrt_to_voxels(sbrt, output);
         return;
     }
+    if (o.sbrt->answer && output)
+        G_fatal_error(_("sbrt=%s is an existing SBRT: with output= add -r to "
+                        "expand it into a 3D raster map, or give input= (a 3D "
+                        "raster map) to convert"),
+                      o.sbrt->answer);
     if (!output) {
-        if (!input || !report)
+        if (!sbrt || !report)
             G_fatal_error(_("Nothing to do: give output= to convert, or -p/-g "
-                            "with an SBRT as input= to describe it"));
-        print_report(input, sbrt_grass::read_sbrt_map(input), o.shell->answer);
+                            "with sbrt= to describe an SBRT"));
+        print_report(sbrt, sbrt_grass::read_sbrt_map(sbrt), o.shell->answer);
         return;
     }
     // checked before the work, written after it
@@ -195,6 +215,7 @@ int main(int argc, char *argv[])
         _("Converts 3D raster maps or stacked horizons to a stack-based "
           "representation of terrains (SBRT) and back.");
     const Options options = define_options();
+    sbrt_grass::offer_sbrts_in_dialog(options.sbrt, argc, argv);
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
     Rast3d_init_defaults();

@@ -23,6 +23,7 @@
 #include "raster_output.hpp"
 #include "scene_pruning.hpp"
 #include "render_options.hpp"
+#include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "scene_camera.hpp"
 #include "scene_setup.hpp"
@@ -148,6 +149,7 @@ int main(int argc, char *argv[])
         _("Renders a stack-based terrain model (SBRT) with an exact ray "
           "caster into raster maps.");
     const RenderOptions options = define_render_options();
+    sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
     const RenderRequest request = read_render_options(options);

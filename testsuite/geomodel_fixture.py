@@ -25,3 +25,12 @@ def set_up_t_model(case):
     for z in range(1, T_DEPTHS + 1):
         expr = f"if(isnull(sl_{z:05d}), {expr}, sl_{z:05d})"
     case.runModule("r.mapcalc", expression=f"top_class = int({expr})")
+
+
+def image_region(case, cols, rows):
+    """Sets the region to the raster window of a cols x rows image of a
+    perspective or orthographic view (square cells; r3.sbrt.render centres
+    the image in the region), so its maps are read cell for cell; returns
+    the size= of that image."""
+    case.runModule("g.region", n=rows, s=0, e=cols, w=0, res=1)
+    return (cols, rows)

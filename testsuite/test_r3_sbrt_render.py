@@ -12,7 +12,7 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-from geomodel_fixture import T_DEPTHS, set_up_t_model
+from geomodel_fixture import T_DEPTHS, image_region, set_up_t_model
 
 
 class TestRenderTopView(TestCase):
@@ -53,9 +53,9 @@ class TestRenderTopView(TestCase):
         self.assertIn("13 150:200:90", gs.read_command("r.colors.out", map="lab_mat"))
 
     def test_perspective_outputs(self):
-        self.runModule("g.region", rows=60, cols=80)
+        size = image_region(self, 80, 60)
         self.assertModule(
-            "r3.sbrt.render", input="geo", output="persp", depth="persp_d",
+            "r3.sbrt.render", size=size, input="geo", output="persp", depth="persp_d",
             material="persp_m", background="30:60:90", light=[315, 45], ambient=0.35,
         )
         # the image against the class colours of the source 3D raster (the
@@ -127,10 +127,10 @@ class TestRenderTopView(TestCase):
 
     def test_gl_backends_agree_with_cpu(self):
         """EGL and OSMesa (llvmpipe here) against the exact CPU tracer."""
-        self.runModule("g.region", rows=90, cols=120)
+        size = image_region(self, 120, 90)
         # twice the model's height: below its diagonal (3265 m), so the
         # depth tolerance 1e-4 * size is stricter than the issue's
-        size = 2 * 640.0
+        extent = 2 * 640.0
         backends = ["egl"]
         if os.path.exists("/usr/include/GL/osmesa.h"):  # built in (lib/gl_config.make)
             backends.append("osmesa")
@@ -142,14 +142,14 @@ class TestRenderTopView(TestCase):
         ]
         for backend in backends:
             for view in views:
-                self.render_pair(backend, **view)
+                self.render_pair(backend, size=size, **view)
                 # agree: both miss, or the same material at the same depth
                 self.runModule(
                     "r.mapcalc", overwrite=True,
                     expression=f"disagree = if(isnull(cpu_mat) && isnull({backend}_mat), 0, "
                     f"if(isnull(cpu_mat) || isnull({backend}_mat), 1, "
                     f"cpu_mat != {backend}_mat || "
-                    f"abs(cpu_dep - {backend}_dep) >= {1e-4 * size}))",
+                    f"abs(cpu_dep - {backend}_dep) >= {1e-4 * extent}))",
                 )
                 cells = 90 * 120
                 disagree = gs.parse_command("r.univar", map="disagree", flags="g")
@@ -160,21 +160,21 @@ class TestRenderTopView(TestCase):
 
     def test_texture_layout_gives_the_same_maps(self):
         """layout=textures (1-Textures) against layout=ssbo and the CPU."""
-        self.runModule("g.region", rows=70, cols=90)
+        size = image_region(self, 90, 70)
         view = dict(azimuth=100, elevation=25)
         for layout in ("ssbo", "textures"):
             self.assertModule(
-                "r3.sbrt.render", input="geo", output=f"lay_{layout}",
+                "r3.sbrt.render", size=size, input="geo", output=f"lay_{layout}",
                 material=f"lay_{layout}_m", depth=f"lay_{layout}_d", backend="egl",
                 layout=layout, overwrite=True, **view,
             )
-        self.render_pair("egl", **view)
+        self.render_pair("egl", size=size, **view)
         self.assertEqual(self.differing_cells("lay_ssbo_m", "lay_textures_m"), 0)
         self.assertRastersNoDifference("lay_ssbo_d", "lay_textures_d", precision=0)
         self.assertLessEqual(self.differing_cells("cpu_mat", "lay_textures_m"),
                              70 * 90 // 1000)
         run = subprocess.run(
-            ["r3.sbrt.render", "input=geo", "output=lay_v", "backend=egl",
+            ["r3.sbrt.render", "size=%d,%d" % size, "input=geo", "output=lay_v", "backend=egl",
              "layout=textures", "--overwrite", "--verbose"],
             capture_output=True, text=True, check=True,
         )
@@ -191,7 +191,7 @@ class TestRenderTopView(TestCase):
     def test_verbose_names_backend_and_renderer(self):
         for backend, name in (("egl", "Backend: egl"), ("cpu", "Backend: cpu")):
             run = subprocess.run(
-                ["r3.sbrt.render", "input=geo", "output=vb", f"backend={backend}",
+                ["r3.sbrt.render", "input=geo", "output=vb", f"backend={backend}", "size=40,30",
                  "--overwrite", "--verbose"],
                 capture_output=True, text=True, check=True,
             )
@@ -202,13 +202,13 @@ class TestRenderTopView(TestCase):
 
     def test_skipping_keeps_the_image_and_reports_what_it_skipped(self):
         # a close view of one corner, strata hidden, a plane: much to skip
-        self.runModule("g.region", rows=60, cols=80)
+        size = image_region(self, 80, 60)
         view = dict(input="geo", position=(-300, -300, 900), target=(500, 600, 200),
                     fov=30, hide="13", plane=(1000, 1250, 300, 1, 0, 0), backend="cpu")
         text = {k: ",".join(map(str, v)) if isinstance(v, tuple) else v
                 for k, v in view.items()}
         run = subprocess.run(
-            ["r3.sbrt.render", "output=sk", "material=sk_m", "depth=sk_d",
+            ["r3.sbrt.render", "size=%d,%d" % size, "output=sk", "material=sk_m", "depth=sk_d",
              "--overwrite", "--verbose"] + [f"{k}={v}" for k, v in text.items()],
             capture_output=True, text=True, check=True,
         )
@@ -218,7 +218,7 @@ class TestRenderTopView(TestCase):
         # the CPU never reads what no ray reaches: only the GPU path prunes
         self.assertNotIn("Skipped, out of the view:", run.stderr)
         gl = subprocess.run(
-            ["r3.sbrt.render", "output=skg", "material=skg_m", "--overwrite",
+            ["r3.sbrt.render", "size=%d,%d" % size, "output=skg", "material=skg_m", "--overwrite",
              "--verbose"] + [f"{k}={v}" for k, v in text.items() if k != "backend"]
             + ["backend=egl"],
             capture_output=True, text=True, check=True,
@@ -231,7 +231,7 @@ class TestRenderTopView(TestCase):
         differ = gs.parse_command("r.univar", map="skg_diff", flags="g")
         # float32 on the GPU: a few pixels on edges may differ
         self.assertLess(float(differ["sum"]), 0.01 * float(differ["n"]))
-        self.assertModule("r3.sbrt.render", flags="e", output="ns", material="ns_m",
+        self.assertModule("r3.sbrt.render", size=size, flags="e", output="ns", material="ns_m",
                           depth="ns_d", overwrite=True, **view)
         hits = int(gs.parse_command("r.univar", map="sk_m", flags="g")["n"])
         self.assertGreater(hits, 600)
@@ -247,7 +247,7 @@ class TestRenderTopView(TestCase):
         # glvnd without any EGL vendor: EGL cannot work at all
         env = dict(os.environ, __EGL_VENDOR_LIBRARY_FILENAMES="/nonexistent.json")
         run = subprocess.run(
-            ["r3.sbrt.render", "input=geo", "output=noegl", "backend=egl"],
+            ["r3.sbrt.render", "input=geo", "output=noegl", "backend=egl", "size=40,30"],
             capture_output=True, text=True, env=env,
         )
         self.assertNotEqual(run.returncode, 0)
@@ -256,22 +256,22 @@ class TestRenderTopView(TestCase):
         self.assertRasterDoesNotExist("noegl.red")
         # auto falls back and still renders
         run = subprocess.run(
-            ["r3.sbrt.render", "input=geo", "output=noegl", "backend=auto"],
+            ["r3.sbrt.render", "input=geo", "output=noegl", "backend=auto", "size=40,30"],
             capture_output=True, text=True, env=env,
         )
         self.assertEqual(run.returncode, 0, msg=run.stderr)
         self.assertRasterExists("noegl.red")
 
     def test_kernel_normals_shade_but_keep_materials(self):
-        self.runModule("g.region", rows=60, cols=80)
-        self.assertModule("r3.sbrt.render", input="geo", output="nf", material="nf_m")
+        size = image_region(self, 80, 60)
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="nf", material="nf_m")
         self.assertModule(
-            "r3.sbrt.render", input="geo", output="nk", material="nk_m",
+            "r3.sbrt.render", size=size, input="geo", output="nk", material="nk_m",
             normals="kernel", kernel=7, smooth=1.5,
         )
         self.assertEqual(self.differing_cells("nf_m", "nk_m"), 0)
         self.assertGreater(self.differing_cells("nf.red", "nk.red"), 100)
-        self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
+        self.assertModuleFail("r3.sbrt.render", size=size, input="geo", output="bad",
                               normals="kernel", kernel=4)
         self.runModule("g.region", region="geo_region")
 
@@ -351,13 +351,13 @@ class TestRenderTopView(TestCase):
                               section=[10, 10, 10, 10])
 
     def test_section_removes_the_side_facing_the_camera(self):
-        self.runModule("g.region", rows=60, cols=80)
-        self.assertModule("r3.sbrt.render", input="geo", output="whole", depth="whole_d")
+        size = image_region(self, 80, 60)
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="whole", depth="whole_d")
         # a north-south section 200 m east of the west edge, seen from the
         # south-west (default camera): the west part is removed, so what is
         # seen lies farther away on average
         self.assertModule(
-            "r3.sbrt.render", input="geo", output="cut", depth="cut_d",
+            "r3.sbrt.render", size=size, input="geo", output="cut", depth="cut_d",
             section=[200, 0, 200, 500],
         )
         whole = gs.parse_command("r.univar", map="whole_d", flags="g")
@@ -366,11 +366,11 @@ class TestRenderTopView(TestCase):
         self.runModule("g.region", region="geo_region")
 
     def test_maps_are_lz4_unless_grass_compressor_says_otherwise(self):
-        self.runModule("g.region", rows=30, cols=40)
+        size = image_region(self, 40, 30)
         env = {k: v for k, v in os.environ.items() if k != "GRASS_COMPRESSOR"}
-        subprocess.run(["r3.sbrt.render", "input=geo", "output=lz", "material=lz_m",
+        subprocess.run(["r3.sbrt.render", "size=%d,%d" % size, "input=geo", "output=lz", "material=lz_m",
                         "--overwrite", "--quiet"], env=env, check=True)
-        subprocess.run(["r3.sbrt.render", "input=geo", "output=zs", "--overwrite",
+        subprocess.run(["r3.sbrt.render", "size=%d,%d" % size, "input=geo", "output=zs", "--overwrite",
                         "--quiet"], env=dict(env, GRASS_COMPRESSOR="ZSTD"), check=True)
         for name, method in (("lz.red", "LZ4"), ("lz_m", "LZ4"), ("zs.red", "ZSTD")):
             line = gs.read_command("r.compress", map=name, flags="g").strip()
@@ -382,9 +382,11 @@ class TestRenderTopView(TestCase):
     def test_png_file_holds_the_image(self):
         from PIL import Image
 
-        self.runModule("g.region", rows=30, cols=40)
+        size = image_region(self, 40, 30)
         png = gs.tempfile() + ".png"
-        self.assertModule("r3.sbrt.render", input="geo", output="pn", png=png)
+        # -n: the image alone (annotated PNGs: test_r3_sbrt_grass_native.py)
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="pn", png=png,
+                          flags="n")
         self.assertFalse(os.path.exists(png + ".tmp"))
         with Image.open(png) as image:
             self.assertEqual(image.format, "PNG")
@@ -415,16 +417,14 @@ class TestRenderTopView(TestCase):
     def test_image_too_large_for_memory_is_a_clear_error(self):
         # streamed, an image needs two bands of memory; kernel normals may
         # read the whole image: 200,000 x 200,000 pixels would need some 5 TB
-        self.runModule("g.region", rows=200000, cols=200000)
         run = subprocess.run(
             ["r3.sbrt.render", "input=geo", "output=huge", "backend=cpu",
-             "normals=kernel"],
+             "normals=kernel", "size=200000,200000"],
             capture_output=True, text=True,
         )
-        self.runModule("g.region", region="geo_region")
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("200000 x 200000 pixels needs about", run.stderr)
-        self.assertIn("g.region rows= cols=", run.stderr)
+        self.assertIn("size=", run.stderr)
         self.assertRasterDoesNotExist("huge.red")
 
     def test_missing_and_corrupt_sbrt_fail(self):

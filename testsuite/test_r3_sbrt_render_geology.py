@@ -13,7 +13,7 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-from geomodel_fixture import set_up_t_model
+from geomodel_fixture import image_region, set_up_t_model
 
 # the T model: 40 x 50 cells of 50 m, 64 voxels of 10 m from 0 to 640 m
 DEPTHS, TB, RES = 64, 10.0, 50.0
@@ -47,8 +47,9 @@ class TestGeologicalOperations(TestCase):
                 values[k].append(None if v == "*" else int(float(v)))
         cls.xsec = values
         # the image region: one pixel per cell east-west, one per voxel
-        cls.runModule("g.region", n=Y0 + 10, s=Y0 - 10, w=0, e=2000, rows=DEPTHS,
-                      cols=40)
+        # (square cells: the image's own window)
+        cls.runModule("g.region", n=Y0 + 25 * DEPTHS, s=Y0 - 25 * DEPTHS, w=0, e=2000,
+                      rows=DEPTHS, cols=40)
         cls.runModule("g.region", save="xs_region", overwrite=True)
         cls.runModule("g.region", region="geo_region")
 
@@ -65,6 +66,7 @@ class TestGeologicalOperations(TestCase):
         self.runModule("g.region", region="xs_region")
         self.assertModule(
             "r3.sbrt.render", input="geo", view="orthographic", zexag=ZEXAG,
+            size=(40, DEPTHS),
             position=[1000, Y0 - 5000, 320], target=[1000, Y0, 320],
             ortho_height=DEPTHS * TB * ZEXAG, overwrite=True, **options,
         )
@@ -161,15 +163,15 @@ class TestGeologicalOperations(TestCase):
         )
 
     def test_opacity_composes_exactly_with_hide(self):
-        self.runModule("g.region", rows=60, cols=80)
-        self.assertModule("r3.sbrt.render", input="geo", output="op0", material="op0_m",
+        size = image_region(self, 80, 60)
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="op0", material="op0_m",
                           opacity="13:0")
-        self.assertModule("r3.sbrt.render", input="geo", output="hd", material="hd_m",
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="hd", material="hd_m",
                           hide="13")
-        self.assertModule("r3.sbrt.render", input="geo", output="op1", material="op1_m",
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="op1", material="op1_m",
                           opacity="13:1")
-        self.assertModule("r3.sbrt.render", input="geo", output="pl", material="pl_m")
-        self.assertModule("r3.sbrt.render", input="geo", output="oph", material="oph_m",
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="pl", material="pl_m")
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="oph", material="oph_m",
                           opacity="13:0.5")
         for band in ("red", "green", "blue"):
             # alpha 0 draws nothing, alpha 1 is opaque
@@ -179,16 +181,16 @@ class TestGeologicalOperations(TestCase):
         self.assertRastersNoDifference("oph_m", "hd_m", precision=0)
         self.assertGreater(self.count("oph.red != hd.red"), 100)
         # the GPU composes the same light
-        self.assertModule("r3.sbrt.render", input="geo", output="opg", backend="egl",
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="opg", backend="egl",
                           opacity=["13:0.5", "12:0.3"], opacity_length=20)
-        self.assertModule("r3.sbrt.render", input="geo", output="opc", backend="cpu",
+        self.assertModule("r3.sbrt.render", size=size, input="geo", output="opc", backend="cpu",
                           opacity=["13:0.5", "12:0.3"], opacity_length=20)
         self.assertLessEqual(
             self.count("abs(opg.red - opc.red) > 2 || abs(opg.green - opc.green) > 2"),
             60 * 80 // 1000,
         )
         for bad in ("13:1.5", "13", "nosuch:0.5", ":0.5"):
-            self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
+            self.assertModuleFail("r3.sbrt.render", size=size, input="geo", output="bad",
                                   opacity=bad)
 
     def test_drape_puts_the_texture_on_the_terrain(self):

@@ -1,0 +1,47 @@
+/****************************************************************************
+ * MODULE:    lib/grass_sbrt (r3.sbrt addon)
+ * PURPOSE:   An option naming an existing SBRT offered as a drop-down list
+ *            in the modules' GUI dialogs
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "sbrt_choices.hpp"
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "sbrt_store.hpp"
+
+namespace sbrt_grass {
+
+void offer_sbrts_in_dialog(Option *option, int argc, char *argv[])
+{
+    bool describing = false;
+    for (int i = 1; i < argc; ++i)
+        describing = describing || std::strcmp(argv[i], "--interface-description") == 0;
+    if (!describing)
+        return;
+    option->gisprompt = nullptr;
+    // name@mapset of each, and before them the plain names the search path
+    // finds unambiguously: the dialog's list, and also what pygrass (and so
+    // gunittest) checks a value against, which must take input=geo
+    const std::vector<std::string> qualified = list_sbrts();
+    std::vector<std::string> names;
+    for (const std::string &q : qualified) {
+        const std::string plain = q.substr(0, q.find('@'));
+        size_t same = 0;
+        for (const std::string &other : qualified)
+            same += other.compare(0, other.find('@'), plain) == 0;
+        if (same == 1)
+            names.push_back(plain);
+    }
+    names.insert(names.end(), qualified.begin(), qualified.end());
+    if (names.empty())
+        return; // a text field
+    std::string values;
+    for (const std::string &name : names)
+        values += (values.empty() ? "" : ",") + name;
+    option->options = G_store(values.c_str());
+}
+
+} // namespace sbrt_grass
