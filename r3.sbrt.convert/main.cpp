@@ -86,7 +86,8 @@ Options define_options()
     o.reverse = G_define_flag();
     o.reverse->key = 'r';
     o.reverse->description =
-        _("Reverse: expand the SBRT input= into the 3D raster map output=");
+        _("Reverse: expand the SBRT sbrt= (or input=) into the 3D raster map "
+          "output=");
     o.print = G_define_flag();
     o.print->key = 'p';
     o.print->description =

@@ -48,13 +48,14 @@ ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &windo
     : request_(request), cols_(window.cols), cells_(size_t(window.cols)),
       dcells_(size_t(window.cols))
 {
-    struct Cell_head output_window = window;
-    Rast_set_output_window(&output_window);
     // Measured on B, 1056 x 884 (three RGB maps): LZ4 writes in 100 ms of
     // render against 125 with GRASS's default ZSTD, for 444 KB against 326
     // KB; an image is rendered again more often than it is stored for long.
-    // The user's GRASS_COMPRESSOR stays in force.
+    // The user's GRASS_COMPRESSOR stays in force. (Before the raster
+    // library's first call, which reads it.)
     setenv("GRASS_COMPRESSOR", "LZ4", 0);
+    struct Cell_head output_window = window;
+    Rast_set_output_window(&output_window);
     composite_ = std::make_unique<RgbComposite>(request.output, window.rows, cols_);
     for (const char *band : {"red", "green", "blue"})
         rgb_.push_back(open(request.output + "." + band, CELL_TYPE));

@@ -23,10 +23,9 @@ make_geology_inputs
 # the views from the south-west, 1056 x 884 pixels, vertical exaggeration 2:
 # the paper's Figure 12 (full model, strata hidden, drape, boreholes with
 # strata hidden, cross section), a fence diagram and the logged wells alone
-g.region rows=884 cols=1056
 for entry in "\${GEOLOGY_VIEWS[@]}"; do
     image=\${entry%%|*}
-    r3.sbrt.render --q --o input=geology output=\$image zexag=2 light=300,50 \\
+    r3.sbrt.render --q --o input=geology output=\$image size=1056,884 zexag=2 light=300,50 \\
         normals=kernel kernel=7 smooth=1 png="$out/r3_sbrt_demo_\$image.png" \${entry#*|}
 done
 # the geological map: a top view in the model's own grid, and its legend

@@ -29,7 +29,7 @@ run() { # backend view-options... -> "best_trace_ms wall_s" (best of 3)
     local best="" wall=""
     for i in 1 2 3; do
         /usr/bin/time -f "%e" -o /tmp/r3sbrt_gtime r3.sbrt.render --o --verbose \
-            input=$map output=g_$backend zexag=2 backend=$backend "$@" 2>/tmp/r3sbrt_glog >/dev/null
+            input=$map output=g_$backend zexag=2 size=1056,884 backend=$backend "$@" 2>/tmp/r3sbrt_glog >/dev/null
         ms=$(sed -n 's/.*tracing: .* rays in \([0-9.]*\) ms.*/\1/p' /tmp/r3sbrt_glog)
         if [ -z "$best" ] || awk -v a="$ms" -v b="$best" 'BEGIN{exit !(a<b)}'; then
             best=$ms; wall=$(cat /tmp/r3sbrt_gtime)

@@ -47,7 +47,7 @@ g.region --q raster_3d=geo_$s
 g.region --q rows=884 cols=1056
 for flag in "" -e; do
     for i in 1 2 3; do
-        /usr/bin/time -f "%e" -o $P/render.time r3.sbrt.render \$flag --o --v input=geo_$s output=ours_$s \
+        /usr/bin/time -f "%e" -o $P/render.time r3.sbrt.render \$flag --o --v input=geo_$s output=ours_$s size=1056,884 \
             position=4375,5000,2500 target=1000,1250,320 fov=25 zexag=2 2>$P/render.log
         echo "run flag=\${flag:-none} wall=\$(cat $P/render.time) render_ms=\$(sed -n 's/.*tracing: .* rays in \([0-9.]*\) ms.*/\1/p' $P/render.log)"
     done

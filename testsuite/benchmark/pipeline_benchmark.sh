@@ -41,6 +41,7 @@ set -euo pipefail
 size=$1 tools=$2 bench=$3 repeat=$4 camera=$5
 . "$tools/bench_model.sh"
 bench_model "$size" "$tools" # sets map= and sbrt=
+image=1056,884 # size= of the module's renders
 loc=$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)
 cores=$(nproc)
 # in process
@@ -53,7 +54,7 @@ one() { # label env... -- options...
     while [ "$1" != "--" ]; do envs+=("$1"); shift; done
     shift
     env "${envs[@]}" /usr/bin/time -f "%e %M" -o /tmp/r3sbrt_pipe_time r3.sbrt.render --o --verbose \
-        input=$map output=pipe_img "$@" 2>/tmp/r3sbrt_pipe_log >/dev/null
+        input=$map output=pipe_img size="$image" "$@" 2>/tmp/r3sbrt_pipe_log >/dev/null
     read -r wall rss </tmp/r3sbrt_pipe_time
     # the whole streamed render: tracing, shading and the maps
     ms=$(tr '\n' ' ' </tmp/r3sbrt_pipe_log | sed -n 's/.*held; \([0-9.]*\) ms in all.*/\1/p')
@@ -79,7 +80,7 @@ best rgb_egl A=1 -- backend=egl $camera
 egl_ms=$(sed -n 's/.*GPU tracing: .* rays in \([0-9.]*\) ms.*/\1/p' /tmp/r3sbrt_pipe_log)
 echo "pipeline size=$size scene=rgb_egl dispatch_ms=$egl_ms"
 for c in LZ4 ZSTD; do
-    GRASS_COMPRESSOR=$c r3.sbrt.render --o --q input=$map output=pipe_$c backend=cpu $camera
+    GRASS_COMPRESSOR=$c r3.sbrt.render --o --q input=$map output=pipe_$c size=1056,884 backend=cpu $camera
     bytes=$(du -cb "$loc/$(g.gisenv get=MAPSET)"/cell/pipe_$c.* | tail -1 | cut -f1)
     echo "pipeline size=$size compressor=$c rgb_map_bytes=$bytes"
 done
@@ -93,10 +94,10 @@ floor() { # best of 3 wall of a command
     echo "$b"
 }
 echo "pipeline size=$size floor r_info_s=$(floor r.info -g map=pipe_LZ4.red) render_help_s=$(floor r3.sbrt.render --help)"
-g.region --q rows=3456 cols=4096
+image=4096,3456
 # shellcheck disable=SC2086
 best big_4096x3456 A=1 -- backend=cpu $camera
-g.region --q rows=884 cols=1056
+image=1056,884
 echo "pipeline size=$size cores=$cores"
 EOS
 for s in $sizes; do

@@ -61,7 +61,7 @@ module() { # label options...
     local best_wall="" best_ms=""
     for i in 1 2 3; do
         /usr/bin/time -f "%e" -o /tmp/r3sbrt_speed_time r3.sbrt.render --o --verbose \
-            input=$map output=speed_img backend=cpu "$@" 2>/tmp/r3sbrt_speed_log >/dev/null
+            input=$map output=speed_img size=1056,884 backend=cpu "$@" 2>/tmp/r3sbrt_speed_log >/dev/null
         local wall ms
         wall=$(cat /tmp/r3sbrt_speed_time)
         ms=$(sed -n 's/.*tracing: .* rays in \([0-9.]*\) ms.*/\1/p' /tmp/r3sbrt_speed_log)
