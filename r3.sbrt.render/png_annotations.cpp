@@ -98,29 +98,24 @@ std::string legend_text(const LegendClass &c)
 }
 
 /// An arrow of length l.arrow centred on (x, y) pointing along `north`
-/// (image directions, unit), an N beyond its tip.
+/// (image directions, unit): a shaft and a head, an N beyond its tip.
 void draw_north_arrow(cairo_t *cr, const Layout &l, glm::dvec2 north, double x, double y)
 {
     const glm::dvec2 d = north, n(-north.y, north.x);
     const glm::dvec2 c(x, y), tip = c + 0.5 * l.arrow * d, tail = c - 0.5 * l.arrow * d;
-    const double half = 0.3 * l.arrow;
-    const glm::dvec2 left = tail + half * n, right = tail - half * n,
-                     notch = c - 0.2 * l.arrow * d;
-    // one half filled, the whole outlined: readable in black and white
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_move_to(cr, tip.x, tip.y);
-    cairo_line_to(cr, left.x, left.y);
-    cairo_line_to(cr, notch.x, notch.y);
-    cairo_close_path(cr);
+    const glm::dvec2 base = tip - 0.4 * l.arrow * d;
+    const glm::dvec2 left = base + 0.22 * l.arrow * n, right = base - 0.22 * l.arrow * n;
     cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_fill(cr);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_width(cr, 2 * l.scale);
+    cairo_move_to(cr, tail.x, tail.y);
+    cairo_line_to(cr, base.x, base.y);
+    cairo_stroke(cr);
     cairo_move_to(cr, tip.x, tip.y);
     cairo_line_to(cr, left.x, left.y);
-    cairo_line_to(cr, notch.x, notch.y);
     cairo_line_to(cr, right.x, right.y);
     cairo_close_path(cr);
-    cairo_set_line_width(cr, 1.2 * l.scale);
-    cairo_stroke(cr);
+    cairo_fill(cr);
 
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                            CAIRO_FONT_WEIGHT_BOLD);
