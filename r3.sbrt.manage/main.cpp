@@ -11,6 +11,7 @@
 
 #include "error.hpp"
 #include "manage.hpp"
+#include "sbrt_choices.hpp"
 
 namespace {
 
@@ -28,7 +29,8 @@ Option *define_pair_option(const char *key, const char *key_desc,
     o->type = TYPE_STRING;
     o->key_desc = key_desc;
     o->required = NO;
-    o->gisprompt = "old,sbrt,sbrt";
+    // no gisprompt: GRASS 8.2's dialogs have no picker for an element of
+    // their own ("Not selectable element"); a text field takes the pairs
     o->description = description;
     return o;
 }
@@ -118,6 +120,8 @@ int main(int argc, char *argv[])
     // offers --overwrite in the usage, as g.copy and g.rename do
     module->overwrite = 1;
     const Options options = define_options();
+    // in the dialog: a check box for each SBRT of the current mapset
+    sbrt_grass::offer_own_sbrts_in_dialog(options.remove, argc, argv);
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
     try {

@@ -63,6 +63,11 @@ class TestGrassNative(TestCase):
                                       f"geology@{mapset}"], msg=module)
             # no gisprompt: the GUI would show "Not selectable element"
             self.assertIsNone(param.find("gisprompt"), msg=module)
+        # remove= of r3.sbrt.manage: the current mapset's SBRTs, plain names
+        param = self.interface("r3.sbrt.manage").find("parameter[@name='remove']")
+        values = [v.findtext("name").strip() for v in param.iter("value")]
+        self.assertEqual(values, ["geo", "geology"])
+        self.assertIsNone(param.find("gisprompt"))
         # the manual (--html-description) lists none of this location's maps
         run = subprocess.run(["r3.sbrt.render", "--html-description"],
                              capture_output=True, text=True, check=True)

@@ -14,14 +14,49 @@
 
 namespace sbrt_grass {
 
-void offer_sbrts_in_dialog(Option *option, int argc, char *argv[])
+namespace {
+
+/// Whether the GUI asks for the interface; if so, `option` loses its
+/// gisprompt.
+bool describing_for_dialog(Option *option, int argc, char *argv[])
 {
     bool describing = false;
     for (int i = 1; i < argc; ++i)
         describing = describing || std::strcmp(argv[i], "--interface-description") == 0;
-    if (!describing)
+    if (describing)
+        option->gisprompt = nullptr;
+    return describing;
+}
+
+/// `names` as the option's values (none: a text field).
+void set_values(Option *option, const std::vector<std::string> &names)
+{
+    if (names.empty())
         return;
-    option->gisprompt = nullptr;
+    std::string values;
+    for (const std::string &name : names)
+        values += (values.empty() ? "" : ",") + name;
+    option->options = G_store(values.c_str());
+}
+
+} // namespace
+
+void offer_own_sbrts_in_dialog(Option *option, int argc, char *argv[])
+{
+    if (!describing_for_dialog(option, argc, argv))
+        return;
+    const std::string here = std::string("@") + G_mapset();
+    std::vector<std::string> names;
+    for (const std::string &q : list_sbrts())
+        if (q.size() > here.size() && q.compare(q.size() - here.size(), here.size(), here) == 0)
+            names.push_back(q.substr(0, q.size() - here.size()));
+    set_values(option, names);
+}
+
+void offer_sbrts_in_dialog(Option *option, int argc, char *argv[])
+{
+    if (!describing_for_dialog(option, argc, argv))
+        return;
     // name@mapset of each, and before them the plain names the search path
     // finds unambiguously: the dialog's list, and also what pygrass (and so
     // gunittest) checks a value against, which must take input=geo
@@ -36,12 +71,7 @@ void offer_sbrts_in_dialog(Option *option, int argc, char *argv[])
             names.push_back(plain);
     }
     names.insert(names.end(), qualified.begin(), qualified.end());
-    if (names.empty())
-        return; // a text field
-    std::string values;
-    for (const std::string &name : names)
-        values += (values.empty() ? "" : ",") + name;
-    option->options = G_store(values.c_str());
+    set_values(option, names);
 }
 
 } // namespace sbrt_grass

@@ -22,6 +22,10 @@ namespace sbrt_grass {
 /// and complete a unique prefix (input=geo becoming geology), where a user
 /// must get the map named or an error.
 void offer_sbrts_in_dialog(Option *option, int argc, char *argv[]);
+/// The same with only the current mapset's SBRTs, by their plain names
+/// (what an option that changes SBRTs, such as remove=, may name; a
+/// multiple option shows a check box for each).
+void offer_own_sbrts_in_dialog(Option *option, int argc, char *argv[]);
 
 } // namespace sbrt_grass
 
