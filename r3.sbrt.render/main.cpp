@@ -9,11 +9,14 @@
 #include <cstdlib>
 #include <new>
 #include <optional>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "annotation_setup.hpp"
 #include "backend.hpp"
+#include "camera_path.hpp"
+#include "frames.hpp"
 #include "borehole_setup.hpp"
 #include "drape.hpp"
 #include "error.hpp"
@@ -75,9 +78,43 @@ sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drap
     return shading;
 }
 
+/// Traces, shades and writes one image of `renderer` seen by `camera`.
+void render_frame(const RenderRequest &request, const sbrt::Renderer &renderer,
+                  const sbrt::Camera &camera, const struct Cell_head &region,
+                  sbrt_gl::GlContext *context)
+{
+    const struct Cell_head window =
+        request.view.kind == sbrt::ViewKind::top
+            ? region
+            : image_window(region, camera.rows(), camera.cols());
+    ImageMaps maps(request, window,
+                   make_annotations(request, renderer.tracer(), camera, region));
+    render_on_backend(request, renderer, camera, maps.outputs(),
+                      [&](const sbrt::Band &band) { maps.write(band); }, context);
+    maps.close(renderer.model());
+}
+
+/// The cameras of frames 1..frames: one view, an orbit, or (a sweep) the
+/// same view each time.
+std::vector<sbrt::Camera> frame_cameras(const RenderRequest &request,
+                                        const sbrt::Tracer &framing,
+                                        const struct Cell_head &region)
+{
+    if (request.frames > 1 && request.path == "orbit") {
+        check_image_fits(request.height, request.width,
+                         request.normals == sbrt::Normals::kernel);
+        return sbrt::orbit_cameras(request.view, framing, request.height, request.width,
+                                   request.frames, request.angle);
+    }
+    return std::vector<sbrt::Camera>(size_t(request.frames),
+                                     make_camera(request, framing, region));
+}
+
 void run(const RenderRequest &request)
 {
-    // 1. the model, its colours, the drape, the camera
+    check_png_pattern(request.png);
+    check_video(request);
+    // 1. the model, its colours, the drape, the cameras
     sbrt::Model model = sbrt_grass::read_sbrt_map(request.input.c_str());
     apply_color_option(request, model);
     std::optional<sbrt::Drape> drape;
@@ -90,10 +127,11 @@ void run(const RenderRequest &request)
     // pyramid for this tracer)
     sbrt::Scene framing;
     framing.skip_empty_space = false;
-    const sbrt::Camera camera =
-        make_camera(request, sbrt::Tracer(model, request.zexag, framing), region);
+    const std::vector<sbrt::Camera> cameras =
+        frame_cameras(request, sbrt::Tracer(model, request.zexag, framing), region);
 
     // 2. the scene: hidden strata, planes, boreholes, fence, translucency
+    // (sections and split logs face the first frame's camera)
     const std::vector<uint32_t> hidden = hidden_materials(request, model);
     // the boreholes need the model as read where strata are hidden
     const sbrt::Model original = hidden.empty() || request.boreholes.empty()
@@ -105,33 +143,58 @@ void run(const RenderRequest &request)
         model = std::move(left);
     }
     sbrt::Scene scene = make_scene(request, hidden.empty() ? model : original,
-                                   model, hidden, camera);
+                                   model, hidden, cameras.front());
 
-    // 3. the backend; on a GPU what no ray of the camera reaches is not
+    // 3. the backend; on a GPU what no ray of a single view reaches is not
     // uploaded (the CPU never reads it anyway)
     const std::unique_ptr<sbrt_gl::GlContext> context = choose_gl_context(
         request, !scene.boreholes.empty() || !scene.fence.empty());
-    if (context && scene.skip_empty_space && scene.draw_model) {
-        sbrt::Pruning pruning =
-            sbrt::prune_for_view(sbrt::Tracer(model, request.zexag, scene), camera);
+    if (context && scene.skip_empty_space && scene.draw_model && request.frames == 1) {
+        sbrt::Pruning pruning = sbrt::prune_for_view(
+            sbrt::Tracer(model, request.zexag, scene), cameras.front());
         report_pruning(pruning, scene.planes.size());
         model = std::move(pruning.model);
     }
 
-    // 4. prepare once, then trace, shade and write band by band
-    const sbrt::Renderer renderer(std::move(model), request.zexag, std::move(scene),
-                                  make_shading(request, drape ? &*drape : nullptr),
-                                  {unsigned(request.threads), true, 0});
-    report_pyramid(renderer.tracer());
-    const struct Cell_head window =
-        request.view.kind == sbrt::ViewKind::top
-            ? region
-            : image_window(region, camera.rows(), camera.cols());
-    ImageMaps maps(request, window,
-                   make_annotations(request, renderer.tracer(), camera, region));
-    render_on_backend(request, renderer, camera, maps.outputs(),
-                      [&](const sbrt::Band &band) { maps.write(band); }, context.get());
-    maps.close(renderer.model());
+    // 4. prepare once (a sweep: once a frame, its plane moved), then
+    // trace, shade and write band by band, frame by frame
+    const sbrt::Shading shading = make_shading(request, drape ? &*drape : nullptr);
+    const sbrt::RenderSettings settings{unsigned(request.threads), true, 0};
+    const bool sweep = request.frames > 1 && request.path == "sweep";
+    std::optional<sbrt::Renderer> renderer;
+    if (!sweep) {
+        renderer.emplace(std::move(model), request.zexag, scene, shading, settings);
+        report_pyramid(renderer->tracer());
+    }
+    int skipped = 0;
+    for (int k = request.first_frame; k <= request.last_frame; ++k) {
+        if (request.frames > 1)
+            G_percent(k - request.first_frame, request.last_frame - request.first_frame + 1,
+                      1);
+        const RenderRequest frame = frame_request(request, k);
+        if (request.frames > 1 && !request.overwrite && frame_finished(frame)) {
+            ++skipped; // a rerun: finished frames stay as they are
+            continue;
+        }
+        if (sweep) {
+            sbrt::Scene swept = scene;
+            // the sweep moves the first plane= (else section=)
+            swept.planes.front() =
+                sbrt::swept_plane(scene.planes.front(), sbrt::Tracer(model, request.zexag),
+                                  k, request.frames);
+            renderer.emplace(model, request.zexag, std::move(swept), shading, settings);
+        }
+        render_frame(frame, *renderer, cameras[size_t(k - 1)], region, context.get());
+    }
+    if (request.frames > 1) {
+        G_percent(1, 1, 1);
+        if (skipped)
+            G_message(_("%d frames were there already and were kept (--overwrite "
+                        "renders them again)"),
+                      skipped);
+    }
+    register_frames(request);
+    assemble_video(request);
 }
 
 } // namespace

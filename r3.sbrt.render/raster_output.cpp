@@ -56,9 +56,11 @@ ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &windo
     setenv("GRASS_COMPRESSOR", "LZ4", 0);
     struct Cell_head output_window = window;
     Rast_set_output_window(&output_window);
-    composite_ = std::make_unique<RgbComposite>(request.output, window.rows, cols_);
-    for (const char *band : {"red", "green", "blue"})
-        rgb_.push_back(open(request.output + "." + band, CELL_TYPE));
+    if (!request.output.empty()) {
+        composite_ = std::make_unique<RgbComposite>(request.output, window.rows, cols_);
+        for (const char *band : {"red", "green", "blue"})
+            rgb_.push_back(open(request.output + "." + band, CELL_TYPE));
+    }
     if (!request.material.empty())
         material_.push_back(open(request.material, CELL_TYPE));
     if (!request.hit_elevation.empty())
@@ -86,8 +88,9 @@ void ImageMaps::write(const sbrt::Band &band)
     const size_t cols = size_t(cols_);
     for (int r = 0; r < band.rows; ++r) {
         const size_t row = size_t(r) * cols;
-        composite_->write_row(band.rgb.data() + row * 3);
-        for (size_t k = 0; k < 3; ++k) {
+        if (composite_)
+            composite_->write_row(band.rgb.data() + row * 3);
+        for (size_t k = 0; k < rgb_.size(); ++k) {
             const uint8_t *rgb = band.rgb.data() + row * 3 + k;
             for (size_t c = 0; c < cols; ++c)
                 cells_[c] = rgb[c * 3];
@@ -123,13 +126,15 @@ void ImageMaps::write(const sbrt::Band &band)
 
 void ImageMaps::close(const sbrt::Model &model)
 {
-    if (!composite_->close())
-        G_verbose_message(_("<%s>: more than %zu red-green pairs; its colours are "
-                            "within 2 levels of the image's (<%s.red>, .green, "
-                            ".blue are exact)"),
-                          composite_->name().c_str(), RgbComposite::MAX_EXACT_RULES,
-                          request_.output.c_str());
-    write_history(composite_->name(), request_);
+    if (composite_) {
+        if (!composite_->close())
+            G_verbose_message(_("<%s>: more than %zu red-green pairs; its colours are "
+                                "within 2 levels of the image's (<%s.red>, .green, "
+                                ".blue are exact)"),
+                              composite_->name().c_str(), RgbComposite::MAX_EXACT_RULES,
+                              request_.output.c_str());
+        write_history(composite_->name(), request_);
+    }
     for (const Map &map : rgb_) {
         Rast_close(map.fd);
         struct Colors colors;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <thread>
 
@@ -105,6 +106,47 @@ double read_double(const Option *o)
     return v;
 }
 
+/// frames=, path=, angle=, range=, strds=, video=, fps=.
+void read_animation_options(const RenderOptions &o, RenderRequest &r)
+{
+    r.frames = std::atoi(o.frames->answer);
+    if (r.frames < 1)
+        G_fatal_error(_("frames=%s: give the number of frames, 1 or more"),
+                      o.frames->answer);
+    r.path = o.path->answer;
+    r.angle = read_double(o.angle);
+    r.first_frame = 1;
+    r.last_frame = r.frames;
+    if (o.range->answer) {
+        int first = 0, last = 0;
+        char end = 0;
+        const int n = std::sscanf(o.range->answer, "%d-%d%c", &first, &last, &end);
+        if (n == 1 && std::sscanf(o.range->answer, "%d%c", &first, &end) == 1)
+            last = first;
+        else if (n != 2)
+            first = 0;
+        if (first < 1 || last < first || last > r.frames)
+            G_fatal_error(_("range=%s: give first-last with 1 <= first <= last <= "
+                            "frames (%d)"),
+                          o.range->answer, r.frames);
+        r.first_frame = first;
+        r.last_frame = last;
+    }
+    r.strds = answer_or(o.strds);
+    r.video = answer_or(o.video);
+    r.fps = read_double(o.fps);
+    if (!(r.fps > 0))
+        G_fatal_error(_("fps= must be positive"));
+    r.overwrite = G_check_overwrite(0, nullptr);
+    if (r.frames == 1 && (!r.strds.empty() || !r.video.empty()))
+        G_fatal_error(_("strds= and video= make a sequence: give frames= (2 or more)"));
+    if (r.frames > 1 && r.path == "orbit" && r.view.kind == sbrt::ViewKind::top)
+        G_fatal_error(_("path=orbit turns the camera; a top view does not turn "
+                        "(view=perspective or orthographic)"));
+    if (r.frames > 1 && r.path == "sweep" && r.planes.empty() && !r.section)
+        G_fatal_error(_("path=sweep moves a clip plane: give plane= or section="));
+}
+
 } // namespace
 
 RenderOptions define_render_options()
@@ -120,8 +162,10 @@ RenderOptions define_render_options()
     o->input->description = _("Name of the SBRT to render (from r3.sbrt.convert)");
 
     o->output = G_define_standard_option(G_OPT_R_BASENAME_OUTPUT);
+    o->output->required = NO;
     o->output->description =
-        _("Basename of the image: <output>.red, <output>.green, <output>.blue");
+        _("The image as the map <output> (its own colours) and <output>.red, "
+          ".green, .blue (frames: <output>_NNNN...); none: png= only");
     o->output->guisection = _("Output");
     o->material = define_map_output(
         "material", _("Raster map of the class of the first opaque hit"));
@@ -318,6 +362,38 @@ RenderOptions define_render_options()
                "slower; for benchmarks)"),
         _("Settings"));
 
+    o->frames = define("frames", TYPE_INTEGER,
+                       _("Number of frames: an animation along path= (maps and "
+                         "PNG files get the frame number, _0001 ...)"),
+                       _("Animation"), "1");
+    o->path = define_choice(
+        "path", _("How the frames move"), _("Animation"), "orbit", "orbit,sweep",
+        _("orbit;The camera turns about the vertical axis through the target, "
+          "counter-clockwise seen from above, by angle= over the frames;"
+          "sweep;The clip plane (plane=, or section=) moves along its normal "
+          "across the model, the camera stays"));
+    o->angle = define("angle", TYPE_DOUBLE,
+                      _("Arc of an orbit, degrees (360: a full turn)"),
+                      _("Animation"), "360");
+    o->range = define("range", TYPE_STRING,
+                      _("Only these frames (first-last), as in the full run: "
+                        "for jobs in parallel"),
+                      _("Animation"));
+    o->range->key_desc = "first-last";
+    o->strds = define_standard(G_OPT_STRDS_OUTPUT, "strds",
+                               _("Space-time raster dataset (relative time) of "
+                                 "the frames' <output>_NNNN maps, for "
+                                 "g.gui.animation"),
+                               _("Animation"));
+    o->video = define_standard(G_OPT_F_OUTPUT, "video",
+                               _("Video file of the frames (.mp4, .webm or .gif; "
+                                 "needs ffmpeg)"),
+                               _("Animation"));
+    o->fps = define("fps", TYPE_DOUBLE, _("Frames per second of video="),
+                    _("Animation"), "12");
+
+    G_option_required(o->output, o->png, NULL);
+    G_option_requires(o->strds, o->output, NULL);
     G_option_exclusive(o->color, o->rules, NULL);
     G_option_requires(o->boreholes_only, o->boreholes, NULL);
     G_option_requires(o->split_logs, o->log_class, NULL);
@@ -331,7 +407,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     const RenderOptions *o = &options;
     RenderRequest r;
     r.input = o->input->answer;
-    r.output = o->output->answer;
+    r.output = answer_or(o->output);
     r.material = answer_or(o->material);
     r.hit_elevation = answer_or(o->hit_elevation);
     r.depth = answer_or(o->depth);
@@ -479,6 +555,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.threads = std::atoi(o->nprocs->answer);
     if (r.threads < 0)
         r.threads = std::max(1, int(std::thread::hardware_concurrency()) + r.threads);
+    read_animation_options(*o, r);
     if (r.view.position && r.view.target && *r.view.position == *r.view.target)
         G_fatal_error(_("position= and target= are the same point: the "
                         "camera has no direction"));

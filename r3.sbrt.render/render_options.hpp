@@ -49,6 +49,14 @@ struct RenderRequest {
     std::string gpu_layout = "ssbo";         ///< layout=: ssbo or textures
     int threads = 0;
     bool walk_every_cell = false;            ///< -e: no empty-space skipping
+    // an animation: frames of a path, those of range= rendered
+    int frames = 1;
+    std::string path = "orbit";              ///< orbit or sweep
+    double angle = 360;                      ///< the orbit's arc, degrees
+    int first_frame = 1, last_frame = 1;     ///< range=
+    std::string strds, video;                ///< outputs of the whole sequence
+    double fps = 12;
+    bool overwrite = false;                  ///< --overwrite: redo finished frames
 };
 
 /// \brief The parser's options and flags of the module.
@@ -65,6 +73,7 @@ struct RenderOptions {
     Flag *boreholes_only, *split_logs;
     Option *texture, *texture_blend;
     Option *backend, *gpu_layout, *nprocs;
+    Option *frames, *path, *angle, *range, *strds, *video, *fps;
     Flag *walk_every_cell;
 };
 

@@ -18,6 +18,7 @@ packages=(
     libpng-dev                       # the PNG file of a render
     python3-pil                      # tests read the PNG back with a real decoder
     libcairo2-dev fonts-dejavu-core  # the PNG's annotations: legend, north arrow, scale bar
+    ffmpeg                           # video= of an animation (and ffprobe in its test)
     jupyter-nbconvert python3-ipykernel python3-nbclient python3-nbformat  # docs/r3_sbrt.ipynb, run by the tests
 )
 missing=()

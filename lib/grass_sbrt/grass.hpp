@@ -12,6 +12,7 @@ extern "C" {
 #include <grass/raster3d.h>
 #include <grass/colors.h>
 #include <grass/glocale.h>
+#include <grass/spawn.h>
 }
 
 #endif

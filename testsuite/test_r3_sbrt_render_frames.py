@@ -1,0 +1,202 @@
+"""
+MODULE:    testsuite/test_r3_sbrt_render_frames.py (r3.sbrt addon)
+PURPOSE:   Animations of r3.sbrt.render: an orbit's frame k against a single
+           render from the turned camera, a range= run against the full
+           run, a sweep's first frame against the uncut model, reruns that
+           keep finished frames, the space-time raster dataset, the video
+           (ffprobe), and clear errors for bad sequences
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import math
+import os
+import shutil
+import subprocess
+
+from grass.gunittest.case import TestCase
+from grass.gunittest.main import test
+import grass.script as gs
+
+from geomodel_fixture import image_region, set_up_t_model
+
+SIZE = (48, 36)
+POSITION = (-900.0, -700.0, 1400.0)
+TARGET = (1000.0, 1250.0, 300.0)
+
+
+def turned(p, axis, degrees):
+    """p turned about the vertical through axis, counter-clockwise from above
+    (the module's arithmetic, so that the camera is the same to the bit)."""
+    a = degrees * math.pi / 180
+    c, s = math.cos(a), math.sin(a)
+    dx, dy = p[0] - axis[0], p[1] - axis[1]
+    return (axis[0] + c * dx - s * dy, axis[1] + s * dx + c * dy, p[2])
+
+
+def point(p):
+    return ",".join(repr(v) for v in p)
+
+
+class TestFrames(TestCase):
+    @classmethod
+    def setUpClass(cls):
+        set_up_t_model(cls)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+
+    def setUp(self):
+        image_region(self, *SIZE)
+        self.dir = gs.tempfile(create=False)
+        os.makedirs(self.dir)
+
+    def render(self, *args, check=True):
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=geo", "size=%d,%d" % SIZE, "backend=cpu", *args],
+            capture_output=True, text=True)
+        if check:
+            self.assertEqual(run.returncode, 0, msg=run.stderr)
+        return run
+
+    def differing(self, a, b):
+        self.runModule("r.mapcalc", overwrite=True,
+                       expression=f"dif = if(isnull({a}) != isnull({b}) || "
+                       f"(!isnull({a}) && {a} != {b}), 1, 0)")
+        return int(float(gs.parse_command("r.univar", map="dif", flags="g")["sum"]))
+
+    def hits(self, name):
+        return int(gs.parse_command("r.univar", map=name, flags="g")["n"])
+
+    def test_orbit_frame_is_the_turned_camera(self):
+        frames = 6
+        self.render("output=orb", "material=orb_m", f"frames={frames}", "zexag=2",
+                    f"position={point(POSITION)}", f"target={point(TARGET)}")
+        for k in (1, 3, 6):
+            single = turned(POSITION, TARGET, (k - 1) * 360 / frames)
+            self.render("output=one", "material=one_m", "zexag=2", "--overwrite",
+                        f"position={point(single)}", f"target={point(TARGET)}")
+            self.assertGreater(self.hits("one_m"), SIZE[0] * SIZE[1] // 5)
+            self.assertEqual(self.differing(f"orb_m_{k:04d}", "one_m"), 0, msg=k)
+        # the frames differ (the camera turns); angle= sets the arc: frame 2
+        # of 2 over 240 degrees is 120 degrees on, as frame 3 of 6 over 360
+        self.assertGreater(self.differing("orb_m_0001", "orb_m_0004"), 100)
+        self.render("output=arc", "material=arc_m", "frames=2", "angle=240",
+                    "zexag=2", f"position={point(POSITION)}", f"target={point(TARGET)}")
+        self.assertEqual(self.differing("arc_m_0002", "orb_m_0003"), 0)
+
+    def test_default_orbit_keeps_the_whole_model_in_every_frame(self):
+        self.render("output=dfl", "material=dfl_m", "frames=8", "zexag=2")
+        for k in range(1, 9):
+            name = f"dfl_m_{k:04d}"
+            # the border rows and columns see background only
+            self.runModule("r.mapcalc", overwrite=True,
+                           expression=f"edge = if((row() == 1 || row() == {SIZE[1]} || "
+                           f"col() == 1 || col() == {SIZE[0]}) && !isnull({name}), 1, 0)")
+            edge = gs.parse_command("r.univar", map="edge", flags="g")
+            self.assertEqual(int(float(edge["sum"])), 0, msg=name)
+            self.assertGreater(self.hits(name), SIZE[0] * SIZE[1] // 5, msg=name)
+
+    def test_range_equals_the_same_frames_of_the_full_run(self):
+        self.render("output=full", "material=full_m", "frames=5", "depth=full_d")
+        self.render("output=part", "material=part_m", "frames=5", "depth=part_d",
+                    "range=2-3")
+        for k in (2, 3):
+            self.assertEqual(self.differing(f"full_m_{k:04d}", f"part_m_{k:04d}"), 0)
+            self.assertRastersNoDifference(f"full_d_{k:04d}", f"part_d_{k:04d}",
+                                           precision=0)
+            self.assertRastersNoDifference(f"full_{k:04d}.red", f"part_{k:04d}.red",
+                                           precision=0)
+        for k in (1, 4, 5):
+            self.assertRasterDoesNotExist(f"part_m_{k:04d}")
+        self.render("output=one1", "material=one1_m", "frames=5", "range=4")
+        self.assertEqual(self.differing("full_m_0004", "one1_m_0004"), 0)
+
+    def test_rerun_keeps_finished_frames(self):
+        png = os.path.join(self.dir, "re_%02d.png")
+        self.render("output=re", f"png={png}", "frames=3")
+        files = [png % k for k in (1, 2, 3)]
+        times = [os.stat(f).st_mtime_ns for f in files]
+        run = self.render("output=re", f"png={png}", "frames=3")
+        self.assertIn("3 frames were there already", run.stderr)
+        self.assertEqual([os.stat(f).st_mtime_ns for f in files], times)
+        # a frame whose PNG is missing (a killed job) is rendered again
+        os.remove(files[1])
+        run = self.render("output=re", f"png={png}", "frames=3")
+        self.assertIn("2 frames were there already", run.stderr)
+        self.assertTrue(os.path.exists(files[1]))
+        self.assertEqual(os.stat(files[0]).st_mtime_ns, times[0])
+        # --overwrite renders them all again
+        self.render("output=re", f"png={png}", "frames=3", "--overwrite")
+        self.assertNotEqual(os.stat(files[2]).st_mtime_ns, times[2])
+        # without a pattern, _NNNN goes before the extension
+        self.render("output=nn", f"png={os.path.join(self.dir, 'nn.png')}", "frames=2")
+        self.assertTrue(os.path.exists(os.path.join(self.dir, "nn_0002.png")))
+
+    def test_sweep_moves_the_plane_across_the_model(self):
+        frames = 4
+        self.render("output=sw", "material=sw_m", f"frames={frames}", "path=sweep",
+                    "plane=0,0,300,1,1,0")
+        self.render("output=whole", "material=whole_m")
+        # frame 1 cuts nothing; each next one cuts more
+        self.assertEqual(self.differing("sw_m_0001", "whole_m"), 0)
+        counts = [self.hits(f"sw_m_{k:04d}") for k in range(1, frames + 1)]
+        self.assertEqual(sorted(counts, reverse=True), counts)
+        self.assertLess(counts[-1], counts[0])
+        self.assertGreater(counts[-1], 0)
+
+    def test_frames_form_a_space_time_dataset(self):
+        self.render("output=ts", "frames=4", "strds=ts_frames", "range=1-2")
+        self.render("output=ts", "frames=4", "strds=ts_frames", "range=3-4")
+        rows = gs.read_command("t.rast.list", input="ts_frames", columns="name,start_time",
+                               flags="u").split()
+        self.assertEqual(rows, [f"ts_{k:04d}|{k - 1}" for k in range(1, 5)])
+        info = gs.parse_command("t.info", input="ts_frames", flags="g")
+        self.assertEqual(info["temporal_type"], "relative")
+
+    def test_video_has_every_frame(self):
+        if not shutil.which("ffprobe"):
+            self.skipTest("no ffmpeg (tools/setup.sh installs it)")
+        png = os.path.join(self.dir, "v_%03d.png")
+        video = os.path.join(self.dir, "orbit.mp4")
+        self.render("output=v", f"png={png}", "frames=6", f"video={video}", "fps=6")
+        count = subprocess.run(
+            ["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
+             "-show_entries", "stream=nb_read_frames", "-of", "csv=p=0", video],
+            capture_output=True, text=True, check=True).stdout.strip()
+        self.assertEqual(count, "6")
+        # a range= job that leaves frames missing makes no video yet
+        os.remove(video)
+        run = self.render("output=v2", f"png={os.path.join(self.dir, 'w_%03d.png')}",
+                          "frames=6", f"video={video}", "range=1-2")
+        self.assertIn("frame 3 is not rendered", run.stderr)
+        self.assertFalse(os.path.exists(video))
+
+    def test_bad_sequences_fail_clearly(self):
+        for args, words in (
+            (["frames=0"], "frames=0"),
+            (["frames=4", "range=3-5"], "range=3-5"),
+            (["frames=4", "range=3-2"], "range=3-2"),
+            (["frames=4", "path=sweep"], "plane= or section="),
+            (["frames=4", "view=top"], "top view does not turn"),
+            (["frames=2", "png=/tmp/a_%d_%d.png"], "one %d"),
+            (["frames=2", "png=/tmp/a.png", "video=/tmp/a.avi"], ".mp4, .webm or .gif"),
+            (["frames=2", "video=/tmp/a.mp4"], "give png="),
+            (["strds=x"], "give frames="),
+        ):
+            run = self.render("output=bad", *args, check=False)
+            self.assertNotEqual(run.returncode, 0, msg=args)
+            self.assertIn(words, run.stderr, msg=args)
+            self.assertRasterDoesNotExist("bad_0001")
+        # video= without ffmpeg on the PATH: said before any frame is made
+        env = dict(os.environ, PATH=os.path.dirname(shutil.which("r3.sbrt.render")))
+        run = subprocess.run(
+            [shutil.which("r3.sbrt.render"), "input=geo", "output=bad", "frames=2",
+             "png=/tmp/b_%d.png", "video=/tmp/b.mp4"],
+            capture_output=True, text=True, env=env)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("needs ffmpeg", run.stderr)
+        self.assertRasterDoesNotExist("bad_0001")
+
+
+if __name__ == "__main__":
+    test()
