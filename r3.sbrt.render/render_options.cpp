@@ -115,6 +115,18 @@ void read_animation_options(const RenderOptions &o, RenderRequest &r)
                       o.frames->answer);
     r.path = o.path->answer;
     r.angle = read_double(o.angle);
+    r.path_map = answer_or(o.path_map);
+    r.keys = answer_or(o.keys);
+    if (o.height->answer)
+        r.line_height = read_double(o.height);
+    if (r.path == "line" && r.path_map.empty())
+        G_fatal_error(_("path=line flies along a vector line: give path_map="));
+    if (r.path == "keys" && r.keys.empty())
+        G_fatal_error(_("path=keys moves through keyframes: give keys= (a file)"));
+    if ((r.path == "line" || r.path == "keys") && r.view.kind == sbrt::ViewKind::top)
+        G_fatal_error(_("path=%s moves the camera; a top view does not move "
+                        "(view=perspective or orthographic)"),
+                      r.path.c_str());
     r.first_frame = 1;
     r.last_frame = r.frames;
     if (o.range->answer) {
@@ -367,14 +379,30 @@ RenderOptions define_render_options()
                          "PNG files get the frame number, _0001 ...)"),
                        _("Animation"), "1");
     o->path = define_choice(
-        "path", _("How the frames move"), _("Animation"), "orbit", "orbit,sweep",
+        "path", _("How the frames move"), _("Animation"), "orbit",
+        "orbit,line,keys,sweep",
         _("orbit;The camera turns about the vertical axis through the target, "
           "counter-clockwise seen from above, by angle= over the frames;"
+          "line;The camera moves along the line of path_map=, evenly by "
+          "length, looking ahead (or at target=);"
+          "keys;The camera moves through the keyframes of keys=, smoothly;"
           "sweep;The clip plane (plane=, or section=) moves along its normal "
           "across the model, the camera stays"));
     o->angle = define("angle", TYPE_DOUBLE,
                       _("Arc of an orbit, degrees (360: a full turn)"),
                       _("Animation"), "360");
+    o->path_map = define_standard(G_OPT_V_INPUT, "path_map",
+                                  _("Vector line map the camera flies along "
+                                    "(path=line; the first line)"),
+                                  _("Animation"));
+    o->height = define("height", TYPE_DOUBLE,
+                       _("path=line: the camera this high above the model's top "
+                         "(default: the line's own z)"),
+                       _("Animation"));
+    o->keys = define_standard(G_OPT_F_INPUT, "keys",
+                              _("path=keys: lines of x y z tx ty tz [fov] (camera "
+                                "position, target, field of view)"),
+                              _("Animation"));
     o->range = define("range", TYPE_STRING,
                       _("Only these frames (first-last), as in the full run: "
                         "for jobs in parallel"),

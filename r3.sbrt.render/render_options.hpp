@@ -51,7 +51,9 @@ struct RenderRequest {
     bool walk_every_cell = false;            ///< -e: no empty-space skipping
     // an animation: frames of a path, those of range= rendered
     int frames = 1;
-    std::string path = "orbit";              ///< orbit or sweep
+    std::string path = "orbit";              ///< orbit, line, keys or sweep
+    std::string path_map, keys;              ///< path=line's lines, path=keys' file
+    std::optional<double> line_height;       ///< path=line: above the model's top
     double angle = 360;                      ///< the orbit's arc, degrees
     int first_frame = 1, last_frame = 1;     ///< range=
     std::string strds, video;                ///< outputs of the whole sequence
@@ -73,7 +75,8 @@ struct RenderOptions {
     Flag *boreholes_only, *split_logs;
     Option *texture, *texture_blend;
     Option *backend, *gpu_layout, *nprocs;
-    Option *frames, *path, *angle, *range, *strds, *video, *fps;
+    Option *frames, *path, *angle, *path_map, *height, *keys, *range, *strds, *video,
+        *fps;
     Flag *walk_every_cell;
 };
 

@@ -212,6 +212,31 @@ BoreholeInput read_boreholes(const RenderRequest &request)
     return in;
 }
 
+std::vector<glm::dvec3> read_path_line(const std::string &name, bool &is_3d)
+{
+    VectorMap vector(name, "-1");
+    is_3d = Vect_is_3d(&vector.map());
+    size_t lines = 0;
+    std::vector<glm::dvec3> line;
+    while (const int type = vector.next()) {
+        if (!(type & GV_LINES))
+            continue;
+        if (lines++ == 0) {
+            const line_pnts &p = vector.points();
+            for (int k = 0; k < p.n_points; ++k)
+                line.push_back({p.x[k], p.y[k], p.z[k]});
+        }
+    }
+    if (line.empty())
+        G_fatal_error(_("path_map=%s has no lines: path=line needs a vector map "
+                        "of lines (v.in.ascii, v.digit)"),
+                      name.c_str());
+    if (lines > 1)
+        G_warning(_("path_map=%s has %zu lines: the camera follows the first"),
+                  name.c_str(), lines);
+    return line;
+}
+
 std::vector<sbrt::FencePanel> read_fence(const std::string &name)
 {
     VectorMap vector(name, "-1");

@@ -40,6 +40,10 @@ struct BoreholeInput {
 /// such points or the logs cannot be read.
 BoreholeInput read_boreholes(const RenderRequest &request);
 
+/// The vertices of the first line of `name` (z 0 where the map is 2D,
+/// `is_3d` says which); a fatal error without lines.
+std::vector<glm::dvec3> read_path_line(const std::string &name, bool &is_3d);
+
 /// The segments of the lines of fence=; a fatal error without lines.
 std::vector<sbrt::FencePanel> read_fence(const std::string &name);
 

@@ -60,8 +60,8 @@ class TestFrames(TestCase):
 
     def differing(self, a, b):
         self.runModule("r.mapcalc", overwrite=True,
-                       expression=f"dif = if(isnull({a}) != isnull({b}) || "
-                       f"(!isnull({a}) && {a} != {b}), 1, 0)")
+                       expression=f"dif = if(isnull({a}) &&& isnull({b}), 0, "
+                       f"if(isnull({a}) ||| isnull({b}), 1, {a} != {b}))")
         return int(float(gs.parse_command("r.univar", map="dif", flags="g")["sum"]))
 
     def hits(self, name):
@@ -171,12 +171,67 @@ class TestFrames(TestCase):
         self.assertIn("frame 3 is not rendered", run.stderr)
         self.assertFalse(os.path.exists(video))
 
+    def test_keys_pass_through_every_keyframe(self):
+        keys = [(-800, -800, 1500, 1000, 1250, 300, 40),
+                (1000, -1500, 1200, 1000, 1250, 300, 35),
+                (2800, -800, 1500, 1000, 1250, 300, 40)]
+        path = os.path.join(self.dir, "keys.txt")
+        with open(path, "w") as f:
+            f.write("# x y z tx ty tz fov\n")
+            for key in keys:
+                f.write(" ".join(str(v) for v in key) + "\n")
+        self.render("output=ky", "material=ky_m", "frames=5", "path=keys", f"keys={path}")
+        for k, key in ((1, keys[0]), (3, keys[1]), (5, keys[2])):
+            self.render("output=one", "material=one_m", "--overwrite",
+                        f"position={point(key[:3])}", f"target={point(key[3:6])}",
+                        f"fov={key[6]}")
+            self.assertEqual(self.differing(f"ky_m_{k:04d}", "one_m"), 0, msg=k)
+        # in between, a view of its own
+        self.assertGreater(self.differing("ky_m_0002", "ky_m_0001"), 50)
+        with open(path, "w") as f:
+            f.write("0 0 1500 1000 1250 300\n")
+        run = self.render("output=bad", "frames=3", "path=keys", f"keys={path}",
+                          check=False)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("at least two", run.stderr)
+
+    def test_line_frames_stand_on_the_line(self):
+        # a 3D line west of the model, towards it, 300 m up
+        self.runModule("v.in.ascii", input="-", output="flight", format="standard",
+                       flags="zn", overwrite=True,
+                       stdin_="L 2\n -1500 1250 300\n -500 1250 300\n")
+        self.render("output=ln", "material=ln_m", "frames=3", "path=line",
+                    "path_map=flight")
+        # frame 2: the middle of the line, looking a step (500 m) east, level
+        self.render("output=one", "material=one_m", "--overwrite",
+                    "position=-1000,1250,300", "target=-500,1250,300")
+        self.assertGreater(self.hits("one_m"), SIZE[0] * SIZE[1] // 10)
+        self.assertEqual(self.differing("ln_m_0002", "one_m"), 0)
+        self.assertGreater(self.differing("ln_m_0001", "ln_m_0003"), 20)
+        # height= over a 2D line: the camera that high above the model's top
+        self.runModule("v.in.ascii", input="-", output="flat", format="standard",
+                       flags="n", overwrite=True, stdin_="L 2\n 100 100\n 1900 2400\n")
+        self.render("output=lh", "material=lh_m", "frames=3", "path=line",
+                    "path_map=flat", "height=300")
+        self.assertGreater(self.hits("lh_m_0001"), SIZE[0] * SIZE[1] // 4)
+        run = self.render("output=bad", "frames=3", "path=line", "path_map=flat",
+                          check=False)
+        self.assertIn("is 2D: give height=", run.stderr)
+        self.runModule("v.in.ascii", input="-", output="spot", format="point",
+                       separator=",", overwrite=True, stdin_="1000,1000\n")
+        run = self.render("output=bad", "frames=3", "path=line", "path_map=spot",
+                          check=False)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("has no lines", run.stderr)
+
     def test_bad_sequences_fail_clearly(self):
         for args, words in (
             (["frames=0"], "frames=0"),
             (["frames=4", "range=3-5"], "range=3-5"),
             (["frames=4", "range=3-2"], "range=3-2"),
             (["frames=4", "path=sweep"], "plane= or section="),
+            (["frames=4", "path=line"], "give path_map="),
+            (["frames=4", "path=keys"], "give keys="),
             (["frames=4", "view=top"], "top view does not turn"),
             (["frames=2", "png=/tmp/a_%d_%d.png"], "one %d"),
             (["frames=2", "png=/tmp/a.png", "video=/tmp/a.avi"], ".mp4, .webm or .gif"),
