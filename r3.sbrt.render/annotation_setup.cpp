@@ -44,7 +44,8 @@ PngAnnotations make_annotations(const RenderRequest &request,
                                 const struct Cell_head &region)
 {
     PngAnnotations a;
-    if (request.png.empty() || !request.annotate)
+    // a tile's PNG is plain: tiles mosaic to the whole image
+    if (request.png.empty() || !request.annotate || request.tile)
         return a;
     const sbrt::Model &model = tracer.model();
     const std::string input = request.input;

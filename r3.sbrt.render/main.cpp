@@ -85,10 +85,20 @@ void render_frame(const RenderRequest &request, const sbrt::Renderer &renderer,
                   const sbrt::Camera &camera, const struct Cell_head &region,
                   sbrt_gl::GlContext *context)
 {
-    const struct Cell_head window =
+    struct Cell_head window =
         request.view.kind == sbrt::ViewKind::top
             ? region
-            : image_window(region, camera.rows(), camera.cols());
+            : image_window(region, request.height, request.width);
+    if (request.tile) {
+        // the tile's cells of the whole image's window: tiles patch together
+        const auto [row, col, rows, cols] = *request.tile;
+        window.north -= row * window.ns_res;
+        window.west += col * window.ew_res;
+        window.south = window.north - rows * window.ns_res;
+        window.east = window.west + cols * window.ew_res;
+        window.rows = window.rows3 = rows;
+        window.cols = window.cols3 = cols;
+    }
     ImageMaps maps(request, window,
                    make_annotations(request, renderer.tracer(), camera, region));
     render_on_backend(request, renderer, camera, maps.outputs(),
@@ -189,8 +199,12 @@ void run(const RenderRequest &request)
     // pyramid for this tracer)
     sbrt::Scene framing;
     framing.skip_empty_space = false;
-    const std::vector<sbrt::Camera> cameras =
+    std::vector<sbrt::Camera> cameras =
         frame_cameras(request, sbrt::Tracer(model, request.zexag, framing), region);
+    if (request.tile)
+        for (sbrt::Camera &camera : cameras)
+            camera = camera.window((*request.tile)[0], (*request.tile)[2],
+                                   (*request.tile)[1], (*request.tile)[3]);
 
     // 2. the scene: hidden strata, planes, boreholes, fence, translucency
     // (sections and split logs face the first frame's camera)

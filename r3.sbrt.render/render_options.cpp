@@ -204,6 +204,12 @@ RenderOptions define_render_options()
                        "views (default: 640,480; view=top: the region's)"),
                      _("Camera"));
     o->size->key_desc = "width,height";
+    o->tile = define("tile", TYPE_INTEGER,
+                     _("Only this rectangle of the size= image: its first row and "
+                       "column (from 0, top left) and its rows and columns; tiles "
+                       "mosaic to the whole image exactly (r.patch)"),
+                     _("Camera"));
+    o->tile->key_desc = "row,col,rows,cols";
     o->position = define("position", TYPE_DOUBLE,
                          _("Camera position (map units, unexaggerated)"),
                          _("Camera"));
@@ -460,6 +466,19 @@ RenderRequest read_render_options(const RenderOptions &options)
         r.width = int(size[0]);
         r.height = int(size[1]);
     }
+    if (o->tile->answers) {
+        const std::vector<double> t = read_numbers(o->tile);
+        if (t.size() != 4 || t[0] < 0 || t[1] < 0 || t[2] < 1 || t[3] < 1 ||
+            t[0] + t[2] > r.height || t[1] + t[3] > r.width)
+            G_fatal_error(_("tile= takes row,col,rows,cols of a rectangle within the "
+                            "%d x %d image (size=), rows and columns from 0 at the "
+                            "top left"),
+                          r.width, r.height);
+        if (v.kind == sbrt::ViewKind::top)
+            G_fatal_error(_("tile= is for perspective and orthographic views; a top "
+                            "view's tile is a region (g.region)"));
+        r.tile = {int(t[0]), int(t[1]), int(t[2]), int(t[3])};
+    }
     v.position = read_point(o->position);
     v.target = read_point(o->target);
     v.azimuth = read_double(o->azimuth);
@@ -496,6 +515,10 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.normals = std::string(o->normals->answer) == "kernel" ? sbrt::Normals::kernel
                                                             : sbrt::Normals::face;
     r.kernel = std::atoi(o->kernel->answer);
+    if (r.tile && r.normals == sbrt::Normals::kernel)
+        G_fatal_error(_("tile= with normals=kernel: the kernel reads pixels across "
+                        "the tile's edges, so tiles would not mosaic exactly; use "
+                        "normals=face"));
     if (r.kernel % 2 == 0)
         G_fatal_error(_("kernel=%d: the kernel size must be odd (3, 5, 7, 9 "
                         "or 11)"),

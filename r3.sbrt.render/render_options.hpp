@@ -22,6 +22,7 @@
 struct RenderRequest {
     std::string input, output, material, hit_elevation, depth, png;
     bool annotate = true;  ///< the PNG's legend, north arrow, scale bar (not -n)
+    std::optional<std::array<int, 4>> tile; ///< row, col, rows, cols of the image
     int width = 640, height = 480; ///< size=: perspective and orthographic
     sbrt::View view;   ///< the camera as asked for (map units, degrees)
     double zexag = 1;
@@ -65,7 +66,7 @@ struct RenderRequest {
 struct RenderOptions {
     Option *input, *output, *material, *hit_elevation, *depth, *png;
     Flag *plain_png;
-    Option *view, *size, *position, *target, *azimuth, *elevation, *distance, *fov,
+    Option *view, *size, *tile, *position, *target, *azimuth, *elevation, *distance, *fov,
         *ortho_height, *zexag;
     Option *light, *ambient, *background, *normals, *kernel, *smooth, *color,
         *rules;

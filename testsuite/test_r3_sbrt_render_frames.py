@@ -224,6 +224,37 @@ class TestFrames(TestCase):
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("has no lines", run.stderr)
 
+    def test_tiles_mosaic_to_the_whole_image(self):
+        from PIL import Image
+
+        cols, rows = SIZE
+        whole = os.path.join(self.dir, "whole.png")
+        self.render("output=wh", "material=wh_m", f"png={whole}", "-n", "zexag=2")
+        mosaic = Image.new("RGB", SIZE)
+        tiles = []
+        for row, height in ((0, 20), (20, rows - 20)):
+            for col, width in ((0, 30), (30, cols - 30)):
+                name = f"ti_{row}_{col}"
+                png = os.path.join(self.dir, name + ".png")
+                self.render(f"output={name}", f"material={name}_m", f"png={png}",
+                            f"tile={row},{col},{height},{width}", "zexag=2")
+                with Image.open(png) as tile:
+                    self.assertEqual(tile.size, (width, height))
+                    mosaic.paste(tile, (col, row))
+                tiles.append(f"{name}_m")
+        with Image.open(whole) as image:
+            self.assertEqual(list(mosaic.getdata()), list(image.getdata()))
+        # the tiles' maps lie in the whole image's window: r.patch joins them
+        self.runModule("r.patch", input=tiles, output="patched", overwrite=True)
+        self.assertEqual(self.differing("patched", "wh_m"), 0)
+        self.assertGreater(self.hits("wh_m"), cols * rows // 5)
+        for bad, words in (("0,0,40,10", "within the"), ("0,0,0,10", "within the")):
+            run = self.render("output=bad", f"tile={bad}", check=False)
+            self.assertNotEqual(run.returncode, 0)
+            self.assertIn(words, run.stderr)
+        run = self.render("output=bad", "tile=0,0,10,10", "normals=kernel", check=False)
+        self.assertIn("would not mosaic", run.stderr)
+
     def test_bad_sequences_fail_clearly(self):
         for args, words in (
             (["frames=0"], "frames=0"),

@@ -51,11 +51,11 @@ count memcheck manage_list r3.sbrt.manage -l -m
 count memcheck manage_copy r3.sbrt.manage copy=geo,geo_copy
 count memcheck render r3.sbrt.render input=geo output=img size=64,48 material=m depth=d \
     hit_elevation=z backend=cpu normals=kernel kernel=5 smooth=1 png="$(g.gisenv get=GISDBASE)/vg.png"
-count memcheck render_strata r3.sbrt.render input=geo output=img size=64,48 backend=cpu \
+count memcheck render_strata r3.sbrt.render input=geo output=img_strata size=64,48 backend=cpu \
     hide=13 opacity=12:0.5 plane=0,0,300,0,0,1 section=0,1200,2000,1500 texture=tex
-count memcheck render_boreholes r3.sbrt.render input=geo output=img size=64,48 backend=cpu \
+count memcheck render_boreholes r3.sbrt.render input=geo output=img_wells size=64,48 backend=cpu \
     boreholes=wells borehole_radius=30 -b -m log_top=cat log_bottom=cat log_class=cat
-count memcheck render_fence r3.sbrt.render input=geo output=img size=64,48 backend=cpu fence=fence
+count memcheck render_fence r3.sbrt.render input=geo output=img_fence size=64,48 backend=cpu fence=fence
 echo "valgrind: $passed passed, $failed failed"
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/valgrind_job.sh" "$SBRT_ROOT/tools" 2>&1 |

@@ -52,6 +52,8 @@ Camera Camera::perspective(glm::dvec3 position, glm::dvec3 target,
     c.kind_ = Kind::perspective;
     c.rows_ = rows;
     c.cols_ = cols;
+    c.root_rows_ = rows;
+    c.root_cols_ = cols;
     c.origin_ = position;
     c.forward_ = view_direction(position, target);
     glm::dvec3 right, up;
@@ -72,6 +74,8 @@ Camera Camera::orthographic(glm::dvec3 position, glm::dvec3 target,
     c.kind_ = Kind::orthographic;
     c.rows_ = rows;
     c.cols_ = cols;
+    c.root_rows_ = rows;
+    c.root_cols_ = cols;
     c.forward_ = view_direction(position, target);
     glm::dvec3 right, up;
     view_basis(c.forward_, right, up);
@@ -90,6 +94,8 @@ Camera Camera::top(double north, double south, double east, double west,
     c.kind_ = Kind::top;
     c.rows_ = rows;
     c.cols_ = cols;
+    c.root_rows_ = rows;
+    c.root_cols_ = cols;
     c.forward_ = glm::dvec3(0, 0, -1);
     c.origin_ = glm::dvec3((east + west) / 2, (north + south) / 2, above);
     c.du_ = glm::dvec3((east - west) / 2, 0, 0);
@@ -99,22 +105,36 @@ Camera Camera::top(double north, double south, double east, double west,
 
 Camera Camera::rows_window(int first, int count) const
 {
-    if (first < 0 || count < 1 || first + count > rows_)
-        fail("Camera: rows ", first, " to ", first + count, " are not within the ",
-             rows_, " rows of the image");
-    // y of row first + r in the image = offset + scale * y of row r in the
-    // window, from y = 1 - (row + 0.5) / rows * 2
+    return window(first, count, 0, cols_);
+}
+
+Camera Camera::window(int first_row, int rows, int first_col, int cols) const
+{
+    if (first_row < 0 || rows < 1 || first_row + rows > rows_ || first_col < 0 ||
+        cols < 1 || first_col + cols > cols_)
+        fail("Camera: rows ", first_row, " to ", first_row + rows, " and columns ",
+             first_col, " to ", first_col + cols, " are not within the ", rows_, " x ",
+             cols_, " image");
     Camera c = *this;
-    c.rows_ = count;
-    c.window_scale_ = window_scale_ * count / rows_;
-    c.window_offset_ = window_offset_ + window_scale_ * (1 - (2.0 * first + count) / rows_);
+    c.rows_ = rows;
+    c.cols_ = cols;
+    c.row0_ = row0_ + first_row;
+    c.col0_ = col0_ + first_col;
+    // y of the whole image's row row0 + r = offset + scale * y of row r in
+    // the window, from y = 1 - (row + 0.5) / rows * 2; x alike
+    const double R = root_rows_, C = root_cols_;
+    c.window_scale_ = rows / R;
+    c.window_offset_ = 1 - (2.0 * c.row0_ + rows) / R;
+    c.x_scale_ = cols / C;
+    c.x_offset_ = (2.0 * c.col0_ + cols) / C - 1;
     return c;
 }
 
 Ray Camera::ray(int row, int col) const
 {
-    const glm::dvec2 own = pixel_ndc(row, col);
-    const double x = own.x, y = window_offset_ + window_scale_ * own.y;
+    // from the whole image's pixel indices: a tile's rays are its own
+    const double x = (col0_ + col + 0.5) / root_cols_ * 2 - 1;
+    const double y = 1 - (row0_ + row + 0.5) / root_rows_ * 2;
     if (parallel())
         return {origin_ + du_ * x + dv_ * y, forward_};
     return {origin_, glm::normalize(forward_ + du_ * x + dv_ * y)};
@@ -126,10 +146,10 @@ void Camera::linear_rays(glm::dvec3 &origin, glm::dvec3 &forward, glm::dvec3 &du
     origin = origin_;
     forward = forward_;
     if (parallel())
-        origin += window_offset_ * dv_;
+        origin += window_offset_ * dv_ + x_offset_ * du_;
     else
-        forward += window_offset_ * dv_;
-    du = du_;
+        forward += window_offset_ * dv_ + x_offset_ * du_;
+    du = x_scale_ * du_;
     dv = window_scale_ * dv_;
 }
 
@@ -143,7 +163,7 @@ bool Camera::project(glm::dvec3 p, double &x, double &y) const
         if (!(scale > 0))
             return false;
     }
-    x = glm::dot(v, du_) / (scale * glm::dot(du_, du_));
+    x = (glm::dot(v, du_) / (scale * glm::dot(du_, du_)) - x_offset_) / x_scale_;
     y = (glm::dot(v, dv_) / (scale * glm::dot(dv_, dv_)) - window_offset_) / window_scale_;
     return std::isfinite(x) && std::isfinite(y);
 }

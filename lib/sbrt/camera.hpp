@@ -44,10 +44,13 @@ public:
                       double above, int rows, int cols);
 
     /// Rows [first, first + count) of this image as an image of their own,
-    /// with the same rays (up to rounding): a large image traced band by
-    /// band.
+    /// with the same rays: a large image traced band by band.
     Camera rows_window(int first, int count) const;
-    bool is_window() const { return window_scale_ != 1 || window_offset_ != 0; }
+    /// The rectangle of rows [first_row, first_row + rows) and columns
+    /// [first_col, first_col + cols) as an image of its own (a tile): ray()
+    /// gives the very rays of the whole image's pixels, bit for bit.
+    Camera window(int first_row, int rows, int first_col, int cols) const;
+    bool is_window() const { return rows_ != root_rows_ || cols_ != root_cols_; }
 
     Ray ray(int row, int col) const;
     /// Normalised device coordinates of the centre of pixel (row, col) of
@@ -79,8 +82,12 @@ private:
     Kind kind_ = Kind::perspective;
     int rows_ = 1, cols_ = 1;
     glm::dvec3 origin_{0}, forward_{0, 0, -1}, du_{1, 0, 0}, dv_{0, 1, 0};
-    /// a window's y = offset + scale * its own y (see rows_window)
-    double window_offset_ = 0, window_scale_ = 1;
+    /// a window: the whole image's size and the window's first row and
+    /// column in it
+    int root_rows_ = 1, root_cols_ = 1, row0_ = 0, col0_ = 0;
+    /// a window's y = offset + scale * its own y, and x alike (linear_rays,
+    /// project)
+    double window_offset_ = 0, window_scale_ = 1, x_offset_ = 0, x_scale_ = 1;
 };
 
 } // namespace sbrt

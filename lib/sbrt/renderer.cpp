@@ -206,8 +206,8 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
                               const BandSink &sink, RowTracer *rows) const
 {
     const auto start = std::chrono::steady_clock::now();
-    if (camera.is_window())
-        fail("Renderer::render: a whole image, not a window of its rows");
+    // a window (a tile of a larger image) renders its own pixels of the
+    // larger image; kernel normals refuse one (KernelNormals)
     const unsigned threads = thread_count(settings_.threads);
     const int image_rows = camera.rows(), cols = camera.cols();
     RenderReport report;

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "camera_path.hpp"
+#include "renderer.hpp"
 #include "error.hpp"
 #include "gpu_compare.hpp"
 
@@ -125,4 +126,60 @@ TEST(CameraPath, SurfaceElevationIsTheStackTop)
                         want, 1e-9);
         }
     EXPECT_EQ(surface_elevation(t, f.west - 1, f.north + 1), t.top_elevation());
+}
+
+TEST(CameraWindow, TilesHaveTheWholeImagesRaysAndPixels)
+{
+    const Model m = sbrt_test::geology(20, 24, 12);
+    const Tracer t(m, 2.0);
+    View v;
+    v.azimuth = 200;
+    const int rows = 30, cols = 44;
+    for (const ViewKind kind : {ViewKind::perspective, ViewKind::orthographic}) {
+        v.kind = kind;
+        const Camera whole = view_camera(v, t, rows, cols);
+        const Camera tile = whole.window(7, 13, 20, 17);
+        EXPECT_TRUE(tile.is_window());
+        EXPECT_FALSE(whole.is_window());
+        for (int r = 0; r < 13; ++r)
+            for (int c = 0; c < 17; ++c) {
+                const Ray a = whole.ray(7 + r, 20 + c), b = tile.ray(r, c);
+                ASSERT_EQ(a.origin, b.origin);
+                ASSERT_EQ(a.direction, b.direction);
+            }
+        // a tile of a band is the same tile
+        const Camera band = whole.rows_window(5, 20).window(2, 13, 20, 17);
+        EXPECT_EQ(band.ray(3, 4).direction, tile.ray(3, 4).direction);
+        // the linear forms agree with the rays
+        glm::dvec3 o, f, du, dv;
+        tile.linear_rays(o, f, du, dv);
+        const glm::dvec2 p = tile.pixel_ndc(5, 9);
+        const glm::dvec3 d = kind == ViewKind::perspective
+                                 ? glm::normalize(f + p.x * du + p.y * dv)
+                                 : f;
+        EXPECT_LT(glm::length(d - tile.ray(5, 9).direction), 1e-12);
+        // and project() gives back a pixel's own coordinates
+        double x, y;
+        ASSERT_TRUE(tile.project(tile.ray(5, 9).origin + 100.0 * tile.ray(5, 9).direction, x, y));
+        EXPECT_NEAR(x, p.x, 1e-9);
+        EXPECT_NEAR(y, p.y, 1e-9);
+        // rendered: the tile's pixels are the whole image's
+        Scene scene;
+        const Renderer renderer(m, 2.0, scene, Shading{});
+        const Outputs outputs{true, false, true};
+        const Image all = renderer.render_image(whole, outputs);
+        const Image part = renderer.render_image(tile, outputs);
+        for (int r = 0; r < 13; ++r)
+            for (int c = 0; c < 17; ++c) {
+                const size_t i = size_t(7 + r) * cols + size_t(20 + c), j = size_t(r) * 17 + c;
+                ASSERT_EQ(all.material[i], part.material[j]) << r << " " << c;
+                const double a = all.depth[i], b = part.depth[j];
+                ASSERT_TRUE((std::isnan(a) && std::isnan(b)) || a == b) << r << " " << c;
+                for (int k = 0; k < 3; ++k)
+                    ASSERT_EQ(all.rgb[3 * i + k], part.rgb[3 * j + k]);
+            }
+    }
+    const Camera whole = view_camera(v, t, rows, cols);
+    EXPECT_THROW(whole.window(20, 11, 0, 5), Error);
+    EXPECT_THROW(whole.window(0, 5, 40, 5), Error);
 }
