@@ -28,6 +28,21 @@ for entry in "\${GEOLOGY_VIEWS[@]}"; do
     r3.sbrt.render --q --o input=geology output=\$image size=1056,884 zexag=2 light=300,50 \\
         normals=kernel kernel=7 smooth=1 png="$out/r3_sbrt_demo_\$image.png" \${entry#*|}
 done
+# a turntable: 36 frames in one process, the MP4 and a strip of six frames
+mkdir -p "$out/orbit"
+r3.sbrt.render --q --o input=geology size=480,360 zexag=2 light=300,50 frames=36 -n \
+    png="$out/orbit/orbit_%04d.png" video="$out/r3_sbrt_demo_orbit.mp4" fps=12
+python3 - "$out" <<'EOP'
+import sys
+from PIL import Image
+out = sys.argv[1]
+frames = [Image.open(f"{out}/orbit/orbit_{k:04d}.png") for k in (1, 7, 13, 19, 25, 31)]
+w, h = frames[0].size
+strip = Image.new("RGB", (3 * w // 2, 2 * h // 2), "white")
+for i, frame in enumerate(frames):
+    strip.paste(frame.resize((w // 2, h // 2)), ((i % 3) * w // 2, (i // 3) * h // 2))
+strip.save(f"{out}/r3_sbrt_demo_orbit_strip.png")
+EOP
 # the geological map: a top view in the model's own grid, and its legend
 # from the labels and colours the material map carries (d.legend)
 g.region raster_3d=geology
@@ -40,4 +55,4 @@ GRASS_RENDER_WIDTH=900 GRASS_RENDER_HEIGHT=500 GRASS_RENDER_FILE_READ=TRUE \\
 r.stats -l -c -n map_class   # cells of each class at the surface
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/demo_job.sh"
-echo "demo: images written to $out: r3_sbrt_demo_view.png (perspective), _hidden.png (upper strata hidden), _drape.png (orthophoto draped), _boreholes.png (wells, strata hidden), _section.png (cross section), _fence.png (fence diagram), _logs.png (wells alone: log and model halves), _map.png and _legend.png (geological map)"
+echo "demo: images written to $out: r3_sbrt_demo_view.png (perspective), _hidden.png (upper strata hidden), _drape.png (orthophoto draped), _boreholes.png (wells, strata hidden), _section.png (cross section), _fence.png (fence diagram), _logs.png (wells alone: log and model halves), _map.png and _legend.png (geological map), _orbit.mp4 and _orbit_strip.png (a turntable of 36 frames)"
