@@ -59,8 +59,8 @@ done
 separate=$(echo "$(date +%s.%N) - $start" | bc)
 awk -v s=$size -v n=$frames -v o=$orbit -v v=$video -v sep=$separate -v ip=$inproc -v c=$counted 'BEGIN {
     per = (o - v) / n * 1000
-    printf "animation size=%s frames=%d one_process_s=%.2f of_which_video_s~%.2f per_frame_ms=%.1f in_process_frame_ms=%.1f per_frame/in_process=%.2f separate_runs_s=%.2f separate/one_process=%.2f mp4_frames=%s\n",
-        s, n, o, v, per, ip, per / ip, sep, sep / o, c }'
+    printf "animation size=%s frames=%d one_process_s=%.2f of_which_video_s~%.2f per_frame_ms=%.1f in_process_frame_ms=%.1f per_frame/in_process=%.2f separate_runs_s=%.2f separate/one_process_frames=%.2f separate/one_process_with_video=%.2f mp4_frames=%s\n",
+        s, n, o, v, per, ip, per / ip, sep, sep / (o - v), sep / o, c }'
 rm -rf "$out"
 EOS
 for s in $sizes; do
