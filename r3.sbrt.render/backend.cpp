@@ -48,7 +48,7 @@ void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
 
 void render_on_gpu(const RenderRequest &request, const sbrt::Renderer &renderer,
                    const sbrt::Camera &camera, const sbrt::Outputs &outputs,
-                   const sbrt::BandSink &sink, sbrt_gl::GpuTracer &gpu)
+                   const sbrt::BandSink &sink, sbrt_gl::GpuTracer &gpu, bool first)
 {
     const sbrt::GpuMemory &m = gpu.memory();
     G_verbose_message(_("GPU memory, layout=%s: %llu bytes (index %llu, intervals "
@@ -71,9 +71,10 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Renderer &renderer,
                              : _("Shading: on the CPU (kernel normals or a drape)"));
     const sbrt::RenderReport r = renderer.render(camera, outputs, sink, &rows);
     const sbrt_gl::GpuStats &s = gpu.stats();
-    G_verbose_message(_("Model upload: %.1f ms; read back: %.1f ms; %d "
-                        "band(s)"),
-                      s.upload_ms, s.readback_ms, s.bands);
+    if (first)
+        G_verbose_message(_("Model upload: %.1f ms (kept for the next frames)"),
+                          s.upload_ms);
+    G_verbose_message(_("Read back: %.1f ms; %d band(s)"), s.readback_ms, s.bands);
     report_bands(r);
     report(_("GPU tracing"), camera, s.trace_ms);
     if (s.over_budget)
@@ -121,27 +122,31 @@ std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &reque
     return context;
 }
 
-void render_on_backend(const RenderRequest &request, const sbrt::Renderer &renderer,
-                       const sbrt::Camera &camera, const sbrt::Outputs &outputs,
-                       const sbrt::BandSink &sink, sbrt_gl::GlContext *context)
+Backend::Backend(const RenderRequest &request, const sbrt::Renderer &renderer,
+                 sbrt_gl::GlContext *context)
+    : request_(request), renderer_(renderer), context_(context)
 {
-    if (!context) {
-        render_on_cpu(request, renderer, camera, outputs, sink);
-        return;
+}
+
+void Backend::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                     const sbrt::BandSink &sink)
+{
+    if (context_ && !tried_gpu_) {
+        tried_gpu_ = true;
+        try {
+            gpu_.emplace(*context_, renderer_.tracer(),
+                         sbrt::parse_gpu_layout(request_.gpu_layout));
+        }
+        catch (const sbrt::Error &e) {
+            // the model does not fit this GPU's buffers
+            if (request_.backend != "auto")
+                throw;
+            G_message(_("The GPU cannot take this model (%s): rendering on the CPU"),
+                      e.what());
+        }
     }
-    std::optional<sbrt_gl::GpuTracer> gpu;
-    try {
-        gpu.emplace(*context, renderer.tracer(),
-                    sbrt::parse_gpu_layout(request.gpu_layout));
-    }
-    catch (const sbrt::Error &e) {
-        // the model does not fit this GPU's buffers
-        if (request.backend != "auto")
-            throw;
-        G_message(_("The GPU cannot take this model (%s): rendering on the CPU"),
-                  e.what());
-        render_on_cpu(request, renderer, camera, outputs, sink);
-        return;
-    }
-    render_on_gpu(request, renderer, camera, outputs, sink, *gpu);
+    if (gpu_)
+        render_on_gpu(request_, renderer_, camera, outputs, sink, *gpu_, frames_++ == 0);
+    else
+        render_on_cpu(request_, renderer_, camera, outputs, sink);
 }

@@ -7,8 +7,10 @@
 #define R3_SBRT_BACKEND_HPP
 
 #include <memory>
+#include <optional>
 
 #include "gl_context.hpp"
+#include "gpu_tracer.hpp"
 #include "render_options.hpp"
 #include "renderer.hpp"
 
@@ -20,10 +22,28 @@
 std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &request,
                                                       bool overlays);
 
-/// Renders `camera` into `sink`, on the GPU of `context` where there is
-/// one (and the model fits it: else, with backend=auto, on the CPU).
-void render_on_backend(const RenderRequest &request, const sbrt::Renderer &renderer,
-                       const sbrt::Camera &camera, const sbrt::Outputs &outputs,
-                       const sbrt::BandSink &sink, sbrt_gl::GlContext *context);
+/// \brief Where the frames of one prepared scene render: the CPU, or the
+/// GPU of a context, the model uploaded once (at the first frame) and kept
+/// for the next ones; with backend=auto the CPU where the GPU cannot hold
+/// the model.
+class Backend {
+public:
+    Backend(const RenderRequest &request, const sbrt::Renderer &renderer,
+            sbrt_gl::GlContext *context);
+    Backend(const Backend &) = delete;
+    Backend &operator=(const Backend &) = delete;
+
+    /// Renders `camera` into `sink`.
+    void render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                const sbrt::BandSink &sink);
+
+private:
+    const RenderRequest &request_;
+    const sbrt::Renderer &renderer_;
+    sbrt_gl::GlContext *context_;
+    bool tried_gpu_ = false;
+    int frames_ = 0; ///< rendered on the GPU
+    std::optional<sbrt_gl::GpuTracer> gpu_; ///< the model on the GPU
+};
 
 #endif

@@ -79,10 +79,11 @@ sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drap
     return shading;
 }
 
-/// Traces, shades and writes one image of `renderer` seen by `camera`.
+/// Traces, shades and writes one image of `renderer` seen by `camera`, on
+/// `backend` (the renderer's).
 void render_frame(const RenderRequest &request, const sbrt::Renderer &renderer,
-                  const sbrt::Camera &camera, const struct Cell_head &region,
-                  sbrt_gl::GlContext *context)
+                  Backend &backend, const sbrt::Camera &camera,
+                  const struct Cell_head &region)
 {
     struct Cell_head window =
         request.view.kind == sbrt::ViewKind::top
@@ -100,8 +101,8 @@ void render_frame(const RenderRequest &request, const sbrt::Renderer &renderer,
     }
     ImageMaps maps(request, window,
                    make_annotations(request, renderer.tracer(), camera, region));
-    render_on_backend(request, renderer, camera, maps.outputs(),
-                      [&](const sbrt::Band &band) { maps.write(band); }, context);
+    backend.render(camera, maps.outputs(),
+                   [&](const sbrt::Band &band) { maps.write(band); });
     maps.close(renderer.model());
 }
 
@@ -161,9 +162,11 @@ void run(const RenderRequest &request)
     const sbrt::RenderSettings settings{unsigned(request.threads), true, 0};
     const bool sweep = request.frames > 1 && request.path == "sweep";
     std::optional<sbrt::Renderer> renderer;
+    std::optional<Backend> backend; // a GPU keeps the renderer's model
     if (!sweep) {
         renderer.emplace(std::move(model), request.zexag, scene, shading, settings);
         report_pyramid(renderer->tracer());
+        backend.emplace(request, *renderer, context.get());
     }
     int skipped = 0;
     for (int k = request.first_frame; k <= request.last_frame; ++k) {
@@ -181,9 +184,11 @@ void run(const RenderRequest &request)
             swept.planes.front() =
                 sbrt::swept_plane(scene.planes.front(), sbrt::Tracer(model, request.zexag),
                                   k, request.frames);
+            backend.reset(); // it refers to the previous frame's renderer
             renderer.emplace(model, request.zexag, std::move(swept), shading, settings);
+            backend.emplace(request, *renderer, context.get());
         }
-        render_frame(frame, *renderer, cameras[size_t(k - 1)], region, context.get());
+        render_frame(frame, *renderer, *backend, cameras[size_t(k - 1)], region);
     }
     if (request.frames > 1) {
         G_percent(1, 1, 1);

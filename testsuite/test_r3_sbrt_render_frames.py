@@ -255,6 +255,22 @@ class TestFrames(TestCase):
         run = self.render("output=bad", "tile=0,0,10,10", "normals=kernel", check=False)
         self.assertIn("would not mosaic", run.stderr)
 
+    def test_gpu_frames_upload_once_and_match_the_cpu(self):
+        # EGL (llvmpipe here): the model goes to the GPU once for all frames
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=geo", "size=%d,%d" % SIZE, "backend=egl",
+             "output=gf", "material=gf_m", "frames=3", "zexag=2", "--verbose"],
+            capture_output=True, text=True)
+        self.assertEqual(run.returncode, 0, msg=run.stderr)
+        self.assertEqual(run.stderr.count("Model upload:"), 1)
+        self.assertEqual(run.stderr.count("Read back:"), 3)
+        self.render("output=cf", "material=cf_m", "frames=3", "zexag=2")
+        for k in (1, 2, 3):
+            # float32 on the GPU: a few edge pixels may differ
+            self.assertLessEqual(self.differing(f"gf_m_{k:04d}", f"cf_m_{k:04d}"),
+                                 SIZE[0] * SIZE[1] // 100, msg=k)
+            self.assertGreater(self.hits(f"gf_m_{k:04d}"), SIZE[0] * SIZE[1] // 5)
+
     def test_bad_sequences_fail_clearly(self):
         for args, words in (
             (["frames=0"], "frames=0"),
