@@ -66,9 +66,7 @@ std::vector<sbrt::Camera> frame_cameras(const RenderRequest &request,
         G_fatal_error(_("path_map=%s is 2D: give height= (the camera's height "
                         "above the model's top)"),
                       request.path_map.c_str());
-    double length = 0;
-    for (size_t i = 1; i < line.size(); ++i)
-        length += glm::length(glm::dvec2(line[i] - line[i - 1]));
+    const double length = sbrt::line_length(line);
     auto lifted = [&](glm::dvec3 p) {
         if (request.line_height)
             p.z = sbrt::surface_elevation(framing, p.x, p.y) + *request.line_height;

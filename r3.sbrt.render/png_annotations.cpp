@@ -50,17 +50,7 @@ public:
     Canvas &operator=(const Canvas &) = delete;
 
     cairo_t *cr() const { return cr_; }
-    /// Pixel rows of the surface (xRGB words) <-> packed rgb rows.
-    void load(const uint8_t *rgb, int rows, int cols)
-    {
-        cairo_surface_flush(surface_);
-        for (int r = 0; r < rows; ++r) {
-            uint32_t *px = row(r);
-            for (int c = 0; c < cols; ++c, rgb += 3)
-                px[c] = uint32_t(rgb[0]) << 16 | uint32_t(rgb[1]) << 8 | rgb[2];
-        }
-        cairo_surface_mark_dirty(surface_);
-    }
+    /// The surface's pixels (xRGB words) as packed rgb rows.
     void store(uint8_t *rgb, int rows, int cols)
     {
         cairo_surface_flush(surface_);

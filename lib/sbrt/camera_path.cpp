@@ -66,10 +66,9 @@ std::vector<Camera> orbit_cameras(const View &view, const Tracer &tracer, int ro
             }
             height /= 0.95;
         }
-        const double reach = tracer.radius() + glm::length(tracer.centre() - target);
         for (int k = 1; k <= frames; ++k) {
             const glm::dvec3 u = turn_about_vertical(unit, {0, 0, 0}, turn(k));
-            cameras.push_back(Camera::orthographic(target + u * (reach + tracer.radius()),
+            cameras.push_back(Camera::orthographic(orthographic_start(tracer, target, u),
                                                    target, height, rows, cols));
         }
         return cameras;
@@ -162,14 +161,20 @@ Keyframe keyframe_at(const std::vector<Keyframe> &keys, int frame, int frames)
     return k;
 }
 
+double line_length(const std::vector<glm::dvec3> &line)
+{
+    double length = 0;
+    for (size_t i = 1; i < line.size(); ++i)
+        length += glm::length(glm::dvec2(line[i] - line[i - 1]));
+    return length;
+}
+
 void along_line(const std::vector<glm::dvec3> &line, int frame, int frames,
                 glm::dvec3 &point, glm::dvec3 &direction)
 {
     if (frames < 1 || frame < 1 || frame > frames)
         fail("along_line: frame ", frame, " of ", frames);
-    double length = 0;
-    for (size_t i = 1; i < line.size(); ++i)
-        length += glm::length(glm::dvec2(line[i] - line[i - 1]));
+    const double length = line_length(line);
     if (!(length > 0))
         fail("path line: it has no length (fewer than two distinct points)");
     double s = frames == 1 ? 0 : length * (frame - 1) / (frames - 1);

@@ -46,6 +46,9 @@ std::vector<Keyframe> parse_keyframes(const std::string &text, double fov);
 /// and target on Catmull-Rom splines through the keys, fov linear.
 Keyframe keyframe_at(const std::vector<Keyframe> &keys, int frame, int frames);
 
+/// Horizontal length of a polyline (map units).
+double line_length(const std::vector<glm::dvec3> &line);
+
 /// Frame k (from 1) of `frames` along a polyline (map coordinates with z),
 /// evenly spaced by length, the first frame at its start and the last at
 /// its end: the point, and the direction it moves in there (unit, from

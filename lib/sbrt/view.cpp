@@ -174,6 +174,12 @@ double framing_distance(const std::vector<glm::dvec3> &points, glm::dvec3 target
     return high;
 }
 
+glm::dvec3 orthographic_start(const Tracer &tracer, glm::dvec3 target, glm::dvec3 offset)
+{
+    const double reach = tracer.radius() + glm::length(tracer.centre() - target);
+    return target + offset * (reach + tracer.radius());
+}
+
 Camera view_camera(const View &view, const Tracer &tracer, int rows, int cols)
 {
     if (view.kind == ViewKind::top)
@@ -214,9 +220,8 @@ Camera view_camera(const View &view, const Tracer &tracer, int rows, int cols)
                 ? *view.ortho_height
                 : std::max({-e[2], e[3], -e[0] / aspect, e[1] / aspect}) * 2 / 0.95;
         // rays start outside the model whatever position= says
-        double reach = tracer.radius() + glm::length(tracer.centre() - target);
-        const glm::dvec3 start = target + offset * (reach + tracer.radius());
-        return Camera::orthographic(start, target, height, rows, cols);
+        return Camera::orthographic(orthographic_start(tracer, target, offset), target,
+                                    height, rows, cols);
     }
     if (!framed)
         return Camera::perspective(tracer.exaggerate(*view.position), target, view.fov,
@@ -227,9 +232,9 @@ Camera view_camera(const View &view, const Tracer &tracer, int rows, int cols)
                                              : framing_distance(hull, target, offset,
                                                                 view.fov, aspect)),
             target, view.fov, rows, cols);
+    // (target: the hull's centre) looked at from the eye, on its axis
     const glm::dvec3 eye = framing_eye(hull, plane);
-    const glm::dvec3 centre = points_centre(hull);
-    return Camera::perspective(eye, eye + plane.forward * glm::dot(centre - eye, plane.forward),
+    return Camera::perspective(eye, eye + plane.forward * glm::dot(target - eye, plane.forward),
                                view.fov, rows, cols);
 }
 

@@ -42,11 +42,21 @@ std::vector<glm::dvec3> framing_hull(const Tracer &tracer);
 double framing_distance(const std::vector<glm::dvec3> &points, glm::dvec3 target,
                         glm::dvec3 offset, double fov, double aspect);
 
+/// Where parallel rays towards `target`, coming from direction `offset`
+/// (unit, from the target towards the camera), start: outside the model's
+/// box whatever the target.
+glm::dvec3 orthographic_start(const Tracer &tracer, glm::dvec3 target, glm::dvec3 offset);
+
 /// The camera of `view` (not ViewKind::top) for a rows x cols image. Unless
 /// position= is given, the model fills the image: without target= the
 /// camera looks at the centre of the model's image (not of its box), the
 /// distance (or an orthographic view's height) makes the hull reach 95 %
 /// of the image on its tighter side.
+/// Where parallel rays towards `target`, coming from direction `offset`
+/// (unit, from the target towards the camera), start: outside the model's
+/// box whatever the target.
+glm::dvec3 orthographic_start(const Tracer &tracer, glm::dvec3 target, glm::dvec3 offset);
+
 /// The camera of `view` (not ViewKind::top) for a rows x cols image.
 Camera view_camera(const View &view, const Tracer &tracer, int rows, int cols);
 
