@@ -40,20 +40,25 @@ std::pair<size_t, size_t> conversion(const std::string &png)
     return {at, end + 1 - at};
 }
 
-std::string png_of_frame(const std::string &png, int frame)
+/// png= as a printf pattern of the frame number: as given, else with _%04d
+/// before the extension (the names ffmpeg reads too).
+std::string png_pattern(const std::string &png)
 {
-    const auto [at, length] = conversion(png);
-    if (at != std::string::npos) {
-        const std::string spec = png.substr(at, length);
-        char number[32];
-        std::snprintf(number, sizeof number, spec.c_str(), frame);
-        return png.substr(0, at) + number + png.substr(at + length);
-    }
+    if (conversion(png).first != std::string::npos)
+        return png;
     const size_t slash = png.rfind('/');
     const size_t dot = png.rfind('.');
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return numbered(png, frame);
-    return numbered(png.substr(0, dot), frame) + png.substr(dot);
+        return png + "_%04d";
+    return png.substr(0, dot) + "_%04d" + png.substr(dot);
+}
+
+std::string png_of_frame(const std::string &png, int frame)
+{
+    const std::string pattern = png_pattern(png);
+    std::vector<char> path(pattern.size() + 32);
+    std::snprintf(path.data(), path.size(), pattern.c_str(), frame);
+    return path.data();
 }
 
 bool file_exists(const std::string &path)
@@ -186,12 +191,7 @@ void assemble_video(const RenderRequest &request)
             return;
         }
     // ffmpeg reads a numbered sequence through a printf pattern
-    std::string pattern = request.png;
-    if (conversion(pattern).first == std::string::npos) {
-        const std::string probe = png_of_frame(request.png, 1234);
-        const size_t at = probe.rfind("_1234");
-        pattern = probe.substr(0, at) + "_%04d" + probe.substr(at + 5);
-    }
+    const std::string pattern = png_pattern(request.png);
     const std::string fps = std::to_string(request.fps);
     const std::string ext = extension(request.video);
     // even sizes for yuv420p; a GIF gets its own palette

@@ -89,16 +89,8 @@ void render_frame(const RenderRequest &request, const sbrt::Renderer &renderer,
         request.view.kind == sbrt::ViewKind::top
             ? region
             : image_window(region, request.height, request.width);
-    if (request.tile) {
-        // the tile's cells of the whole image's window: tiles patch together
-        const auto [row, col, rows, cols] = *request.tile;
-        window.north -= row * window.ns_res;
-        window.west += col * window.ew_res;
-        window.south = window.north - rows * window.ns_res;
-        window.east = window.west + cols * window.ew_res;
-        window.rows = window.rows3 = rows;
-        window.cols = window.cols3 = cols;
-    }
+    if (request.tile)
+        window = tile_window(window, *request.tile);
     ImageMaps maps(request, window,
                    make_annotations(request, renderer.tracer(), camera, region));
     backend.render(camera, maps.outputs(),
@@ -161,6 +153,13 @@ void run(const RenderRequest &request)
     const sbrt::Shading shading = make_shading(request, drape ? &*drape : nullptr);
     const sbrt::RenderSettings settings{unsigned(request.threads), true, 0};
     const bool sweep = request.frames > 1 && request.path == "sweep";
+    // a sweep's plane moves across the box of the model as prepared (its
+    // box only: no pyramid for this tracer)
+    sbrt::Scene box_only;
+    box_only.skip_empty_space = false;
+    std::optional<sbrt::Tracer> box;
+    if (sweep)
+        box.emplace(model, request.zexag, box_only);
     std::optional<sbrt::Renderer> renderer;
     std::optional<Backend> backend; // a GPU keeps the renderer's model
     if (!sweep) {
@@ -182,8 +181,7 @@ void run(const RenderRequest &request)
             sbrt::Scene swept = scene;
             // the sweep moves the first plane= (else section=)
             swept.planes.front() =
-                sbrt::swept_plane(scene.planes.front(), sbrt::Tracer(model, request.zexag),
-                                  k, request.frames);
+                sbrt::swept_plane(scene.planes.front(), *box, k, request.frames);
             backend.reset(); // it refers to the previous frame's renderer
             renderer.emplace(model, request.zexag, std::move(swept), shading, settings);
             backend.emplace(request, *renderer, context.get());

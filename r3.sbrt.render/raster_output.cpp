@@ -43,6 +43,18 @@ struct Cell_head image_window(const struct Cell_head &region, int rows, int cols
     return window;
 }
 
+struct Cell_head tile_window(struct Cell_head window, const std::array<int, 4> &tile)
+{
+    const auto [row, col, rows, cols] = tile;
+    window.north -= row * window.ns_res;
+    window.west += col * window.ew_res;
+    window.south = window.north - rows * window.ns_res;
+    window.east = window.west + cols * window.ew_res;
+    window.rows = window.rows3 = rows;
+    window.cols = window.cols3 = cols;
+    return window;
+}
+
 ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &window,
                      PngAnnotations annotations)
     : request_(request), cols_(window.cols), cells_(size_t(window.cols)),

@@ -7,6 +7,7 @@
 #ifndef R3_SBRT_RASTER_OUTPUT_HPP
 #define R3_SBRT_RASTER_OUTPUT_HPP
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,6 +22,10 @@
 /// orthographic view: square cells, as large as fit in `region`, centred
 /// on it (the region itself is not changed).
 struct Cell_head image_window(const struct Cell_head &region, int rows, int cols);
+
+/// The cells of tile= (row, col, rows, cols) in the whole image's
+/// `window`: the tiles' maps patch together.
+struct Cell_head tile_window(struct Cell_head window, const std::array<int, 4> &tile);
 
 /// \brief <output> (the image with exact colours), <output>.red/.green/.blue
 /// and the optional maps of the request, open for writing in `window`
