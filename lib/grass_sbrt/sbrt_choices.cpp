@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sbrt_manage.hpp"
 #include "sbrt_store.hpp"
 
 namespace sbrt_grass {
@@ -45,11 +46,9 @@ void offer_own_sbrts_in_dialog(Option *option, int argc, char *argv[])
 {
     if (!describing_for_dialog(option, argc, argv))
         return;
-    const std::string here = std::string("@") + G_mapset();
     std::vector<std::string> names;
-    for (const std::string &q : list_sbrts())
-        if (q.size() > here.size() && q.compare(q.size() - here.size(), here.size(), here) == 0)
-            names.push_back(q.substr(0, q.size() - here.size()));
+    for (const StoredSbrt &sbrt : list_stored_sbrts({G_mapset()}))
+        names.push_back(sbrt.name);
     set_values(option, names);
 }
 

@@ -5,7 +5,6 @@
  ****************************************************************************/
 #include "sbrt_store.hpp"
 
-#include <dirent.h>
 
 #include <algorithm>
 #include <ctime>
@@ -13,6 +12,7 @@
 #include "error.hpp"
 #include "format.hpp"
 #include "grass.hpp"
+#include "sbrt_manage.hpp"
 
 namespace sbrt_grass {
 
@@ -79,21 +79,11 @@ void write_sbrt_map(const char *name, const std::string &path,
 
 std::vector<std::string> list_sbrts()
 {
+    // mapset by mapset in search path order, each sorted by name
     std::vector<std::string> names;
-    for (int i = 0; const char *mapset = G_get_mapset_name(i); ++i) {
-        char path[GPATH_MAX];
-        G_file_name(path, ELEMENT, "", mapset);
-        DIR *dir = opendir(path);
-        if (!dir)
-            continue;
-        std::vector<std::string> here;
-        while (const dirent *entry = readdir(dir))
-            if (entry->d_name[0] != '.')
-                here.push_back(std::string(entry->d_name) + "@" + mapset);
-        closedir(dir);
-        std::sort(here.begin(), here.end());
-        names.insert(names.end(), here.begin(), here.end());
-    }
+    for (int i = 0; const char *mapset = G_get_mapset_name(i); ++i)
+        for (const StoredSbrt &sbrt : list_stored_sbrts({mapset}))
+            names.push_back(sbrt.qualified());
     return names;
 }
 
