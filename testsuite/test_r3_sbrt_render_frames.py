@@ -32,6 +32,11 @@ def turned(p, axis, degrees):
     return (axis[0] + c * dx - s * dy, axis[1] + s * dx + c * dy, p[2])
 
 
+def said(run):
+    """A run's messages with GRASS's line wrapping undone."""
+    return " ".join(run.stderr.split())
+
+
 def point(p):
     return ",".join(repr(v) for v in p)
 
@@ -117,12 +122,12 @@ class TestFrames(TestCase):
         files = [png % k for k in (1, 2, 3)]
         times = [os.stat(f).st_mtime_ns for f in files]
         run = self.render("output=re", f"png={png}", "frames=3")
-        self.assertIn("3 frames were there already", run.stderr)
+        self.assertIn("3 frames were there already", said(run))
         self.assertEqual([os.stat(f).st_mtime_ns for f in files], times)
         # a frame whose PNG is missing (a killed job) is rendered again
         os.remove(files[1])
         run = self.render("output=re", f"png={png}", "frames=3")
-        self.assertIn("2 frames were there already", run.stderr)
+        self.assertIn("2 frames were there already", said(run))
         self.assertTrue(os.path.exists(files[1]))
         self.assertEqual(os.stat(files[0]).st_mtime_ns, times[0])
         # --overwrite renders them all again
@@ -168,7 +173,7 @@ class TestFrames(TestCase):
         os.remove(video)
         run = self.render("output=v2", f"png={os.path.join(self.dir, 'w_%03d.png')}",
                           "frames=6", f"video={video}", "range=1-2")
-        self.assertIn("frame 3 is not rendered", run.stderr)
+        self.assertIn("frame 3 is not rendered", said(run))
         self.assertFalse(os.path.exists(video))
 
     def test_keys_pass_through_every_keyframe(self):
@@ -193,7 +198,7 @@ class TestFrames(TestCase):
         run = self.render("output=bad", "frames=3", "path=keys", f"keys={path}",
                           check=False)
         self.assertNotEqual(run.returncode, 0)
-        self.assertIn("at least two", run.stderr)
+        self.assertIn("at least two", said(run))
 
     def test_line_frames_stand_on_the_line(self):
         # a 3D line west of the model, towards it, 300 m up
@@ -216,13 +221,13 @@ class TestFrames(TestCase):
         self.assertGreater(self.hits("lh_m_0001"), SIZE[0] * SIZE[1] // 4)
         run = self.render("output=bad", "frames=3", "path=line", "path_map=flat",
                           check=False)
-        self.assertIn("is 2D: give height=", run.stderr)
+        self.assertIn("is 2D: give height=", said(run))
         self.runModule("v.in.ascii", input="-", output="spot", format="point",
                        separator=",", overwrite=True, stdin_="1000,1000\n")
         run = self.render("output=bad", "frames=3", "path=line", "path_map=spot",
                           check=False)
         self.assertNotEqual(run.returncode, 0)
-        self.assertIn("has no lines", run.stderr)
+        self.assertIn("has no lines", said(run))
 
     def test_tiles_mosaic_to_the_whole_image(self):
         from PIL import Image
@@ -251,9 +256,9 @@ class TestFrames(TestCase):
         for bad, words in (("0,0,40,10", "within the"), ("0,0,0,10", "within the")):
             run = self.render("output=bad", f"tile={bad}", check=False)
             self.assertNotEqual(run.returncode, 0)
-            self.assertIn(words, run.stderr)
+            self.assertIn(words, said(run))
         run = self.render("output=bad", "tile=0,0,10,10", "normals=kernel", check=False)
-        self.assertIn("would not mosaic", run.stderr)
+        self.assertIn("would not mosaic", said(run))
 
     def test_gpu_frames_upload_once_and_match_the_cpu(self):
         # EGL (llvmpipe here): the model goes to the GPU once for all frames
@@ -287,7 +292,7 @@ class TestFrames(TestCase):
         ):
             run = self.render("output=bad", *args, check=False)
             self.assertNotEqual(run.returncode, 0, msg=args)
-            self.assertIn(words, run.stderr, msg=args)
+            self.assertIn(words, said(run), msg=args)
             self.assertRasterDoesNotExist("bad_0001")
         # video= without ffmpeg on the PATH: said before any frame is made
         env = dict(os.environ, PATH=os.path.dirname(shutil.which("r3.sbrt.render")))
@@ -296,7 +301,7 @@ class TestFrames(TestCase):
              "png=/tmp/b_%d.png", "video=/tmp/b.mp4"],
             capture_output=True, text=True, env=env)
         self.assertNotEqual(run.returncode, 0)
-        self.assertIn("needs ffmpeg", run.stderr)
+        self.assertIn("needs ffmpeg", said(run))
         self.assertRasterDoesNotExist("bad_0001")
 
 
