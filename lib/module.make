@@ -1,14 +1,15 @@
 # Shared rules of the r3.sbrt modules, included by each module Makefile after it names its program.
 # Links the static libraries lib/grass_sbrt and lib/sbrt (GRASS-NOTES 1.3),
 # lib/sbrt_gl with EGL (and OSMesa) when the module sets SBRT_USES_GL, and
-# GRASS's vector and database libraries when it sets SBRT_USES_VECTOR.
+# GRASS's vector and database libraries when it sets SBRT_USES_VECTOR, and
+# what it names in SBRT_EXTRA_LIBES.
 MODULE_TOPDIR ?= /usr/lib/grass82
 
 SBRT_DIR = ../lib/sbrt
 GRASS_SBRT_DIR = ../lib/grass_sbrt
 
 # recursive (=): Grass.make defines the library variables later
-LIBES = $(SBRT_VECTOR_LIBES) $(RASTER3DLIB) $(RASTERLIB) $(GISLIB)
+LIBES = $(SBRT_EXTRA_LIBES) $(SBRT_VECTOR_LIBES) $(RASTER3DLIB) $(RASTERLIB) $(GISLIB)
 DEPENDENCIES = $(RASTER3DDEP) $(RASTERDEP) $(GISDEP)
 EXTRA_INC = -I$(SBRT_DIR) -I$(GRASS_SBRT_DIR)
 ifdef SBRT_USES_VECTOR

@@ -18,6 +18,19 @@ sbrt::Frame current_frame();
 /// 3D raster (current 3D region) -> SBRT.
 sbrt::Model voxels_to_sbrt(const char *input, sbrt::Classifier &classifier);
 
+/// The rules' classes with their labels, as a legend.
+std::vector<sbrt::Material> rule_legend(const sbrt::Classifier &classifier);
+
+/// A 3D variable of a NetCDF/HDF5/Zarr file -> SBRT in the file's own grid
+/// (the CRS checked against the location's unless `override_crs`), read in
+/// bands of about `band_bytes`.
+sbrt::Model file_to_sbrt(const char *file, const char *variable,
+                         sbrt::Classifier &classifier, bool override_crs,
+                         size_t band_bytes);
+
+/// Lists the variables of a file (plain or key=value).
+void print_file_variables(const char *file, bool shell);
+
 /// Stacked horizon rasters (top to bottom) -> SBRT with continuous heights.
 sbrt::Model horizons_to_sbrt(const std::vector<std::string> &horizons,
                              const std::vector<int> &materials,

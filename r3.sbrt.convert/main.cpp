@@ -19,8 +19,9 @@
 namespace {
 
 struct Options {
-    Option *input, *sbrt, *output, *horizons, *materials, *bottom, *rules;
-    Flag *reverse, *print, *shell, *list;
+    Option *input, *sbrt, *file, *variable, *output, *horizons, *materials,
+        *bottom, *rules, *memory;
+    Flag *reverse, *print, *shell, *list, *override_crs;
 };
 
 Options define_options()
@@ -41,6 +42,29 @@ Options define_options()
     o.sbrt->description =
         _("Existing SBRT to expand into the 3D raster output= (-r) or to "
           "describe (-p, -g)");
+
+    o.file = G_define_standard_option(G_OPT_F_INPUT);
+    o.file->key = "file";
+    o.file->required = NO;
+    o.file->label = _("Multidimensional file to import (NetCDF, HDF5, Zarr)");
+    o.file->description =
+        _("Read through GDAL; with -p and no output=: list its variables");
+    o.file->guisection = _("File");
+
+    o.variable = G_define_option();
+    o.variable->key = "variable";
+    o.variable->type = TYPE_STRING;
+    o.variable->key_desc = "name";
+    o.variable->required = NO;
+    o.variable->description =
+        _("3D variable of file= (easting, northing, vertical) to convert");
+    o.variable->guisection = _("File");
+
+    o.memory = G_define_standard_option(G_OPT_MEMORYMB);
+    o.memory->description =
+        _("Memory for a band of file= read at once (the SBRT itself comes on "
+          "top)");
+    o.memory->guisection = _("File");
 
     o.output = G_define_option();
     o.output->key = "output";
@@ -102,13 +126,22 @@ Options define_options()
     o.list->description = _("List the SBRTs in the search path and exit");
     o.list->guisection = _("Print");
     o.list->suppress_required = YES;
+    o.override_crs = G_define_flag();
+    o.override_crs->key = 'o';
+    o.override_crs->label =
+        _("Override the CRS check (take file='s coordinates as they are)");
+    o.override_crs->description =
+        _("Without it a file whose CRS differs from the location's is refused");
+    o.override_crs->guisection = _("File");
 
-    G_option_exclusive(o.input, o.horizons, o.sbrt, NULL);
+    G_option_exclusive(o.input, o.horizons, o.sbrt, o.file, NULL);
+    G_option_requires(o.variable, o.file, NULL);
+    G_option_requires(o.override_crs, o.file, NULL);
     G_option_excludes(o.sbrt, o.rules, NULL);
     G_option_requires(o.materials, o.horizons, NULL);
     G_option_requires(o.horizons, o.materials, NULL);
     G_option_requires(o.bottom, o.horizons, NULL);
-    G_option_excludes(o.reverse, o.horizons, o.rules, NULL);
+    G_option_excludes(o.reverse, o.horizons, o.rules, o.file, NULL);
     G_option_exclusive(o.print, o.shell, NULL);
     return o;
 }
@@ -173,6 +206,13 @@ void run(const Options &o)
                         "expand it into a 3D raster map, or give input= (a 3D "
                         "raster map) to convert"),
                       o.sbrt->answer);
+    if (o.file->answer && !output) {
+        if (!report)
+            G_fatal_error(_("Nothing to do: give output= (and variable=) to "
+                            "import file=, or -p to list its variables"));
+        print_file_variables(o.file->answer, o.shell->answer);
+        return;
+    }
     if (!output) {
         if (!sbrt || !report)
             G_fatal_error(_("Nothing to do: give output= to convert, or -p/-g "
@@ -184,7 +224,21 @@ void run(const Options &o)
     const std::string path = sbrt_grass::new_sbrt_path(output, overwrite);
     sbrt::Model model;
     std::string source;
-    if (o.horizons->answers) {
+    if (o.file->answer) {
+        if (!o.variable->answer)
+            G_fatal_error(_("Give variable= (one of those r3.sbrt.convert -p "
+                            "file=%s lists)"),
+                          o.file->answer);
+        sbrt::Classifier classifier = read_classifier(o.rules->answer);
+        const int megabytes = std::atoi(o.memory->answer);
+        if (megabytes < 1)
+            G_fatal_error(_("memory=%s: give at least 1 (MB)"), o.memory->answer);
+        model = file_to_sbrt(o.file->answer, o.variable->answer, classifier,
+                             o.override_crs->answer, size_t(megabytes) << 20);
+        source = std::string("file ") + o.file->answer + " variable " +
+                 o.variable->answer;
+    }
+    else if (o.horizons->answers) {
         model = horizons_to_sbrt(answers_of(o.horizons),
                                  integers_of(o.materials), o.bottom->answer);
         source = std::string("horizons ") + o.horizons->answer;
@@ -212,9 +266,12 @@ int main(int argc, char *argv[])
     G_add_keyword(_("geology"));
     G_add_keyword(_("voxel"));
     G_add_keyword(_("SBRT"));
+    G_add_keyword(_("NetCDF"));
+    G_add_keyword(_("import"));
     module->description =
-        _("Converts 3D raster maps or stacked horizons to a stack-based "
-          "representation of terrains (SBRT) and back.");
+        _("Converts 3D raster maps, stacked horizons or NetCDF/HDF5/Zarr "
+          "variables to a stack-based representation of terrains (SBRT) and "
+          "back.");
     const Options options = define_options();
     sbrt_grass::offer_sbrts_in_dialog(options.sbrt, argc, argv);
     if (G_parser(argc, argv))

@@ -29,6 +29,18 @@ sbrt::Frame current_frame()
     return f;
 }
 
+std::vector<sbrt::Material> rule_legend(const sbrt::Classifier &classifier)
+{
+    std::vector<sbrt::Material> legend;
+    for (const sbrt::ClassRule &rule : classifier.rules()) {
+        sbrt::Material m;
+        m.id = rule.id;
+        m.label = rule.label;
+        legend.push_back(m);
+    }
+    return legend;
+}
+
 sbrt::Model voxels_to_sbrt(const char *input, sbrt::Classifier &classifier)
 {
     const char *mapset = G_find_raster3d(input, "");
@@ -65,14 +77,7 @@ sbrt::Model voxels_to_sbrt(const char *input, sbrt::Classifier &classifier)
                   (unsigned long long)classifier.unmatched());
 
     // legend: the map's categories and colours, labels of rules first
-    std::vector<sbrt::Material> legend;
-    for (const sbrt::ClassRule &rule : classifier.rules()) {
-        sbrt::Material m;
-        m.id = rule.id;
-        m.label = rule.label;
-        legend.push_back(m);
-    }
-    sbrt::Model model = builder.finish(legend);
+    sbrt::Model model = builder.finish(rule_legend(classifier));
     if (model.stats().solid_intervals == 0)
         G_fatal_error(_("3D raster map <%s> has only null cells in the "
                         "current 3D region; check g.region -p3"),

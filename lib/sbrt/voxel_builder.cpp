@@ -22,23 +22,8 @@ const Frame &checked(const Frame &frame)
 
 VoxelStackBuilder::VoxelStackBuilder(const Frame &frame)
     : frame_(checked(frame)), open_class_(frame.cells(), NULL_CLASS),
-      open_material_(frame.cells(), EMPTY), class_of_material_{NULL_CLASS}
+      open_material_(frame.cells(), EMPTY)
 {
-}
-
-uint32_t VoxelStackBuilder::material_of(int32_t id)
-{
-    auto found = material_of_class_.find(id);
-    if (found != material_of_class_.end())
-        return found->second;
-    if (class_of_material_.size() >= MAX_MATERIALS)
-        fail("more than ", MAX_MATERIALS - 1, " distinct classes (at class ", id,
-             "): an SBRT holds at most ", MAX_MATERIALS - 1,
-             "; group the values into classes (r3.sbrt.convert rules=)");
-    const uint32_t index = uint32_t(class_of_material_.size());
-    class_of_material_.push_back(id);
-    material_of_class_.emplace(id, index);
-    return index;
 }
 
 void VoxelStackBuilder::close_run(uint32_t cell, uint32_t top)
@@ -62,7 +47,7 @@ void VoxelStackBuilder::add_slice(const int32_t *classes)
         if (depth_ > 0)
             close_run(c, uint32_t(depth_));
         open_class_[c] = id;
-        open_material_[c] = id == NULL_CLASS ? EMPTY : material_of(id);
+        open_material_[c] = table_.material_of(id);
     }
     ++depth_;
 }
@@ -94,16 +79,7 @@ Model VoxelStackBuilder::finish(const std::vector<Material> &legend)
     }
     runs_ = {};
 
-    std::vector<Material> materials(class_of_material_.size());
-    for (size_t i = 1; i < materials.size(); ++i) {
-        materials[i].id = class_of_material_[i];
-        materials[i].label = "";
-        for (const Material &m : legend)
-            if (m.id == materials[i].id)
-                materials[i] = m;
-    }
-    materials[0].label = "EMPTY";
-    return Model(frame_, std::move(materials), std::move(offsets),
+    return Model(frame_, table_.materials(legend), std::move(offsets),
                  std::move(intervals));
 }
 

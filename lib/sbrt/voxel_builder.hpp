@@ -7,8 +7,7 @@
 #ifndef SBRT_VOXEL_BUILDER_HPP
 #define SBRT_VOXEL_BUILDER_HPP
 
-#include <unordered_map>
-
+#include "material_table.hpp"
 #include "model.hpp"
 
 namespace sbrt {
@@ -33,7 +32,6 @@ private:
         uint32_t material;
         uint32_t top;
     };
-    uint32_t material_of(int32_t id);
     void close_run(uint32_t cell, uint32_t top);
 
     Frame frame_;
@@ -41,8 +39,7 @@ private:
     std::vector<int32_t> open_class_;
     std::vector<uint32_t> open_material_;
     std::vector<Run> runs_;
-    std::vector<int32_t> class_of_material_;
-    std::unordered_map<int32_t, uint32_t> material_of_class_;
+    MaterialTable table_;
 };
 
 } // namespace sbrt

@@ -1,0 +1,39 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Builds an SBRT from whole voxel columns arriving cell by cell
+ *            in the model's order (files whose vertical axis varies fastest)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_COLUMN_BUILDER_HPP
+#define SBRT_COLUMN_BUILDER_HPP
+
+#include "material_table.hpp"
+#include "model.hpp"
+
+namespace sbrt {
+
+/// \brief Run-length encodes each column as it arrives and appends its
+/// stack: memory is the model itself, nothing per voxel and no sort.
+class ColumnStackBuilder {
+public:
+    explicit ColumnStackBuilder(const Frame &frame);
+
+    /// The column of the next cell (row-major, row 0 north): frame.depths
+    /// class ids from the bottom up (NULL_CLASS = empty).
+    void add_column(const int32_t *classes);
+    /// Cells added so far.
+    uint64_t cells_done() const { return offsets_.size() - 1; }
+    /// The model once every cell has its column; `legend` gives labels and
+    /// colours by class id.
+    Model finish(const std::vector<Material> &legend = {});
+
+private:
+    Frame frame_;
+    std::vector<uint32_t> offsets_;
+    Intervals intervals_;
+    MaterialTable table_;
+};
+
+} // namespace sbrt
+
+#endif

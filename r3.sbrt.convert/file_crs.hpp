@@ -1,0 +1,18 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.convert
+ * PURPOSE:   A file's CRS against the current location's
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_FILE_CRS_HPP
+#define R3_SBRT_FILE_CRS_HPP
+
+#include <string>
+
+#include "file_variable.hpp"
+
+/// A fatal error when the file names a CRS other than the location's
+/// (a warning with `override_check`); a file without one passes.
+void check_file_crs(const FileVariable &variable, const std::string &file,
+                    bool override_check);
+
+#endif

@@ -1,0 +1,83 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.convert
+ * PURPOSE:   One variable of a multidimensional file (NetCDF, HDF5, Zarr)
+ *            read through GDAL's multidimensional API: its axes, missing
+ *            values, labels and CRS, and its voxels band by band
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_FILE_VARIABLE_HPP
+#define R3_SBRT_FILE_VARIABLE_HPP
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "grid_axes.hpp"
+#include "missing_values.hpp"
+#include "model.hpp"
+
+class GDALDataset;
+class GDALMDArray;
+class OGRSpatialReference;
+
+/// Closes a dataset the way GDAL wants (GDALClose).
+struct GdalDatasetCloser {
+    void operator()(GDALDataset *dataset) const;
+};
+using GdalDatasetPtr = std::unique_ptr<GDALDataset, GdalDatasetCloser>;
+
+/// \brief A summary line of one variable (for -p on a file).
+struct VariableSummary {
+    std::string name;     ///< full name, "/group/var" below the root
+    std::string type;     ///< GDAL's name of the data type
+    std::vector<std::string> dimensions;
+    std::vector<uint64_t> sizes;
+    std::string long_name;
+    std::string units;
+};
+
+/// Every array of the file with at least one dimension.
+std::vector<VariableSummary> list_file_variables(const std::string &path);
+
+/// \brief A 3D (easting, northing, vertical) variable, checked when opened.
+/// Other dimensions are allowed only with length 1. Throws sbrt::Error with
+/// what was wrong and what to do.
+class FileVariable {
+public:
+    FileVariable(const std::string &path, const std::string &name);
+    ~FileVariable();
+    FileVariable(const FileVariable &) = delete;
+    FileVariable &operator=(const FileVariable &) = delete;
+
+    const std::string &name() const { return name_; }
+    std::string type_name() const;
+    bool is_integer() const;
+    /// The grid of the cell centres: rows north to south, depth 0 bottom.
+    sbrt::Frame frame() const;
+    const sbrt::RegularAxis &easting() const { return axes_[0]; }
+    const sbrt::RegularAxis &northing() const { return axes_[1]; }
+    const sbrt::RegularAxis &vertical() const { return axes_[2]; }
+    const sbrt::MissingValues &missing() const { return missing_; }
+    /// Labels by value from `flag_values` and `flag_meanings` ('_' -> ' ').
+    std::vector<sbrt::Material> flag_labels() const;
+    /// The file's CRS (grid mapping, or `crs`/`spatial_ref`/`epsg`
+    /// attributes); nullptr when the file names none.
+    std::shared_ptr<OGRSpatialReference> spatial_ref() const;
+
+    /// Northing index count per read that keeps a band near `max_bytes`,
+    /// a multiple of the file's chunk where that fits.
+    size_t band_size(size_t max_bytes) const;
+    /// Reads northing indices [first, first + count) as doubles into
+    /// `values`, laid out [northing][easting][vertical] in file index order.
+    void read_band(size_t first, size_t count, double *values) const;
+
+private:
+    std::string path_, name_;
+    GdalDatasetPtr dataset_;
+    std::shared_ptr<GDALMDArray> array_;
+    size_t dim_of_axis_[3] = {0, 0, 0}; ///< array dimension of each axis
+    sbrt::RegularAxis axes_[3];
+    sbrt::MissingValues missing_;
+};
+
+#endif

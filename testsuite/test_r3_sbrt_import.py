@@ -1,0 +1,383 @@
+"""
+MODULE:    testsuite/test_r3_sbrt_import.py (r3.sbrt addon)
+PURPOSE:   r3.sbrt.convert file= variable=: NetCDF variables imported
+           through GDAL, in any axis order and direction, against the same
+           voxels read by GRASS's own r3.in.ascii; CRS checks; bad files
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import os
+import random
+import shutil
+import subprocess
+import tempfile
+
+from grass.gunittest.case import TestCase
+from grass.gunittest.main import test
+import grass.script as gs
+
+FILL = -127
+NX, NY, NZ = 30, 60, 100  # 24 kB of doubles a row: memory=1 reads 43 rows
+X0, Y0, Z0 = 120000, 480000, -49.75  # cell centres, as in GeoTOP
+DX, DY, DZ = 100, 100, 0.5
+RD_NEW = "EPSG:28992"
+
+
+def geotop_like(seed):
+    """values[i][j][k], x, y, z ascending: lithoclasses 1-9 in layers under
+    a ground level, caves, and columns of fill values (sea)."""
+    rnd = random.Random(seed)
+    values = []
+    for i in range(NX):
+        plane = []
+        for j in range(NY):
+            if rnd.random() < 0.05:
+                plane.append([FILL] * NZ)
+                continue
+            ground = NZ - 1 - rnd.randrange(NZ // 3)
+            column = []
+            for k in range(NZ):
+                if k > ground:
+                    column.append(FILL)
+                elif 20 <= k < 24 and (i + j) % 11 == 0:
+                    column.append(FILL)  # a cave
+                else:
+                    column.append(1 + (k * 4 // NZ + (i + 2 * j) // 9) % 9)
+            plane.append(column)
+        values.append(plane)
+    return values
+
+
+def axis_values(start, step, n, descending, negate=False):
+    coords = [start + step * t for t in range(n)]
+    if descending:
+        coords.reverse()
+    return [-c for c in coords] if negate else coords
+
+
+def write_netcdf(path, values, order=("x", "y", "z"), descending=(),
+                 depth_down=False, variable_type="short", extra="",
+                 coords_override=None):
+    """A CDL file for ncgen: the variable lithok with dimensions in `order`;
+    axes named in `descending` run high to low; `depth_down` stores the
+    vertical axis as depths (positive down)."""
+    sizes = {"x": NX, "y": NY, "z": NZ}
+    coords = {
+        "x": axis_values(X0, DX, NX, "x" in descending),
+        "y": axis_values(Y0, DY, NY, "y" in descending),
+        "z": axis_values(Z0, DZ, NZ, "z" in descending, negate=depth_down),
+    }
+    if coords_override:
+        coords.update(coords_override)
+    index = {
+        "x": lambda t: NX - 1 - t if "x" in descending else t,
+        "y": lambda t: NY - 1 - t if "y" in descending else t,
+        "z": lambda t: NZ - 1 - t if "z" in descending else t,
+    }
+    data = []
+
+    def walk(level, at):
+        if level == 3:
+            i, j, k = (index[a](at[a]) for a in "xyz")
+            data.append(str(values[i][j][k]))
+            return
+        for t in range(sizes[order[level]]):
+            at[order[level]] = t
+            walk(level + 1, at)
+
+    walk(0, {})
+    positive = "down" if depth_down else "up"
+    cdl = f"""netcdf geotop {{
+dimensions:
+  x = {NX} ; y = {NY} ; z = {NZ} ;
+variables:
+  int x(x) ; x:standard_name = "projection_x_coordinate" ; x:units = "m" ;
+  int y(y) ; y:standard_name = "projection_y_coordinate" ; y:units = "m" ;
+  float z(z) ; z:positive = "{positive}" ; z:units = "m" ;
+  {variable_type} lithok({", ".join(order)}) ;
+    lithok:_FillValue = {FILL}{"s" if variable_type == "short" else ""} ;
+    lithok:long_name = "lithoclass" ;
+    lithok:flag_values = 1s, 2s, 3s ;
+    lithok:flag_meanings = "anthropogenic peat clay" ;
+{extra}
+data:
+  x = {", ".join(str(c) for c in coords["x"])} ;
+  y = {", ".join(str(c) for c in coords["y"])} ;
+  z = {", ".join(repr(c) for c in coords["z"])} ;
+  lithok = {", ".join(data)} ;
+}}
+"""
+    cdl_path = path + ".cdl"
+    with open(cdl_path, "w") as f:
+        f.write(cdl)
+    subprocess.run(["ncgen", "-k", "nc4", "-o", path, cdl_path], check=True)
+
+
+def write_ascii3d(path, values):
+    """The same voxels for r3.in.ascii: levels bottom up, rows north to
+    south, columns west to east."""
+    lines = [
+        f"north: {Y0 + DY * (NY - 1) + DY / 2}",
+        f"south: {Y0 - DY / 2}",
+        f"east: {X0 + DX * (NX - 1) + DX / 2}",
+        f"west: {X0 - DX / 2}",
+        f"top: {Z0 + DZ * (NZ - 1) + DZ / 2}",
+        f"bottom: {Z0 - DZ / 2}",
+        f"rows: {NY}",
+        f"cols: {NX}",
+        f"levels: {NZ}",
+    ]
+    for k in range(NZ):
+        for j in reversed(range(NY)):
+            lines.append(
+                " ".join(
+                    "*" if values[i][j][k] == FILL else str(values[i][j][k])
+                    for i in range(NX)
+                )
+            )
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def sbrt_dir(name):
+    env = gs.gisenv()
+    return os.path.join(
+        env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"], "sbrt", name
+    )
+
+
+def stacks_bytes(name):
+    with open(os.path.join(sbrt_dir(name), "stacks"), "rb") as f:
+        return f.read()
+
+
+class TestImportNetcdf(TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.tmp = tempfile.mkdtemp(prefix="sbrt_import_")
+        cls.values = geotop_like(7)
+        cls.reference = os.path.join(cls.tmp, "geotop.nc")
+        write_netcdf(cls.reference, cls.values)
+        ascii3d = os.path.join(cls.tmp, "geotop.txt")
+        write_ascii3d(ascii3d, cls.values)
+        cls.runModule("r3.in.ascii", input=ascii3d, output="source", overwrite=True)
+        cls.runModule("g.region", raster_3d="source")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def path(self, name):
+        return os.path.join(self.tmp, name)
+
+    def count_differences(self, a, b):
+        self.runModule(
+            "r3.mapcalc",
+            overwrite=True,
+            expression=f"diff = if(isnull({a}) && isnull({b}), 0, "
+            f"if(isnull({a}) || isnull({b}), 1, {a} != {b}))",
+        )
+        stats = gs.parse_command("r3.univar", map="diff", flags="g")
+        return int(stats["n"]), float(stats["sum"])
+
+    def test_round_trip_equals_r3_in_ascii(self):
+        """file -> SBRT (two bands: memory=1) -> -r equals the voxels as
+        r3.in.ascii reads them, nulls included; the frame is the file's."""
+        self.assertModule(
+            "r3.sbrt.convert", file=self.reference, variable="lithok",
+            output="geotop", memory=1,
+        )
+        frame = gs.parse_command("r3.sbrt.convert", flags="g", sbrt="geotop")
+        region = gs.region(region3d=True)
+        for key in ("north", "south", "east", "west", "top", "bottom"):
+            self.assertAlmostEqual(
+                float(frame[key]), float(region[key[0]]), places=6
+            )
+        self.assertEqual(
+            (int(frame["rows"]), int(frame["cols"]), int(frame["depths"])),
+            (NY, NX, NZ),
+        )
+        self.assertModule("r3.sbrt.convert", flags="r", sbrt="geotop", output="back")
+        n, differing = self.count_differences("source", "back")
+        self.assertEqual(n, NX * NY * NZ)
+        self.assertEqual(differing, 0)
+        nulls = sum(v == FILL for p in self.values for c in p for v in c)
+        univar = gs.parse_command("r3.univar", map="back", flags="g")
+        self.assertEqual(int(univar["null_cells"]), nulls)
+
+    def test_any_axis_order_and_direction_gives_the_same_stacks(self):
+        """z fastest or slowest, x/y descending, depths positive down: the
+        same SBRT, byte for byte."""
+        self.assertModule(
+            "r3.sbrt.convert", file=self.reference, variable="lithok",
+            output="ref",
+        )
+        expected = stacks_bytes("ref")
+        variants = {
+            "zyx": dict(order=("z", "y", "x")),
+            "yxz_desc": dict(order=("y", "x", "z"), descending=("x", "y")),
+            "depth": dict(order=("x", "z", "y"), descending=("z",), depth_down=True),
+        }
+        for name, kwargs in variants.items():
+            path = self.path(name + ".nc")
+            write_netcdf(path, self.values, **kwargs)
+            self.assertModule(
+                "r3.sbrt.convert", file=path, variable="lithok", output=name,
+                memory=1,
+            )
+            self.assertEqual(stacks_bytes(name), expected, name)
+
+    def test_labels_come_from_flag_meanings(self):
+        self.assertModule(
+            "r3.sbrt.convert", file=self.reference, variable="lithok",
+            output="labelled",
+        )
+        report = gs.read_command("r3.sbrt.convert", flags="p", sbrt="labelled")
+        self.assertIn("anthropogenic", report)
+        self.assertIn("peat", report)
+        with open(os.path.join(sbrt_dir("labelled"), "cats")) as f:
+            self.assertIn("3:clay", f.read())
+
+    def test_p_lists_the_variables(self):
+        listing = gs.read_command("r3.sbrt.convert", flags="p", file=self.reference)
+        self.assertIn("lithok", listing)
+        self.assertIn("Int16", listing)
+        self.assertIn("(x,y,z) = (30,60,100)", listing)
+        shell = gs.read_command("r3.sbrt.convert", flags="g", file=self.reference)
+        self.assertIn("variable=lithok|type=Int16|dimensions=x,y,z|sizes=30,60,100",
+                      shell)
+
+    def test_float_variable_needs_rules(self):
+        path = self.path("float.nc")
+        write_netcdf(path, self.values, variable_type="float")
+        self.assertModuleFail("r3.sbrt.convert", file=path, variable="lithok",
+                              output="f")
+        run = subprocess.run(
+            ["r3.sbrt.convert", f"file={path}", "variable=lithok", "output=f"],
+            capture_output=True, text=True,
+        )
+        self.assertIn("rules=", run.stderr)
+        rules = self.path("rules.txt")
+        with open(rules, "w") as f:
+            f.write("1:3:1:shallow\n4:9:2:deep\n")
+        self.assertModule("r3.sbrt.convert", file=path, variable="lithok",
+                          output="f", rules=rules)
+        report = gs.read_command("r3.sbrt.convert", flags="p", sbrt="f")
+        self.assertIn("Materials:     2", report)
+        self.assertIn("shallow", report)
+
+
+def error_of(*args):
+    run = subprocess.run(["r3.sbrt.convert", *args], capture_output=True, text=True)
+    return run.returncode, " ".join(run.stderr.split())
+
+
+class TestImportBadFiles(TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="sbrt_import_bad_")
+        cls.values = geotop_like(3)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def refused(self, path, expected, variable="lithok", output="bad"):
+        code, message = error_of(f"file={path}", f"variable={variable}",
+                                 f"output={output}")
+        self.assertNotEqual(code, 0, message)
+        self.assertIn(expected, message)
+        self.assertNotIn("terminate", message)
+        self.assertFalse(os.path.exists(sbrt_dir(output)), path)
+        return message
+
+    def cdl(self, name, text):
+        path = os.path.join(self.tmp, name + ".nc")
+        with open(path + ".cdl", "w") as f:
+            f.write(text)
+        subprocess.run(["ncgen", "-k", "nc4", "-o", path, path + ".cdl"], check=True)
+        return path
+
+    def test_missing_variable_lists_the_others(self):
+        path = os.path.join(self.tmp, "ok.nc")
+        write_netcdf(path, self.values)
+        message = self.refused(path, "has no variable 'strat'", variable="strat")
+        self.assertIn("lithok", message)
+
+    def test_2d_variable(self):
+        path = self.cdl("flat", """netcdf flat { dimensions: x = 2 ; y = 2 ;
+variables: int x(x) ; int y(y) ; short top(y, x) ;
+data: x = 1, 2 ; y = 1, 2 ; top = 1, 2, 3, 4 ; }""")
+        self.refused(path, "has 2 dimensions", variable="top")
+
+    def test_irregular_and_non_monotonic_coordinates(self):
+        path = os.path.join(self.tmp, "irregular.nc")
+        xs = axis_values(X0, DX, NX, False)
+        xs[5] += 30
+        write_netcdf(path, self.values, coords_override={"x": xs})
+        self.refused(path, "not evenly spaced")
+        path = os.path.join(self.tmp, "zigzag.nc")
+        ys = axis_values(Y0, DY, NY, False)
+        ys[3], ys[4] = ys[4], ys[3]
+        write_netcdf(path, self.values, coords_override={"y": ys})
+        self.refused(path, "not monotonic")
+
+    def test_dimension_of_length_zero(self):
+        path = self.cdl("empty", """netcdf empty { dimensions: x = 2 ; y = 2 ;
+z = UNLIMITED ; variables: int x(x) ; int y(y) ; float z(z) ;
+short lithok(z, y, x) ; data: x = 1, 2 ; y = 1, 2 ; }""")
+        self.refused(path, "has length 0")
+
+    def test_truncated_and_garbage_files(self):
+        good = os.path.join(self.tmp, "good.nc")
+        write_netcdf(good, self.values)
+        with open(good, "rb") as f:
+            data = f.read()
+        truncated = os.path.join(self.tmp, "truncated.nc")
+        with open(truncated, "wb") as f:
+            f.write(data[: len(data) * 2 // 3])
+        code, message = error_of(f"file={truncated}", "variable=lithok",
+                                 "output=bad")
+        self.assertNotEqual(code, 0)
+        self.assertTrue("truncated" in message or "cannot be read" in message,
+                        message)
+        self.assertFalse(os.path.exists(sbrt_dir("bad")))
+        garbage = os.path.join(self.tmp, "garbage.nc")
+        with open(garbage, "wb") as f:
+            f.write(b"CDF\x01" + bytes(range(256)) * 4)
+        self.refused(garbage, "cannot be read as a multidimensional file")
+        self.refused(os.path.join(self.tmp, "absent.nc"), "absent.nc")
+
+    def test_crs_is_checked_against_the_location(self):
+        path = os.path.join(self.tmp, "rd.nc")
+        write_netcdf(
+            path, self.values,
+            extra=f'  int crs ; crs:epsg_code = "{RD_NEW}" ;\n'
+            '  lithok:grid_mapping = "crs" ;',
+        )
+        message = self.refused(path, "differs from the location's")
+        self.assertIn("28992", message)
+        self.assertIn("-o", message)
+        self.assertModule("r3.sbrt.convert", flags="o", file=path,
+                          variable="lithok", output="rd_forced")
+        # in a location of the file's CRS it goes in without -o
+        env = gs.gisenv()
+        location = os.path.join(env["GISDBASE"], "rd_new_test")
+        shutil.rmtree(location, ignore_errors=True)
+        subprocess.run(["grass", "-c", RD_NEW, location, "-e"], check=True,
+                       capture_output=True)
+        gisrc = os.path.join(self.tmp, "gisrc")
+        with open(gisrc, "w") as f:
+            f.write(f"GISDBASE: {env['GISDBASE']}\nLOCATION_NAME: rd_new_test\n"
+                    "MAPSET: PERMANENT\n")
+        run = subprocess.run(
+            ["r3.sbrt.convert", f"file={path}", "variable=lithok", "output=rd"],
+            capture_output=True, text=True, env=dict(os.environ, GISRC=gisrc),
+        )
+        shutil.rmtree(location, ignore_errors=True)
+        self.assertEqual(run.returncode, 0, run.stderr)
+
+
+if __name__ == "__main__":
+    test()
