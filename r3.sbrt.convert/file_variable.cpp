@@ -152,6 +152,32 @@ std::vector<double> coordinates_of(const GDALDimension &dim,
     return values;
 }
 
+struct SampleType {
+    GDALDataType gdal;
+    FileVariable::Sample sample;
+    size_t bytes;
+};
+constexpr SampleType SAMPLE_TYPES[] = {
+    {GDT_Byte, FileVariable::Sample::uint8, 1},
+#if GDAL_VERSION_NUM >= 3070000
+    {GDT_Int8, FileVariable::Sample::int8, 1},
+#endif
+    {GDT_Int16, FileVariable::Sample::int16, 2},
+    {GDT_UInt16, FileVariable::Sample::uint16, 2},
+    {GDT_Int32, FileVariable::Sample::int32, 4},
+    {GDT_UInt32, FileVariable::Sample::uint32, 4},
+    {GDT_Float32, FileVariable::Sample::float32, 4},
+    {GDT_Float64, FileVariable::Sample::float64, 8},
+};
+
+const SampleType &sample_type(FileVariable::Sample sample)
+{
+    for (const SampleType &t : SAMPLE_TYPES)
+        if (t.sample == sample)
+            return t;
+    return SAMPLE_TYPES[std::size(SAMPLE_TYPES) - 1];
+}
+
 std::shared_ptr<OGRSpatialReference> srs_from_text(const std::string &text)
 {
     if (text.empty())
@@ -225,6 +251,15 @@ FileVariable::FileVariable(const std::string &path, const std::string &name)
     if (has_scale || has_offset)
         sbrt::fail(where, " is packed (scale_factor/add_offset); unpack it "
                           "first, e.g. ncpdq -U");
+
+    for (const SampleType &t : SAMPLE_TYPES)
+        if (t.gdal == type.GetNumericDataType())
+            sample_ = t.sample;
+    // GDAL's netCDF driver gives signed bytes as Byte with this hint
+    if (type.GetNumericDataType() == GDT_Byte &&
+        !string_attribute(*array_, "_Unsigned").empty() &&
+        string_attribute(*array_, "_Unsigned") == "false")
+        sample_ = Sample::float64;
 
     const auto &dims = array_->GetDimensions();
     std::string dim_list;
@@ -368,7 +403,7 @@ std::shared_ptr<OGRSpatialReference> FileVariable::spatial_ref() const
 
 size_t FileVariable::band_size(size_t max_bytes) const
 {
-    const size_t row_bytes = easting().size * vertical().size * sizeof(double);
+    const size_t row_bytes = easting().size * vertical().size * sample_bytes();
     size_t rows = std::max<size_t>(1, max_bytes / row_bytes);
     const std::vector<GUInt64> blocks = array_->GetBlockSize();
     const size_t chunk = size_t(blocks[dim_of_axis_[1]]);
@@ -377,25 +412,36 @@ size_t FileVariable::band_size(size_t max_bytes) const
     return std::min(rows, northing().size);
 }
 
-void FileVariable::read_band(size_t first, size_t count, double *values) const
+size_t FileVariable::sample_bytes() const
+{
+    return sample_type(sample_).bytes;
+}
+
+FileVariable::BandStrides FileVariable::read_band(size_t first, size_t count,
+                                                  void *values) const
 {
     const size_t n = array_->GetDimensionCount();
     std::vector<GUInt64> start(n, 0);
     std::vector<size_t> counts(n, 1);
-    std::vector<GPtrDiff_t> strides(n, 0);
-    const size_t nz = vertical().size, nx = easting().size;
-    counts[dim_of_axis_[0]] = nx;
-    strides[dim_of_axis_[0]] = GPtrDiff_t(nz);
+    counts[dim_of_axis_[0]] = easting().size;
     start[dim_of_axis_[1]] = first;
     counts[dim_of_axis_[1]] = count;
-    strides[dim_of_axis_[1]] = GPtrDiff_t(nx * nz);
-    counts[dim_of_axis_[2]] = nz;
-    strides[dim_of_axis_[2]] = 1;
+    counts[dim_of_axis_[2]] = vertical().size;
+    // the slab's own C order: the last dimension varies fastest
+    std::vector<GPtrDiff_t> strides(n, 0);
+    size_t stride = 1;
+    for (size_t d = n; d-- > 0;) {
+        strides[d] = GPtrDiff_t(stride);
+        stride *= counts[d];
+    }
     QuietGdalErrors quiet;
     if (!array_->Read(start.data(), counts.data(), nullptr, strides.data(),
-                      GDALExtendedDataType::Create(GDT_Float64), values))
+                      GDALExtendedDataType::Create(sample_type(sample_).gdal),
+                      values))
         sbrt::fail("variable '", name_, "' of <", path_,
                    ">: reading northing indices ", first + 1, "-", first + count,
                    " failed", QuietGdalErrors::last_message(),
                    "; the file may be truncated or damaged");
+    return {size_t(strides[dim_of_axis_[0]]), size_t(strides[dim_of_axis_[1]]),
+            size_t(strides[dim_of_axis_[2]])};
 }

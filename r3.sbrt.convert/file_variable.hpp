@@ -67,9 +67,21 @@ public:
     /// Northing index count per read that keeps a band near `max_bytes`,
     /// a multiple of the file's chunk where that fits.
     size_t band_size(size_t max_bytes) const;
-    /// Reads northing indices [first, first + count) as doubles into
-    /// `values`, laid out [northing][easting][vertical] in file index order.
-    void read_band(size_t first, size_t count, double *values) const;
+    /// Element strides of the easting, northing and vertical indices in
+    /// a band read by read_band.
+    struct BandStrides {
+        size_t easting, northing, vertical;
+    };
+    /// The type values are read in: the file's own where listed (GDAL then
+    /// copies without converting), else float64.
+    enum class Sample { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
+    Sample sample() const { return sample_; }
+    /// Bytes of one value read.
+    size_t sample_bytes() const;
+    /// Reads northing indices [first, first + count) as sample() values
+    /// into `values` in the file's own index order; returns where each
+    /// index steps.
+    BandStrides read_band(size_t first, size_t count, void *values) const;
 
 private:
     std::string path_, name_;
@@ -78,6 +90,7 @@ private:
     size_t dim_of_axis_[3] = {0, 0, 0}; ///< array dimension of each axis
     sbrt::RegularAxis axes_[3];
     sbrt::MissingValues missing_;
+    Sample sample_ = Sample::float64;
 };
 
 #endif

@@ -266,6 +266,17 @@ class TestImportNetcdf(TestCase):
         report = gs.read_command("r3.sbrt.convert", flags="p", sbrt="f")
         self.assertIn("Materials:     2", report)
         self.assertIn("shallow", report)
+        # values no rule covers become empty, counted voxel by voxel
+        with open(rules, "w") as f:
+            f.write("1:3:1:shallow\n")
+        uncovered = sum(3 < v for p in self.values for c in p for v in c)
+        run = subprocess.run(
+            ["r3.sbrt.convert", f"file={path}", "variable=lithok",
+             "output=f3", f"rules={rules}"],
+            capture_output=True, text=True,
+        )
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn(f"{uncovered} voxels matched no rule", " ".join(run.stderr.split()))
 
 
 def error_of(*args):

@@ -39,6 +39,8 @@ public:
         const uint8_t *p = static_cast<const uint8_t *>(data);
         bytes_.insert(bytes_.end(), p, p + size);
     }
+    /// Room for `size` bytes in all, so appending does not reallocate.
+    void reserve(size_t size) { bytes_.reserve(size); }
     size_t size() const { return bytes_.size(); }
     std::vector<uint8_t> &bytes() { return bytes_; }
 

@@ -18,22 +18,40 @@ ColumnStackBuilder::ColumnStackBuilder(const Frame &frame) : frame_(frame)
 
 void ColumnStackBuilder::add_column(const int32_t *classes)
 {
+    runs_.clear();
+    for (int z = 0; z < frame_.depths; ++z)
+        if (z == 0 || classes[z] != classes[z - 1])
+            runs_.push_back({classes[z], uint32_t(z + 1)});
+        else
+            runs_.back().top = uint32_t(z + 1);
+    add_runs(runs_.data(), runs_.size());
+}
+
+void ColumnStackBuilder::add_runs(const ClassRun *runs, size_t count)
+{
     if (cells_done() >= frame_.cells())
         fail("ColumnStackBuilder: more columns than the frame's ",
              frame_.cells(), " cells");
-    const int depths = frame_.depths;
-    size_t solid_end = intervals_.size(); // after the last non-EMPTY run
-    int z = 0;
-    while (z < depths) {
-        const int32_t id = classes[z];
-        int top = z + 1;
-        while (top < depths && classes[top] == id)
-            ++top;
-        const uint32_t material = table_.material_of(id);
-        intervals_.push_back({material, float(top)});
+    if (count == 0 || runs[count - 1].top != uint32_t(frame_.depths))
+        fail("ColumnStackBuilder: a column's runs must reach the top (",
+             frame_.depths, ")");
+    for (size_t r = 1; r < count; ++r)
+        if (runs[r].top <= runs[r - 1].top)
+            fail("ColumnStackBuilder: run tops must rise (", runs[r].top,
+                 " after ", runs[r - 1].top, ")");
+    if (runs[0].top == 0)
+        fail("ColumnStackBuilder: a run must hold a voxel (top 0)");
+    const size_t column_start = intervals_.size();
+    size_t solid_end = column_start; // after the last non-EMPTY run
+    for (size_t r = 0; r < count; ++r) {
+        const uint32_t material = table_.material_of(runs[r].id);
+        if (intervals_.size() > column_start &&
+            intervals_.back().material == material)
+            intervals_.back().top = float(runs[r].top);
+        else
+            intervals_.push_back({material, float(runs[r].top)});
         if (material != EMPTY)
             solid_end = intervals_.size();
-        z = top;
     }
     // air above the highest solid run is not stored
     intervals_.resize(solid_end);

@@ -21,6 +21,14 @@ public:
     /// The column of the next cell (row-major, row 0 north): frame.depths
     /// class ids from the bottom up (NULL_CLASS = empty).
     void add_column(const int32_t *classes);
+    /// \brief Runs of one class up to voxel boundary `top` (exclusive).
+    struct ClassRun {
+        int32_t id;
+        uint32_t top;
+    };
+    /// The column of the next cell as runs from the bottom up, their tops
+    /// rising to frame.depths; neighbours of one class are merged.
+    void add_runs(const ClassRun *runs, size_t count);
     /// Cells added so far.
     uint64_t cells_done() const { return offsets_.size() - 1; }
     /// The model once every cell has its column; `legend` gives labels and
@@ -32,6 +40,7 @@ private:
     std::vector<uint32_t> offsets_;
     Intervals intervals_;
     MaterialTable table_;
+    std::vector<ClassRun> runs_; ///< add_column's runs
 };
 
 } // namespace sbrt

@@ -61,8 +61,13 @@ std::vector<uint8_t> encode_stacks(const Model &model)
     const Frame &f = model.frame();
     const auto &materials = model.materials();
     const auto &intervals = model.intervals();
+    const Offsets o = layout(materials.size(), f.cells(), intervals.size());
 
+    // the body after room for the header, written in place: one buffer
     ByteWriter body;
+    body.reserve(STACKS_HEADER_SIZE + materials.size() * 8 + f.cells() * 4 +
+                 intervals.size() * sizeof(Interval));
+    body.raw(std::vector<uint8_t>(STACKS_HEADER_SIZE).data(), STACKS_HEADER_SIZE);
     for (const Material &m : materials) {
         body.i32(m.id);
         body.u8(m.red);
@@ -74,13 +79,18 @@ std::vector<uint8_t> encode_stacks(const Model &model)
     for (uint64_t c = 0; c < f.cells(); ++c)
         body.u32(model.stack_size(c));
     const size_t intervals_at = body.size();
-    for (const Interval &iv : intervals) {
-        body.u32(iv.material);
-        body.f32(iv.top);
+    if (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) {
+        // the file's record is the host's (load_intervals reads it so too)
+        body.raw(intervals.data(), intervals.size() * sizeof(Interval));
+    }
+    else {
+        for (const Interval &iv : intervals) {
+            body.u32(iv.material);
+            body.f32(iv.top);
+        }
     }
     const uint8_t *b = body.bytes().data();
 
-    const Offsets o = layout(materials.size(), f.cells(), intervals.size());
     ByteWriter head;
     head.raw(MAGIC, sizeof MAGIC);
     head.u32(FORMAT_VERSION);
@@ -97,14 +107,15 @@ std::vector<uint8_t> encode_stacks(const Model &model)
     head.u64(o.materials);
     head.u64(o.counts);
     head.u64(o.intervals);
-    head.u32(crc32_of(b, counts_at));
+    const size_t start = STACKS_HEADER_SIZE;
+    head.u32(crc32_of(b + start, counts_at - start));
     head.u32(crc32_of(b + counts_at, intervals_at - counts_at));
     head.u32(crc32_of(b + intervals_at, body.size() - intervals_at));
     head.u32(crc32_of(head.bytes().data(), head.size()));
     SBRT_CHECK_EQ(head.size(), size_t(STACKS_HEADER_SIZE), "encode_stacks");
 
-    head.raw(b, body.size());
-    return std::move(head.bytes());
+    std::copy(head.bytes().begin(), head.bytes().end(), body.bytes().begin());
+    return std::move(body.bytes());
 }
 
 namespace {

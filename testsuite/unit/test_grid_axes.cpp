@@ -165,3 +165,30 @@ TEST(ColumnStackBuilder, CountsColumns)
     const Model m = builder.finish();
     EXPECT_EQ(m.intervals().size(), 2u); // the air above is not stored
 }
+
+TEST(ColumnStackBuilder, RunsMergeAndMustRise)
+{
+    Frame f;
+    f.rows = 1;
+    f.cols = 2;
+    f.depths = 6;
+    ColumnStackBuilder builder(f);
+    // two raw values of one class, a cave, then air: 2 intervals stored
+    const ColumnStackBuilder::ClassRun runs[] = {
+        {4, 2}, {4, 3}, {NULL_CLASS, 4}, {7, 5}, {NULL_CLASS, 6}};
+    builder.add_runs(runs, 5);
+    const ColumnStackBuilder::ClassRun falling[] = {{4, 3}, {5, 3}, {6, 6}};
+    EXPECT_THROW(builder.add_runs(falling, 3), Error);
+    const ColumnStackBuilder::ClassRun short_of_top[] = {{4, 5}};
+    EXPECT_THROW(builder.add_runs(short_of_top, 1), Error);
+    const ColumnStackBuilder::ClassRun whole[] = {{9, 6}};
+    builder.add_runs(whole, 1);
+    const Model m = builder.finish();
+    m.validate();
+    ASSERT_EQ(m.intervals().size(), 4u);
+    EXPECT_EQ(m.stack_size(0), 3u); // 4 up to 3, EMPTY to 4, 7 to 5
+    EXPECT_EQ(m.intervals()[0].top, 3.0f);
+    EXPECT_EQ(m.intervals()[1].material, EMPTY);
+    EXPECT_EQ(m.intervals()[2].top, 5.0f);
+    EXPECT_EQ(m.intervals()[3].top, 6.0f);
+}

@@ -1,0 +1,187 @@
+/****************************************************************************
+ * MODULE:    testsuite/benchmark/geotop_like (r3.sbrt addon)
+ * PURPOSE:   Writes a deterministic GeoTOP-like NetCDF file of any size
+ *            (lithoclass int16 'lithok' (x, y, z), z fastest, 100 m x 100 m
+ *            x 0.5 m, _FillValue -127, EPSG:28992, deflate-compressed
+ *            chunks), band by band of rows; or reads the variable once
+ *            through the netCDF library (the import's baseline)
+ * USAGE:     geotop_like write FILE NX NY NZ | geotop_like read FILE
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <netcdf.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr short FILL = -127;
+constexpr int LAYERS = 30;   // layer boundaries per column, some merge
+constexpr size_t CHUNK = 16; // chunk of 16 x 16 whole columns
+
+void check(int status, const char *what)
+{
+    if (status != NC_NOERR) {
+        std::fprintf(stderr, "geotop_like: %s: %s\n", what, nc_strerror(status));
+        std::exit(1);
+    }
+}
+
+/// Deterministic noise in [0, 1) of integer coordinates.
+double noise(uint64_t a, uint64_t b, uint64_t c)
+{
+    uint64_t h = a * 0x9E3779B97F4A7C15ull ^ (b + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full ^
+                 (c + 1) * 0x165667B19E3779F9ull;
+    h ^= h >> 31;
+    h *= 0xD6E8FEB86659FD93ull;
+    h ^= h >> 32;
+    return double(h >> 11) / double(1ull << 53);
+}
+
+/// Whether (i, j) lies on land: a country-like blob inside the box.
+bool on_land(size_t i, size_t j, size_t nx, size_t ny)
+{
+    const double u = double(i) / nx - 0.5, v = double(j) / ny - 0.5;
+    const double r = 0.42 + 0.05 * std::sin(9 * std::atan2(v, u)) +
+                     0.03 * std::sin(23 * u + 7 * v);
+    return u * u + v * v < r * r && !(u < -0.25 && v > 0.3);
+}
+
+/// The column (z from the bottom) of cell (i, j): layers of lithoclasses
+/// 1-9 whose boundaries undulate smoothly, fill above the ground level.
+void column(size_t i, size_t j, size_t nz, short *out)
+{
+    const double x = double(i), y = double(j);
+    const double ground = nz * (0.82 + 0.08 * std::sin(x / 211) * std::cos(y / 173)) +
+                          2 * noise(i, j, 0);
+    size_t z = 0;
+    for (int layer = 0; layer < LAYERS && z < nz; ++layer) {
+        const double mean = ground / LAYERS;
+        double top = (layer + 1) * mean +
+                     0.6 * mean * std::sin(x / (47 + 7 * layer) + layer) *
+                         std::cos(y / (61 + 5 * layer) - layer);
+        if (layer == LAYERS - 1 || top > ground)
+            top = ground;
+        const short cls = short(1 + (layer * 7 + int(x / 400) + int(y / 300) +
+                                     int(3 * noise(i / 8, j / 8, layer))) % 9);
+        for (; z < nz && double(z) < top; ++z)
+            out[z] = cls;
+    }
+    for (; z < nz; ++z)
+        out[z] = FILL;
+}
+
+int write_file(const char *path, size_t nx, size_t ny, size_t nz)
+{
+    int nc, dx, dy, dz, vx, vy, vz, vl, vc;
+    check(nc_create(path, NC_NETCDF4 | NC_CLOBBER, &nc), path);
+    check(nc_def_dim(nc, "x", nx, &dx), "x");
+    check(nc_def_dim(nc, "y", ny, &dy), "y");
+    check(nc_def_dim(nc, "z", nz, &dz), "z");
+    check(nc_def_var(nc, "x", NC_INT, 1, &dx, &vx), "x");
+    check(nc_def_var(nc, "y", NC_INT, 1, &dy, &vy), "y");
+    check(nc_def_var(nc, "z", NC_FLOAT, 1, &dz, &vz), "z");
+    check(nc_def_var(nc, "crs", NC_INT, 0, nullptr, &vc), "crs");
+    const int dims[3] = {dx, dy, dz};
+    check(nc_def_var(nc, "lithok", NC_SHORT, 3, dims, &vl), "lithok");
+    const size_t chunks[3] = {CHUNK, CHUNK, nz};
+    check(nc_def_var_chunking(nc, vl, NC_CHUNKED, chunks), "chunking");
+    check(nc_def_var_deflate(nc, vl, 1, 1, 1), "deflate");
+    check(nc_def_var_fill(nc, vl, 0, &FILL), "fill");
+    check(nc_put_att_short(nc, vl, "missing_value", NC_SHORT, 1, &FILL), "att");
+    auto text = [&](int var, const char *key, const std::string &value) {
+        check(nc_put_att_text(nc, var, key, value.size(), value.c_str()), key);
+    };
+    text(vx, "standard_name", "projection_x_coordinate");
+    text(vx, "units", "m");
+    text(vy, "standard_name", "projection_y_coordinate");
+    text(vy, "units", "m");
+    text(vz, "positive", "up");
+    text(vz, "units", "m");
+    text(vc, "epsg_code", "EPSG:28992");
+    text(vl, "long_name", "lithoclass");
+    text(vl, "grid_mapping", "crs");
+    text(vl, "flag_meanings", "anthropogenic peat clay clayey_sand fine_sand "
+                              "medium_sand coarse_sand gravel shells");
+    const short flags[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+    check(nc_put_att_short(nc, vl, "flag_values", NC_SHORT, 9, flags), "att");
+    text(NC_GLOBAL, "Conventions", "CF-1.4");
+    text(NC_GLOBAL, "title", "GeoTOP-like synthetic lithoclass model (r3.sbrt benchmark)");
+    check(nc_enddef(nc), "enddef");
+
+    std::vector<int> xs(nx), ys(ny);
+    std::vector<float> zs(nz);
+    for (size_t i = 0; i < nx; ++i)
+        xs[i] = int(13650 + 100 * i);
+    for (size_t j = 0; j < ny; ++j)
+        ys[j] = int(306050 + 100 * j);
+    for (size_t k = 0; k < nz; ++k)
+        zs[k] = float(-49.75 + 0.5 * k);
+    check(nc_put_var_int(nc, vx, xs.data()), "x");
+    check(nc_put_var_int(nc, vy, ys.data()), "y");
+    check(nc_put_var_float(nc, vz, zs.data()), "z");
+
+    // bands of CHUNK rows of y: whole chunks per write
+    std::vector<short> band(nx * CHUNK * nz);
+    for (size_t j0 = 0; j0 < ny; j0 += CHUNK) {
+        const size_t rows = std::min(CHUNK, ny - j0);
+        for (size_t i = 0; i < nx; ++i)
+            for (size_t j = 0; j < rows; ++j) {
+                short *out = band.data() + (i * rows + j) * nz;
+                if (on_land(i, j0 + j, nx, ny))
+                    column(i, j0 + j, nz, out);
+                else
+                    std::fill(out, out + nz, FILL);
+            }
+        const size_t start[3] = {0, j0, 0}, count[3] = {nx, rows, nz};
+        check(nc_put_vara_short(nc, vl, start, count, band.data()), "write");
+    }
+    check(nc_close(nc), "close");
+    return 0;
+}
+
+int read_file(const char *path)
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    int nc, vl, dims[3];
+    check(nc_open(path, NC_NOWRITE, &nc), path);
+    check(nc_inq_varid(nc, "lithok", &vl), "lithok");
+    check(nc_inq_vardimid(nc, vl, dims), "dims");
+    size_t n[3];
+    for (int d = 0; d < 3; ++d)
+        check(nc_inq_dimlen(nc, dims[d], &n[d]), "dim");
+    std::vector<short> band(n[0] * CHUNK * n[2]);
+    uint64_t sum = 0;
+    for (size_t j0 = 0; j0 < n[1]; j0 += CHUNK) {
+        const size_t rows = std::min(CHUNK, n[1] - j0);
+        const size_t start[3] = {0, j0, 0}, count[3] = {n[0], rows, n[2]};
+        check(nc_get_vara_short(nc, vl, start, count, band.data()), "read");
+        for (size_t k = 0; k < n[0] * rows * n[2]; ++k)
+            sum += uint16_t(band[k]);
+    }
+    check(nc_close(nc), "close");
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("read_once_s=%.3f voxels=%llu checksum=%llu\n", s,
+                (unsigned long long)(n[0] * n[1] * n[2]), (unsigned long long)sum);
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    if (argc == 6 && std::string(argv[1]) == "write")
+        return write_file(argv[2], std::strtoul(argv[3], nullptr, 10),
+                          std::strtoul(argv[4], nullptr, 10),
+                          std::strtoul(argv[5], nullptr, 10));
+    if (argc == 3 && std::string(argv[1]) == "read")
+        return read_file(argv[2]);
+    std::fprintf(stderr, "usage: geotop_like write FILE NX NY NZ | geotop_like read FILE\n");
+    return 2;
+}
