@@ -337,6 +337,9 @@ void AnnotatedPng::finish()
     for (size_t i = 0; i < seen_.size(); ++i)
         if (seen_[i])
             shown.push_back(&annotations_.classes[i]);
+    // by class id, as a legend is read (materials are numbered as met)
+    std::stable_sort(shown.begin(), shown.end(),
+                     [](const LegendClass *a, const LegendClass *b) { return a->id < b->id; });
     const Panel panel(Canvas(1, 1).cr(), l, annotations_, std::move(shown), cols_, rows_);
     Canvas canvas(panel.width, rows_);
     draw_panel(canvas.cr(), l, annotations_, panel, rows_);

@@ -53,7 +53,7 @@ echo "top view ${cols}x${rows}: ${top_s} s, peak RSS $((top_kb / 1024)) MiB"
 echo "perspective 1056x884: ${per_s} s, peak RSS $((per_kb / 1024)) MiB"
 echo "cross section 1056x884: ${sec_s} s, peak RSS $((sec_kb / 1024)) MiB"
 awk -v st=$stacks -v iv=$intervals -v v=$voxels -v c=$((rows * cols)) 'BEGIN {
-  printf "stacks file: %d bytes = %.2f bytes per interval including the index (%.2f per cell); 4-byte voxels: %d bytes (%.1f %% smaller)\n",
+  printf "stacks file: %.0f bytes = %.2f bytes per interval including the index (%.2f per cell); 4-byte voxels: %.0f bytes (%.1f %% smaller)\n",
     st, st / iv, (st - 8 * iv) / c, 4 * v, 100 * (1 - st / (4 * v)) }'
 if [ "$expand" = 1 ]; then
     read -r back_s back_kb < <(t r3.sbrt.convert --o -r sbrt="$name" output="${name}_voxels")
