@@ -1,12 +1,15 @@
 """
 MODULE:    testsuite/geomodel_fixture.py (r3.sbrt addon)
-PURPOSE:   The set-up the render tests share: the synthetic T model as a 3D
-           raster and an SBRT, its slices, and the class of its topmost
-           non-null voxel per cell (an independent r3.to.rast + r.mapcalc)
+PURPOSE:   The set-up the tests share: the synthetic T model as a 3D
+           raster and an SBRT, its slices, the class of its topmost
+           non-null voxel per cell (an independent r3.to.rast + r.mapcalc),
+           and 3D rasters compared voxel by voxel
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
 import subprocess
+
+import grass.script as gs
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MAKE_GEOMODEL = os.path.join(HERE, "..", "tools", "make_geomodel.sh")
@@ -34,3 +37,17 @@ def image_region(case, cols, rows):
     the size= of that image."""
     case.runModule("g.region", n=rows, s=0, e=cols, w=0, res=1)
     return (cols, rows)
+
+
+class Raster3dCompare:
+    """Voxels where two 3D rasters differ, nulls included (r3.mapcalc)."""
+
+    def count_differences(self, a, b):
+        self.runModule(
+            "r3.mapcalc",
+            overwrite=True,
+            expression=f"sbrt_diff = if(isnull({a}) && isnull({b}), 0, "
+            f"if(isnull({a}) || isnull({b}), 1, {a} != {b}))",
+        )
+        stats = gs.parse_command("r3.univar", map="sbrt_diff", flags="g")
+        return int(stats["n"]), float(stats["sum"])

@@ -11,6 +11,8 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
+from geomodel_fixture import Raster3dCompare
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 MAKE_GEOMODEL = os.path.join(HERE, "..", "tools", "make_geomodel.sh")
 
@@ -20,20 +22,6 @@ def sbrt_dir(name):
     return os.path.join(
         env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"], "sbrt", name
     )
-
-
-class Raster3dCompare:
-    """Voxels where two 3D rasters differ, nulls included (r3.mapcalc)."""
-
-    def count_differences(self, a, b):
-        self.runModule(
-            "r3.mapcalc",
-            overwrite=True,
-            expression=f"sbrt_diff = if(isnull({a}) && isnull({b}), 0, "
-            f"if(isnull({a}) || isnull({b}), 1, {a} != {b}))",
-        )
-        stats = gs.parse_command("r3.univar", map="sbrt_diff", flags="g")
-        return int(stats["n"]), float(stats["sum"])
 
 
 class TestConvertSyntheticModel(TestCase, Raster3dCompare):

@@ -15,6 +15,8 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
+from geomodel_fixture import Raster3dCompare
+
 FILL = -127
 NX, NY, NZ = 30, 60, 100  # 24 kB of doubles a row: memory=1 reads 43 rows
 X0, Y0, Z0 = 120000, 480000, -49.75  # cell centres, as in GeoTOP
@@ -150,7 +152,7 @@ def stacks_bytes(name):
         return f.read()
 
 
-class TestImportNetcdf(TestCase):
+class TestImportNetcdf(TestCase, Raster3dCompare):
     @classmethod
     def setUpClass(cls):
         cls.use_temp_region()
@@ -170,16 +172,6 @@ class TestImportNetcdf(TestCase):
 
     def path(self, name):
         return os.path.join(self.tmp, name)
-
-    def count_differences(self, a, b):
-        self.runModule(
-            "r3.mapcalc",
-            overwrite=True,
-            expression=f"diff = if(isnull({a}) && isnull({b}), 0, "
-            f"if(isnull({a}) || isnull({b}), 1, {a} != {b}))",
-        )
-        stats = gs.parse_command("r3.univar", map="diff", flags="g")
-        return int(stats["n"]), float(stats["sum"])
 
     def test_round_trip_equals_r3_in_ascii(self):
         """file -> SBRT (two bands: memory=1) -> -r equals the voxels as
