@@ -199,11 +199,19 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     // doubles keep every sample type aligned
     const size_t doubles = (band * nx * nz * variable.sample_bytes() + 7) / 8;
     Buffer buffers[2] = {Buffer(doubles), Buffer(doubles)};
+    // a band's rows and the first northing index they read (the file's
+    // northing may run south to north)
+    struct Rows {
+        size_t count, first;
+    };
+    auto rows_of = [&](size_t row0) {
+        const size_t count = std::min(band, ny - row0);
+        return Rows{count, y.ascending ? ny - row0 - count : row0};
+    };
     auto read = [&](size_t row0, Buffer &buffer) {
-        const size_t rows = std::min(band, ny - row0);
-        const size_t first = y.ascending ? ny - row0 - rows : row0;
-        return std::async(std::launch::async, [&variable, &buffer, first, rows] {
-            return variable.read_band(first, rows, buffer.data());
+        const Rows rows = rows_of(row0);
+        return std::async(std::launch::async, [&variable, &buffer, rows] {
+            return variable.read_band(rows.first, rows.count, buffer.data());
         });
     };
     BandImport import(variable, classifier, builder);
@@ -213,10 +221,9 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
         const FileVariable::BandStrides step = pending.get();
         if (row0 + band < ny)
             pending = read(row0 + band, buffers[b ^ 1]);
-        const size_t rows = std::min(band, ny - row0);
-        const size_t first = y.ascending ? ny - row0 - rows : row0;
+        const Rows rows = rows_of(row0);
         try {
-            import.add(buffers[b].data(), step, row0, rows, first);
+            import.add(buffers[b].data(), step, row0, rows.count, rows.first);
         }
         catch (const sbrt::Error &e) {
             if (pending.valid())

@@ -56,6 +56,14 @@ GdalDatasetPtr open_multidim(const std::string &path)
     return dataset;
 }
 
+/// GDAL's name of a numeric type; "String" or "Compound" otherwise.
+std::string type_name_of(const GDALExtendedDataType &type)
+{
+    if (type.GetClass() != GEDTC_NUMERIC)
+        return type.GetClass() == GEDTC_STRING ? "String" : "Compound";
+    return GDALGetDataTypeName(type.GetNumericDataType());
+}
+
 std::string string_attribute(const GDALIHasAttribute &holder, const char *key)
 {
     const auto a = holder.GetAttribute(key);
@@ -221,10 +229,7 @@ std::vector<VariableSummary> list_file_variables(const std::string &path)
         if (v.name.size() > 1 && v.name[0] == '/' &&
             v.name.find('/', 1) == std::string::npos)
             v.name.erase(0, 1); // plain names for variables of the root
-        const GDALExtendedDataType &type = a->GetDataType();
-        v.type = type.GetClass() == GEDTC_NUMERIC
-                     ? GDALGetDataTypeName(type.GetNumericDataType())
-                     : type.GetClass() == GEDTC_STRING ? "String" : "Compound";
+        v.type = type_name_of(a->GetDataType());
         for (const auto &d : a->GetDimensions()) {
             v.dimensions.push_back(d->GetName());
             v.sizes.push_back(d->GetSize());
@@ -257,7 +262,6 @@ FileVariable::FileVariable(const std::string &path, const std::string &name)
             sample_ = t.sample;
     // GDAL's netCDF driver gives signed bytes as Byte with this hint
     if (type.GetNumericDataType() == GDT_Byte &&
-        !string_attribute(*array_, "_Unsigned").empty() &&
         string_attribute(*array_, "_Unsigned") == "false")
         sample_ = Sample::float64;
 
@@ -336,10 +340,7 @@ FileVariable::~FileVariable() = default;
 
 std::string FileVariable::type_name() const
 {
-    const GDALExtendedDataType &type = array_->GetDataType();
-    if (type.GetClass() != GEDTC_NUMERIC)
-        return type.GetClass() == GEDTC_STRING ? "String" : "Compound";
-    return GDALGetDataTypeName(type.GetNumericDataType());
+    return type_name_of(array_->GetDataType());
 }
 
 bool FileVariable::is_integer() const
