@@ -40,6 +40,6 @@ include $(MODULE_TOPDIR)/include/Make/Module.make
 # After the include: Vars.make/Compile.make reset LINK = $(CC).
 LINK = $(CXX)
 CXXFLAGS += -std=c++17 -Wall -Wextra -O2 -pthread
-LIBES := $(SBRT_STLIBS) $(LIBES) $(SBRT_GL_LIBS) -lpng $(ZLIB) -pthread
+LIBES := $(SBRT_STLIBS) $(LIBES) $(SBRT_GL_LIBS) -lpng $(ZSTDLIB) $(ZLIB) -pthread
 
 default: cmd

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "classifier.hpp"
+#include "format.hpp"
 #include "model.hpp"
 
 /// Frame of the current 3D region.
@@ -40,6 +41,8 @@ sbrt::Model horizons_to_sbrt(const std::vector<std::string> &horizons,
 void sbrt_to_voxels(const char *input, const char *output);
 
 /// Prints the metadata and Table 1 figures (plain or key=value).
-void print_report(const char *name, const sbrt::Model &model, bool shell);
+/// The papers' Table 1 figures in memory and the stacks file on disk.
+void print_report(const char *name, const sbrt::Model &model,
+                  const sbrt::StacksFileInfo &file, bool shell);
 
 #endif

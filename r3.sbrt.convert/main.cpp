@@ -217,7 +217,8 @@ void run(const Options &o)
         if (!sbrt || !report)
             G_fatal_error(_("Nothing to do: give output= to convert, or -p/-g "
                             "with sbrt= to describe an SBRT"));
-        print_report(sbrt, sbrt_grass::read_sbrt_map(sbrt), o.shell->answer);
+        print_report(sbrt, sbrt_grass::read_sbrt_map(sbrt),
+                     sbrt::stacks_file_info(sbrt_grass::find_sbrt(sbrt)), o.shell->answer);
         return;
     }
     // checked before the work, written after it
@@ -252,7 +253,7 @@ void run(const Options &o)
     }
     sbrt_grass::write_sbrt_map(output, path, model, source);
     if (report)
-        print_report(output, model, o.shell->answer);
+        print_report(output, model, sbrt::stacks_file_info(path), o.shell->answer);
 }
 
 } // namespace

@@ -9,11 +9,16 @@
 
 #include "grass.hpp"
 
-void print_report(const char *name, const sbrt::Model &model, bool shell)
+void print_report(const char *name, const sbrt::Model &model,
+                  const sbrt::StacksFileInfo &file, bool shell)
 {
     const sbrt::Frame &f = model.frame();
     const sbrt::Stats s = model.stats();
     const double mib = 1024.0 * 1024.0;
+    const double file_per_interval =
+        s.intervals ? double(file.bytes) / double(s.intervals) : 0;
+    const double file_compression =
+        s.voxel_bytes ? 100.0 * (1.0 - double(file.bytes) / double(s.voxel_bytes)) : 0;
     if (shell) {
         fprintf(stdout,
                 "name=%s\nnorth=%.15g\nsouth=%.15g\neast=%.15g\nwest=%.15g\n"
@@ -30,6 +35,11 @@ void print_report(const char *name, const sbrt::Model &model, bool shell)
                 (unsigned long long)s.intervals,
                 (unsigned long long)s.solid_intervals, s.max_stack,
                 s.mean_stack, s.compression_percent);
+        fprintf(stdout,
+                "format=%u.%u\nfile_bytes=%llu\nfile_bytes_per_interval=%.4f\n"
+                "file_compression=%.3f\n",
+                unsigned(file.major), unsigned(file.minor),
+                (unsigned long long)file.bytes, file_per_interval, file_compression);
         return;
     }
     fprintf(stdout, "SBRT:          %s\n", name);
@@ -50,11 +60,15 @@ void print_report(const char *name, const sbrt::Model &model, bool shell)
     fprintf(stdout, "  voxels:            %llu\n", (unsigned long long)s.voxels);
     fprintf(stdout, "  voxel model:       %.2f MiB (4 bytes per voxel)\n",
             s.voxel_bytes / mib);
-    fprintf(stdout, "  SBRT:              %.2f MiB\n", s.sbrt_bytes / mib);
+    fprintf(stdout, "  SBRT in memory:    %.2f MiB\n", s.sbrt_bytes / mib);
     fprintf(stdout, "  intervals:         %llu (%llu solid)\n",
             (unsigned long long)s.intervals,
             (unsigned long long)s.solid_intervals);
     fprintf(stdout, "  max stack size:    %u\n", s.max_stack);
     fprintf(stdout, "  mean stack size:   %.2f\n", s.mean_stack);
     fprintf(stdout, "  compression:       %.1f %%\n", s.compression_percent);
+    fprintf(stdout, "On disk (format %u.%u):\n", unsigned(file.major), unsigned(file.minor));
+    fprintf(stdout, "  stacks file:       %.2f MiB (%.2f bytes per interval)\n",
+            file.bytes / mib, file_per_interval);
+    fprintf(stdout, "  compression:       %.1f %%\n", file_compression);
 }

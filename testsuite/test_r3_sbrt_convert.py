@@ -99,6 +99,14 @@ class TestConvertExactFigures(TestCase, Raster3dCompare):
         self.assertEqual(int(f["max_stack"]), 4)
         self.assertAlmostEqual(float(f["mean_stack"]), 4.0)
         self.assertEqual(int(f["sbrt_bytes"]), 200 * 4 + 800 * 8 + 4 * 8)
+        # on disk: format 2, the stacks file's own size, far below memory
+        stacks = os.path.join(sbrt_dir("known_s"), "stacks")
+        self.assertEqual(f["format"], "2.0")
+        self.assertEqual(int(f["file_bytes"]), os.path.getsize(stacks))
+        self.assertLess(int(f["file_bytes"]), int(f["sbrt_bytes"]) / 4)
+        self.assertAlmostEqual(
+            float(f["file_bytes_per_interval"]), os.path.getsize(stacks) / 800, places=3
+        )
 
     def test_round_trip_with_cave(self):
         self.assertModule("r3.sbrt.convert", input="known", output="known_r")

@@ -8,7 +8,7 @@
 ############################################################################
 set -euo pipefail
 packages=(
-    make g++ pkg-config zlib1g-dev
+    make g++ pkg-config zlib1g-dev libzstd-dev
     grass-core grass-dev             # GRASS 8.2 and its headers/make system
     libglm-dev                       # vector maths
     libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev

@@ -25,6 +25,8 @@ public:
     /// Writes one file into the temporary directory and syncs it.
     void write_file(const std::string &name, const std::vector<uint8_t> &bytes);
     void write_file(const std::string &name, const std::string &text);
+    /// Where a file streamed by its writer goes (synced by that writer).
+    std::string file_path(const std::string &name) const { return temp_ + "/" + name; }
     /// Swaps the temporary directory into place (renameat2 RENAME_EXCHANGE
     /// where the file system has it, else two renames) and drops the old one.
     void commit();

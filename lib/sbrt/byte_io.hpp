@@ -19,6 +19,7 @@ namespace sbrt {
 class ByteWriter {
 public:
     void u8(uint8_t v) { bytes_.push_back(v); }
+    void u16(uint16_t v) { put(v, 2); }
     void u32(uint32_t v) { put(v, 4); }
     void u64(uint64_t v) { put(v, 8); }
     void i32(int32_t v) { put(uint32_t(v), 4); }
@@ -62,6 +63,7 @@ public:
     {
     }
     uint8_t u8() { return uint8_t(get(1)); }
+    uint16_t u16() { return uint16_t(get(2)); }
     uint32_t u32() { return uint32_t(get(4)); }
     uint64_t u64() { return get(8); }
     int32_t i32() { return int32_t(uint32_t(get(4))); }

@@ -13,247 +13,26 @@
 #include <sstream>
 #include <sys/stat.h>
 
-#include <zlib.h>
-
 #include "atomic_dir.hpp"
-#include "byte_io.hpp"
+#include "byte_sink.hpp"
 #include "error.hpp"
 #include "mapped_file.hpp"
+#include "stacks_prefix.hpp"
 
 namespace sbrt {
 
-namespace {
-
-const uint8_t MAGIC[8] = {0x89, 'S', 'B', 'R', 'T', '\r', '\n', 0x1a};
-constexpr size_t MATERIAL_BYTES = 8;
-constexpr size_t INTERVAL_BYTES = 8;
-
-struct Offsets {
-    uint64_t materials, counts, intervals, end;
-};
-
-Offsets layout(uint64_t materials, uint64_t cells, uint64_t intervals)
-{
-    Offsets o;
-    o.materials = STACKS_HEADER_SIZE;
-    o.counts = o.materials + materials * MATERIAL_BYTES;
-    o.intervals = o.counts + cells * 4;
-    o.end = o.intervals + intervals * INTERVAL_BYTES;
-    return o;
-}
-
-} // namespace
-
-uint32_t crc32_of(const uint8_t *data, size_t size)
-{
-    uLong crc = crc32(0L, Z_NULL, 0);
-    while (size > 0) {
-        const uInt chunk = size > (1u << 30) ? (1u << 30) : uInt(size);
-        crc = crc32(crc, data, chunk);
-        data += chunk;
-        size -= chunk;
-    }
-    return uint32_t(crc);
-}
-
-std::vector<uint8_t> encode_stacks(const Model &model)
-{
-    const Frame &f = model.frame();
-    const auto &materials = model.materials();
-    const auto &intervals = model.intervals();
-    const Offsets o = layout(materials.size(), f.cells(), intervals.size());
-
-    // the body after room for the header, written in place: one buffer
-    ByteWriter body;
-    body.reserve(STACKS_HEADER_SIZE + materials.size() * 8 + f.cells() * 4 +
-                 intervals.size() * sizeof(Interval));
-    body.raw(std::vector<uint8_t>(STACKS_HEADER_SIZE).data(), STACKS_HEADER_SIZE);
-    for (const Material &m : materials) {
-        body.i32(m.id);
-        body.u8(m.red);
-        body.u8(m.green);
-        body.u8(m.blue);
-        body.u8(m.has_color ? 1 : 0);
-    }
-    const size_t counts_at = body.size();
-    for (uint64_t c = 0; c < f.cells(); ++c)
-        body.u32(model.stack_size(c));
-    const size_t intervals_at = body.size();
-    if (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) {
-        // the file's record is the host's (load_intervals reads it so too)
-        body.raw(intervals.data(), intervals.size() * sizeof(Interval));
-    }
-    else {
-        for (const Interval &iv : intervals) {
-            body.u32(iv.material);
-            body.f32(iv.top);
-        }
-    }
-    const uint8_t *b = body.bytes().data();
-
-    ByteWriter head;
-    head.raw(MAGIC, sizeof MAGIC);
-    head.u32(FORMAT_VERSION);
-    head.u32(STACKS_HEADER_SIZE);
-    for (double v : {f.north, f.south, f.east, f.west, f.bottom, f.top})
-        head.f64(v);
-    head.u32(uint32_t(f.rows));
-    head.u32(uint32_t(f.cols));
-    head.u32(uint32_t(f.depths));
-    head.i32(f.proj);
-    head.i32(f.zone);
-    head.u32(uint32_t(materials.size()));
-    head.u64(intervals.size());
-    head.u64(o.materials);
-    head.u64(o.counts);
-    head.u64(o.intervals);
-    const size_t start = STACKS_HEADER_SIZE;
-    head.u32(crc32_of(b + start, counts_at - start));
-    head.u32(crc32_of(b + counts_at, intervals_at - counts_at));
-    head.u32(crc32_of(b + intervals_at, body.size() - intervals_at));
-    head.u32(crc32_of(head.bytes().data(), head.size()));
-    SBRT_CHECK_EQ(head.size(), size_t(STACKS_HEADER_SIZE), "encode_stacks");
-
-    std::copy(head.bytes().begin(), head.bytes().end(), body.bytes().begin());
-    return std::move(body.bytes());
-}
-
-namespace {
-
-uint32_t load_u32(const uint8_t *p)
-{
-    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 |
-           uint32_t(p[3]) << 24;
-}
-
-/// Intervals as stored: u32 material, f32 top, little-endian, 8 bytes
-/// each; a view of them where `keep` holds them and the host reads them as
-/// they are.
-IntervalArray load_intervals(const uint8_t *p, size_t count,
-                             std::shared_ptr<const void> keep)
-{
-    static_assert(sizeof(Interval) == 8 && offsetof(Interval, top) == 4,
-                  "Interval is the file's record");
-    constexpr bool native = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
-    if (native && keep && reinterpret_cast<uintptr_t>(p) % alignof(Interval) == 0)
-        return IntervalArray(std::move(keep), reinterpret_cast<const Interval *>(p), count);
-    Intervals intervals(count);
-    if (native) {
-        if (count)
-            std::memcpy(intervals.data(), p, count * sizeof(Interval));
-        return intervals;
-    }
-    for (Interval &iv : intervals) {
-        iv.material = load_u32(p);
-        const uint32_t bits = load_u32(p + 4);
-        std::memcpy(&iv.top, &bits, 4);
-        p += 8;
-    }
-    return intervals;
-}
-
-} // namespace
-
 Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
-                    std::shared_ptr<const void> keep)
+                    std::shared_ptr<const void> keep, const ReadOptions &options)
 {
-    ByteReader in(data, size, what);
-    if (size < sizeof MAGIC || std::memcmp(data, MAGIC, sizeof MAGIC) != 0)
+    const uint16_t major = stacks_major_version(data, size);
+    if (major == 0)
         fail(what, ": not an SBRT stacks file (bad magic number)");
-    in.seek(sizeof MAGIC);
-    const uint32_t version = in.u32();
-    if (version != FORMAT_VERSION)
-        fail(what, ": format version ", version, " is not supported (this "
-             "build reads version ", FORMAT_VERSION, ")");
-    const uint32_t header_size = in.u32();
-    if (header_size != STACKS_HEADER_SIZE)
-        fail(what, ": header size ", header_size, ", expected ",
-             STACKS_HEADER_SIZE);
-    if (size < STACKS_HEADER_SIZE)
-        fail(what, ": truncated header (", size, " of ", STACKS_HEADER_SIZE,
-             " bytes)");
-    if (crc32_of(data, STACKS_HEADER_SIZE - 4) !=
-        ByteReader(data + STACKS_HEADER_SIZE - 4, 4, what).u32())
-        fail(what, ": header checksum mismatch (corrupt file)");
-
-    Frame f;
-    f.north = in.f64();
-    f.south = in.f64();
-    f.east = in.f64();
-    f.west = in.f64();
-    f.bottom = in.f64();
-    f.top = in.f64();
-    const uint32_t rows = in.u32(), cols = in.u32(), depths = in.u32();
-    if (rows == 0 || cols == 0 || depths == 0 || rows > INT32_MAX ||
-        cols > INT32_MAX || depths > INT32_MAX)
-        fail(what, ": bad grid size ", rows, "x", cols, "x", depths);
-    f.rows = int(rows);
-    f.cols = int(cols);
-    f.depths = int(depths);
-    f.proj = in.i32();
-    f.zone = in.i32();
-    f.validate(what.c_str());
-    const uint32_t material_count = in.u32();
-    const uint64_t interval_count = in.u64();
-    if (material_count == 0 || material_count > MAX_MATERIALS)
-        fail(what, ": material count ", material_count, " not in 1..",
-             MAX_MATERIALS);
-    if (interval_count > UINT32_MAX)
-        fail(what, ": interval count ", interval_count, " exceeds 2^32-1");
-    const Offsets expected = layout(material_count, f.cells(), interval_count);
-    const uint64_t at_materials = in.u64(), at_counts = in.u64(),
-                   at_intervals = in.u64();
-    if (at_materials != expected.materials || at_counts != expected.counts ||
-        at_intervals != expected.intervals)
-        fail(what, ": section offsets do not match the counts (corrupt file)");
-    if (expected.end != size)
-        fail(what, ": file has ", size, " bytes, its header describes ",
-             expected.end, expected.end > size ? " (truncated)" : "");
-    const uint32_t crc_materials = in.u32(), crc_counts = in.u32(),
-                   crc_intervals = in.u32();
-    if (crc32_of(data + at_materials, at_counts - at_materials) !=
-            crc_materials ||
-        crc32_of(data + at_counts, at_intervals - at_counts) != crc_counts ||
-        crc32_of(data + at_intervals, expected.end - at_intervals) !=
-            crc_intervals)
-        fail(what, ": data checksum mismatch (corrupt file)");
-
-    // sections: materials, per-cell counts, intervals
-    in.seek(at_materials);
-    std::vector<Material> materials(material_count);
-    for (Material &m : materials) {
-        m.id = in.i32();
-        m.red = in.u8();
-        m.green = in.u8();
-        m.blue = in.u8();
-        m.has_color = (in.u8() & 1) != 0;
-    }
-    // the sections' sizes were checked against the file above: read them
-    // straight from memory (little-endian, as the file is)
-    std::vector<uint32_t> offsets(f.cells() + 1, 0);
-    uint64_t total = 0;
-    const uint8_t *counts = data + at_counts;
-    for (uint64_t c = 0; c < f.cells(); ++c) {
-        total += load_u32(counts + 4 * c);
-        if (total > interval_count)
-            fail(what, ": stack sizes exceed the interval count");
-        offsets[c + 1] = uint32_t(total);
-    }
-    if (total != interval_count)
-        fail(what, ": stack sizes sum to ", total, ", header says ",
-             interval_count);
-    IntervalArray intervals =
-        load_intervals(data + at_intervals, size_t(interval_count), std::move(keep));
-    materials[0].label = "EMPTY";
-    Model model(f, std::move(materials), std::move(offsets),
-                std::move(intervals));
-    try {
-        model.validate();
-    }
-    catch (const Error &e) {
-        fail(what, ": ", e.what());
-    }
-    return model;
+    if (major == FORMAT_V1_VERSION)
+        return decode_stacks_v1(data, size, what, std::move(keep));
+    if (major == FORMAT_V2_MAJOR)
+        return decode_stacks_v2(data, size, what, options);
+    fail(what, ": format version ", major, " is not supported (this build "
+         "reads versions 1 and 2; a newer r3.sbrt wrote it)");
 }
 
 std::string encode_cats(const Model &model)
@@ -295,18 +74,33 @@ std::string encode_header(const Model &model)
     const Stats s = model.stats();
     char text[1024];
     std::snprintf(text, sizeof text,
-                  "format:      sbrt\nversion:     %u\n"
+                  "format:      sbrt\nversion:     %u.%u\n"
+                  "compression: zstd blocks\n"
                   "proj:        %d\nzone:        %d\n"
                   "north:       %.17g\nsouth:       %.17g\n"
                   "east:        %.17g\nwest:        %.17g\n"
                   "top:         %.17g\nbottom:      %.17g\n"
                   "rows:        %d\ncols:        %d\ndepths:      %d\n"
                   "materials:   %zu\nintervals:   %llu\n",
-                  FORMAT_VERSION, f.proj, f.zone, f.north, f.south, f.east,
+                  unsigned(FORMAT_V2_MAJOR), unsigned(FORMAT_V2_MINOR), f.proj, f.zone, f.north, f.south, f.east,
                   f.west, f.top, f.bottom, f.rows, f.cols, f.depths,
                   model.materials().size() - 1,
                   (unsigned long long)s.intervals);
     return text;
+}
+
+StacksFileInfo stacks_file_info(const std::string &directory)
+{
+    const std::string path = directory + "/stacks";
+    const MappedFile file(path);
+    StacksFileInfo info;
+    info.bytes = file.size();
+    info.major = stacks_major_version(file.data(), file.size());
+    if (info.major == 0 || file.size() < 12)
+        fail(path, ": not an SBRT stacks file (bad magic number)");
+    if (info.major >= FORMAT_V2_MAJOR)
+        info.minor = uint16_t(file.data()[10] | file.data()[11] << 8);
+    return info;
 }
 
 std::vector<uint8_t> read_file_bytes(const std::string &path)
@@ -329,22 +123,25 @@ std::vector<uint8_t> read_file_bytes(const std::string &path)
 }
 
 void write_sbrt(const std::string &directory, const Model &model,
-                const std::string &history)
+                const std::string &history, const StacksV2Options &options)
 {
     model.validate();
     AtomicDirectory out(directory);
-    out.write_file("stacks", encode_stacks(model));
+    FileSink stacks(out.file_path("stacks"));
+    write_stacks_v2(stacks, model, options);
+    stacks.finish();
     out.write_file("header", encode_header(model));
     out.write_file("cats", encode_cats(model));
     out.write_file("hist", history);
     out.commit();
 }
 
-Model read_sbrt(const std::string &directory)
+Model read_sbrt(const std::string &directory, const ReadOptions &options)
 {
     const std::string stacks_path = directory + "/stacks";
     const auto file = std::make_shared<const MappedFile>(stacks_path);
-    Model model = decode_stacks(file->data(), file->size(), stacks_path, file);
+    Model model =
+        decode_stacks(file->data(), file->size(), stacks_path, file, options);
     const std::string cats_path = directory + "/cats";
     struct stat st;
     if (stat(cats_path.c_str(), &st) == 0) {

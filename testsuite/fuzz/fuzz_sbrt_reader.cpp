@@ -1,6 +1,6 @@
 /****************************************************************************
  * MODULE:    testsuite/fuzz (r3.sbrt addon)
- * PURPOSE:   libFuzzer target of the SBRT reader: decode_stacks and
+ * PURPOSE:   libFuzzer target of the SBRT reader (formats v1 and v2): decode_stacks and
  *            decode_cats on untrusted bytes must end in a model or an
  *            sbrt::Error, never a crash, a hang or undefined behaviour.
  *            Bit 0 of the first byte recomputes the checksums, so that the
@@ -15,6 +15,7 @@
 
 #include "error.hpp"
 #include "format.hpp"
+#include "stacks_prefix.hpp"
 
 namespace {
 
@@ -37,11 +38,11 @@ uint32_t crc_of(const std::vector<uint8_t> &b, uint64_t from, uint64_t to)
     return uint32_t(crc32(0, b.data() + from, uInt(to - from)));
 }
 
-/// The checksums the bytes would need (layout of format.hpp): the
-/// sections' where their offsets lie in the data, then the header's.
-void fix_checksums(std::vector<uint8_t> &b)
+/// The checksums a v1 file would need (format_v1.hpp): the sections'
+/// where their offsets lie in the data, then the header's.
+void fix_v1_checksums(std::vector<uint8_t> &b)
 {
-    const size_t header = sbrt::STACKS_HEADER_SIZE;
+    const size_t header = sbrt::STACKS_V1_HEADER_SIZE;
     if (b.size() < header)
         return;
     const uint64_t materials = get_u64(b, 96), counts = get_u64(b, 104),
@@ -54,6 +55,40 @@ void fix_checksums(std::vector<uint8_t> &b)
     put_u32(b, header - 4, crc_of(b, 0, header - 4));
 }
 
+/// The checksums a v2 file would need (format_v2.hpp): each block's where
+/// it lies in the data, the block table's, the materials', the header's.
+void fix_v2_checksums(std::vector<uint8_t> &b)
+{
+    if (b.size() < sbrt::STACKS_V2_HEADER_SIZE)
+        return;
+    const uint32_t header = uint32_t(get_u64(b, 12) & 0xffffffffu);
+    if (header < sbrt::STACKS_V2_HEADER_SIZE || header > b.size())
+        return;
+    const uint64_t materials = get_u64(b, 116), table = get_u64(b, 124);
+    if (table <= b.size()) {
+        for (uint64_t e = table; e + 24 <= b.size(); e += 24) {
+            const uint64_t at = get_u64(b, size_t(e));
+            const uint64_t size = get_u64(b, size_t(e + 8)) & 0xffffffffu;
+            if (at <= b.size() && size <= b.size() - at)
+                put_u32(b, size_t(e + 20), crc_of(b, at, at + size));
+        }
+        put_u32(b, 144, crc_of(b, table, b.size()));
+        const uint32_t count = uint32_t(get_u64(b, 92) & 0xffffffffu);
+        if (materials <= table && count <= (table - materials) / 8)
+            put_u32(b, 140, crc_of(b, materials, materials + 8ull * count));
+    }
+    put_u32(b, header - 4, crc_of(b, 0, header - 4));
+}
+
+void fix_checksums(std::vector<uint8_t> &b)
+{
+    const uint16_t major = sbrt::stacks_major_version(b.data(), b.size());
+    if (major == 1)
+        fix_v1_checksums(b);
+    else if (major == 2)
+        fix_v2_checksums(b);
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -64,7 +99,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (data[0] & 1)
         fix_checksums(bytes);
     try {
-        sbrt::Model model = sbrt::decode_stacks(bytes.data(), bytes.size(), "fuzz");
+        // one thread, and models of at most 256 MiB (libFuzzer's malloc limit
+        // is its RSS limit)
+        sbrt::ReadOptions options;
+        options.threads = 1;
+        options.memory_limit = 256u << 20;
+        sbrt::Model model =
+            sbrt::decode_stacks(bytes.data(), bytes.size(), "fuzz", nullptr, options);
         // the same bytes as a cats file of the decoded model
         sbrt::decode_cats(std::string(bytes.begin(), bytes.end()), model, "fuzz");
     }

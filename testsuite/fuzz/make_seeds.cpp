@@ -1,6 +1,6 @@
 /****************************************************************************
  * MODULE:    testsuite/fuzz (r3.sbrt addon)
- * PURPOSE:   Seed corpus of the reader's fuzz target: valid stacks files of
+ * PURPOSE:   Seed corpus of the reader's fuzz target: valid stacks files (v1, v2) of
  *            small random models (flag byte 1: checksums recomputed, and 0)
  * USAGE:     make_seeds DIR
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
@@ -20,10 +20,16 @@ int main(int argc, char **argv)
     }
     for (unsigned seed = 1; seed <= 4; ++seed) {
         const auto v = sbrt_test::random_voxels(seed, 2 + seed, 3 + seed, 6, 4);
-        const std::vector<uint8_t> stacks = sbrt::encode_stacks(sbrt_test::build_model(v));
+        const sbrt::Model model = sbrt_test::build_model(v);
+        sbrt::StacksV2Options blocks;
+        blocks.block_size = 1 + int(seed % 3);
+        const std::vector<uint8_t> files[] = {sbrt::encode_stacks_v1(model),
+                                              sbrt::encode_stacks_v2(model, blocks)};
+        for (int version = 1; version <= 2; ++version)
         for (uint8_t flag : {uint8_t(0), uint8_t(1)}) {
-            std::ofstream out(std::string(argv[1]) + "/seed_" + std::to_string(seed) +
-                                  "_" + std::to_string(flag),
+            const std::vector<uint8_t> &stacks = files[version - 1];
+            std::ofstream out(std::string(argv[1]) + "/seed_v" + std::to_string(version) + "_" +
+                                  std::to_string(seed) + "_" + std::to_string(flag),
                               std::ios::binary);
             out.put(char(flag));
             out.write(reinterpret_cast<const char *>(stacks.data()),

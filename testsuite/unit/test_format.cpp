@@ -20,9 +20,22 @@ using namespace sbrt;
 
 namespace {
 
+Model sample_model()
+{
+    return sbrt_test::build_model(sbrt_test::random_voxels(21, 6, 7, 20));
+}
+
 std::vector<uint8_t> sample_file()
 {
-    return encode_stacks(sbrt_test::build_model(sbrt_test::random_voxels(21, 6, 7, 20)));
+    return encode_stacks_v1(sample_model());
+}
+
+/// The sample in both formats (v2 in blocks of 4 cells a side: several).
+std::vector<std::vector<uint8_t>> sample_files()
+{
+    StacksV2Options blocks;
+    blocks.block_size = 4;
+    return {sample_file(), encode_stacks_v2(sample_model(), blocks)};
 }
 
 std::string message_of(const std::vector<uint8_t> &bytes)
@@ -40,9 +53,9 @@ std::string message_of(const std::vector<uint8_t> &bytes)
 /// reaches the later checks.
 void reseal_header(std::vector<uint8_t> &bytes)
 {
-    const uint32_t crc = crc32_of(bytes.data(), STACKS_HEADER_SIZE - 4);
+    const uint32_t crc = crc32_of(bytes.data(), STACKS_V1_HEADER_SIZE - 4);
     for (int i = 0; i < 4; ++i)
-        bytes[STACKS_HEADER_SIZE - 4 + i] = uint8_t(crc >> (8 * i));
+        bytes[STACKS_V1_HEADER_SIZE - 4 + i] = uint8_t(crc >> (8 * i));
 }
 
 } // namespace
@@ -55,7 +68,7 @@ TEST(Format, ValidFileDecodes)
 
 TEST(Format, EveryTruncationThrows)
 {
-    const auto bytes = sample_file();
+    for (const auto &bytes : sample_files())
     for (size_t n = 0; n < bytes.size(); n += 1 + n / 50) {
         std::vector<uint8_t> cut(bytes.begin(), bytes.begin() + n);
         EXPECT_NE(message_of(cut), "") << "truncated to " << n;
@@ -64,8 +77,8 @@ TEST(Format, EveryTruncationThrows)
 
 TEST(Format, BitFlipsAnywhereThrow)
 {
-    const auto bytes = sample_file();
     std::mt19937 rng(4);
+    for (const auto &bytes : sample_files())
     for (int trial = 0; trial < 400; ++trial) {
         auto bad = bytes;
         const size_t at = rng() % bad.size();
@@ -76,9 +89,10 @@ TEST(Format, BitFlipsAnywhereThrow)
 
 TEST(Format, TrailingGarbageThrows)
 {
-    auto bytes = sample_file();
-    bytes.push_back(0);
-    EXPECT_NE(message_of(bytes).find("describes"), std::string::npos);
+    for (auto bytes : sample_files()) {
+        bytes.push_back(0);
+        EXPECT_NE(message_of(bytes).find("describes"), std::string::npos);
+    }
 }
 
 TEST(Format, ForeignAndEmptyFilesThrowClearly)
@@ -91,9 +105,10 @@ TEST(Format, ForeignAndEmptyFilesThrowClearly)
 
 TEST(Format, FutureVersionIsNamed)
 {
-    auto bytes = sample_file();
-    bytes[8] = 7; // version field follows the 8-byte magic
-    EXPECT_NE(message_of(bytes).find("version 7"), std::string::npos);
+    for (auto bytes : sample_files()) {
+        bytes[8] = 7; // version field follows the 8-byte magic
+        EXPECT_NE(message_of(bytes).find("version 7"), std::string::npos);
+    }
 }
 
 TEST(Format, InvariantsAreCheckedAfterChecksums)
@@ -106,7 +121,7 @@ TEST(Format, InvariantsAreCheckedAfterChecksums)
     bytes[at_intervals] = 0xff; // low byte of the first interval's material
     const uint32_t crc = crc32_of(bytes.data() + at_intervals,
                                   bytes.size() - at_intervals);
-    const size_t crc_at = STACKS_HEADER_SIZE - 8;
+    const size_t crc_at = STACKS_V1_HEADER_SIZE - 8;
     for (int i = 0; i < 4; ++i)
         bytes[crc_at + i] = uint8_t(crc >> (8 * i));
     reseal_header(bytes);
@@ -130,12 +145,17 @@ TEST(Format, MissingDirectoryIsAnError)
     EXPECT_THROW(read_sbrt("/nonexistent/sbrt/none"), Error);
 }
 
-TEST(Format, ReadMapsTheIntervalsWithoutACopy)
+TEST(Format, ReadOfV1MapsTheIntervalsWithoutACopy)
 {
     const auto v = sbrt_test::random_voxels(41, 9, 11, 30);
     const Model written = sbrt_test::build_model(v);
     const std::string dir = sbrt_test::temp_dir("mapped") + "/m";
-    write_sbrt(dir, written, "test\n");
+    {
+        // a v1 SBRT (v2 blocks are decompressed into memory of their own)
+        AtomicDirectory out(dir);
+        out.write_file("stacks", encode_stacks_v1(written));
+        out.commit();
+    }
     auto same = [&](const Model &m) {
         ASSERT_EQ(m.intervals().size(), written.intervals().size());
         for (size_t i = 0; i < m.intervals().size(); ++i) {
@@ -156,6 +176,6 @@ TEST(Format, ReadMapsTheIntervalsWithoutACopy)
     write_sbrt(dir, sbrt_test::build_model(sbrt_test::random_voxels(42, 9, 11, 30)), "new\n");
     same(copy);
     // decoded from bytes nobody keeps: a copy of its own
-    const std::vector<uint8_t> bytes = encode_stacks(written);
+    const std::vector<uint8_t> bytes = encode_stacks_v1(written);
     EXPECT_FALSE(decode_stacks(bytes.data(), bytes.size(), "bytes").intervals().is_view());
 }

@@ -1,0 +1,507 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Format v2 of the `stacks` file: streamed writer and
+ *            validating block-parallel reader
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "format_v2.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <unistd.h>
+
+#include <zstd.h>
+
+#include "byte_io.hpp"
+#include "error.hpp"
+#include "parallel.hpp"
+#include "stacks_prefix.hpp"
+
+namespace sbrt {
+
+namespace {
+
+constexpr uint8_t COMPRESSION_ZSTD = 1;
+constexpr size_t MATERIAL_BYTES = 8;
+constexpr size_t BLOCK_ENTRY_BYTES = 24;
+constexpr uint32_t MAX_BLOCK_SIZE = 4096;
+
+struct CompressContext {
+    void operator()(ZSTD_CCtx *c) const { ZSTD_freeCCtx(c); }
+};
+struct DecompressContext {
+    void operator()(ZSTD_DCtx *c) const { ZSTD_freeDCtx(c); }
+};
+using CompressorPtr = std::unique_ptr<ZSTD_CCtx, CompressContext>;
+using DecompressorPtr = std::unique_ptr<ZSTD_DCtx, DecompressContext>;
+
+/// \brief The blocks of a grid: square tiles of cells, row by row.
+struct BlockGrid {
+    int rows, cols, size;
+    int block_rows() const { return (rows + size - 1) / size; }
+    int block_cols() const { return (cols + size - 1) / size; }
+    int count() const { return block_rows() * block_cols(); }
+    int first_row(int block) const { return block / block_cols() * size; }
+    int first_col(int block) const { return block % block_cols() * size; }
+    int height(int block) const { return std::min(size, rows - first_row(block)); }
+    int width(int block) const { return std::min(size, cols - first_col(block)); }
+    uint64_t cells(int block) const { return uint64_t(height(block)) * uint64_t(width(block)); }
+};
+
+/// \brief One block as stored in the block table.
+struct BlockEntry {
+    uint64_t offset = 0;
+    uint32_t compressed = 0, raw = 0, intervals = 0, crc = 0;
+};
+
+uint64_t raw_block_size(const StacksV2Widths &w, uint64_t cells, uint64_t intervals)
+{
+    const uint64_t top_bytes = w.tops == TopEncoding::VoxelBoundaries ? 2 : 4;
+    return cells * w.count_bytes + intervals * (w.material_bytes + top_bytes);
+}
+
+void put_le(uint8_t *p, uint64_t v, int bytes)
+{
+    for (int i = 0; i < bytes; ++i)
+        p[i] = uint8_t(v >> (8 * i));
+}
+
+uint64_t get_le(const uint8_t *p, int bytes)
+{
+    uint64_t v = 0;
+    for (int i = 0; i < bytes; ++i)
+        v |= uint64_t(p[i]) << (8 * i);
+    return v;
+}
+
+/// The uncompressed bytes of one block: counts, materials, tops.
+void encode_block(const Model &model, const BlockGrid &grid, int block,
+                  const StacksV2Widths &w, std::vector<uint8_t> &raw)
+{
+    const int r0 = grid.first_row(block), c0 = grid.first_col(block);
+    const int h = grid.height(block), wd = grid.width(block);
+    uint64_t intervals = 0;
+    for (int r = r0; r < r0 + h; ++r)
+        intervals += model.stack_begin(model.cell_index(r, c0 + wd)) -
+                     model.stack_begin(model.cell_index(r, c0));
+    raw.resize(raw_block_size(w, grid.cells(block), intervals));
+    uint8_t *counts = raw.data();
+    uint8_t *materials = counts + grid.cells(block) * w.count_bytes;
+    uint8_t *tops = materials + intervals * w.material_bytes;
+    const Interval *all = model.intervals().data();
+    for (int r = r0; r < r0 + h; ++r) {
+        for (int c = c0; c < c0 + wd; ++c) {
+            const uint64_t cell = model.cell_index(r, c);
+            put_le(counts, model.stack_size(cell), w.count_bytes);
+            counts += w.count_bytes;
+            float below = 0;
+            for (uint32_t i = model.stack_begin(cell); i < model.stack_end(cell); ++i) {
+                put_le(materials, all[i].material, w.material_bytes);
+                materials += w.material_bytes;
+                if (w.tops == TopEncoding::VoxelBoundaries) {
+                    put_le(tops, uint32_t(all[i].top - below), 2);
+                    tops += 2;
+                    below = all[i].top;
+                }
+                else {
+                    std::memcpy(tops, &all[i].top, 4);
+                    tops += 4;
+                }
+            }
+        }
+    }
+}
+
+void write_materials(ByteWriter &out, const std::vector<Material> &materials)
+{
+    for (const Material &m : materials) {
+        out.i32(m.id);
+        out.u8(m.red);
+        out.u8(m.green);
+        out.u8(m.blue);
+        out.u8(m.has_color ? 1 : 0);
+    }
+}
+
+/// \brief The fields of a v2 header that a reader needs.
+struct HeaderV2 {
+    uint16_t minor = FORMAT_V2_MINOR;
+    uint32_t header_size = STACKS_V2_HEADER_SIZE;
+    uint32_t required = 0, optional = 0;
+    Frame frame;
+    uint32_t materials = 0;
+    uint64_t intervals = 0;
+    uint32_t block_size = 0;
+    StacksV2Widths widths;
+    uint8_t compression = COMPRESSION_ZSTD;
+    uint64_t materials_at = 0, table_at = 0, end = 0;
+    uint32_t crc_materials = 0, crc_table = 0;
+};
+
+std::vector<uint8_t> encode_header(const HeaderV2 &h)
+{
+    const Frame &f = h.frame;
+    ByteWriter out;
+    out.raw(STACKS_MAGIC, sizeof STACKS_MAGIC);
+    out.u16(FORMAT_V2_MAJOR);
+    out.u16(h.minor);
+    out.u32(h.header_size);
+    out.u32(h.required);
+    out.u32(h.optional);
+    for (double v : {f.north, f.south, f.east, f.west, f.bottom, f.top})
+        out.f64(v);
+    out.u32(uint32_t(f.rows));
+    out.u32(uint32_t(f.cols));
+    out.u32(uint32_t(f.depths));
+    out.i32(f.proj);
+    out.i32(f.zone);
+    out.u32(h.materials);
+    out.u64(h.intervals);
+    out.u32(h.block_size);
+    out.u32(h.block_size);
+    out.u8(h.widths.count_bytes);
+    out.u8(h.widths.material_bytes);
+    out.u8(uint8_t(h.widths.tops));
+    out.u8(h.compression);
+    out.u64(h.materials_at);
+    out.u64(h.table_at);
+    out.u64(h.end);
+    out.u32(h.crc_materials);
+    out.u32(h.crc_table);
+    out.u32(crc32_of(out.bytes().data(), out.size()));
+    SBRT_CHECK_EQ(out.size(), size_t(STACKS_V2_HEADER_SIZE), "format v2 header");
+    return std::move(out.bytes());
+}
+
+/// Reads the header by prefix: the fields of 2.0, then skips what a later
+/// minor version put before the header checksum.
+HeaderV2 decode_header(const uint8_t *data, size_t size, const std::string &what)
+{
+    ByteReader in(data, size, what);
+    in.seek(sizeof STACKS_MAGIC);
+    if (in.u16() != FORMAT_V2_MAJOR)
+        fail(what, ": not a format 2 stacks file");
+    HeaderV2 h;
+    h.minor = in.u16();
+    h.header_size = in.u32();
+    if (h.header_size < STACKS_V2_HEADER_SIZE || h.header_size > (1u << 20))
+        fail(what, ": header size ", h.header_size, " not in ",
+             STACKS_V2_HEADER_SIZE, "..", 1u << 20, " (corrupt file)");
+    if (size < h.header_size)
+        fail(what, ": truncated header (", size, " of ", h.header_size, " bytes)");
+    if (crc32_of(data, h.header_size - 4) !=
+        ByteReader(data + h.header_size - 4, 4, what).u32())
+        fail(what, ": header checksum mismatch (corrupt file)");
+    h.required = in.u32();
+    h.optional = in.u32();
+    if (h.required & ~V2_KNOWN_REQUIRED_FEATURES)
+        fail(what, ": written by a newer r3.sbrt (format 2.", h.minor,
+             ", features 0x", std::hex, h.required & ~V2_KNOWN_REQUIRED_FEATURES,
+             std::dec, " not known here); update r3.sbrt to read it");
+    Frame &f = h.frame;
+    f.north = in.f64();
+    f.south = in.f64();
+    f.east = in.f64();
+    f.west = in.f64();
+    f.bottom = in.f64();
+    f.top = in.f64();
+    const uint32_t rows = in.u32(), cols = in.u32(), depths = in.u32();
+    if (rows == 0 || cols == 0 || depths == 0 || rows > INT32_MAX ||
+        cols > INT32_MAX || depths > INT32_MAX)
+        fail(what, ": bad grid size ", rows, "x", cols, "x", depths);
+    f.rows = int(rows);
+    f.cols = int(cols);
+    f.depths = int(depths);
+    f.proj = in.i32();
+    f.zone = in.i32();
+    f.validate(what.c_str());
+    h.materials = in.u32();
+    h.intervals = in.u64();
+    h.block_size = in.u32();
+    if (in.u32() != h.block_size || h.block_size == 0 || h.block_size > MAX_BLOCK_SIZE)
+        fail(what, ": block size not square or not in 1..", MAX_BLOCK_SIZE);
+    h.widths.count_bytes = in.u8();
+    h.widths.material_bytes = in.u8();
+    const uint8_t tops = in.u8();
+    h.compression = in.u8();
+    if ((h.widths.count_bytes != 1 && h.widths.count_bytes != 2 &&
+         h.widths.count_bytes != 4) ||
+        (h.widths.material_bytes != 1 && h.widths.material_bytes != 2) ||
+        tops > uint8_t(TopEncoding::Float32) || h.compression != COMPRESSION_ZSTD)
+        fail(what, ": unknown field widths or compression (corrupt file)");
+    h.widths.tops = TopEncoding(tops);
+    h.materials_at = in.u64();
+    h.table_at = in.u64();
+    h.end = in.u64();
+    h.crc_materials = in.u32();
+    h.crc_table = in.u32();
+    return h;
+}
+
+uint64_t physical_memory()
+{
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : UINT64_MAX;
+}
+
+/// Decompresses the first `out_size` bytes of a zstd frame.
+void decompress_prefix(ZSTD_DCtx *context, const uint8_t *src, size_t src_size,
+                       uint8_t *out, size_t out_size, const std::string &what)
+{
+    ZSTD_DCtx_reset(context, ZSTD_reset_session_only);
+    ZSTD_inBuffer in = {src, src_size, 0};
+    ZSTD_outBuffer o = {out, out_size, 0};
+    while (o.pos < o.size) {
+        const size_t before_in = in.pos, before_out = o.pos;
+        const size_t r = ZSTD_decompressStream(context, &o, &in);
+        if (ZSTD_isError(r))
+            fail(what, ": ", ZSTD_getErrorName(r), " (corrupt file)");
+        if (o.pos < o.size && (r == 0 || (in.pos == before_in && o.pos == before_out)))
+            fail(what, ": compressed block ends early (corrupt file)");
+    }
+}
+
+} // namespace
+
+StacksV2Widths widths_for(const Model &model)
+{
+    StacksV2Widths w;
+    uint32_t max_stack = 0;
+    for (uint64_t c = 0; c < model.frame().cells(); ++c)
+        max_stack = std::max(max_stack, model.stack_size(c));
+    w.count_bytes = max_stack <= 0xff ? 1 : max_stack <= 0xffff ? 2 : 4;
+    w.material_bytes = model.materials().size() <= 0x100 ? 1 : 2;
+    bool voxel_tops = model.frame().depths <= 0xffff;
+    for (const Interval &iv : model.intervals())
+        if (!voxel_tops || iv.top != std::floor(iv.top))
+            voxel_tops = false;
+    w.tops = voxel_tops ? TopEncoding::VoxelBoundaries : TopEncoding::Float32;
+    return w;
+}
+
+void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &options)
+{
+    const Frame &f = model.frame();
+    if (options.block_size < 1 || uint32_t(options.block_size) > MAX_BLOCK_SIZE)
+        fail("write_stacks_v2: block size ", options.block_size, " not in 1..",
+             MAX_BLOCK_SIZE);
+    HeaderV2 h;
+    h.frame = f;
+    h.materials = uint32_t(model.materials().size());
+    h.intervals = model.intervals().size();
+    h.block_size = uint32_t(options.block_size);
+    h.widths = widths_for(model);
+    const uint64_t start = sink.size();
+    sink.append(std::vector<uint8_t>(STACKS_V2_HEADER_SIZE).data(), STACKS_V2_HEADER_SIZE);
+
+    ByteWriter materials;
+    write_materials(materials, model.materials());
+    h.materials_at = STACKS_V2_HEADER_SIZE;
+    h.crc_materials = crc32_of(materials.bytes().data(), materials.size());
+    sink.append(materials.bytes().data(), materials.size());
+
+    // blocks compressed in parallel a batch at a time, written in order
+    const BlockGrid grid{f.rows, f.cols, options.block_size};
+    const unsigned threads = thread_count(options.threads);
+    const int batch = int(threads) * 4;
+    std::vector<BlockEntry> entries(size_t(grid.count()));
+    std::vector<std::vector<uint8_t>> compressed(static_cast<size_t>(batch));
+    for (int first = 0; first < grid.count(); first += batch) {
+        const int last = std::min(grid.count(), first + batch);
+        for_each_row(first, last, threads, [&](int block) {
+            std::vector<uint8_t> raw;
+            encode_block(model, grid, block, h.widths, raw);
+            if (raw.size() > UINT32_MAX / 2)
+                fail("write_stacks_v2: block ", block, " holds ", raw.size(),
+                     " bytes; write smaller blocks");
+            std::vector<uint8_t> &out = compressed[size_t(block - first)];
+            out.resize(ZSTD_compressBound(raw.size()));
+            const CompressorPtr context(ZSTD_createCCtx());
+            const size_t n = ZSTD_compressCCtx(context.get(), out.data(), out.size(),
+                                               raw.data(), raw.size(), options.zstd_level);
+            if (ZSTD_isError(n))
+                fail("write_stacks_v2: zstd: ", ZSTD_getErrorName(n));
+            out.resize(n);
+            BlockEntry &e = entries[size_t(block)];
+            e.compressed = uint32_t(n);
+            e.raw = uint32_t(raw.size());
+            e.crc = crc32_of(out.data(), n);
+            const uint64_t cells_bytes = grid.cells(block) * h.widths.count_bytes;
+            e.intervals = uint32_t((raw.size() - cells_bytes) /
+                                   (raw_block_size(h.widths, 0, 1)));
+        });
+        for (int block = first; block < last; ++block) {
+            const std::vector<uint8_t> &out = compressed[size_t(block - first)];
+            entries[size_t(block)].offset = sink.size() - start;
+            sink.append(out.data(), out.size());
+        }
+    }
+    ByteWriter table;
+    for (const BlockEntry &e : entries) {
+        table.u64(e.offset);
+        table.u32(e.compressed);
+        table.u32(e.raw);
+        table.u32(e.intervals);
+        table.u32(e.crc);
+    }
+    h.table_at = sink.size() - start;
+    h.crc_table = crc32_of(table.bytes().data(), table.size());
+    sink.append(table.bytes().data(), table.size());
+    h.end = sink.size() - start;
+    const std::vector<uint8_t> header = encode_header(h);
+    sink.overwrite(start, header.data(), header.size());
+}
+
+std::vector<uint8_t> encode_stacks_v2(const Model &model, const StacksV2Options &options)
+{
+    MemorySink sink;
+    write_stacks_v2(sink, model, options);
+    return std::move(sink.bytes());
+}
+
+Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what,
+                       const ReadOptions &options)
+{
+    const unsigned threads = options.threads;
+    if (size < sizeof STACKS_MAGIC + 8 || std::memcmp(data, STACKS_MAGIC, sizeof STACKS_MAGIC) != 0)
+        fail(what, ": not an SBRT stacks file (bad magic number)");
+    const HeaderV2 h = decode_header(data, size, what);
+    const Frame &f = h.frame;
+    if (h.materials == 0 || h.materials > MAX_MATERIALS ||
+        (h.widths.material_bytes == 1 && h.materials > 0x100))
+        fail(what, ": material count ", h.materials, " not in 1..",
+             h.widths.material_bytes == 1 ? 0x100 : MAX_MATERIALS);
+    if (h.intervals > UINT32_MAX)
+        fail(what, ": ", h.intervals, " intervals; this build holds at most "
+             "2^32-1 in memory");
+    const uint64_t limit = options.memory_limit ? options.memory_limit : physical_memory();
+    const double needed = double(f.cells()) * 4 + double(h.intervals) * sizeof(Interval);
+    if (needed > double(limit))
+        fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
+             "memory, more than the ", limit >> 20, " MiB available");
+    if (h.end != size)
+        fail(what, ": file has ", size, " bytes, its header describes ", h.end,
+             h.end > size ? " (truncated)" : "");
+    const BlockGrid grid{f.rows, f.cols, int(h.block_size)};
+    const uint64_t blocks = uint64_t(grid.block_rows()) * uint64_t(grid.block_cols());
+    const uint64_t materials_end = h.materials_at + uint64_t(h.materials) * MATERIAL_BYTES;
+    if (blocks > INT32_MAX || h.materials_at != h.header_size ||
+        materials_end > h.table_at || h.table_at > size ||
+        size - h.table_at != blocks * BLOCK_ENTRY_BYTES)
+        fail(what, ": section offsets do not match the counts (corrupt file)");
+    if (crc32_of(data + h.materials_at, materials_end - h.materials_at) !=
+            h.crc_materials ||
+        crc32_of(data + h.table_at, size - h.table_at) != h.crc_table)
+        fail(what, ": data checksum mismatch (corrupt file)");
+
+    ByteReader in(data, size, what);
+    in.seek(h.materials_at);
+    std::vector<Material> materials(h.materials);
+    for (Material &m : materials) {
+        m.id = in.i32();
+        m.red = in.u8();
+        m.green = in.u8();
+        m.blue = in.u8();
+        m.has_color = (in.u8() & 1) != 0;
+    }
+    materials[0].label = "EMPTY";
+
+    in.seek(h.table_at);
+    std::vector<BlockEntry> entries(blocks);
+    uint64_t total = 0;
+    for (size_t b = 0; b < entries.size(); ++b) {
+        BlockEntry &e = entries[b];
+        e.offset = in.u64();
+        e.compressed = in.u32();
+        e.raw = in.u32();
+        e.intervals = in.u32();
+        e.crc = in.u32();
+        if (e.offset < materials_end || e.offset > h.table_at ||
+            e.compressed > h.table_at - e.offset ||
+            e.raw != raw_block_size(h.widths, grid.cells(int(b)), e.intervals))
+            fail(what, ": block ", b, " lies outside the data or has the wrong "
+                 "size (corrupt file)");
+        total += e.intervals;
+    }
+    if (total != h.intervals)
+        fail(what, ": blocks hold ", total, " intervals, header says ", h.intervals);
+
+    // pass 1: each block's counts (the head of its frame) give the index
+    std::vector<uint32_t> offsets(f.cells() + 1, 0);
+    for_each_row(int(blocks), threads, [&](int block) {
+        const BlockEntry &e = entries[size_t(block)];
+        const uint8_t *src = data + e.offset;
+        const std::string where = what + " block " + std::to_string(block);
+        if (crc32_of(src, e.compressed) != e.crc)
+            fail(where, ": checksum mismatch (corrupt file)");
+        const size_t count_bytes = size_t(grid.cells(block)) * h.widths.count_bytes;
+        std::vector<uint8_t> counts(count_bytes);
+        const DecompressorPtr context(ZSTD_createDCtx());
+        decompress_prefix(context.get(), src, e.compressed, counts.data(),
+                          count_bytes, where);
+        uint64_t sum = 0;
+        const uint8_t *p = counts.data();
+        const int r0 = grid.first_row(block), c0 = grid.first_col(block);
+        for (int r = r0; r < r0 + grid.height(block); ++r)
+            for (int c = c0; c < c0 + grid.width(block); ++c) {
+                const uint64_t n = get_le(p, h.widths.count_bytes);
+                p += h.widths.count_bytes;
+                offsets[uint64_t(r) * uint64_t(f.cols) + uint64_t(c) + 1] = uint32_t(n);
+                sum += n;
+            }
+        if (sum != e.intervals)
+            fail(where, ": stack sizes sum to ", sum, ", block table says ",
+                 e.intervals, " (corrupt file)");
+    });
+    for (uint64_t c = 0; c < f.cells(); ++c)
+        offsets[c + 1] += offsets[c]; // sums are checked: no overflow
+
+    // pass 2: each block's intervals into place
+    Intervals intervals(h.intervals);
+    for_each_row(int(blocks), threads, [&](int block) {
+        const BlockEntry &e = entries[size_t(block)];
+        const std::string where = what + " block " + std::to_string(block);
+        std::vector<uint8_t> raw(e.raw);
+        const DecompressorPtr context(ZSTD_createDCtx());
+        const size_t n = ZSTD_decompressDCtx(context.get(), raw.data(), raw.size(),
+                                             data + e.offset, e.compressed);
+        if (ZSTD_isError(n) || n != raw.size())
+            fail(where, ": ", ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong size",
+                 " (corrupt file)");
+        const uint8_t *material = raw.data() + grid.cells(block) * h.widths.count_bytes;
+        const uint8_t *top = material + uint64_t(e.intervals) * h.widths.material_bytes;
+        const int r0 = grid.first_row(block), c0 = grid.first_col(block);
+        for (int r = r0; r < r0 + grid.height(block); ++r)
+            for (int c = c0; c < c0 + grid.width(block); ++c) {
+                const uint64_t cell = uint64_t(r) * uint64_t(f.cols) + uint64_t(c);
+                uint32_t below = 0;
+                for (uint32_t i = offsets[cell]; i < offsets[cell + 1]; ++i) {
+                    Interval &iv = intervals[i];
+                    iv.material = uint32_t(get_le(material, h.widths.material_bytes));
+                    material += h.widths.material_bytes;
+                    if (h.widths.tops == TopEncoding::VoxelBoundaries) {
+                        below += uint32_t(get_le(top, 2)); // < 2^32: counts <= 2^32
+                        iv.top = float(below);
+                        top += 2;
+                    }
+                    else {
+                        std::memcpy(&iv.top, top, 4);
+                        top += 4;
+                    }
+                }
+            }
+    });
+    Model model(f, std::move(materials), std::move(offsets),
+                IntervalArray(std::move(intervals)));
+    try {
+        model.validate();
+    }
+    catch (const Error &e) {
+        fail(what, ": ", e.what());
+    }
+    return model;
+}
+
+} // namespace sbrt
