@@ -17,7 +17,7 @@
 #include "byte_sink.hpp"
 #include "error.hpp"
 #include "mapped_file.hpp"
-#include "stacks_prefix.hpp"
+#include "stacks_fields.hpp"
 
 namespace sbrt {
 

@@ -12,13 +12,12 @@
 
 #include "byte_io.hpp"
 #include "error.hpp"
-#include "stacks_prefix.hpp"
+#include "stacks_fields.hpp"
 
 namespace sbrt {
 
 namespace {
 
-constexpr size_t MATERIAL_BYTES = 8;
 constexpr size_t INTERVAL_BYTES = 8;
 
 struct Offsets {
@@ -29,7 +28,7 @@ Offsets layout(uint64_t materials, uint64_t cells, uint64_t intervals)
 {
     Offsets o;
     o.materials = STACKS_V1_HEADER_SIZE;
-    o.counts = o.materials + materials * MATERIAL_BYTES;
+    o.counts = o.materials + materials * MATERIAL_RECORD_BYTES;
     o.intervals = o.counts + cells * 4;
     o.end = o.intervals + intervals * INTERVAL_BYTES;
     return o;
@@ -49,13 +48,7 @@ std::vector<uint8_t> encode_stacks_v1(const Model &model)
     body.reserve(STACKS_V1_HEADER_SIZE + materials.size() * 8 + f.cells() * 4 +
                  intervals.size() * sizeof(Interval));
     body.raw(std::vector<uint8_t>(STACKS_V1_HEADER_SIZE).data(), STACKS_V1_HEADER_SIZE);
-    for (const Material &m : materials) {
-        body.i32(m.id);
-        body.u8(m.red);
-        body.u8(m.green);
-        body.u8(m.blue);
-        body.u8(m.has_color ? 1 : 0);
-    }
+    write_materials(body, materials);
     const size_t counts_at = body.size();
     for (uint64_t c = 0; c < f.cells(); ++c)
         body.u32(model.stack_size(c));
@@ -76,13 +69,7 @@ std::vector<uint8_t> encode_stacks_v1(const Model &model)
     head.raw(STACKS_MAGIC, sizeof STACKS_MAGIC);
     head.u32(FORMAT_V1_VERSION);
     head.u32(STACKS_V1_HEADER_SIZE);
-    for (double v : {f.north, f.south, f.east, f.west, f.bottom, f.top})
-        head.f64(v);
-    head.u32(uint32_t(f.rows));
-    head.u32(uint32_t(f.cols));
-    head.u32(uint32_t(f.depths));
-    head.i32(f.proj);
-    head.i32(f.zone);
+    write_frame(head, f);
     head.u32(uint32_t(materials.size()));
     head.u64(intervals.size());
     head.u64(o.materials);
@@ -157,23 +144,7 @@ Model decode_stacks_v1(const uint8_t *data, size_t size, const std::string &what
         ByteReader(data + STACKS_V1_HEADER_SIZE - 4, 4, what).u32())
         fail(what, ": header checksum mismatch (corrupt file)");
 
-    Frame f;
-    f.north = in.f64();
-    f.south = in.f64();
-    f.east = in.f64();
-    f.west = in.f64();
-    f.bottom = in.f64();
-    f.top = in.f64();
-    const uint32_t rows = in.u32(), cols = in.u32(), depths = in.u32();
-    if (rows == 0 || cols == 0 || depths == 0 || rows > INT32_MAX ||
-        cols > INT32_MAX || depths > INT32_MAX)
-        fail(what, ": bad grid size ", rows, "x", cols, "x", depths);
-    f.rows = int(rows);
-    f.cols = int(cols);
-    f.depths = int(depths);
-    f.proj = in.i32();
-    f.zone = in.i32();
-    f.validate(what.c_str());
+    const Frame f = read_frame(in, what);
     const uint32_t material_count = in.u32();
     const uint64_t interval_count = in.u64();
     if (material_count == 0 || material_count > MAX_MATERIALS)
@@ -201,14 +172,7 @@ Model decode_stacks_v1(const uint8_t *data, size_t size, const std::string &what
 
     // sections: materials, per-cell counts, intervals
     in.seek(at_materials);
-    std::vector<Material> materials(material_count);
-    for (Material &m : materials) {
-        m.id = in.i32();
-        m.red = in.u8();
-        m.green = in.u8();
-        m.blue = in.u8();
-        m.has_color = (in.u8() & 1) != 0;
-    }
+    std::vector<Material> materials = read_materials(in, material_count);
     // the sections' sizes were checked against the file above: read them
     // straight from memory (little-endian, as the file is)
     std::vector<uint32_t> offsets(f.cells() + 1, 0);
@@ -225,16 +189,8 @@ Model decode_stacks_v1(const uint8_t *data, size_t size, const std::string &what
              interval_count);
     IntervalArray intervals =
         load_intervals(data + at_intervals, size_t(interval_count), std::move(keep));
-    materials[0].label = "EMPTY";
-    Model model(f, std::move(materials), std::move(offsets),
-                std::move(intervals));
-    try {
-        model.validate();
-    }
-    catch (const Error &e) {
-        fail(what, ": ", e.what());
-    }
-    return model;
+    return validated_model(f, std::move(materials), std::move(offsets),
+                           std::move(intervals), what);
 }
 
 } // namespace sbrt

@@ -17,14 +17,13 @@
 #include "byte_io.hpp"
 #include "error.hpp"
 #include "parallel.hpp"
-#include "stacks_prefix.hpp"
+#include "stacks_fields.hpp"
 
 namespace sbrt {
 
 namespace {
 
 constexpr uint8_t COMPRESSION_ZSTD = 1;
-constexpr size_t MATERIAL_BYTES = 8;
 constexpr size_t BLOCK_ENTRY_BYTES = 24;
 constexpr uint32_t MAX_BLOCK_SIZE = 4096;
 
@@ -114,17 +113,6 @@ void encode_block(const Model &model, const BlockGrid &grid, int block,
     }
 }
 
-void write_materials(ByteWriter &out, const std::vector<Material> &materials)
-{
-    for (const Material &m : materials) {
-        out.i32(m.id);
-        out.u8(m.red);
-        out.u8(m.green);
-        out.u8(m.blue);
-        out.u8(m.has_color ? 1 : 0);
-    }
-}
-
 /// \brief The fields of a v2 header that a reader needs.
 struct HeaderV2 {
     uint16_t minor = FORMAT_V2_MINOR;
@@ -144,19 +132,14 @@ std::vector<uint8_t> encode_header(const HeaderV2 &h)
 {
     const Frame &f = h.frame;
     ByteWriter out;
+    out.reserve(STACKS_V2_HEADER_SIZE);
     out.raw(STACKS_MAGIC, sizeof STACKS_MAGIC);
     out.u16(FORMAT_V2_MAJOR);
     out.u16(h.minor);
     out.u32(h.header_size);
     out.u32(h.required);
     out.u32(h.optional);
-    for (double v : {f.north, f.south, f.east, f.west, f.bottom, f.top})
-        out.f64(v);
-    out.u32(uint32_t(f.rows));
-    out.u32(uint32_t(f.cols));
-    out.u32(uint32_t(f.depths));
-    out.i32(f.proj);
-    out.i32(f.zone);
+    write_frame(out, f);
     out.u32(h.materials);
     out.u64(h.intervals);
     out.u32(h.block_size);
@@ -200,23 +183,7 @@ HeaderV2 decode_header(const uint8_t *data, size_t size, const std::string &what
         fail(what, ": written by a newer r3.sbrt (format 2.", h.minor,
              ", features 0x", std::hex, h.required & ~V2_KNOWN_REQUIRED_FEATURES,
              std::dec, " not known here); update r3.sbrt to read it");
-    Frame &f = h.frame;
-    f.north = in.f64();
-    f.south = in.f64();
-    f.east = in.f64();
-    f.west = in.f64();
-    f.bottom = in.f64();
-    f.top = in.f64();
-    const uint32_t rows = in.u32(), cols = in.u32(), depths = in.u32();
-    if (rows == 0 || cols == 0 || depths == 0 || rows > INT32_MAX ||
-        cols > INT32_MAX || depths > INT32_MAX)
-        fail(what, ": bad grid size ", rows, "x", cols, "x", depths);
-    f.rows = int(rows);
-    f.cols = int(cols);
-    f.depths = int(depths);
-    f.proj = in.i32();
-    f.zone = in.i32();
-    f.validate(what.c_str());
+    h.frame = read_frame(in, what);
     h.materials = in.u32();
     h.intervals = in.u64();
     h.block_size = in.u32();
@@ -386,7 +353,7 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
              h.end > size ? " (truncated)" : "");
     const BlockGrid grid{f.rows, f.cols, int(h.block_size)};
     const uint64_t blocks = uint64_t(grid.block_rows()) * uint64_t(grid.block_cols());
-    const uint64_t materials_end = h.materials_at + uint64_t(h.materials) * MATERIAL_BYTES;
+    const uint64_t materials_end = h.materials_at + uint64_t(h.materials) * MATERIAL_RECORD_BYTES;
     if (blocks > INT32_MAX || h.materials_at != h.header_size ||
         materials_end > h.table_at || h.table_at > size ||
         size - h.table_at != blocks * BLOCK_ENTRY_BYTES)
@@ -398,15 +365,7 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
 
     ByteReader in(data, size, what);
     in.seek(h.materials_at);
-    std::vector<Material> materials(h.materials);
-    for (Material &m : materials) {
-        m.id = in.i32();
-        m.red = in.u8();
-        m.green = in.u8();
-        m.blue = in.u8();
-        m.has_color = (in.u8() & 1) != 0;
-    }
-    materials[0].label = "EMPTY";
+    std::vector<Material> materials = read_materials(in, h.materials);
 
     in.seek(h.table_at);
     std::vector<BlockEntry> entries(blocks);
@@ -493,15 +452,8 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
                 }
             }
     });
-    Model model(f, std::move(materials), std::move(offsets),
-                IntervalArray(std::move(intervals)));
-    try {
-        model.validate();
-    }
-    catch (const Error &e) {
-        fail(what, ": ", e.what());
-    }
-    return model;
+    return validated_model(f, std::move(materials), std::move(offsets),
+                           IntervalArray(std::move(intervals)), what);
 }
 
 } // namespace sbrt

@@ -15,7 +15,7 @@
 
 #include "error.hpp"
 #include "format.hpp"
-#include "stacks_prefix.hpp"
+#include "stacks_fields.hpp"
 
 namespace {
 

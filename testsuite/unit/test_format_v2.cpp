@@ -15,7 +15,7 @@
 #include "atomic_dir.hpp"
 #include "byte_io.hpp"
 #include "format.hpp"
-#include "stacks_prefix.hpp"
+#include "stacks_fields.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;
