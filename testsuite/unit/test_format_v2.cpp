@@ -162,6 +162,15 @@ TEST(FormatV2, LayeredVoxelsTakeUnderTwoBytesAnInterval)
     expect_same(decode(bytes), model);
 }
 
+TEST(FormatV2, EvenUncorrelatedColumnsTakeUnderTwoBytesAnInterval)
+{
+    // the worst case: every column random runs of random classes, no
+    // neighbour alike (real lithology is far more alike)
+    const Model model = sbrt_test::build_model(sbrt_test::random_voxels(5, 100, 100, 313, 9));
+    const auto bytes = encode_stacks_v2(model);
+    EXPECT_LT(double(bytes.size()) / double(model.intervals().size()), 2.0);
+}
+
 TEST(FormatV2, LaterMinorVersionWithMoreFieldsIsReadByPrefix)
 {
     const Model model = sbrt_test::build_model(sbrt_test::random_voxels(5, 9, 10, 30));
