@@ -24,6 +24,7 @@
 #include "grass.hpp"
 #include "hidden_materials.hpp"
 #include "material_colors.hpp"
+#include "model_reading.hpp"
 #include "raster_output.hpp"
 #include "scene_pruning.hpp"
 #include "render_options.hpp"
@@ -103,13 +104,13 @@ void run(const RenderRequest &request)
     check_png_pattern(request.png);
     check_video(request);
     // 1. the model, its colours, the drape, the cameras
-    sbrt::Model model = sbrt_grass::read_sbrt_map(request.input.c_str());
+    struct Cell_head region;
+    G_get_window(&region);
+    sbrt::Model model = read_model(request, region);
     apply_color_option(request, model);
     std::optional<sbrt::Drape> drape;
     if (!request.texture.empty())
         drape.emplace(model, read_texture(request.texture), request.texture_blend);
-    struct Cell_head region;
-    G_get_window(&region);
     // the camera frames the model as read, whatever is hidden or cut: the
     // view stays put while strata are switched off (its box only: no
     // pyramid for this tracer)

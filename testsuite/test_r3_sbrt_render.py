@@ -449,5 +449,52 @@ class TestRenderTopView(TestCase):
         self.assertRasterDoesNotExist("bad.red")
 
 
+class TestRenderReadsOnlyTheRegion(TestCase):
+    """A top view of part of an SBRT decompresses only the blocks under it."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        # 200 rows x 160 cols: 4 x 3 blocks of 64 x 64 cells
+        cls.runModule("g.region", n=2000, s=0, e=1600, w=0, res=10, t=120, b=0,
+                      res3=10, tbres=10)
+        cls.runModule(
+            "r3.mapcalc",
+            expression="blocks = if(depth() > 6 + (row() + col()) % 5, null(), "
+            "1 + (row() / 17 + col() / 13 + depth()) % 5)",
+        )
+        cls.runModule("r3.sbrt.convert", input="blocks", output="blocks")
+        cls.runModule("r3.sbrt.render", input="blocks", output="whole", view="top",
+                      material="whole_m", hit_elevation="whole_z")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+
+    def render_part(self, *extra):
+        # rows 70..110, cols 50..90: grown by a cell, block row 1, block cols 0 and 1
+        self.runModule("g.region", n=1300, s=890, e=910, w=500, res=10)
+        run = subprocess.run(
+            ["r3.sbrt.render", "--verbose", "--o", "input=blocks", "output=part",
+             "view=top", "material=part_m", "hit_elevation=part_z", *extra],
+            capture_output=True, text=True,
+        )
+        self.assertEqual(run.returncode, 0, run.stderr)
+        return run.stderr
+
+    def test_part_equals_the_whole_render_there(self):
+        stderr = self.render_part()
+        self.assertIn("Read 2 of the 12 blocks of SBRT <blocks>", stderr)
+        for whole, part in (("whole_m", "part_m"), ("whole_z", "part_z"),
+                            ("whole.red", "part.red"), ("whole.green", "part.green"),
+                            ("whole.blue", "part.blue")):
+            self.assertRastersNoDifference(part, whole, precision=0)
+
+    def test_depth_map_reads_every_block(self):
+        # the depth of a top view is measured from a camera above the whole model
+        stderr = self.render_part("depth=part_d")
+        self.assertIn("Read 12 of the 12 blocks of SBRT <blocks>", stderr)
+
+
 if __name__ == "__main__":
     test()

@@ -32,11 +32,11 @@ std::string find_sbrt(const char *name)
     return path;
 }
 
-sbrt::Model read_sbrt_map(const char *name)
+sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options)
 {
     const std::string dir = find_sbrt(name);
     try {
-        return sbrt::read_sbrt(dir);
+        return sbrt::read_sbrt(dir, options);
     }
     catch (const sbrt::Error &e) {
         G_fatal_error(_("SBRT <%s> is damaged or not an SBRT: %s. Convert "

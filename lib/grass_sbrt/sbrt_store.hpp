@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "format.hpp"
 #include "model.hpp"
 
 namespace sbrt_grass {
@@ -19,8 +20,9 @@ constexpr const char *ELEMENT = "sbrt";
 /// Directory of an existing SBRT `name` or `name@mapset`; fatal error with
 /// advice when it is not found.
 std::string find_sbrt(const char *name);
-/// Reads an SBRT; a damaged one gives a fatal error naming the map.
-sbrt::Model read_sbrt_map(const char *name);
+/// Reads an SBRT (all of it, or what `options` ask for); a damaged one
+/// gives a fatal error naming the map.
+sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options = {});
 /// Checks the name and overwrite rules, then returns the directory of the
 /// new SBRT in the current mapset.
 std::string new_sbrt_path(const char *name, bool overwrite);

@@ -27,8 +27,11 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
     const uint16_t major = stacks_major_version(data, size);
     if (major == 0)
         fail(what, ": not an SBRT stacks file (bad magic number)");
-    if (major == FORMAT_V1_VERSION)
+    if (major == FORMAT_V1_VERSION) {
+        if (options.report)
+            *options.report = ReadReport{};
         return decode_stacks_v1(data, size, what, std::move(keep));
+    }
     if (major == FORMAT_V2_MAJOR)
         return decode_stacks_v2(data, size, what, options);
     fail(what, ": format version ", major, " is not supported (this build "

@@ -207,6 +207,31 @@ HeaderV2 decode_header(const uint8_t *data, size_t size, const std::string &what
     return h;
 }
 
+/// Whether `block` holds a cell within one cell of `area` (all, without).
+std::vector<char> blocks_meeting(const BlockGrid &grid, const Frame &f,
+                                 const std::optional<MapArea> &area)
+{
+    std::vector<char> wanted(size_t(grid.count()), 1);
+    if (!area)
+        return wanted;
+    // the cells the area touches, one more on every side, clamped
+    auto clamp = [](double v, int high) {
+        return int(std::max(0.0, std::min(double(high), v)));
+    };
+    const int first_col = clamp(std::floor((area->west - f.west) / f.ew_res()) - 1, f.cols - 1);
+    const int last_col = clamp(std::floor((area->east - f.west) / f.ew_res()) + 1, f.cols - 1);
+    const int first_row = clamp(std::floor((f.north - area->north) / f.ns_res()) - 1, f.rows - 1);
+    const int last_row = clamp(std::floor((f.north - area->south) / f.ns_res()) + 1, f.rows - 1);
+    const bool outside = area->west > f.east || area->east < f.west ||
+                         area->south > f.north || area->north < f.south;
+    for (int b = 0; b < grid.count(); ++b)
+        wanted[size_t(b)] = !outside && grid.first_col(b) <= last_col &&
+                            grid.first_col(b) + grid.width(b) > first_col &&
+                            grid.first_row(b) <= last_row &&
+                            grid.first_row(b) + grid.height(b) > first_row;
+    return wanted;
+}
+
 uint64_t physical_memory()
 {
     const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
@@ -340,14 +365,6 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         (h.widths.material_bytes == 1 && h.materials > 0x100))
         fail(what, ": material count ", h.materials, " not in 1..",
              h.widths.material_bytes == 1 ? 0x100 : MAX_MATERIALS);
-    if (h.intervals > UINT32_MAX)
-        fail(what, ": ", h.intervals, " intervals; this build holds at most "
-             "2^32-1 in memory");
-    const uint64_t limit = options.memory_limit ? options.memory_limit : physical_memory();
-    const double needed = double(f.cells()) * 4 + double(h.intervals) * sizeof(Interval);
-    if (needed > double(limit))
-        fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
-             "memory, more than the ", limit >> 20, " MiB available");
     if (h.end != size)
         fail(what, ": file has ", size, " bytes, its header describes ", h.end,
              h.end > size ? " (truncated)" : "");
@@ -386,10 +403,29 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     }
     if (total != h.intervals)
         fail(what, ": blocks hold ", total, " intervals, header says ", h.intervals);
+    const std::vector<char> wanted = blocks_meeting(grid, f, options.area);
+    uint64_t wanted_intervals = 0, wanted_blocks = 0;
+    for (size_t b = 0; b < entries.size(); ++b)
+        if (wanted[b]) {
+            wanted_intervals += entries[b].intervals;
+            ++wanted_blocks;
+        }
+    if (wanted_intervals > UINT32_MAX)
+        fail(what, ": ", wanted_intervals, " intervals; this build holds at most "
+             "2^32-1 in memory (read a smaller area)");
+    if (options.report)
+        *options.report = ReadReport{blocks, wanted_blocks};
+    const uint64_t limit = options.memory_limit ? options.memory_limit : physical_memory();
+    const double needed = double(f.cells()) * 4 + double(wanted_intervals) * sizeof(Interval);
+    if (needed > double(limit))
+        fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
+             "memory, more than the ", limit >> 20, " MiB available");
 
     // pass 1: each block's counts (the head of its frame) give the index
     std::vector<uint32_t> offsets(f.cells() + 1, 0);
     for_each_row(int(blocks), threads, [&](int block) {
+        if (!wanted[size_t(block)])
+            return;
         const BlockEntry &e = entries[size_t(block)];
         const uint8_t *src = data + e.offset;
         const std::string where = what + " block " + std::to_string(block);
@@ -418,8 +454,10 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         offsets[c + 1] += offsets[c]; // sums are checked: no overflow
 
     // pass 2: each block's intervals into place
-    Intervals intervals(h.intervals);
+    Intervals intervals(wanted_intervals);
     for_each_row(int(blocks), threads, [&](int block) {
+        if (!wanted[size_t(block)])
+            return;
         const BlockEntry &e = entries[size_t(block)];
         const std::string where = what + " block " + std::to_string(block);
         std::vector<uint8_t> raw(e.raw);

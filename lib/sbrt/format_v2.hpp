@@ -12,6 +12,7 @@
 #define SBRT_FORMAT_V2_HPP
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,10 +71,26 @@ void write_stacks_v2(ByteSink &sink, const Model &model,
 std::vector<uint8_t> encode_stacks_v2(const Model &model,
                                       const StacksV2Options &options = {});
 
+/// \brief A rectangle of map coordinates.
+struct MapArea {
+    double north, south, east, west;
+};
+
+/// \brief What a read did.
+struct ReadReport {
+    uint64_t blocks = 0;      ///< blocks of the file (0: a v1 file)
+    uint64_t blocks_read = 0; ///< those decompressed
+};
+
 /// \brief How a reader decodes.
 struct ReadOptions {
     unsigned threads = 0;      ///< 0: all cores
     uint64_t memory_limit = 0; ///< most bytes the model may take; 0: the RAM
+    /// Where given, only the blocks of cells that meet this area (grown by
+    /// one cell) are decompressed; the stacks of all other cells are left
+    /// empty. v1 files are read whole.
+    std::optional<MapArea> area;
+    ReadReport *report = nullptr; ///< filled where given
 };
 
 /// Decodes untrusted bytes (checks sizes, offsets, checksums, every

@@ -220,6 +220,49 @@ TEST(FormatV2, VersionOneDirectoriesStayReadable)
     remove_tree(dir.substr(0, dir.rfind('/')));
 }
 
+TEST(FormatV2, AnAreaReadsOnlyTheBlocksItMeets)
+{
+    const Model model = sbrt_test::build_model(sbrt_test::random_voxels(12, 40, 50, 30));
+    const Frame &f = model.frame(); // 10 x 5 map units a cell
+    StacksV2Options options;
+    options.block_size = 8;
+    const auto bytes = encode_stacks_v2(model, options);
+    ReadReport report;
+    ReadOptions read;
+    read.report = &report;
+    // cells of rows 12..19 and cols 20..29 (edges inside cells)
+    read.area = MapArea{f.north - 12 * 10 - 3, f.north - 20 * 10 + 3, f.west + 30 * 5 - 1,
+                        f.west + 20 * 5 + 1};
+    const Model part = decode_stacks(bytes.data(), bytes.size(), "area", nullptr, read);
+    // grown by one cell: rows 11..20 and cols 19..30, in blocks of 8: rows
+    // 8..23, cols 16..31 (2 x 2 of 5 x 7 blocks)
+    EXPECT_EQ(report.blocks, 35u);
+    EXPECT_EQ(report.blocks_read, 4u);
+    for (int r = 0; r < f.rows; ++r)
+        for (int c = 0; c < f.cols; ++c) {
+            const uint64_t cell = model.cell_index(r, c);
+            const bool read_block = r >= 8 && r < 24 && c >= 16 && c < 32;
+            ASSERT_EQ(part.stack_size(cell), read_block ? model.stack_size(cell) : 0u)
+                << r << "," << c;
+            for (uint32_t i = 0; i < part.stack_size(cell); ++i) {
+                const Interval a = part.intervals()[part.stack_begin(cell) + i];
+                const Interval b = model.intervals()[model.stack_begin(cell) + i];
+                ASSERT_EQ(a.material, b.material);
+                ASSERT_EQ(a.top, b.top);
+            }
+        }
+    // an area off the model reads nothing and leaves every stack empty
+    read.area = MapArea{f.north + 100, f.north + 50, f.east, f.west};
+    const Model none = decode_stacks(bytes.data(), bytes.size(), "area", nullptr, read);
+    EXPECT_EQ(report.blocks_read, 0u);
+    EXPECT_TRUE(none.intervals().empty());
+    // a v1 file is read whole
+    const auto v1 = encode_stacks_v1(model);
+    EXPECT_EQ(decode_stacks(v1.data(), v1.size(), "v1", nullptr, read).intervals().size(),
+              model.intervals().size());
+    EXPECT_EQ(report.blocks, 0u);
+}
+
 TEST(FormatV2, ModelLargerThanTheMemoryLimitIsRefusedFirst)
 {
     const Model model = sbrt_test::build_model(sbrt_test::random_voxels(9, 20, 20, 40));
