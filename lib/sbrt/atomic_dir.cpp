@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <csignal>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
@@ -60,6 +61,30 @@ bool exchange(const std::string &a, const std::string &b)
 #endif
 }
 
+/// Removes what writers of `target` that were killed left: hidden
+/// siblings `.name.tmp.PID` and `.name.old.PID` of processes gone.
+void sweep_stale_siblings(const std::string &target)
+{
+    const auto slash = target.find_last_of('/');
+    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
+    std::error_code ec;
+    for (const auto &entry : std::filesystem::directory_iterator(parent_of(target), ec)) {
+        const std::string name = entry.path().filename().string();
+        for (const char *tag : {".tmp.", ".old."}) {
+            const std::string prefix = "." + base + tag;
+            if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0)
+                continue;
+            const std::string digits = name.substr(prefix.size());
+            if (digits.find_first_not_of("0123456789") != std::string::npos ||
+                digits.size() > 9)
+                continue;
+            const pid_t pid = pid_t(std::stol(digits));
+            if (pid > 0 && kill(pid, 0) != 0 && errno == ESRCH)
+                remove_tree(entry.path().string());
+        }
+    }
+}
+
 } // namespace
 
 bool remove_tree(const std::string &path)
@@ -72,6 +97,7 @@ bool remove_tree(const std::string &path)
 AtomicDirectory::AtomicDirectory(std::string target)
     : target_(std::move(target)), temp_(sibling(target_, "tmp"))
 {
+    sweep_stale_siblings(target_);
     remove_tree(temp_);
     std::error_code ec;
     std::filesystem::create_directories(parent_of(target_), ec);

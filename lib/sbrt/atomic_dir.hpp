@@ -15,6 +15,8 @@ namespace sbrt {
 
 /// \brief A temporary sibling directory that replaces `target` on commit().
 /// Destroyed without commit(), it removes itself and `target` is untouched.
+/// What a killed writer of `target` left (hidden siblings of a process
+/// that no longer runs) is removed by the next writer of `target`.
 class AtomicDirectory {
 public:
     explicit AtomicDirectory(std::string target);

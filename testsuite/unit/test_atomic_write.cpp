@@ -157,7 +157,7 @@ std::vector<std::pair<std::string, std::string>> snapshot(const std::string &dir
 
 } // namespace
 
-TEST(AtomicWrite, KilledMidWriteLeavesNoTargetOrTheWholeOldOne)
+TEST(AtomicWrite, KilledMidWriteLeavesNoTargetOrTheWholeOldOneAndTheNextWriteSweeps)
 {
     const std::string parent = sbrt_test::temp_dir("kill");
     const std::string dir = parent + "/m";
@@ -232,13 +232,16 @@ TEST(AtomicWrite, KilledMidWriteLeavesNoTargetOrTheWholeOldOne)
                         << what;
                     EXPECT_FALSE(std::filesystem::exists(written + "/header")) << what;
                 }
-                // the library never removes another process's temporary
-                remove_tree(written);
+                // left for the next writer, which sweeps it (its process is gone)
             }
     }
-    // and a later write replaces the old SBRT whole
+    // a temporary of a process that still runs stays
+    const std::string live = parent + "/.m.tmp." + std::to_string(getppid());
+    ASSERT_TRUE(std::filesystem::create_directory(live));
+    // and a later write replaces the old SBRT whole, sweeping what the
+    // last killed writer left
     write_sbrt(dir, new_model, "new\n");
     EXPECT_EQ(file_text(dir + "/stacks"), stacks);
-    EXPECT_EQ(entries(parent), std::set<std::string>{"m"});
+    EXPECT_EQ(entries(parent), (std::set<std::string>{"m", ".m.tmp." + std::to_string(getppid())}));
     remove_tree(parent);
 }
