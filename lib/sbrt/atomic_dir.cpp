@@ -14,6 +14,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 
 #include "error.hpp"
@@ -61,27 +62,43 @@ bool exchange(const std::string &a, const std::string &b)
 #endif
 }
 
-/// Removes what writers of `target` that were killed left: hidden
-/// siblings `.name.tmp.PID` and `.name.old.PID` of processes gone.
-void sweep_stale_siblings(const std::string &target)
+/// Whether nothing in `dir` (the directory and its files) changed for
+/// an hour: a writer that still runs, even on another host sharing the
+/// database, writes into its temporary all the time.
+bool untouched_for_an_hour(const std::filesystem::path &dir)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const auto limit = fs::file_time_type::clock::now() - std::chrono::hours(1);
+    if (fs::last_write_time(dir, ec) > limit || ec)
+        return false;
+    for (const auto &entry : fs::directory_iterator(dir, ec))
+        if (fs::last_write_time(entry.path(), ec) > limit || ec)
+            return false;
+    return !ec;
+}
+
+/// Removes what killed writers of `target` left: hidden siblings
+/// `.name.tmp.PID` of processes that no longer run here, untouched for an
+/// hour. `.name.old.PID` (a previous version, where a kill came between
+/// the two renames of commit's fallback) is left for a person to restore.
+void sweep_stale_temporaries(const std::string &target)
 {
     const auto slash = target.find_last_of('/');
     const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
+    const std::string prefix = "." + base + ".tmp.";
     std::error_code ec;
     for (const auto &entry : std::filesystem::directory_iterator(parent_of(target), ec)) {
         const std::string name = entry.path().filename().string();
-        for (const char *tag : {".tmp.", ".old."}) {
-            const std::string prefix = "." + base + tag;
-            if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0)
-                continue;
-            const std::string digits = name.substr(prefix.size());
-            if (digits.find_first_not_of("0123456789") != std::string::npos ||
-                digits.size() > 9)
-                continue;
-            const pid_t pid = pid_t(std::stol(digits));
-            if (pid > 0 && kill(pid, 0) != 0 && errno == ESRCH)
-                remove_tree(entry.path().string());
-        }
+        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0)
+            continue;
+        const std::string digits = name.substr(prefix.size());
+        if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+            continue;
+        const pid_t pid = pid_t(std::stol(digits));
+        if (pid > 0 && kill(pid, 0) != 0 && errno == ESRCH &&
+            untouched_for_an_hour(entry.path()))
+            remove_tree(entry.path().string());
     }
 }
 
@@ -97,7 +114,7 @@ bool remove_tree(const std::string &path)
 AtomicDirectory::AtomicDirectory(std::string target)
     : target_(std::move(target)), temp_(sibling(target_, "tmp"))
 {
-    sweep_stale_siblings(target_);
+    sweep_stale_temporaries(target_);
     remove_tree(temp_);
     std::error_code ec;
     std::filesystem::create_directories(parent_of(target_), ec);

@@ -15,8 +15,9 @@ namespace sbrt {
 
 /// \brief A temporary sibling directory that replaces `target` on commit().
 /// Destroyed without commit(), it removes itself and `target` is untouched.
-/// What a killed writer of `target` left (hidden siblings of a process
-/// that no longer runs) is removed by the next writer of `target`.
+/// What a killed writer of `target` left (its hidden temporary, once its
+/// process no longer runs and nothing in it changed for an hour) is
+/// removed by the next writer of `target`.
 class AtomicDirectory {
 public:
     explicit AtomicDirectory(std::string target);

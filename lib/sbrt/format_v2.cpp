@@ -39,9 +39,11 @@ using DecompressorPtr = std::unique_ptr<ZSTD_DCtx, DecompressContext>;
 /// \brief The blocks of a grid: square tiles of cells, row by row.
 struct BlockGrid {
     int rows, cols, size;
-    int block_rows() const { return (rows + size - 1) / size; }
-    int block_cols() const { return (cols + size - 1) / size; }
-    int count() const { return block_rows() * block_cols(); }
+    // in 64 bits: rows + size - 1 may pass INT32_MAX
+    int block_rows() const { return int((int64_t(rows) + size - 1) / size); }
+    int block_cols() const { return int((int64_t(cols) + size - 1) / size); }
+    /// At most rows * cols <= 2^31 - 1 (Frame::validate).
+    int count() const { return int(int64_t(block_rows()) * block_cols()); }
     int first_row(int block) const { return block / block_cols() * size; }
     int first_col(int block) const { return block % block_cols() * size; }
     int height(int block) const { return std::min(size, rows - first_row(block)); }
@@ -105,7 +107,9 @@ void encode_block(const Model &model, const BlockGrid &grid, int block,
                     below = all[i].top;
                 }
                 else {
-                    std::memcpy(tops, &all[i].top, 4);
+                    uint32_t bits;
+                    std::memcpy(&bits, &all[i].top, 4);
+                    put_le(tops, bits, 4); // little-endian on any host
                     tops += 4;
                 }
             }
@@ -479,12 +483,13 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
                     iv.material = uint32_t(get_le(material, h.widths.material_bytes));
                     material += h.widths.material_bytes;
                     if (h.widths.tops == TopEncoding::VoxelBoundaries) {
-                        below += uint32_t(get_le(top, 2)); // < 2^32: counts <= 2^32
+                        below += uint32_t(get_le(top, 2)); // a wrap gives tops validate() rejects
                         iv.top = float(below);
                         top += 2;
                     }
                     else {
-                        std::memcpy(&iv.top, top, 4);
+                        const uint32_t bits = uint32_t(get_le(top, 4));
+                        std::memcpy(&iv.top, &bits, 4);
                         top += 4;
                     }
                 }

@@ -32,13 +32,14 @@ template <typename RowFunction>
 void for_each_row(int first, int last, unsigned threads, const RowFunction &row_function)
 {
     threads = thread_count(threads);
-    std::atomic<int> next{first};
+    // 64 bits: every thread takes one past `last`, which must not wrap
+    std::atomic<long long> next{first};
     std::exception_ptr error;
     std::mutex error_mutex;
     auto work = [&]() {
         try {
-            for (int row; (row = next++) < last;)
-                row_function(row);
+            for (long long row; (row = next++) < last;)
+                row_function(int(row));
         }
         catch (...) {
             next = last; // the others stop at their next row

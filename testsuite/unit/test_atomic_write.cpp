@@ -11,7 +11,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <utility>
@@ -157,7 +159,7 @@ std::vector<std::pair<std::string, std::string>> snapshot(const std::string &dir
 
 } // namespace
 
-TEST(AtomicWrite, KilledMidWriteLeavesNoTargetOrTheWholeOldOneAndTheNextWriteSweeps)
+TEST(AtomicWrite, KilledMidWriteLeavesNoTargetOrTheWholeOldOne)
 {
     const std::string parent = sbrt_test::temp_dir("kill");
     const std::string dir = parent + "/m";
@@ -232,16 +234,51 @@ TEST(AtomicWrite, KilledMidWriteLeavesNoTargetOrTheWholeOldOneAndTheNextWriteSwe
                         << what;
                     EXPECT_FALSE(std::filesystem::exists(written + "/header")) << what;
                 }
-                // left for the next writer, which sweeps it (its process is gone)
+                // a fresh temporary is never swept (see the next test)
+                remove_tree(written);
             }
     }
-    // a temporary of a process that still runs stays
-    const std::string live = parent + "/.m.tmp." + std::to_string(getppid());
-    ASSERT_TRUE(std::filesystem::create_directory(live));
-    // and a later write replaces the old SBRT whole, sweeping what the
-    // last killed writer left
+    // and a later write replaces the old SBRT whole
     write_sbrt(dir, new_model, "new\n");
     EXPECT_EQ(file_text(dir + "/stacks"), stacks);
-    EXPECT_EQ(entries(parent), (std::set<std::string>{"m", ".m.tmp." + std::to_string(getppid())}));
+    EXPECT_EQ(entries(parent), std::set<std::string>{"m"});
+    remove_tree(parent);
+}
+
+TEST(AtomicWrite, TheNextWriteSweepsOnlyOldTemporariesOfGoneProcesses)
+{
+    namespace fs = std::filesystem;
+    const std::string parent = sbrt_test::temp_dir("sweep");
+    const pid_t gone = fork();
+    if (gone == 0)
+        _exit(0);
+    ASSERT_GT(gone, 0);
+    waitpid(gone, nullptr, 0);
+    const std::string dead = std::to_string(gone), live = std::to_string(getppid());
+    const auto hours_ago = fs::file_time_type::clock::now() - std::chrono::hours(2);
+    auto make = [&](const std::string &name, bool old) {
+        const fs::path dir = parent + "/" + name;
+        fs::create_directory(dir);
+        const fs::path file = dir / "stacks";
+        { std::ofstream(file) << "partial"; }
+        if (old) {
+            fs::last_write_time(file, hours_ago);
+            fs::last_write_time(dir, hours_ago);
+        }
+    };
+    make(".m.tmp." + dead, true);   // a killed writer's, long ago: swept
+    make(".m.tmp." + live, true);   // a live process's: kept
+    make(".m.tmp.x" + dead, true);  // not a pid: kept
+    make(".n.tmp." + dead, true);   // another SBRT's: kept
+    make(".m.old." + dead, true);   // maybe the only copy: kept
+    write_sbrt(parent + "/m", model_with_seed(3, 6), "new\n");
+    EXPECT_EQ(entries(parent),
+              (std::set<std::string>{"m", ".m.tmp." + live, ".m.tmp.x" + dead,
+                                     ".n.tmp." + dead, ".m.old." + dead}));
+    // one written into within the hour may be a writer on another host
+    remove_tree(parent + "/m");
+    make(".m.tmp." + dead, false);
+    write_sbrt(parent + "/m", model_with_seed(3, 6), "new\n");
+    EXPECT_TRUE(fs::exists(parent + "/.m.tmp." + dead));
     remove_tree(parent);
 }

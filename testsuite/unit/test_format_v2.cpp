@@ -280,8 +280,9 @@ TEST(FormatV2, CorruptBlocksWithValidChecksumsNeverCrash)
     const auto bytes = encode_stacks_v2(model, options);
     const size_t table = size_t(field(bytes, AT_TABLE, 8));
     std::mt19937 rng(11);
+    std::vector<uint8_t> bad;
     for (int trial = 0; trial < 300; ++trial) {
-        auto bad = bytes;
+        bad = bytes;
         const size_t entry = table + 24 * (rng() % ((bad.size() - table) / 24));
         const size_t offset = size_t(field(bad, entry, 8));
         const size_t compressed = size_t(field(bad, entry + 8, 4));
@@ -294,8 +295,14 @@ TEST(FormatV2, CorruptBlocksWithValidChecksumsNeverCrash)
         // model: never a crash (the sanitizer build runs this too)
         message_of(bad);
     }
+    // a grid of 2^31 - 1 rows: its blocks are counted without overflow
+    bad = bytes;
+    set_field(bad, 72, 0x7fffffff, 4);
+    set_field(bad, 76, 1, 4);
+    reseal_header(bad, STACKS_V2_HEADER_SIZE);
+    EXPECT_NE(message_of(bad), "");
     // field widths no writer makes
-    auto bad = bytes;
+    bad = bytes;
     set_field(bad, AT_WIDTHS, 3, 1);
     reseal_header(bad, STACKS_V2_HEADER_SIZE);
     EXPECT_NE(message_of(bad).find("widths"), std::string::npos);

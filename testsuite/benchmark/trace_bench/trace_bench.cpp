@@ -10,11 +10,14 @@
  *                        bands handed to a sink), warm, on threads= (0:
  *                        all cores); beside it the whole-image reference
  *                        (trace_image, then shade)
+ *              format    the stacks file in format 1 and 2: bytes, bytes
+ *                        per interval, load (warm) and write times
  *              error     time against error: the exact method, the sampled
  *                        one (steps 1..1/16 cell, adaptive), kernel
  *                        normals k = 3..11, each against the exact CPU
  *                        reference with face normals
- * USAGE:     trace_bench skipping|frame|error SBRT_DIR position=x,y,z
+ * USAGE:     trace_bench format SBRT_DIR [repeat=7] [label=name]
+ *            trace_bench skipping|frame|error SBRT_DIR position=x,y,z
  *            target=x,y,z [fov=25] [zexag=1] [cols=1056] [rows=884]
  *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
  *            [threads=N] [classes=FILE: error writes the reference's class
@@ -35,6 +38,7 @@
 #include <glm/geometric.hpp>
 
 #include "cpu_tracing.hpp"
+#include "atomic_dir.hpp"
 #include "error.hpp"
 #include "format.hpp"
 #include "gpu_tracer.hpp"
@@ -317,10 +321,43 @@ void frame(const std::string &dir, const Args &args, const Camera &camera, doubl
                 load_ms, prepare_ms, ms[0], rays / ms[0] / 1000, ms[1], checksum);
 }
 
+/// Format 1 against format 2 on the model of `directory` (whatever its
+/// own format): both written to temporary directories, each read and
+/// written `repeat` times in turns.
+void formats(const std::string &directory, const Args &args, int repeat)
+{
+    const Model model = read_sbrt(directory);
+    const std::string v1 = directory + ".bench_v1", v2 = directory + ".bench_v2";
+    const auto write_v1 = [&] {
+        AtomicDirectory out(v1);
+        out.write_file("stacks", encode_stacks_v1(model));
+        out.commit();
+    };
+    write_v1();
+    write_sbrt(v2, model, "bench");
+    size_t sink = 0;
+    const std::vector<double> ms = best_ms_in_turns(
+        repeat, {[&] { sink += read_sbrt(v1).intervals().size(); },
+                 [&] { sink += read_sbrt(v2).intervals().size(); }, write_v1,
+                 [&] { write_sbrt(v2, model, "bench"); }});
+    const double v1_bytes = double(read_file_bytes(v1 + "/stacks").size());
+    const double v2_bytes = double(read_file_bytes(v2 + "/stacks").size());
+    const double intervals = double(model.intervals().size());
+    std::printf("format label=%s intervals=%.0f cells=%llu v1_bytes=%.0f v2_bytes=%.0f "
+                "v1_per_interval=%.2f v2_per_interval=%.2f v1/v2=%.1f "
+                "load_v1_ms=%.1f load_v2_ms=%.1f write_v1_ms=%.1f write_v2_ms=%.1f (%zu)\n",
+                args.get("label", directory).c_str(), intervals,
+                (unsigned long long)model.frame().cells(), v1_bytes, v2_bytes,
+                v1_bytes / intervals, v2_bytes / intervals, v1_bytes / v2_bytes, ms[0], ms[1],
+                ms[2], ms[3], sink);
+    remove_tree(v1);
+    remove_tree(v2);
+}
+
 int main(int argc, char *argv[])
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s skipping|frame|error SBRT_DIR key=value...\n", argv[0]);
+        std::fprintf(stderr, "usage: %s format|skipping|frame|error SBRT_DIR key=value...\n", argv[0]);
         return 2;
     }
     try {
@@ -333,6 +370,10 @@ int main(int argc, char *argv[])
             args.values[a.substr(0, eq)] = a.substr(eq + 1);
         }
         const std::string mode = argv[1];
+        if (mode == "format") {
+            formats(argv[2], args, std::stoi(args.get("repeat", "7")));
+            return 0;
+        }
         const Model model = mode == "frame" ? Model() : load(argv[2], args);
         const double zexag = std::stod(args.get("zexag", "1"));
         const int repeat = std::stoi(args.get("repeat", "3"));
