@@ -464,8 +464,8 @@ class TestRenderReadsOnlyTheRegion(TestCase):
             "1 + (row() / 17 + col() / 13 + depth()) % 5)",
         )
         cls.runModule("r3.sbrt.convert", input="blocks", output="blocks")
-        cls.runModule("r3.sbrt.render", input="blocks", output="whole", view="top",
-                      material="whole_m", hit_elevation="whole_z")
+        cls.runModule("r3.sbrt.render", input="blocks", output="rw_whole", view="top",
+                      material="rw_whole_m", hit_elevation="rw_whole_z")
 
     @classmethod
     def tearDownClass(cls):
@@ -475,8 +475,8 @@ class TestRenderReadsOnlyTheRegion(TestCase):
         # rows 70..110, cols 50..90: grown by a cell, block row 1, block cols 0 and 1
         self.runModule("g.region", n=1300, s=890, e=910, w=500, res=10)
         run = subprocess.run(
-            ["r3.sbrt.render", "--verbose", "--o", "input=blocks", "output=part",
-             "view=top", "material=part_m", "hit_elevation=part_z", *extra],
+            ["r3.sbrt.render", "--verbose", "--o", "input=blocks", "output=rw_part",
+             "view=top", "material=rw_part_m", "hit_elevation=rw_part_z", *extra],
             capture_output=True, text=True,
         )
         self.assertEqual(run.returncode, 0, run.stderr)
@@ -485,14 +485,14 @@ class TestRenderReadsOnlyTheRegion(TestCase):
     def test_part_equals_the_whole_render_there(self):
         stderr = self.render_part()
         self.assertIn("Read 2 of the 12 blocks of SBRT <blocks>", stderr)
-        for whole, part in (("whole_m", "part_m"), ("whole_z", "part_z"),
-                            ("whole.red", "part.red"), ("whole.green", "part.green"),
-                            ("whole.blue", "part.blue")):
+        for whole, part in (("rw_whole_m", "rw_part_m"), ("rw_whole_z", "rw_part_z"),
+                            ("rw_whole.red", "rw_part.red"), ("rw_whole.green", "rw_part.green"),
+                            ("rw_whole.blue", "rw_part.blue")):
             self.assertRastersNoDifference(part, whole, precision=0)
 
     def test_depth_map_reads_every_block(self):
         # the depth of a top view is measured from a camera above the whole model
-        stderr = self.render_part("depth=part_d")
+        stderr = self.render_part("depth=rw_part_d")
         self.assertIn("Read 12 of the 12 blocks of SBRT <blocks>", stderr)
 
 
