@@ -23,14 +23,24 @@ namespace sbrt {
 
 namespace {
 
-std::string sibling(const std::string &target, const char *tag)
+std::string parent_of(const std::string &path)
+{
+    const auto slash = path.find_last_of('/');
+    return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+/// `.name.tag.` of target `dir/name`: the start of its hidden siblings'
+/// names, which end in the writer's process id.
+std::string sibling_prefix(const std::string &target, const char *tag)
 {
     const auto slash = target.find_last_of('/');
-    const std::string dir =
-        slash == std::string::npos ? "." : target.substr(0, slash);
-    const std::string base =
-        slash == std::string::npos ? target : target.substr(slash + 1);
-    return dir + "/." + base + "." + tag + "." + std::to_string(getpid());
+    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
+    return "." + base + "." + tag + ".";
+}
+
+std::string sibling(const std::string &target, const char *tag)
+{
+    return parent_of(target) + "/" + sibling_prefix(target, tag) + std::to_string(getpid());
 }
 
 void sync_path(const std::string &path)
@@ -40,12 +50,6 @@ void sync_path(const std::string &path)
         fsync(fd);
         close(fd);
     }
-}
-
-std::string parent_of(const std::string &path)
-{
-    const auto slash = path.find_last_of('/');
-    return slash == std::string::npos ? "." : path.substr(0, slash);
 }
 
 /// renameat2(RENAME_EXCHANGE): swaps two paths in one step (Linux >= 3.15).
@@ -84,9 +88,7 @@ bool untouched_for_an_hour(const std::filesystem::path &dir)
 /// the two renames of commit's fallback) is left for a person to restore.
 void sweep_stale_temporaries(const std::string &target)
 {
-    const auto slash = target.find_last_of('/');
-    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
-    const std::string prefix = "." + base + ".tmp.";
+    const std::string prefix = sibling_prefix(target, "tmp");
     std::error_code ec;
     for (const auto &entry : std::filesystem::directory_iterator(parent_of(target), ec)) {
         const std::string name = entry.path().filename().string();

@@ -15,6 +15,22 @@
 
 namespace sbrt {
 
+/// Stores the low `bytes` bytes of `v` at `p`, little-endian.
+inline void store_le(uint8_t *p, uint64_t v, int bytes)
+{
+    for (int i = 0; i < bytes; ++i)
+        p[i] = uint8_t(v >> (8 * i));
+}
+
+/// The little-endian unsigned number of `bytes` bytes at `p`.
+inline uint64_t load_le(const uint8_t *p, int bytes)
+{
+    uint64_t v = 0;
+    for (int i = 0; i < bytes; ++i)
+        v |= uint64_t(p[i]) << (8 * i);
+    return v;
+}
+
 /// \brief Appends little-endian fields to a byte vector.
 class ByteWriter {
 public:

@@ -88,12 +88,6 @@ std::vector<uint8_t> encode_stacks_v1(const Model &model)
 
 namespace {
 
-uint32_t load_u32(const uint8_t *p)
-{
-    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 |
-           uint32_t(p[3]) << 24;
-}
-
 /// Intervals as stored: u32 material, f32 top, little-endian, 8 bytes
 /// each; a view of them where `keep` holds them and the host reads them as
 /// they are.
@@ -112,8 +106,8 @@ IntervalArray load_intervals(const uint8_t *p, size_t count,
         return intervals;
     }
     for (Interval &iv : intervals) {
-        iv.material = load_u32(p);
-        const uint32_t bits = load_u32(p + 4);
+        iv.material = uint32_t(load_le(p, 4));
+        const uint32_t bits = uint32_t(load_le(p + 4, 4));
         std::memcpy(&iv.top, &bits, 4);
         p += 8;
     }
@@ -179,7 +173,7 @@ Model decode_stacks_v1(const uint8_t *data, size_t size, const std::string &what
     uint64_t total = 0;
     const uint8_t *counts = data + at_counts;
     for (uint64_t c = 0; c < f.cells(); ++c) {
-        total += load_u32(counts + 4 * c);
+        total += load_le(counts + 4 * c, 4);
         if (total > interval_count)
             fail(what, ": stack sizes exceed the interval count");
         offsets[c + 1] = uint32_t(total);

@@ -49,6 +49,16 @@ struct BlockGrid {
     int height(int block) const { return std::min(size, rows - first_row(block)); }
     int width(int block) const { return std::min(size, cols - first_col(block)); }
     uint64_t cells(int block) const { return uint64_t(height(block)) * uint64_t(width(block)); }
+    /// Calls visit(cell) for the cells of `block` (indices row by row of
+    /// the whole grid), in the order the block stores them.
+    template <typename Visit>
+    void for_each_cell(int block, const Visit &visit) const
+    {
+        const int r0 = first_row(block), c0 = first_col(block);
+        for (int r = r0; r < r0 + height(block); ++r)
+            for (int c = c0; c < c0 + width(block); ++c)
+                visit(uint64_t(r) * uint64_t(cols) + uint64_t(c));
+    }
 };
 
 /// \brief One block as stored in the block table.
@@ -63,58 +73,39 @@ uint64_t raw_block_size(const StacksV2Widths &w, uint64_t cells, uint64_t interv
     return cells * w.count_bytes + intervals * (w.material_bytes + top_bytes);
 }
 
-void put_le(uint8_t *p, uint64_t v, int bytes)
+/// The uncompressed bytes of one block (counts, materials, tops) into
+/// `raw`; returns the block's interval count.
+uint32_t encode_block(const Model &model, const BlockGrid &grid, int block,
+                      const StacksV2Widths &w, std::vector<uint8_t> &raw)
 {
-    for (int i = 0; i < bytes; ++i)
-        p[i] = uint8_t(v >> (8 * i));
-}
-
-uint64_t get_le(const uint8_t *p, int bytes)
-{
-    uint64_t v = 0;
-    for (int i = 0; i < bytes; ++i)
-        v |= uint64_t(p[i]) << (8 * i);
-    return v;
-}
-
-/// The uncompressed bytes of one block: counts, materials, tops.
-void encode_block(const Model &model, const BlockGrid &grid, int block,
-                  const StacksV2Widths &w, std::vector<uint8_t> &raw)
-{
-    const int r0 = grid.first_row(block), c0 = grid.first_col(block);
-    const int h = grid.height(block), wd = grid.width(block);
     uint64_t intervals = 0;
-    for (int r = r0; r < r0 + h; ++r)
-        intervals += model.stack_begin(model.cell_index(r, c0 + wd)) -
-                     model.stack_begin(model.cell_index(r, c0));
+    grid.for_each_cell(block, [&](uint64_t cell) { intervals += model.stack_size(cell); });
     raw.resize(raw_block_size(w, grid.cells(block), intervals));
     uint8_t *counts = raw.data();
     uint8_t *materials = counts + grid.cells(block) * w.count_bytes;
     uint8_t *tops = materials + intervals * w.material_bytes;
     const Interval *all = model.intervals().data();
-    for (int r = r0; r < r0 + h; ++r) {
-        for (int c = c0; c < c0 + wd; ++c) {
-            const uint64_t cell = model.cell_index(r, c);
-            put_le(counts, model.stack_size(cell), w.count_bytes);
-            counts += w.count_bytes;
-            float below = 0;
-            for (uint32_t i = model.stack_begin(cell); i < model.stack_end(cell); ++i) {
-                put_le(materials, all[i].material, w.material_bytes);
-                materials += w.material_bytes;
-                if (w.tops == TopEncoding::VoxelBoundaries) {
-                    put_le(tops, uint32_t(all[i].top - below), 2);
-                    tops += 2;
-                    below = all[i].top;
-                }
-                else {
-                    uint32_t bits;
-                    std::memcpy(&bits, &all[i].top, 4);
-                    put_le(tops, bits, 4); // little-endian on any host
-                    tops += 4;
-                }
+    grid.for_each_cell(block, [&](uint64_t cell) {
+        store_le(counts, model.stack_size(cell), w.count_bytes);
+        counts += w.count_bytes;
+        float below = 0;
+        for (uint32_t i = model.stack_begin(cell); i < model.stack_end(cell); ++i) {
+            store_le(materials, all[i].material, w.material_bytes);
+            materials += w.material_bytes;
+            if (w.tops == TopEncoding::VoxelBoundaries) {
+                store_le(tops, uint32_t(all[i].top - below), 2);
+                tops += 2;
+                below = all[i].top;
+            }
+            else {
+                uint32_t bits;
+                std::memcpy(&bits, &all[i].top, 4);
+                store_le(tops, bits, 4); // little-endian on any host
+                tops += 4;
             }
         }
-    }
+    });
+    return uint32_t(intervals);
 }
 
 /// \brief The fields of a v2 header that a reader needs.
@@ -308,7 +299,7 @@ void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &
         const int last = std::min(grid.count(), first + batch);
         for_each_row(first, last, threads, [&](int block) {
             std::vector<uint8_t> raw;
-            encode_block(model, grid, block, h.widths, raw);
+            const uint32_t intervals = encode_block(model, grid, block, h.widths, raw);
             if (raw.size() > UINT32_MAX / 2)
                 fail("write_stacks_v2: block ", block, " holds ", raw.size(),
                      " bytes; write smaller blocks");
@@ -324,9 +315,7 @@ void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &
             e.compressed = uint32_t(n);
             e.raw = uint32_t(raw.size());
             e.crc = crc32_of(out.data(), n);
-            const uint64_t cells_bytes = grid.cells(block) * h.widths.count_bytes;
-            e.intervals = uint32_t((raw.size() - cells_bytes) /
-                                   (raw_block_size(h.widths, 0, 1)));
+            e.intervals = intervals;
         });
         for (int block = first; block < last; ++block) {
             const std::vector<uint8_t> &out = compressed[size_t(block - first)];
@@ -442,14 +431,12 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
                           count_bytes, where);
         uint64_t sum = 0;
         const uint8_t *p = counts.data();
-        const int r0 = grid.first_row(block), c0 = grid.first_col(block);
-        for (int r = r0; r < r0 + grid.height(block); ++r)
-            for (int c = c0; c < c0 + grid.width(block); ++c) {
-                const uint64_t n = get_le(p, h.widths.count_bytes);
-                p += h.widths.count_bytes;
-                offsets[uint64_t(r) * uint64_t(f.cols) + uint64_t(c) + 1] = uint32_t(n);
-                sum += n;
-            }
+        grid.for_each_cell(block, [&](uint64_t cell) {
+            const uint64_t n = load_le(p, h.widths.count_bytes);
+            p += h.widths.count_bytes;
+            offsets[cell + 1] = uint32_t(n);
+            sum += n;
+        });
         if (sum != e.intervals)
             fail(where, ": stack sizes sum to ", sum, ", block table says ",
                  e.intervals, " (corrupt file)");
@@ -473,27 +460,24 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
                  " (corrupt file)");
         const uint8_t *material = raw.data() + grid.cells(block) * h.widths.count_bytes;
         const uint8_t *top = material + uint64_t(e.intervals) * h.widths.material_bytes;
-        const int r0 = grid.first_row(block), c0 = grid.first_col(block);
-        for (int r = r0; r < r0 + grid.height(block); ++r)
-            for (int c = c0; c < c0 + grid.width(block); ++c) {
-                const uint64_t cell = uint64_t(r) * uint64_t(f.cols) + uint64_t(c);
-                uint32_t below = 0;
-                for (uint32_t i = offsets[cell]; i < offsets[cell + 1]; ++i) {
-                    Interval &iv = intervals[i];
-                    iv.material = uint32_t(get_le(material, h.widths.material_bytes));
-                    material += h.widths.material_bytes;
-                    if (h.widths.tops == TopEncoding::VoxelBoundaries) {
-                        below += uint32_t(get_le(top, 2)); // a wrap gives tops validate() rejects
-                        iv.top = float(below);
-                        top += 2;
-                    }
-                    else {
-                        const uint32_t bits = uint32_t(get_le(top, 4));
-                        std::memcpy(&iv.top, &bits, 4);
-                        top += 4;
-                    }
+        grid.for_each_cell(block, [&](uint64_t cell) {
+            uint32_t below = 0;
+            for (uint32_t i = offsets[cell]; i < offsets[cell + 1]; ++i) {
+                Interval &iv = intervals[i];
+                iv.material = uint32_t(load_le(material, h.widths.material_bytes));
+                material += h.widths.material_bytes;
+                if (h.widths.tops == TopEncoding::VoxelBoundaries) {
+                    below += uint32_t(load_le(top, 2)); // a wrap gives tops validate() rejects
+                    iv.top = float(below);
+                    top += 2;
+                }
+                else {
+                    const uint32_t bits = uint32_t(load_le(top, 4));
+                    std::memcpy(&iv.top, &bits, 4);
+                    top += 4;
                 }
             }
+        });
     });
     return validated_model(f, std::move(materials), std::move(offsets),
                            IntervalArray(std::move(intervals)), what);
