@@ -7,78 +7,33 @@
  ****************************************************************************/
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 #include <optional>
 #include <vector>
 
-#include <glm/geometric.hpp>
-
 #include "annotation_setup.hpp"
 #include "backend.hpp"
-#include "borehole_setup.hpp"
 #include "camera_path.hpp"
 #include "frame_cameras.hpp"
 #include "frames.hpp"
 #include "drape.hpp"
 #include "error.hpp"
 #include "grass.hpp"
-#include "hidden_materials.hpp"
 #include "material_colors.hpp"
 #include "model_reading.hpp"
+#include "prepared_scene.hpp"
 #include "raster_output.hpp"
 #include "scene_pruning.hpp"
 #include "render_options.hpp"
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "scene_camera.hpp"
-#include "scene_setup.hpp"
 #include "skipping_report.hpp"
 #include "texture_input.hpp"
-#include "vector_input.hpp"
+#include "view_server.hpp"
 
 namespace {
-
-/// The scene of the request: planes, translucent strata, boreholes, fence.
-sbrt::Scene make_scene(const RenderRequest &request, const sbrt::Model &original,
-                       sbrt::Model &model, const std::vector<uint32_t> &hidden,
-                       const sbrt::Camera &camera)
-{
-    sbrt::Scene scene;
-    scene.planes = clip_planes(request, camera);
-    if (!request.boreholes.empty()) {
-        scene.boreholes = make_boreholes(request, original, model, hidden);
-        const sbrt::Frame &f = model.frame();
-        scene.borehole_radius =
-            request.borehole_radius.value_or(0.4 * std::min(f.ew_res(), f.ns_res()));
-        if (request.split_logs) {
-            // the log on the left half as the camera sees it
-            const glm::dvec2 right(camera.du());
-            scene.split = -glm::normalize(right);
-        }
-        report_borehole_bytes(model, scene.boreholes, request.boreholes_only);
-    }
-    if (!request.fence.empty())
-        scene.fence = read_fence(request.fence);
-    scene.draw_model = !request.boreholes_only && request.fence.empty();
-    scene.skip_empty_space = !request.walk_every_cell;
-    // after the boreholes: a log may have added classes
-    scene.translucency = translucency(request, model);
-    return scene;
-}
-
-sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drape)
-{
-    sbrt::Shading shading;
-    shading.light = sbrt::Shading::light_from(request.light_azimuth,
-                                              request.light_elevation);
-    shading.ambient = request.ambient;
-    shading.background = request.background;
-    shading.normals = request.normals;
-    shading.kernel = request.kernel;
-    shading.smooth = request.smooth;
-    shading.drape = drape;
-    return shading;
-}
 
 /// Traces, shades and writes one image of `renderer` seen by `camera`, on
 /// `backend` (the renderer's).
@@ -125,18 +80,9 @@ void run(const RenderRequest &request)
 
     // 2. the scene: hidden strata, planes, boreholes, fence, translucency
     // (sections and split logs face the first frame's camera)
-    const std::vector<uint32_t> hidden = hidden_materials(request, model);
-    // the boreholes need the model as read where strata are hidden
-    const sbrt::Model original = hidden.empty() || request.boreholes.empty()
-                                     ? sbrt::Model()
-                                     : model;
-    if (!hidden.empty()) {
-        sbrt::Model left = sbrt::hide_materials(model, hidden);
-        report_hidden(model, left, hidden.size());
-        model = std::move(left);
-    }
-    sbrt::Scene scene = make_scene(request, hidden.empty() ? model : original,
-                                   model, hidden, cameras.front());
+    PreparedScene prepared = prepare_scene(request, std::move(model), cameras.front());
+    model = std::move(prepared.model);
+    const sbrt::Scene &scene = prepared.scene;
 
     // 3. the backend; on a GPU what no ray of a single view reaches is not
     // uploaded (the CPU never reads it anyway)
@@ -215,6 +161,16 @@ int main(int argc, char *argv[])
         _("Renders a stack-based terrain model (SBRT) with an exact ray "
           "caster into raster maps.");
     const RenderOptions options = define_render_options();
+    if (argc == 2 && std::strcmp(argv[1], "--serve") == 0) {
+        // g.gui.sbrt's view server: requests on stdin, frames on stdout
+        try {
+            serve_views(options, stdin, stdout);
+        }
+        catch (const std::exception &e) {
+            G_fatal_error(_("The view server failed: %s"), e.what());
+        }
+        exit(EXIT_SUCCESS);
+    }
     sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);

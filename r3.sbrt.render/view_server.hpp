@@ -1,0 +1,33 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   The view server of g.gui.sbrt: one process, one loaded model,
+ *            a frame per request line (r3.sbrt.render's own options), the
+ *            prepared scene kept while only the camera moves
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_VIEW_SERVER_HPP
+#define R3_SBRT_VIEW_SERVER_HPP
+
+#include <cstdio>
+
+#include "render_options.hpp"
+
+/// Serves requests from `in` until "quit" or its end, answering on `out`
+/// (r3.sbrt.render --serve; the protocol is in g.gui.sbrt's manual):
+///
+///     render key=value... -flags  ->  "frame W H MS AZ EL DIST TX TY TZ\n"
+///                                     and W*H*3 bytes of RGB, rows from the top
+///     classes input=NAME          ->  "model N S E W BOTTOM TOP\n",
+///                                     "classes COUNT\n" and per class
+///                                     "ID R G B LABEL\n"
+///     anything wrong              ->  "error MESSAGE\n"
+///
+/// A request's words are those of the command line and are read by the
+/// same code (read_render_options), so a frame is the image the same
+/// command renders; output=, png= and the other maps are ignored. AZ, EL,
+/// DIST and TX,TY,TZ are the camera as azimuth=, elevation=, distance=
+/// and target= (the defaults resolved). Errors the command line would
+/// also stop at end the server (the message on stderr, as there).
+void serve_views(const RenderOptions &options, FILE *in, FILE *out);
+
+#endif
