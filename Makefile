@@ -10,12 +10,14 @@ SUBDIRS = \
 	lib/sbrt_gl \
 	r3.sbrt.convert \
 	r3.sbrt.manage \
-	r3.sbrt.render
+	r3.sbrt.render \
+	g.gui.sbrt
 
 # Plain "make" never installs into the system GISBASE: local builds land in
 # ./dist. g.extension passes BIN=, HTMLDIR=, ... and ARCH_DISTDIR= itself.
 ifeq ($(origin ARCH_DISTDIR),undefined)
-SUBMAKE_ARGS = ARCH_DISTDIR=$(CURDIR)/dist GISBASE=$(MODULE_TOPDIR)
+SUBMAKE_ARGS = ARCH_DISTDIR=$(CURDIR)/dist GISBASE=$(MODULE_TOPDIR) \
+	STRINGDIR=$(CURDIR)/dist/locale/scriptstrings
 endif
 
 default:

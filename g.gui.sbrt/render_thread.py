@@ -1,0 +1,51 @@
+"""
+MODULE:    g.gui.sbrt
+PURPOSE:   Renders on a thread of its own, always the latest request: the
+           window stays responsive and frames never queue up behind a drag
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+
+import threading
+
+from view_client import ServerError
+
+
+class RenderThread(threading.Thread):
+    """Takes requests (r3.sbrt.render options and a tag), renders the
+    latest one through `server` and hands each frame, or the error, to
+    `deliver(tag, frame, error)` (which must pass it to the GUI thread)."""
+
+    def __init__(self, server, deliver):
+        super().__init__(daemon=True)
+        self._server = server
+        self._deliver = deliver
+        self._wake = threading.Condition()
+        self._pending = None
+        self._stop = False
+
+    def request(self, words, tag):
+        """Replaces any request not yet started."""
+        with self._wake:
+            self._pending = (list(words), tag)
+            self._wake.notify()
+
+    def stop(self):
+        with self._wake:
+            self._stop = True
+            self._wake.notify()
+        self.join(timeout=5)
+        self._server.close()
+
+    def run(self):
+        while True:
+            with self._wake:
+                while self._pending is None and not self._stop:
+                    self._wake.wait()
+                if self._stop:
+                    return
+                words, tag = self._pending
+                self._pending = None
+            try:
+                self._deliver(tag, self._server.render(words), None)
+            except ServerError as error:
+                self._deliver(tag, None, str(error))

@@ -1,0 +1,129 @@
+"""
+MODULE:    g.gui.sbrt
+PURPOSE:   The client of the view server (r3.sbrt.render --serve): one
+           process that keeps the SBRT loaded and answers each request
+           line (r3.sbrt.render's own options) with a frame of RGB bytes
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+
+import collections
+import shlex
+import subprocess
+import threading
+
+
+class ServerError(Exception):
+    """The server stopped (its last messages) or refused a request."""
+
+
+Frame = collections.namedtuple(
+    "Frame", "width height ms azimuth elevation distance target rgb words"
+)
+Stratum = collections.namedtuple("Stratum", "id rgb label")
+Extent = collections.namedtuple("Extent", "north south east west bottom top")
+
+
+class ViewServer:
+    """r3.sbrt.render --serve, started at the first request and again
+    after it stopped on an error (the message is in the ServerError)."""
+
+    def __init__(self, command=("r3.sbrt.render", "--serve")):
+        self._command = list(command)
+        self._process = None
+        self._messages = collections.deque(maxlen=20)
+
+    def _start(self):
+        if self._process and self._process.poll() is None:
+            return
+        self._messages.clear()
+        self._process = subprocess.Popen(
+            self._command,
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+        )
+        threading.Thread(
+            target=self._read_messages, args=(self._process.stderr,), daemon=True
+        ).start()
+
+    def _read_messages(self, stream):
+        for line in stream:
+            text = line.decode(errors="replace").strip()
+            if text:
+                self._messages.append(text)
+
+    def _stopped(self):
+        self._process.wait()
+        # the reader thread may still hold the last message
+        self._process.stderr.close()
+        messages = [m for m in self._messages if "ERROR" in m] or list(self._messages)
+        self._process = None
+        return ServerError(
+            messages[-1] if messages else "the view server stopped unexpectedly"
+        )
+
+    def _ask(self, verb, words):
+        self._start()
+        line = " ".join([verb] + [shlex.quote(w) for w in words]) + "\n"
+        try:
+            self._process.stdin.write(line.encode())
+            self._process.stdin.flush()
+        except BrokenPipeError:
+            raise self._stopped() from None
+        return self._line()
+
+    def _line(self):
+        line = self._process.stdout.readline()
+        if not line:
+            raise self._stopped()
+        head = line.decode().rstrip("\n")
+        if head.startswith("error "):
+            raise ServerError(head[len("error ") :])
+        return head.split()
+
+    def _read(self, count):
+        data = self._process.stdout.read(count)
+        if len(data) != count:
+            raise self._stopped()
+        return data
+
+    def render(self, words):
+        """The frame of r3.sbrt.render's options `words` (a list)."""
+        head = self._ask("render", words)
+        width, height = int(head[1]), int(head[2])
+        values = [float(v) for v in head[3:10]]
+        return Frame(
+            width,
+            height,
+            values[0],
+            values[1],
+            values[2],
+            values[3],
+            tuple(values[4:7]),
+            self._read(width * height * 3),
+            list(words),
+        )
+
+    def strata(self, sbrt):
+        """The extent and strata (id, colour, label) of SBRT `sbrt`."""
+        head = self._ask("classes", ["input=" + sbrt])
+        extent = Extent(*[float(v) for v in head[1:7]])
+        count = int(self._line()[1])
+        strata = []
+        for _ in range(count):
+            fields = self._process.stdout.readline().decode().rstrip("\n").split(" ", 4)
+            label = fields[4] if len(fields) > 4 else ""
+            strata.append(
+                Stratum(int(fields[0]), tuple(int(v) for v in fields[1:4]), label)
+            )
+        return extent, strata
+
+    def close(self):
+        if self._process and self._process.poll() is None:
+            try:
+                self._process.stdin.write(b"quit\n")
+                self._process.stdin.close()
+            except BrokenPipeError:
+                pass
+            self._process.wait()
+        self._process = None

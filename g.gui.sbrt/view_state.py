@@ -1,0 +1,168 @@
+"""
+MODULE:    g.gui.sbrt
+PURPOSE:   What the viewer shows, as r3.sbrt.render's options: the camera
+           (orbit, pan, zoom), vertical exaggeration, hidden and
+           translucent strata, the section, boreholes and the drape
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+
+import math
+import shlex
+
+DEGREES_PER_PIXEL = 0.4
+NO_CLASS = -2147483648  # the empty material (air), not a stratum
+# the light turns with the camera, from its right (r3.sbrt.render's
+# default light=315,45 for its default azimuth=225)
+LIGHT_FROM_CAMERA = 90.0
+LIGHT_ELEVATION = 45.0
+ZOOM_PER_STEP = 0.85
+
+
+def number(value):
+    """A number as the options take it (the same text on screen and in
+    the saved command: both render the same image)."""
+    return "%.10g" % value
+
+
+class ViewState:
+    """The view of one SBRT; `extent` and `strata` come from the server."""
+
+    def __init__(self, sbrt, extent, strata):
+        self.sbrt = sbrt
+        self.extent = extent
+        self.strata = [s for s in strata if s.id != NO_CLASS]
+        self.azimuth, self.elevation, self.fov = 225.0, 30.0, 40.0
+        self.distance = None  # None: framed by r3.sbrt.render
+        self.target = None  # (x, y, z), real map units
+        self.zexag = 1.0
+        self.hidden = set()  # class ids
+        self.opacity = {}  # class id: share of light absorbed (< 1)
+        self.section = None  # (direction in degrees from east, offset -1..1)
+        self.boreholes = ""
+        self.log_columns = ("", "", "")  # top, bottom, class
+        self.texture = ""
+        self.drape = False
+        self.backend = "auto"
+
+    # the camera ---------------------------------------------------------
+    def adopt_camera(self, frame):
+        """Takes the camera a framed view resolved to (the first frame)."""
+        self.azimuth, self.elevation = frame.azimuth, frame.elevation
+        self.distance, self.target = frame.distance, frame.target
+
+    def reset_camera(self):
+        self.azimuth, self.elevation = 225.0, 30.0
+        self.distance = self.target = None
+
+    def orbit(self, dx, dy):
+        """A drag of dx, dy pixels turns the model with the mouse."""
+        self.azimuth = (self.azimuth - dx * DEGREES_PER_PIXEL) % 360.0
+        self.elevation = min(89.0, max(-89.0, self.elevation + dy * DEGREES_PER_PIXEL))
+
+    def _screen_axes(self):
+        """The camera's right and up (unit, exaggerated space)."""
+        az, el = math.radians(self.azimuth), math.radians(self.elevation)
+        forward = (-math.sin(az) * math.cos(el), -math.cos(az) * math.cos(el), -math.sin(el))
+        right = (-math.cos(az), math.sin(az), 0.0)
+        up = (
+            right[1] * forward[2] - right[2] * forward[1],
+            right[2] * forward[0] - right[0] * forward[2],
+            right[0] * forward[1] - right[1] * forward[0],
+        )
+        return right, up
+
+    def pan(self, dx, dy, height):
+        """A drag of dx, dy pixels of an image `height` pixels high moves
+        the model with the mouse."""
+        if self.distance is None or self.target is None:
+            return
+        per_pixel = 2 * self.distance * math.tan(math.radians(self.fov) / 2) / height
+        right, up = self._screen_axes()
+        x, y, z = self.target
+        move = [(-dx * r + dy * u) * per_pixel for r, u in zip(right, up)]
+        self.target = (x + move[0], y + move[1], z + move[2] / self.zexag)
+
+    def zoom(self, steps):
+        """Wheel steps (positive: closer)."""
+        if self.distance is not None:
+            self.distance *= ZOOM_PER_STEP**steps
+
+    # the section --------------------------------------------------------
+    def section_points(self):
+        """x1,y1,x2,y2 of the vertical section, or None."""
+        if self.section is None:
+            return None
+        direction, offset = self.section
+        e = self.extent
+        a = math.radians(direction)
+        along, normal = (math.cos(a), math.sin(a)), (-math.sin(a), math.cos(a))
+        width, depth = e.east - e.west, e.north - e.south
+        reach = 0.5 * (abs(width * normal[0]) + abs(depth * normal[1]))
+        cx = (e.east + e.west) / 2 + normal[0] * offset * reach
+        cy = (e.north + e.south) / 2 + normal[1] * offset * reach
+        half = math.hypot(width, depth)
+        return (
+            cx - along[0] * half,
+            cy - along[1] * half,
+            cx + along[0] * half,
+            cy + along[1] * half,
+        )
+
+    def move_section(self, share):
+        """Moves the section by `share` of the model across (-2..2)."""
+        if self.section is not None:
+            direction, offset = self.section
+            self.section = (direction, min(0.98, max(-0.98, offset + share)))
+
+    # the options --------------------------------------------------------
+    def words(self, width, height):
+        """r3.sbrt.render's options of this view in a width x height image."""
+        words = [
+            "input=" + self.sbrt,
+            "size=%d,%d" % (width, height),
+            "azimuth=" + number(self.azimuth),
+            "elevation=" + number(self.elevation),
+            "fov=" + number(self.fov),
+        ]
+        if self.distance is not None:
+            words.append("distance=" + number(self.distance))
+        if self.target is not None:
+            words.append("target=" + ",".join(number(v) for v in self.target))
+        light = (self.azimuth + LIGHT_FROM_CAMERA) % 360.0
+        if light != 315.0:
+            words.append("light=%s,%s" % (number(light), number(LIGHT_ELEVATION)))
+        if self.zexag != 1:
+            words.append("zexag=" + number(self.zexag))
+        if self.hidden:
+            words.append("hide=" + ",".join(str(i) for i in sorted(self.hidden)))
+        translucent = sorted(i for i in self.opacity if i not in self.hidden)
+        if translucent:
+            words.append(
+                "opacity="
+                + ",".join("%d:%s" % (i, number(self.opacity[i])) for i in translucent)
+            )
+        points = self.section_points()
+        if points:
+            words.append("section=" + ",".join(number(v) for v in points))
+        if self.boreholes:
+            words.append("boreholes=" + self.boreholes)
+            if all(self.log_columns):
+                words += [
+                    "log_top=" + self.log_columns[0],
+                    "log_bottom=" + self.log_columns[1],
+                    "log_class=" + self.log_columns[2],
+                ]
+        if self.drape and self.texture:
+            words.append("texture=" + self.texture)
+        if self.backend != "auto":
+            words.append("backend=" + self.backend)
+        return words
+
+    def command(self, width, height, output="", png="", extra=()):
+        """The r3.sbrt.render command line that renders this view."""
+        words = self.words(width, height)
+        if output:
+            words.append("output=" + output)
+        if png:
+            words.append("png=" + png)
+        return "r3.sbrt.render " + " ".join(shlex.quote(w) for w in words + list(extra))

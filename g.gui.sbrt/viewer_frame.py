@@ -1,0 +1,370 @@
+"""
+MODULE:    g.gui.sbrt
+PURPOSE:   The viewer's window: the view, the strata list and the controls
+           of exaggeration, section, boreholes and drape; "Save view" and
+           "Record orbit" run the equivalent r3.sbrt.render command
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+
+import json
+import shlex
+import subprocess
+import threading
+import time
+
+import wx
+
+from gui_core.gselect import ColumnSelect, Select
+
+from render_thread import RenderThread
+from strata_panel import StrataPanel
+from view_canvas import ViewCanvas
+from view_dialogs import RecordOrbitDialog, SaveViewDialog
+from view_state import ViewState
+
+REDUCTION = 2  # while the camera moves: 1/REDUCTION of the size each way
+REFINE_MS = 40  # the full frame once the mouse rests this long
+
+
+class EventLog:
+    """JSON lines of what the viewer did (frames, drags, saves), for
+    benchmarks and tests; nothing without a path."""
+
+    def __init__(self, path):
+        self._file = open(path, "a", buffering=1) if path else None
+
+    def write(self, event, **fields):
+        if self._file:
+            fields.update(event=event, t=time.monotonic())
+            self._file.write(json.dumps(fields) + "\n")
+
+
+class ViewerFrame(wx.Frame):
+    def __init__(self, server, sbrt, size, boreholes="", texture="", backend="auto",
+                 log_path=None):
+        super().__init__(None, title="g.gui.sbrt: " + sbrt)
+        self.log = EventLog(log_path)
+        extent, strata = server.strata(sbrt)
+        self.state = ViewState(sbrt, extent, strata)
+        self.state.boreholes, self.state.texture = boreholes, texture
+        self.state.drape = bool(texture)
+        self.state.backend = backend
+        self._sent = 0
+        self._shown = 0
+        self._times = []
+        self._logged_widgets = False
+
+        self._make_toolbar()
+        body = wx.BoxSizer(wx.HORIZONTAL)
+        self.canvas = ViewCanvas(self, self, size)
+        body.Add(self.canvas, proportion=1, flag=wx.EXPAND)
+        self.side = wx.ScrolledWindow(self, style=wx.VSCROLL)
+        self.side.SetScrollRate(0, 10)
+        self._make_controls(self.side)
+        body.Add(self.side, flag=wx.EXPAND)
+        sizer = wx.BoxSizer(wx.VERTICAL)
+        sizer.Add(body, proportion=1, flag=wx.EXPAND)
+        self.command = wx.TextCtrl(self, style=wx.TE_READONLY)
+        self.command.SetToolTip(_("The r3.sbrt.render command of this view"))
+        sizer.Add(self.command, flag=wx.EXPAND | wx.ALL, border=2)
+        self.SetSizerAndFit(sizer)
+        self.CreateStatusBar(2)
+        self.SetStatusWidths([-1, 260])
+
+        self.refine = wx.Timer(self)
+        self.Bind(wx.EVT_TIMER, lambda event: self.request_frame(True), self.refine)
+        self.Bind(wx.EVT_CLOSE, self._on_close)
+        self.thread = RenderThread(
+            server, lambda tag, frame, error: wx.CallAfter(self._on_frame, tag, frame, error)
+        )
+        self.thread.start()
+        self._update_legend()
+        self.request_frame(True)
+
+    # the layout ---------------------------------------------------------
+    def _make_toolbar(self):
+        toolbar = self.CreateToolBar(wx.TB_HORIZONTAL | wx.TB_TEXT)
+        art = wx.ArtProvider.GetBitmap
+        tools = [
+            (_("Save view"), wx.ART_FILE_SAVE,
+             _("Write the raster maps and the PNG of this view"), self.on_save),
+            (_("Record orbit"), wx.ART_EXECUTABLE_FILE,
+             _("Render a turn about the target into PNGs and a video"), self.on_record),
+            (_("Reset view"), wx.ART_GO_HOME, _("Frame the whole model again"),
+             self.on_reset),
+        ]
+        for label, icon, help_text, handler in tools:
+            tool = toolbar.AddTool(wx.ID_ANY, label, art(icon, wx.ART_TOOLBAR), help_text)
+            self.Bind(wx.EVT_TOOL, handler, tool)
+        toolbar.Realize()
+
+    def _box(self, parent, sizer, title):
+        box = wx.StaticBoxSizer(wx.VERTICAL, parent, title)
+        sizer.Add(box, flag=wx.EXPAND | wx.ALL, border=4)
+        return box
+
+    def _make_controls(self, parent):
+        sizer = wx.BoxSizer(wx.VERTICAL)
+        strata = self._box(parent, sizer, _("Strata"))
+        self.strata = StrataPanel(parent, self.state, self.on_scene)
+        self.strata.SetMinSize((300, 260))
+        strata.Add(self.strata, proportion=1, flag=wx.EXPAND)
+
+        view = self._box(parent, sizer, _("View"))
+        self.zexag_label = wx.StaticText(parent, label=_("Vertical exaggeration: 1.0"))
+        view.Add(self.zexag_label)
+        self.zexag = wx.Slider(parent, value=10, minValue=10, maxValue=200)
+        view.Add(self.zexag, flag=wx.EXPAND)
+        self.legend = wx.CheckBox(parent, label=_("Legend"))
+        self.legend.SetValue(True)
+        view.Add(self.legend)
+
+        section = self._box(parent, sizer, _("Cross section"))
+        self.section_on = wx.CheckBox(parent, label=_("Cut the model (ctrl + drag moves it)"))
+        section.Add(self.section_on)
+        section.Add(wx.StaticText(parent, label=_("Direction (degrees from east):")))
+        self.section_direction = wx.Slider(parent, value=0, minValue=0, maxValue=179,
+                                           style=wx.SL_HORIZONTAL | wx.SL_VALUE_LABEL)
+        section.Add(self.section_direction, flag=wx.EXPAND)
+        section.Add(wx.StaticText(parent, label=_("Position across the model (%):")))
+        self.section_offset = wx.Slider(parent, value=0, minValue=-98, maxValue=98,
+                                        style=wx.SL_HORIZONTAL | wx.SL_VALUE_LABEL)
+        section.Add(self.section_offset, flag=wx.EXPAND)
+
+        wells = self._box(parent, sizer, _("Boreholes"))
+        self.boreholes = Select(parent, type="vector", size=(280, -1))
+        self.boreholes.SetValue(self.state.boreholes)
+        wells.Add(self.boreholes, flag=wx.EXPAND)
+        columns = wx.FlexGridSizer(cols=2, vgap=2, hgap=4)
+        self.log_columns = []
+        for label in (_("Log top:"), _("Log bottom:"), _("Log class:")):
+            columns.Add(wx.StaticText(parent, label=label), flag=wx.ALIGN_CENTER_VERTICAL)
+            column = ColumnSelect(parent, size=(180, -1))
+            columns.Add(column)
+            self.log_columns.append(column)
+        wells.Add(columns)
+
+        drape = self._box(parent, sizer, _("Drape"))
+        self.texture = Select(parent, type="raster", size=(280, -1))
+        self.texture.SetValue(self.state.texture)
+        drape.Add(self.texture, flag=wx.EXPAND)
+        self.drape = wx.CheckBox(parent, label=_("Drape the map on the terrain"))
+        self.drape.SetValue(self.state.drape)
+        drape.Add(self.drape)
+        parent.SetSizer(sizer)
+        parent.SetMinSize((320, -1))
+
+        self.zexag.Bind(wx.EVT_SLIDER, self._on_zexag)
+        self.legend.Bind(wx.EVT_CHECKBOX, self._on_legend)
+        self.section_on.Bind(wx.EVT_CHECKBOX, self._on_section)
+        self.section_direction.Bind(wx.EVT_SLIDER, self._on_section)
+        self.section_offset.Bind(wx.EVT_SLIDER, self._on_section)
+        self.boreholes.Bind(wx.EVT_TEXT, self._on_boreholes)
+        for column in self.log_columns:
+            column.Bind(wx.EVT_TEXT, self._on_boreholes)
+        self.texture.Bind(wx.EVT_TEXT, self._on_drape)
+        self.drape.Bind(wx.EVT_CHECKBOX, self._on_drape)
+        if self.state.boreholes:
+            self._fill_columns()
+
+    # requests -----------------------------------------------------------
+    def request_frame(self, full):
+        width, height = self.canvas.GetClientSize()
+        if width < 2 or height < 2:
+            return
+        if not full:
+            width, height = max(1, width // REDUCTION), max(1, height // REDUCTION)
+        self._sent += 1
+        words = self.state.words(width, height)
+        self.thread.request(words, (self._sent, full))
+        self.command.SetValue(self.state.command(*self.canvas.GetClientSize()))
+
+    def _moving(self):
+        """A change while the user moves something: a reduced frame now,
+        the full one when the moving stops."""
+        self.request_frame(False)
+        self.refine.StartOnce(REFINE_MS)
+
+    def on_drag(self, mode, dx, dy):
+        self.log.write("drag", mode=mode, dx=dx, dy=dy)
+        if mode == "orbit":
+            self.state.orbit(dx, dy)
+        elif mode == "pan":
+            self.state.pan(dx, dy, self.canvas.GetClientSize()[1])
+        elif mode == "section":
+            if self.state.section is None:
+                return
+            self.state.move_section(2.0 * dx / self.canvas.GetClientSize()[0])
+            self.section_offset.SetValue(int(round(self.state.section[1] * 100)))
+        self._moving()
+
+    def on_zoom(self, steps):
+        self.state.zoom(steps)
+        self._moving()
+
+    def on_still(self):
+        self.refine.Stop()
+        self.request_frame(True)
+
+    def on_resize(self):
+        if hasattr(self, "thread"):
+            self.refine.StartOnce(REFINE_MS)
+
+    def on_scene(self):
+        self._update_legend()
+        self.request_frame(True)
+
+    def _on_frame(self, tag, frame, error):
+        if error:
+            self.SetStatusText(error, 0)
+            self.log.write("error", message=error)
+            return
+        number, full = tag
+        if number < self._shown:
+            return
+        self._shown = number
+        if self.state.distance is None:
+            self.state.adopt_camera(frame)
+        self.canvas.show(frame)
+        now = time.monotonic()
+        self._times = [t for t in self._times if now - t < 1.0] + [now]
+        self.SetStatusText(
+            _("%d x %d in %.0f ms%s") % (frame.width, frame.height, frame.ms,
+                                         "" if full else _(" (moving)")), 0)
+        self.SetStatusText(_("%d frames/s") % len(self._times), 1)
+        self.log.write("frame", number=number, full=full, width=frame.width,
+                       height=frame.height, ms=frame.ms, words=frame.words)
+        if full and not self._logged_widgets:
+            self._logged_widgets = True
+            self._log_widgets()
+
+    def _log_widgets(self):
+        def rect(window):
+            x, y = window.GetScreenPosition()
+            width, height = window.GetSize()
+            return [x, y, width, height]
+
+        self.log.write("widget", name="canvas", rect=rect(self.canvas))
+        self.log.write("widget", name="legend", rect=rect(self.legend))
+        self.log.write("widget", name="section", rect=rect(self.section_on))
+        for row, stratum in enumerate(self.state.strata):
+            self.log.write("widget", name="stratum %d" % stratum.id,
+                           rect=list(self.strata.checkbox_rect(row)))
+        toolbar = self.GetToolBar()
+        self.log.write("widget", name="toolbar", rect=rect(toolbar))
+
+    # controls -----------------------------------------------------------
+    def _update_legend(self):
+        self.canvas.legend = [
+            (s.rgb, ("%d %s" % (s.id, s.label)).strip())
+            for s in self.state.strata
+            if s.id not in self.state.hidden
+        ]
+        self.canvas.Refresh(eraseBackground=False)
+
+    def _on_legend(self, event):
+        self.canvas.show_legend = self.legend.GetValue()
+        self.canvas.Refresh(eraseBackground=False)
+
+    def _on_zexag(self, event):
+        self.state.zexag = self.zexag.GetValue() / 10.0
+        self.zexag_label.SetLabel(_("Vertical exaggeration: %.1f") % self.state.zexag)
+        self._moving()
+
+    def _on_section(self, event):
+        if self.section_on.GetValue():
+            self.state.section = (float(self.section_direction.GetValue()),
+                                  self.section_offset.GetValue() / 100.0)
+        else:
+            self.state.section = None
+        if isinstance(event.GetEventObject(), wx.Slider):
+            self._moving()
+        else:
+            self.request_frame(True)
+
+    def _fill_columns(self):
+        for column in self.log_columns:
+            column.InsertColumns(vector=self.state.boreholes, layer=1)
+
+    def _on_boreholes(self, event):
+        name = self.boreholes.GetValue().strip()
+        if event.GetEventObject() is self.boreholes and name != self.state.boreholes:
+            self.state.boreholes = name
+            if name:
+                self._fill_columns()
+        self.state.log_columns = tuple(c.GetValue().strip() for c in self.log_columns)
+        self.request_frame(True)
+
+    def _on_drape(self, event):
+        self.state.texture = self.texture.GetValue().strip()
+        self.state.drape = self.drape.GetValue()
+        self.request_frame(True)
+
+    # save and record ----------------------------------------------------
+    def _run(self, command, done):
+        """Runs a command line on a thread; done(returncode, messages)."""
+        self.log.write("command", command=command)
+
+        def work():
+            result = subprocess.run(shlex.split(command), capture_output=True, text=True)
+            wx.CallAfter(done, result.returncode, result.stderr.strip())
+
+        threading.Thread(target=work, daemon=True).start()
+
+    def on_save(self, event):
+        dialog = SaveViewDialog(self, self.state.sbrt.split("@")[0] + "_view")
+        if dialog.ShowModal() != wx.ID_OK:
+            dialog.Destroy()
+            return
+        output, png = dialog.output.GetValue().strip(), dialog.png.GetValue().strip()
+        extra = ["--overwrite"] if dialog.overwrite.GetValue() else []
+        dialog.Destroy()
+        command = self.state.command(*self.canvas.GetClientSize(), output=output, png=png,
+                                     extra=extra)
+        self.command.SetValue(command)
+        self.SetStatusText(_("Saving the view..."), 0)
+
+        def done(returncode, messages):
+            self.log.write("saved", command=command, returncode=returncode,
+                           messages=messages)
+            if returncode:
+                wx.MessageBox(messages, _("Save view failed"), wx.OK | wx.ICON_ERROR, self)
+                return
+            self.SetStatusText(_("Saved <%s> and %s") % (output, png), 0)
+
+        self._run(command, done)
+
+    def on_record(self, event):
+        dialog = RecordOrbitDialog(self, self.state.sbrt.split("@")[0])
+        if dialog.ShowModal() != wx.ID_OK:
+            dialog.Destroy()
+            return
+        frames, png = dialog.frames.GetValue(), dialog.png.GetValue().strip()
+        video = dialog.video.GetValue().strip()
+        extra = ["frames=%d" % frames, "path=orbit"] + (["video=" + video] if video else [])
+        if dialog.overwrite.GetValue():
+            extra.append("--overwrite")
+        dialog.Destroy()
+        command = self.state.command(*self.canvas.GetClientSize(), png=png, extra=extra)
+        self.command.SetValue(command)
+        self.SetStatusText(_("Recording an orbit of %d frames...") % frames, 0)
+
+        def done(returncode, messages):
+            self.log.write("recorded", command=command, returncode=returncode,
+                           messages=messages)
+            if returncode:
+                wx.MessageBox(messages, _("Record orbit failed"), wx.OK | wx.ICON_ERROR,
+                              self)
+                return
+            self.SetStatusText(_("Orbit written: %s") % (video or png), 0)
+
+        self._run(command, done)
+
+    def on_reset(self, event):
+        self.state.reset_camera()
+        self.request_frame(True)
+
+    def _on_close(self, event):
+        self.refine.Stop()
+        self.thread.stop()
+        self.Destroy()
