@@ -110,7 +110,7 @@ class ViewServer:
         extent = Extent(*[float(v) for v in head[1:7]])
         count = int(self._line()[1])
         strata = []
-        for _ in range(count):
+        for _number in range(count):
             fields = self._process.stdout.readline().decode().rstrip("\n").split(" ", 4)
             label = fields[4] if len(fields) > 4 else ""
             strata.append(

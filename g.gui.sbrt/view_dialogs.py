@@ -50,6 +50,22 @@ class SaveViewDialog(_FormDialog):
             "", wx.CheckBox(self, label=_("Allow output files to overwrite existing files"))
         )
         self._finish()
+        # typing names the maps at once, and the PNG after them until the
+        # PNG is named otherwise
+        self.output.SetFocus()
+        self.output.SelectAll()
+        self._png_follows = True
+        self.output.Bind(wx.EVT_TEXT, self._on_output)
+        self.png.Bind(wx.EVT_KEY_DOWN, self._on_png_key)
+
+    def _on_output(self, event):
+        if self._png_follows:
+            folder = os.path.dirname(self.png.GetValue()) or os.getcwd()
+            self.png.ChangeValue(os.path.join(folder, self.output.GetValue().strip() + ".png"))
+
+    def _on_png_key(self, event):
+        self._png_follows = False
+        event.Skip()
 
 
 class RecordOrbitDialog(_FormDialog):

@@ -61,6 +61,8 @@ class ViewerFrame(wx.Frame):
         self.side = wx.ScrolledWindow(self, style=wx.VSCROLL)
         self.side.SetScrollRate(0, 10)
         self._make_controls(self.side)
+        # as high as the view; the controls scroll
+        self.side.SetMinSize((self.side.GetSizer().CalcMin()[0] + 20, size[1]))
         body.Add(self.side, flag=wx.EXPAND)
         sizer = wx.BoxSizer(wx.VERTICAL)
         sizer.Add(body, proportion=1, flag=wx.EXPAND)
@@ -105,11 +107,6 @@ class ViewerFrame(wx.Frame):
 
     def _make_controls(self, parent):
         sizer = wx.BoxSizer(wx.VERTICAL)
-        strata = self._box(parent, sizer, _("Strata"))
-        self.strata = StrataPanel(parent, self.state, self.on_scene)
-        self.strata.SetMinSize((300, 260))
-        strata.Add(self.strata, proportion=1, flag=wx.EXPAND)
-
         view = self._box(parent, sizer, _("View"))
         self.zexag_label = wx.StaticText(parent, label=_("Vertical exaggeration: 1.0"))
         view.Add(self.zexag_label)
@@ -118,6 +115,11 @@ class ViewerFrame(wx.Frame):
         self.legend = wx.CheckBox(parent, label=_("Legend"))
         self.legend.SetValue(True)
         view.Add(self.legend)
+
+        strata = self._box(parent, sizer, _("Strata"))
+        self.strata = StrataPanel(parent, self.state, self.on_scene)
+        self.strata.SetMinSize((300, min(360, 60 + 22 * len(self.state.strata))))
+        strata.Add(self.strata, proportion=1, flag=wx.EXPAND)
 
         section = self._box(parent, sizer, _("Cross section"))
         self.section_on = wx.CheckBox(parent, label=_("Cut the model (ctrl + drag moves it)"))
@@ -247,6 +249,8 @@ class ViewerFrame(wx.Frame):
         self.log.write("widget", name="canvas", rect=rect(self.canvas))
         self.log.write("widget", name="legend", rect=rect(self.legend))
         self.log.write("widget", name="section", rect=rect(self.section_on))
+        self.log.write("widget", name="strata", rect=rect(self.strata.list))
+        self.log.write("widget", name="controls", rect=rect(self.side))
         for row, stratum in enumerate(self.state.strata):
             self.log.write("widget", name="stratum %d" % stratum.id,
                            rect=list(self.strata.checkbox_rect(row)))

@@ -1,0 +1,198 @@
+"""
+MODULE:    testsuite/test_g_gui_sbrt_gui.py (r3.sbrt addon)
+PURPOSE:   g.gui.sbrt driven as a person would, under Xvfb: xdotool drags
+           and clicks, screenshots (ImageMagick's import). A drag turns the
+           view; hiding a stratum in the list removes its colour from the
+           screen; "Save view" writes maps equal to the screen pixel for
+           pixel (the command it shows renders them)
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import time
+
+from grass.gunittest.case import TestCase
+from grass.gunittest.main import test
+
+from geomodel_fixture import set_up_t_model
+from viewer_fixture import read_rgb_maps
+
+SIZE = (480, 560)  # asked for; the window may make the view larger
+TIMEOUT = 60
+
+
+def shade_family(pixel, color):
+    """Whether `pixel` is `color` lit by some share of light (the
+    shading: colour x (ambient + (1 - ambient) x lambert))."""
+    dot = sum(c * c for c in color)
+    if dot == 0:
+        return False
+    k = sum(p * c for p, c in zip(pixel, color)) / dot
+    return 0.3 < k < 1.05 and all(abs(p - k * c) <= 3 for p, c in zip(pixel, color))
+
+
+class TestViewerGui(TestCase):
+    @classmethod
+    def setUpClass(cls):
+        for tool in ("Xvfb", "xdotool", "import"):
+            if not shutil.which(tool):
+                raise RuntimeError("%s is missing (make setup installs it)" % tool)
+        set_up_t_model(cls)
+        cls.work = tempfile.mkdtemp(prefix="g_gui_sbrt_")
+        cls.log_path = os.path.join(cls.work, "viewer.log")
+        cls.xvfb = subprocess.Popen(
+            ["Xvfb", "-displayfd", "1", "-screen", "0", "1280x900x24", "-nolisten", "tcp"],
+            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+        cls.display = ":" + cls.xvfb.stdout.readline().decode().strip()
+        env = dict(os.environ, DISPLAY=cls.display, GRASS_SBRT_VIEWER_LOG=cls.log_path,
+                   NO_AT_BRIDGE="1")
+        cls.env = env
+        cls.viewer = subprocess.Popen(
+            ["g.gui.sbrt", "input=geo", "size=%d,%d" % SIZE], cwd=cls.work, env=env,
+            stdout=subprocess.DEVNULL, stderr=open(os.path.join(cls.work, "viewer.err"), "w"))
+        cls.widgets = {e["name"]: e["rect"] for e in cls.wait_for(
+            lambda e: e["event"] == "widget" and e["name"] == "toolbar", every=True)
+            if e["event"] == "widget"}
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.viewer.terminate()
+        cls.viewer.wait(timeout=10)
+        cls.xvfb.terminate()
+        cls.xvfb.wait(timeout=10)
+        shutil.rmtree(cls.work, ignore_errors=True)
+        cls.del_temp_region()
+
+    @classmethod
+    def events(cls):
+        if not os.path.exists(cls.log_path):
+            return []
+        with open(cls.log_path) as log:
+            return [json.loads(line) for line in log if line.endswith("\n")]
+
+    @classmethod
+    def wait_for(cls, condition, after=0, every=False):
+        """The first event after `after` (a count) that meets `condition`
+        (with every=True: all events up to it)."""
+        deadline = time.time() + TIMEOUT
+        while time.time() < deadline:
+            events = cls.events()
+            for k in range(after, len(events)):
+                if condition(events[k]):
+                    return events[: k + 1] if every else events[k]
+            if cls.viewer.poll() is not None:
+                raise RuntimeError("g.gui.sbrt ended: " +
+                                   open(os.path.join(cls.work, "viewer.err")).read())
+            time.sleep(0.1)
+        raise RuntimeError("g.gui.sbrt did not get there in %d s" % TIMEOUT)
+
+    def xdotool(self, *words):
+        subprocess.run(["xdotool"] + [str(w) for w in words], env=self.env, check=True)
+
+    def click(self, name):
+        x, y, width, height = self.widgets[name]
+        self.xdotool("mousemove", x + width // 2, y + height // 2, "click", 1)
+
+    def screenshot(self):
+        """RGB bytes of the canvas as on screen."""
+        time.sleep(0.5)  # the frame painted
+        x, y, width, height = self.widgets["canvas"]
+        ppm = subprocess.run(
+            ["import", "-display", self.display, "-window", "root", "-crop",
+             "%dx%d+%d+%d" % (width, height, x, y), "+repage", "-depth", "8", "ppm:-"],
+            capture_output=True, check=True).stdout
+        header_end = 0
+        for _ in range(4):  # P6, width, height, maximum: blank-separated
+            while ppm[header_end:header_end + 1].isspace():
+                header_end += 1
+            while not ppm[header_end:header_end + 1].isspace():
+                header_end += 1
+        return ppm[header_end + 1:]
+
+    def full_frame_after(self, count, word=None):
+        return self.wait_for(
+            lambda e: e["event"] == "frame" and e["full"] and
+            (word is None or word in e["words"]), after=count)
+
+    @staticmethod
+    def own_pixels(rgb, strata):
+        """Per stratum id, the pixels of its colour family and of no other
+        stratum's (shaded colours of similar strata are left out)."""
+        counts = {s.id: 0 for s in strata}
+        for i in range(0, len(rgb), 3):
+            pixel = tuple(rgb[i:i + 3])
+            owners = [s.id for s in strata if shade_family(pixel, s.rgb)]
+            if len(owners) == 1:
+                counts[owners[0]] += 1
+        return counts
+
+    def test_drag_hide_and_save(self):
+        # the legend off: the canvas shows the frame alone
+        self.click("legend")
+        start = self.screenshot()
+        x, y, width, height = self.widgets["canvas"]
+        self.assertGreaterEqual((width, height), SIZE)
+        self.assertEqual(len(start), width * height * 3)
+
+        # a drag across the view turns it
+        count = len(self.events())
+        moves = ["mousemove", x + width // 3, y + height // 2, "mousedown", 1]
+        for _ in range(12):
+            moves += ["mousemove_relative", "--", 8, 0, "sleep", 0.03]
+        self.xdotool(*(moves + ["mouseup", 1]))
+        frame = self.full_frame_after(count + 12)
+        azimuth = [w for w in frame["words"] if w.startswith("azimuth=")][0]
+        self.assertNotEqual(azimuth, "azimuth=225")
+        turned = self.screenshot()
+        differing = sum(1 for i in range(0, len(turned), 3)
+                        if turned[i:i + 3] != start[i:i + 3])
+        self.assertGreater(differing, 0.1 * width * height)
+
+        # hiding the stratum that covers most of the screen removes its colour
+        from view_client import ViewServer
+        server = ViewServer()
+        _, all_strata = server.strata("geo")
+        server.close()
+        all_strata = [s for s in all_strata if s.id >= 0]
+        # the rows in sight in the list (a person would scroll for the others)
+        _, list_y, _, list_height = self.widgets["strata"]
+        _, side_y, _, side_height = self.widgets["controls"]
+        list_height = min(list_y + list_height, side_y + side_height) - list_y
+        strata = [s for s in all_strata if "stratum %d" % s.id in self.widgets and
+                  list_y + 25 <= self.widgets["stratum %d" % s.id][1] and
+                  sum(self.widgets["stratum %d" % s.id][1::2]) <= list_y + list_height]
+        counts = self.own_pixels(turned, all_strata)
+        biggest = max(strata, key=lambda s: counts[s.id])
+        self.assertGreater(counts[biggest.id], 500)
+        count = len(self.events())
+        self.click("stratum %d" % biggest.id)
+        self.full_frame_after(count, "hide=%d" % biggest.id)
+        hidden = self.screenshot()
+        self.assertLess(self.own_pixels(hidden, all_strata)[biggest.id],
+                        0.01 * counts[biggest.id])
+
+        # Save view: the maps (its command line's) are the screen, pixel for pixel
+        count = len(self.events())
+        tx, ty, tw, th = self.widgets["toolbar"]
+        self.xdotool("mousemove", tx + 30, ty + th // 2, "click", 1)
+        self.xdotool("search", "--sync", "--name", "^Save view$", "windowfocus", "--sync")
+        self.xdotool("type", "gui_saved")
+        self.xdotool("key", "Return")
+        saved = self.wait_for(lambda e: e["event"] == "saved", after=count)
+        self.assertEqual(saved["returncode"], 0, saved["messages"])
+        self.assertIn("hide=%d" % biggest.id, saved["command"])
+        self.assertIn("output=gui_saved", saved["command"])
+        self.assertTrue(os.path.exists(os.path.join(self.work, "gui_saved.png")))
+        self.use_temp_region()
+        self.runModule("g.region", raster="gui_saved.red")
+        cols, rows, rgb = read_rgb_maps("gui_saved")
+        self.assertEqual((cols, rows), (width, height))
+        differing = sum(1 for i in range(0, len(rgb), 3) if rgb[i:i + 3] != hidden[i:i + 3])
+        self.assertEqual(differing, 0)
+
+
+if __name__ == "__main__":
+    test()
