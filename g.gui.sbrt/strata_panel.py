@@ -19,8 +19,8 @@ class StrataPanel(wx.Panel):
         self._on_change = on_change
         self.list = wx.ListCtrl(self, style=wx.LC_REPORT | wx.LC_SINGLE_SEL)
         self.list.EnableCheckBoxes(True)
-        self.list.InsertColumn(0, _("Class"), width=70)
-        self.list.InsertColumn(1, _("Label"), width=150)
+        self.list.InsertColumn(0, _("Class"), width=95)
+        self.list.InsertColumn(1, _("Label"), width=140)
         self.list.InsertColumn(2, _("Opacity"), width=60)
         images = wx.ImageList(16, 12)
         for stratum in state.strata:

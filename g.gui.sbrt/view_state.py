@@ -40,6 +40,8 @@ class ViewState:
         self.section = None  # (direction in degrees from east, offset -1..1)
         self.boreholes = ""
         self.log_columns = ("", "", "")  # top, bottom, class
+        self.log_depths = False  # log_reference=depth
+        self.borehole_radius = 0.0  # map units; 0: r3.sbrt.render's default
         self.texture = ""
         self.drape = False
         self.backend = "auto"
@@ -146,12 +148,16 @@ class ViewState:
             words.append("section=" + ",".join(number(v) for v in points))
         if self.boreholes:
             words.append("boreholes=" + self.boreholes)
+            if self.borehole_radius > 0:
+                words.append("borehole_radius=" + number(self.borehole_radius))
             if all(self.log_columns):
                 words += [
                     "log_top=" + self.log_columns[0],
                     "log_bottom=" + self.log_columns[1],
                     "log_class=" + self.log_columns[2],
                 ]
+                if self.log_depths:
+                    words.append("log_reference=depth")
         if self.drape and self.texture:
             words.append("texture=" + self.texture)
         if self.backend != "auto":

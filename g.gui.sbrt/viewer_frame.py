@@ -145,6 +145,14 @@ class ViewerFrame(wx.Frame):
             columns.Add(column)
             self.log_columns.append(column)
         wells.Add(columns)
+        self.log_depths = wx.CheckBox(parent, label=_("Logs in depths below the surface"))
+        wells.Add(self.log_depths)
+        radius = wx.BoxSizer(wx.HORIZONTAL)
+        radius.Add(wx.StaticText(parent, label=_("Radius (map units, 0: 0.4 cell):")),
+                   flag=wx.ALIGN_CENTER_VERTICAL)
+        self.borehole_radius = wx.SpinCtrlDouble(parent, min=0, max=1e6, initial=0, inc=5)
+        radius.Add(self.borehole_radius)
+        wells.Add(radius)
 
         drape = self._box(parent, sizer, _("Drape"))
         self.texture = Select(parent, type="raster", size=(280, -1))
@@ -164,6 +172,8 @@ class ViewerFrame(wx.Frame):
         self.boreholes.Bind(wx.EVT_TEXT, self._on_boreholes)
         for column in self.log_columns:
             column.Bind(wx.EVT_TEXT, self._on_boreholes)
+        self.log_depths.Bind(wx.EVT_CHECKBOX, self._on_boreholes)
+        self.borehole_radius.Bind(wx.EVT_SPINCTRLDOUBLE, self._on_boreholes)
         self.texture.Bind(wx.EVT_TEXT, self._on_drape)
         self.drape.Bind(wx.EVT_CHECKBOX, self._on_drape)
         if self.state.boreholes:
@@ -297,6 +307,8 @@ class ViewerFrame(wx.Frame):
             if name:
                 self._fill_columns()
         self.state.log_columns = tuple(c.GetValue().strip() for c in self.log_columns)
+        self.state.log_depths = self.log_depths.GetValue()
+        self.state.borehole_radius = self.borehole_radius.GetValue()
         self.request_frame(True)
 
     def _on_drape(self, event):

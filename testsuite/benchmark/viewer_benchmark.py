@@ -1,0 +1,117 @@
+"""
+MODULE:    testsuite/benchmark/viewer_benchmark.py (r3.sbrt addon)
+PURPOSE:   Figures of g.gui.sbrt (issue 19), in a GRASS session, one run:
+           1. the renderer alone through the view server: frames of an
+              orbit at full size and reduced (1/2 each way), a scene
+              change (a stratum hidden), the first frame (model read);
+           2. the viewer end to end under Xvfb: orbiting drags at 60 mouse
+              events a second (xdotool), frames shown per second while
+              dragging and the time from the last mouse move to the refined
+              frame on screen, from the viewer's event log.
+           Figures only: never part of pass/fail.
+USAGE:     viewer_benchmark.py SBRT [WIDTH HEIGHT]
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "g.gui.sbrt"))
+from view_client import ViewServer  # noqa: E402
+
+
+def renderer_alone(sbrt, width, height):
+    server = ViewServer()
+    start = time.perf_counter()
+    server.render(["input=" + sbrt, "size=%d,%d" % (width, height)])
+    first = (time.perf_counter() - start) * 1000
+    for label, size in (("full", (width, height)),
+                        ("reduced", (width // 2, height // 2))):
+        times, served = [], []
+        for k in range(36):
+            start = time.perf_counter()
+            frame = server.render(["input=" + sbrt, "size=%d,%d" % size,
+                                   "azimuth=%d" % (k * 10)])
+            times.append((time.perf_counter() - start) * 1000)
+            served.append(frame.ms)
+        median = statistics.median(times)
+        print("renderer %-7s %4d x %-4d: median %.1f ms a frame (server %.1f ms, "
+              "pipe and client the rest), %.1f frames/s" %
+              (label, size[0], size[1], median, statistics.median(served), 1000 / median))
+    start = time.perf_counter()
+    server.render(["input=" + sbrt, "size=%d,%d" % (width, height), "hide=13"])
+    print("renderer scene change (hide=13, prepared again) + frame: %.1f ms"
+          % ((time.perf_counter() - start) * 1000))
+    print("renderer first frame (process start, model read, scene): %.1f ms" % first)
+    server.close()
+
+
+def viewer(sbrt, width, height):
+    work = tempfile.mkdtemp(prefix="viewer_bench_")
+    log = os.path.join(work, "viewer.log")
+    xvfb = subprocess.Popen(["Xvfb", "-displayfd", "1", "-screen", "0", "1600x1000x24"],
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+    display = ":" + xvfb.stdout.readline().decode().strip()
+    env = dict(os.environ, DISPLAY=display, GRASS_SBRT_VIEWER_LOG=log, NO_AT_BRIDGE="1")
+    gui = subprocess.Popen(["g.gui.sbrt", "input=" + sbrt, "size=%d,%d" % (width, height)],
+                           cwd=work, env=env, stderr=subprocess.DEVNULL)
+
+    def events():
+        with open(log) as f:
+            return [json.loads(line) for line in f if line.endswith("\n")]
+
+    try:
+        deadline = time.time() + 120
+        while not (os.path.exists(log) and
+                   any(e["event"] == "widget" for e in events())):
+            if time.time() > deadline or gui.poll() is not None:
+                raise RuntimeError("g.gui.sbrt did not start")
+            time.sleep(0.2)
+        canvas = [e["rect"] for e in events() if e.get("name") == "canvas"][0]
+        x, y, w, h = canvas
+        for drag in range(3):
+            count = len(events())
+            moves = ["mousemove", x + w // 4, y + h // 2, "mousedown", 1]
+            for _step in range(120):  # 2 s at 60 events a second
+                moves += ["mousemove_relative", "--", 3, 0, "sleep", 1 / 60]
+            subprocess.run(["xdotool"] + [str(m) for m in moves], env=env, check=True)
+            time.sleep(1.0)  # the mouse rests, the button still down
+            subprocess.run(["xdotool", "mouseup", "1"], env=env, check=True)
+            time.sleep(0.5)
+            new = events()[count:]
+            drags = [e["t"] for e in new if e["event"] == "drag"]
+            frames = [e for e in new if e["event"] == "frame"]
+            during = [f for f in frames if drags[0] <= f["t"] <= drags[-1]]
+            reduced = [f for f in during if not f["full"]]
+            refined = [f["t"] for f in frames if f["full"] and f["t"] > drags[-1]]
+            print("viewer drag %d: %d mouse moves in %.2f s; %d frames shown while "
+                  "dragging (%d reduced %d x %d): %.1f frames/s; refined %.0f ms "
+                  "after the last move" % (
+                      drag + 1, len(drags), drags[-1] - drags[0], len(during),
+                      len(reduced), reduced[0]["width"] if reduced else 0,
+                      reduced[0]["height"] if reduced else 0,
+                      len(during) / (drags[-1] - drags[0]),
+                      (refined[0] - drags[-1]) * 1000 if refined else float("nan")))
+    finally:
+        gui.terminate()
+        gui.wait(timeout=10)
+        xvfb.terminate()
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def main():
+    sbrt = sys.argv[1]
+    width, height = (int(sys.argv[2]), int(sys.argv[3])) if len(sys.argv) > 3 else (800, 600)
+    print("g.gui.sbrt on <%s>, %d x %d, %d cores" % (sbrt, width, height, os.cpu_count()))
+    renderer_alone(sbrt, width, height)
+    viewer(sbrt, width, height)
+
+
+if __name__ == "__main__":
+    main()
