@@ -2,7 +2,7 @@
 MODULE:    g.gui.sbrt
 PURPOSE:   The image of the view and the mouse on it: left drag orbits,
            middle (or shift + left) drag pans, the wheel zooms, ctrl + left
-           drag moves the section; a legend of the strata shown
+           drag moves the section; a legend of the strata shown (bottom right)
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 
@@ -67,7 +67,10 @@ class ViewCanvas(wx.Window):
         dc.SetFont(wx.Font(wx.FontInfo(9)))
         text = max(dc.GetTextExtent(t)[0] for _, t in self.legend)
         line = dc.GetTextExtent("Xg")[1] + 3
-        return (6, 6, text + 34, line * len(self.legend) + 8)
+        # bottom right: a perspective view leaves that corner empty most
+        width, height = text + 34, line * len(self.legend) + 8
+        client_width, client_height = self.GetClientSize()
+        return (client_width - width - 6, client_height - height - 6, width, height)
 
     def _draw_legend(self, dc):
         x, y, width, height = self.legend_rect()

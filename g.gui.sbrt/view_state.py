@@ -11,9 +11,9 @@ import shlex
 
 DEGREES_PER_PIXEL = 0.4
 NO_CLASS = -2147483648  # the empty material (air), not a stratum
-# the light turns with the camera, from its right (r3.sbrt.render's
-# default light=315,45 for its default azimuth=225)
-LIGHT_FROM_CAMERA = 90.0
+# the light turns with the camera, from 45 degrees to its left, so that
+# walls and cut faces the camera sees are lit
+LIGHT_FROM_CAMERA = 45.0
 LIGHT_ELEVATION = 45.0
 ZOOM_PER_STEP = 0.85
 
@@ -131,7 +131,7 @@ class ViewState:
         if self.target is not None:
             words.append("target=" + ",".join(number(v) for v in self.target))
         light = (self.azimuth + LIGHT_FROM_CAMERA) % 360.0
-        if light != 315.0:
+        if light != 315.0:  # r3.sbrt.render's default
             words.append("light=%s,%s" % (number(light), number(LIGHT_ELEVATION)))
         if self.zexag != 1:
             words.append("zexag=" + number(self.zexag))

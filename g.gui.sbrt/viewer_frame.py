@@ -235,7 +235,8 @@ class ViewerFrame(wx.Frame):
         if number < self._shown:
             return
         self._shown = number
-        if self.state.distance is None:
+        framed = not any(w.startswith("distance=") for w in frame.words)
+        if self.state.distance is None and framed:
             self.state.adopt_camera(frame)
         self.canvas.show(frame)
         now = time.monotonic()
@@ -258,6 +259,7 @@ class ViewerFrame(wx.Frame):
 
         self.log.write("widget", name="canvas", rect=rect(self.canvas))
         self.log.write("widget", name="legend", rect=rect(self.legend))
+        self.log.write("widget", name="zexag", rect=rect(self.zexag))
         self.log.write("widget", name="section", rect=rect(self.section_on))
         self.log.write("widget", name="strata", rect=rect(self.strata.list))
         self.log.write("widget", name="controls", rect=rect(self.side))
@@ -282,6 +284,8 @@ class ViewerFrame(wx.Frame):
 
     def _on_zexag(self, event):
         self.state.zexag = self.zexag.GetValue() / 10.0
+        # the model grows about its bottom: framed again, from the same side
+        self.state.distance = self.state.target = None
         self.zexag_label.SetLabel(_("Vertical exaggeration: %.1f") % self.state.zexag)
         self._moving()
 
