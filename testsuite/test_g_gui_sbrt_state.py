@@ -1,0 +1,125 @@
+"""
+MODULE:    testsuite/test_g_gui_sbrt_state.py (r3.sbrt addon)
+PURPOSE:   g.gui.sbrt's view as r3.sbrt.render options (view_state.py):
+           the mouse's camera moves, the section, the option words and the
+           command line
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import math
+import shlex
+
+from grass.gunittest.case import TestCase
+from grass.gunittest.main import test
+
+import viewer_fixture  # noqa: F401 (g.gui.sbrt's files on the path)
+from view_client import Extent, Stratum
+from view_state import NO_CLASS, ViewState
+
+
+def make_state():
+    extent = Extent(north=2000, south=0, east=1000, west=0, bottom=-100, top=50)
+    strata = [Stratum(NO_CLASS, (128, 128, 128), "EMPTY"), Stratum(1, (200, 0, 0), "sand"),
+              Stratum(2, (0, 200, 0), "clay"), Stratum(3, (0, 0, 200), "chalk")]
+    state = ViewState("model", extent, strata)
+    state.distance, state.target = 3000.0, (500.0, 1000.0, -20.0)
+    return state
+
+
+def word(words, key):
+    found = [w.split("=", 1)[1] for w in words if w.startswith(key + "=")]
+    return found[0] if found else None
+
+
+class TestViewState(TestCase):
+    def test_strata_leave_out_the_empty_material(self):
+        self.assertEqual([s.id for s in make_state().strata], [1, 2, 3])
+
+    def test_orbit_wraps_and_clamps(self):
+        state = make_state()
+        state.orbit(-400, 0)  # 160 degrees on
+        self.assertAlmostEqual(state.azimuth, 25.0)
+        state.orbit(0, 1000)
+        self.assertEqual(state.elevation, 89.0)
+        state.orbit(0, -10000)
+        self.assertEqual(state.elevation, -89.0)
+
+    def test_pan_moves_across_the_view(self):
+        """A drag moves the target at right angles to the view direction,
+        by the image's share of the view's width at the target."""
+        state = make_state()
+        state.azimuth, state.elevation = 180.0, 0.0  # from the south, level
+        state.pan(100, 0, 500)
+        x, y, z = state.target
+        per_pixel = 2 * 3000 * math.tan(math.radians(20)) / 500
+        self.assertAlmostEqual(x, 500 - 100 * per_pixel, places=6)  # west
+        self.assertAlmostEqual(y, 1000.0, places=6)
+        self.assertAlmostEqual(z, -20.0, places=6)
+        state.zexag = 2.0
+        state.pan(0, 50, 500)  # up, unexaggerated
+        self.assertAlmostEqual(state.target[2], -20 + 50 * per_pixel / 2, places=6)
+
+    def test_zoom(self):
+        state = make_state()
+        state.zoom(2)
+        self.assertAlmostEqual(state.distance, 3000 * 0.85 ** 2)
+        state.zoom(-2)
+        self.assertAlmostEqual(state.distance, 3000)
+
+    def test_section_crosses_the_model(self):
+        state = make_state()
+        self.assertIsNone(state.section_points())
+        state.section = (0.0, 0.0)  # west-east through the centre
+        x1, y1, x2, y2 = state.section_points()
+        self.assertEqual((y1, y2), (1000.0, 1000.0))
+        self.assertLess(x1, 0)
+        self.assertGreater(x2, 1000)
+        state.move_section(0.5)  # half way to the north edge
+        self.assertAlmostEqual(state.section_points()[1], 1500.0)
+        state.move_section(5)
+        self.assertEqual(state.section[1], 0.98)
+        state.section = (90.0, 0.0)  # south-north through the centre
+        x1, y1, x2, y2 = state.section_points()
+        self.assertAlmostEqual(x1, 500.0)
+        self.assertAlmostEqual(x2, 500.0)
+
+    def test_words(self):
+        state = make_state()
+        words = state.words(320, 240)
+        self.assertEqual(word(words, "size"), "320,240")
+        self.assertEqual(word(words, "azimuth"), "225")
+        self.assertEqual(word(words, "light"), "270,45")  # 45 degrees left of the camera
+        self.assertEqual(word(words, "target"), "500,1000,-20")
+        self.assertIsNone(word(words, "hide"))
+        state.hidden = {3, 1}
+        state.opacity = {1: 0.5, 2: 0.25}
+        state.zexag = 2.5
+        words = state.words(320, 240)
+        self.assertEqual(word(words, "hide"), "1,3")
+        self.assertEqual(word(words, "opacity"), "2:0.25")  # not of a hidden one
+        self.assertEqual(word(words, "zexag"), "2.5")
+        state.boreholes = "wells"
+        state.log_columns = ("top", "bottom", "")
+        words = state.words(320, 240)
+        self.assertEqual(word(words, "boreholes"), "wells")
+        self.assertIsNone(word(words, "log_top"))  # all three or none
+        state.log_columns = ("top", "bottom", "lith")
+        state.log_depths = True
+        words = state.words(320, 240)
+        self.assertEqual(word(words, "log_class"), "lith")
+        self.assertEqual(word(words, "log_reference"), "depth")
+        state.texture = "ortho"
+        self.assertIsNone(word(state.words(10, 10), "texture"))  # drape off
+        state.drape = True
+        self.assertEqual(word(state.words(10, 10), "texture"), "ortho")
+
+    def test_command_line_is_the_words(self):
+        state = make_state()
+        state.sbrt = "model@other mapset"
+        command = state.command(320, 240, output="saved", png="/tmp/a b.png")
+        args = shlex.split(command)
+        self.assertEqual(args[0], "r3.sbrt.render")
+        self.assertEqual(args[1:], state.words(320, 240) + ["output=saved", "png=/tmp/a b.png"])
+
+
+if __name__ == "__main__":
+    test()
