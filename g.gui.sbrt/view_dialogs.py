@@ -24,6 +24,10 @@ class _FormDialog(wx.Dialog):
         return control
 
     def _finish(self):
+        """The overwrite check box last, then the buttons."""
+        self.overwrite = self._field(
+            "", wx.CheckBox(self, label=_("Allow output files to overwrite existing files"))
+        )
         sizer = wx.BoxSizer(wx.VERTICAL)
         sizer.Add(self._grid, flag=wx.EXPAND | wx.ALL, border=10)
         buttons = self.CreateStdDialogButtonSizer(wx.OK | wx.CANCEL)
@@ -45,9 +49,6 @@ class SaveViewDialog(_FormDialog):
         self.png = self._field(
             _("PNG file:"),
             wx.TextCtrl(self, value=os.path.join(os.getcwd(), name + ".png")),
-        )
-        self.overwrite = self._field(
-            "", wx.CheckBox(self, label=_("Allow output files to overwrite existing files"))
         )
         self._finish()
         # typing names the maps at once, and the PNG after them until the
@@ -83,8 +84,5 @@ class RecordOrbitDialog(_FormDialog):
         self.video = self._field(
             _("Video (.mp4, .webm or .gif; empty: none):"),
             wx.TextCtrl(self, value=os.path.join(os.getcwd(), name + "_orbit.mp4")),
-        )
-        self.overwrite = self._field(
-            "", wx.CheckBox(self, label=_("Allow output files to overwrite existing files"))
         )
         self._finish()
