@@ -49,3 +49,5 @@ class RenderThread(threading.Thread):
                 self._deliver(tag, self._server.render(words), None)
             except ServerError as error:
                 self._deliver(tag, None, str(error))
+            except Exception as error:  # the thread must go on: say what broke
+                self._deliver(tag, None, "%s: %s" % (type(error).__name__, error))

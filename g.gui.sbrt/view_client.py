@@ -42,9 +42,10 @@ class ViewServer:
             stdout=subprocess.PIPE,
             stderr=subprocess.PIPE,
         )
-        threading.Thread(
+        self._reader = threading.Thread(
             target=self._read_messages, args=(self._process.stderr,), daemon=True
-        ).start()
+        )
+        self._reader.start()
 
     def _read_messages(self, stream):
         for line in stream:
@@ -54,8 +55,7 @@ class ViewServer:
 
     def _stopped(self):
         self._process.wait()
-        # the reader thread may still hold the last message
-        self._process.stderr.close()
+        self._reader.join(timeout=5)  # it ends at the end of the messages
         messages = [m for m in self._messages if "ERROR" in m] or list(self._messages)
         self._process = None
         return ServerError(
@@ -63,6 +63,8 @@ class ViewServer:
         )
 
     def _ask(self, verb, words):
+        if any("\n" in w or "\r" in w for w in words):
+            raise ServerError("an option value holds a line break: %r" % words)
         self._start()
         line = " ".join([verb] + [shlex.quote(w) for w in words]) + "\n"
         try:
@@ -76,7 +78,7 @@ class ViewServer:
         line = self._process.stdout.readline()
         if not line:
             raise self._stopped()
-        head = line.decode().rstrip("\n")
+        head = line.decode(errors="replace").rstrip("\n")
         if head.startswith("error "):
             raise ServerError(head[len("error ") :])
         return head.split()
@@ -111,7 +113,10 @@ class ViewServer:
         count = int(self._line()[1])
         strata = []
         for _number in range(count):
-            fields = self._process.stdout.readline().decode().rstrip("\n").split(" ", 4)
+            line = self._process.stdout.readline()
+            if not line:
+                raise self._stopped()
+            fields = line.decode(errors="replace").rstrip("\n").split(" ", 4)
             label = fields[4] if len(fields) > 4 else ""
             strata.append(
                 Stratum(int(fields[0]), tuple(int(v) for v in fields[1:4]), label)
@@ -125,5 +130,9 @@ class ViewServer:
                 self._process.stdin.close()
             except BrokenPipeError:
                 pass
-            self._process.wait()
+            try:
+                self._process.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                self._process.kill()
+                self._process.wait()
         self._process = None

@@ -12,7 +12,9 @@ import subprocess
 import threading
 import time
 
+import grass.script as gs
 import wx
+from grass.exceptions import CalledModuleError
 
 from gui_core.gselect import ColumnSelect, Select
 
@@ -53,6 +55,7 @@ class ViewerFrame(wx.Frame):
         self._shown = 0
         self._times = []
         self._logged_widgets = False
+        self._closing = False
 
         self._make_toolbar()
         body = wx.BoxSizer(wx.HORIZONTAL)
@@ -215,6 +218,7 @@ class ViewerFrame(wx.Frame):
         self._moving()
 
     def on_still(self):
+        self.log.write("still")
         self.refine.Stop()
         self.request_frame(True)
 
@@ -227,6 +231,8 @@ class ViewerFrame(wx.Frame):
         self.request_frame(True)
 
     def _on_frame(self, tag, frame, error):
+        if self._closing:
+            return
         if error:
             self.SetStatusText(error, 0)
             self.log.write("error", message=error)
@@ -304,19 +310,30 @@ class ViewerFrame(wx.Frame):
         for column in self.log_columns:
             column.InsertColumns(vector=self.state.boreholes, layer=1)
 
+    @staticmethod
+    def _existing(name, element):
+        """`name` where such a map exists, else "" (a name half typed)."""
+        return name if name and gs.find_file(name, element=element)["name"] else ""
+
     def _on_boreholes(self, event):
-        name = self.boreholes.GetValue().strip()
-        if event.GetEventObject() is self.boreholes and name != self.state.boreholes:
+        name = self._existing(self.boreholes.GetValue().strip(), "vector")
+        if name != self.state.boreholes:
             self.state.boreholes = name
             if name:
                 self._fill_columns()
-        self.state.log_columns = tuple(c.GetValue().strip() for c in self.log_columns)
+        try:
+            columns = set(gs.vector_columns(name)) if name else set()
+        except CalledModuleError:  # no attribute table
+            columns = set()
+        self.state.log_columns = tuple(
+            c.GetValue().strip() if c.GetValue().strip() in columns else ""
+            for c in self.log_columns)
         self.state.log_depths = self.log_depths.GetValue()
         self.state.borehole_radius = self.borehole_radius.GetValue()
         self.request_frame(True)
 
     def _on_drape(self, event):
-        self.state.texture = self.texture.GetValue().strip()
+        self.state.texture = self._existing(self.texture.GetValue().strip(), "cell")
         self.state.drape = self.drape.GetValue()
         self.request_frame(True)
 
@@ -385,6 +402,7 @@ class ViewerFrame(wx.Frame):
         self.request_frame(True)
 
     def _on_close(self, event):
+        self._closing = True
         self.refine.Stop()
         self.thread.stop()
         self.Destroy()

@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "option_answers.hpp"
 
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 
@@ -66,16 +67,32 @@ std::vector<std::string> split_commas(const std::string &value)
     return parts;
 }
 
-/// Whether `value` is one of the choices of a string option ("a,b,c");
-/// numeric ranges ("0-360") are read_render_options' to check.
-bool among_choices(const Option *option, const std::string &value)
+/// Whether `value` is one of the choices of a string option ("a,b,c"),
+/// or each of its numbers within the range of a numeric one ("-90-90"),
+/// as G_parser checks.
+bool allowed(const Option *option, const std::string &value)
 {
-    if (!option->options || option->type != TYPE_STRING)
+    if (!option->options)
         return true;
-    for (const std::string &choice : split_commas(option->options))
-        if (choice == value)
-            return true;
-    return false;
+    if (option->type == TYPE_STRING) {
+        for (const std::string &choice : split_commas(option->options))
+            if (choice == value)
+                return true;
+        return false;
+    }
+    const std::string range = option->options;
+    const size_t dash = range.find('-', 1);
+    if (dash == std::string::npos)
+        return true;
+    const double low = std::strtod(range.c_str(), nullptr),
+                 high = std::strtod(range.c_str() + dash + 1, nullptr);
+    for (const std::string &part : split_commas(value)) {
+        char *end = nullptr;
+        const double v = std::strtod(part.c_str(), &end);
+        if (part.empty() || *end || !(v >= low && v <= high))
+            return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -114,8 +131,12 @@ void OptionAnswers::answer(const std::vector<std::string> &words)
             ++i;
         if (i == options_.size())
             sbrt::fail("unknown option <" + key + ">");
-        if (!among_choices(options_[i].option, value))
-            sbrt::fail(key + "=" + value + ": not one of " + options_[i].option->options);
+        if (value.empty())
+            sbrt::fail(key + "=: give a value (or leave the option out)");
+        if (!allowed(options_[i].option, value))
+            sbrt::fail(key + "=" + value + ": not " +
+                       (options_[i].option->type == TYPE_STRING ? "one of " : "within ") +
+                       options_[i].option->options);
         given[i] = value;
     }
     // the new answers point into new storage, then the old one goes

@@ -32,7 +32,8 @@ public:
     /// Every option back to its default and every flag off, then the
     /// answers of `words` ("key=value", "-abc"), split at commas into
     /// `answers` as G_parser does. Throws sbrt::Error naming an unknown
-    /// option or flag, or a value not among an option's choices.
+    /// option or flag, an empty value, or a value not among an option's
+    /// choices or outside its range.
     void answer(const std::vector<std::string> &words);
 
 private:

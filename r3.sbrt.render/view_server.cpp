@@ -29,12 +29,13 @@
 
 namespace {
 
-/// Options that move the camera or name outputs: the prepared scene does
-/// not depend on them (sections face the camera: their planes are
-/// compared as computed).
+/// Options that move the camera, light the scene or name outputs: the
+/// prepared scene does not depend on them (sections face the camera: their
+/// planes are compared as computed; the shading is set for every frame).
 const std::set<std::string> camera_keys = {
-    "size", "tile", "position", "target", "azimuth", "elevation", "distance", "fov",
-    "ortho_height", "view", "output", "material", "hit_elevation", "depth", "png", "-n"};
+    "size", "position", "target", "azimuth", "elevation", "distance", "fov",
+    "ortho_height", "view", "output", "material", "hit_elevation", "depth", "png", "-n",
+    "light", "ambient", "background", "normals", "kernel", "smooth"};
 
 /// The words of a request that shape its scene, in one string.
 std::string scene_words(const std::vector<std::string> &words)
@@ -69,7 +70,7 @@ std::string camera_dependent_scene(const RenderRequest &request, const sbrt::Cam
 /// depends on changes.
 class ViewServer {
 public:
-    explicit ViewServer(FILE *out) : out_(out) { G_get_window(&region_); }
+    explicit ViewServer(FILE *out) : out_(out) {}
 
     void render(const RenderRequest &request, const std::vector<std::string> &words);
     void classes(const RenderRequest &request);
@@ -117,21 +118,24 @@ void ViewServer::prepare(const RenderRequest &request, const sbrt::Camera &camer
 {
     backend_.reset();
     renderer_.reset();
-    std::string drape_key;
+    std::ostringstream drape_key;
+    drape_key << std::hexfloat << request.texture_blend;
     for (const std::string &map : request.texture)
-        drape_key += map + ',';
-    drape_key += std::to_string(request.texture_blend);
-    if (drape_key != drape_key_) {
+        drape_key << ',' << map;
+    if (drape_key.str() != drape_key_) {
         drape_.reset();
+        drape_key_.clear();
         if (!request.texture.empty())
             drape_ = std::make_unique<sbrt::Drape>(*model_, read_texture(request.texture),
                                                    request.texture_blend);
-        drape_key_ = drape_key;
+        drape_key_ = drape_key.str();
     }
     PreparedScene prepared = prepare_scene(request, *model_, camera);
     const bool overlays = !prepared.scene.boreholes.empty() || !prepared.scene.fence.empty();
     const std::string context_key = request.backend + (overlays ? " overlays" : "");
     if (context_key != context_key_) {
+        context_.reset(); // before another on the same display
+        context_key_.clear();
         context_ = choose_gl_context(request, overlays);
         context_key_ = context_key;
     }
@@ -155,10 +159,12 @@ void ViewServer::render(const RenderRequest &request, const std::vector<std::str
         framing_zexag_ = request.zexag;
     }
     const auto start = std::chrono::steady_clock::now();
+    G_get_window(&region_); // a top view's, as g.region set it now
     const sbrt::Camera camera = make_camera(request, *framing_, region_);
     const std::string key = scene_words(words) + camera_dependent_scene(request, camera);
     if (!renderer_ || key != scene_key_)
         prepare(request, camera, key);
+    renderer_->set_shading(make_shading(request, drape_.get()));
 
     const int rows = camera.rows(), cols = camera.cols();
     std::vector<uint8_t> rgb(size_t(rows) * size_t(cols) * 3);
@@ -213,7 +219,10 @@ void serve_views(const RenderOptions &options, FILE *in, FILE *out)
     while (getline(&line, &capacity, in) > 0) {
         std::vector<std::string> words;
         try {
-            words = split_words(line);
+            std::string text = line;
+            while (!text.empty() && (text.back() == '\n' || text.back() == '\r'))
+                text.pop_back();
+            words = split_words(text);
             if (words.empty())
                 continue;
             if (words[0] == "quit")
@@ -226,6 +235,11 @@ void serve_views(const RenderOptions &options, FILE *in, FILE *out)
             if (!options.input->answer)
                 sbrt::fail("the request names no input=");
             const RenderRequest request = read_render_options(options);
+            // one frame of a view: what makes sequences and tiles, and
+            // rules from stdin (the requests' stream), is the command line's
+            if (request.frames != 1 || request.tile || request.rules == "-")
+                sbrt::fail("frames=, tile= and rules=- are for the command line, "
+                           "not the view server");
             if (verb == "render")
                 server.render(request, words);
             else
@@ -234,7 +248,9 @@ void serve_views(const RenderOptions &options, FILE *in, FILE *out)
         catch (const sbrt::Error &e) {
             // answered, and the server goes on (what the command line
             // stops at with G_fatal_error ends the server too)
-            std::fprintf(out, "error %s\n", e.what());
+            std::string message = e.what(); // one line: the protocol's
+            std::replace(message.begin(), message.end(), '\n', ' ');
+            std::fprintf(out, "error %s\n", message.c_str());
             std::fflush(out);
         }
     }

@@ -24,7 +24,10 @@
 ///
 /// A request's words are those of the command line and are read by the
 /// same code (read_render_options), so a frame is the image the same
-/// command renders; output=, png= and the other maps are ignored. AZ, EL,
+/// command renders; output=, png= and the other maps are ignored, frames=,
+/// tile= and rules=- refused. A camera, light, ambient, background or
+/// normals change keeps the prepared scene; any other option prepares it
+/// again. AZ, EL,
 /// DIST and TX,TY,TZ are the camera as azimuth=, elevation=, distance=
 /// and target= (the defaults resolved). Errors the command line would
 /// also stop at end the server (the message on stderr, as there).

@@ -57,6 +57,11 @@ class TestViewServer(TestCase):
                                                      "hide=3"], "vs_c")
         again = self.assertSameAsCommandLine(base + ["azimuth=100", "elevation=50"], "vs_d")
         self.assertNotEqual(hidden.rgb, again.rgb)
+        # light and translucency: shading kept apart from the prepared scene
+        self.assertSameAsCommandLine(base + ["azimuth=100", "light=190,30"], "vs_e")
+        self.assertSameAsCommandLine(base + ["azimuth=100", "light=20,60", "ambient=0.5",
+                                            "opacity=5:0.4"], "vs_f")
+        self.assertSameAsCommandLine(base + ["azimuth=100", "normals=kernel"], "vs_g")
 
     def test_section_faces_each_camera(self):
         """The section's removed side follows the camera: the scene is
@@ -94,6 +99,14 @@ class TestViewServer(TestCase):
             self.server.render(["input=geo", "nonsense=1"])
         with self.assertRaisesRegex(ServerError, "not one of"):
             self.server.render(["input=geo", "view=sideways"])
+        with self.assertRaisesRegex(ServerError, "zexag=: give a value"):
+            self.server.render(["input=geo", "zexag="])
+        with self.assertRaisesRegex(ServerError, "azimuth=400: not within 0-360"):
+            self.server.render(["input=geo", "azimuth=400"])
+        with self.assertRaisesRegex(ServerError, "for the command line"):
+            self.server.render(["input=geo", "frames=3"])
+        with self.assertRaisesRegex(ServerError, "line break"):
+            self.server.render(["input=geo", "hide=1\nrender"])
         with self.assertRaisesRegex(ServerError, "fov=500"):
             self.server.render(["input=geo", "fov=500"])
         with self.assertRaisesRegex(ServerError, "not found|No SBRT|does not exist"):

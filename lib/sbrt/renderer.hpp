@@ -57,6 +57,10 @@ public:
     Image render_image(const Camera &camera, const Outputs &outputs,
                        RowTracer *rows = nullptr) const;
 
+    /// Another light, ambient, background or normals for the next
+    /// renders (the prepared model, tracer and pyramid stay).
+    void set_shading(const Shading &shading) { shading_ = shading; }
+
     const Model &model() const { return *model_; }
     const Tracer &tracer() const { return *tracer_; }
     const Shading &shading() const { return shading_; }

@@ -36,8 +36,10 @@ def renderer_alone(sbrt, width, height):
         times, served = [], []
         for k in range(36):
             start = time.perf_counter()
+            # the viewer's light turns with the camera
             frame = server.render(["input=" + sbrt, "size=%d,%d" % size,
-                                   "azimuth=%d" % (k * 10)])
+                                   "azimuth=%d" % (k * 10),
+                                   "light=%d,45" % ((k * 10 + 45) % 360)])
             times.append((time.perf_counter() - start) * 1000)
             served.append(frame.ms)
         median = statistics.median(times)
