@@ -86,3 +86,6 @@ class RecordOrbitDialog(_FormDialog):
             wx.TextCtrl(self, value=os.path.join(os.getcwd(), name + "_orbit.mp4")),
         )
         self._finish()
+        # typing sets the number of frames at once
+        self.frames.SetFocus()
+        self.frames.SetSelection(-1, -1)

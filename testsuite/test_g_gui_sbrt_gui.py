@@ -4,7 +4,8 @@ PURPOSE:   g.gui.sbrt driven as a person would, under Xvfb: xdotool drags
            and clicks, screenshots (ImageMagick's import). A drag turns the
            view; hiding a stratum in the list removes its colour from the
            screen; "Save view" writes maps equal to the screen pixel for
-           pixel (the command it shows renders them)
+           pixel (the command it shows renders them); "Record orbit" writes
+           the frames and the video
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import json
@@ -197,6 +198,21 @@ class TestViewerGui(TestCase):
         self.assertEqual((cols, rows), (width, height))
         differing = sum(1 for i in range(0, len(rgb), 3) if rgb[i:i + 3] != hidden[i:i + 3])
         self.assertEqual(differing, 0)
+
+        # Record orbit: 4 frames typed, the PNGs and the video of the turn
+        count = len(self.events())
+        self.xdotool("mousemove", tx + 130, ty + th // 2, "click", 1)
+        self.xdotool("search", "--sync", "--name", "^Record orbit$", "windowfocus", "--sync")
+        self.xdotool("type", "4")
+        self.xdotool("key", "Tab")
+        self.xdotool("key", "Return")
+        recorded = self.wait_for(lambda e: e["event"] == "recorded", after=count)
+        self.assertEqual(recorded["returncode"], 0, recorded["messages"])
+        self.assertIn("frames=4", recorded["command"])
+        self.assertIn("path=orbit", recorded["command"])
+        pngs = sorted(f for f in os.listdir(self.work) if f.startswith("geo_orbit_"))
+        self.assertEqual(pngs, ["geo_orbit_%04d.png" % k for k in range(1, 5)])
+        self.assertGreater(os.path.getsize(os.path.join(self.work, "geo_orbit.mp4")), 0)
 
 
 if __name__ == "__main__":
