@@ -338,9 +338,23 @@ class ViewerFrame(wx.Frame):
         self.request_frame(True)
 
     # save and record ----------------------------------------------------
-    def _run(self, command, done):
-        """Runs a command line on a thread; done(returncode, messages)."""
+    def _run(self, command, event, busy, failure, finished):
+        """Shows `command` and runs it on a thread (status `busy`); then logs
+        `event` with its outcome and shows `finished`, or its messages in a
+        box titled `failure`."""
+        self.command.SetValue(command)
+        self.SetStatusText(busy, 0)
         self.log.write("command", command=command)
+
+        def done(returncode, messages):
+            if self._closing:
+                return
+            self.log.write(event, command=command, returncode=returncode,
+                           messages=messages)
+            if returncode:
+                wx.MessageBox(messages, failure, wx.OK | wx.ICON_ERROR, self)
+            else:
+                self.SetStatusText(finished, 0)
 
         def work():
             result = subprocess.run(shlex.split(command), capture_output=True, text=True)
@@ -349,53 +363,28 @@ class ViewerFrame(wx.Frame):
         threading.Thread(target=work, daemon=True).start()
 
     def on_save(self, event):
-        dialog = SaveViewDialog(self, self.state.sbrt.split("@")[0] + "_view")
-        if dialog.ShowModal() != wx.ID_OK:
-            dialog.Destroy()
-            return
-        output, png = dialog.output.GetValue().strip(), dialog.png.GetValue().strip()
-        extra = ["--overwrite"] if dialog.overwrite.GetValue() else []
-        dialog.Destroy()
+        with SaveViewDialog(self, self.state.sbrt.split("@")[0] + "_view") as dialog:
+            if dialog.ShowModal() != wx.ID_OK:
+                return
+            output, png = dialog.output.GetValue().strip(), dialog.png.GetValue().strip()
+            extra = ["--overwrite"] if dialog.overwrite.GetValue() else []
         command = self.state.command(*self.canvas.GetClientSize(), output=output, png=png,
                                      extra=extra)
-        self.command.SetValue(command)
-        self.SetStatusText(_("Saving the view..."), 0)
-
-        def done(returncode, messages):
-            self.log.write("saved", command=command, returncode=returncode,
-                           messages=messages)
-            if returncode:
-                wx.MessageBox(messages, _("Save view failed"), wx.OK | wx.ICON_ERROR, self)
-                return
-            self.SetStatusText(_("Saved <%s> and %s") % (output, png), 0)
-
-        self._run(command, done)
+        self._run(command, "saved", _("Saving the view..."), _("Save view failed"),
+                  _("Saved <%s> and %s") % (output, png))
 
     def on_record(self, event):
-        dialog = RecordOrbitDialog(self, self.state.sbrt.split("@")[0])
-        if dialog.ShowModal() != wx.ID_OK:
-            dialog.Destroy()
-            return
-        frames, png = dialog.frames.GetValue(), dialog.png.GetValue().strip()
-        video = dialog.video.GetValue().strip()
-        extra = ["frames=%d" % frames, "path=orbit"] + (["video=" + video] if video else [])
-        if dialog.overwrite.GetValue():
-            extra.append("--overwrite")
-        dialog.Destroy()
-        command = self.state.command(*self.canvas.GetClientSize(), png=png, extra=extra)
-        self.command.SetValue(command)
-        self.SetStatusText(_("Recording an orbit of %d frames...") % frames, 0)
-
-        def done(returncode, messages):
-            self.log.write("recorded", command=command, returncode=returncode,
-                           messages=messages)
-            if returncode:
-                wx.MessageBox(messages, _("Record orbit failed"), wx.OK | wx.ICON_ERROR,
-                              self)
+        with RecordOrbitDialog(self, self.state.sbrt.split("@")[0]) as dialog:
+            if dialog.ShowModal() != wx.ID_OK:
                 return
-            self.SetStatusText(_("Orbit written: %s") % (video or png), 0)
-
-        self._run(command, done)
+            frames, png = dialog.frames.GetValue(), dialog.png.GetValue().strip()
+            video = dialog.video.GetValue().strip()
+            extra = ["frames=%d" % frames, "path=orbit"] + (["video=" + video] if video else [])
+            if dialog.overwrite.GetValue():
+                extra.append("--overwrite")
+        command = self.state.command(*self.canvas.GetClientSize(), png=png, extra=extra)
+        self._run(command, "recorded", _("Recording an orbit of %d frames...") % frames,
+                  _("Record orbit failed"), _("Orbit written: %s") % (video or png))
 
     def on_reset(self, event):
         self.state.reset_camera()
