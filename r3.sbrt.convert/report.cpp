@@ -19,6 +19,9 @@ void print_report(const char *name, const sbrt::Model &model,
         s.intervals ? double(file.bytes) / double(s.intervals) : 0;
     const double file_compression =
         s.voxel_bytes ? 100.0 * (1.0 - double(file.bytes) / double(s.voxel_bytes)) : 0;
+    const double memory_per_interval =
+        s.intervals ? double(s.interval_bytes) / double(s.intervals) : 0;
+    const double memory_per_cell = double(s.index_bytes) / double(f.cells());
     if (shell) {
         fprintf(stdout,
                 "name=%s\nnorth=%.15g\nsouth=%.15g\neast=%.15g\nwest=%.15g\n"
@@ -26,7 +29,8 @@ void print_report(const char *name, const sbrt::Model &model,
                 "nsres=%.15g\newres=%.15g\ntbres=%.15g\nmaterials=%zu\n"
                 "voxels=%llu\nvoxel_bytes=%llu\nsbrt_bytes=%llu\n"
                 "intervals=%llu\nsolid_intervals=%llu\nmax_stack=%u\n"
-                "mean_stack=%.6f\ncompression=%.3f\n",
+                "mean_stack=%.6f\ncompression=%.3f\n"
+                "memory_bytes_per_interval=%.4f\nmemory_index_bytes_per_cell=%.4f\n",
                 name, f.north, f.south, f.east, f.west, f.top, f.bottom,
                 f.rows, f.cols, f.depths, f.ns_res(), f.ew_res(), f.tb_res(),
                 model.materials().size() - 1, (unsigned long long)s.voxels,
@@ -34,7 +38,7 @@ void print_report(const char *name, const sbrt::Model &model,
                 (unsigned long long)s.sbrt_bytes,
                 (unsigned long long)s.intervals,
                 (unsigned long long)s.solid_intervals, s.max_stack,
-                s.mean_stack, s.compression_percent);
+                s.mean_stack, s.compression_percent, memory_per_interval, memory_per_cell);
         fprintf(stdout,
                 "format=%u.%u\nfile_bytes=%llu\nfile_bytes_per_interval=%.4f\n"
                 "file_compression=%.3f\n",
@@ -60,7 +64,8 @@ void print_report(const char *name, const sbrt::Model &model,
     fprintf(stdout, "  voxels:            %llu\n", (unsigned long long)s.voxels);
     fprintf(stdout, "  voxel model:       %.2f MiB (4 bytes per voxel)\n",
             s.voxel_bytes / mib);
-    fprintf(stdout, "  SBRT in memory:    %.2f MiB\n", s.sbrt_bytes / mib);
+    fprintf(stdout, "  SBRT in memory:    %.2f MiB (%.2f bytes per interval, %.2f per cell)\n",
+            s.sbrt_bytes / mib, memory_per_interval, memory_per_cell);
     fprintf(stdout, "  intervals:         %llu (%llu solid)\n",
             (unsigned long long)s.intervals,
             (unsigned long long)s.solid_intervals);

@@ -32,11 +32,6 @@ uint32_t material_of(sbrt::Model &model, int id)
     return uint32_t(model.materials().size() - 1);
 }
 
-std::vector<sbrt::Interval> stack_of(const sbrt::Model &model, uint64_t cell)
-{
-    return {model.intervals().begin() + model.stack_begin(cell),
-            model.intervals().begin() + model.stack_end(cell)};
-}
 
 } // namespace
 
@@ -70,7 +65,7 @@ std::vector<sbrt::Borehole> make_boreholes(const RenderRequest &request,
         sbrt::Borehole b;
         b.x = p.x;
         b.y = p.y;
-        b.model_stack = stack_of(source, cell);
+        b.model_stack = source.stack_intervals(cell);
         b.stack = b.model_stack;
         const auto log = logs.find(p.cat);
         if (!request.log_class.empty() && log == logs.end())
@@ -123,8 +118,7 @@ void report_borehole_bytes(const sbrt::Model &model,
         intervals += b.stack.size() + b.model_stack.size();
     const size_t borehole_bytes =
         intervals * sizeof(sbrt::Interval) + boreholes.size() * sizeof(sbrt::Borehole);
-    const size_t model_bytes = model.intervals().size() * sizeof(sbrt::Interval) +
-                               model.offsets().size() * sizeof(uint32_t);
+    const size_t model_bytes = size_t(model.memory_bytes());
     G_verbose_message(_("Boreholes: %zu cylinders holding %zu intervals (%zu "
                         "bytes); the model: %zu intervals in %llu cells (%zu "
                         "bytes)%s"),

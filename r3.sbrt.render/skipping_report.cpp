@@ -31,7 +31,7 @@ void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidd
         emptied += read.stack_size(c) && !left.stack_size(c);
     G_verbose_message(_("Skipped, %zu hidden strata: %llu intervals removed or "
                         "merged (%llu bytes), %llu stacks left empty"),
-                      hidden, ull(removed), ull(removed * sizeof(sbrt::Interval)),
+                      hidden, ull(removed), ull(removed * read.intervals().record_bytes()),
                       ull(emptied));
 }
 
@@ -53,5 +53,5 @@ void report_pyramid(const sbrt::Tracer &tracer)
                         "intervals (%llu bytes) left to trace"),
                       p.levels(), ull(p.bytes()), ull(p.empty_cells()),
                       ull(m.frame().cells()), m.intervals().size(),
-                      ull(m.intervals().size() * sizeof(sbrt::Interval)));
+                      ull(m.intervals().size() * m.intervals().record_bytes()));
 }

@@ -98,7 +98,11 @@ class TestConvertExactFigures(TestCase, Raster3dCompare):
         self.assertEqual(int(f["solid_intervals"]), 200 * 3)
         self.assertEqual(int(f["max_stack"]), 4)
         self.assertAlmostEqual(float(f["mean_stack"]), 4.0)
-        self.assertEqual(int(f["sbrt_bytes"]), 200 * 4 + 800 * 8 + 4 * 8)
+        # in memory: 4-byte intervals (voxel tops), a count byte per cell
+        # and 8 bytes per group of 16 cells (13 groups), 8 per material
+        self.assertEqual(int(f["sbrt_bytes"]), 208 + 13 * 8 + 800 * 4 + 4 * 8)
+        self.assertEqual(float(f["memory_bytes_per_interval"]), 4.0)
+        self.assertAlmostEqual(float(f["memory_index_bytes_per_cell"]), 312 / 200)
         # on disk: format 2, the stacks file's own size, far below memory
         stacks = os.path.join(sbrt_dir("known_s"), "stacks")
         self.assertEqual(f["format"], "2.0")

@@ -53,14 +53,14 @@ std::vector<uint8_t> encode_stacks_v1(const Model &model)
     for (uint64_t c = 0; c < f.cells(); ++c)
         body.u32(model.stack_size(c));
     const size_t intervals_at = body.size();
-    if (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) {
+    if (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && !intervals.is_compact()) {
         // the file's record is the host's (load_intervals reads it so too)
-        body.raw(intervals.data(), intervals.size() * sizeof(Interval));
+        body.raw(intervals.wide_data(), intervals.size() * sizeof(Interval));
     }
     else {
-        for (const Interval &iv : intervals) {
-            body.u32(iv.material);
-            body.f32(iv.top);
+        for (size_t i = 0; i < intervals.size(); ++i) {
+            body.u32(intervals[i].material);
+            body.f32(intervals[i].top);
         }
     }
     const uint8_t *b = body.bytes().data();
@@ -183,7 +183,8 @@ Model decode_stacks_v1(const uint8_t *data, size_t size, const std::string &what
              interval_count);
     IntervalArray intervals =
         load_intervals(data + at_intervals, size_t(interval_count), std::move(keep));
-    return validated_model(f, std::move(materials), std::move(offsets),
+    return validated_model(f, std::move(materials),
+                           StackIndex::from_offsets(offsets.data(), f.cells()),
                            std::move(intervals), what);
 }
 

@@ -84,22 +84,24 @@ uint32_t encode_block(const Model &model, const BlockGrid &grid, int block,
     uint8_t *counts = raw.data();
     uint8_t *materials = counts + grid.cells(block) * w.count_bytes;
     uint8_t *tops = materials + intervals * w.material_bytes;
-    const Interval *all = model.intervals().data();
+    const IntervalArray &all = model.intervals();
     grid.for_each_cell(block, [&](uint64_t cell) {
-        store_le(counts, model.stack_size(cell), w.count_bytes);
+        const StackRange stack = model.stack(cell);
+        store_le(counts, stack.size(), w.count_bytes);
         counts += w.count_bytes;
         float below = 0;
-        for (uint32_t i = model.stack_begin(cell); i < model.stack_end(cell); ++i) {
-            store_le(materials, all[i].material, w.material_bytes);
+        for (uint64_t i = stack.begin; i < stack.end; ++i) {
+            const Interval iv = all[i];
+            store_le(materials, iv.material, w.material_bytes);
             materials += w.material_bytes;
             if (w.tops == TopEncoding::VoxelBoundaries) {
-                store_le(tops, uint32_t(all[i].top - below), 2);
+                store_le(tops, uint32_t(iv.top - below), 2);
                 tops += 2;
-                below = all[i].top;
+                below = iv.top;
             }
             else {
                 uint32_t bits;
-                std::memcpy(&bits, &all[i].top, 4);
+                std::memcpy(&bits, &iv.top, 4);
                 store_le(tops, bits, 4); // little-endian on any host
                 tops += 4;
             }
@@ -255,15 +257,13 @@ void decompress_prefix(ZSTD_DCtx *context, const uint8_t *src, size_t src_size,
 StacksV2Widths widths_for(const Model &model)
 {
     StacksV2Widths w;
-    uint32_t max_stack = 0;
-    for (uint64_t c = 0; c < model.frame().cells(); ++c)
-        max_stack = std::max(max_stack, model.stack_size(c));
+    const uint32_t max_stack = model.index().max_size();
     w.count_bytes = max_stack <= 0xff ? 1 : max_stack <= 0xffff ? 2 : 4;
     w.material_bytes = model.materials().size() <= 0x100 ? 1 : 2;
+    const IntervalArray &intervals = model.intervals();
     bool voxel_tops = model.frame().depths <= 0xffff;
-    for (const Interval &iv : model.intervals())
-        if (!voxel_tops || iv.top != std::floor(iv.top))
-            voxel_tops = false;
+    for (size_t i = 0; voxel_tops && !intervals.is_compact() && i < intervals.size(); ++i)
+        voxel_tops = intervals[i].top == std::floor(intervals[i].top);
     w.tops = voxel_tops ? TopEncoding::VoxelBoundaries : TopEncoding::Float32;
     return w;
 }
@@ -403,19 +403,19 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
             wanted_intervals += entries[b].intervals;
             ++wanted_blocks;
         }
-    if (wanted_intervals > UINT32_MAX)
-        fail(what, ": ", wanted_intervals, " intervals; this build holds at most "
-             "2^32-1 in memory (read a smaller area)");
     if (options.report)
         *options.report = ReadReport{blocks, wanted_blocks};
+    // voxel boundaries within 16 bits are held as 4-byte intervals
+    const bool compact = h.widths.tops == TopEncoding::VoxelBoundaries && f.depths <= 0xffff;
     const uint64_t limit = options.memory_limit ? options.memory_limit : physical_memory();
-    const double needed = double(f.cells()) * 4 + double(wanted_intervals) * sizeof(Interval);
+    const double needed = double(f.cells()) * 2 +
+                          double(wanted_intervals) * (compact ? sizeof(CompactInterval) : sizeof(Interval));
     if (needed > double(limit))
         fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
              "memory, more than the ", limit >> 20, " MiB available");
 
     // pass 1: each block's counts (the head of its frame) give the index
-    std::vector<uint32_t> offsets(f.cells() + 1, 0);
+    std::vector<uint32_t> sizes(f.cells(), 0);
     for_each_row(int(blocks), threads, [&](int block) {
         if (!wanted[size_t(block)])
             return;
@@ -434,18 +434,19 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         grid.for_each_cell(block, [&](uint64_t cell) {
             const uint64_t n = load_le(p, h.widths.count_bytes);
             p += h.widths.count_bytes;
-            offsets[cell + 1] = uint32_t(n);
+            sizes[cell] = uint32_t(n);
             sum += n;
         });
         if (sum != e.intervals)
             fail(where, ": stack sizes sum to ", sum, ", block table says ",
                  e.intervals, " (corrupt file)");
     });
-    for (uint64_t c = 0; c < f.cells(); ++c)
-        offsets[c + 1] += offsets[c]; // sums are checked: no overflow
+    StackIndex index = StackIndex::from_sizes(sizes.data(), f.cells());
+    std::vector<uint32_t>().swap(sizes);
 
-    // pass 2: each block's intervals into place
-    Intervals intervals(wanted_intervals);
+    // pass 2: each block's intervals into place, in the kind held
+    Intervals wide(compact ? 0 : wanted_intervals);
+    CompactIntervals packed(compact ? wanted_intervals : 0);
     for_each_row(int(blocks), threads, [&](int block) {
         if (!wanted[size_t(block)])
             return;
@@ -461,26 +462,37 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         const uint8_t *material = raw.data() + grid.cells(block) * h.widths.count_bytes;
         const uint8_t *top = material + uint64_t(e.intervals) * h.widths.material_bytes;
         grid.for_each_cell(block, [&](uint64_t cell) {
+            const StackRange stack = index.range(cell);
             uint32_t below = 0;
-            for (uint32_t i = offsets[cell]; i < offsets[cell + 1]; ++i) {
-                Interval &iv = intervals[i];
-                iv.material = uint32_t(load_le(material, h.widths.material_bytes));
+            for (uint64_t i = stack.begin; i < stack.end; ++i) {
+                const uint32_t m = uint32_t(load_le(material, h.widths.material_bytes));
                 material += h.widths.material_bytes;
-                if (h.widths.tops == TopEncoding::VoxelBoundaries) {
+                if (compact) {
+                    below += uint32_t(load_le(top, 2));
+                    top += 2;
+                    if (below > uint32_t(f.depths))
+                        fail(where, ": an interval top lies above the model's ",
+                             f.depths, " depths (corrupt file)");
+                    packed[i] = {uint16_t(m), uint16_t(below)};
+                }
+                else if (h.widths.tops == TopEncoding::VoxelBoundaries) {
                     below += uint32_t(load_le(top, 2)); // a wrap gives tops validate() rejects
-                    iv.top = float(below);
+                    wide[i] = {m, float(below)};
                     top += 2;
                 }
                 else {
                     const uint32_t bits = uint32_t(load_le(top, 4));
-                    std::memcpy(&iv.top, &bits, 4);
+                    wide[i].material = m;
+                    std::memcpy(&wide[i].top, &bits, 4);
                     top += 4;
                 }
             }
         });
     });
-    return validated_model(f, std::move(materials), std::move(offsets),
-                           IntervalArray(std::move(intervals)), what);
+    IntervalArray intervals = compact ? IntervalArray(std::move(packed))
+                                      : IntervalArray(std::move(wide));
+    return validated_model(f, std::move(materials), std::move(index),
+                           std::move(intervals), what);
 }
 
 } // namespace sbrt

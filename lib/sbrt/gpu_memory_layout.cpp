@@ -46,10 +46,15 @@ GpuMemory gpu_memory(const Model &model, GpuLayout layout, int max_side)
 {
     const Frame &f = model.frame();
     const uint64_t n = model.intervals().size();
+    if (n > MAX_GPU_INTERVALS)
+        fail("the model's ", n, " intervals exceed the ", MAX_GPU_INTERVALS,
+             " a GPU layout addresses: use backend=cpu");
+    const unsigned record = model.intervals().record_bytes();
     GpuMemory m;
     if (layout == GpuLayout::ssbo) {
-        m.index_bytes = model.offsets().size() * sizeof(uint32_t);
-        m.interval_bytes = n * sizeof(Interval);
+        const StackIndex &index = model.index();
+        m.index_bytes = index.group_offsets().size() * sizeof(uint32_t) + index.count_data_bytes();
+        m.interval_bytes = n * record;
         return m;
     }
     if (f.cols > max_side || f.rows > max_side)
@@ -57,8 +62,8 @@ GpuMemory gpu_memory(const Model &model, GpuLayout layout, int max_side)
              "texture (", max_side, " x ", max_side, "): use layout=ssbo");
     interval_texture_size(n, max_side, m.texture_cols, m.texture_rows);
     m.index_bytes = f.cells() * TEXEL_BYTES;
-    m.interval_bytes = uint64_t(m.texture_cols) * m.texture_rows * TEXEL_BYTES;
-    m.waste_bytes = m.interval_bytes - n * TEXEL_BYTES;
+    m.interval_bytes = uint64_t(m.texture_cols) * m.texture_rows * record;
+    m.waste_bytes = m.interval_bytes - n * record;
     return m;
 }
 
@@ -68,8 +73,9 @@ std::vector<uint32_t> index_texels(const Model &model)
     std::vector<uint32_t> texels(2 * f.cells());
     // cell_index(row, col) runs row-major from the north, as the texture
     for (uint64_t cell = 0; cell < f.cells(); ++cell) {
-        texels[2 * cell] = model.stack_begin(cell);
-        texels[2 * cell + 1] = model.stack_end(cell) - model.stack_begin(cell);
+        const StackRange stack = model.stack(cell);
+        texels[2 * cell] = uint32_t(stack.begin); // gpu_memory checked the count
+        texels[2 * cell + 1] = uint32_t(stack.size());
     }
     return texels;
 }
@@ -79,12 +85,29 @@ std::vector<uint32_t> interval_texels(const Model &model, int cols, int rows)
     const IntervalArray &intervals = model.intervals();
     if (uint64_t(cols) * uint64_t(rows) < intervals.size())
         fail("interval texture of ", cols, " x ", rows, " texels is too small");
+    if (intervals.is_compact()) {
+        std::vector<uint32_t> texels(size_t(cols) * rows, 0);
+        const CompactInterval *records = intervals.compact_data();
+        for (size_t j = 0; j < intervals.size(); ++j)
+            texels[j] = uint32_t(records[j].material) | uint32_t(records[j].top) << 16;
+        return texels;
+    }
     std::vector<uint32_t> texels(2 * size_t(cols) * rows, 0);
     for (size_t j = 0; j < intervals.size(); ++j) {
-        texels[2 * j] = intervals[j].material;
-        std::memcpy(&texels[2 * j + 1], &intervals[j].top, sizeof(float));
+        const Interval iv = intervals[j];
+        texels[2 * j] = iv.material;
+        std::memcpy(&texels[2 * j + 1], &iv.top, sizeof(float));
     }
     return texels;
+}
+
+std::vector<uint32_t> group_offset_words(const Model &model)
+{
+    const std::vector<uint64_t> &offsets = model.index().group_offsets();
+    if (model.index().total() > MAX_GPU_INTERVALS)
+        fail("the model's ", model.index().total(), " intervals exceed the ",
+             MAX_GPU_INTERVALS, " a GPU layout addresses: use backend=cpu");
+    return std::vector<uint32_t>(offsets.begin(), offsets.end());
 }
 
 } // namespace sbrt

@@ -5,7 +5,9 @@
  *            read as arrays; 1-Textures, an index texture over the grid
  *            (first interval, count) and the intervals packed row by row
  *            into a 2D texture. Their texels, and their memory and waste
- *            (Table 3 of the paper)
+ *            (Table 3 of the paper). Both read the model's compact form
+ *            where it has one: 4-byte intervals, and (5-SSBO) the stack
+ *            index as counts and group offsets
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_GPU_MEMORY_LAYOUT_HPP
@@ -34,9 +36,13 @@ struct GpuMemory {
     uint64_t total() const { return index_bytes + interval_bytes; }
 };
 
-/// Bytes per texel of both textures (GL_RG32UI) and per entry of the
-/// buffers: an offset is 4, an interval 8.
+/// Bytes per texel of the index texture (GL_RG32UI: first, count) and of
+/// the intervals texture of wide intervals; compact ones take GL_R32UI,
+/// 4 bytes, as in the intervals buffer.
 constexpr int TEXEL_BYTES = 8;
+
+/// Most intervals a GPU layout addresses (32-bit indices in the shaders).
+constexpr uint64_t MAX_GPU_INTERVALS = UINT32_MAX;
 
 /// Size of the intervals texture for `intervals` intervals: as square as
 /// the largest texture side allows, at most one row partly empty; throws
@@ -51,8 +57,13 @@ GpuMemory gpu_memory(const Model &model, GpuLayout layout, int max_side);
 /// first interval and its count.
 std::vector<uint32_t> index_texels(const Model &model);
 /// Intervals texture, cols x rows texels, row-major: per interval its
-/// material and the bits of its top (float); the rest zero.
+/// material and the bits of its top (float), or one word (material | top
+/// << 16) where the intervals are compact; the rest zero.
 std::vector<uint32_t> interval_texels(const Model &model, int cols, int rows);
+
+/// 5-SSBO's group offsets: the first interval of every group of
+/// StackIndex::GROUP cells (32 bits: MAX_GPU_INTERVALS).
+std::vector<uint32_t> group_offset_words(const Model &model);
 
 } // namespace sbrt
 

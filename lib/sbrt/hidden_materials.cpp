@@ -18,27 +18,33 @@ Model hide_materials(const Model &model, const std::vector<uint32_t> &hidden)
         is_hidden[m] = true;
     }
     const uint64_t cells = model.frame().cells();
-    std::vector<uint32_t> offsets(cells + 1, 0);
-    Intervals intervals;
-    intervals.reserve(model.intervals().size());
-    for (uint64_t c = 0; c < cells; ++c) {
-        const size_t stack_start = intervals.size();
-        for (uint32_t i = model.stack_begin(c); i < model.stack_end(c); ++i) {
-            Interval iv = model.intervals()[i];
-            if (is_hidden[iv.material])
-                iv.material = EMPTY;
-            if (intervals.size() > stack_start &&
-                intervals.back().material == iv.material)
-                intervals.back().top = iv.top; // extend the run
-            else
-                intervals.push_back(iv);
+    std::vector<uint32_t> sizes(cells, 0);
+    // the intervals of the kind the model holds
+    IntervalArray kept = model.intervals().visit([&](const auto *records) {
+        using Record = std::remove_const_t<std::remove_pointer_t<decltype(records)>>;
+        std::vector<Record, UnfilledAllocator<Record>> intervals;
+        intervals.reserve(model.intervals().size());
+        for (uint64_t c = 0; c < cells; ++c) {
+            const size_t stack_start = intervals.size();
+            const StackRange stack = model.stack(c);
+            for (uint64_t i = stack.begin; i < stack.end; ++i) {
+                Record iv = records[i];
+                if (is_hidden[iv.material])
+                    iv.material = EMPTY;
+                if (intervals.size() > stack_start &&
+                    intervals.back().material == iv.material)
+                    intervals.back().top = iv.top; // extend the run
+                else
+                    intervals.push_back(iv);
+            }
+            if (intervals.size() > stack_start && intervals.back().material == EMPTY)
+                intervals.pop_back(); // nothing visible above
+            sizes[c] = uint32_t(intervals.size() - stack_start);
         }
-        if (intervals.size() > stack_start && intervals.back().material == EMPTY)
-            intervals.pop_back(); // nothing visible above
-        offsets[c + 1] = uint32_t(intervals.size());
-    }
-    return Model(model.frame(), model.materials(), std::move(offsets),
-                 std::move(intervals));
+        return IntervalArray(std::move(intervals));
+    });
+    return Model(model.frame(), model.materials(), StackIndex::from_sizes(sizes.data(), cells),
+                 std::move(kept));
 }
 
 } // namespace sbrt

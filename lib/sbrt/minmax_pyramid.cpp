@@ -13,23 +13,24 @@ std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model)
 {
     const Frame &f = model.frame();
     std::vector<ZRange> cells(f.cells());
-    const Interval *intervals = model.intervals().data();
-    for (int row = 0; row < f.rows; ++row)
-        for (int col = 0; col < f.cols; ++col) {
-            const uint64_t cell = model.cell_index(row, col);
-            const Interval *first = intervals + model.stack_begin(cell);
-            const Interval *last = intervals + model.stack_end(cell);
-            // a stack ends with material (no trailing EMPTY); leading
-            // EMPTY intervals lift its lowest bottom
-            const Interval *solid = first;
-            while (solid != last && solid->material == EMPTY)
-                ++solid;
-            if (solid == last)
-                continue;
-            const size_t y = size_t(f.rows - 1 - row);
-            cells[y * f.cols + col] = {solid == first ? 0.0f : (solid - 1)->top,
-                                       (last - 1)->top};
-        }
+    model.intervals().visit([&](const auto *records) {
+        using Record = std::remove_pointer_t<decltype(records)>;
+        for (int row = 0; row < f.rows; ++row)
+            for (int col = 0; col < f.cols; ++col) {
+                const StackRange stack = model.stack(model.cell_index(row, col));
+                const Record *first = records + stack.begin, *last = records + stack.end;
+                // a stack ends with material (no trailing EMPTY); leading
+                // EMPTY intervals lift its lowest bottom
+                const Record *solid = first;
+                while (solid != last && solid->material == EMPTY)
+                    ++solid;
+                if (solid == last)
+                    continue;
+                const size_t y = size_t(f.rows - 1 - row);
+                cells[y * f.cols + col] = {solid == first ? 0.0f : float((solid - 1)->top),
+                                           float((last - 1)->top)};
+            }
+    });
     return cells;
 }
 

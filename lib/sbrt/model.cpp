@@ -33,10 +33,33 @@ void Frame::validate(const char *where) const
 }
 
 Model::Model(Frame frame, std::vector<Material> materials,
-             std::vector<uint32_t> offsets, IntervalArray intervals)
-    : frame_(frame), materials_(std::move(materials)),
-      offsets_(std::move(offsets)), intervals_(std::move(intervals))
+             const std::vector<uint32_t> &offsets, IntervalArray intervals)
+    : Model(frame, std::move(materials),
+            offsets.empty() ? StackIndex() : StackIndex::from_offsets(offsets.data(), offsets.size() - 1),
+            std::move(intervals))
 {
+    if (offsets.size() != frame_.cells() + 1)
+        fail("SBRT model: index has ", offsets.size(), " entries, expected ",
+             frame_.cells() + 1);
+    for (uint64_t c = 0; c < frame_.cells(); ++c)
+        if (offsets[c + 1] < offsets[c])
+            fail("SBRT model: cell ", c, ": negative stack size");
+}
+
+Model::Model(Frame frame, std::vector<Material> materials, StackIndex index,
+             IntervalArray intervals)
+    : frame_(frame), materials_(std::move(materials)), index_(std::move(index)),
+      intervals_(std::move(intervals).packed())
+{
+}
+
+std::vector<Interval> Model::stack_intervals(uint64_t cell) const
+{
+    const StackRange stack = index_.range(cell);
+    std::vector<Interval> out(stack.size());
+    for (uint64_t i = stack.begin; i < stack.end; ++i)
+        out[i - stack.begin] = intervals_[i];
+    return out;
 }
 
 int64_t Model::find_material(int32_t id) const
@@ -53,13 +76,14 @@ Stats Model::stats() const
     s.voxels = frame_.voxels();
     s.voxel_bytes = s.voxels * 4;
     s.intervals = intervals_.size();
-    s.sbrt_bytes = frame_.cells() * 4 + s.intervals * sizeof(Interval) +
-                   materials_.size() * 8;
-    for (const Interval &iv : intervals_)
-        if (iv.material != EMPTY)
-            ++s.solid_intervals;
-    for (uint64_t c = 0; c < frame_.cells(); ++c)
-        s.max_stack = std::max(s.max_stack, stack_size(c));
+    s.index_bytes = index_.bytes();
+    s.interval_bytes = memory_bytes() - s.index_bytes;
+    s.sbrt_bytes = s.index_bytes + s.interval_bytes + materials_.size() * 8;
+    intervals_.visit([&](const auto *records) {
+        for (size_t i = 0; i < s.intervals; ++i)
+            s.solid_intervals += records[i].material != EMPTY;
+    });
+    s.max_stack = index_.max_size();
     s.mean_stack = frame_.cells() ? double(s.intervals) / frame_.cells() : 0;
     s.compression_percent =
         s.voxel_bytes ? 100.0 * (1.0 - double(s.sbrt_bytes) / s.voxel_bytes)
@@ -79,22 +103,19 @@ void Model::validate() const
     if (materials_.empty() || materials_.size() > MAX_MATERIALS)
         problem("material count " + std::to_string(materials_.size()) +
                 " not in 1.." + std::to_string(MAX_MATERIALS));
-    if (offsets_.size() != frame_.cells() + 1)
-        fail("SBRT model: index has ", offsets_.size(), " entries, expected ",
-             frame_.cells() + 1);
-    if (offsets_.front() != 0 || offsets_.back() != intervals_.size())
+    if (index_.cells() != frame_.cells())
+        fail("SBRT model: index has ", index_.cells(), " cells, expected ",
+             frame_.cells());
+    if (index_.total() != intervals_.size())
         fail("SBRT model: index does not span the ", intervals_.size(),
              " intervals");
     const float depth_limit = float(frame_.depths);
     for (uint64_t c = 0; c < frame_.cells(); ++c) {
-        if (offsets_[c + 1] < offsets_[c]) {
-            problem("cell " + std::to_string(c) + ": negative stack size");
-            continue;
-        }
+        const StackRange stack = index_.range(c);
         float below = 0;
         uint32_t previous = UINT32_MAX;
-        for (uint32_t i = offsets_[c]; i < offsets_[c + 1]; ++i) {
-            const Interval &iv = intervals_[i];
+        for (uint64_t i = stack.begin; i < stack.end; ++i) {
+            const Interval iv = intervals_[i];
             if (iv.material >= materials_.size())
                 problem("cell " + std::to_string(c) + ": material index " +
                         std::to_string(iv.material) + " out of range");
@@ -109,7 +130,7 @@ void Model::validate() const
             below = iv.top;
             previous = iv.material;
         }
-        if (offsets_[c + 1] > offsets_[c] && previous == EMPTY)
+        if (stack.size() && previous == EMPTY)
             problem("cell " + std::to_string(c) + ": trailing EMPTY interval");
     }
     if (count)

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "interval_array.hpp"
+#include "stack_index.hpp"
 
 namespace sbrt {
 
@@ -54,7 +55,9 @@ struct Material {
 struct Stats {
     uint64_t voxels = 0;
     uint64_t voxel_bytes = 0; ///< 4 bytes per voxel (FCELL), as in Table 1
-    uint64_t sbrt_bytes = 0;  ///< index + intervals + materials
+    uint64_t sbrt_bytes = 0;  ///< index + intervals + materials, in memory
+    uint64_t index_bytes = 0;    ///< of them the stack index
+    uint64_t interval_bytes = 0; ///< and the intervals
     uint64_t intervals = 0;
     uint64_t solid_intervals = 0;
     uint32_t max_stack = 0;
@@ -67,25 +70,30 @@ class Model {
 public:
     Model() = default;
     /// Takes ownership of the arrays; `offsets` has cells + 1 entries.
+    /// Owned intervals are held compact where that is exact.
     Model(Frame frame, std::vector<Material> materials,
-          std::vector<uint32_t> offsets, IntervalArray intervals);
+          const std::vector<uint32_t> &offsets, IntervalArray intervals);
+    Model(Frame frame, std::vector<Material> materials, StackIndex index,
+          IntervalArray intervals);
 
     const Frame &frame() const { return frame_; }
     const std::vector<Material> &materials() const { return materials_; }
     std::vector<Material> &materials() { return materials_; }
-    const std::vector<uint32_t> &offsets() const { return offsets_; }
+    const StackIndex &index() const { return index_; }
     const IntervalArray &intervals() const { return intervals_; }
 
     uint64_t cell_index(int row, int col) const
     {
         return uint64_t(row) * uint64_t(frame_.cols) + uint64_t(col);
     }
-    uint32_t stack_begin(uint64_t cell) const { return offsets_[cell]; }
-    uint32_t stack_end(uint64_t cell) const { return offsets_[cell + 1]; }
-    uint32_t stack_size(uint64_t cell) const
-    {
-        return offsets_[cell + 1] - offsets_[cell];
-    }
+    StackRange stack(uint64_t cell) const { return index_.range(cell); }
+    uint64_t stack_begin(uint64_t cell) const { return index_.range(cell).begin; }
+    uint64_t stack_end(uint64_t cell) const { return index_.range(cell).end; }
+    uint32_t stack_size(uint64_t cell) const { return index_.size(cell); }
+    /// The intervals of one stack, widened (for code that is not hot).
+    std::vector<Interval> stack_intervals(uint64_t cell) const;
+    /// Bytes the index and the intervals take in memory.
+    uint64_t memory_bytes() const { return index_.bytes() + intervals_.size() * intervals_.record_bytes(); }
     /// Material index whose class id is `id`, or -1.
     int64_t find_material(int32_t id) const;
 
@@ -97,7 +105,7 @@ public:
 private:
     Frame frame_;
     std::vector<Material> materials_;
-    std::vector<uint32_t> offsets_;
+    StackIndex index_;
     IntervalArray intervals_;
 };
 

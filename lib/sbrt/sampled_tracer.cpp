@@ -31,12 +31,15 @@ Sample sample_at(const Model &model, glm::dvec3 p)
     s.x = std::clamp(int(std::floor(p.x)), 0, f.cols - 1);
     s.y = std::clamp(int(std::floor(p.y)), 0, f.rows - 1);
     const uint64_t cell = model.cell_index(f.rows - 1 - s.y, s.x);
-    const Interval *first = model.intervals().data() + model.stack_begin(cell);
-    const Interval *last = model.intervals().data() + model.stack_end(cell);
-    const Interval *k = std::upper_bound(
-        first, last, p.z, [](double z, const Interval &iv) { return z < double(iv.top); });
-    s.interval = long(k - first);
-    s.material = k != last ? k->material : EMPTY;
+    const StackRange stack = model.stack(cell);
+    model.intervals().visit([&](const auto *records) {
+        using Record = std::remove_pointer_t<decltype(records)>;
+        const Record *first = records + stack.begin, *last = records + stack.end;
+        const Record *k = std::upper_bound(
+            first, last, p.z, [](double z, const Record &iv) { return z < double(iv.top); });
+        s.interval = long(k - first);
+        s.material = k != last ? k->material : EMPTY;
+    });
     return s;
 }
 

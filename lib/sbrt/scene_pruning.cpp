@@ -36,37 +36,42 @@ Pruning prune_for_view(const Tracer &tracer, const Camera &camera)
     const Frame &f = model.frame();
     const MinMaxPyramid &pyramid = tracer.pyramid();
     Pruning out;
-    std::vector<uint32_t> offsets(f.cells() + 1, 0);
-    Intervals intervals;
-    intervals.reserve(model.intervals().size());
-    for (int row = 0; row < f.rows; ++row)
-        for (int col = 0; col < f.cols; ++col) {
-            const uint64_t cell = model.cell_index(row, col);
-            const uint32_t size = model.stack_size(cell);
-            const int y = f.rows - 1 - row;
-            Pruned *left_out = nullptr;
-            if (size && pyramid.levels() && pyramid.node(0, col, y).empty())
-                left_out = &out.cut_away;
-            else if (size) {
-                const double top = model.intervals()[model.stack_end(cell) - 1].top;
-                const glm::dvec3 low = tracer.exaggerate(tracer.from_local({col, y, 0}));
-                const glm::dvec3 high =
-                    tracer.exaggerate(tracer.from_local({col + 1, y + 1, top}));
-                if (outside_view(camera, low, high))
-                    left_out = &out.outside_view;
+    std::vector<uint32_t> sizes(f.cells(), 0);
+    IntervalArray kept = model.intervals().visit([&](const auto *records) {
+        using Record = std::remove_const_t<std::remove_pointer_t<decltype(records)>>;
+        std::vector<Record, UnfilledAllocator<Record>> intervals;
+        intervals.reserve(model.intervals().size());
+        for (int row = 0; row < f.rows; ++row)
+            for (int col = 0; col < f.cols; ++col) {
+                const uint64_t cell = model.cell_index(row, col);
+                const uint32_t size = model.stack_size(cell);
+                const int y = f.rows - 1 - row;
+                Pruned *left_out = nullptr;
+                if (size && pyramid.levels() && pyramid.node(0, col, y).empty())
+                    left_out = &out.cut_away;
+                else if (size) {
+                    const double top = model.intervals()[model.stack_end(cell) - 1].top;
+                    const glm::dvec3 low = tracer.exaggerate(tracer.from_local({col, y, 0}));
+                    const glm::dvec3 high =
+                        tracer.exaggerate(tracer.from_local({col + 1, y + 1, top}));
+                    if (outside_view(camera, low, high))
+                        left_out = &out.outside_view;
+                }
+                if (left_out) {
+                    left_out->cells += 1;
+                    left_out->intervals += size;
+                    left_out->bytes += size * sizeof(Record);
+                }
+                else {
+                    const StackRange stack = model.stack(cell);
+                    intervals.insert(intervals.end(), records + stack.begin, records + stack.end);
+                    sizes[cell] = size;
+                }
             }
-            if (left_out) {
-                left_out->cells += 1;
-                left_out->intervals += size;
-                left_out->bytes += size * sizeof(Interval);
-            }
-            else
-                intervals.insert(intervals.end(),
-                                 model.intervals().begin() + model.stack_begin(cell),
-                                 model.intervals().begin() + model.stack_end(cell));
-            offsets[cell + 1] = uint32_t(intervals.size());
-        }
-    out.model = Model(f, model.materials(), std::move(offsets), std::move(intervals));
+        return IntervalArray(std::move(intervals));
+    });
+    out.model = Model(f, model.materials(), StackIndex::from_sizes(sizes.data(), f.cells()),
+                      std::move(kept));
     return out;
 }
 

@@ -71,17 +71,17 @@ std::vector<Material> read_materials(ByteReader &in, uint32_t count)
 }
 
 Model validated_model(const Frame &frame, std::vector<Material> materials,
-                      std::vector<uint32_t> offsets, IntervalArray intervals,
+                      StackIndex index, IntervalArray intervals,
                       const std::string &what)
 {
-    Model model(frame, std::move(materials), std::move(offsets), std::move(intervals));
     try {
+        Model model(frame, std::move(materials), std::move(index), std::move(intervals));
         model.validate();
+        return model;
     }
     catch (const Error &e) {
         fail(what, ": ", e.what());
     }
-    return model;
 }
 
 } // namespace sbrt

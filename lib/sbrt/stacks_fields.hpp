@@ -47,7 +47,7 @@ std::vector<Material> read_materials(ByteReader &in, uint32_t count);
 /// The model of decoded parts once every invariant holds (throws naming
 /// `what` and the problems otherwise).
 Model validated_model(const Frame &frame, std::vector<Material> materials,
-                      std::vector<uint32_t> offsets, IntervalArray intervals,
+                      StackIndex index, IntervalArray intervals,
                       const std::string &what);
 
 } // namespace sbrt

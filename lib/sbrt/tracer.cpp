@@ -205,7 +205,8 @@ bool Tracer::meet(uint32_t material, double t_enter, double t_exit, const Entry 
     return walk.hit.transmittance < MIN_TRANSMITTANCE;
 }
 
-bool Tracer::walk_stack(const Interval *first, const Interval *last, double t_a,
+template <typename Record>
+bool Tracer::walk_stack(const Record *first, const Record *last, double t_a,
                         double t_b, const Entry &entry, Walk &walk) const
 {
     const double oz = walk.o.z, dz = walk.d.z;
@@ -214,15 +215,15 @@ bool Tracer::walk_stack(const Interval *first, const Interval *last, double t_a,
     if (first == last || std::min(z_a, z_b) >= double((last - 1)->top))
         return false;
     const double inv_dz = walk.inv_d.z;
-    auto t_at = [&](float z) { return (double(z) - oz) * inv_dz; };
+    auto t_at = [&](auto z) { return (double(z) - oz) * inv_dz; };
     const Entry top{Face::top}, bottom{Face::bottom};
     if (dz < 0) {
         // descending: intervals (bottom, top]; the one holding z_a, then
         // down while their tops stay above z_b
-        const Interval *k = std::lower_bound(
+        const Record *k = std::lower_bound(
             first, last, z_a,
-            [](const Interval &iv, double z) { return double(iv.top) < z; });
-        for (const Interval *j = k;; --j) {
+            [](const Record &iv, double z) { return double(iv.top) < z; });
+        for (const Record *j = k;; --j) {
             if (j != last) {
                 const double exit = j > first ? std::min(t_b, t_at((j - 1)->top)) : t_b;
                 if (meet(j->material, j == k ? t_a : t_at(j->top), exit,
@@ -234,10 +235,10 @@ bool Tracer::walk_stack(const Interval *first, const Interval *last, double t_a,
         }
     }
     // ascending or level: intervals [bottom, top)
-    const Interval *k = std::upper_bound(
+    const Record *k = std::upper_bound(
         first, last, z_a,
-        [](double z, const Interval &iv) { return z < double(iv.top); });
-    for (const Interval *j = k; j != last; ++j) {
+        [](double z, const Record &iv) { return z < double(iv.top); });
+    for (const Record *j = k; j != last; ++j) {
         if (j != k && !(double((j - 1)->top) < z_b))
             return false;
         const double exit = dz == 0 ? t_b : std::min(t_b, t_at(j->top));
@@ -249,6 +250,10 @@ bool Tracer::walk_stack(const Interval *first, const Interval *last, double t_a,
     }
     return false;
 }
+template bool Tracer::walk_stack(const Interval *, const Interval *, double, double,
+                                 const Entry &, Walk &) const;
+template bool Tracer::walk_stack(const CompactInterval *, const CompactInterval *, double,
+                                 double, const Entry &, Walk &) const;
 
 bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &entry,
                         Walk &walk) const
@@ -258,9 +263,10 @@ bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &e
         return cross_overlays(cell, t_in, t_out, entry, walk);
     if (!scene_.draw_model)
         return false;
-    const Interval *intervals = model_.intervals().data();
-    return walk_stack(intervals + model_.stack_begin(cell),
-                      intervals + model_.stack_end(cell), t_in, t_out, entry, walk);
+    const StackRange stack = model_.stack(cell);
+    return model_.intervals().visit([&](const auto *records) {
+        return walk_stack(records + stack.begin, records + stack.end, t_in, t_out, entry, walk);
+    });
 }
 
 std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
@@ -358,7 +364,7 @@ Hit Tracer::trace(const Ray &ray, double t_start) const
         std::vector<Event> events;
         overlay_events(all_overlays_.data(), all_overlays_.data() + all_overlays_.size(),
                        t_near, t_far, walk, events);
-        if (cross_events(events, t_near, t_far, wall, nullptr, nullptr, walk) &&
+        if (cross_events(events, t_near, t_far, wall, nullptr, walk) &&
             walk.hit.is_hit())
             walk.hit.point = from_local(o + walk.hit.t * d);
         return walk.hit;

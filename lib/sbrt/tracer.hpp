@@ -131,17 +131,19 @@ private:
     void overlay_events(const uint32_t *first, const uint32_t *last, double t_lo,
                         double t_hi, const Walk &walk, std::vector<Event> &events) const;
     bool cross_events(const std::vector<Event> &events, double t_in, double t_out,
-                      Entry entry, const Interval *first, const Interval *last,
+                      Entry entry, const std::vector<Interval> *model_stack,
                       Walk &walk) const;
-    /// The model's stack of the cell holding local point p.
-    const Interval *stack_at(glm::dvec3 local, const Interval *&last) const;
+    /// The cell holding local point p (clamped to the grid).
+    uint64_t cell_at(glm::dvec3 local) const;
     bool cross_cell(uint64_t cell, double t_in, double t_out, const Entry &entry,
                     Walk &walk) const;
     bool cross_overlays(uint64_t cell, double t_in, double t_out, const Entry &entry,
                         Walk &walk) const;
     bool cross_borehole(const Borehole &borehole, double t_a, double t_b,
                         const Entry &entry, Walk &walk) const;
-    bool walk_stack(const Interval *first, const Interval *last, double t_a,
+    /// Record: Interval or CompactInterval (instantiated for both).
+    template <typename Record>
+    bool walk_stack(const Record *first, const Record *last, double t_a,
                     double t_b, const Entry &entry, Walk &walk) const;
     bool meet(uint32_t material, double t_enter, double t_exit, const Entry &entry,
               Walk &walk) const;

@@ -136,22 +136,24 @@ void Tracer::overlay_events(const uint32_t *first, const uint32_t *last,
               [](const Event &a, const Event &b) { return a.start < b.start; });
 }
 
-const Interval *Tracer::stack_at(glm::dvec3 local, const Interval *&last) const
+uint64_t Tracer::cell_at(glm::dvec3 local) const
 {
     const Frame &f = model_.frame();
     const int col = std::clamp(int(std::floor(local.x)), 0, f.cols - 1);
     const int row = f.rows - 1 - std::clamp(int(std::floor(local.y)), 0, f.rows - 1);
-    const uint64_t cell = model_.cell_index(row, col);
-    last = model_.intervals().data() + model_.stack_end(cell);
-    return model_.intervals().data() + model_.stack_begin(cell);
+    return model_.cell_index(row, col);
 }
 
+
+
 bool Tracer::cross_events(const std::vector<Event> &events, double t_in,
-                          double t_out, Entry entry, const Interval *first,
-                          const Interval *last, Walk &walk) const
+                          double t_out, Entry entry,
+                          const std::vector<Interval> *model_stack, Walk &walk) const
 {
-    // `first`..`last`: the model's stack between the overlays, if drawn
-    const bool model = first != nullptr;
+    // the model's stack between the overlays, if drawn
+    const bool model = model_stack != nullptr;
+    const Interval *first = model ? model_stack->data() : nullptr;
+    const Interval *last = model ? first + model_stack->size() : nullptr;
     double cursor = t_in;
     for (const Event &e : events) {
         const bool panel = (e.item & PANEL) != 0;
@@ -163,8 +165,12 @@ bool Tracer::cross_events(const std::vector<Event> &events, double t_in,
         if (panel) {
             // the class of the model at the curtain's point
             const glm::dvec3 p = walk.o + e.start * walk.d;
-            const Interval *stack_last = last;
-            const Interval *stack_first = model ? first : stack_at(p, stack_last);
+            std::vector<Interval> below_curtain;
+            if (!model)
+                below_curtain = model_.stack_intervals(cell_at(p));
+            const Interval *stack_first = model ? first : below_curtain.data();
+            const Interval *stack_last =
+                model ? last : below_curtain.data() + below_curtain.size();
             const Interval *k = std::upper_bound(
                 stack_first, stack_last, p.z,
                 [](double v, const Interval &iv) { return v < double(iv.top); });
@@ -199,11 +205,9 @@ bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
                    overlay_items_.data() + overlay_offsets_[cell + 1], t_in, t_out,
                    walk, events);
     if (!scene_.draw_model)
-        return cross_events(events, t_in, t_out, entry, nullptr, nullptr, walk);
-    const Interval *intervals = model_.intervals().data();
-    return cross_events(events, t_in, t_out, entry,
-                        intervals + model_.stack_begin(cell),
-                        intervals + model_.stack_end(cell), walk);
+        return cross_events(events, t_in, t_out, entry, nullptr, walk);
+    const std::vector<Interval> stack = model_.stack_intervals(cell);
+    return cross_events(events, t_in, t_out, entry, &stack, walk);
 }
 
 } // namespace sbrt

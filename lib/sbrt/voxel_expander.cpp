@@ -48,8 +48,8 @@ void VoxelExpander::next_slice(int32_t *classes)
         classes[t] = NULL_CLASS;
         if (source_cell_[t] < 0 || local < 0)
             continue;
-        const uint32_t end = model_.stack_end(uint64_t(source_cell_[t]));
-        uint32_t &i = cursor_[t];
+        const uint64_t end = model_.stack_end(uint64_t(source_cell_[t]));
+        uint64_t &i = cursor_[t];
         while (i < end && !(local < intervals[i].top))
             ++i;
         if (i < end && intervals[i].material != EMPTY)

@@ -27,7 +27,7 @@ private:
     Frame target_;
     int depth_ = 0;
     std::vector<int64_t> source_cell_; ///< per target column, -1 outside
-    std::vector<uint32_t> cursor_;     ///< per target column
+    std::vector<uint64_t> cursor_;     ///< per target column
 };
 
 } // namespace sbrt

@@ -56,18 +56,20 @@ void GlBuffer::download(void *data, size_t bytes) const
 }
 
 GlUintTexture::GlUintTexture(const GlApi &gl, int cols, int rows,
-                             const uint32_t *texels)
+                             const uint32_t *texels, int channels)
     : gl_(&gl)
 {
     gl.GenTextures(1, &name_);
     gl.BindTexture(GL_TEXTURE_2D, name_);
-    gl.TexStorage2D(GL_TEXTURE_2D, 1, GL_RG32UI, std::max(cols, 1), std::max(rows, 1));
+    gl.TexStorage2D(GL_TEXTURE_2D, 1, channels == 1 ? GL_R32UI : GL_RG32UI,
+                    std::max(cols, 1), std::max(rows, 1));
     // integer textures are complete with nearest filtering only
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     if (cols > 0 && rows > 0)
-        gl.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, cols, rows, GL_RG_INTEGER,
-                         GL_UNSIGNED_INT, texels);
+        gl.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, cols, rows,
+                         channels == 1 ? GL_RED_INTEGER : GL_RG_INTEGER, GL_UNSIGNED_INT,
+                         texels);
     const GLenum error = gl.GetError();
     if (error != GL_NO_ERROR) {
         gl.DeleteTextures(1, &name_);

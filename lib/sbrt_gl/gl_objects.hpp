@@ -43,13 +43,14 @@ private:
     size_t bytes_;
 };
 
-/// \brief An immutable 2D texture of two 32-bit unsigned integers per texel
-/// (GL_RG32UI, one level, nearest texel), read by texelFetch from a
-/// usampler2D; bind() puts it on a texture unit.
+/// \brief An immutable 2D texture of one or two 32-bit unsigned integers
+/// per texel (GL_R32UI or GL_RG32UI, one level, nearest texel), read by
+/// texelFetch from a usampler2D; bind() puts it on a texture unit.
 class GlUintTexture {
 public:
-    /// `texels` holds 2 * cols * rows values, row 0 first.
-    GlUintTexture(const GlApi &gl, int cols, int rows, const uint32_t *texels);
+    /// `texels` holds channels * cols * rows values, row 0 first.
+    GlUintTexture(const GlApi &gl, int cols, int rows, const uint32_t *texels,
+                  int channels = 2);
     ~GlUintTexture();
     GlUintTexture(GlUintTexture &&other) noexcept
         : gl_(other.gl_), name_(std::exchange(other.name_, 0))

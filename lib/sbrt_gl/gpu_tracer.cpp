@@ -89,20 +89,34 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
 {
     const sbrt::Model &model = tracer.model();
     if (layout == sbrt::GpuLayout::ssbo) {
-        offsets_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                         checked_bytes(memory_.index_bytes, max_block_bytes_, "cell offsets"),
-                         model.offsets().data());
+        // the model's own compact arrays go up as they are: counts and
+        // intervals; only the group offsets narrow to 32 bits
+        const std::vector<uint32_t> groups = sbrt::group_offset_words(model);
+        group_offsets_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                               checked_bytes(groups.size() * sizeof(uint32_t),
+                                             max_block_bytes_, "stack offsets"),
+                               groups.data());
+        const sbrt::StackIndex &index = model.index();
+        counts_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                        checked_bytes(index.count_data_bytes(), max_block_bytes_,
+                                      "stack counts"),
+                        index.count_data());
+        const sbrt::IntervalArray &intervals = model.intervals();
+        const void *records = intervals.is_compact()
+                                  ? static_cast<const void *>(intervals.compact_data())
+                                  : static_cast<const void *>(intervals.wide_data());
         intervals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
                            checked_bytes(memory_.interval_bytes, max_block_bytes_,
                                          "intervals"),
-                           model.intervals().data());
+                           records);
     }
     else {
         const sbrt::Frame &f = model.frame();
         index_texture_.emplace(gl_, f.cols, f.rows, sbrt::index_texels(model).data());
         interval_texture_.emplace(
             gl_, memory_.texture_cols, memory_.texture_rows,
-            sbrt::interval_texels(model, memory_.texture_cols, memory_.texture_rows).data());
+            sbrt::interval_texels(model, memory_.texture_cols, memory_.texture_rows).data(),
+            model.intervals().is_compact() ? 1 : 2);
     }
     gl_.Finish();
     check_gl(gl_, "uploading the model");
@@ -142,12 +156,18 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
 
 namespace {
 
-/// The ray casting shader for `layout`, writing hit records or, with
-/// `shade`, the shaded outputs (SBRT_SHADE).
-std::vector<const char *> raycast_sources(sbrt::GpuLayout layout, bool shade)
+/// The ray casting shader for `layout` and the form `model` is held in,
+/// writing hit records or, with `shade`, the shaded outputs (SBRT_SHADE).
+std::vector<const char *> raycast_sources(sbrt::GpuLayout layout, const sbrt::Model &model,
+                                          bool shade)
 {
+    const unsigned count_bytes = model.index().count_bytes();
     return {"#version 450\n",
             layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
+            model.intervals().is_compact() ? "#define SBRT_COMPACT_INTERVALS 1\n" : "",
+            count_bytes == 1   ? "#define SBRT_COUNT_BYTES 1\n"
+            : count_bytes == 2 ? "#define SBRT_COUNT_BYTES 2\n"
+                               : "#define SBRT_COUNT_BYTES 4\n",
             shade ? "#define SBRT_SHADE 1\n" : "", SHADER_COMMON_LAYOUT, SHADER_RAYCAST};
 }
 
@@ -157,15 +177,16 @@ const GlComputeProgram &GpuTracer::record_program() const
 {
     // compiled when first used: a render shaded on the GPU never needs it
     if (!program_)
-        program_.emplace(gl_, raycast_sources(layout_, false));
+        program_.emplace(gl_, raycast_sources(layout_, tracer_.model(), false));
     return *program_;
 }
 
 void GpuTracer::bind_model() const
 {
     if (layout_ == sbrt::GpuLayout::ssbo) {
-        offsets_->bind(0);
+        group_offsets_->bind(0);
         intervals_->bind(1);
+        counts_->bind(6);
     }
     else {
         index_texture_->bind(0);
@@ -257,7 +278,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     if (!shade_program_) {
         const auto start = Clock::now();
-        shade_program_.emplace(gl_, raycast_sources(layout_, true));
+        shade_program_.emplace(gl_, raycast_sources(layout_, tracer_.model(), true));
         const std::vector<sbrt::GpuLook> looks = sbrt::make_gpu_looks(tracer_);
         looks_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, looks.size() * sizeof(sbrt::GpuLook),
                        looks.data());

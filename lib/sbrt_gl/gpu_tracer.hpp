@@ -95,7 +95,8 @@ private:
     sbrt::GpuMemory memory_;
     mutable std::optional<GlComputeProgram> program_; ///< hit records
     /// the model: two buffers (ssbo) or two textures (textures)
-    std::optional<GlBuffer> offsets_, intervals_;
+    /// 5-SSBO: group offsets, stack counts, intervals
+    std::optional<GlBuffer> group_offsets_, counts_, intervals_;
     std::optional<GlUintTexture> index_texture_, interval_texture_;
     GlBuffer materials_, view_;
     GlBuffer pyramid_; ///< empty-space skipping (levels() 0: off)

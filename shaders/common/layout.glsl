@@ -34,6 +34,12 @@ layout(std140, binding = 0) uniform View {
 // through stack_range, interval_material and interval_top. A cell's stack
 // is the intervals [first, last), bottom to top; an interval is its
 // material (index into the material table, 0 = empty) and its top (local z).
+// Where the model holds its intervals compact (SBRT_COMPACT_INTERVALS: tops
+// are voxel boundaries), an interval is one word, material | top << 16.
+#ifdef SBRT_COMPACT_INTERVALS
+uint compact_material(uint word) { return word & 0xffffu; }
+float compact_top(uint word) { return float(word >> 16); }
+#endif
 #ifdef SBRT_TEXTURES
 // 1-Textures: texel (col, row from the north) of the index texture holds
 // the cell's first interval and count; texel (j % width, j / width) of the
@@ -52,25 +58,74 @@ uvec2 interval_texel(uint j)
     return texelFetch(interval_texture,
                       ivec2(j % interval_texture_width, j / interval_texture_width), 0).rg;
 }
+#ifdef SBRT_COMPACT_INTERVALS
+uint interval_material(uint j) { return compact_material(interval_texel(j).x); }
+float interval_top(uint j) { return compact_top(interval_texel(j).x); }
+#else
 uint interval_material(uint j) { return interval_texel(j).x; }
 float interval_top(uint j) { return uintBitsToFloat(interval_texel(j).y); }
+#endif
 #else
-// 5-SSBO: offsets[cell] .. offsets[cell + 1], cell = row_from_north * cols
-// + col, index the intervals buffer.
+// 5-SSBO, the model's stack index as it holds it (lib/sbrt/stack_index.hpp):
+// cell = row_from_north * cols + col starts at the offset of its group of 16
+// cells plus the counts of the cells before it there; counts are
+// SBRT_COUNT_BYTES wide, packed into words (little-endian).
+layout(std430, binding = 0) readonly buffer GroupOffsets { uint group_offsets[]; };
+layout(std430, binding = 6) readonly buffer Counts { uint count_words[]; };
+#ifdef SBRT_COMPACT_INTERVALS
+layout(std430, binding = 1) readonly buffer Intervals { uint intervals[]; };
+uint interval_material(uint j) { return compact_material(intervals[j]); }
+float interval_top(uint j) { return compact_top(intervals[j]); }
+#else
 struct Interval {
     uint material;
     float top;
 };
-layout(std430, binding = 0) readonly buffer Offsets { uint offsets[]; };
 layout(std430, binding = 1) readonly buffer Intervals { Interval intervals[]; };
+uint interval_material(uint j) { return intervals[j].material; }
+float interval_top(uint j) { return intervals[j].top; }
+#endif
+
+uint stack_count(uint cell)
+{
+#if SBRT_COUNT_BYTES == 1
+    return (count_words[cell >> 2] >> (8u * (cell & 3u))) & 0xffu;
+#elif SBRT_COUNT_BYTES == 2
+    return (count_words[cell >> 1] >> (16u * (cell & 1u))) & 0xffffu;
+#else
+    return count_words[cell];
+#endif
+}
+
+// Sum of the counts before `cell` in its group.
+uint counts_before(uint cell)
+{
+    uint sum = 0u;
+#if SBRT_COUNT_BYTES == 1
+    // four counts a word: whole words, then the bytes below the cell's own
+    uint word = (cell & ~15u) >> 2;
+    for (; word < cell >> 2; ++word) {
+        uint w = count_words[word];
+        uint lanes = (w & 0x00ff00ffu) + ((w >> 8) & 0x00ff00ffu);
+        sum += (lanes & 0xffffu) + (lanes >> 16);
+    }
+    uint bits = 8u * (cell & 3u);
+    uint w = bits == 0u ? 0u : count_words[word] & ((1u << bits) - 1u);
+    uint lanes = (w & 0x00ff00ffu) + ((w >> 8) & 0x00ff00ffu);
+    sum += (lanes & 0xffffu) + (lanes >> 16);
+#else
+    for (uint c = cell & ~15u; c < cell; ++c)
+        sum += stack_count(c);
+#endif
+    return sum;
+}
 
 uvec2 stack_range(int col, int row_from_north)
 {
     uint cell = uint(row_from_north) * grid.x + uint(col);
-    return uvec2(offsets[cell], offsets[cell + 1u]);
+    uint first = group_offsets[cell >> 4] + counts_before(cell);
+    return uvec2(first, first + stack_count(cell));
 }
-uint interval_material(uint j) { return intervals[j].material; }
-float interval_top(uint j) { return intervals[j].top; }
 #endif
 
 // Empty-space skipping: the min-max pyramid of lib/sbrt/minmax_pyramid.hpp.

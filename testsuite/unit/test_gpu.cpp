@@ -68,7 +68,8 @@ TEST_P(Gpu, ReportsItsVersionAndRenderer)
 
 TEST_P(Gpu, BlockLayoutMatchesTheShader)
 {
-    const Model m = geology(4, 4, 4);
+    // wide intervals: the shader's Interval struct mirrors the model's
+    const Model m = widened(geology(4, 4, 4));
     const Tracer tracer(m, 1.0);
     sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
     const sbrt_gl::GlApi &gl = gpu.gl();
@@ -130,10 +131,74 @@ TEST_P(Gpu, BlockLayoutMatchesTheShader)
     EXPECT_EQ(interval_stride, int(sizeof(Interval)));
 }
 
+TEST_P(Gpu, CompactIntervalsAndTheStackIndexGoUpAsTheModelHoldsThem)
+{
+    const Model m = geology(4, 4, 4);
+    ASSERT_TRUE(m.intervals().is_compact());
+    const Tracer tracer(m, 1.0);
+    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    const sbrt_gl::GlApi &gl = gpu.gl();
+    auto stride_of = [&](const char *name) {
+        const GLuint index =
+            gl.GetProgramResourceIndex(gpu.program(), GL_BUFFER_VARIABLE, name);
+        EXPECT_NE(index, GL_INVALID_INDEX) << name;
+        const GLenum property = GL_ARRAY_STRIDE; // of a block's array of words
+        GLint stride = -1;
+        gl.GetProgramResourceiv(gpu.program(), GL_BUFFER_VARIABLE, index, 1, &property, 1,
+                                nullptr, &stride);
+        return stride;
+    };
+    if (layout() == GpuLayout::textures) {
+        EXPECT_EQ(gpu.memory().interval_bytes % 4, 0u);
+        EXPECT_LT(gpu.memory().interval_bytes, m.intervals().size() * 4 + 4 * 64);
+        return;
+    }
+    // one word an interval, the counts in words, an offset per 8 cells
+    EXPECT_EQ(stride_of("intervals[0]"), int(sizeof(CompactInterval)));
+    EXPECT_EQ(stride_of("count_words[0]"), 4);
+    EXPECT_EQ(stride_of("group_offsets[0]"), 4);
+    EXPECT_EQ(gpu.memory().interval_bytes, m.intervals().size() * 4);
+    EXPECT_EQ(gpu.memory().index_bytes, 4u + 16u); // 16 cells: one group
+}
+
+TEST_P(Gpu, AgreesWithTheCpuOnStacksLongerThanACountByte)
+{
+    // 7 x 6 cells (not whole groups of 8) of alternating voxels: stacks of
+    // up to 600 intervals, counted in 16 bits; some columns short
+    Voxels v;
+    v.frame.rows = 6;
+    v.frame.cols = 7;
+    v.frame.depths = 600;
+    v.frame.north = 60;
+    v.frame.east = 70;
+    v.frame.top = 60;
+    v.classes.assign(v.frame.voxels(), NULL_CLASS);
+    for (int z = 0; z < v.frame.depths; ++z)
+        for (uint64_t c = 0; c < v.frame.cells(); ++c)
+            if (c % 5 != 3 || z < 40)
+                v.classes[size_t(z) * v.frame.cells() + c] = 1 + (z + int(c)) % 3;
+    const Model m = build_model(v);
+    ASSERT_EQ(m.index().count_bytes(), 2u);
+    ASSERT_GT(m.index().max_size(), 255u);
+    const Tracer tracer(m, 0.2);
+    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    const glm::dvec3 c = tracer.centre();
+    const double size = 2 * tracer.radius();
+    for (const glm::dvec3 &from : {glm::dvec3(-0.6, -0.7, 0.5), glm::dvec3(0.5, 0.4, 0.3)}) {
+        size_t over = 0;
+        const Agreement a =
+            compare(gpu, tracer, Camera::perspective(c + from * size, c, 40, 60, 80), &over);
+        EXPECT_GT(a.hits, a.pixels / 10);
+        expect_agreement(a, "long stacks");
+    }
+}
+
 TEST_P(Gpu, AgreesWithTheCpuTracerFromManyCameras)
 {
-    const Model m = geology(48, 64, 30);
+    // compact (4-byte intervals) at zexag 1, the same model wide at 3
+    const Model compact = geology(48, 64, 30), wide = widened(compact);
     for (double zexag : {1.0, 3.0}) {
+        const Model &m = zexag == 1.0 ? compact : wide;
         const Tracer tracer(m, zexag);
         sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
         const glm::dvec3 c = tracer.centre(), lo = tracer.corner(0),
@@ -397,26 +462,37 @@ TEST(GpuMemoryLayout, TexturesHoldEveryIntervalWithLessThanARowWasted)
     // than 81 x 81 texels, so at a largest side of 82 the texture is 82 x 81
     ASSERT_EQ(runs, 1230u * 5u + 462u);
     ASSERT_EQ(n, runs);
+    ASSERT_TRUE(m.intervals().is_compact());
     const GpuMemory ssbo = gpu_memory(m, GpuLayout::ssbo, 16384);
-    EXPECT_EQ(ssbo.index_bytes, (m.frame().cells() + 1) * 4);
-    EXPECT_EQ(ssbo.interval_bytes, n * 8);
+    // byte counts padded to groups of 16 cells, a 32-bit offset per group;
+    // 4-byte intervals
+    const uint64_t groups = (m.frame().cells() + 15) / 16;
+    EXPECT_EQ(ssbo.index_bytes, groups * 16 + groups * 4);
+    EXPECT_LE(ssbo.index_bytes, 2 * m.frame().cells());
+    EXPECT_EQ(ssbo.interval_bytes, n * 4);
     EXPECT_EQ(ssbo.waste_bytes, 0u);
+    EXPECT_EQ(gpu_memory(widened(m), GpuLayout::ssbo, 16384).interval_bytes, n * 8);
     for (int max_side : {16384, 128, 82}) {
         const GpuMemory tex = gpu_memory(m, GpuLayout::textures, max_side);
         EXPECT_LE(tex.texture_cols, max_side);
         EXPECT_GE(uint64_t(tex.texture_cols) * tex.texture_rows, n);
         EXPECT_LT(uint64_t(tex.texture_cols) * (tex.texture_rows - 1), n);
         EXPECT_EQ(tex.index_bytes, m.frame().cells() * 8);
-        EXPECT_EQ(tex.waste_bytes, tex.interval_bytes - n * 8);
-        // the texels hold each interval where the shader looks for it
+        EXPECT_EQ(tex.waste_bytes, tex.interval_bytes - n * 4);
+        // the texels hold each interval where the shader looks for it: one
+        // word (material | top << 16) compact, material and float bits wide
         const std::vector<uint32_t> texels =
             interval_texels(m, tex.texture_cols, tex.texture_rows);
+        const std::vector<uint32_t> wide_texels =
+            interval_texels(widened(m), tex.texture_cols, tex.texture_rows);
         for (uint64_t j = 0; j < n; j += 7) {
             const size_t x = j % tex.texture_cols, y = j / tex.texture_cols;
-            const size_t at = 2 * (y * tex.texture_cols + x);
-            EXPECT_EQ(texels[at], m.intervals()[j].material);
+            const size_t at = y * tex.texture_cols + x;
+            EXPECT_EQ(texels[at] & 0xffff, m.intervals()[j].material);
+            EXPECT_EQ(float(texels[at] >> 16), m.intervals()[j].top);
+            EXPECT_EQ(wide_texels[2 * at], m.intervals()[j].material);
             float top;
-            std::memcpy(&top, &texels[at + 1], sizeof top);
+            std::memcpy(&top, &wide_texels[2 * at + 1], sizeof top);
             EXPECT_EQ(top, m.intervals()[j].top);
         }
     }

@@ -165,7 +165,7 @@ TEST(ScenePruning, LeavesOutWhatNoRayReachesAndKeepsTheImage)
     EXPECT_GT(p.outside_view.cells, 60u * 90u / 4);
     EXPECT_EQ(p.model.intervals().size() + p.cut_away.intervals + p.outside_view.intervals,
               m.intervals().size());
-    EXPECT_EQ(p.cut_away.bytes, p.cut_away.intervals * sizeof(Interval));
+    EXPECT_EQ(p.cut_away.bytes, p.cut_away.intervals * sizeof(CompactInterval)); // as held
     p.model.validate();
     const Tracer pruned(p.model, 1.0, cut);
     const HitImage want = trace_image(tracer, camera, 2);

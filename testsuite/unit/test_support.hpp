@@ -86,6 +86,19 @@ inline sbrt::Image render_cpu(const sbrt::Model &m, const sbrt::Camera &camera,
                        sbrt::Shading{}, threads);
 }
 
+/// The same model with its intervals held wide (8 bytes, as horizon models
+/// and mapped v1 files hold them): a view keeps them from being packed.
+inline sbrt::Model widened(const sbrt::Model &m)
+{
+    auto wide = std::make_shared<std::vector<sbrt::Interval>>(m.intervals().size());
+    for (size_t i = 0; i < wide->size(); ++i)
+        (*wide)[i] = m.intervals()[i];
+    sbrt::IntervalArray view(wide, wide->data(), wide->size());
+    sbrt::Model out(m.frame(), m.materials(), m.index(), std::move(view));
+    EXPECT_FALSE(out.intervals().is_compact());
+    return out;
+}
+
 /// A borehole at map (x, y) showing the model's own stack there.
 inline sbrt::Borehole borehole_at(const sbrt::Model &m, double x, double y)
 {
@@ -96,8 +109,7 @@ inline sbrt::Borehole borehole_at(const sbrt::Model &m, double x, double y)
     sbrt::Borehole b;
     b.x = x;
     b.y = y;
-    b.stack.assign(m.intervals().begin() + m.stack_begin(cell),
-                   m.intervals().begin() + m.stack_end(cell));
+    b.stack = m.stack_intervals(cell);
     b.model_stack = b.stack;
     return b;
 }

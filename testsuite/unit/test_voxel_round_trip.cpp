@@ -128,17 +128,18 @@ TEST(VoxelRoundTrip, StatsAgreeWithTheVoxelsAndTheModelInMemory)
     EXPECT_EQ(s.max_stack, max_stack);
     EXPECT_DOUBLE_EQ(s.mean_stack, double(intervals) / double(cells));
 
-    // the bytes are those of the model in memory: a v1 stacks file (its
-    // record layout) less its fixed header (136 bytes: magic 8, version 4,
-    // header size 4, 6 f64, 5 u32/i32, material count 4, interval count 8,
-    // 3 u64 offsets, 4 crc32)
-    const uint64_t memory_bytes = encode_stacks_v1(m).size();
-    ASSERT_GT(memory_bytes, 136u);
-    EXPECT_EQ(s.sbrt_bytes, memory_bytes - 136u);
+    // the bytes are those of the model in memory: 4 per interval (voxel
+    // tops, compact), a count byte per cell (padded to groups of 16 cells)
+    // and 8 per group, 8 per material
+    ASSERT_TRUE(m.intervals().is_compact());
+    EXPECT_EQ(s.interval_bytes, intervals * 4);
+    EXPECT_EQ(s.index_bytes, (cells + 15) / 16 * (16 + 8));
+    const uint64_t memory_bytes = s.interval_bytes + s.index_bytes + m.materials().size() * 8;
+    EXPECT_EQ(s.sbrt_bytes, memory_bytes);
     // the materials the file holds: EMPTY and one per class of the voxels
     EXPECT_EQ(m.materials().size(), classes.size() + 1);
     EXPECT_DOUBLE_EQ(s.compression_percent,
-                     100.0 * (1.0 - double(memory_bytes - 136) / (10 * 8 * 30 * 4)));
+                     100.0 * (1.0 - double(memory_bytes) / (10 * 8 * 30 * 4)));
 }
 
 TEST(VoxelRoundTrip, SingleVoxelLayersAndCaves)
