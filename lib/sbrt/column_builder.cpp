@@ -9,11 +9,11 @@
 
 namespace sbrt {
 
-ColumnStackBuilder::ColumnStackBuilder(const Frame &frame) : frame_(frame)
+ColumnStackBuilder::ColumnStackBuilder(const Frame &frame)
+    : frame_(frame), compact_(voxel_tops_fit_compact(frame.depths))
 {
     frame_.validate("ColumnStackBuilder");
-    offsets_.reserve(frame_.cells() + 1);
-    offsets_.push_back(0);
+    sizes_.reserve(frame_.cells());
 }
 
 void ColumnStackBuilder::add_column(const int32_t *classes)
@@ -41,23 +41,29 @@ void ColumnStackBuilder::add_runs(const ClassRun *runs, size_t count)
                  " after ", runs[r - 1].top, ")");
     if (runs[0].top == 0)
         fail("ColumnStackBuilder: a run must hold a voxel (top 0)");
-    const size_t column_start = intervals_.size();
+    sizes_.push_back(compact_ ? append(compact_intervals_, runs, count)
+                              : append(intervals_, runs, count));
+}
+
+template <typename Records>
+uint32_t ColumnStackBuilder::append(Records &intervals, const ClassRun *runs, size_t count)
+{
+    using Record = typename Records::value_type;
+    const size_t column_start = intervals.size();
     size_t solid_end = column_start; // after the last non-EMPTY run
     for (size_t r = 0; r < count; ++r) {
         const uint32_t material = table_.material_of(runs[r].id);
-        if (intervals_.size() > column_start &&
-            intervals_.back().material == material)
-            intervals_.back().top = float(runs[r].top);
+        const Record iv = voxel_interval<Record>(material, runs[r].top);
+        if (intervals.size() > column_start && intervals.back().material == iv.material)
+            intervals.back().top = iv.top;
         else
-            intervals_.push_back({material, float(runs[r].top)});
+            intervals.push_back(iv);
         if (material != EMPTY)
-            solid_end = intervals_.size();
+            solid_end = intervals.size();
     }
     // air above the highest solid run is not stored
-    intervals_.resize(solid_end);
-    if (intervals_.size() > UINT32_MAX)
-        fail("ColumnStackBuilder: more than 2^32-1 intervals");
-    offsets_.push_back(uint32_t(intervals_.size()));
+    intervals.resize(solid_end);
+    return uint32_t(solid_end - column_start);
 }
 
 Model ColumnStackBuilder::finish(const std::vector<Material> &legend)
@@ -65,8 +71,13 @@ Model ColumnStackBuilder::finish(const std::vector<Material> &legend)
     if (cells_done() != frame_.cells())
         fail("ColumnStackBuilder: got ", cells_done(), " columns, the frame has ",
              frame_.cells(), " cells");
-    return Model(frame_, table_.materials(legend), std::move(offsets_),
-                 std::move(intervals_));
+    StackIndex index = StackIndex::from_sizes(sizes_.data(), sizes_.size());
+    sizes_ = {};
+    if (compact_)
+        return Model(frame_, table_.materials(legend), std::move(index),
+                     IntervalArray(std::move(compact_intervals_)));
+    return Model(frame_, table_.materials(legend), std::move(index),
+                 IntervalArray(std::move(intervals_)));
 }
 
 } // namespace sbrt

@@ -30,14 +30,22 @@ public:
     /// rising to frame.depths; neighbours of one class are merged.
     void add_runs(const ClassRun *runs, size_t count);
     /// Cells added so far.
-    uint64_t cells_done() const { return offsets_.size() - 1; }
+    uint64_t cells_done() const { return sizes_.size(); }
     /// The model once every cell has its column; `legend` gives labels and
     /// colours by class id.
     Model finish(const std::vector<Material> &legend = {});
 
 private:
+    /// Appends a column's runs to `intervals`; returns its stack size.
+    template <typename Records>
+    uint32_t append(Records &intervals, const ClassRun *runs, size_t count);
+
     Frame frame_;
-    std::vector<uint32_t> offsets_;
+    std::vector<uint32_t> sizes_; ///< per cell done
+    /// the stacks, 4 bytes an interval where the depths allow (always
+    /// but past 65535 layers), else 8
+    bool compact_;
+    CompactIntervals compact_intervals_;
     Intervals intervals_;
     MaterialTable table_;
     std::vector<ClassRun> runs_; ///< add_column's runs

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "unfilled_allocator.hpp"
@@ -37,6 +38,21 @@ static_assert(sizeof(CompactInterval) == 4, "4 bytes an interval");
 /// makes them, never zero-filled first (a model's largest array).
 using Intervals = std::vector<Interval, UnfilledAllocator<Interval>>;
 using CompactIntervals = std::vector<CompactInterval, UnfilledAllocator<CompactInterval>>;
+
+/// An interval ending at voxel boundary `top`, as a Record (Interval or
+/// CompactInterval; the caller knows the compact one holds it).
+template <typename Record>
+Record voxel_interval(uint32_t material, uint32_t top)
+{
+    if constexpr (std::is_same_v<Record, CompactInterval>)
+        return {uint16_t(material), uint16_t(top)};
+    else
+        return {material, float(top)};
+}
+
+/// Whether voxel models of `depths` layers fit CompactIntervals (every
+/// material index does: at most 65535).
+inline bool voxel_tops_fit_compact(int depths) { return depths <= 0xffff; }
 
 /// Whether `iv` is held exactly by a CompactInterval.
 inline bool fits_compact(const Interval &iv)

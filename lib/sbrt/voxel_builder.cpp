@@ -71,12 +71,18 @@ Model VoxelStackBuilder::finish(const std::vector<Material> &legend)
         ++offsets[r.cell + 1];
     for (uint32_t c = 0; c < cells; ++c)
         offsets[c + 1] += offsets[c];
-    Intervals intervals(runs_.size());
-    {
+    // the stacks in the kind the depths allow (4 bytes an interval but
+    // past 65535 layers)
+    auto sorted = [&](auto records) {
         std::vector<uint32_t> next(offsets.begin(), offsets.end() - 1);
+        using Record = typename decltype(records)::value_type;
         for (const Run &r : runs_)
-            intervals[next[r.cell]++] = {r.material, float(r.top)};
-    }
+            records[next[r.cell]++] = voxel_interval<Record>(r.material, r.top);
+        return IntervalArray(std::move(records));
+    };
+    IntervalArray intervals = voxel_tops_fit_compact(frame_.depths)
+                                  ? sorted(CompactIntervals(runs_.size()))
+                                  : sorted(Intervals(runs_.size()));
     runs_ = {};
 
     return Model(frame_, table_.materials(legend), std::move(offsets),

@@ -52,11 +52,13 @@ echo "describe (-g):     ${g_s} s, peak RSS $((g_kb / 1024)) MiB"
 echo "top view ${cols}x${rows}: ${top_s} s, peak RSS $((top_kb / 1024)) MiB"
 echo "perspective 1056x884: ${per_s} s, peak RSS $((per_kb / 1024)) MiB"
 echo "cross section 1056x884: ${sec_s} s, peak RSS $((sec_kb / 1024)) MiB"
-awk -v st=$stacks -v mem=$sbrt_bytes -v iv=$intervals -v v=$voxels -v fmt=$format 'BEGIN {
+awk -v st=$stacks -v mem=$sbrt_bytes -v iv=$intervals -v v=$voxels -v fmt=$format \
+    -v per_iv=$memory_bytes_per_interval -v per_cell=$memory_index_bytes_per_cell 'BEGIN {
   printf "stacks file (format %s): %.0f bytes = %.2f bytes per interval, index and materials included; 4-byte voxels: %.0f bytes (%.2f %% smaller)\n",
     fmt, st, st / iv, 4 * v, 100 * (1 - st / (4 * v))
   printf "in memory: %.0f bytes = %.2f bytes per interval, index and materials included (%.2f %% smaller than 4-byte voxels)\n",
-    mem, mem / iv, 100 * (1 - mem / (4 * v)) }'
+    mem, mem / iv, 100 * (1 - mem / (4 * v))
+  printf "in memory and on the GPU (5-SSBO): %.2f bytes per interval plus %.2f per cell (index)\n", per_iv, per_cell }'
 if [ "$expand" = 1 ]; then
     read -r back_s back_kb < <(t r3.sbrt.convert --o -r sbrt="$name" output="${name}_voxels")
     grid3=$(du -sb "$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)/$(g.gisenv get=MAPSET)/grid3/${name}_voxels" | cut -f1)
