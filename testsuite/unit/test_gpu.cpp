@@ -197,6 +197,8 @@ TEST_P(Gpu, AgreesWithTheCpuTracerFromManyCameras)
 {
     // compact (4-byte intervals) at zexag 1, the same model wide at 3
     const Model compact = geology(48, 64, 30), wide = widened(compact);
+    ASSERT_TRUE(compact.intervals().is_compact());
+    ASSERT_FALSE(wide.intervals().is_compact());
     for (double zexag : {1.0, 3.0}) {
         const Model &m = zexag == 1.0 ? compact : wide;
         const Tracer tracer(m, zexag);

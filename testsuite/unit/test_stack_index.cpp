@@ -142,6 +142,8 @@ TEST(CompactModel, TracesAsTheWideModelDoes)
 {
     const Model compact = build_model(random_voxels(11, 24, 31, 50));
     const Model wide = widened(compact);
+    ASSERT_TRUE(compact.intervals().is_compact());
+    ASSERT_FALSE(wide.intervals().is_compact());
     const Camera camera = top_camera(compact.frame(), 10);
     const Image a = render_cpu(compact, camera, 1, 2), b = render_cpu(wide, camera, 1, 2);
     ASSERT_EQ(a.material.size(), b.material.size());
