@@ -116,8 +116,10 @@ double FirstHitBounds::tile_bound(const Tracer &tracer, int row0, int col0) cons
     }
     // best first: the frontier's nearest node bounds every cell below it
     const MinMaxPyramid &pyramid = tracer.pyramid();
+    // room for what a small budget opens; a large one grows it (reserving
+    // 4 * budget for every tile cost 9.6 MB a tile at a budget of 100,000)
     std::vector<Node> heap;
-    heap.reserve(size_t(4 * budget_ + 4));
+    heap.reserve(size_t(std::min(4 * budget_ + 4, 1024)));
     std::priority_queue<Node, std::vector<Node>, std::greater<Node>> frontier(
         std::greater<Node>(), std::move(heap));
     auto push = [&](int level, int x, int y) {
