@@ -408,7 +408,8 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     // voxel boundaries within 16 bits are held as 4-byte intervals
     const bool compact = h.widths.tops == TopEncoding::VoxelBoundaries && f.depths <= 0xffff;
     const uint64_t limit = options.memory_limit ? options.memory_limit : physical_memory();
-    const double needed = double(f.cells()) * 2 +
+    // pass 1's sizes (4 bytes a cell) beside the index it builds
+    const double needed = double(f.cells()) * (4 + h.widths.count_bytes + 0.5) +
                           double(wanted_intervals) * (compact ? sizeof(CompactInterval) : sizeof(Interval));
     if (needed > double(limit))
         fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "

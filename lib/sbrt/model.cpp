@@ -41,6 +41,8 @@ Model::Model(Frame frame, std::vector<Material> materials,
     if (offsets.size() != frame_.cells() + 1)
         fail("SBRT model: index has ", offsets.size(), " entries, expected ",
              frame_.cells() + 1);
+    if (offsets.front() != 0)
+        fail("SBRT model: index starts at ", offsets.front(), ", not 0");
     for (uint64_t c = 0; c < frame_.cells(); ++c)
         if (offsets[c + 1] < offsets[c])
             fail("SBRT model: cell ", c, ": negative stack size");

@@ -206,6 +206,13 @@ bool Tracer::cross_overlays(uint64_t cell, double t_in, double t_out,
                    walk, events);
     if (!scene_.draw_model)
         return cross_events(events, t_in, t_out, entry, nullptr, walk);
+    if (events.empty()) { // the overlays of this cell miss the ray
+        const StackRange stack = model_.stack(cell);
+        return t_in < t_out && model_.intervals().visit([&](const auto *records) {
+            return walk_stack(records + stack.begin, records + stack.end, t_in, t_out,
+                              entry, walk);
+        });
+    }
     const std::vector<Interval> stack = model_.stack_intervals(cell);
     return cross_events(events, t_in, t_out, entry, &stack, walk);
 }

@@ -13,7 +13,7 @@ namespace sbrt {
 
 VoxelExpander::VoxelExpander(const Model &model, const Frame &target)
     : model_(model), target_(target), source_cell_(target.cells(), -1),
-      cursor_(target.cells(), 0)
+      cursor_(target.cells(), 0), end_(target.cells(), 0)
 {
     target_.validate("VoxelExpander");
     const Frame &src = model.frame();
@@ -29,7 +29,9 @@ VoxelExpander::VoxelExpander(const Model &model, const Frame &target)
                 src_col >= src.cols)
                 continue;
             source_cell_[t] = int64_t(model.cell_index(int(src_row), int(src_col)));
-            cursor_[t] = model.stack_begin(uint64_t(source_cell_[t]));
+            const StackRange stack = model.stack(uint64_t(source_cell_[t]));
+            cursor_[t] = stack.begin;
+            end_[t] = stack.end;
         }
     }
 }
@@ -48,7 +50,7 @@ void VoxelExpander::next_slice(int32_t *classes)
         classes[t] = NULL_CLASS;
         if (source_cell_[t] < 0 || local < 0)
             continue;
-        const uint64_t end = model_.stack_end(uint64_t(source_cell_[t]));
+        const uint64_t end = end_[t];
         uint64_t &i = cursor_[t];
         while (i < end && !(local < intervals[i].top))
             ++i;

@@ -28,6 +28,7 @@ private:
     int depth_ = 0;
     std::vector<int64_t> source_cell_; ///< per target column, -1 outside
     std::vector<uint64_t> cursor_;     ///< per target column
+    std::vector<uint64_t> end_;        ///< per target column: its stack's end
 };
 
 } // namespace sbrt

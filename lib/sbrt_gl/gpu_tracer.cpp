@@ -90,7 +90,10 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
     const sbrt::Model &model = tracer.model();
     if (layout == sbrt::GpuLayout::ssbo) {
         // the model's own compact arrays go up as they are: counts and
-        // intervals; only the group offsets narrow to 32 bits
+        // intervals; only the group offsets narrow to 32 bits. The shader
+        // reads their bytes as little-endian words.
+        static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+                      "the GL path uploads the model's arrays as they lie in memory");
         const std::vector<uint32_t> groups = sbrt::group_offset_words(model);
         group_offsets_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
                                checked_bytes(groups.size() * sizeof(uint32_t),

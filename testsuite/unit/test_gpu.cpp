@@ -153,7 +153,7 @@ TEST_P(Gpu, CompactIntervalsAndTheStackIndexGoUpAsTheModelHoldsThem)
         EXPECT_LT(gpu.memory().interval_bytes, m.intervals().size() * 4 + 4 * 64);
         return;
     }
-    // one word an interval, the counts in words, an offset per 8 cells
+    // one word an interval, the counts in words, an offset per 16 cells
     EXPECT_EQ(stride_of("intervals[0]"), int(sizeof(CompactInterval)));
     EXPECT_EQ(stride_of("count_words[0]"), 4);
     EXPECT_EQ(stride_of("group_offsets[0]"), 4);
@@ -163,7 +163,7 @@ TEST_P(Gpu, CompactIntervalsAndTheStackIndexGoUpAsTheModelHoldsThem)
 
 TEST_P(Gpu, AgreesWithTheCpuOnStacksLongerThanACountByte)
 {
-    // 7 x 6 cells (not whole groups of 8) of alternating voxels: stacks of
+    // 7 x 6 cells (not whole groups of 16) of alternating voxels: stacks of
     // up to 600 intervals, counted in 16 bits; some columns short
     Voxels v;
     v.frame.rows = 6;

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "error.hpp"
+#include "format_v2.hpp"
 #include "horizon_builder.hpp"
 #include "model.hpp"
 #include "stack_index.hpp"
@@ -74,7 +76,7 @@ TEST(StackIndex, FullCountBytesSumWithoutCarryingIntoTheNextLane)
 
 TEST(StackIndex, OffsetsAreSixtyFourBits)
 {
-    // 40,000 stacks of 60,000 intervals: 2.4 G, past 2^32 - 1 at the end
+    // 80,000 stacks of 60,000 intervals: 4.8 G, past 2^32 - 1 from cell 71,583
     std::vector<uint32_t> sizes(80000, 60000);
     const StackIndex index = StackIndex::from_sizes(sizes.data(), sizes.size());
     EXPECT_EQ(index.total(), 80000ull * 60000ull);
@@ -149,4 +151,45 @@ TEST(CompactModel, TracesAsTheWideModelDoes)
     ASSERT_EQ(a.material.size(), b.material.size());
     EXPECT_EQ(a.material, b.material);
     EXPECT_EQ(a.rgb, b.rgb);
+}
+
+TEST(CompactModel, AnIndexNotStartingAtZeroIsRefused)
+{
+    Frame f;
+    f.cols = 2;
+    Intervals two = {{1, 1}, {1, 1}};
+    EXPECT_THROW(Model(f, {Material(), Material()}, std::vector<uint32_t>{5, 6, 7}, two),
+                 Error);
+    const Model fine(f, {Material(), Material()}, std::vector<uint32_t>{0, 1, 2}, two);
+    fine.validate();
+}
+
+TEST(CompactModel, MoreThan65535DepthsStayWideAndRoundTrip)
+{
+    // one column of 65536 and one of 70001 layers: tops past 16 bits
+    for (int depths : {65535, 65536, 70001}) {
+        Voxels v;
+        v.frame.rows = 1;
+        v.frame.cols = 3;
+        v.frame.depths = depths;
+        v.frame.top = depths;
+        v.classes.assign(v.frame.voxels(), NULL_CLASS);
+        for (int z = 0; z < depths; ++z) {
+            v.classes[size_t(z) * 3] = 1 + (z / 3) % 2;      // runs of 3
+            v.classes[size_t(z) * 3 + 2] = z < depths - 7 ? 4 : 5;
+        }
+        const Model m = build_model(v);
+        EXPECT_EQ(m.intervals().is_compact(), depths <= 65535) << depths;
+        EXPECT_EQ(m.stack_intervals(2).back().top, float(depths));
+        const Model back = decode_stacks_v2(encode_stacks_v2(m).data(),
+                                            encode_stacks_v2(m).size(), "test");
+        EXPECT_EQ(back.intervals().is_compact(), depths <= 65535);
+        ASSERT_EQ(back.intervals().size(), m.intervals().size());
+        for (size_t i = 0; i < m.intervals().size(); ++i) {
+            ASSERT_EQ(back.intervals()[i].material, m.intervals()[i].material) << i;
+            ASSERT_EQ(back.intervals()[i].top, m.intervals()[i].top) << i;
+        }
+        for (uint64_t c = 0; c < 3; ++c)
+            EXPECT_EQ(back.stack_size(c), m.stack_size(c));
+    }
 }
