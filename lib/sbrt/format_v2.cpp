@@ -406,7 +406,8 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     if (options.report)
         *options.report = ReadReport{blocks, wanted_blocks};
     // voxel boundaries within 16 bits are held as 4-byte intervals
-    const bool compact = h.widths.tops == TopEncoding::VoxelBoundaries && f.depths <= 0xffff;
+    const bool compact =
+        h.widths.tops == TopEncoding::VoxelBoundaries && voxel_tops_fit_compact(f.depths);
     const uint64_t limit = options.memory_limit ? options.memory_limit : physical_memory();
     // pass 1's sizes (4 bytes a cell) beside the index it builds
     const double needed = double(f.cells()) * (4 + h.widths.count_bytes + 0.5) +
@@ -474,7 +475,7 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
                     if (below > uint32_t(f.depths))
                         fail(where, ": an interval top lies above the model's ",
                              f.depths, " depths (corrupt file)");
-                    packed[i] = {uint16_t(m), uint16_t(below)};
+                    packed[i] = voxel_interval<CompactInterval>(m, below);
                 }
                 else if (h.widths.tops == TopEncoding::VoxelBoundaries) {
                     below += uint32_t(load_le(top, 2)); // a wrap gives tops validate() rejects

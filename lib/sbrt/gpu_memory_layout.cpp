@@ -42,13 +42,23 @@ void interval_texture_size(uint64_t intervals, int max_side, int &cols, int &row
     rows = int((n + c - 1) / c);
 }
 
+namespace {
+
+/// Throws where the GPU's 32-bit indices cannot address `n` intervals.
+void check_gpu_intervals(uint64_t n)
+{
+    if (n > MAX_GPU_INTERVALS)
+        fail("the model's ", n, " intervals exceed the ", MAX_GPU_INTERVALS,
+             " a GPU layout addresses: use backend=cpu");
+}
+
+} // namespace
+
 GpuMemory gpu_memory(const Model &model, GpuLayout layout, int max_side)
 {
     const Frame &f = model.frame();
     const uint64_t n = model.intervals().size();
-    if (n > MAX_GPU_INTERVALS)
-        fail("the model's ", n, " intervals exceed the ", MAX_GPU_INTERVALS,
-             " a GPU layout addresses: use backend=cpu");
+    check_gpu_intervals(n);
     const unsigned record = model.intervals().record_bytes();
     GpuMemory m;
     if (layout == GpuLayout::ssbo) {
@@ -104,9 +114,7 @@ std::vector<uint32_t> interval_texels(const Model &model, int cols, int rows)
 std::vector<uint32_t> group_offset_words(const Model &model)
 {
     const std::vector<uint64_t> &offsets = model.index().group_offsets();
-    if (model.index().total() > MAX_GPU_INTERVALS)
-        fail("the model's ", model.index().total(), " intervals exceed the ",
-             MAX_GPU_INTERVALS, " a GPU layout addresses: use backend=cpu");
+    check_gpu_intervals(model.index().total());
     return std::vector<uint32_t>(offsets.begin(), offsets.end());
 }
 

@@ -21,7 +21,7 @@ Model hide_materials(const Model &model, const std::vector<uint32_t> &hidden)
     std::vector<uint32_t> sizes(cells, 0);
     // the intervals of the kind the model holds
     IntervalArray kept = model.intervals().visit([&](const auto *records) {
-        using Record = std::remove_const_t<std::remove_pointer_t<decltype(records)>>;
+        using Record = RecordOf<decltype(records)>;
         std::vector<Record, UnfilledAllocator<Record>> intervals;
         intervals.reserve(model.intervals().size());
         for (uint64_t c = 0; c < cells; ++c) {

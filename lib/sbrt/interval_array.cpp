@@ -15,7 +15,7 @@ IntervalArray IntervalArray::packed(Intervals wide)
         return IntervalArray(std::move(wide));
     CompactIntervals compact(wide.size());
     for (size_t i = 0; i < wide.size(); ++i)
-        compact[i] = {uint16_t(wide[i].material), uint16_t(wide[i].top)};
+        compact[i] = voxel_interval<CompactInterval>(wide[i].material, uint32_t(wide[i].top));
     return IntervalArray(std::move(compact));
 }
 

@@ -50,6 +50,10 @@ Record voxel_interval(uint32_t material, uint32_t top)
         return {material, float(top)};
 }
 
+/// The record a visit() pointer points to (CompactInterval or Interval).
+template <typename Pointer>
+using RecordOf = std::remove_const_t<std::remove_pointer_t<Pointer>>;
+
 /// Whether voxel models of `depths` layers fit CompactIntervals (every
 /// material index does: at most 65535).
 inline bool voxel_tops_fit_compact(int depths) { return depths <= 0xffff; }

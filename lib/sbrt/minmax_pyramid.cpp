@@ -14,7 +14,7 @@ std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model)
     const Frame &f = model.frame();
     std::vector<ZRange> cells(f.cells());
     model.intervals().visit([&](const auto *records) {
-        using Record = std::remove_pointer_t<decltype(records)>;
+        using Record = RecordOf<decltype(records)>;
         for (int row = 0; row < f.rows; ++row)
             for (int col = 0; col < f.cols; ++col) {
                 const StackRange stack = model.stack(model.cell_index(row, col));

@@ -32,20 +32,23 @@ void Frame::validate(const char *where) const
              "), at most 2^24 keeps voxel heights exact in float32");
 }
 
+namespace {
+
+/// The stack index of cells + 1 offsets.
+StackIndex index_of(const std::vector<uint32_t> &offsets, const Frame &frame)
+{
+    if (offsets.size() != frame.cells() + 1)
+        fail("SBRT model: index has ", offsets.size(), " entries, expected ",
+             frame.cells() + 1);
+    return StackIndex::from_offsets(offsets.data(), frame.cells());
+}
+
+} // namespace
+
 Model::Model(Frame frame, std::vector<Material> materials,
              const std::vector<uint32_t> &offsets, IntervalArray intervals)
-    : Model(frame, std::move(materials),
-            offsets.empty() ? StackIndex() : StackIndex::from_offsets(offsets.data(), offsets.size() - 1),
-            std::move(intervals))
+    : Model(frame, std::move(materials), index_of(offsets, frame), std::move(intervals))
 {
-    if (offsets.size() != frame_.cells() + 1)
-        fail("SBRT model: index has ", offsets.size(), " entries, expected ",
-             frame_.cells() + 1);
-    if (offsets.front() != 0)
-        fail("SBRT model: index starts at ", offsets.front(), ", not 0");
-    for (uint64_t c = 0; c < frame_.cells(); ++c)
-        if (offsets[c + 1] < offsets[c])
-            fail("SBRT model: cell ", c, ": negative stack size");
 }
 
 Model::Model(Frame frame, std::vector<Material> materials, StackIndex index,
@@ -79,7 +82,7 @@ Stats Model::stats() const
     s.voxel_bytes = s.voxels * 4;
     s.intervals = intervals_.size();
     s.index_bytes = index_.bytes();
-    s.interval_bytes = memory_bytes() - s.index_bytes;
+    s.interval_bytes = s.intervals * intervals_.record_bytes();
     s.sbrt_bytes = s.index_bytes + s.interval_bytes + materials_.size() * 8;
     intervals_.visit([&](const auto *records) {
         for (size_t i = 0; i < s.intervals; ++i)

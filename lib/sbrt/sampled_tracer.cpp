@@ -33,7 +33,7 @@ Sample sample_at(const Model &model, glm::dvec3 p)
     const uint64_t cell = model.cell_index(f.rows - 1 - s.y, s.x);
     const StackRange stack = model.stack(cell);
     model.intervals().visit([&](const auto *records) {
-        using Record = std::remove_pointer_t<decltype(records)>;
+        using Record = RecordOf<decltype(records)>;
         const Record *first = records + stack.begin, *last = records + stack.end;
         const Record *k = std::upper_bound(
             first, last, p.z, [](double z, const Record &iv) { return z < double(iv.top); });

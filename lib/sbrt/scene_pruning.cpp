@@ -38,7 +38,7 @@ Pruning prune_for_view(const Tracer &tracer, const Camera &camera)
     Pruning out;
     std::vector<uint32_t> sizes(f.cells(), 0);
     IntervalArray kept = model.intervals().visit([&](const auto *records) {
-        using Record = std::remove_const_t<std::remove_pointer_t<decltype(records)>>;
+        using Record = RecordOf<decltype(records)>;
         std::vector<Record, UnfilledAllocator<Record>> intervals;
         intervals.reserve(model.intervals().size());
         for (int row = 0; row < f.rows; ++row)

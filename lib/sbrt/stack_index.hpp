@@ -13,6 +13,7 @@
 #include <cstring>
 #include <vector>
 
+#include "error.hpp"
 #include "unfilled_allocator.hpp"
 
 namespace sbrt {
@@ -34,7 +35,8 @@ public:
     /// smallest width that holds the longest.
     template <typename Size>
     static StackIndex from_sizes(const Size *sizes, uint64_t cells);
-    /// From cells + 1 non-decreasing offsets starting at 0.
+    /// From cells + 1 non-decreasing offsets starting at 0; throws
+    /// sbrt::Error where they are not.
     template <typename Offset>
     static StackIndex from_offsets(const Offset *offsets, uint64_t cells);
 
@@ -136,16 +138,15 @@ StackIndex StackIndex::from_sizes(const Size *sizes, uint64_t cells)
 template <typename Offset>
 StackIndex StackIndex::from_offsets(const Offset *offsets, uint64_t cells)
 {
-    uint64_t longest = 0;
-    for (uint64_t c = 0; c < cells; ++c)
-        if (offsets[c + 1] > offsets[c] && offsets[c + 1] - offsets[c] > longest)
-            longest = offsets[c + 1] - offsets[c];
-    StackIndex index;
-    index.allocate(cells, uint32_t(longest));
-    for (uint64_t c = 0; c < cells; ++c)
-        index.set_size(c, offsets[c + 1] > offsets[c] ? uint32_t(offsets[c + 1] - offsets[c]) : 0);
-    index.finish_offsets();
-    return index;
+    if (offsets[0] != 0)
+        fail("stack offsets start at ", offsets[0], ", not 0");
+    std::vector<uint32_t> sizes(cells);
+    for (uint64_t c = 0; c < cells; ++c) {
+        if (offsets[c + 1] < offsets[c])
+            fail("stack offsets: cell ", c, " has a negative stack size");
+        sizes[c] = uint32_t(offsets[c + 1] - offsets[c]);
+    }
+    return from_sizes(sizes.data(), cells);
 }
 
 } // namespace sbrt

@@ -105,9 +105,8 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
                                       "stack counts"),
                         index.count_data());
         const sbrt::IntervalArray &intervals = model.intervals();
-        const void *records = intervals.is_compact()
-                                  ? static_cast<const void *>(intervals.compact_data())
-                                  : static_cast<const void *>(intervals.wide_data());
+        const void *records =
+            intervals.visit([](const auto *first) { return static_cast<const void *>(first); });
         intervals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
                            checked_bytes(memory_.interval_bytes, max_block_bytes_,
                                          "intervals"),

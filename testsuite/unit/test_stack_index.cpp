@@ -160,6 +160,9 @@ TEST(CompactModel, AnIndexNotStartingAtZeroIsRefused)
     Intervals two = {{1, 1}, {1, 1}};
     EXPECT_THROW(Model(f, {Material(), Material()}, std::vector<uint32_t>{5, 6, 7}, two),
                  Error);
+    // nor one that falls (a negative stack size)
+    EXPECT_THROW(Model(f, {Material(), Material()}, std::vector<uint32_t>{0, 2, 1}, two),
+                 Error);
     const Model fine(f, {Material(), Material()}, std::vector<uint32_t>{0, 1, 2}, two);
     fine.validate();
 }
