@@ -77,7 +77,7 @@ vec3 ray_d = vec3(0.0);
 float t_eye = 0.0;
 
 #ifdef SBRT_SHADE
-// The outputs of the pixel, as lib/sbrt/shading.cpp's shade_pixel makes
+// The outputs of the pixel, as lib/sbrt/shading.cpp's PixelShader makes
 // them (in float: a colour level may differ where the double is within
 // rounding of a half)
 void finish(uint index, vec3 point, uint code, float t)

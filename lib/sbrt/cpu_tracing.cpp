@@ -78,6 +78,10 @@ void CpuRowTracer::trace_row(int row, Hit *out) const
     const int cols = camera_.cols();
     if (!overlay_rects_) {
         for (int col = 0; col < cols; ++col) {
+            if (bounds_->meets_nothing(row, col)) {
+                out[col] = Hit(); // what trace() returns for a t_start of inf
+                continue;
+            }
             const Ray ray = camera_.ray(row, col);
             out[col] = tracer_.trace(ray, bounds_->t_start(row, col, ray));
         }

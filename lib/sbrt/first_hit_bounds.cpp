@@ -154,7 +154,7 @@ double FirstHitBounds::t_start(int row, int col, const Ray &ray) const
 {
     if (s_bounds_.empty())
         return 0;
-    const double s = s_bounds_[size_t(row_offset_[size_t(row)]) + col_tile_[size_t(col)]];
+    const double s = s_bound(row, col);
     if (s <= 0 || s == INF || camera_.parallel())
         return s; // a parallel ray's direction is unit: t = s
     // ray.direction = D / |D| with D . forward = 1 (du, dv are orthogonal

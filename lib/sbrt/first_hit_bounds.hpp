@@ -9,6 +9,7 @@
 #ifndef SBRT_FIRST_HIT_BOUNDS_HPP
 #define SBRT_FIRST_HIT_BOUNDS_HPP
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -34,6 +35,13 @@ public:
     /// A t (of the unit ray of pixel (row, col), `ray` = camera.ray(row,
     /// col)) before which the ray meets nothing; inf where it meets nothing.
     double t_start(int row, int col, const Ray &ray) const;
+    /// Whether the ray of pixel (row, col) surely meets nothing (its
+    /// tile's beam misses everything): its hit is Hit(), its ray need not
+    /// even be made.
+    bool meets_nothing(int row, int col) const
+    {
+        return !s_bounds_.empty() && s_bound(row, col) == INFINITY;
+    }
 
     /// Tiles, and those whose rays all meet nothing (reports and tests).
     size_t tiles() const { return s_bounds_.size(); }
@@ -43,6 +51,11 @@ private:
     /// The bound of one tile in the parameter s of the unnormalised ray
     /// direction D (t = s |D|).
     double tile_bound(const Tracer &tracer, int row0, int col0) const;
+    /// The bound of the tile of pixel (row, col), in s.
+    double s_bound(int row, int col) const
+    {
+        return s_bounds_[size_t(row_offset_[size_t(row)]) + col_tile_[size_t(col)]];
+    }
 
     const Camera &camera_;
     int tile_, budget_, tile_cols_ = 0;

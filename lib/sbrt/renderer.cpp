@@ -38,13 +38,13 @@ void prepare_band(Band &band, int first_row, int rows, int cols, const Outputs &
 /// for.
 struct RowShader {
     const Tracer &tracer;
-    const Shading &shading;
+    const PixelShader shader;
     const Camera &camera;
 
     void operator()(const Hit *hits, int row, Band &band) const
     {
         for (int col = 0; col < band.cols; ++col)
-            shade_into_band(tracer, shading, camera, hits[col], row, col, band);
+            shade_into_band(tracer, shader, camera, hits[col], row, col, band);
     }
 };
 
@@ -223,7 +223,7 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
         report.first_pass = cpu->first_pass();
     }
     RowTracer &source = rows ? *rows : *cpu;
-    const RowShader shade{*tracer_, shading_, camera};
+    const RowShader shade{*tracer_, PixelShader(*model_, shading_), camera};
     std::optional<KernelBands> kernel;
     if (shading_.normals == Normals::kernel)
         kernel.emplace(*tracer_, camera, shading_, source, threads);

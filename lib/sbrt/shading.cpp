@@ -39,14 +39,37 @@ std::array<uint8_t, 3> material_color(const Model &model, uint32_t material)
             uint8_t(60 + 180 * c[2])};
 }
 
-std::array<uint8_t, 3> shade_pixel(const Model &model, const Shading &shading,
-                                   const Hit &hit)
+namespace {
+
+/// lround for 0 <= c <= 255 (half away from zero), without a libm call
+/// per channel: c - floor(c) is exact there.
+uint8_t round_channel(double c)
 {
+    const double low = std::floor(c);
+    return uint8_t(c - low >= 0.5 ? low + 1 : low);
+}
+
+} // namespace
+
+PixelShader::PixelShader(const Model &model, const Shading &shading)
+    : model_(model), shading_(shading)
+{
+    base_.reserve(model.materials().size());
+    for (size_t m = 0; m < model.materials().size(); ++m) {
+        const auto rgb = material_color(model, uint32_t(m));
+        base_.emplace_back(rgb[0], rgb[1], rgb[2]);
+    }
+}
+
+std::array<uint8_t, 3> PixelShader::operator()(const Hit &hit) const
+{
+    const Shading &shading = shading_;
+    if (!hit.is_hit() && hit.transmittance == 1 && hit.veil == glm::vec3(0))
+        return shading.background; // nothing met, nothing in front
     glm::dvec3 color(shading.background[0], shading.background[1],
                      shading.background[2]);
     if (hit.is_hit()) {
-        const auto base = material_color(model, hit.material);
-        glm::dvec3 surface(base[0], base[1], base[2]);
+        glm::dvec3 surface = base_[hit.material];
         if (shading.drape)
             surface = shading.drape->color(hit, surface);
         const double lambert =
@@ -56,16 +79,16 @@ std::array<uint8_t, 3> shade_pixel(const Model &model, const Shading &shading,
     color = 255.0 * glm::dvec3(hit.veil) + double(hit.transmittance) * color;
     std::array<uint8_t, 3> rgb;
     for (int k = 0; k < 3; ++k)
-        rgb[k] = uint8_t(std::lround(std::clamp(color[k], 0.0, 255.0)));
+        rgb[k] = round_channel(std::clamp(color[k], 0.0, 255.0));
     return rgb;
 }
 
-void shade_into_band(const Tracer &tracer, const Shading &shading, const Camera &camera,
+void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Camera &camera,
                      const Hit &hit, int row, int col, Band &band)
 {
     const Model &model = tracer.model();
     const size_t i = size_t(row - band.first_row) * size_t(band.cols) + size_t(col);
-    const auto rgb = shade_pixel(model, shading, hit);
+    const auto rgb = shader(hit);
     std::copy(rgb.begin(), rgb.end(), band.rgb.begin() + ptrdiff_t(i) * 3);
     if (!band.material.empty())
         band.material[i] = hit.is_hit() ? model.materials()[hit.material].id : NULL_CLASS;
@@ -96,6 +119,7 @@ Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
     image.material.assign(pixels, NULL_CLASS);
     image.elevation.assign(pixels, NAN);
     image.depth.assign(pixels, NAN);
+    const PixelShader shade_pixel(model, shading);
     for_each_row(image.rows, threads, [&](int row) {
         for (int col = 0; col < image.cols; ++col) {
             const size_t i = size_t(row) * image.cols + col;
@@ -106,7 +130,7 @@ Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
                 image.depth[i] = glm::length(
                     hit.point - tracer.unexaggerate(camera.ray(row, col).origin));
             }
-            const auto rgb = shade_pixel(model, shading, hit);
+            const auto rgb = shade_pixel(hit);
             std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + i * 3);
         }
     });

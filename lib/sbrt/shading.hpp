@@ -45,15 +45,28 @@ struct Image {
 /// Colour of a material: its stored colour, else a fixed palette entry.
 std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 
-/// A pixel's colour: the veil of the translucent strata plus, through
-/// them, the lit colour of the hit (or the background).
-std::array<uint8_t, 3> shade_pixel(const Model &model, const Shading &shading,
-                                   const Hit &hit);
+/// \brief A Shading made ready for one model's pixels: each material's
+/// colour is looked up once, not per pixel. Holds references to both.
+class PixelShader {
+public:
+    PixelShader(const Model &model, const Shading &shading);
+
+    /// A pixel's colour: the veil of the translucent strata plus, through
+    /// them, the lit colour of the hit (or the background).
+    std::array<uint8_t, 3> operator()(const Hit &hit) const;
+
+    const Model &model() const { return model_; }
+
+private:
+    const Model &model_;
+    const Shading &shading_;
+    std::vector<glm::dvec3> base_; ///< per material, 0..255
+};
 
 /// Pixel (row, col) of `band` (a band of camera's image): the colour of
 /// `hit` and the outputs the band holds (class id, elevation, depth from
 /// the ray's origin; NULL_CLASS and NaN where the ray met nothing).
-void shade_into_band(const Tracer &tracer, const Shading &shading, const Camera &camera,
+void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Camera &camera,
                      const Hit &hit, int row, int col, Band &band);
 
 /// The whole-image reference of the pipeline (tests and benchmarks; the

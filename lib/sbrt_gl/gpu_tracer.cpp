@@ -304,6 +304,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     // the words into the band; rays over the budget traced and shaded here
     const auto start = Clock::now();
     std::vector<size_t> over_per_row(size_t(row_count), 0);
+    const sbrt::PixelShader shader(tracer_.model(), shading);
     sbrt::for_each_row(first_row, first_row + row_count, cpu_threads, [&](int row) {
         for (int col = 0; col < cols; ++col) {
             const size_t i = size_t(row - band.first_row) * cols + col;
@@ -311,7 +312,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                                 size_t(col) * words_per_pixel;
             if ((w[0] >> 24) == 0) {
                 const sbrt::Hit hit = tracer_.trace(camera.ray(row, col));
-                sbrt::shade_into_band(tracer_, shading, camera, hit, row, col, band);
+                sbrt::shade_into_band(tracer_, shader, camera, hit, row, col, band);
                 ++over_per_row[size_t(row - first_row)];
                 continue;
             }
