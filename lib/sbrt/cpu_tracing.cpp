@@ -83,7 +83,7 @@ void CpuRowTracer::trace_row(int row, Hit *out) const
                 continue;
             }
             const Ray ray = camera_.ray(row, col);
-            out[col] = tracer_.trace(ray, bounds_->t_start(row, col, ray));
+            tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
         }
         return;
     }
@@ -98,7 +98,7 @@ void CpuRowTracer::trace_row(int row, Hit *out) const
     for (const auto &[c0, c1] : spans)
         for (int col = std::max(c0, next); col <= c1; ++col) {
             const Ray ray = camera_.ray(row, col);
-            out[col] = tracer_.trace(ray, bounds_->t_start(row, col, ray));
+            tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
             next = col + 1;
         }
 }

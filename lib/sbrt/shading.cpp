@@ -59,13 +59,36 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
         const auto rgb = material_color(model, uint32_t(m));
         base_.emplace_back(rgb[0], rgb[1], rgb[2]);
     }
+    if (shading.drape)
+        return;
+    for (uint32_t m = 0; m < base_.size(); ++m)
+        for (int face = int(Face::west); face <= int(Face::top); ++face) {
+            Hit hit;
+            hit.material = m;
+            hit.face = Face(face);
+            hit.normal = glm::vec3(face_normal(hit.face));
+            cell_face_rgb_.push_back(lit(hit));
+        }
 }
 
 std::array<uint8_t, 3> PixelShader::operator()(const Hit &hit) const
 {
+    if (hit.transmittance == 1 && hit.veil == glm::vec3(0)) {
+        // nothing in front: the background, or a cell's face lit as the
+        // table has it (with the face's own normal: not a kernel normal)
+        if (!hit.is_hit())
+            return shading_.background;
+        const int face = int(hit.face);
+        if (!cell_face_rgb_.empty() && face >= int(Face::west) && face <= int(Face::top) &&
+            hit.normal == glm::vec3(face_normal(hit.face)))
+            return cell_face_rgb_[size_t(hit.material) * 6 + size_t(face - 1)];
+    }
+    return lit(hit);
+}
+
+std::array<uint8_t, 3> PixelShader::lit(const Hit &hit) const
+{
     const Shading &shading = shading_;
-    if (!hit.is_hit() && hit.transmittance == 1 && hit.veil == glm::vec3(0))
-        return shading.background; // nothing met, nothing in front
     glm::dvec3 color(shading.background[0], shading.background[1],
                      shading.background[2]);
     if (hit.is_hit()) {

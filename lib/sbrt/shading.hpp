@@ -58,9 +58,15 @@ public:
     const Model &model() const { return model_; }
 
 private:
+    std::array<uint8_t, 3> lit(const Hit &hit) const;
+
     const Model &model_;
     const Shading &shading_;
     std::vector<glm::dvec3> base_; ///< per material, 0..255
+    /// Without a drape, the colours lit() gives a hit on each of a cell's
+    /// six faces with its face normal, nothing in front: per material,
+    /// faces west..top (Face values 1..6).
+    std::vector<std::array<uint8_t, 3>> cell_face_rgb_;
 };
 
 /// Pixel (row, col) of `band` (a band of camera's image): the colour of

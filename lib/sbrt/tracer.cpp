@@ -11,6 +11,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "cell_stepper.hpp"
 #include "error.hpp"
 #include "tracer_walk.hpp"
 
@@ -18,25 +19,34 @@ namespace sbrt {
 
 using namespace tracer_detail;
 
+namespace {
+
+/// clip_to_box along one axis (glm's operator[] switches on its index:
+/// the axes are passed as scalars).
+inline bool clip_axis(double o, double d, double inv_d, double low, double high, int axis,
+                      double &t_near, double &t_far, int &near_axis)
+{
+    if (d == 0)
+        return !(o < low || o > high);
+    double t0 = (low - o) * inv_d, t1 = (high - o) * inv_d;
+    if (t0 > t1)
+        std::swap(t0, t1);
+    if (t0 > t_near) {
+        t_near = t0;
+        near_axis = axis;
+    }
+    t_far = std::min(t_far, t1);
+    return true;
+}
+
+} // namespace
+
 bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 inv_d, glm::dvec3 low,
                  glm::dvec3 high, double &t_near, double &t_far, int &near_axis)
 {
-    for (int a = 0; a < 3; ++a) {
-        if (d[a] == 0) {
-            if (o[a] < low[a] || o[a] > high[a])
-                return false;
-            continue;
-        }
-        double t0 = (low[a] - o[a]) * inv_d[a], t1 = (high[a] - o[a]) * inv_d[a];
-        if (t0 > t1)
-            std::swap(t0, t1);
-        if (t0 > t_near) {
-            t_near = t0;
-            near_axis = a;
-        }
-        t_far = std::min(t_far, t1);
-    }
-    return true;
+    return clip_axis(o.x, d.x, inv_d.x, low.x, high.x, 0, t_near, t_far, near_axis) &&
+           clip_axis(o.y, d.y, inv_d.y, low.y, high.y, 1, t_near, t_far, near_axis) &&
+           clip_axis(o.z, d.z, inv_d.z, low.z, high.z, 2, t_near, t_far, near_axis);
 }
 
 glm::dvec3 face_normal(Face face)
@@ -269,13 +279,13 @@ bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &e
     });
 }
 
-std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
-                                                double t_far, int ix, int iy) const
+bool Tracer::leave_block(const Walk &walk, double z_in, double t_far, int ix, int iy,
+                         Jump &jump) const
 {
     const Frame &f = model_.frame();
     const glm::dvec3 &o = walk.o, &d = walk.d;
     // the largest block so far: its exit and the axis the ray leaves along
-    // (-1: none); kept in plain locals, a Jump is made once at the end
+    // (-1: none); kept in plain locals, the Jump is made once at the end
     double t_exit = 0;
     int exit_axis = -1, x0 = 0, x1 = 0, y0 = 0, y1 = 0;
     for (int level = 1; level < pyramid_.levels(); ++level) {
@@ -292,7 +302,7 @@ std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
         const double ty = d.y > 0   ? (ny1 - o.y) * walk.inv_d.y
                           : d.y < 0 ? (ny0 - o.y) * walk.inv_d.y
                                     : INF;
-        const double t = std::min({tx, ty, t_far});
+        const double t = std::min(std::min(tx, ty), t_far);
         if (!passes(node, z_in, o.z + t * d.z))
             break;
         t_exit = t;
@@ -300,20 +310,30 @@ std::optional<Tracer::Jump> Tracer::leave_block(const Walk &walk, double z_in,
         x0 = nx0, x1 = nx1, y0 = ny0, y1 = ny1;
     }
     if (exit_axis < 0)
-        return std::nullopt;
+        return false;
     // the cell beyond
     if (exit_axis == 0)
-        return Jump{t_exit, d.x > 0 ? x1 : x0 - 1,
-                    std::clamp(int(std::floor(o.y + t_exit * d.y)), y0, y1 - 1),
-                    entry_face(0, d.x)};
-    return Jump{t_exit, std::clamp(int(std::floor(o.x + t_exit * d.x)), x0, x1 - 1),
-                d.y > 0 ? y1 : y0 - 1, entry_face(1, d.y)};
+        jump = {t_exit, d.x > 0 ? x1 : x0 - 1,
+                std::clamp(int(std::floor(o.y + t_exit * d.y)), y0, y1 - 1),
+                d.x > 0 ? Face::west : Face::east};
+    else
+        jump = {t_exit, std::clamp(int(std::floor(o.x + t_exit * d.x)), x0, x1 - 1),
+                d.y > 0 ? y1 : y0 - 1, d.y > 0 ? Face::south : Face::north};
+    return true;
 }
 
 Hit Tracer::trace(const Ray &ray, double t_start) const
 {
+    Hit hit;
+    trace_into(ray, t_start, hit);
+    return hit;
+}
+
+void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
+{
     const Frame &f = model_.frame();
-    Walk walk{ray, to_local(ray.origin), local_direction(ray.direction), Hit()};
+    hit = Hit();
+    Walk walk{ray, to_local(ray.origin), local_direction(ray.direction), hit};
     const glm::dvec3 o = walk.o;
     glm::dvec3 &d = walk.d;
     for (int a = 0; a < 3; ++a)
@@ -327,7 +347,7 @@ Hit Tracer::trace(const Ray &ray, double t_start) const
     int near_axis = -1;
     if (!clip_to_box(o, d, walk.inv_d, glm::dvec3(box_low_, 0),
                      glm::dvec3(box_high_, z_max_local_), t_near, t_far, near_axis))
-        return {};
+        return;
     Entry wall;
     if (near_axis >= 0)
         wall.face = entry_face(near_axis, d[near_axis]);
@@ -337,7 +357,7 @@ Hit Tracer::trace(const Ray &ray, double t_start) const
         const double b = glm::dot(planes_[k].n, d);
         if (b == 0) {
             if (a > 0)
-                return {}; // the ray runs in the removed half-space
+                return; // the ray runs in the removed half-space
             continue;
         }
         const double t = -a / b;
@@ -356,7 +376,7 @@ Hit Tracer::trace(const Ray &ray, double t_start) const
         wall = {Face::none, -ray.direction};
     }
     if (!(t_near <= t_far) || z_max_local_ <= 0)
-        return {};
+        return;
 
     // only a few overlays and no model: meet each overlay directly, no
     // walk over the cells between them
@@ -367,82 +387,48 @@ Hit Tracer::trace(const Ray &ray, double t_start) const
         if (cross_events(events, t_near, t_far, wall, nullptr, walk) &&
             walk.hit.is_hit())
             walk.hit.point = from_local(o + walk.hit.t * d);
-        return walk.hit;
+        return;
     }
 
-    // 2. 2D DDA (Amanatides-Woo) over the cells from the entry point
-    const glm::dvec3 p = o + t_near * d;
-    int ix = std::clamp(int(std::floor(p.x)), 0, f.cols - 1);
-    int iy = std::clamp(int(std::floor(p.y)), 0, f.rows - 1);
-    const int step_x = d.x > 0 ? 1 : -1, step_y = d.y > 0 ? 1 : -1;
-    // t where the ray reaches the far wall of cell index i along axis a
-    auto far_wall = [&](int i, int a) {
-        return d[a] != 0 ? ((i + (d[a] > 0)) - o[a]) * walk.inv_d[a] : INF;
-    };
-    double t_max_x = far_wall(ix, 0);
-    double t_max_y = far_wall(iy, 1);
-    const double t_delta_x = std::fabs(walk.inv_d.x); // inf along a wall
-    const double t_delta_y = std::fabs(walk.inv_d.y);
-    double t_in = t_near;
+    // 2. the cells from the entry point (a 2D DDA), skipping the blocks
+    // of cells the pyramid says hold nothing at the ray's height
+    CellStepper cells(o.x, o.y, d.x, d.y, walk.inv_d.x, walk.inv_d.y, t_near, t_far,
+                      wall.face, f.cols, f.rows);
     // the block of 2 x 2 cells the ray last failed to skip: while it is in
     // there, the cell walk goes on without trying (close above material, a
     // try costs more than it saves)
     int stuck_x = -1, stuck_y = -1;
-    // bounded: a ray crosses at most cols + rows cells
-    for (int steps = 0; steps <= f.cols + f.rows + 1; ++steps) {
-        const double t_out = std::max(t_in, std::min({t_max_x, t_max_y, t_far}));
+    const bool skipping = pyramid_.levels() > 0;
+    // bounded: a ray crosses at most cols + rows cells (a jump counts as one)
+    for (int steps = 0; !cells.done() && steps <= f.cols + f.rows + 1;
+         ++steps, wall.face = cells.face(), wall.plane = -1) {
+        // (past the first cell, the entry is a cell's face: its normal is
+        // face_normal's, the Entry's is not read)
+        const int ix = cells.x(), iy = cells.y();
+        const double t_in = cells.t_in(), t_out = cells.t_out();
         const double z_in = o.z + t_in * d.z;
-        if (pyramid_.levels() > 0 &&
-            passes(pyramid_.node(0, ix, iy), z_in, o.z + t_out * d.z)) {
+        if (skipping && passes(pyramid_.node(0, ix, iy), z_in, o.z + t_out * d.z)) {
             // nothing here at the ray's height: leave the largest block of
             // cells around that holds nothing at its height either
-            std::optional<Jump> jump;
+            Jump jump;
             if ((ix >> 1) != stuck_x || (iy >> 1) != stuck_y) {
-                jump = leave_block(walk, z_in, t_far, ix, iy);
-                if (!jump) {
-                    stuck_x = ix >> 1;
-                    stuck_y = iy >> 1;
+                if (leave_block(walk, z_in, t_far, ix, iy, jump)) {
+                    cells.jump_to(jump.ix, jump.iy, jump.t, jump.face);
+                    continue;
                 }
-            }
-            if (jump) {
-                if (jump->t >= t_far)
-                    break;
-                ix = jump->ix;
-                iy = jump->iy;
-                t_in = jump->t;
-                wall = {jump->face, {}, -1};
-                if (ix < 0 || ix >= f.cols || iy < 0 || iy >= f.rows)
-                    break;
-                t_max_x = far_wall(ix, 0);
-                t_max_y = far_wall(iy, 1);
-                continue;
+                stuck_x = ix >> 1;
+                stuck_y = iy >> 1;
             }
         }
         else if (cross_cell(model_.cell_index(f.rows - 1 - iy, ix), t_in, t_out, wall,
                             walk)) {
             if (walk.hit.is_hit())
                 walk.hit.point = from_local(o + walk.hit.t * d);
-            return walk.hit;
+            return;
         }
-        if (t_out >= t_far)
-            break;
-        if (t_max_x < t_max_y) {
-            ix += step_x;
-            t_in = t_max_x;
-            t_max_x += t_delta_x;
-            wall.face = entry_face(0, d.x);
-        }
-        else {
-            iy += step_y;
-            t_in = t_max_y;
-            t_max_y += t_delta_y;
-            wall.face = entry_face(1, d.y);
-        }
-        wall.plane = -1;
-        if (ix < 0 || ix >= f.cols || iy < 0 || iy >= f.rows)
-            break;
+        cells.next();
     }
-    return walk.hit;
+    return;
 }
 
 } // namespace sbrt

@@ -70,6 +70,9 @@ public:
     /// The first hit of `ray`; `t_start` (a lower bound of the hit's t, as a
     /// coarse first pass gives) lets the walk begin further along.
     Hit trace(const Ray &ray, double t_start = 0) const;
+    /// The same into `hit` (whatever it held): the hit is written in
+    /// place, field by field, never copied whole from a temporary.
+    void trace_into(const Ray &ray, double t_start, Hit &hit) const;
 
     /// Exaggerated map coordinates of a real map point, and back.
     glm::dvec3 exaggerate(glm::dvec3 p) const;
@@ -122,12 +125,14 @@ private:
     /// Where a ray leaves a block of cells it may skip: the parameter and
     /// the cell beyond, entered through `face`.
     struct Jump {
-        double t;
-        int ix, iy;
-        Face face;
+        double t = 0;
+        int ix = 0, iy = 0;
+        Face face = Face::none;
     };
-    std::optional<Jump> leave_block(const Walk &walk, double z_in, double t_far,
-                                    int ix, int iy) const;
+    /// The block to leave from cell (ix, iy) at height z_in, into `jump`;
+    /// false where even the 2 x 2 block holds material at the ray's height.
+    bool leave_block(const Walk &walk, double z_in, double t_far, int ix, int iy,
+                     Jump &jump) const;
     void overlay_events(const uint32_t *first, const uint32_t *last, double t_lo,
                         double t_hi, const Walk &walk, std::vector<Event> &events) const;
     bool cross_events(const std::vector<Event> &events, double t_in, double t_out,

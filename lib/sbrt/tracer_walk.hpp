@@ -57,7 +57,7 @@ struct Tracer::Entry {
 struct Tracer::Walk {
     const Ray &ray;
     glm::dvec3 o, d;      ///< local frame
-    Hit hit;
+    Hit &hit;             ///< written in place: the caller's hit
     glm::dvec3 inv_d{0};  ///< 1 / d per axis (inf along a wall)
 };
 
