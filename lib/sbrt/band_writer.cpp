@@ -5,7 +5,10 @@
  ****************************************************************************/
 #include "band_writer.hpp"
 
+#include <algorithm>
 #include <chrono>
+
+#include "error.hpp"
 
 namespace sbrt {
 
@@ -24,15 +27,23 @@ BandWriter::~BandWriter()
     thread_.join();
 }
 
+std::deque<Band>::iterator BandWriter::next_band()
+{
+    return std::find_if(queued_.begin(), queued_.end(),
+                        [&](const Band &band) { return band.first_row == next_row_; });
+}
+
 void BandWriter::run()
 {
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
-        changed_.wait(lock, [&] { return closing_ || !queued_.empty(); });
-        if (queued_.empty())
-            return; // closing, nothing left
-        Band band = std::move(queued_.front());
-        queued_.pop_front();
+        changed_.wait(lock, [&] { return closing_ || next_band() != queued_.end(); });
+        const auto next = next_band();
+        if (next == queued_.end())
+            return; // closing, nothing left to take in order
+        Band band = std::move(*next);
+        queued_.erase(next);
+        next_row_ += band.rows;
         busy_ = true;
         if (!error_) {
             lock.unlock();
@@ -59,20 +70,23 @@ void BandWriter::run()
 void BandWriter::rethrow_locked()
 {
     if (error_) {
-        std::exception_ptr error = error_;
-        error_ = nullptr; // rethrown once; the sink takes no more bands
+        // the sink takes no more bands; every later call rethrows
         queued_.clear();
         closing_ = true;
         changed_.notify_all();
-        std::rethrow_exception(error);
+        std::rethrow_exception(error_);
     }
 }
 
 Band BandWriter::take()
 {
     std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [&] { return error_ || !free_.empty() || unallocated_ > 0; });
+    changed_.wait(lock, [&] {
+        return error_ || cancelled_ || !free_.empty() || unallocated_ > 0;
+    });
     rethrow_locked();
+    if (cancelled_)
+        throw Error("band writer: cancelled (a renderer thread failed)");
     if (!free_.empty()) {
         Band band = std::move(free_.front());
         free_.pop_front();
@@ -97,6 +111,15 @@ void BandWriter::finish()
     std::unique_lock<std::mutex> lock(mutex_);
     changed_.wait(lock, [&] { return error_ || (queued_.empty() && !busy_); });
     rethrow_locked();
+}
+
+void BandWriter::cancel()
+{
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        cancelled_ = true;
+    }
+    changed_.notify_all();
 }
 
 } // namespace sbrt

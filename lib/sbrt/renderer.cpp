@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "band_flow.hpp"
 #include "band_writer.hpp"
 #include "error.hpp"
 #include "hit_window.hpp"
@@ -20,19 +21,6 @@
 namespace sbrt {
 
 namespace {
-
-/// Sizes the band's vectors for `rows` rows of the outputs asked for.
-void prepare_band(Band &band, int first_row, int rows, int cols, const Outputs &outputs)
-{
-    band.first_row = first_row;
-    band.rows = rows;
-    band.cols = cols;
-    const size_t n = band.pixels();
-    band.rgb.resize(n * 3);
-    band.material.resize(outputs.material ? n : 0);
-    band.elevation.resize(outputs.elevation ? n : 0);
-    band.depth.resize(outputs.depth ? n : 0);
-}
 
 /// \brief Shades rows of hits into a band: the colour and the outputs asked
 /// for.
@@ -192,6 +180,87 @@ private:
     int reach_above_ = 0;
 };
 
+/// Milliseconds since `start`.
+double ms_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                     start)
+        .count();
+}
+
+/// The CPU tracer with face normals, in one pass over the image's rows: a
+/// row is traced and shaded at once (its hits stay in cache), rows are
+/// taken in order by any thread, and a band goes to the sink when its last
+/// row is done (no thread waits for the others at a band's end).
+void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs &outputs,
+                 const BandSink &sink, unsigned threads, int rows, int cols,
+                 RenderReport &report)
+{
+    BandWriter writer(sink, std::max<size_t>(3, 2 * threads / size_t(report.band_rows) + 2));
+    BandFlow flow(writer, rows, cols, report.band_rows, outputs);
+    const auto start = std::chrono::steady_clock::now();
+    for_each_row(0, rows, threads, [&](int row) {
+        try {
+            thread_local HitImage hits;
+            hits.resize(size_t(cols));
+            Band &band = flow.band_of(row);
+            cpu.trace_row(row, hits.data());
+            shade(hits.data(), row, band);
+            flow.row_done(row);
+        }
+        catch (...) {
+            flow.abort(); // no thread waits for a band that cannot come
+            throw;
+        }
+    });
+    report.trace_ms = ms_since(start);
+    writer.finish();
+    report.bands = flow.bands();
+    report.sink_ms = writer.sink_ms();
+    report.most_rows_held = int(threads); // a row of hits per thread
+}
+
+/// Band by band: kernel normals (over their window of rows, when given),
+/// or another RowTracer (a GPU), which may shade its bands itself.
+void render_bands(RowTracer &source, KernelBands *kernel, const RowShader &shade,
+                  const Outputs &outputs, const BandSink &sink, unsigned threads, int rows,
+                  int cols, RenderReport &report)
+{
+    HitImage band_hits; // made when a band is first traced on this side
+    bool shaded_by_tracer = false;
+    BandWriter writer(sink);
+    for (int first = 0; first < rows; first += report.band_rows) {
+        const int count = std::min(report.band_rows, rows - first);
+        Band band = writer.take();
+        const auto start = std::chrono::steady_clock::now();
+        prepare_band(band, first, count, cols, outputs);
+        if (kernel) {
+            kernel->prepare(first, first + count);
+            for_each_row(first, first + count, threads,
+                         [&](int row) { shade(kernel->hits(row), row, band); });
+        }
+        else if (source.shade_rows(first, count, outputs, band)) {
+            shaded_by_tracer = true; // no hits on this side
+        }
+        else {
+            if (band_hits.empty())
+                band_hits = HitImage(size_t(report.band_rows) * cols);
+            source.trace_rows(first, count, band_hits.data());
+            for_each_row(first, first + count, threads, [&](int row) {
+                shade(band_hits.data() + size_t(row - first) * cols, row, band);
+            });
+        }
+        report.trace_ms += ms_since(start);
+        writer.submit(std::move(band));
+        ++report.bands;
+    }
+    writer.finish();
+    report.sink_ms = writer.sink_ms();
+    report.most_rows_held = kernel             ? kernel->most_rows()
+                            : shaded_by_tracer ? 0
+                                               : report.band_rows;
+}
+
 } // namespace
 
 Renderer::Renderer(Model model, double zexag, Scene scene, Shading shading,
@@ -227,59 +296,12 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     std::optional<KernelBands> kernel;
     if (shading_.normals == Normals::kernel)
         kernel.emplace(*tracer_, camera, shading_, source, threads);
-    // hits of a band, made when a band is first traced on this side
-    HitImage band_hits;
-    const auto hits_of_band = [&] {
-        if (band_hits.empty())
-            band_hits = HitImage(size_t(report.band_rows) * cols);
-        return band_hits.data();
-    };
-
-    bool shaded_by_tracer = false;
-    BandWriter writer(sink);
-    for (int first = 0; first < image_rows; first += report.band_rows) {
-        const int count = std::min(report.band_rows, image_rows - first);
-        Band band = writer.take();
-        const auto band_clock = std::chrono::steady_clock::now();
-        prepare_band(band, first, count, cols, outputs);
-        if (kernel) {
-            kernel->prepare(first, first + count);
-            for_each_row(first, first + count, threads,
-                         [&](int row) { shade(kernel->hits(row), row, band); });
-        }
-        else if (cpu) {
-            // trace and shade a row at once, while its hits are in cache
-            Hit *const band_hits_at = hits_of_band();
-            for_each_row(first, first + count, threads, [&](int row) {
-                Hit *hits = band_hits_at + size_t(row - first) * cols;
-                cpu->trace_row(row, hits);
-                shade(hits, row, band);
-            });
-        }
-        else if (source.shade_rows(first, count, outputs, band)) {
-            shaded_by_tracer = true; // no hits on this side
-        }
-        else {
-            Hit *const band_hits_at = hits_of_band();
-            source.trace_rows(first, count, band_hits_at);
-            for_each_row(first, first + count, threads, [&](int row) {
-                shade(band_hits_at + size_t(row - first) * cols, row, band);
-            });
-        }
-        report.trace_ms += std::chrono::duration<double, std::milli>(
-                               std::chrono::steady_clock::now() - band_clock)
-                               .count();
-        writer.submit(std::move(band));
-        ++report.bands;
-    }
-    writer.finish();
-    report.sink_ms = writer.sink_ms();
-    report.most_rows_held = kernel             ? kernel->most_rows()
-                            : shaded_by_tracer ? 0
-                                               : report.band_rows;
-    report.ms = std::chrono::duration<double, std::milli>(
-                    std::chrono::steady_clock::now() - start)
-                    .count();
+    if (cpu && !kernel)
+        render_rows(*cpu, shade, outputs, sink, threads, camera.rows(), cols, report);
+    else
+        render_bands(source, kernel ? &*kernel : nullptr, shade, outputs, sink, threads,
+                     camera.rows(), cols, report);
+    report.ms = ms_since(start);
     return report;
 }
 
