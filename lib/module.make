@@ -18,7 +18,7 @@ DEPENDENCIES += $(VECTORDEP) $(DBMIDEP)
 EXTRA_INC += $(VECT_INC)
 EXTRA_CFLAGS += $(VECT_CFLAGS)
 endif
-EXTRA_HEADERS = $(wildcard $(SBRT_DIR)/*.hpp $(GRASS_SBRT_DIR)/*.hpp *.hpp)
+EXTRA_HEADERS = $(wildcard $(SBRT_DIR)/*.hpp $(SBRT_DIR)/*/*.hpp $(GRASS_SBRT_DIR)/*.hpp *.hpp)
 # the static libraries (recursive: OBJDIR comes from Grass.make); the GL
 # library (lib/sbrt_gl) comes before the core library it uses
 SBRT_STLIBS = $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/$(OBJDIR)/libsbrt.a

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "classifier.hpp"
-#include "format.hpp"
-#include "model.hpp"
+#include "builders/classifier.hpp"
+#include "format/format.hpp"
+#include "model/model.hpp"
 
 /// Frame of the current 3D region.
 sbrt::Frame current_frame();

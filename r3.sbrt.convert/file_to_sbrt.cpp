@@ -10,12 +10,12 @@
 #include <future>
 #include <type_traits>
 
-#include "column_builder.hpp"
-#include "error.hpp"
+#include "builders/column_builder.hpp"
+#include "util/error.hpp"
 #include "file_crs.hpp"
 #include "file_variable.hpp"
 #include "grass.hpp"
-#include "unfilled_allocator.hpp"
+#include "util/unfilled_allocator.hpp"
 
 namespace {
 

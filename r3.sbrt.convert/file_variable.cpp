@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 void GdalDatasetCloser::operator()(GDALDataset *dataset) const
 {

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "grid_axes.hpp"
-#include "missing_values.hpp"
-#include "model.hpp"
+#include "builders/grid_axes.hpp"
+#include "builders/missing_values.hpp"
+#include "model/model.hpp"
 
 class GDALDataset;
 class GDALMDArray;

@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <memory>
 
-#include "horizon_builder.hpp"
+#include "builders/horizon_builder.hpp"
 #include "legend.hpp"
 
 namespace {

@@ -11,7 +11,7 @@
 #include <iostream>
 
 #include "convert.hpp"
-#include "error.hpp"
+#include "util/error.hpp"
 #include "grass.hpp"
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"

@@ -9,7 +9,7 @@
 
 #include "legend.hpp"
 #include "sbrt_store.hpp"
-#include "voxel_expander.hpp"
+#include "builders/voxel_expander.hpp"
 
 void sbrt_to_voxels(const char *input, const char *output)
 {

@@ -5,10 +5,10 @@
  ****************************************************************************/
 #include "convert.hpp"
 
-#include "error.hpp"
+#include "util/error.hpp"
 #include "legend.hpp"
 #include "raster3d_slices.hpp"
-#include "voxel_builder.hpp"
+#include "builders/voxel_builder.hpp"
 
 sbrt::Frame current_frame()
 {

@@ -6,7 +6,7 @@
  *            copied or a copy failed
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
-#include "error.hpp"
+#include "util/error.hpp"
 #include "manage.hpp"
 #include "sbrt_manage.hpp"
 

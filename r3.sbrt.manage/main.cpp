@@ -9,7 +9,7 @@
  ****************************************************************************/
 #include <cstdlib>
 
-#include "error.hpp"
+#include "util/error.hpp"
 #include "manage.hpp"
 #include "sbrt_choices.hpp"
 

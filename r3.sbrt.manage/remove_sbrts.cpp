@@ -9,7 +9,7 @@
 #include <cstring>
 #include <set>
 
-#include "error.hpp"
+#include "util/error.hpp"
 #include "manage.hpp"
 #include "sbrt_manage.hpp"
 #include "sbrt_store.hpp"

@@ -9,7 +9,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "shading.hpp"
+#include "shading/shading.hpp"
 
 namespace {
 

@@ -6,11 +6,11 @@
 #ifndef R3_SBRT_ANNOTATION_SETUP_HPP
 #define R3_SBRT_ANNOTATION_SETUP_HPP
 
-#include "camera.hpp"
+#include "scene/camera.hpp"
 #include "grass.hpp"
 #include "png_annotations.hpp"
 #include "render_options.hpp"
-#include "tracer.hpp"
+#include "tracing/tracer.hpp"
 
 /// The legend (every class of the prepared model; the PNG keeps those the
 /// image shows), the north arrow where north points on the image, the

@@ -7,9 +7,9 @@
 
 #include <optional>
 
-#include "error.hpp"
+#include "util/error.hpp"
 #include "gpu_tracer.hpp"
-#include "parallel.hpp"
+#include "util/parallel.hpp"
 
 namespace {
 

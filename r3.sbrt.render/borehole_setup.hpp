@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "render_options.hpp"
-#include "scene_parts.hpp"
-#include "scene.hpp"
+#include "scene/scene_parts.hpp"
+#include "scene/scene.hpp"
 
 /// The boreholes of the request. `shown` is the model drawn (strata of
 /// `hidden` already removed): a log's classes missing from it are added

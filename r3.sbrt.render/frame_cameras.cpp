@@ -12,7 +12,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "camera_path.hpp"
+#include "scene/camera_path.hpp"
 #include "scene_camera.hpp"
 #include "vector_input.hpp"
 

@@ -9,9 +9,9 @@
 
 #include <vector>
 
-#include "camera.hpp"
+#include "scene/camera.hpp"
 #include "render_options.hpp"
-#include "tracer.hpp"
+#include "tracing/tracer.hpp"
 
 /// The cameras of frames 1..frames= of the request; `framing` holds the
 /// model as read (the view does not move when strata are hidden).

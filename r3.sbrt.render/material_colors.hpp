@@ -7,7 +7,7 @@
 #ifndef R3_SBRT_MATERIAL_COLORS_HPP
 #define R3_SBRT_MATERIAL_COLORS_HPP
 
-#include "model.hpp"
+#include "model/model.hpp"
 #include "render_options.hpp"
 
 /// Recolours every material of `model` when the request has color= or

@@ -12,7 +12,7 @@ extern "C" {
 #include <grass/gis.h>
 }
 
-#include "model.hpp"
+#include "model/model.hpp"
 #include "render_options.hpp"
 
 /// Whether the render sees only the stacks under `region`: a single top

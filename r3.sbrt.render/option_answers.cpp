@@ -9,7 +9,7 @@
 #include <cstring>
 #include <sstream>
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 std::vector<std::string> split_words(const std::string &line)
 {

@@ -12,8 +12,8 @@
 
 #include <cairo.h>
 
-#include "error.hpp"
-#include "model.hpp"
+#include "util/error.hpp"
+#include "model/model.hpp"
 
 namespace {
 

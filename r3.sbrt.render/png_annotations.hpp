@@ -17,8 +17,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "band.hpp"
-#include "png_file.hpp"
+#include "output/band.hpp"
+#include "output/png_file.hpp"
 
 /// \brief One class the legend may show.
 struct LegendClass {

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "borehole_setup.hpp"
-#include "hidden_materials.hpp"
+#include "scene/hidden_materials.hpp"
 #include "scene_setup.hpp"
 #include "skipping_report.hpp"
 #include "vector_input.hpp"

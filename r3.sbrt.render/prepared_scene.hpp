@@ -9,12 +9,12 @@
 #ifndef R3_SBRT_PREPARED_SCENE_HPP
 #define R3_SBRT_PREPARED_SCENE_HPP
 
-#include "camera.hpp"
-#include "drape.hpp"
-#include "model.hpp"
+#include "scene/camera.hpp"
+#include "shading/drape.hpp"
+#include "model/model.hpp"
 #include "render_options.hpp"
-#include "scene.hpp"
-#include "shading.hpp"
+#include "scene/scene.hpp"
+#include "shading/shading.hpp"
 
 /// \brief The model to draw (strata of hide= removed) and its scene.
 struct PreparedScene {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "band.hpp"
-#include "model.hpp"
+#include "output/band.hpp"
+#include "model/model.hpp"
 #include "png_annotations.hpp"
 #include "render_options.hpp"
 #include "rgb_composite.hpp"

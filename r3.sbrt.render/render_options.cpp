@@ -13,7 +13,7 @@
 
 #include "animation_options.hpp"
 #include "option_parts.hpp"
-#include "tracer.hpp"
+#include "tracing/tracer.hpp"
 
 using namespace option_parts;
 

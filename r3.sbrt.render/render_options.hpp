@@ -15,8 +15,8 @@
 #include <glm/vec3.hpp>
 
 #include "grass.hpp"
-#include "shading.hpp"
-#include "view.hpp"
+#include "shading/shading.hpp"
+#include "scene/view.hpp"
 
 /// \brief Everything the user asked for, validated, map units.
 struct RenderRequest {

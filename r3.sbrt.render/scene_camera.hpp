@@ -6,9 +6,9 @@
 #ifndef R3_SBRT_SCENE_CAMERA_HPP
 #define R3_SBRT_SCENE_CAMERA_HPP
 
-#include "camera.hpp"
+#include "scene/camera.hpp"
 #include "render_options.hpp"
-#include "tracer.hpp"
+#include "tracing/tracer.hpp"
 
 /// Fatal error unless an image of rows x cols fits in this machine's
 /// memory (what the streamed bands take, or with `kernel_normals` the

@@ -12,7 +12,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "scene_parts.hpp"
+#include "scene/scene_parts.hpp"
 
 uint32_t find_class(const sbrt::Model &model, const std::string &name,
                     const char *option, const std::string &input)

@@ -10,9 +10,9 @@
 
 #include <vector>
 
-#include "camera.hpp"
+#include "scene/camera.hpp"
 #include "render_options.hpp"
-#include "tracer.hpp"
+#include "tracing/tracer.hpp"
 
 /// Material index of a class given by id or label in `option`; a fatal
 /// error lists the classes when none matches.

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "drape.hpp"
+#include "shading/drape.hpp"
 
 /// The texture of texture=; a fatal error names a missing map.
 sbrt::Texture read_texture(const std::vector<std::string> &maps);

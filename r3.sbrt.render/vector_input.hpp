@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "render_options.hpp"
-#include "scene.hpp"
+#include "scene/scene.hpp"
 
 /// \brief A borehole's collar: its category in layer= and its point.
 struct BoreholePoint {

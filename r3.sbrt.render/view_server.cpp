@@ -18,7 +18,7 @@
 #include <glm/geometric.hpp>
 
 #include "backend.hpp"
-#include "error.hpp"
+#include "util/error.hpp"
 #include "material_colors.hpp"
 #include "option_answers.hpp"
 #include "prepared_scene.hpp"

@@ -1,6 +1,6 @@
 // Exact first-hit ray casting of an SBRT: slab clip to the model's box,
 // 2D DDA over the cells, and in each cell the z-range the ray covers
-// selects the intervals it crosses (the algorithm of lib/sbrt/tracer.cpp,
+// selects the intervals it crosses (the algorithm of lib/sbrt/tracing/tracer.cpp,
 // in float).
 //
 // llvmpipe silently ends a shader invocation after 65,535 loop iterations
@@ -77,7 +77,7 @@ vec3 ray_d = vec3(0.0);
 float t_eye = 0.0;
 
 #ifdef SBRT_SHADE
-// The outputs of the pixel, as lib/sbrt/shading.cpp's PixelShader makes
+// The outputs of the pixel, as lib/sbrt/shading/shading.cpp's PixelShader makes
 // them (in float: a colour level may differ where the double is within
 // rounding of a half)
 void finish(uint index, vec3 point, uint code, float t)

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "grass.hpp"
-#include "model.hpp"
+#include "model/model.hpp"
 
 namespace sbrt_grass {
 

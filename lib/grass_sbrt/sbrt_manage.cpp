@@ -17,7 +17,7 @@
 #include <fstream>
 #include <set>
 
-#include "error.hpp"
+#include "util/error.hpp"
 #include "grass.hpp"
 #include "sbrt_store.hpp"
 

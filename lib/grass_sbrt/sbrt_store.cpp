@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <ctime>
 
-#include "error.hpp"
-#include "format.hpp"
+#include "util/error.hpp"
+#include "format/format.hpp"
 #include "grass.hpp"
 #include "sbrt_manage.hpp"
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "format.hpp"
-#include "model.hpp"
+#include "format/format.hpp"
+#include "model/model.hpp"
 
 namespace sbrt_grass {
 

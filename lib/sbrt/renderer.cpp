@@ -11,12 +11,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "band_flow.hpp"
-#include "band_writer.hpp"
-#include "error.hpp"
-#include "hit_window.hpp"
-#include "kernel_normals.hpp"
-#include "parallel.hpp"
+#include "output/band_flow.hpp"
+#include "output/band_writer.hpp"
+#include "util/error.hpp"
+#include "shading/hit_window.hpp"
+#include "shading/kernel_normals.hpp"
+#include "util/parallel.hpp"
 
 namespace sbrt {
 

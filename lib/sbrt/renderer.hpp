@@ -10,9 +10,9 @@
 
 #include <memory>
 
-#include "band.hpp"
-#include "cpu_tracing.hpp"
-#include "shading.hpp"
+#include "output/band.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "shading/shading.hpp"
 
 namespace sbrt {
 

@@ -12,7 +12,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
-#include "error.hpp"
+#include "util/error.hpp"
 #include "gl_context.hpp"
 
 namespace sbrt_gl {

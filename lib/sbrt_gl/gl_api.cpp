@@ -5,7 +5,7 @@
  ****************************************************************************/
 #include "gl_api.hpp"
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 namespace sbrt_gl {
 

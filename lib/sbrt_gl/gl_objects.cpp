@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <string>
 
-#include "error.hpp"
+#include "util/error.hpp"
 
 namespace sbrt_gl {
 

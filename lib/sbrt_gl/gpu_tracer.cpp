@@ -9,8 +9,8 @@
 #include <chrono>
 #include <cstring>
 
-#include "error.hpp"
-#include "parallel.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
 #include "shader_sources.hpp"
 
 namespace sbrt_gl {

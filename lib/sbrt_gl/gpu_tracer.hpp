@@ -17,10 +17,10 @@
 
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
-#include "gpu_layout.hpp"
-#include "cpu_tracing.hpp"
-#include "gpu_memory_layout.hpp"
-#include "hit_image.hpp"
+#include "tracing/gpu_layout.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "tracing/gpu_memory_layout.hpp"
+#include "tracing/hit_image.hpp"
 
 namespace sbrt_gl {
 

@@ -5,7 +5,7 @@
  *            buffers, the 1x1 colour buffer only satisfies MakeCurrent
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
-#include "error.hpp"
+#include "util/error.hpp"
 #include "gl_context.hpp"
 
 #ifdef SBRT_HAVE_OSMESA

@@ -1,5 +1,5 @@
 // Blocks shared by the ray casting shaders; mirrored in C++ by
-// lib/sbrt/gpu_layout.hpp (static_asserts there, offsets checked by the
+// lib/sbrt/tracing/gpu_layout.hpp (static_asserts there, offsets checked by the
 // unit test GpuLayout.MatchesTheShader). Local frame: x in cells from the
 // west edge, y in cells from the south edge, z in tb_res steps from the
 // bottom, vertical exaggeration applied.
@@ -66,7 +66,7 @@ uint interval_material(uint j) { return interval_texel(j).x; }
 float interval_top(uint j) { return uintBitsToFloat(interval_texel(j).y); }
 #endif
 #else
-// 5-SSBO, the model's stack index as it holds it (lib/sbrt/stack_index.hpp):
+// 5-SSBO, the model's stack index as it holds it (lib/sbrt/model/stack_index.hpp):
 // cell = row_from_north * cols + col starts at the offset of its group of 16
 // cells plus the counts of the cells before it there; counts are
 // SBRT_COUNT_BYTES wide, packed into words (little-endian).
@@ -128,7 +128,7 @@ uvec2 stack_range(int col, int row_from_north)
 }
 #endif
 
-// Empty-space skipping: the min-max pyramid of lib/sbrt/minmax_pyramid.hpp.
+// Empty-space skipping: the min-max pyramid of lib/sbrt/scene/minmax_pyramid.hpp.
 // Level L has (offset, cols, rows) in levels[L]; its node (x, y), x from
 // the west and y from the south, is nodes[offset + y * cols + x]: the
 // lowest bottom and highest top (local z) of what is drawn in its cells,

@@ -13,9 +13,9 @@
 
 #include <zlib.h>
 
-#include "error.hpp"
-#include "format.hpp"
-#include "stacks_fields.hpp"
+#include "util/error.hpp"
+#include "format/format.hpp"
+#include "format/stacks_fields.hpp"
 
 namespace {
 

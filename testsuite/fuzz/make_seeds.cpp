@@ -9,7 +9,7 @@
 #include <iostream>
 #include <string>
 
-#include "format.hpp"
+#include "format/format.hpp"
 #include "../unit/test_support.hpp"
 
 int main(int argc, char **argv)

@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cpu_tracing.hpp"
-#include "error.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "util/error.hpp"
 #include "gpu_tracer.hpp"
 #include "test_support.hpp"
 

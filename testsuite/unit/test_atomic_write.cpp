@@ -21,10 +21,10 @@
 
 #include <gtest/gtest.h>
 
-#include "atomic_dir.hpp"
-#include "format.hpp"
+#include "format/atomic_dir.hpp"
+#include "format/format.hpp"
 #include "test_support.hpp"
-#include "voxel_builder.hpp"
+#include "builders/voxel_builder.hpp"
 
 extern char **environ;
 

@@ -12,9 +12,9 @@
 
 #include <gtest/gtest.h>
 
-#include "band_flow.hpp"
-#include "error.hpp"
-#include "parallel.hpp"
+#include "output/band_flow.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
 
 using namespace sbrt;
 

@@ -10,9 +10,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "camera_path.hpp"
+#include "scene/camera_path.hpp"
 #include "renderer.hpp"
-#include "error.hpp"
+#include "util/error.hpp"
 #include "gpu_compare.hpp"
 
 using namespace sbrt;

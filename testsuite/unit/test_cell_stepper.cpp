@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cell_stepper.hpp"
+#include "tracing/cell_stepper.hpp"
 
 using namespace sbrt;
 

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "classifier.hpp"
-#include "error.hpp"
+#include "builders/classifier.hpp"
+#include "util/error.hpp"
 
 using namespace sbrt;
 

@@ -12,10 +12,10 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
-#include "cpu_tracing.hpp"
-#include "first_hit_bounds.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "tracing/first_hit_bounds.hpp"
 #include "gpu_compare.hpp"
-#include "hidden_materials.hpp"
+#include "scene/hidden_materials.hpp"
 
 using namespace sbrt;
 

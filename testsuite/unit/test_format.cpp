@@ -10,11 +10,11 @@
 
 #include <gtest/gtest.h>
 
-#include "atomic_dir.hpp"
-#include "byte_io.hpp"
-#include "format.hpp"
+#include "format/atomic_dir.hpp"
+#include "format/byte_io.hpp"
+#include "format/format.hpp"
 #include "test_support.hpp"
-#include "voxel_builder.hpp"
+#include "builders/voxel_builder.hpp"
 
 using namespace sbrt;
 

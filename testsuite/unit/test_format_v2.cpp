@@ -12,10 +12,10 @@
 
 #include <gtest/gtest.h>
 
-#include "atomic_dir.hpp"
-#include "byte_io.hpp"
-#include "format.hpp"
-#include "stacks_fields.hpp"
+#include "format/atomic_dir.hpp"
+#include "format/byte_io.hpp"
+#include "format/format.hpp"
+#include "format/stacks_fields.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;

@@ -15,12 +15,12 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "cpu_tracing.hpp"
-#include "error.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "util/error.hpp"
 #include "gpu_tracer.hpp"
-#include "hidden_materials.hpp"
+#include "scene/hidden_materials.hpp"
 #include "gpu_compare.hpp"
-#include "gpu_memory_layout.hpp"
+#include "tracing/gpu_memory_layout.hpp"
 #include "renderer.hpp"
 #include "test_support.hpp"
 

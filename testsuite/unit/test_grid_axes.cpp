@@ -8,12 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include "column_builder.hpp"
-#include "error.hpp"
-#include "grid_axes.hpp"
-#include "missing_values.hpp"
+#include "builders/column_builder.hpp"
+#include "util/error.hpp"
+#include "builders/grid_axes.hpp"
+#include "builders/missing_values.hpp"
 #include "test_support.hpp"
-#include "voxel_expander.hpp"
+#include "builders/voxel_expander.hpp"
 
 using namespace sbrt;
 

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "error.hpp"
-#include "horizon_builder.hpp"
+#include "util/error.hpp"
+#include "builders/horizon_builder.hpp"
 
 using namespace sbrt;
 

@@ -10,9 +10,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "cpu_tracing.hpp"
-#include "error.hpp"
-#include "overlay_geometry.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "util/error.hpp"
+#include "scene/overlay_geometry.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;

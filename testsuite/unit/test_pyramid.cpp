@@ -12,11 +12,11 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
-#include "cpu_tracing.hpp"
+#include "tracing/cpu_tracing.hpp"
 #include "gpu_compare.hpp"
-#include "hidden_materials.hpp"
-#include "minmax_pyramid.hpp"
-#include "scene_pruning.hpp"
+#include "scene/hidden_materials.hpp"
+#include "scene/minmax_pyramid.hpp"
+#include "scene/scene_pruning.hpp"
 
 using namespace sbrt;
 

@@ -18,9 +18,9 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
-#include "error.hpp"
+#include "util/error.hpp"
 #include "gpu_compare.hpp"
-#include "parallel.hpp"
+#include "util/parallel.hpp"
 #include "renderer.hpp"
 #include "test_support.hpp"
 

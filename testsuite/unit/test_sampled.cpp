@@ -10,9 +10,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "cpu_tracing.hpp"
+#include "tracing/cpu_tracing.hpp"
 #include "gpu_compare.hpp"
-#include "sampled_tracer.hpp"
+#include "tracing/sampled_tracer.hpp"
 
 using namespace sbrt;
 

@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "cpu_tracing.hpp"
-#include "error.hpp"
-#include "hidden_materials.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "util/error.hpp"
+#include "scene/hidden_materials.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;

@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "error.hpp"
-#include "format_v2.hpp"
-#include "horizon_builder.hpp"
-#include "model.hpp"
-#include "stack_index.hpp"
+#include "util/error.hpp"
+#include "format/format_v2.hpp"
+#include "builders/horizon_builder.hpp"
+#include "model/model.hpp"
+#include "model/stack_index.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;

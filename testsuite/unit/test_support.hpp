@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "cpu_tracing.hpp"
-#include "model.hpp"
-#include "scene.hpp"
-#include "shading.hpp"
-#include "voxel_builder.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "model/model.hpp"
+#include "scene/scene.hpp"
+#include "shading/shading.hpp"
+#include "builders/voxel_builder.hpp"
 
 namespace sbrt_test {
 

@@ -10,11 +10,11 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "camera.hpp"
-#include "error.hpp"
+#include "scene/camera.hpp"
+#include "util/error.hpp"
 #include "test_support.hpp"
-#include "tracer.hpp"
-#include "voxel_builder.hpp"
+#include "tracing/tracer.hpp"
+#include "builders/voxel_builder.hpp"
 
 using namespace sbrt;
 

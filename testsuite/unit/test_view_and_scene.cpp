@@ -12,11 +12,11 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "error.hpp"
+#include "util/error.hpp"
 #include "gpu_compare.hpp"
-#include "scene_parts.hpp"
-#include "shading.hpp"
-#include "view.hpp"
+#include "scene/scene_parts.hpp"
+#include "shading/shading.hpp"
+#include "scene/view.hpp"
 
 using namespace sbrt;
 

@@ -11,12 +11,12 @@
 
 #include <gtest/gtest.h>
 
-#include "atomic_dir.hpp"
-#include "error.hpp"
-#include "format.hpp"
+#include "format/atomic_dir.hpp"
+#include "util/error.hpp"
+#include "format/format.hpp"
 #include "test_support.hpp"
-#include "voxel_builder.hpp"
-#include "voxel_expander.hpp"
+#include "builders/voxel_builder.hpp"
+#include "builders/voxel_expander.hpp"
 
 using namespace sbrt;
 using sbrt_test::random_voxels;

@@ -37,16 +37,16 @@
 
 #include <glm/geometric.hpp>
 
-#include "cpu_tracing.hpp"
-#include "atomic_dir.hpp"
-#include "error.hpp"
-#include "format.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "format/atomic_dir.hpp"
+#include "util/error.hpp"
+#include "format/format.hpp"
 #include "gpu_tracer.hpp"
-#include "hidden_materials.hpp"
-#include "parallel.hpp"
+#include "scene/hidden_materials.hpp"
+#include "util/parallel.hpp"
 #include "renderer.hpp"
-#include "sampled_tracer.hpp"
-#include "shading.hpp"
+#include "tracing/sampled_tracer.hpp"
+#include "shading/shading.hpp"
 
 using namespace sbrt;
 

@@ -1,0 +1,157 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   SBRT file format: writer and validating reader
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "format/format.hpp"
+
+#include <cerrno>
+#include <cstddef>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "format/atomic_dir.hpp"
+#include "format/byte_sink.hpp"
+#include "util/error.hpp"
+#include "format/mapped_file.hpp"
+#include "format/stacks_fields.hpp"
+
+namespace sbrt {
+
+Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
+                    std::shared_ptr<const void> keep, const ReadOptions &options)
+{
+    const uint16_t major = stacks_major_version(data, size);
+    if (major == 0)
+        fail(what, ": not an SBRT stacks file (bad magic number)");
+    if (major == FORMAT_V1_VERSION) {
+        if (options.report)
+            *options.report = ReadReport{};
+        return decode_stacks_v1(data, size, what, std::move(keep));
+    }
+    if (major == FORMAT_V2_MAJOR)
+        return decode_stacks_v2(data, size, what, options);
+    fail(what, ": format version ", major, " is not supported (this build "
+         "reads versions 1 and 2; a newer r3.sbrt wrote it)");
+}
+
+std::string encode_cats(const Model &model)
+{
+    std::ostringstream out;
+    const auto &materials = model.materials();
+    for (size_t i = 1; i < materials.size(); ++i) {
+        std::string label = materials[i].label;
+        for (char &ch : label)
+            if (ch == '\n' || ch == '\r')
+                ch = ' ';
+        out << materials[i].id << ':' << label << '\n';
+    }
+    return out.str();
+}
+
+void decode_cats(const std::string &text, Model &model, const std::string &what)
+{
+    std::istringstream in(text);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (line.empty())
+            continue;
+        const auto colon = line.find(':');
+        char *end = nullptr;
+        const long id = std::strtol(line.c_str(), &end, 10);
+        if (colon == std::string::npos || end != line.c_str() + colon ||
+            id < INT32_MIN || id > INT32_MAX)
+            fail(what, " line ", number, ": expected id:label");
+        const int64_t m = model.find_material(int32_t(id));
+        if (m > 0)
+            model.materials()[size_t(m)].label = line.substr(colon + 1);
+    }
+}
+
+std::string encode_header(const Model &model)
+{
+    const Frame &f = model.frame();
+    const Stats s = model.stats();
+    char text[1024];
+    std::snprintf(text, sizeof text,
+                  "format:      sbrt\nversion:     %u.%u\n"
+                  "compression: zstd blocks\n"
+                  "proj:        %d\nzone:        %d\n"
+                  "north:       %.17g\nsouth:       %.17g\n"
+                  "east:        %.17g\nwest:        %.17g\n"
+                  "top:         %.17g\nbottom:      %.17g\n"
+                  "rows:        %d\ncols:        %d\ndepths:      %d\n"
+                  "materials:   %zu\nintervals:   %llu\n",
+                  unsigned(FORMAT_V2_MAJOR), unsigned(FORMAT_V2_MINOR), f.proj, f.zone, f.north, f.south, f.east,
+                  f.west, f.top, f.bottom, f.rows, f.cols, f.depths,
+                  model.materials().size() - 1,
+                  (unsigned long long)s.intervals);
+    return text;
+}
+
+StacksFileInfo stacks_file_info(const std::string &directory)
+{
+    const std::string path = directory + "/stacks";
+    const MappedFile file(path);
+    StacksFileInfo info;
+    info.bytes = file.size();
+    info.major = stacks_major_version(file.data(), file.size());
+    if (info.major == 0 || file.size() < 12)
+        fail(path, ": not an SBRT stacks file (bad magic number)");
+    if (info.major >= FORMAT_V2_MAJOR)
+        info.minor = uint16_t(file.data()[10] | file.data()[11] << 8);
+    return info;
+}
+
+std::vector<uint8_t> read_file_bytes(const std::string &path)
+{
+    FILE *fp = std::fopen(path.c_str(), "rb");
+    if (!fp)
+        fail(path, ": cannot open: ", std::strerror(errno));
+    struct stat st;
+    if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode)) {
+        std::fclose(fp);
+        fail(path, ": not a regular file");
+    }
+    std::vector<uint8_t> bytes(size_t(st.st_size));
+    const size_t got =
+        bytes.empty() ? 0 : std::fread(bytes.data(), 1, bytes.size(), fp);
+    std::fclose(fp);
+    if (got != bytes.size())
+        fail(path, ": read ", got, " of ", bytes.size(), " bytes");
+    return bytes;
+}
+
+void write_sbrt(const std::string &directory, const Model &model,
+                const std::string &history, const StacksV2Options &options)
+{
+    model.validate();
+    AtomicDirectory out(directory);
+    FileSink stacks(out.file_path("stacks"));
+    write_stacks_v2(stacks, model, options);
+    stacks.finish();
+    out.write_file("header", encode_header(model));
+    out.write_file("cats", encode_cats(model));
+    out.write_file("hist", history);
+    out.commit();
+}
+
+Model read_sbrt(const std::string &directory, const ReadOptions &options)
+{
+    const std::string stacks_path = directory + "/stacks";
+    const auto file = std::make_shared<const MappedFile>(stacks_path);
+    Model model =
+        decode_stacks(file->data(), file->size(), stacks_path, file, options);
+    const std::string cats_path = directory + "/cats";
+    struct stat st;
+    if (stat(cats_path.c_str(), &st) == 0) {
+        const std::vector<uint8_t> cats = read_file_bytes(cats_path);
+        decode_cats(std::string(cats.begin(), cats.end()), model, cats_path);
+    }
+    return model;
+}
+
+} // namespace sbrt

@@ -1,0 +1,59 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   On-disk form of an SBRT: a directory with `header` (text,
+ *            key: value), `stacks` (binary, checksummed: format v2, v1
+ *            still read), `cats`, `hist`
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_FORMAT_HPP
+#define SBRT_FORMAT_HPP
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "format/format_v1.hpp"
+#include "format/format_v2.hpp"
+#include "model/model.hpp"
+
+namespace sbrt {
+
+/// The version write_sbrt writes.
+constexpr uint32_t FORMAT_VERSION = 2;
+
+/// Decodes a `stacks` file of any version this build reads (1 or 2.x),
+/// told apart by the version after the magic; throws sbrt::Error naming
+/// `what` for anything else. `keep` (v1 only) lets the model view mapped
+/// bytes instead of copying them.
+Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
+                    std::shared_ptr<const void> keep = nullptr,
+                    const ReadOptions &options = {});
+
+/// Text `cats`: one "id:label" line per material with a label.
+std::string encode_cats(const Model &model);
+void decode_cats(const std::string &text, Model &model, const std::string &what);
+
+/// Human-readable `header` (key: value), informational.
+std::string encode_header(const Model &model);
+
+/// Writes the SBRT directory atomically; `history` goes to `hist`; the
+/// stacks in format v2, streamed block by block into the file.
+void write_sbrt(const std::string &directory, const Model &model,
+                const std::string &history, const StacksV2Options &options = {});
+/// Reads and validates an SBRT directory.
+Model read_sbrt(const std::string &directory, const ReadOptions &options = {});
+/// \brief What a `stacks` file is on disk.
+struct StacksFileInfo {
+    uint16_t major = 0, minor = 0;
+    uint64_t bytes = 0;
+};
+/// The version and size of an SBRT directory's `stacks` (throws where it
+/// cannot be read or is no stacks file).
+StacksFileInfo stacks_file_info(const std::string &directory);
+/// Reads the whole file as bytes (throws if missing or unreadable).
+std::vector<uint8_t> read_file_bytes(const std::string &path);
+
+} // namespace sbrt
+
+#endif

@@ -1,0 +1,106 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Format v2 of the `stacks` file: exact and compact. Cells in
+ *            square blocks, each block's stacks zstd-compressed on its own
+ *            (tops as u16 voxel boundaries where the model has them, else
+ *            f32; materials as u8 or u16 indices; counts as u8 or u16 per
+ *            cell), 64-bit offsets, a header read by prefix with feature
+ *            flags; written as a stream, read block by block on all cores
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_FORMAT_V2_HPP
+#define SBRT_FORMAT_V2_HPP
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "format/byte_sink.hpp"
+#include "model/model.hpp"
+
+namespace sbrt {
+
+/// Version 2.0. A reader takes any 2.x file whose required features it
+/// knows; fields a later minor version adds go after those of 2.0.
+constexpr uint16_t FORMAT_V2_MAJOR = 2;
+constexpr uint16_t FORMAT_V2_MINOR = 0;
+/// Size of the 2.0 header (magic to header checksum).
+constexpr uint32_t STACKS_V2_HEADER_SIZE = 152;
+/// Required feature bits this build understands (none yet: 2.0 files set
+/// none). A file with others needs a newer reader; unknown optional bits
+/// are ignored.
+constexpr uint32_t V2_KNOWN_REQUIRED_FEATURES = 0;
+
+/// How tops are stored in a block.
+enum class TopEncoding : uint8_t {
+    VoxelBoundaries = 0, ///< u16, the difference to the top below (exact)
+    Float32 = 1,         ///< f32 as in memory (continuous horizons)
+};
+
+/// \brief What the writer chooses; block_size cells a side.
+struct StacksV2Options {
+    int block_size = 64;
+    int zstd_level = 3;
+    unsigned threads = 0; ///< 0: all cores
+};
+
+/// \brief The field widths a model needs (smallest exact ones).
+struct StacksV2Widths {
+    uint8_t count_bytes = 1, material_bytes = 1;
+    TopEncoding tops = TopEncoding::VoxelBoundaries;
+};
+StacksV2Widths widths_for(const Model &model);
+
+/// Layout (all little-endian):
+///   header: magic "\x89SBRT\r\n\x1a", u16 major 2, u16 minor, u32 header
+///   size, u32 required features, u32 optional features, f64 north south
+///   east west bottom top, u32 rows cols depths, i32 proj zone, u32
+///   material count, u64 interval count, u32 block rows and cols (cells),
+///   u8 count bytes, material bytes, top encoding, compression (1: zstd),
+///   u64 offsets of materials, block table, end of file, u32 crc32 of
+///   materials, of the block table, [later fields], u32 crc32 of the header;
+///   materials: i32 class id, u8 red green blue flags (bit 0: has colour);
+///   blocks, row by row of blocks: one zstd frame each holding the
+///   counts of its cells (row by row), then the materials of its
+///   intervals, then their tops;
+///   block table: u64 offset, u32 compressed size, u32 uncompressed size,
+///   u32 intervals, u32 crc32 of the compressed bytes, per block.
+void write_stacks_v2(ByteSink &sink, const Model &model,
+                     const StacksV2Options &options = {});
+std::vector<uint8_t> encode_stacks_v2(const Model &model,
+                                      const StacksV2Options &options = {});
+
+/// \brief A rectangle of map coordinates.
+struct MapArea {
+    double north, south, east, west;
+};
+
+/// \brief What a read did.
+struct ReadReport {
+    uint64_t blocks = 0;      ///< blocks of the file (0: a v1 file)
+    uint64_t blocks_read = 0; ///< those decompressed
+};
+
+/// \brief How a reader decodes.
+struct ReadOptions {
+    unsigned threads = 0;      ///< 0: all cores
+    uint64_t memory_limit = 0; ///< most bytes the model may take; 0: the RAM
+    /// Where given, only the blocks of cells that meet this area (grown by
+    /// one cell) are decompressed; the stacks of all other cells are left
+    /// empty. v1 files are read whole.
+    std::optional<MapArea> area;
+    ReadReport *report = nullptr; ///< filled where given
+};
+
+/// Decodes untrusted bytes (checks sizes, offsets, checksums, every
+/// block's sizes and every model invariant; throws sbrt::Error naming
+/// `what`), blocks decompressed in parallel. A file whose model would
+/// take more memory than options.memory_limit is refused before anything
+/// is allocated for it.
+Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what,
+                       const ReadOptions &options = {});
+
+} // namespace sbrt
+
+#endif

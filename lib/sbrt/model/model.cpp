@@ -1,0 +1,145 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   SBRT model: invariants, look-ups and the memory figures
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "model/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "util/error.hpp"
+
+namespace sbrt {
+
+void Frame::validate(const char *where) const
+{
+    const double values[] = {north, south, east, west, bottom, top};
+    for (double v : values)
+        if (!std::isfinite(v))
+            fail(where, ": frame has a non-finite coordinate");
+    if (rows < 1 || cols < 1 || depths < 1)
+        fail(where, ": frame has no cells (rows=", rows, " cols=", cols,
+             " depths=", depths, ")");
+    if (!(north > south) || !(east > west) || !(top > bottom))
+        fail(where, ": frame has an empty extent (n=", north, " s=", south,
+             " e=", east, " w=", west, " t=", top, " b=", bottom, ")");
+    if (cells() > uint64_t(std::numeric_limits<int32_t>::max()))
+        fail(where, ": too many cells (", cells(), "), at most 2^31-1");
+    if (depths > (1 << 24))
+        fail(where, ": too many depths (", depths,
+             "), at most 2^24 keeps voxel heights exact in float32");
+}
+
+namespace {
+
+/// The stack index of cells + 1 offsets.
+StackIndex index_of(const std::vector<uint32_t> &offsets, const Frame &frame)
+{
+    if (offsets.size() != frame.cells() + 1)
+        fail("SBRT model: index has ", offsets.size(), " entries, expected ",
+             frame.cells() + 1);
+    return StackIndex::from_offsets(offsets.data(), frame.cells());
+}
+
+} // namespace
+
+Model::Model(Frame frame, std::vector<Material> materials,
+             const std::vector<uint32_t> &offsets, IntervalArray intervals)
+    : Model(frame, std::move(materials), index_of(offsets, frame), std::move(intervals))
+{
+}
+
+Model::Model(Frame frame, std::vector<Material> materials, StackIndex index,
+             IntervalArray intervals)
+    : frame_(frame), materials_(std::move(materials)), index_(std::move(index)),
+      intervals_(std::move(intervals).packed())
+{
+}
+
+std::vector<Interval> Model::stack_intervals(uint64_t cell) const
+{
+    const StackRange stack = index_.range(cell);
+    std::vector<Interval> out(stack.size());
+    for (uint64_t i = stack.begin; i < stack.end; ++i)
+        out[i - stack.begin] = intervals_[i];
+    return out;
+}
+
+int64_t Model::find_material(int32_t id) const
+{
+    for (size_t i = 1; i < materials_.size(); ++i)
+        if (materials_[i].id == id)
+            return int64_t(i);
+    return -1;
+}
+
+Stats Model::stats() const
+{
+    Stats s;
+    s.voxels = frame_.voxels();
+    s.voxel_bytes = s.voxels * 4;
+    s.intervals = intervals_.size();
+    s.index_bytes = index_.bytes();
+    s.interval_bytes = s.intervals * intervals_.record_bytes();
+    s.sbrt_bytes = s.index_bytes + s.interval_bytes + materials_.size() * 8;
+    intervals_.visit([&](const auto *records) {
+        for (size_t i = 0; i < s.intervals; ++i)
+            s.solid_intervals += records[i].material != EMPTY;
+    });
+    s.max_stack = index_.max_size();
+    s.mean_stack = frame_.cells() ? double(s.intervals) / frame_.cells() : 0;
+    s.compression_percent =
+        s.voxel_bytes ? 100.0 * (1.0 - double(s.sbrt_bytes) / s.voxel_bytes)
+                      : 0;
+    return s;
+}
+
+void Model::validate() const
+{
+    frame_.validate("SBRT model");
+    std::ostringstream problems;
+    int count = 0;
+    auto problem = [&](const std::string &text) {
+        if (count++ < 8)
+            problems << "\n  " << text;
+    };
+    if (materials_.empty() || materials_.size() > MAX_MATERIALS)
+        problem("material count " + std::to_string(materials_.size()) +
+                " not in 1.." + std::to_string(MAX_MATERIALS));
+    if (index_.cells() != frame_.cells())
+        fail("SBRT model: index has ", index_.cells(), " cells, expected ",
+             frame_.cells());
+    if (index_.total() != intervals_.size())
+        fail("SBRT model: index does not span the ", intervals_.size(),
+             " intervals");
+    const float depth_limit = float(frame_.depths);
+    for (uint64_t c = 0; c < frame_.cells(); ++c) {
+        const StackRange stack = index_.range(c);
+        float below = 0;
+        uint32_t previous = UINT32_MAX;
+        for (uint64_t i = stack.begin; i < stack.end; ++i) {
+            const Interval iv = intervals_[i];
+            if (iv.material >= materials_.size())
+                problem("cell " + std::to_string(c) + ": material index " +
+                        std::to_string(iv.material) + " out of range");
+            if (!(iv.top > below) || !(iv.top <= depth_limit))
+                problem("cell " + std::to_string(c) + ": interval top " +
+                        std::to_string(iv.top) + " not in (" +
+                        std::to_string(below) + ", " +
+                        std::to_string(depth_limit) + "]");
+            if (iv.material == previous)
+                problem("cell " + std::to_string(c) +
+                        ": adjacent intervals of one material");
+            below = iv.top;
+            previous = iv.material;
+        }
+        if (stack.size() && previous == EMPTY)
+            problem("cell " + std::to_string(c) + ": trailing EMPTY interval");
+    }
+    if (count)
+        fail("SBRT model: ", count, " problem(s):", problems.str());
+}
+
+} // namespace sbrt

@@ -1,0 +1,114 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The stack-based representation of terrains (SBRT): grid frame,
+ *            stacks of (material, top) intervals, material table
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_MODEL_HPP
+#define SBRT_MODEL_HPP
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "model/interval_array.hpp"
+#include "model/stack_index.hpp"
+
+namespace sbrt {
+
+/// Class id that stands for "no value" (GRASS's CELL null is INT_MIN too).
+constexpr int32_t NULL_CLASS = std::numeric_limits<int32_t>::min();
+/// Material index 0 is the reserved EMPTY material (air, caves, nulls).
+constexpr uint32_t EMPTY = 0;
+/// Largest number of materials, EMPTY included (keeps a material in 16 bits).
+constexpr uint32_t MAX_MATERIALS = 65536;
+
+/// \brief Georeferenced frame: the 2D grid plus the vertical frame.
+/// Row 0 is the northernmost row (GRASS order); depth 0 the bottom slice.
+struct Frame {
+    double north = 1, south = 0, east = 1, west = 0;
+    double bottom = 0, top = 1;
+    int rows = 1, cols = 1, depths = 1;
+    int proj = 0, zone = 0;
+
+    double ns_res() const { return (north - south) / rows; }
+    double ew_res() const { return (east - west) / cols; }
+    double tb_res() const { return (top - bottom) / depths; }
+    uint64_t cells() const { return uint64_t(rows) * uint64_t(cols); }
+    uint64_t voxels() const { return cells() * uint64_t(depths); }
+    /// Local height (units of tb_res above the bottom) of map elevation z.
+    double local_z(double z) const { return (z - bottom) / tb_res(); }
+    /// Throws sbrt::Error unless the frame is finite and non-degenerate.
+    void validate(const char *where) const;
+};
+
+/// \brief A class of the source map with its legend.
+struct Material {
+    int32_t id = NULL_CLASS;
+    std::string label;
+    uint8_t red = 128, green = 128, blue = 128;
+    bool has_color = false;
+};
+
+/// \brief Figures of the papers' memory comparison (Table 1).
+struct Stats {
+    uint64_t voxels = 0;
+    uint64_t voxel_bytes = 0; ///< 4 bytes per voxel (FCELL), as in Table 1
+    uint64_t sbrt_bytes = 0;  ///< index + intervals + materials, in memory
+    uint64_t index_bytes = 0;    ///< of them the stack index
+    uint64_t interval_bytes = 0; ///< and the intervals
+    uint64_t intervals = 0;
+    uint64_t solid_intervals = 0;
+    uint32_t max_stack = 0;
+    double mean_stack = 0;
+    double compression_percent = 0;
+};
+
+/// \brief The whole model: frame, one stack per cell, materials.
+class Model {
+public:
+    Model() = default;
+    /// Takes ownership of the arrays; `offsets` has cells + 1 entries.
+    /// Owned intervals are held compact where that is exact.
+    Model(Frame frame, std::vector<Material> materials,
+          const std::vector<uint32_t> &offsets, IntervalArray intervals);
+    Model(Frame frame, std::vector<Material> materials, StackIndex index,
+          IntervalArray intervals);
+
+    const Frame &frame() const { return frame_; }
+    const std::vector<Material> &materials() const { return materials_; }
+    std::vector<Material> &materials() { return materials_; }
+    const StackIndex &index() const { return index_; }
+    const IntervalArray &intervals() const { return intervals_; }
+
+    uint64_t cell_index(int row, int col) const
+    {
+        return uint64_t(row) * uint64_t(frame_.cols) + uint64_t(col);
+    }
+    StackRange stack(uint64_t cell) const { return index_.range(cell); }
+    uint64_t stack_begin(uint64_t cell) const { return index_.range(cell).begin; }
+    uint64_t stack_end(uint64_t cell) const { return index_.range(cell).end; }
+    uint32_t stack_size(uint64_t cell) const { return index_.size(cell); }
+    /// The intervals of one stack, widened (for code that is not hot).
+    std::vector<Interval> stack_intervals(uint64_t cell) const;
+    /// Bytes the index and the intervals take in memory.
+    uint64_t memory_bytes() const { return index_.bytes() + intervals_.size() * intervals_.record_bytes(); }
+    /// Material index whose class id is `id`, or -1.
+    int64_t find_material(int32_t id) const;
+
+    Stats stats() const;
+    /// Checks every invariant (sorted tops, merged runs, no trailing EMPTY,
+    /// indices in range); throws sbrt::Error listing the problems found.
+    void validate() const;
+
+private:
+    Frame frame_;
+    std::vector<Material> materials_;
+    StackIndex index_;
+    IntervalArray intervals_;
+};
+
+} // namespace sbrt
+
+#endif

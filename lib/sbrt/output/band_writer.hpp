@@ -1,0 +1,67 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Hands finished bands to a sink on a thread of its own, in
+ *            order of their rows whatever order they are finished in,
+ *            while the next bands are traced; a few band buffers circulate
+ *            between the renderer and the sink
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_BAND_WRITER_HPP
+#define SBRT_BAND_WRITER_HPP
+
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "output/band.hpp"
+
+namespace sbrt {
+
+/// \brief The sink's thread. Only that thread calls the sink, so a sink
+/// that is not thread-safe (GRASS's raster library) is safe as long as
+/// nothing else calls it meanwhile. The sink takes the bands in the order
+/// of their rows from row 0: a band submitted early waits for the bands
+/// above it. An exception of the sink is rethrown by every later take(),
+/// submit() or finish() on the renderer's side (any of its threads).
+class BandWriter {
+public:
+    explicit BandWriter(const BandSink &sink, size_t buffers = 2);
+    ~BandWriter(); ///< waits for the sink's thread (after finish: at once)
+    BandWriter(const BandWriter &) = delete;
+    BandWriter &operator=(const BandWriter &) = delete;
+
+    /// A band buffer to fill (waits while the sink holds all of them).
+    Band take();
+    /// Queues a filled band for the sink (thread-safe).
+    void submit(Band band);
+    /// Waits until the sink took every band; rethrows its exception.
+    void finish();
+    /// Gives up (a renderer thread failed): take() waiting or called later
+    /// throws rather than wait for bands that will never come.
+    void cancel();
+    /// Time the sink took so far (ms; read after finish()).
+    double sink_ms() const { return sink_ms_; }
+
+private:
+    void run();
+    void rethrow_locked();
+    /// The queued band that comes next, or queued_.end().
+    std::deque<Band>::iterator next_band();
+
+    const BandSink &sink_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::deque<Band> queued_, free_;
+    size_t unallocated_;
+    bool closing_ = false, busy_ = false, cancelled_ = false;
+    int next_row_ = 0; ///< the first row of the band the sink takes next
+    double sink_ms_ = 0;
+    std::exception_ptr error_;
+    std::thread thread_;
+};
+
+} // namespace sbrt
+
+#endif

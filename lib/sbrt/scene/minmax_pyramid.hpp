@@ -1,0 +1,68 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Min-max pyramid over the cells for empty-space skipping: per
+ *            node of 2^L x 2^L cells, the lowest bottom and the highest top
+ *            of the material left to draw (empty: nothing to draw)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_MINMAX_PYRAMID_HPP
+#define SBRT_MINMAX_PYRAMID_HPP
+
+#include <cstdint>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace sbrt {
+
+/// \brief z-range (local units) of the material in a node; low > high when
+/// the node holds nothing to draw.
+struct ZRange {
+    float low = 1, high = 0;
+    bool empty() const { return low > high; }
+};
+
+/// \brief Level 0 is the grid (x from the west, y from the south, as the
+/// tracer's local frame); level L + 1 halves level L in x and y (rounding
+/// up) down to one node. Built in time linear in the intervals.
+class MinMaxPyramid {
+public:
+    MinMaxPyramid() = default;
+    /// From the model's stacks; `drawn(x, y, range)` may narrow or empty a
+    /// cell's range (cells cut away by clip planes, cells with overlays).
+    template <typename Narrow>
+    MinMaxPyramid(const Model &model, const Narrow &narrow)
+    {
+        std::vector<ZRange> cells = cell_ranges(model);
+        const Frame &f = model.frame();
+        for (int y = 0; y < f.rows; ++y)
+            for (int x = 0; x < f.cols; ++x)
+                narrow(x, y, cells[size_t(y) * f.cols + x]);
+        build(f.cols, f.rows, std::move(cells));
+    }
+
+    int levels() const { return int(levels_.size()); }
+    int cols(int level) const { return dims_[level].first; }
+    int rows(int level) const { return dims_[level].second; }
+    const ZRange &node(int level, int x, int y) const
+    {
+        return levels_[level][size_t(y) * dims_[level].first + x];
+    }
+    /// Cells (level 0) with nothing to draw.
+    uint64_t empty_cells() const;
+    /// Bytes of all levels (as a GPU buffer would hold them).
+    uint64_t bytes() const;
+    /// Every level one after the other, level 0 first (the GPU's layout).
+    std::vector<ZRange> flattened() const;
+
+private:
+    static std::vector<ZRange> cell_ranges(const Model &model);
+    void build(int cols, int rows, std::vector<ZRange> cells);
+
+    std::vector<std::vector<ZRange>> levels_;
+    std::vector<std::pair<int, int>> dims_;
+};
+
+} // namespace sbrt
+
+#endif

@@ -1,0 +1,115 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Normals from the depth image: the hybrid image-space kernel of
+ *            Graciano et al. (2018), section 4.1.2, and Gaussian smoothing;
+ *            per pixel, so that a whole image (the reference) and a window
+ *            of rows (the streamed renderer) give the same normals
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_KERNEL_NORMALS_HPP
+#define SBRT_KERNEL_NORMALS_HPP
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "tracing/hit_image.hpp"
+
+namespace sbrt {
+
+/// \brief The hybrid image-space kernel of one camera.
+///
+/// A k x k x k grid of voxel-sized cells is centred on the hit point. A cell
+/// centre is empty when it lies in front of the surface seen at the pixel it
+/// projects to (or that pixel sees nothing), occupied when it lies behind
+/// it; centres on the surface or outside the image do not count. The normal
+/// is the normalised sum of the unit vectors towards the empty centres. The
+/// face normal stays where the kernel finds no empty centre.
+class KernelNormals {
+public:
+    /// `k` odd, 3..11; `camera` the whole image (not a window of it).
+    KernelNormals(const Tracer &tracer, const Camera &camera, int k);
+
+    /// Depth along the view axis of the surface a hit shows (inf: a miss);
+    /// what the kernel compares its cells with.
+    double view_depth(const Hit &hit) const;
+
+    /// Image rows [first, last) whose depths the kernel reads for the hits
+    /// of `hits` (one row of the image, `cols` of them); empty for a row
+    /// without hits.
+    std::pair<int, int> row_reach(const Hit *hits) const;
+
+    /// The kernel normal of `hit`, seen at depth `depth`; `depth_at(r, c)`
+    /// gives view_depth of the hit at pixel (r, c) (rows within row_reach
+    /// of the hit's row). Returns false (the face normal stays) where no
+    /// cell is empty.
+    template <typename DepthAt>
+    bool normal(const Hit &hit, double depth, const DepthAt &depth_at,
+                glm::vec3 &out) const;
+
+private:
+    /// A kernel cell's offset from the centre in the camera's terms.
+    struct Cell {
+        glm::dvec3 unit; ///< unit vector from the centre (map space)
+        double along_du, along_dv, along_forward;
+    };
+
+    const Tracer &tracer_;
+    int rows_, cols_;
+    bool parallel_;
+    glm::dvec3 origin_, forward_, du_, dv_;
+    double du2_, dv2_, voxel_x_;
+    std::vector<Cell> cells_;
+    Cell corners_[8]; ///< the extreme cells: their images bound every cell's
+};
+
+template <typename DepthAt>
+bool KernelNormals::normal(const Hit &hit, double depth, const DepthAt &depth_at,
+                           glm::vec3 &out) const
+{
+    const glm::dvec3 v = tracer_.exaggerate(hit.point) - origin_;
+    const double p_du = glm::dot(v, du_), p_dv = glm::dot(v, dv_);
+    const double tolerance = 1e-6 * (std::fabs(depth) + voxel_x_);
+    glm::dvec3 sum(0);
+    for (const Cell &cell : cells_) {
+        const double z = depth + cell.along_forward;
+        double x = (p_du + cell.along_du) / du2_;
+        double y = (p_dv + cell.along_dv) / dv2_;
+        if (!parallel_) {
+            if (!(z > 0))
+                continue;
+            x /= z;
+            y /= z;
+        }
+        const double c = std::floor((x + 1) / 2 * cols_);
+        const double r = std::floor((1 - y) / 2 * rows_);
+        if (c < 0 || c >= cols_ || r < 0 || r >= rows_)
+            continue;
+        if (z < depth_at(int(r), int(c)) - tolerance)
+            sum += cell.unit; // in front of the surface: empty
+    }
+    const double length = glm::length(sum);
+    if (!(length > 0))
+        return false;
+    out = sum / length;
+    return true;
+}
+
+/// \brief Separable Gaussian weights of smoothing with `sigma` pixels:
+/// 2 radius + 1 of them.
+std::vector<double> gaussian_weights(double sigma);
+
+/// Replaces the normal of every hit of a whole image by the kernel
+/// estimate (the reference the streamed renderer is tested against).
+void apply_kernel_normals(const Tracer &tracer, const Camera &camera, int k,
+                          HitImage &hits, unsigned threads = 0);
+
+/// Gaussian smoothing of the normals over the pixels that hit the model.
+void smooth_normals(const Camera &camera, double sigma, HitImage &hits,
+                    unsigned threads = 0);
+
+} // namespace sbrt
+
+#endif

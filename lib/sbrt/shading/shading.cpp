@@ -1,0 +1,163 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Shading of hits into an image
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "shading/shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "shading/drape.hpp"
+#include "util/error.hpp"
+#include "shading/kernel_normals.hpp"
+#include "util/parallel.hpp"
+
+namespace sbrt {
+
+glm::dvec3 Shading::light_from(double azimuth, double elevation)
+{
+    const double az = azimuth * M_PI / 180, el = elevation * M_PI / 180;
+    return {std::sin(az) * std::cos(el), std::cos(az) * std::cos(el),
+            std::sin(el)};
+}
+
+std::array<uint8_t, 3> material_color(const Model &model, uint32_t material)
+{
+    const Material &m = model.materials()[material];
+    if (m.has_color)
+        return {m.red, m.green, m.blue};
+    // golden-angle hues: neighbouring classes get distinct colours
+    const double h = std::fmod(material * 137.508, 360.0) / 60.0;
+    const double x = 1 - std::fabs(std::fmod(h, 2.0) - 1);
+    const double rgb[6][3] = {{1, x, 0}, {x, 1, 0}, {0, 1, x},
+                              {0, x, 1}, {x, 0, 1}, {1, 0, x}};
+    const double *c = rgb[int(h) % 6];
+    return {uint8_t(60 + 180 * c[0]), uint8_t(60 + 180 * c[1]),
+            uint8_t(60 + 180 * c[2])};
+}
+
+namespace {
+
+/// lround for 0 <= c <= 255 (half away from zero), without a libm call
+/// per channel: c - floor(c) is exact there.
+uint8_t round_channel(double c)
+{
+    const double low = std::floor(c);
+    return uint8_t(c - low >= 0.5 ? low + 1 : low);
+}
+
+} // namespace
+
+PixelShader::PixelShader(const Model &model, const Shading &shading)
+    : model_(model), shading_(shading)
+{
+    base_.reserve(model.materials().size());
+    for (size_t m = 0; m < model.materials().size(); ++m) {
+        const auto rgb = material_color(model, uint32_t(m));
+        base_.emplace_back(rgb[0], rgb[1], rgb[2]);
+    }
+    if (shading.drape)
+        return;
+    for (uint32_t m = 0; m < base_.size(); ++m)
+        for (int face = int(Face::west); face <= int(Face::top); ++face) {
+            Hit hit;
+            hit.material = m;
+            hit.face = Face(face);
+            hit.normal = glm::vec3(face_normal(hit.face));
+            cell_face_rgb_.push_back(lit(hit));
+        }
+}
+
+std::array<uint8_t, 3> PixelShader::operator()(const Hit &hit) const
+{
+    if (hit.transmittance == 1 && hit.veil == glm::vec3(0)) {
+        // nothing in front: the background, or a cell's face lit as the
+        // table has it (with the face's own normal: not a kernel normal)
+        if (!hit.is_hit())
+            return shading_.background;
+        const int face = int(hit.face);
+        if (!cell_face_rgb_.empty() && face >= int(Face::west) && face <= int(Face::top) &&
+            hit.normal == glm::vec3(face_normal(hit.face)))
+            return cell_face_rgb_[size_t(hit.material) * 6 + size_t(face - 1)];
+    }
+    return lit(hit);
+}
+
+std::array<uint8_t, 3> PixelShader::lit(const Hit &hit) const
+{
+    const Shading &shading = shading_;
+    glm::dvec3 color(shading.background[0], shading.background[1],
+                     shading.background[2]);
+    if (hit.is_hit()) {
+        glm::dvec3 surface = base_[hit.material];
+        if (shading.drape)
+            surface = shading.drape->color(hit, surface);
+        const double lambert =
+            std::max(0.0, glm::dot(shading.light, glm::dvec3(hit.normal)));
+        color = surface * (shading.ambient + (1 - shading.ambient) * lambert);
+    }
+    color = 255.0 * glm::dvec3(hit.veil) + double(hit.transmittance) * color;
+    std::array<uint8_t, 3> rgb;
+    for (int k = 0; k < 3; ++k)
+        rgb[k] = round_channel(std::clamp(color[k], 0.0, 255.0));
+    return rgb;
+}
+
+void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Camera &camera,
+                     const Hit &hit, int row, int col, Band &band)
+{
+    const Model &model = tracer.model();
+    const size_t i = size_t(row - band.first_row) * size_t(band.cols) + size_t(col);
+    const auto rgb = shader(hit);
+    std::copy(rgb.begin(), rgb.end(), band.rgb.begin() + ptrdiff_t(i) * 3);
+    if (!band.material.empty())
+        band.material[i] = hit.is_hit() ? model.materials()[hit.material].id : NULL_CLASS;
+    if (!band.elevation.empty())
+        band.elevation[i] = hit.is_hit() ? hit.point.z : NAN;
+    if (!band.depth.empty())
+        band.depth[i] =
+            hit.is_hit()
+                ? glm::length(hit.point - tracer.unexaggerate(camera.ray(row, col).origin))
+                : NAN;
+}
+
+Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
+            const Shading &shading, unsigned threads)
+{
+    const Model &model = tracer.model();
+    Image image;
+    image.rows = camera.rows();
+    image.cols = camera.cols();
+    const size_t pixels = size_t(image.rows) * image.cols;
+    SBRT_CHECK_EQ(hits.size(), pixels, "shade");
+    if (shading.normals == Normals::kernel) {
+        apply_kernel_normals(tracer, camera, shading.kernel, hits, threads);
+        if (shading.smooth > 0)
+            smooth_normals(camera, shading.smooth, hits, threads);
+    }
+    image.rgb.assign(pixels * 3, 0);
+    image.material.assign(pixels, NULL_CLASS);
+    image.elevation.assign(pixels, NAN);
+    image.depth.assign(pixels, NAN);
+    const PixelShader shade_pixel(model, shading);
+    for_each_row(image.rows, threads, [&](int row) {
+        for (int col = 0; col < image.cols; ++col) {
+            const size_t i = size_t(row) * image.cols + col;
+            const Hit &hit = hits[i];
+            if (hit.is_hit()) {
+                image.material[i] = model.materials()[hit.material].id;
+                image.elevation[i] = hit.point.z;
+                image.depth[i] = glm::length(
+                    hit.point - tracer.unexaggerate(camera.ray(row, col).origin));
+            }
+            const auto rgb = shade_pixel(hit);
+            std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + i * 3);
+        }
+    });
+    return image;
+}
+
+} // namespace sbrt

@@ -1,0 +1,87 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Turns the first hits of an image into its outputs: colour
+ *            with Lambert lighting, material, elevation and depth
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_SHADING_HPP
+#define SBRT_SHADING_HPP
+
+#include <array>
+#include <vector>
+
+#include "output/band.hpp"
+#include "tracing/hit_image.hpp"
+
+namespace sbrt {
+
+/// How the normal at a hit is found: the exact normal of the face that was
+/// hit, or the hybrid image-space kernel (see kernel_normals.hpp).
+enum class Normals { face, kernel };
+
+/// \brief Lighting I = ia + kd (L.N) id with kd id = 1 - ambient.
+struct Shading {
+    glm::dvec3 light{0, 0, 1}; ///< towards the light, unit length
+    double ambient = 0.35;
+    std::array<uint8_t, 3> background{255, 255, 255};
+    Normals normals = Normals::face;
+    int kernel = 5;      ///< kernel size k (odd, 3..11) of Normals::kernel
+    double smooth = 0;   ///< Gaussian sigma of the normals, pixels (0: off)
+    const class Drape *drape = nullptr; ///< an image on the terrain, or none
+
+    /// Direction from azimuth (degrees clockwise from north) and elevation.
+    static glm::dvec3 light_from(double azimuth, double elevation);
+};
+
+/// \brief Per-pixel outputs, row-major, row 0 at the top of the image.
+struct Image {
+    int rows = 0, cols = 0;
+    std::vector<uint8_t> rgb;       ///< 3 per pixel
+    std::vector<int32_t> material;  ///< class id, NULL_CLASS where missed
+    std::vector<double> elevation;  ///< z of the hit, NaN where missed
+    std::vector<double> depth;      ///< distance from the ray origin, NaN
+};
+
+/// Colour of a material: its stored colour, else a fixed palette entry.
+std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
+
+/// \brief A Shading made ready for one model's pixels: each material's
+/// colour is looked up once, not per pixel. Holds references to both.
+class PixelShader {
+public:
+    PixelShader(const Model &model, const Shading &shading);
+
+    /// A pixel's colour: the veil of the translucent strata plus, through
+    /// them, the lit colour of the hit (or the background).
+    std::array<uint8_t, 3> operator()(const Hit &hit) const;
+
+    const Model &model() const { return model_; }
+
+private:
+    std::array<uint8_t, 3> lit(const Hit &hit) const;
+
+    const Model &model_;
+    const Shading &shading_;
+    std::vector<glm::dvec3> base_; ///< per material, 0..255
+    /// Without a drape, the colours lit() gives a hit on each of a cell's
+    /// six faces with its face normal, nothing in front: per material,
+    /// faces west..top (Face values 1..6).
+    std::vector<std::array<uint8_t, 3>> cell_face_rgb_;
+};
+
+/// Pixel (row, col) of `band` (a band of camera's image): the colour of
+/// `hit` and the outputs the band holds (class id, elevation, depth from
+/// the ray's origin; NULL_CLASS and NaN where the ray met nothing).
+void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Camera &camera,
+                     const Hit &hit, int row, int col, Band &band);
+
+/// The whole-image reference of the pipeline (tests and benchmarks; the
+/// module streams through Renderer): outputs of the hits of camera's rays
+/// (row-major, as trace_image gives). Material, elevation and depth are
+/// those of the first opaque hit.
+Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
+            const Shading &shading, unsigned threads = 0);
+
+} // namespace sbrt
+
+#endif

@@ -1,0 +1,124 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Multithreaded CPU tracing of the rows of an image
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "tracing/cpu_tracing.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "util/parallel.hpp"
+
+namespace sbrt {
+
+namespace {
+
+/// Where the tracer draws only overlays, the pixel rectangles whose rays
+/// may hit something: those the projections of their boxes cover; none
+/// where every pixel is traced.
+std::optional<std::vector<std::array<int, 4>>> overlay_rects(const Tracer &tracer,
+                                                             const Camera &camera)
+{
+    const int rows = camera.rows(), cols = camera.cols();
+    const auto boxes = tracer.overlay_bounds();
+    if (boxes.empty())
+        return std::nullopt;
+    std::vector<std::array<int, 4>> rects;
+    for (const auto &box : boxes) {
+        double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 p(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z);
+            double x, y;
+            if (!camera.project(p, x, y))
+                return std::nullopt; // the camera is among them
+            x0 = std::min(x0, x);
+            x1 = std::max(x1, x);
+            y0 = std::min(y0, y);
+            y1 = std::max(y1, y);
+        }
+        // pixel centres at ((c + 0.5) / cols * 2 - 1, 1 - (r + 0.5) / rows * 2);
+        // one pixel of margin; clamped before the conversion to int (a box
+        // far outside the frame projects far outside any int)
+        auto pixel = [](double v, double high) {
+            return int(std::clamp(v, -2.0, high + 2));
+        };
+        const int c0 = std::max(0, pixel(std::floor((x0 + 1) / 2 * cols - 0.5), cols) - 1);
+        const int c1 = std::min(cols - 1, pixel(std::ceil((x1 + 1) / 2 * cols - 0.5), cols) + 1);
+        const int r0 = std::max(0, pixel(std::floor((1 - y1) / 2 * rows - 0.5), rows) - 1);
+        const int r1 = std::min(rows - 1, pixel(std::ceil((1 - y0) / 2 * rows - 0.5), rows) + 1);
+        if (r0 <= r1 && c0 <= c1)
+            rects.push_back({r0, r1, c0, c1});
+    }
+    return rects;
+}
+
+} // namespace
+
+CpuRowTracer::CpuRowTracer(const Tracer &tracer, const Camera &camera,
+                           unsigned threads, bool first_pass)
+    : overlay_rects_(overlay_rects(tracer, camera)), tracer_(tracer),
+      camera_(camera), threads_(threads)
+{
+    // no pyramid (skipping off, the model not drawn): every bound is 0
+    const auto start = std::chrono::steady_clock::now();
+    if (first_pass)
+        bounds_.emplace(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET, threads);
+    else
+        bounds_.emplace(camera);
+    report_ = {bounds_->tiles(), bounds_->empty_tiles(),
+               std::chrono::duration<double, std::milli>(
+                   std::chrono::steady_clock::now() - start)
+                   .count()};
+}
+
+void CpuRowTracer::trace_row(int row, Hit *out) const
+{
+    const int cols = camera_.cols();
+    if (!overlay_rects_) {
+        for (int col = 0; col < cols; ++col) {
+            if (bounds_->meets_nothing(row, col)) {
+                out[col] = Hit(); // what trace() returns for a t_start of inf
+                continue;
+            }
+            const Ray ray = camera_.ray(row, col);
+            tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
+        }
+        return;
+    }
+    // the columns of the rectangles across this row, overlaps merged
+    std::vector<std::pair<int, int>> spans;
+    for (const auto &[r0, r1, c0, c1] : *overlay_rects_)
+        if (row >= r0 && row <= r1)
+            spans.emplace_back(c0, c1);
+    std::sort(spans.begin(), spans.end());
+    std::fill(out, out + cols, Hit());
+    int next = 0; // first column not yet traced
+    for (const auto &[c0, c1] : spans)
+        for (int col = std::max(c0, next); col <= c1; ++col) {
+            const Ray ray = camera_.ray(row, col);
+            tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
+            next = col + 1;
+        }
+}
+
+void CpuRowTracer::trace_rows(int first, int count, Hit *out)
+{
+    const size_t cols = size_t(camera_.cols());
+    for_each_row(first, first + count, threads_,
+                 [&](int row) { trace_row(row, out + size_t(row - first) * cols); });
+}
+
+HitImage trace_image(const Tracer &tracer, const Camera &camera, unsigned threads,
+                     bool first_pass, FirstPassReport *report)
+{
+    HitImage hits(size_t(camera.rows()) * camera.cols());
+    CpuRowTracer rows(tracer, camera, threads, first_pass);
+    if (report)
+        *report = rows.first_pass();
+    rows.trace_rows(0, camera.rows(), hits.data());
+    return hits;
+}
+
+} // namespace sbrt

@@ -1,0 +1,86 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   First hits of the rows of an image with the exact tracer on
+ *            all cores (backend=cpu, and the reference of the GPU path)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_CPU_TRACING_HPP
+#define SBRT_CPU_TRACING_HPP
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "output/band.hpp"
+#include "tracing/first_hit_bounds.hpp"
+#include "tracing/hit_image.hpp"
+
+namespace sbrt {
+
+/// Tile side (pixels) and node budget of the coarse first pass. Measured on
+/// models A to C at 1056 x 884: tiles of 4 pixels cost more than they save
+/// (0.6x on A); 8 and 16, with budgets of 16 to 64, are within noise.
+constexpr int FIRST_PASS_TILE = 8, FIRST_PASS_BUDGET = 8;
+
+/// What the coarse first pass did: its tiles, those whose rays all meet
+/// nothing (not walked at all), its time.
+struct FirstPassReport {
+    size_t tiles = 0, empty_tiles = 0;
+    double ms = 0;
+};
+
+/// \brief Whatever traces the rows of one camera's image: the CPU tracer
+/// below, or a GPU (lib/sbrt_gl). The streamed renderer asks it for bands
+/// of rows, in any order, each row possibly more than once (the same hits).
+class RowTracer {
+public:
+    virtual ~RowTracer() = default;
+    /// Hits of rows [first, first + count), row-major, into `out`.
+    virtual void trace_rows(int first, int count, Hit *out) = 0;
+    /// Rows per band this tracer works best with for an image `cols`
+    /// wide; 0: the renderer's choice.
+    virtual int preferred_band_rows(int /*cols*/) const { return 0; }
+    /// Where the tracer shades too (a GPU): the band's outputs of those
+    /// rows (band sized for them); false where it does not.
+    virtual bool shade_rows(int /*first*/, int /*count*/, const Outputs & /*outputs*/,
+                            Band & /*band*/)
+    {
+        return false;
+    }
+};
+
+/// \brief The exact CPU tracer over the rows of `camera`, on `threads`
+/// threads (0: all cores). With `first_pass` (and the tracer's pyramid)
+/// each ray starts where the coarse first pass (FirstHitBounds) puts its
+/// tile's first possible hit. Holds references to both arguments.
+class CpuRowTracer : public RowTracer {
+public:
+    CpuRowTracer(const Tracer &tracer, const Camera &camera, unsigned threads = 0,
+                 bool first_pass = true);
+    void trace_rows(int first, int count, Hit *out) override;
+    /// The hits of one row (thread-safe).
+    void trace_row(int row, Hit *out) const;
+    const FirstPassReport &first_pass() const { return report_; }
+
+private:
+    /// Where the tracer draws only overlays: pixel rectangles (first row,
+    /// last row, first column, last column) outside which no ray can hit
+    /// anything; none where every pixel is traced.
+    std::optional<std::vector<std::array<int, 4>>> overlay_rects_;
+    const Tracer &tracer_;
+    const Camera &camera_;
+    unsigned threads_;
+    FirstPassReport report_;
+    std::optional<FirstHitBounds> bounds_;
+};
+
+/// Hits of camera.ray(r, c), row-major, for the whole image (tests,
+/// benchmarks and the reference; the module streams bands through
+/// Renderer); `threads` 0 means all cores.
+HitImage trace_image(const Tracer &tracer, const Camera &camera,
+                     unsigned threads = 0, bool first_pass = true,
+                     FirstPassReport *report = nullptr);
+
+} // namespace sbrt
+
+#endif

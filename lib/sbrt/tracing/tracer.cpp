@@ -1,0 +1,434 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Exact CPU ray caster
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "tracing/tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "tracing/cell_stepper.hpp"
+#include "util/error.hpp"
+#include "tracing/tracer_walk.hpp"
+
+namespace sbrt {
+
+using namespace tracer_detail;
+
+namespace {
+
+/// clip_to_box along one axis (glm's operator[] switches on its index:
+/// the axes are passed as scalars).
+inline bool clip_axis(double o, double d, double inv_d, double low, double high, int axis,
+                      double &t_near, double &t_far, int &near_axis)
+{
+    if (d == 0)
+        return !(o < low || o > high);
+    double t0 = (low - o) * inv_d, t1 = (high - o) * inv_d;
+    if (t0 > t1)
+        std::swap(t0, t1);
+    if (t0 > t_near) {
+        t_near = t0;
+        near_axis = axis;
+    }
+    t_far = std::min(t_far, t1);
+    return true;
+}
+
+} // namespace
+
+bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 inv_d, glm::dvec3 low,
+                 glm::dvec3 high, double &t_near, double &t_far, int &near_axis)
+{
+    return clip_axis(o.x, d.x, inv_d.x, low.x, high.x, 0, t_near, t_far, near_axis) &&
+           clip_axis(o.y, d.y, inv_d.y, low.y, high.y, 1, t_near, t_far, near_axis) &&
+           clip_axis(o.z, d.z, inv_d.z, low.z, high.z, 2, t_near, t_far, near_axis);
+}
+
+glm::dvec3 face_normal(Face face)
+{
+    switch (face) {
+    case Face::west: return {-1, 0, 0};
+    case Face::east: return {1, 0, 0};
+    case Face::south: return {0, -1, 0};
+    case Face::north: return {0, 1, 0};
+    case Face::bottom: return {0, 0, -1};
+    case Face::top: return {0, 0, 1};
+    default: return {0, 0, 0};
+    }
+}
+
+Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
+    : Tracer(model, zexag, Scene{std::move(planes), {}, {}, 0, {}, {}, true})
+{
+}
+
+Tracer::Tracer(const Model &model, double zexag, Scene scene)
+    : model_(model), zexag_(zexag), scene_(std::move(scene))
+{
+    if (!(zexag > 0) || !std::isfinite(zexag))
+        fail("Tracer: vertical exaggeration ", zexag, " must be positive");
+    const Frame &f = model.frame();
+    for (uint64_t c = 0; c < f.cells(); ++c)
+        if (model.stack_size(c))
+            z_max_local_ = std::max(
+                z_max_local_, double(model.intervals()[model.stack_end(c) - 1].top));
+    for (const Borehole &b : scene_.boreholes)
+        if (!b.stack.empty())
+            z_max_local_ = std::max(z_max_local_, double(b.stack.back().top));
+    scale_ = glm::dvec3(1.0 / f.ew_res(), 1.0 / f.ns_res(),
+                        1.0 / (f.tb_res() * zexag));
+    const std::vector<ClipPlane> &planes = scene_.planes;
+    if (planes.size() > size_t(MAX_CLIP_PLANES))
+        fail("Tracer: ", planes.size(), " clip planes, at most ", MAX_CLIP_PLANES);
+    for (const ClipPlane &plane : planes) {
+        // n . (x - p) = 0 in real space is n' . (x' - p') = 0 in exaggerated
+        // space with n' = (nx, ny, nz / zexag)
+        const glm::dvec3 n(plane.normal.x, plane.normal.y, plane.normal.z / zexag);
+        const double length = glm::length(n);
+        if (!(length > 0) || !std::isfinite(length) ||
+            !std::isfinite(glm::length(plane.point)))
+            fail("clip plane: the normal must not be zero and all values finite");
+        const glm::dvec3 base(f.west, f.south, f.bottom);
+        planes_.push_back({n / scale_ / length,
+                           glm::dot(n, base - exaggerate(plane.point)) / length,
+                           n / length});
+    }
+    const Translucency &tr = scene_.translucency;
+    if (!tr.empty() && (tr.extinction.size() != model.materials().size() ||
+                        tr.color.size() != model.materials().size()))
+        fail("Tracer: translucency given for ", tr.extinction.size(),
+             " materials, the model has ", model.materials().size());
+    if (!scene_.boreholes.empty() && !(scene_.borehole_radius > 0))
+        fail("Tracer: the borehole radius must be positive");
+    index_overlays();
+    build_pyramid();
+}
+
+void Tracer::build_pyramid()
+{
+    if (!scene_.skip_empty_space || !scene_.draw_model)
+        return;
+    const Frame &f = model_.frame();
+    pyramid_ = MinMaxPyramid(model_, [&](int x, int y, ZRange &range) {
+        if (range.empty())
+            return;
+        const uint64_t cell = model_.cell_index(f.rows - 1 - y, x);
+        if (!overlay_items_.empty() &&
+            overlay_offsets_[cell] != overlay_offsets_[cell + 1]) {
+            range = {0, float(z_max_local_)}; // overlays: always walked
+            return;
+        }
+        // a column that lies wholly on the removed side of a clip plane
+        for (const LocalPlane &plane : planes_) {
+            bool removed = true;
+            for (int k = 0; k < 8 && removed; ++k) {
+                const glm::dvec3 l(x + (k & 1), y + ((k >> 1) & 1),
+                                   k & 4 ? range.high : range.low);
+                removed = glm::dot(plane.n, l) + plane.c > 0;
+            }
+            if (removed) {
+                range = ZRange();
+                return;
+            }
+        }
+    });
+}
+
+glm::dvec3 Tracer::exaggerate(glm::dvec3 p) const
+{
+    const double b = model_.frame().bottom;
+    return {p.x, p.y, b + (p.z - b) * zexag_};
+}
+
+glm::dvec3 Tracer::unexaggerate(glm::dvec3 p) const
+{
+    const double b = model_.frame().bottom;
+    return {p.x, p.y, b + (p.z - b) / zexag_};
+}
+
+glm::dvec3 Tracer::to_local(glm::dvec3 p) const
+{
+    const Frame &f = model_.frame();
+    return (p - glm::dvec3(f.west, f.south, f.bottom)) * scale_;
+}
+
+glm::dvec3 Tracer::from_local(glm::dvec3 local) const
+{
+    const Frame &f = model_.frame();
+    return {f.west + local.x * f.ew_res(), f.south + local.y * f.ns_res(),
+            f.bottom + local.z * f.tb_res()};
+}
+
+double Tracer::top_elevation() const
+{
+    return model_.frame().bottom + z_max_local_ * model_.frame().tb_res();
+}
+
+glm::dvec3 Tracer::centre() const
+{
+    const Frame &f = model_.frame();
+    return exaggerate({(f.east + f.west) / 2, (f.north + f.south) / 2,
+                       (f.bottom + top_elevation()) / 2});
+}
+
+glm::dvec3 Tracer::corner(int k) const
+{
+    const Frame &f = model_.frame();
+    return exaggerate({k & 1 ? f.east : f.west, k & 2 ? f.north : f.south,
+                       k & 4 ? top_elevation() : f.bottom});
+}
+
+double Tracer::radius() const
+{
+    return glm::length(corner(7) - corner(0)) / 2;
+}
+
+bool Tracer::meet(uint32_t material, double t_enter, double t_exit, const Entry &entry,
+                  Walk &walk) const
+{
+    if (material == EMPTY)
+        return false;
+    const Translucency &tr = scene_.translucency;
+    if (tr.opaque(material)) {
+        walk.hit.t = t_enter;
+        walk.hit.material = material;
+        walk.hit.face = entry.face;
+        walk.hit.plane = int8_t(entry.plane);
+        walk.hit.normal = entry.face >= Face::west && entry.face <= Face::top
+                              ? face_normal(entry.face)
+                              : entry.normal;
+        return true;
+    }
+    // Beer-Lambert over the exact length the ray travels in the interval;
+    // a zero-length crossing (a fence curtain, a surface) absorbs alpha
+    const double length = t_exit > t_enter
+                              ? (t_exit - t_enter) * glm::length(walk.ray.direction)
+                              : tr.length;
+    const double keep = std::exp(-tr.extinction[material] * length);
+    walk.hit.veil += glm::vec3(walk.hit.transmittance * (1 - keep) * tr.color[material]);
+    walk.hit.transmittance = float(walk.hit.transmittance * keep);
+    return walk.hit.transmittance < MIN_TRANSMITTANCE;
+}
+
+template <typename Record>
+bool Tracer::walk_stack(const Record *first, const Record *last, double t_a,
+                        double t_b, const Entry &entry, Walk &walk) const
+{
+    const double oz = walk.o.z, dz = walk.d.z;
+    const double z_a = oz + t_a * dz, z_b = oz + t_b * dz;
+    // nothing to find where the ray stays at or above the stack's top
+    if (first == last || std::min(z_a, z_b) >= double((last - 1)->top))
+        return false;
+    const double inv_dz = walk.inv_d.z;
+    auto t_at = [&](auto z) { return (double(z) - oz) * inv_dz; };
+    const Entry top{Face::top}, bottom{Face::bottom};
+    if (dz < 0) {
+        // descending: intervals (bottom, top]; the one holding z_a, then
+        // down while their tops stay above z_b
+        const Record *k = std::lower_bound(
+            first, last, z_a,
+            [](const Record &iv, double z) { return double(iv.top) < z; });
+        for (const Record *j = k;; --j) {
+            if (j != last) {
+                const double exit = j > first ? std::min(t_b, t_at((j - 1)->top)) : t_b;
+                if (meet(j->material, j == k ? t_a : t_at(j->top), exit,
+                         j == k ? entry : top, walk))
+                    return true;
+            }
+            if (j == first || !(double((j - 1)->top) > z_b))
+                return false;
+        }
+    }
+    // ascending or level: intervals [bottom, top)
+    const Record *k = std::upper_bound(
+        first, last, z_a,
+        [](double z, const Record &iv) { return z < double(iv.top); });
+    for (const Record *j = k; j != last; ++j) {
+        if (j != k && !(double((j - 1)->top) < z_b))
+            return false;
+        const double exit = dz == 0 ? t_b : std::min(t_b, t_at(j->top));
+        if (meet(j->material, j == k ? t_a : t_at((j - 1)->top), exit,
+                 j == k ? entry : bottom, walk))
+            return true;
+        if (dz == 0)
+            return false;
+    }
+    return false;
+}
+template bool Tracer::walk_stack(const Interval *, const Interval *, double, double,
+                                 const Entry &, Walk &) const;
+template bool Tracer::walk_stack(const CompactInterval *, const CompactInterval *, double,
+                                 double, const Entry &, Walk &) const;
+
+bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &entry,
+                        Walk &walk) const
+{
+    if (!overlay_items_.empty() &&
+        overlay_offsets_[cell] != overlay_offsets_[cell + 1])
+        return cross_overlays(cell, t_in, t_out, entry, walk);
+    if (!scene_.draw_model)
+        return false;
+    const StackRange stack = model_.stack(cell);
+    return model_.intervals().visit([&](const auto *records) {
+        return walk_stack(records + stack.begin, records + stack.end, t_in, t_out, entry, walk);
+    });
+}
+
+bool Tracer::leave_block(const Walk &walk, double z_in, double t_far, int ix, int iy,
+                         Jump &jump) const
+{
+    const Frame &f = model_.frame();
+    const glm::dvec3 &o = walk.o, &d = walk.d;
+    // the largest block so far: its exit and the axis the ray leaves along
+    // (-1: none); kept in plain locals, the Jump is made once at the end
+    double t_exit = 0;
+    int exit_axis = -1, x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    for (int level = 1; level < pyramid_.levels(); ++level) {
+        const ZRange &node = pyramid_.node(level, ix >> level, iy >> level);
+        if (!passes(node, z_in, z_in))
+            break; // the ray starts among the node's material
+        // the node's cells [nx0, nx1) x [ny0, ny1) and where the ray leaves them
+        const int nx0 = (ix >> level) << level, ny0 = (iy >> level) << level;
+        const int nx1 = std::min(nx0 + (1 << level), f.cols);
+        const int ny1 = std::min(ny0 + (1 << level), f.rows);
+        const double tx = d.x > 0   ? (nx1 - o.x) * walk.inv_d.x
+                          : d.x < 0 ? (nx0 - o.x) * walk.inv_d.x
+                                    : INF;
+        const double ty = d.y > 0   ? (ny1 - o.y) * walk.inv_d.y
+                          : d.y < 0 ? (ny0 - o.y) * walk.inv_d.y
+                                    : INF;
+        const double t = std::min(std::min(tx, ty), t_far);
+        if (!passes(node, z_in, o.z + t * d.z))
+            break;
+        t_exit = t;
+        exit_axis = tx < ty ? 0 : 1; // a tie goes the way the cell walk goes
+        x0 = nx0, x1 = nx1, y0 = ny0, y1 = ny1;
+    }
+    if (exit_axis < 0)
+        return false;
+    // the cell beyond
+    if (exit_axis == 0)
+        jump = {t_exit, d.x > 0 ? x1 : x0 - 1,
+                std::clamp(int(std::floor(o.y + t_exit * d.y)), y0, y1 - 1),
+                d.x > 0 ? Face::west : Face::east};
+    else
+        jump = {t_exit, std::clamp(int(std::floor(o.x + t_exit * d.x)), x0, x1 - 1),
+                d.y > 0 ? y1 : y0 - 1, d.y > 0 ? Face::south : Face::north};
+    return true;
+}
+
+Hit Tracer::trace(const Ray &ray, double t_start) const
+{
+    Hit hit;
+    trace_into(ray, t_start, hit);
+    return hit;
+}
+
+void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
+{
+    const Frame &f = model_.frame();
+    hit = Hit();
+    Walk walk{ray, to_local(ray.origin), local_direction(ray.direction), hit};
+    const glm::dvec3 o = walk.o;
+    glm::dvec3 &d = walk.d;
+    for (int a = 0; a < 3; ++a)
+        if (d[a] == 0)
+            d[a] = 0; // normalise -0
+    walk.inv_d = 1.0 / d;
+
+    // 1. slab clip to the box [0, cols] x [0, rows] x [0, z_max] (the
+    // overlays' cells only, where the model is not drawn)
+    double t_near = -INF, t_far = INF;
+    int near_axis = -1;
+    if (!clip_to_box(o, d, walk.inv_d, glm::dvec3(box_low_, 0),
+                     glm::dvec3(box_high_, z_max_local_), t_near, t_far, near_axis))
+        return;
+    Entry wall;
+    if (near_axis >= 0)
+        wall.face = entry_face(near_axis, d[near_axis]);
+    // clip planes: the kept side f(t) = a + b t <= 0 narrows [t_near, t_far]
+    for (size_t k = 0; k < planes_.size(); ++k) {
+        const double a = glm::dot(planes_[k].n, o) + planes_[k].c;
+        const double b = glm::dot(planes_[k].n, d);
+        if (b == 0) {
+            if (a > 0)
+                return; // the ray runs in the removed half-space
+            continue;
+        }
+        const double t = -a / b;
+        if (b > 0)
+            t_far = std::min(t_far, t);
+        else if (t > t_near) {
+            t_near = t;
+            wall = {Face::plane, planes_[k].shading_normal, int(k)};
+        }
+    }
+    // the walk starts no earlier than the camera (t = 0: the camera is in
+    // the box) nor than t_start (nothing to meet before: in the air)
+    const double start = std::max(t_start, 0.0);
+    if (t_near < start) {
+        t_near = start;
+        wall = {Face::none, -ray.direction};
+    }
+    if (!(t_near <= t_far) || z_max_local_ <= 0)
+        return;
+
+    // only a few overlays and no model: meet each overlay directly, no
+    // walk over the cells between them
+    if (!scene_.draw_model && all_overlays_.size() <= DIRECT_OVERLAYS) {
+        std::vector<Event> events;
+        overlay_events(all_overlays_.data(), all_overlays_.data() + all_overlays_.size(),
+                       t_near, t_far, walk, events);
+        if (cross_events(events, t_near, t_far, wall, nullptr, walk) &&
+            walk.hit.is_hit())
+            walk.hit.point = from_local(o + walk.hit.t * d);
+        return;
+    }
+
+    // 2. the cells from the entry point (a 2D DDA), skipping the blocks
+    // of cells the pyramid says hold nothing at the ray's height
+    CellStepper cells(o.x, o.y, d.x, d.y, walk.inv_d.x, walk.inv_d.y, t_near, t_far,
+                      wall.face, f.cols, f.rows);
+    // the block of 2 x 2 cells the ray last failed to skip: while it is in
+    // there, the cell walk goes on without trying (close above material, a
+    // try costs more than it saves)
+    int stuck_x = -1, stuck_y = -1;
+    const bool skipping = pyramid_.levels() > 0;
+    // bounded: a ray crosses at most cols + rows cells (a jump counts as one)
+    for (int steps = 0; !cells.done() && steps <= f.cols + f.rows + 1;
+         ++steps, wall.face = cells.face(), wall.plane = -1) {
+        // (past the first cell, the entry is a cell's face: its normal is
+        // face_normal's, the Entry's is not read)
+        const int ix = cells.x(), iy = cells.y();
+        const double t_in = cells.t_in(), t_out = cells.t_out();
+        const double z_in = o.z + t_in * d.z;
+        if (skipping && passes(pyramid_.node(0, ix, iy), z_in, o.z + t_out * d.z)) {
+            // nothing here at the ray's height: leave the largest block of
+            // cells around that holds nothing at its height either
+            Jump jump;
+            if ((ix >> 1) != stuck_x || (iy >> 1) != stuck_y) {
+                if (leave_block(walk, z_in, t_far, ix, iy, jump)) {
+                    cells.jump_to(jump.ix, jump.iy, jump.t, jump.face);
+                    continue;
+                }
+                stuck_x = ix >> 1;
+                stuck_y = iy >> 1;
+            }
+        }
+        else if (cross_cell(model_.cell_index(f.rows - 1 - iy, ix), t_in, t_out, wall,
+                            walk)) {
+            if (walk.hit.is_hit())
+                walk.hit.point = from_local(o + walk.hit.t * d);
+            return;
+        }
+        cells.next();
+    }
+    return;
+}
+
+} // namespace sbrt

@@ -1,0 +1,175 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Exact CPU reference ray caster (double precision): slab clip
+ *            to the model's box, 2D DDA over the cells, and in each cell the
+ *            z-range the ray covers selects the intervals it crosses
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_TRACER_HPP
+#define SBRT_TRACER_HPP
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "scene/camera.hpp"
+#include "scene/minmax_pyramid.hpp"
+#include "model/model.hpp"
+#include "scene/scene.hpp"
+
+namespace sbrt {
+
+/// Face of a hit: which surface the ray entered the material through (a
+/// cell's wall, an interval's bottom or top, a clip plane, a borehole's
+/// mantle or the plane splitting it, a fence curtain).
+enum class Face : uint8_t { none, west, east, south, north, bottom, top, plane,
+                            cylinder, fence, split };
+
+/// Outward unit normal of a cell face (zero for the other faces).
+glm::dvec3 face_normal(Face face);
+
+/// \brief What a ray meets: its first opaque hit (t in map units along the
+/// ray), and the light of the translucent strata in front of it. One per
+/// pixel, so kept small (72 bytes): the position in double precision, the
+/// shading terms in single.
+struct Hit {
+    double t = std::numeric_limits<double>::infinity();
+    glm::dvec3 point{0}; ///< real (unexaggerated) map coordinates
+    glm::vec3 normal{0};
+    /// Colour (0..1, premultiplied) the translucent strata add in front of
+    /// the hit, and the share of the hit's (or background's) light that
+    /// reaches the camera through them.
+    glm::vec3 veil{0};
+    float transmittance = 1;
+    uint32_t material = EMPTY;
+    Face face = Face::none;
+    int8_t plane = -1; ///< the clip plane hit, with Face::plane
+    bool is_hit() const { return material != EMPTY; }
+};
+
+/// Below this transmittance a ray stops: what is behind adds less than a
+/// tenth of one 8-bit colour level.
+constexpr double MIN_TRANSMITTANCE = 1.0 / 4096;
+
+/// Slab clip of the ray o + t d to the box [low, high]: narrows [t_near,
+/// t_far] and sets `near_axis` to the axis of the wall it enters through
+/// (unchanged where no wall narrows t_near); false where the ray runs
+/// parallel to a slab outside it.
+/// `inv_d` is 1 / d per axis (taken where d is not 0).
+bool clip_to_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 inv_d, glm::dvec3 low,
+                 glm::dvec3 high, double &t_near, double &t_far, int &near_axis);
+
+/// \brief Exact traversal of an SBRT. Rays are in map coordinates with
+/// vertical exaggeration `zexag` applied about the model's bottom.
+class Tracer {
+public:
+    Tracer(const Model &model, double zexag, Scene scene = {});
+    Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes);
+
+    /// The first hit of `ray`; `t_start` (a lower bound of the hit's t, as a
+    /// coarse first pass gives) lets the walk begin further along.
+    Hit trace(const Ray &ray, double t_start = 0) const;
+    /// The same into `hit` (whatever it held): the hit is written in
+    /// place, field by field, never copied whole from a temporary.
+    void trace_into(const Ray &ray, double t_start, Hit &hit) const;
+
+    /// Exaggerated map coordinates of a real map point, and back.
+    glm::dvec3 exaggerate(glm::dvec3 p) const;
+    glm::dvec3 unexaggerate(glm::dvec3 p) const;
+    /// The local frame: x, y in cells from the west and south edges, z in
+    /// tb_res steps from the bottom (exaggerated map -> local, and back to
+    /// real map coordinates).
+    glm::dvec3 to_local(glm::dvec3 exaggerated) const;
+    glm::dvec3 local_direction(glm::dvec3 direction) const { return direction * scale_; }
+    glm::dvec3 from_local(glm::dvec3 local) const;
+    /// Centre and half-diagonal of the model's box (exaggerated).
+    glm::dvec3 centre() const;
+    double radius() const;
+    /// Corner k (0..7, bit 0 east, bit 1 north, bit 2 top) of the model's
+    /// box, exaggerated map coordinates.
+    glm::dvec3 corner(int k) const;
+    /// Top of the highest interval, map units.
+    double top_elevation() const;
+    /// Size of a voxel in exaggerated map units (ew, ns, tb * zexag).
+    glm::dvec3 voxel_size() const { return 1.0 / scale_; }
+    /// Top of the highest interval, local units (tb_res steps).
+    double top_local() const { return z_max_local_; }
+    const Model &model() const { return model_; }
+
+    /// A clip plane in the local frame: f(l) = n . l + c, kept where f <= 0;
+    /// `shading_normal` is its unit normal in exaggerated map space.
+    struct LocalPlane {
+        glm::dvec3 n;
+        double c;
+        glm::dvec3 shading_normal;
+    };
+    const std::vector<LocalPlane> &planes() const { return planes_; }
+    double zexag() const { return zexag_; }
+    const Scene &scene() const { return scene_; }
+    /// Whether the scene holds more than the model's stacks and planes
+    /// (boreholes or a fence: only this CPU tracer draws them).
+    bool has_overlays() const { return !overlay_items_.empty(); }
+    /// Boxes (low, high corners; exaggerated map coordinates) that hold
+    /// everything this tracer can hit where it does not draw the model;
+    /// empty where it does.
+    std::vector<std::array<glm::dvec3, 2>> overlay_bounds() const;
+    /// The empty-space pyramid over what is drawn (no levels when skipping
+    /// is off or the model is not drawn).
+    const MinMaxPyramid &pyramid() const { return pyramid_; }
+
+private:
+    struct Walk;
+    struct Entry;
+    struct Event;
+    /// Where a ray leaves a block of cells it may skip: the parameter and
+    /// the cell beyond, entered through `face`.
+    struct Jump {
+        double t = 0;
+        int ix = 0, iy = 0;
+        Face face = Face::none;
+    };
+    /// The block to leave from cell (ix, iy) at height z_in, into `jump`;
+    /// false where even the 2 x 2 block holds material at the ray's height.
+    bool leave_block(const Walk &walk, double z_in, double t_far, int ix, int iy,
+                     Jump &jump) const;
+    void overlay_events(const uint32_t *first, const uint32_t *last, double t_lo,
+                        double t_hi, const Walk &walk, std::vector<Event> &events) const;
+    bool cross_events(const std::vector<Event> &events, double t_in, double t_out,
+                      Entry entry, const std::vector<Interval> *model_stack,
+                      Walk &walk) const;
+    /// The cell holding local point p (clamped to the grid).
+    uint64_t cell_at(glm::dvec3 local) const;
+    bool cross_cell(uint64_t cell, double t_in, double t_out, const Entry &entry,
+                    Walk &walk) const;
+    bool cross_overlays(uint64_t cell, double t_in, double t_out, const Entry &entry,
+                        Walk &walk) const;
+    bool cross_borehole(const Borehole &borehole, double t_a, double t_b,
+                        const Entry &entry, Walk &walk) const;
+    /// Record: Interval or CompactInterval (instantiated for both).
+    template <typename Record>
+    bool walk_stack(const Record *first, const Record *last, double t_a,
+                    double t_b, const Entry &entry, Walk &walk) const;
+    bool meet(uint32_t material, double t_enter, double t_exit, const Entry &entry,
+              Walk &walk) const;
+    void index_overlays();
+    void build_pyramid();
+
+    const Model &model_;
+    double zexag_;
+    Scene scene_;
+    std::vector<LocalPlane> planes_;
+    /// cells' lists of boreholes (index) and fence panels (index | PANEL)
+    std::vector<uint32_t> overlay_offsets_, overlay_items_;
+    std::vector<uint32_t> all_overlays_; ///< every overlay, coded the same
+    /// local x, y box the rays are clipped to: the grid, or only the cells
+    /// with overlays where the model is not drawn
+    glm::dvec2 box_low_{0}, box_high_{0};
+    double z_max_local_ = 0; ///< highest interval top, local units
+    MinMaxPyramid pyramid_;
+    glm::dvec3 scale_;       ///< map -> local per axis (exaggerated map)
+};
+
+} // namespace sbrt
+
+#endif
