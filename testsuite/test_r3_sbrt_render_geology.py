@@ -213,6 +213,18 @@ class TestGeologicalOperations(TestCase):
         self.assertModule("r3.sbrt.render", input="geo", output="dg", view="top",
                           texture="tr", ambient=1)
         self.assertEqual(self.count("if(isnull(top_class), 0, dg.red != dg.green)"), 0)
+        # the GPU drapes the same texture, tops and walls (an oblique view)
+        oblique = dict(input="geo", size=[80, 60], position=[2600, -900, 1500],
+                       target=[1000, 1250, 300], fov=30, texture=["tr", "tg", "tb"],
+                       texture_blend=0.8, overwrite=True)
+        self.assertModule("r3.sbrt.render", output="dre", backend="egl", **oblique)
+        self.assertModule("r3.sbrt.render", output="drc", backend="cpu", **oblique)
+        self.assertGreater(self.count("dre.green != 0 && abs(dre.blue - 77) < 30"), 80 * 60 // 10)
+        self.assertLessEqual(
+            self.count("abs(dre.red - drc.red) > 1 || abs(dre.green - drc.green) > 1 || "
+                       "abs(dre.blue - drc.blue) > 1"),
+            80 * 60 // 200,
+        )
         self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",
                               texture="nosuchmap")
         self.assertModuleFail("r3.sbrt.render", input="geo", output="bad",

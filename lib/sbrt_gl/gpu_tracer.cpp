@@ -159,9 +159,10 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
 namespace {
 
 /// The ray casting shader for `layout` and the form `model` is held in,
-/// writing hit records or, with `shade`, the shaded outputs (SBRT_SHADE).
+/// writing hit records or, with `shade`, the shaded outputs (SBRT_SHADE),
+/// with `drape` a drape's colours among them (SBRT_DRAPE).
 std::vector<const char *> raycast_sources(sbrt::GpuLayout layout, const sbrt::Model &model,
-                                          bool shade)
+                                          bool shade, bool drape = false)
 {
     const unsigned count_bytes = model.index().count_bytes();
     return {"#version 450\n",
@@ -170,7 +171,10 @@ std::vector<const char *> raycast_sources(sbrt::GpuLayout layout, const sbrt::Mo
             count_bytes == 1   ? "#define SBRT_COUNT_BYTES 1\n"
             : count_bytes == 2 ? "#define SBRT_COUNT_BYTES 2\n"
                                : "#define SBRT_COUNT_BYTES 4\n",
-            shade ? "#define SBRT_SHADE 1\n" : "", SHADER_COMMON_LAYOUT, SHADER_RAYCAST};
+            shade ? "#define SBRT_SHADE 1\n" : "",
+            drape ? "#define SBRT_DRAPE 1\n" : "",
+            SHADER_COMMON_LAYOUT,
+            SHADER_RAYCAST};
 }
 
 } // namespace
@@ -278,13 +282,29 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                            sbrt::Band &band, unsigned cpu_threads)
 {
     const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
-    if (!shade_program_) {
+    const bool draped = shading.drape != nullptr;
+    std::optional<GlComputeProgram> &program = draped ? drape_program_ : shade_program_;
+    if (!program) {
         const auto start = Clock::now();
-        shade_program_.emplace(gl_, raycast_sources(layout_, tracer_.model(), true));
+        program.emplace(gl_, raycast_sources(layout_, tracer_.model(), true, draped));
+        stats_.upload_ms += ms_since(start);
+    }
+    if (!looks_) {
         const std::vector<sbrt::GpuLook> looks = sbrt::make_gpu_looks(tracer_);
         looks_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, looks.size() * sizeof(sbrt::GpuLook),
                        looks.data());
         shade_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuShade));
+    }
+    if (draped && shading.drape != drape_on_gpu_) {
+        // a GpuTracer meets one Drape (the module's, or the view server's
+        // until it prepares the scene again: a new GpuTracer)
+        const auto start = Clock::now();
+        const std::vector<uint32_t> words = sbrt::make_gpu_drape(tracer_, *shading.drape);
+        drape_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                       checked_bytes(words.size() * sizeof(uint32_t), max_block_bytes_,
+                                     "drape (surface and texture)"),
+                       words.data());
+        drape_on_gpu_ = shading.drape;
         stats_.upload_ms += ms_since(start);
     }
     const int cols = camera.cols();
@@ -293,11 +313,13 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                        max_block_bytes_);
     words_.resize(size_t(row_count) * cols * words_per_pixel);
     sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
-    shade_program_->use();
+    program->use();
     bind_model();
     shade_->upload(&shade, sizeof shade);
     shade_->bind(1);
     looks_->bind(5);
+    if (draped)
+        drape_->bind(7);
     dispatch(camera, view, first_row, row_count, *pixels_, words_per_pixel * 4,
              words_.data());
 

@@ -54,7 +54,8 @@ public:
     void reset_stats();
 
     /// Rows [first, first + count) of `camera`'s image traced and shaded on
-    /// the GPU (face normals, no drape: make_gpu_shade): only the band's
+    /// the GPU (face normals, a drape or none: make_gpu_shade; the drape
+    /// goes up once, with its first band): only the band's
     /// outputs come back, RGB and those of `outputs`; rays over the loop
     /// budget are traced and shaded again on the host. Adds to stats().
     void shade_rows(const sbrt::Camera &camera, int first, int count,
@@ -63,8 +64,14 @@ public:
     /// The loop budget of this GL: llvmpipe's (GPU_LOOP_BUDGET), none on
     /// a GPU.
     uint32_t loop_budget() const { return loop_budget_; }
-    /// The shading program (compiled by the first shade_rows), or 0.
-    GLuint shade_program() const { return shade_program_ ? shade_program_->name() : 0; }
+    /// The shading program (compiled by the first shade_rows; the one with
+    /// the drape where there was one), or 0.
+    GLuint shade_program() const
+    {
+        return drape_program_   ? drape_program_->name()
+               : shade_program_ ? shade_program_->name()
+                                : 0;
+    }
 
     std::string gl_version() const;
     std::string gl_renderer() const;
@@ -104,8 +111,11 @@ private:
     std::vector<sbrt::GpuPixelHit> records_;
     /// shading on the GPU: its program, the materials' looks, the Shade
     /// block, the band's output words
-    std::optional<GlComputeProgram> shade_program_;
+    std::optional<GlComputeProgram> shade_program_, drape_program_;
     std::optional<GlBuffer> looks_, shade_, pixels_;
+    /// the drape's surface and texture (binding 7), and whose they are
+    std::optional<GlBuffer> drape_;
+    const sbrt::Drape *drape_on_gpu_ = nullptr;
     std::vector<uint32_t> words_;
     GpuStats stats_;
     uint32_t loop_budget_ = sbrt::GPU_LOOP_BUDGET;
@@ -122,7 +132,7 @@ public:
     {
         gpu_.trace_rows(camera_, first, count, out, threads_, gpu_.loop_budget());
     }
-    /// With `shading` (face normals, no drape) the GPU shades too.
+    /// With `shading` (face normals, a drape or none) the GPU shades too.
     void shade_on_gpu(const sbrt::Shading *shading) { shading_ = shading; }
     /// Bands of a million pixels or more: enough rays to fill a GPU.
     int preferred_band_rows(int cols) const override

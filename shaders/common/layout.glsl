@@ -161,7 +161,19 @@ layout(std140, binding = 1) uniform Shade {
     vec4 plane_normals[8]; // xyz: shading normal of each clip plane
     uvec4 outputs;         // x: words per pixel; y: 1 class id, 2 elevation,
                            // 4 depth
+    vec4 drape;            // SBRT_DRAPE: x: blend; y, z: the texture's
+                           // cols and rows
+    vec4 drape_map;        // the texture's (column, row) of local (x, y):
+                           // (x * lx + y, z * ly + w), pixel centres whole
 };
+
+#ifdef SBRT_DRAPE
+// The drape (lib/sbrt/shading/drape.hpp): the local z of each cell's
+// surface (float bits, < 0 where empty; cells as the model's, rows from
+// the north), then the texture's pixels from the north, r | g << 8 |
+// b << 16 | a << 24 (a = 0 where the pixel holds no value).
+layout(std430, binding = 7) readonly buffer Drape { uint drape_words[]; };
+#endif
 
 // Per material: x: its colour r | g << 8 | b << 16; y: its class id.
 layout(std430, binding = 5) readonly buffer Looks { uvec4 looks[]; };

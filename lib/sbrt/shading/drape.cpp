@@ -67,7 +67,7 @@ bool Drape::on_surface(const Hit &hit) const
     const double z = frame_.local_z(hit.point.z);
     const double u = (hit.point.x - frame_.west) / frame_.ew_res();
     const double v = (frame_.north - hit.point.y) / frame_.ns_res(); // rows
-    constexpr double EPS = 1e-3; // the GPU's points are floats
+    constexpr double EPS = SURFACE_EPS;
     if (hit.face == Face::top) {
         const float top = surface(std::clamp(int(std::floor(v)), 0, frame_.rows - 1),
                                   std::clamp(int(std::floor(u)), 0, frame_.cols - 1));

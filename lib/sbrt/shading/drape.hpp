@@ -49,6 +49,16 @@ public:
     /// the neighbour it faces.
     bool on_surface(const Hit &hit) const;
 
+    /// What the GPU's drape reads (tracing/gpu_layout.hpp, make_gpu_drape).
+    const Frame &frame() const { return frame_; }
+    /// Per cell (row from the north, column), the local z of its surface;
+    /// < 0 where the cell is empty.
+    const std::vector<float> &surface_tops() const { return surface_; }
+    const Texture &texture() const { return texture_; }
+    double blend() const { return blend_; }
+    /// The tolerance (local z) of on_surface: the GPU's points are floats.
+    static constexpr double SURFACE_EPS = 1e-3;
+
 private:
     float surface(int row, int col) const; ///< local z; < 0: none or outside
 

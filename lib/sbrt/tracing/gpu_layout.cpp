@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "shading/drape.hpp"
 #include "util/error.hpp"
 
 namespace sbrt {
@@ -103,7 +104,7 @@ GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
                         const Outputs &outputs)
 {
     if (!gpu_can_shade(shading))
-        fail("the GPU shades face normals without a drape only");
+        fail("the GPU shades face normals only");
     GpuShade shade{};
     put(shade.light, shading.light);
     shade.light[3] = float(shading.ambient);
@@ -120,7 +121,37 @@ GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
                        (outputs.elevation ? GPU_OUT_ELEVATION : 0) |
                        (outputs.depth ? GPU_OUT_DEPTH : 0);
     shade.outputs[0] = 1 + outputs.material + outputs.elevation + outputs.depth;
+    if (const Drape *drape = shading.drape) {
+        // the texture's pixel centres (Texture::sample) from local x, y
+        const Texture &t = drape->texture();
+        const Frame &f = tracer.model().frame();
+        const double per_x = t.cols / (t.east - t.west), per_y = t.rows / (t.north - t.south);
+        shade.drape[0] = float(drape->blend());
+        shade.drape[1] = float(t.cols);
+        shade.drape[2] = float(t.rows);
+        shade.drape_map[0] = float(f.ew_res() * per_x);
+        shade.drape_map[1] = float((f.west - t.west) * per_x - 0.5);
+        shade.drape_map[2] = float(-f.ns_res() * per_y);
+        shade.drape_map[3] = float((t.north - f.south) * per_y - 0.5);
+    }
     return shade;
+}
+
+std::vector<uint32_t> make_gpu_drape(const Tracer &tracer, const Drape &drape)
+{
+    const Frame &f = tracer.model().frame(), &d = drape.frame();
+    if (f.rows != d.rows || f.cols != d.cols)
+        fail("drape: made for a grid of ", d.rows, " x ", d.cols, " cells, the model has ",
+             f.rows, " x ", f.cols);
+    const std::vector<float> &tops = drape.surface_tops();
+    const Texture &t = drape.texture();
+    std::vector<uint32_t> words(tops.size() + t.rgb.size());
+    std::memcpy(words.data(), tops.data(), tops.size() * sizeof(float));
+    for (size_t i = 0; i < t.rgb.size(); ++i)
+        words[tops.size() + i] = uint32_t(t.rgb[i][0]) | uint32_t(t.rgb[i][1]) << 8 |
+                                 uint32_t(t.rgb[i][2]) << 16 |
+                                 (t.valid[i] ? 255u << 24 : 0u);
+    return words;
 }
 
 std::vector<GpuLook> make_gpu_looks(const Tracer &tracer)

@@ -20,6 +20,8 @@
 
 namespace sbrt {
 
+class Drape;
+
 /// `uniform View` (std140): every member a 16-byte vec4/uvec4.
 struct GpuView {
     float origin_hi[4];
@@ -71,9 +73,15 @@ struct GpuShade {
     float elevation_step[4]; ///< x: elevation per local z unit
     float plane_normals[MAX_CLIP_PLANES][4];
     uint32_t outputs[4];     ///< words per pixel; 1 class, 2 elevation, 4 depth
+    /// The drape (SBRT_DRAPE): x: blend; y, z: the texture's cols and rows
+    float drape[4];
+    /// The texture's column and row (pixel centres at whole numbers) of a
+    /// local point: u = x * lx + y, v = z * ly + w
+    float drape_map[4];
 };
-static_assert(sizeof(GpuShade) == 208 && offsetof(GpuShade, plane_normals) == 64 &&
-                  offsetof(GpuShade, outputs) == 192,
+static_assert(sizeof(GpuShade) == 240 && offsetof(GpuShade, plane_normals) == 64 &&
+                  offsetof(GpuShade, outputs) == 192 && offsetof(GpuShade, drape) == 208 &&
+                  offsetof(GpuShade, drape_map) == 224,
               "std140 Shade block");
 
 /// An entry of `buffer Looks` (std430 uvec4): colour r | g << 8 | b << 16
@@ -105,17 +113,24 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
                       uint32_t loop_budget = GPU_LOOP_BUDGET);
 
-/// Whether the GPU shades with `shading` itself: face normals, no drape
-/// (kernel normals and drapes are shaded on the CPU).
+/// Whether the GPU shades with `shading` itself: face normals, with or
+/// without a drape (kernel normals are shaded on the CPU).
 inline bool gpu_can_shade(const Shading &shading)
 {
-    return shading.normals == Normals::face && !shading.drape;
+    return shading.normals == Normals::face;
 }
 
 /// The Shade block of the tracer's scene lit by `shading` (gpu_can_shade),
-/// for `outputs`.
+/// for `outputs`, with its drape's blend and texture frame.
 GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
                         const Outputs &outputs);
+
+/// `buffer Drape` (std430, SBRT_DRAPE): the surface of every cell (local
+/// z as float bits, < 0 where empty; row from the north, then column, as
+/// the model's cells), then the texture's pixels, row from the north, as
+/// r | g << 8 | b << 16 | a << 24 with a = 255 where the pixel holds a
+/// value, else 0.
+std::vector<uint32_t> make_gpu_drape(const Tracer &tracer, const Drape &drape);
 
 /// The colour and class id of every material of the tracer's model.
 std::vector<GpuLook> make_gpu_looks(const Tracer &tracer);
