@@ -61,14 +61,17 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Renderer &renderer,
     G_verbose_message(_("GL_RENDERER: %s"), gpu.gl_renderer().c_str());
     gpu.reset_stats();
     sbrt_gl::GpuRowTracer rows(gpu, camera, unsigned(request.threads));
-    // face normals (with a drape or without) are shaded on the GPU too:
-    // only the outputs come back
+    // face normals, and kernel normals without smoothing where the image's
+    // hit records fit the GPU, are found and shaded on the GPU (with a
+    // drape or without): only the outputs come back
     const sbrt::Shading &shading = renderer.shading();
-    const bool on_gpu = sbrt::gpu_can_shade(shading);
+    const bool on_gpu = sbrt::gpu_can_shade(shading) &&
+                        (shading.normals == sbrt::Normals::face || gpu.kernel_fits(camera));
     if (on_gpu)
         rows.shade_on_gpu(&shading);
     G_verbose_message(on_gpu ? _("Shading: on the GPU")
-                             : _("Shading: on the CPU (kernel normals)"));
+                             : _("Shading: on the CPU (smoothed kernel normals, or an "
+                                 "image whose hits do not fit the GPU)"));
     const sbrt::RenderReport r = renderer.render(camera, outputs, sink, &rows);
     const sbrt_gl::GpuStats &s = gpu.stats();
     if (first)

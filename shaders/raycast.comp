@@ -76,122 +76,17 @@ const float MIN_TRANSMITTANCE = 1.0 / 4096.0;
 vec3 ray_d = vec3(0.0);
 float t_eye = 0.0;
 
-#ifdef SBRT_DRAPE
-// Drape::on_surface and Texture::sample in the local frame, in float
-float drape_surface(int row, int col)
-{
-    if (row < 0 || row >= int(grid.y) || col < 0 || col >= int(grid.x))
-        return -1.0;
-    return uintBitsToFloat(drape_words[uint(row) * grid.x + uint(col)]);
-}
-
-// whether a hit at local point p through `face` lies on the terrain: on
-// the top of a cell's topmost interval, or on a wall between a cell's
-// surface and the lower surface of the neighbour it faces
-bool on_drape_surface(vec3 p, uint face)
-{
-    const float EPS = 1e-3; // Drape::SURFACE_EPS
-    float u = p.x, v = float(grid.y) - p.y; // columns, rows from the north
-    if (face == FACE_TOP) {
-        float top = drape_surface(clamp(int(floor(v)), 0, int(grid.y) - 1),
-                                  clamp(int(floor(u)), 0, int(grid.x) - 1));
-        return top >= 0.0 && abs(p.z - top) <= EPS;
-    }
-    int row, col, d_row = 0, d_col = 0;
-    if (face == FACE_WEST) {
-        col = int(floor(u + 0.5)); row = int(floor(v)); d_col = -1;
-    } else if (face == FACE_EAST) {
-        col = int(floor(u + 0.5)) - 1; row = int(floor(v)); d_col = 1;
-    } else if (face == FACE_NORTH) {
-        row = int(floor(v + 0.5)); col = int(floor(u)); d_row = -1;
-    } else if (face == FACE_SOUTH) {
-        row = int(floor(v + 0.5)) - 1; col = int(floor(u)); d_row = 1;
-    } else {
-        return false;
-    }
-    float own = drape_surface(row, col), facing = drape_surface(row + d_row, col + d_col);
-    return own >= 0.0 && facing >= 0.0 && p.z <= own + EPS && p.z >= facing - EPS;
-}
-
-// the texture's colour at local point p (0..255): bilinear over the four
-// nearest pixel centres that hold a value; false where none does or p
-// lies off the texture
-bool drape_sample(vec3 p, out vec3 rgb)
-{
-    rgb = vec3(0.0);
-    int cols = int(drape.y), rows = int(drape.z);
-    float u = p.x * drape_map.x + drape_map.y, v = p.y * drape_map.z + drape_map.w;
-    if (!(u >= -0.5 && u <= float(cols) - 0.5 && v >= -0.5 && v <= float(rows) - 0.5))
-        return false;
-    int c0 = int(floor(u)), r0 = int(floor(v));
-    float fu = u - float(c0), fv = v - float(r0), weight = 0.0;
-    uint texels = grid.x * grid.y;
-    for (int k = 0; k < 4; ++k) {
-        int dc = k & 1, dr = k >> 1;
-        int r = clamp(r0 + dr, 0, rows - 1), c = clamp(c0 + dc, 0, cols - 1);
-        uint texel = drape_words[texels + uint(r * cols + c)];
-        if ((texel >> 24) == 0u)
-            continue;
-        float w = (dc == 1 ? fu : 1.0 - fu) * (dr == 1 ? fv : 1.0 - fv);
-        rgb += w * vec3(float(texel & 255u), float((texel >> 8) & 255u),
-                        float((texel >> 16) & 255u));
-        weight += w;
-    }
-    if (!(weight > 0.0))
-        return false;
-    rgb /= weight;
-    return true;
-}
-#endif
-
 #ifdef SBRT_SHADE
-// The outputs of the pixel, as lib/sbrt/shading/shading.cpp's PixelShader makes
-// them (in float: a colour level may differ where the double is within
-// rounding of a half)
+// The outputs of the pixel (common/shade.glsl), or the word that sends it
+// back to the host: over the loop budget
 void finish(uint index, vec3 point, uint code, float t)
 {
-    uint base = index * outputs.x;
     if ((code & CODE_OVER_BUDGET) != 0u) {
-        words[base] = 0u;
+        words[index * outputs.x] = 0u;
         return;
     }
-    uint material = code & 0xffffu;
-    vec3 color = background.rgb;
-    if (material != 0u) {
-        uint face = (code >> 16) & 0xfu;
-        vec3 n;
-        if (face == FACE_PLANE)
-            n = plane_normals[(code >> 20) & 0xfu].xyz;
-        else if (face == FACE_NONE)
-            n = -normalize(ray_d * box.yzw); // the camera is in the material
-        else
-            n = vec3(face == FACE_WEST ? -1.0 : face == FACE_EAST ? 1.0 : 0.0,
-                     face == FACE_SOUTH ? -1.0 : face == FACE_NORTH ? 1.0 : 0.0,
-                     face == FACE_BOTTOM ? -1.0 : face == FACE_TOP ? 1.0 : 0.0);
-        uint rgb = looks[material].x;
-        vec3 surface = vec3(float(rgb & 255u), float((rgb >> 8) & 255u),
-                            float((rgb >> 16) & 255u));
-#ifdef SBRT_DRAPE
-        vec3 texture_rgb;
-        if (on_drape_surface(point, face) && drape_sample(point, texture_rgb))
-            surface += drape.x * (texture_rgb - surface);
-#endif
-        float lambert = max(0.0, dot(light.xyz, n));
-        color = surface * (light.w + (1.0 - light.w) * lambert);
-    }
-    color = 255.0 * veil + transmittance * color;
-    uvec3 c = uvec3(floor(clamp(color, 0.0, 255.0) + 0.5));
-    words[base] = c.r | c.g << 8 | c.b << 16 | 255u << 24;
-    uint k = base + 1u;
-    const uint NAN_BITS = 0x7fc00000u;
-    if ((outputs.y & 1u) != 0u)
-        words[k++] = material != 0u ? looks[material].y : 0x80000000u;
-    if ((outputs.y & 2u) != 0u)
-        words[k++] = material != 0u
-            ? floatBitsToUint(real_unit.w + point.z * elevation_step.x) : NAN_BITS;
-    if ((outputs.y & 4u) != 0u)
-        words[k++] = material != 0u
-            ? floatBitsToUint(length((t - t_eye) * ray_d * real_unit.xyz)) : NAN_BITS;
+    write_pixel(index, point, code, hit_normal(code, ray_d),
+                vec4(veil, transmittance), length((t - t_eye) * ray_d * real_unit.xyz));
 }
 #else
 void finish(uint index, vec3 point, uint code, float t)

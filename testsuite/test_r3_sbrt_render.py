@@ -275,6 +275,25 @@ class TestRenderTopView(TestCase):
         )
         self.assertEqual(self.differing_cells("nf_m", "nk_m"), 0)
         self.assertGreater(self.differing_cells("nf.red", "nk.red"), 100)
+        # without smoothing the GPU finds the kernel normals itself: the
+        # CPU's image but for float rounding on a few pixels
+        for backend in ("cpu", "egl"):
+            run = subprocess.run(
+                ["r3.sbrt.render", "size=%d,%d" % size, "input=geo", f"output=nk_{backend}",
+                 "normals=kernel", "kernel=5", f"backend={backend}", "--overwrite",
+                 "--verbose"],
+                capture_output=True, text=True,
+            )
+            self.assertEqual(run.returncode, 0, msg=run.stderr)
+        self.assertIn("Shading: on the GPU", run.stderr)
+        self.runModule(
+            "r.mapcalc", overwrite=True,
+            expression="nk_far = abs(nk_cpu.red - nk_egl.red) > 1 || "
+            "abs(nk_cpu.green - nk_egl.green) > 1",
+        )
+        far = int(float(gs.parse_command("r.univar", map="nk_far", flags="g")["sum"]))
+        self.assertLessEqual(far, 80 * 60 // 100)
+        self.assertGreater(self.differing_cells("nk_egl.red", "nf.red"), 100)
         self.assertModuleFail("r3.sbrt.render", size=size, input="geo", output="bad",
                               normals="kernel", kernel=4)
         self.runModule("g.region", region="geo_region")

@@ -294,7 +294,7 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     RowTracer &source = rows ? *rows : *cpu;
     const RowShader shade{*tracer_, PixelShader(*model_, shading_), camera};
     std::optional<KernelBands> kernel;
-    if (shading_.normals == Normals::kernel)
+    if (shading_.normals == Normals::kernel && !(rows && rows->shades_kernel_normals()))
         kernel.emplace(*tracer_, camera, shading_, source, threads);
     if (cpu && !kernel)
         render_rows(*cpu, shade, outputs, sink, threads, camera.rows(), cols, report);

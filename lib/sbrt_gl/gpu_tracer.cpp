@@ -12,6 +12,7 @@
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 #include "shader_sources.hpp"
+#include "shading/kernel_normals.hpp"
 
 namespace sbrt_gl {
 
@@ -158,13 +159,22 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
 
 namespace {
 
-/// The ray casting shader for `layout` and the form `model` is held in,
-/// writing hit records or, with `shade`, the shaded outputs (SBRT_SHADE),
-/// with `drape` a drape's colours among them (SBRT_DRAPE).
-std::vector<const char *> raycast_sources(sbrt::GpuLayout layout, const sbrt::Model &model,
-                                          bool shade, bool drape = false)
+/// What a program of the GPU path does.
+enum class Pass {
+    records,      ///< raycast.comp: hit records
+    shade,        ///< raycast.comp: the shaded outputs (SBRT_SHADE)
+    kernel_depth, ///< kernel.comp: the view depths (SBRT_KERNEL_DEPTH)
+    kernel_shade  ///< kernel.comp: kernel normals and the shaded outputs
+};
+
+/// The sources of `pass` for `layout` and the form `model` is held in;
+/// with `drape`, a drape's colours among the outputs (SBRT_DRAPE).
+std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
+                                       const sbrt::Model &model, bool drape = false)
 {
     const unsigned count_bytes = model.index().count_bytes();
+    const bool shade = pass == Pass::shade || pass == Pass::kernel_shade;
+    const bool kernel = pass == Pass::kernel_depth || pass == Pass::kernel_shade;
     return {"#version 450\n",
             layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
             model.intervals().is_compact() ? "#define SBRT_COMPACT_INTERVALS 1\n" : "",
@@ -172,9 +182,12 @@ std::vector<const char *> raycast_sources(sbrt::GpuLayout layout, const sbrt::Mo
             : count_bytes == 2 ? "#define SBRT_COUNT_BYTES 2\n"
                                : "#define SBRT_COUNT_BYTES 4\n",
             shade ? "#define SBRT_SHADE 1\n" : "",
-            drape ? "#define SBRT_DRAPE 1\n" : "",
+            drape && shade ? "#define SBRT_DRAPE 1\n" : "",
+            kernel ? "#define SBRT_KERNEL 1\n" : "",
+            pass == Pass::kernel_depth ? "#define SBRT_KERNEL_DEPTH 1\n" : "",
             SHADER_COMMON_LAYOUT,
-            SHADER_RAYCAST};
+            shade ? SHADER_COMMON_SHADE : "",
+            kernel ? SHADER_KERNEL : SHADER_RAYCAST};
 }
 
 } // namespace
@@ -183,7 +196,7 @@ const GlComputeProgram &GpuTracer::record_program() const
 {
     // compiled when first used: a render shaded on the GPU never needs it
     if (!program_)
-        program_.emplace(gl_, raycast_sources(layout_, tracer_.model(), false));
+        program_.emplace(gl_, pass_sources(Pass::records, layout_, tracer_.model()));
     return *program_;
 }
 
@@ -277,16 +290,16 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
     stats_.readback_ms += ms_since(start);
 }
 
-void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_count,
-                           const sbrt::Shading &shading, const sbrt::Outputs &outputs,
-                           sbrt::Band &band, unsigned cpu_threads)
+GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, bool kernel)
 {
-    const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     const bool draped = shading.drape != nullptr;
-    std::optional<GlComputeProgram> &program = draped ? drape_program_ : shade_program_;
+    std::optional<GlComputeProgram> &program =
+        kernel ? (draped ? kernel_drape_program_ : kernel_program_)
+               : (draped ? drape_program_ : shade_program_);
     if (!program) {
         const auto start = Clock::now();
-        program.emplace(gl_, raycast_sources(layout_, tracer_.model(), true, draped));
+        program.emplace(gl_, pass_sources(kernel ? Pass::kernel_shade : Pass::shade, layout_,
+                                          tracer_.model(), draped));
         stats_.upload_ms += ms_since(start);
     }
     if (!looks_) {
@@ -307,23 +320,141 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
         drape_on_gpu_ = shading.drape;
         stats_.upload_ms += ms_since(start);
     }
+    return *program;
+}
+
+void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading)
+{
+    shade_->upload(&shade, sizeof shade);
+    shade_->bind(1);
+    looks_->bind(5);
+    if (shading.drape)
+        drape_->bind(7);
+}
+
+void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_count,
+                           const sbrt::Shading &shading, const sbrt::Outputs &outputs,
+                           sbrt::Band &band, unsigned cpu_threads)
+{
+    const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
+    GlComputeProgram &program = shading_program(shading, false);
     const int cols = camera.cols();
     const size_t words_per_pixel = shade.outputs[0];
     ensure_band_buffer(gl_, pixels_, row_count, size_t(cols) * words_per_pixel * 4,
                        max_block_bytes_);
     words_.resize(size_t(row_count) * cols * words_per_pixel);
     sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
-    program->use();
+    program.use();
     bind_model();
-    shade_->upload(&shade, sizeof shade);
-    shade_->bind(1);
-    looks_->bind(5);
-    if (draped)
-        drape_->bind(7);
+    bind_shading(shade, shading);
     dispatch(camera, view, first_row, row_count, *pixels_, words_per_pixel * 4,
              words_.data());
+    unpack_words(camera, first_row, row_count, shading, outputs, words_per_pixel, band,
+                 cpu_threads);
+}
 
+bool GpuTracer::kernel_fits(const sbrt::Camera &camera) const
+{
+    const size_t pixels = size_t(camera.rows()) * size_t(camera.cols());
+    return !camera.is_window() && pixels * sizeof(sbrt::GpuPixelHit) <= max_block_bytes_;
+}
+
+void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading)
+{
+    if (!kernel_fits(camera))
+        sbrt::fail("kernel normals on the GPU: the image's hit records do not fit one "
+                   "storage buffer");
+    const int rows = camera.rows(), cols = camera.cols();
+    const size_t pixels = size_t(rows) * size_t(cols);
+    // 1. the hit records of the whole image, kept on the GPU
+    if (!image_hits_ || image_hits_->bytes() < pixels * sizeof(sbrt::GpuPixelHit)) {
+        image_hits_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * sizeof(sbrt::GpuPixelHit));
+        depths_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * sizeof(float));
+    }
+    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
+    view.options[2] = 0;
+    view.options[3] = uint32_t(rows);
+    record_program().use();
+    bind_model();
+    view_.upload(&view, sizeof view);
+    image_hits_->bind(2);
+    auto start = Clock::now();
+    gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((rows + 7) / 8), 1);
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // 2. the kernel's cells and camera, and every pixel's view depth
+    const sbrt::KernelNormals kernel(tracer_, camera, shading.kernel);
+    kernel_ = sbrt::make_gpu_kernel(tracer_, camera, kernel);
+    const std::vector<float> cells = sbrt::make_gpu_kernel_cells(kernel);
+    kernel_cells_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, cells.size() * sizeof(float),
+                          cells.data());
+    if (!kernel_block_)
+        kernel_block_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuKernel));
+    kernel_block_->upload(&kernel_, sizeof kernel_);
+    if (!kernel_depth_program_)
+        kernel_depth_program_.emplace(
+            gl_, pass_sources(Pass::kernel_depth, layout_, tracer_.model()));
+    kernel_depth_program_->use();
+    view_.bind(0);
+    kernel_block_->bind(2);
+    image_hits_->bind(0);
+    depths_->bind(1);
+    gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((rows + 7) / 8), 1);
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gl_.Finish();
+    check_gl(gl_, "the kernel normals' trace and depth passes");
+    stats_.trace_ms += ms_since(start);
+}
+
+void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int row_count,
+                                  const sbrt::Shading &shading, const sbrt::Outputs &outputs,
+                                  sbrt::Band &band, unsigned cpu_threads)
+{
+    const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
+    GlComputeProgram &program = shading_program(shading, true);
+    const int cols = camera.cols();
+    const size_t words_per_pixel = shade.outputs[0], row_bytes = size_t(cols) * words_per_pixel * 4;
+    ensure_band_buffer(gl_, pixels_, row_count, row_bytes, max_block_bytes_);
+    words_.resize(size_t(row_count) * cols * words_per_pixel);
+    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
+    view_.upload(&view, sizeof view);
+    program.use();
+    view_.bind(0);
+    bind_shading(shade, shading);
+    kernel_block_->bind(2);
+    image_hits_->bind(0);
+    depths_->bind(1);
+    kernel_cells_->bind(4);
+    pixels_->bind(2);
+    const int band_rows = int(pixels_->bytes() / row_bytes);
+    for (int first = first_row; first < first_row + row_count; first += band_rows) {
+        const int count = std::min(band_rows, first_row + row_count - first);
+        kernel_.counts[1] = uint32_t(first);
+        kernel_.counts[2] = uint32_t(count);
+        kernel_block_->upload(&kernel_, sizeof kernel_);
+        auto start = Clock::now();
+        gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
+        gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        gl_.Finish();
+        check_gl(gl_, "the kernel normals' shading pass");
+        stats_.trace_ms += ms_since(start);
+        start = Clock::now();
+        pixels_->download(reinterpret_cast<uint8_t *>(words_.data()) +
+                              size_t(first - first_row) * row_bytes,
+                          size_t(count) * row_bytes);
+        stats_.readback_ms += ms_since(start);
+        ++stats_.bands;
+    }
+    unpack_words(camera, first_row, row_count, shading, outputs, words_per_pixel, band,
+                 cpu_threads);
+}
+
+void GpuTracer::unpack_words(const sbrt::Camera &camera, int first_row, int row_count,
+                             const sbrt::Shading &shading, const sbrt::Outputs &outputs,
+                             size_t words_per_pixel, sbrt::Band &band, unsigned cpu_threads)
+{
     // the words into the band; rays over the budget traced and shaded here
+    // (with their face normals)
+    const int cols = camera.cols();
     const auto start = Clock::now();
     std::vector<size_t> over_per_row(size_t(row_count), 0);
     const sbrt::PixelShader shader(tracer_.model(), shading);

@@ -61,6 +61,18 @@ public:
     void shade_rows(const sbrt::Camera &camera, int first, int count,
                     const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                     sbrt::Band &band, unsigned cpu_threads = 0);
+    /// Whether kernel normals of `camera`'s image can be found on the GPU:
+    /// the hit records of the whole image fit one storage buffer (and the
+    /// camera is not a window of a larger image).
+    bool kernel_fits(const sbrt::Camera &camera) const;
+    /// Kernel normals on the GPU, first for a camera: traces the hit records
+    /// of its whole image and their view depths, kept on the GPU.
+    void prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading);
+    /// Then rows [first, first + count): kernel normals (shading.kernel,
+    /// no smoothing) from the depths, shaded as shade_rows does.
+    void shade_kernel_rows(const sbrt::Camera &camera, int first, int count,
+                           const sbrt::Shading &shading, const sbrt::Outputs &outputs,
+                           sbrt::Band &band, unsigned cpu_threads = 0);
     /// The loop budget of this GL: llvmpipe's (GPU_LOOP_BUDGET), none on
     /// a GPU.
     uint32_t loop_budget() const { return loop_budget_; }
@@ -71,6 +83,14 @@ public:
         return drape_program_   ? drape_program_->name()
                : shade_program_ ? shade_program_->name()
                                 : 0;
+    }
+    /// The kernel normals' shading program (compiled by the first
+    /// shade_kernel_rows), or 0.
+    GLuint kernel_program() const
+    {
+        return kernel_drape_program_ ? kernel_drape_program_->name()
+               : kernel_program_     ? kernel_program_->name()
+                                     : 0;
     }
 
     std::string gl_version() const;
@@ -93,6 +113,17 @@ private:
     /// `band_rows`, reading `bytes_per_pixel` of each back into `out`.
     void dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, int first, int count,
                   GlBuffer &buffer, size_t bytes_per_pixel, void *out);
+    /// The shading program for `shading` (with its drape; the kernel
+    /// normals' pass or the ray casting one), compiled and its buffers
+    /// uploaded when first needed.
+    GlComputeProgram &shading_program(const sbrt::Shading &shading, bool kernel);
+    /// Binds the Shade block, the looks and the drape.
+    void bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading);
+    /// The shaded words of rows [first, first + count) into `band`; the
+    /// rays over the loop budget traced and shaded on the host.
+    void unpack_words(const sbrt::Camera &camera, int first, int count,
+                      const sbrt::Shading &shading, const sbrt::Outputs &outputs,
+                      size_t words_per_pixel, sbrt::Band &band, unsigned cpu_threads);
 
     std::chrono::steady_clock::time_point created_; ///< times the upload
     const sbrt::Tracer &tracer_;
@@ -112,6 +143,13 @@ private:
     /// shading on the GPU: its program, the materials' looks, the Shade
     /// block, the band's output words
     std::optional<GlComputeProgram> shade_program_, drape_program_;
+    /// kernel normals: the depth pass and the shading pass (with a drape
+    /// or without), the whole image's hit records and depths, the
+    /// kernel's cells and its Kernel block
+    std::optional<GlComputeProgram> kernel_depth_program_, kernel_program_,
+        kernel_drape_program_;
+    std::optional<GlBuffer> image_hits_, depths_, kernel_cells_, kernel_block_;
+    sbrt::GpuKernel kernel_{};
     std::optional<GlBuffer> looks_, shade_, pixels_;
     /// the drape's surface and texture (binding 7), and whose they are
     std::optional<GlBuffer> drape_;
@@ -132,8 +170,14 @@ public:
     {
         gpu_.trace_rows(camera_, first, count, out, threads_, gpu_.loop_budget());
     }
-    /// With `shading` (face normals, a drape or none) the GPU shades too.
+    /// With `shading` (gpu_can_shade) the GPU shades too.
     void shade_on_gpu(const sbrt::Shading *shading) { shading_ = shading; }
+    /// Kernel normals on the GPU: where it shades and the image fits.
+    bool shades_kernel_normals() const override
+    {
+        return shading_ && shading_->normals == sbrt::Normals::kernel &&
+               gpu_.kernel_fits(camera_);
+    }
     /// Bands of a million pixels or more: enough rays to fill a GPU.
     int preferred_band_rows(int cols) const override
     {
@@ -144,6 +188,15 @@ public:
     {
         if (!shading_)
             return false;
+        if (shading_->normals == sbrt::Normals::kernel) {
+            if (!shades_kernel_normals())
+                return false;
+            if (!kernel_prepared_)
+                gpu_.prepare_kernel(camera_, *shading_);
+            kernel_prepared_ = true;
+            gpu_.shade_kernel_rows(camera_, first, count, *shading_, outputs, band, threads_);
+            return true;
+        }
         gpu_.shade_rows(camera_, first, count, *shading_, outputs, band, threads_);
         return true;
     }
@@ -153,6 +206,7 @@ private:
     const sbrt::Camera &camera_;
     unsigned threads_;
     const sbrt::Shading *shading_ = nullptr;
+    bool kernel_prepared_ = false; ///< this camera's hit records are on the GPU
 };
 
 } // namespace sbrt_gl

@@ -10,7 +10,9 @@
 namespace sbrt_gl {
 
 extern const char *const SHADER_COMMON_LAYOUT; ///< shaders/common/layout.glsl
+extern const char *const SHADER_COMMON_SHADE;  ///< shaders/common/shade.glsl
 extern const char *const SHADER_RAYCAST;       ///< shaders/raycast.comp
+extern const char *const SHADER_KERNEL;        ///< shaders/kernel.comp
 
 } // namespace sbrt_gl
 

@@ -30,6 +30,7 @@ layout(std140, binding = 0) uniform View {
                         // empty-space skipping)
 };
 
+#ifndef SBRT_KERNEL
 // The model, in one of two layouts (section 4.2 of Graciano et al.), read
 // through stack_range, interval_material and interval_top. A cell's stack
 // is the intervals [first, last), bottom to top; an interval is its
@@ -143,6 +144,8 @@ layout(std430, binding = 4) readonly buffer Pyramid {
 // extinction per exaggerated map unit; negative for an opaque material.
 layout(std430, binding = 3) readonly buffer Materials { vec4 materials[]; };
 
+#endif // SBRT_KERNEL
+
 #ifdef SBRT_SHADE
 // Shaded on the GPU: per pixel of the band, row-major from its top row,
 // Shade.outputs.x words: RGBA8 (alpha 0: over the loop budget, traced again
@@ -177,15 +180,41 @@ layout(std430, binding = 7) readonly buffer Drape { uint drape_words[]; };
 
 // Per material: x: its colour r | g << 8 | b << 16; y: its class id.
 layout(std430, binding = 5) readonly buffer Looks { uvec4 looks[]; };
-#else
-// One record per pixel of the band, row-major from its top row.
+#endif
+
+// A hit record: what the ray of a pixel met.
 struct PixelHit {
     vec3 point;         // local coordinates of the hit
     uint code;          // material | face << 16 | plane << 20 | over budget << 24
     vec4 veil;          // rgb: light of the translucent strata in front of
                         // the hit (premultiplied); a: transmittance
 };
+#ifndef SBRT_SHADE
+// One record per pixel of the band, row-major from its top row.
 layout(std430, binding = 2) writeonly buffer Hits { PixelHit hits[]; };
+#endif
+
+#ifdef SBRT_KERNEL
+// The image-space kernel normals' passes (kernel.comp), over the hit
+// records of the whole image, row-major (binding 0), and its view depths
+// (binding 1; written by the depth pass, SBRT_KERNEL_DEPTH).
+layout(std430, binding = 0) readonly buffer ImageHits { PixelHit image_hits[]; };
+layout(std430, binding = 1) buffer Depths { float depths[]; };
+// The kernel's cells (lib/sbrt/shading/kernel_normals.hpp): per cell two
+// vec4: the unit vector from the centre and its offset along the view's
+// forward axis; its offsets along du and dv.
+layout(std430, binding = 4) readonly buffer KernelCells { vec4 kernel_cells[]; };
+// The camera in the kernel's terms; mirrored by sbrt::GpuKernel.
+layout(std140, binding = 2) uniform Kernel {
+    vec4 kernel_eye;     // xyz: the camera's origin from the model's corner
+                         // (exaggerated map units); w: 1 = parallel rays
+    vec4 kernel_forward; // xyz: unit view axis; w: the tolerance's voxel
+    vec4 kernel_du;      // xyz: du; w: du . du
+    vec4 kernel_dv;      // xyz: dv; w: dv . dv
+    vec4 kernel_voxel;   // xyz: exaggerated map units per local unit
+    uvec4 kernel_counts; // x: cells; y: first image row of this dispatch;
+                         // z: its rows
+};
 #endif
 
 const uint FACE_NONE = 0u, FACE_WEST = 1u, FACE_EAST = 2u, FACE_SOUTH = 3u,

@@ -531,7 +531,11 @@ void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layo
     const Outputs all{true, true, true};
     const Image want = renderer.render_image(camera, all);
     const Image got = renderer.render_image(camera, all, &rows);
-    EXPECT_NE(gpu.shade_program(), 0u) << "the GPU did not shade: " << what;
+    EXPECT_TRUE(gpu.shade_program() != 0 || gpu.kernel_program() != 0)
+        << "the GPU did not shade: " << what;
+    if (renderer.shading().normals == Normals::kernel) {
+        EXPECT_NE(gpu.kernel_program(), 0u) << "kernel normals not found on the GPU: " << what;
+    }
     const size_t n = want.material.size();
     size_t classes = 0, colours = 0, far = 0, hits = 0;
     const double tolerance = 2e-5 * 2 * renderer.tracer().radius();
@@ -590,6 +594,35 @@ TEST_P(Gpu, ShadesOnTheGpuAsTheCpuDoes)
                               Camera::perspective(inside, inside + glm::dvec3(1, 0.3, -0.2),
                                                   70, 40, 50),
                               "inside");
+}
+
+TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
+{
+    const Model m = geology(40, 56, 30);
+    for (int k : {3, 5, 9}) {
+        Shading kernel;
+        kernel.light = Shading::light_from(250, 30);
+        kernel.normals = Normals::kernel;
+        kernel.kernel = k;
+        const Renderer renderer(m, 2.0, Scene{}, kernel, {2, true, 16});
+        const Tracer &t = renderer.tracer();
+        const glm::dvec3 c = t.centre();
+        const std::string what = "kernel " + std::to_string(k);
+        expect_gpu_shading_as_cpu(*context_, layout(), renderer,
+                                  Camera::perspective(c + 2.2 * t.radius() *
+                                                              glm::normalize(glm::dvec3(0.6, -0.5, 0.6)),
+                                                      c, 40, 61, 83),
+                                  what);
+        expect_gpu_shading_as_cpu(*context_, layout(), renderer,
+                                  Camera::orthographic(c + glm::dvec3(300, -400, 500), c,
+                                                       1.5 * t.radius(), 47, 64),
+                                  what + " orthographic");
+    }
+    // smoothing stays on the CPU (the renderer's window of rows)
+    Shading smooth;
+    smooth.normals = Normals::kernel;
+    smooth.smooth = 1.0;
+    EXPECT_FALSE(gpu_can_shade(smooth));
 }
 
 TEST_P(Gpu, ShadesADrapeOnTheGpuAsTheCpuDoes)

@@ -49,12 +49,18 @@ public:
     bool normal(const Hit &hit, double depth, const DepthAt &depth_at,
                 glm::vec3 &out) const;
 
-private:
     /// A kernel cell's offset from the centre in the camera's terms.
     struct Cell {
         glm::dvec3 unit; ///< unit vector from the centre (map space)
         double along_du, along_dv, along_forward;
     };
+    /// The k^3 - 1 cells around the centre (what the GPU's pass reads).
+    const std::vector<Cell> &cells() const { return cells_; }
+    /// The voxel size along x (exaggerated map units) that the depth
+    /// tolerance adds to the depth.
+    double tolerance_voxel() const { return voxel_x_; }
+
+private:
 
     const Tracer &tracer_;
     int rows_, cols_;

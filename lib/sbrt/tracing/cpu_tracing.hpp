@@ -47,6 +47,9 @@ public:
     {
         return false;
     }
+    /// Whether shade_rows also finds the image-space kernel normals (the
+    /// renderer then keeps no window of hits of its own).
+    virtual bool shades_kernel_normals() const { return false; }
 };
 
 /// \brief The exact CPU tracer over the rows of `camera`, on `threads`

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "shading/drape.hpp"
+#include "shading/kernel_normals.hpp"
 #include "util/error.hpp"
 
 namespace sbrt {
@@ -135,6 +136,34 @@ GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
         shade.drape_map[3] = float((t.north - f.south) * per_y - 0.5);
     }
     return shade;
+}
+
+GpuKernel make_gpu_kernel(const Tracer &tracer, const Camera &camera,
+                          const KernelNormals &kernel)
+{
+    GpuKernel k{};
+    put(k.eye, camera.origin() - tracer.corner(0));
+    k.eye[3] = camera.parallel() ? 1 : 0;
+    put(k.forward, camera.forward());
+    k.forward[3] = float(kernel.tolerance_voxel());
+    put(k.du, camera.du());
+    k.du[3] = float(glm::dot(camera.du(), camera.du()));
+    put(k.dv, camera.dv());
+    k.dv[3] = float(glm::dot(camera.dv(), camera.dv()));
+    put(k.voxel, tracer.voxel_size());
+    k.counts[0] = uint32_t(kernel.cells().size());
+    return k;
+}
+
+std::vector<float> make_gpu_kernel_cells(const KernelNormals &kernel)
+{
+    std::vector<float> words;
+    words.reserve(kernel.cells().size() * 8);
+    for (const KernelNormals::Cell &cell : kernel.cells())
+        words.insert(words.end(), {float(cell.unit.x), float(cell.unit.y), float(cell.unit.z),
+                                   float(cell.along_forward), float(cell.along_du),
+                                   float(cell.along_dv), 0.0f, 0.0f});
+    return words;
 }
 
 std::vector<uint32_t> make_gpu_drape(const Tracer &tracer, const Drape &drape)

@@ -21,6 +21,7 @@
 namespace sbrt {
 
 class Drape;
+class KernelNormals;
 
 /// `uniform View` (std140): every member a 16-byte vec4/uvec4.
 struct GpuView {
@@ -84,6 +85,19 @@ static_assert(sizeof(GpuShade) == 240 && offsetof(GpuShade, plane_normals) == 64
                   offsetof(GpuShade, drape_map) == 224,
               "std140 Shade block");
 
+/// `uniform Kernel` (std140): the camera in the terms of the kernel
+/// normals' passes (shaders/kernel.comp).
+struct GpuKernel {
+    float eye[4];     ///< camera origin from the model's corner; w: 1 parallel
+    float forward[4]; ///< w: KernelNormals::tolerance_voxel
+    float du[4];      ///< w: du . du
+    float dv[4];      ///< w: dv . dv
+    float voxel[4];   ///< exaggerated map units per local unit
+    uint32_t counts[4]; ///< cells; first image row and rows of a dispatch
+};
+static_assert(sizeof(GpuKernel) == 96 && offsetof(GpuKernel, counts) == 80,
+              "std140 Kernel block");
+
 /// An entry of `buffer Looks` (std430 uvec4): colour r | g << 8 | b << 16
 /// and class id of a material.
 struct GpuLook {
@@ -113,12 +127,22 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
                       uint32_t loop_budget = GPU_LOOP_BUDGET);
 
-/// Whether the GPU shades with `shading` itself: face normals, with or
-/// without a drape (kernel normals are shaded on the CPU).
+/// Whether the GPU shades with `shading` itself: face normals, or kernel
+/// normals without smoothing (with it, they are found on the CPU), with or
+/// without a drape.
 inline bool gpu_can_shade(const Shading &shading)
 {
-    return shading.normals == Normals::face;
+    return shading.normals == Normals::face || !(shading.smooth > 0);
 }
+
+/// The Kernel block of `camera` (a whole image) with the kernel of size
+/// `k` (Shading::kernel); its cells' count is `cells`' size.
+GpuKernel make_gpu_kernel(const Tracer &tracer, const Camera &camera,
+                          const KernelNormals &kernel);
+
+/// `buffer KernelCells` (std430): per cell of `kernel`, (unit vector,
+/// offset along forward) and (offsets along du and dv, 0, 0).
+std::vector<float> make_gpu_kernel_cells(const KernelNormals &kernel);
 
 /// The Shade block of the tracer's scene lit by `shading` (gpu_can_shade),
 /// for `outputs`, with its drape's blend and texture frame.
