@@ -53,6 +53,16 @@ class TestViewerGui(TestCase):
         env = dict(os.environ, DISPLAY=cls.display, GRASS_SBRT_VIEWER_LOG=cls.log_path,
                    NO_AT_BRIDGE="1")
         cls.env = env
+        # the server takes connections (a loaded machine may be slow to)
+        for _ in range(100):
+            if subprocess.run(["xdotool", "getdisplaygeometry"], env=env,
+                              capture_output=True).returncode == 0:
+                break
+            if cls.xvfb.poll() is not None:
+                raise RuntimeError("Xvfb ended at once (display %s)" % cls.display)
+            time.sleep(0.1)
+        else:
+            raise RuntimeError("Xvfb on %s takes no connections" % cls.display)
         cls.viewer = subprocess.Popen(
             ["g.gui.sbrt", "input=geo", "size=%d,%d" % SIZE], cwd=cls.work, env=env,
             stdout=subprocess.DEVNULL, stderr=open(os.path.join(cls.work, "viewer.err"), "w"))
