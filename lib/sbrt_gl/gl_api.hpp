@@ -31,6 +31,9 @@ namespace sbrt_gl {
     X(PFNGLLINKPROGRAMPROC, LinkProgram)                                      \
     X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                    \
     X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                          \
+    X(PFNGLPROGRAMPARAMETERIPROC, ProgramParameteri)                          \
+    X(PFNGLGETPROGRAMBINARYPROC, GetProgramBinary)                            \
+    X(PFNGLPROGRAMBINARYPROC, ProgramBinary)                                  \
     X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                  \
     X(PFNGLUSEPROGRAMPROC, UseProgram)                                        \
     X(PFNGLGETPROGRAMRESOURCEINDEXPROC, GetProgramResourceIndex)              \

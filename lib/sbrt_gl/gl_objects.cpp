@@ -6,6 +6,7 @@
 #include "gl_objects.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include "util/error.hpp"
@@ -106,9 +107,59 @@ std::string info_log(GetInteger get_integer, GetLog get_log, GLuint object)
 } // namespace
 
 GlComputeProgram::GlComputeProgram(const GlApi &gl,
-                                   const std::vector<const char *> &sources)
+                                   const std::vector<const char *> &sources,
+                                   const ProgramCache *cache)
     : gl_(&gl)
 {
+    if (!cache || !cache->enabled()) {
+        compile(sources, false);
+        return;
+    }
+    const auto text = [&](GLenum name) {
+        const GLubyte *value = gl.GetString(name);
+        return value ? std::string(reinterpret_cast<const char *>(value)) : std::string();
+    };
+    const std::string key = ProgramCache::key(
+        text(GL_VENDOR) + '\n' + text(GL_RENDERER) + '\n' + text(GL_VERSION), sources);
+    if (load(*cache, key)) {
+        from_cache_ = true;
+        return;
+    }
+    compile(sources, true);
+    GLint length = 0;
+    gl.GetProgramiv(program_, GL_PROGRAM_BINARY_LENGTH, &length);
+    ProgramBinary binary;
+    binary.bytes.resize(size_t(std::max(length, 0)));
+    GLsizei written = 0;
+    if (length > 0)
+        gl.GetProgramBinary(program_, length, &written, &binary.format, binary.bytes.data());
+    if (gl.GetError() == GL_NO_ERROR && written == length && length > 0)
+        cache->store(key, binary); // a failed write only costs the next run a compile
+}
+
+bool GlComputeProgram::load(const ProgramCache &cache, const std::string &key)
+{
+    const std::optional<ProgramBinary> binary = cache.load(key);
+    if (!binary)
+        return false;
+    program_ = gl_->CreateProgram();
+    gl_->ProgramBinary(program_, binary->format, binary->bytes.data(),
+                       GLsizei(binary->bytes.size()));
+    GLint ok = 0;
+    gl_->GetProgramiv(program_, GL_LINK_STATUS, &ok);
+    // a binary of another driver build, or damaged: compiled again
+    while (gl_->GetError() != GL_NO_ERROR)
+        ok = 0;
+    if (!ok) {
+        gl_->DeleteProgram(program_);
+        program_ = 0;
+    }
+    return ok != 0;
+}
+
+void GlComputeProgram::compile(const std::vector<const char *> &sources, bool retrievable)
+{
+    const GlApi &gl = *gl_;
     const GLuint shader = gl.CreateShader(GL_COMPUTE_SHADER);
     gl.ShaderSource(shader, GLsizei(sources.size()), sources.data(), nullptr);
     gl.CompileShader(shader);
@@ -120,6 +171,8 @@ GlComputeProgram::GlComputeProgram(const GlApi &gl,
         sbrt::fail("OpenGL: the compute shader does not compile: ", log);
     }
     program_ = gl.CreateProgram();
+    if (retrievable)
+        gl.ProgramParameteri(program_, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
     gl.AttachShader(program_, shader);
     gl.LinkProgram(program_);
     gl.DeleteShader(shader); // stays alive while attached

@@ -7,10 +7,12 @@
 #define SBRT_GL_OBJECTS_HPP
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "gl_api.hpp"
+#include "program_cache.hpp"
 
 namespace sbrt_gl {
 
@@ -71,17 +73,29 @@ private:
 /// order; throws sbrt::Error with the compiler's log.
 class GlComputeProgram {
 public:
-    GlComputeProgram(const GlApi &gl, const std::vector<const char *> &sources);
+    /// Compiles and links `sources`; with an enabled `cache`, loads the
+    /// linked binary from it where the driver takes it back, else stores
+    /// the one it links.
+    GlComputeProgram(const GlApi &gl, const std::vector<const char *> &sources,
+                     const ProgramCache *cache = nullptr);
     ~GlComputeProgram();
     GlComputeProgram(const GlComputeProgram &) = delete;
     GlComputeProgram &operator=(const GlComputeProgram &) = delete;
 
     GLuint name() const { return program_; }
     void use() const { gl_->UseProgram(program_); }
+    /// Whether the program came from the cache (not compiled).
+    bool from_cache() const { return from_cache_; }
 
 private:
+    /// The cached binary of `key` as the program; false (no program) where
+    /// there is none or the driver refuses it.
+    bool load(const ProgramCache &cache, const std::string &key);
+    void compile(const std::vector<const char *> &sources, bool retrievable);
+
     const GlApi *gl_;
     GLuint program_ = 0;
+    bool from_cache_ = false;
 };
 
 } // namespace sbrt_gl

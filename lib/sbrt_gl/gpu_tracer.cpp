@@ -80,8 +80,8 @@ GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 } // namespace
 
 GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
-                     sbrt::GpuLayout layout)
-    : created_(Clock::now()), tracer_(tracer), gl_(context),
+                     sbrt::GpuLayout layout, ProgramCache cache)
+    : created_(Clock::now()), tracer_(tracer), gl_(context), cache_(std::move(cache)),
       max_block_bytes_(check_version(gl_, context.name())), layout_(layout),
       memory_(sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl_))),
       materials_(material_buffer(gl_, tracer)),
@@ -196,7 +196,7 @@ const GlComputeProgram &GpuTracer::record_program() const
 {
     // compiled when first used: a render shaded on the GPU never needs it
     if (!program_)
-        program_.emplace(gl_, pass_sources(Pass::records, layout_, tracer_.model()));
+        program_.emplace(gl_, pass_sources(Pass::records, layout_, tracer_.model()), &cache_);
     return *program_;
 }
 
@@ -298,8 +298,10 @@ GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, bool 
                : (draped ? drape_program_ : shade_program_);
     if (!program) {
         const auto start = Clock::now();
-        program.emplace(gl_, pass_sources(kernel ? Pass::kernel_shade : Pass::shade, layout_,
-                                          tracer_.model(), draped));
+        program.emplace(gl_,
+                        pass_sources(kernel ? Pass::kernel_shade : Pass::shade, layout_,
+                                     tracer_.model(), draped),
+                        &cache_);
         stats_.upload_ms += ms_since(start);
     }
     if (!looks_) {
@@ -392,7 +394,7 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     kernel_block_->upload(&kernel_, sizeof kernel_);
     if (!kernel_depth_program_)
         kernel_depth_program_.emplace(
-            gl_, pass_sources(Pass::kernel_depth, layout_, tracer_.model()));
+            gl_, pass_sources(Pass::kernel_depth, layout_, tracer_.model()), &cache_);
     kernel_depth_program_->use();
     view_.bind(0);
     kernel_block_->bind(2);

@@ -37,9 +37,12 @@ struct GpuStats {
 class GpuTracer {
 public:
     /// Needs the context current on this thread; uploads the model in
-    /// `layout`.
+    /// `layout`. Programs are compiled when first used, or loaded from
+    /// `cache` (by default where SBRT_PROGRAM_CACHE or the user's cache
+    /// directory says).
     GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
-              sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo);
+              sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo,
+              ProgramCache cache = ProgramCache::from_environment());
 
     sbrt::HitImage trace_image(const sbrt::Camera &camera,
                                unsigned cpu_threads = 0,
@@ -104,6 +107,13 @@ public:
     const GlApi &gl() const { return gl_; }
     /// The program that writes hit records (compiled when first asked for).
     GLuint program() const { return record_program().name(); }
+    /// Whether the shading program (shade_program) came from the cache.
+    bool shade_program_from_cache() const
+    {
+        return drape_program_   ? drape_program_->from_cache()
+               : shade_program_ ? shade_program_->from_cache()
+                                : false;
+    }
 
 private:
     const GlComputeProgram &record_program() const;
@@ -128,6 +138,7 @@ private:
     std::chrono::steady_clock::time_point created_; ///< times the upload
     const sbrt::Tracer &tracer_;
     GlApi gl_;
+    ProgramCache cache_;
     size_t max_block_bytes_;
     sbrt::GpuLayout layout_;
     sbrt::GpuMemory memory_;

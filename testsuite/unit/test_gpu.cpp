@@ -8,7 +8,11 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -18,6 +22,7 @@
 #include "tracing/cpu_tracing.hpp"
 #include "util/error.hpp"
 #include "gpu_tracer.hpp"
+#include "program_cache.hpp"
 #include "scene/hidden_materials.hpp"
 #include "shading/drape.hpp"
 #include "gpu_compare.hpp"
@@ -559,6 +564,110 @@ void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layo
 }
 
 } // namespace
+
+namespace {
+
+/// The GPU's shaded image of `renderer` from `camera`, its programs from
+/// `cache`; `from_cache` tells whether the shading program came from it.
+Image gpu_image(const sbrt_gl::GlContext &context, GpuLayout layout, const Renderer &renderer,
+                const Camera &camera, const sbrt_gl::ProgramCache &cache, bool &from_cache)
+{
+    sbrt_gl::GpuTracer gpu(context, renderer.tracer(), layout, cache);
+    sbrt_gl::GpuRowTracer rows(gpu, camera, 2);
+    rows.shade_on_gpu(&renderer.shading());
+    Image image = renderer.render_image(camera, {true, true, true}, &rows);
+    from_cache = gpu.shade_program_from_cache();
+    return image;
+}
+
+std::vector<uint8_t> read_bytes(const std::string &path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::string &path, const std::vector<uint8_t> &bytes)
+{
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+} // namespace
+
+TEST_P(Gpu, ASecondRunLoadsItsProgramsFromTheCache)
+{
+    const Model m = geology(20, 24, 16);
+    const Renderer renderer(m, 2.0, Scene{}, Shading{}, {2, true, 16});
+    const Tracer &t = renderer.tracer();
+    const Camera camera = Camera::perspective(t.centre() + 2.2 * t.radius() *
+                                                               glm::normalize(glm::dvec3(1, -1, 1)),
+                                              t.centre(), 40, 31, 37);
+    const sbrt_gl::ProgramCache cache(sbrt_test::temp_dir("programs") + "/cache");
+    bool from_cache = true;
+    const Image first = gpu_image(*context_, layout(), renderer, camera, cache, from_cache);
+    EXPECT_FALSE(from_cache) << "an empty cache gave a program";
+    // one file, the shading program's; the next tracer loads it
+    std::vector<std::string> files;
+    for (const auto &entry : std::filesystem::directory_iterator(cache.directory()))
+        files.push_back(entry.path());
+    ASSERT_EQ(files.size(), 1u);
+    const Image second = gpu_image(*context_, layout(), renderer, camera, cache, from_cache);
+    EXPECT_TRUE(from_cache) << "the cached binary was not used";
+    EXPECT_EQ(second.rgb, first.rgb);
+    EXPECT_EQ(second.material, first.material);
+    // a damaged file (a byte of the binary flipped, or cut short) is a
+    // miss: the program is compiled again and the file replaced
+    const std::vector<uint8_t> good = read_bytes(files[0]);
+    std::vector<uint8_t> flipped = good;
+    flipped[flipped.size() / 2] ^= 0x40;
+    std::vector<uint8_t> cut(good.begin(), good.begin() + long(good.size() / 3));
+    for (const auto &bad : {flipped, cut}) {
+        write_bytes(files[0], bad);
+        EXPECT_EQ(gpu_image(*context_, layout(), renderer, camera, cache, from_cache).rgb,
+                  first.rgb);
+        EXPECT_FALSE(from_cache);
+        EXPECT_EQ(read_bytes(files[0]), good) << "the damaged file was not replaced";
+    }
+    // a whole file whose binary the driver refuses (as after a driver
+    // update): compiled again
+    std::vector<uint8_t> foreign = good;
+    foreign[8] ^= 0x01; // the binary format
+    write_bytes(files[0], foreign);
+    EXPECT_EQ(gpu_image(*context_, layout(), renderer, camera, cache, from_cache).rgb,
+              first.rgb);
+    EXPECT_FALSE(from_cache);
+    // other sources are another file
+    EXPECT_NE(sbrt_gl::ProgramCache::key("gl", {"a", "b"}),
+              sbrt_gl::ProgramCache::key("gl", {"ab"}));
+    EXPECT_NE(sbrt_gl::ProgramCache::key("gl 2", {"a"}), sbrt_gl::ProgramCache::key("gl", {"a"}));
+}
+
+TEST(ProgramCache, ItsDirectoryComesFromTheEnvironment)
+{
+    // the environment as it was, for the other tests
+    const char *names[] = {"SBRT_PROGRAM_CACHE", "XDG_CACHE_HOME"};
+    std::vector<std::optional<std::string>> saved;
+    for (const char *name : names)
+        saved.push_back(std::getenv(name) ? std::optional<std::string>(std::getenv(name))
+                                          : std::nullopt);
+    setenv("SBRT_PROGRAM_CACHE", "off", 1);
+    EXPECT_FALSE(sbrt_gl::ProgramCache::from_environment().enabled());
+    setenv("SBRT_PROGRAM_CACHE", "/tmp/elsewhere", 1);
+    EXPECT_EQ(sbrt_gl::ProgramCache::from_environment().directory(), "/tmp/elsewhere");
+    unsetenv("SBRT_PROGRAM_CACHE");
+    setenv("XDG_CACHE_HOME", "/tmp/xdg", 1);
+    EXPECT_EQ(sbrt_gl::ProgramCache::from_environment().directory(), "/tmp/xdg/r3.sbrt/programs");
+    for (size_t k = 0; k < saved.size(); ++k) {
+        if (saved[k])
+            setenv(names[k], saved[k]->c_str(), 1);
+        else
+            unsetenv(names[k]);
+    }
+    // nothing there, or a directory that cannot be made: misses, no error
+    const sbrt_gl::ProgramCache nowhere("/proc/no/such/place");
+    EXPECT_FALSE(nowhere.load("0123456789abcdef"));
+    EXPECT_FALSE(nowhere.store("0123456789abcdef", sbrt_gl::ProgramBinary{1, {1, 2, 3}}));
+}
 
 TEST_P(Gpu, ShadesOnTheGpuAsTheCpuDoes)
 {
