@@ -63,6 +63,24 @@ class TestViewServer(TestCase):
                                             "opacity=5:0.4"], "vs_f")
         self.assertSameAsCommandLine(base + ["azimuth=100", "normals=kernel"], "vs_g")
 
+    def test_gpu_frames_are_the_command_lines_images(self):
+        """backend=egl (llvmpipe here, a GPU where there is one): the
+        server keeps the model on the GPU between frames, and each frame is
+        the egl command line's image; kernel normals and a hidden stratum
+        on the GPU too."""
+        base = ["input=geo", "size=120,90", "backend=egl"]
+        first = self.assertSameAsCommandLine(base + ["azimuth=225"], "vs_ga")
+        self.assertSameAsCommandLine(base + ["azimuth=100", "elevation=50"], "vs_gb")
+        self.assertSameAsCommandLine(base + ["azimuth=100", "elevation=50", "hide=3"],
+                                     "vs_gc")
+        self.assertSameAsCommandLine(base + ["azimuth=100", "normals=kernel"], "vs_gd")
+        # the CPU's image but for float rounding on a few pixels
+        cpu = self.server.render(["input=geo", "size=120,90", "azimuth=225"])
+        differing = sum(1 for i in range(0, len(cpu.rgb), 3)
+                        if max(abs(a - b) for a, b in zip(cpu.rgb[i:i + 3],
+                                                          first.rgb[i:i + 3])) > 1)
+        self.assertLessEqual(differing, 120 * 90 // 100)
+
     def test_section_faces_each_camera(self):
         """The section's removed side follows the camera: the scene is
         prepared again when the camera crosses the plane."""

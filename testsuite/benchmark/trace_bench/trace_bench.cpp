@@ -10,6 +10,10 @@
  *                        bands handed to a sink), warm, on threads= (0:
  *                        all cores); beside it the whole-image reference
  *                        (trace_image, then shade)
+ *              gpu_frame the streamed frame on the GPU (gpu=, default
+ *                        egl): the model uploaded once; traced, shaded
+ *                        (face, then kernel normals) and the RGB read back,
+ *                        warm, in turns with the CPU's frame (threads=)
  *              format    the stacks file in format 1 and 2: bytes, bytes
  *                        per interval, load (warm) and write times
  *              error     time against error: the exact method, the sampled
@@ -17,7 +21,7 @@
  *                        normals k = 3..11, each against the exact CPU
  *                        reference with face normals
  * USAGE:     trace_bench format SBRT_DIR [repeat=7] [label=name]
- *            trace_bench skipping|frame|error SBRT_DIR position=x,y,z
+ *            trace_bench skipping|frame|gpu_frame|error SBRT_DIR position=x,y,z
  *            target=x,y,z [fov=25] [zexag=1] [cols=1056] [rows=884]
  *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
  *            [threads=N] [classes=FILE: error writes the reference's class
@@ -323,6 +327,58 @@ void frame(const std::string &dir, const Args &args, const Camera &camera, doubl
                 load_ms, prepare_ms, ms[0], rays / ms[0] / 1000, ms[1], checksum);
 }
 
+/// The streamed frame on the GPU (gpu=egl|osmesa): the model uploaded
+/// once, every frame traced, shaded (face normals, then kernel normals) and
+/// its RGB bands read back into host memory, warm, best of `repeat`, in
+/// turns with the same frame on the CPU (threads=).
+void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, double zexag,
+               int repeat)
+{
+    const std::string label = args.get("label", "view");
+    const unsigned threads = unsigned(std::stoi(args.get("threads", "0")));
+    Renderer renderer(load(dir, args), zexag, Scene{}, Shading{},
+                      RenderSettings{threads, true, 0});
+    const std::unique_ptr<sbrt_gl::GlContext> context = gl_context(args);
+    if (!context) {
+        std::printf("gpu_frame label=%s no_gl_context\n", label.c_str());
+        return;
+    }
+    sbrt_gl::GpuTracer gpu(*context, renderer.tracer());
+    const double upload_ms = gpu.stats().upload_ms;
+    size_t checksum = 0;
+    const auto sink = [&](const Band &band) {
+        for (size_t i = 0; i < band.rgb.size(); i += 61)
+            checksum += band.rgb[i];
+    };
+    Shading face = renderer.shading(), kernel = face;
+    kernel.normals = Normals::kernel;
+    double dispatch_ms[2] = {INFINITY, INFINITY}; // face, kernel: the best
+    const auto on_gpu = [&](const Shading &shading, double &best_dispatch) {
+        renderer.set_shading(shading);
+        gpu.reset_stats();
+        sbrt_gl::GpuRowTracer rows(gpu, camera, threads);
+        rows.shade_on_gpu(&renderer.shading());
+        renderer.render(camera, {}, sink, &rows);
+        best_dispatch = std::min(best_dispatch, gpu.stats().trace_ms);
+    };
+    const std::vector<double> ms = best_ms_in_turns(
+        repeat, {[&] { on_gpu(face, dispatch_ms[0]); },
+                 [&] {
+                     renderer.set_shading(face);
+                     renderer.render(camera, {}, sink);
+                 },
+                 [&] { on_gpu(kernel, dispatch_ms[1]); }});
+    const double rays = double(camera.rows()) * camera.cols();
+    std::printf("gpu_frame label=%s renderer=\"%s\" cols=%d rows=%d upload_ms=%.1f "
+                "frame_ms=%.2f dispatch_ms=%.2f mrays=%.0f frames_per_s=%.1f "
+                "cpu_frame_ms=%.1f cpu_threads=%u gpu/cpu=%.1f kernel_frame_ms=%.2f "
+                "kernel_dispatch_ms=%.2f kernel/face_dispatch=%.2f (checksum %zu)\n",
+                label.c_str(), gpu.gl_renderer().c_str(), camera.cols(), camera.rows(),
+                upload_ms, ms[0], dispatch_ms[0], rays / ms[0] / 1000, 1000 / ms[0], ms[1],
+                thread_count(threads), ms[1] / ms[0], ms[2], dispatch_ms[1],
+                dispatch_ms[1] / dispatch_ms[0], checksum);
+}
+
 /// Format 1 against format 2 on the model of `directory` (whatever its
 /// own format): both written to temporary directories, each read and
 /// written `repeat` times in turns.
@@ -405,7 +461,7 @@ void compact_against_wide(const Model &read, const Args &args, const Camera &cam
 int main(int argc, char *argv[])
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s format|skipping|frame|error|compact SBRT_DIR key=value...\n", argv[0]);
+        std::fprintf(stderr, "usage: %s format|skipping|frame|gpu_frame|error|compact SBRT_DIR key=value...\n", argv[0]);
         return 2;
     }
     try {
@@ -422,17 +478,21 @@ int main(int argc, char *argv[])
             formats(argv[2], args, std::stoi(args.get("repeat", "7")));
             return 0;
         }
-        const Model model = mode == "frame" ? Model() : load(argv[2], args);
+        // the streamed modes load the model themselves (timed)
+        const bool streamed = mode == "frame" || mode == "gpu_frame";
+        const Model model = streamed ? Model() : load(argv[2], args);
         const double zexag = std::stod(args.get("zexag", "1"));
         const int repeat = std::stoi(args.get("repeat", "3"));
-        const Model framed = mode == "frame" ? read_sbrt(argv[2]) : Model();
-        const Tracer probe(mode == "frame" ? framed : model, zexag);
+        const Model framed = streamed ? read_sbrt(argv[2]) : Model();
+        const Tracer probe(streamed ? framed : model, zexag);
         const Camera camera = Camera::perspective(
             probe.exaggerate(args.point("position")), probe.exaggerate(args.point("target")),
             std::stod(args.get("fov", "25")), std::stoi(args.get("rows", "884")),
             std::stoi(args.get("cols", "1056")));
         if (mode == "frame")
             frame(argv[2], args, camera, zexag, repeat);
+        else if (mode == "gpu_frame")
+            gpu_frame(argv[2], args, camera, zexag, repeat);
         else if (mode == "skipping")
             skipping(model, args, camera, zexag, repeat);
         else if (mode == "error")

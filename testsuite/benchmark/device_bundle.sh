@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+############################################################################
+# MODULE:    testsuite/benchmark/device_bundle.sh (r3.sbrt addon)
+# PURPOSE:   Readies the GPU figures of issues 15 and 19 for the device
+#            machine (an NVIDIA GPU, 16 cores, no GRASS, no network): puts
+#            into .device/ trace_bench (GRASS-free), the shared libraries
+#            it needs beyond the C/C++ runtime, the SBRTs of the sizes
+#            given (gzipped) and device_run.sh, and Debian's glvnd
+#            packages into .gl/; both folders are ignored by git
+#            (.git/info/exclude). Prints the command for the device tool
+#            (carry .device and .gl).
+# USAGE:     make && testsuite/benchmark/device_bundle.sh [SIZES] (A B C)
+# COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+############################################################################
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+. "$root/tools/grass_env.sh"
+sbrt_location "${SBRT_BENCH_DATA:-/tmp/r3sbrt_bench}"
+sizes=${*:-A B C}
+cd "$root"
+mkdir -p .git/info
+for folder in .device .gl; do
+    grep -qx "/$folder/" .git/info/exclude 2>/dev/null || echo "/$folder/" >>.git/info/exclude
+done
+rm -rf .device && mkdir -p .device/lib .device/sbrt .gl
+make -s -C testsuite/benchmark/trace_bench >/dev/null
+cp testsuite/benchmark/trace_bench/build/trace_bench testsuite/benchmark/device_run.sh .device/
+# what the binary links beyond the C/C++ runtime and GL (the debs bring GL)
+ldd .device/trace_bench | awk '/=> \// { print $3 }' |
+    grep -vE '/(libc|libm|libstdc\+\+|libgcc_s|ld-linux[^/]*|libEGL|libGL[^/]*|libOpenGL|libGLdispatch|libdl|libpthread)\.so' |
+    xargs -r -I{} cp -L {} .device/lib/
+# the models, made and converted where the data lack them
+cat >"$SBRT_GISDBASE/device_models.sh" <<'EOS'
+set -euo pipefail
+. "$1/bench_model.sh"
+shift
+for size in "$@"; do
+    bench_model "$size" "$TOOLS" >/dev/null
+    tar -C "$(dirname "$sbrt")" -czf "$OUT/geo_$size.tar.gz" "geo_$size"
+done
+EOS
+TOOLS=$root/tools OUT=$root/.device/sbrt in_grass PERMANENT bash "$SBRT_GISDBASE/device_models.sh" \
+    "$root/tools" $sizes
+(cd .gl && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 >/dev/null)
+du -sh .device .gl
+echo "device command (carry .device and .gl):"
+echo "for f in .gl/*.deb; do dpkg -x \$f /; done; ldconfig; bash .device/device_run.sh $sizes"
