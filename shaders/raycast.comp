@@ -187,6 +187,15 @@ void main()
         t_near = t_min; // the camera is inside the box
         wall = FACE_NONE;
     }
+    if (counts.z != 0u) {
+        // the first pass: nothing before its tile's bound
+        uint side = uint(SBRT_FIRST_PASS_TILE);
+        float t_first = tile_starts[(row / side) * counts.w + pixel.x / side];
+        if (t_near < t_first) {
+            t_near = t_first;
+            wall = FACE_NONE;
+        }
+    }
     if (!(t_near <= t_far) || box.x <= 0.0)
         return;
 

@@ -14,6 +14,8 @@
 #include "shader_sources.hpp"
 #include "shading/kernel_normals.hpp"
 
+#define SBRT_STRINGIFY(x) #x
+
 namespace sbrt_gl {
 
 namespace {
@@ -164,8 +166,16 @@ enum class Pass {
     records,      ///< raycast.comp: hit records
     shade,        ///< raycast.comp: the shaded outputs (SBRT_SHADE)
     kernel_depth, ///< kernel.comp: the view depths (SBRT_KERNEL_DEPTH)
-    kernel_shade  ///< kernel.comp: kernel normals and the shaded outputs
+    kernel_shade, ///< kernel.comp: kernel normals and the shaded outputs
+    first_pass    ///< first_pass.comp: the tiles' first-hit bounds
 };
+
+/// The first pass's tile and budget, as the CPU's (cpu_tracing.hpp).
+const char *const FIRST_PASS_DEFINES =
+    "#define SBRT_FIRST_PASS_TILE " SBRT_STRINGIFY(8) "\n"
+    "#define SBRT_FIRST_PASS_BUDGET " SBRT_STRINGIFY(32) "\n";
+static_assert(sbrt::FIRST_PASS_TILE == 8 && sbrt::FIRST_PASS_BUDGET == 32,
+              "FIRST_PASS_DEFINES follow cpu_tracing.hpp");
 
 /// The sources of `pass` for `layout` and the form `model` is held in;
 /// with `drape`, a drape's colours among the outputs (SBRT_DRAPE).
@@ -185,9 +195,12 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             drape && shade ? "#define SBRT_DRAPE 1\n" : "",
             kernel ? "#define SBRT_KERNEL 1\n" : "",
             pass == Pass::kernel_depth ? "#define SBRT_KERNEL_DEPTH 1\n" : "",
+            FIRST_PASS_DEFINES,
             SHADER_COMMON_LAYOUT,
             shade ? SHADER_COMMON_SHADE : "",
-            kernel ? SHADER_KERNEL : SHADER_RAYCAST};
+            kernel                     ? SHADER_KERNEL
+            : pass == Pass::first_pass ? SHADER_FIRST_PASS
+                                       : SHADER_RAYCAST};
 }
 
 } // namespace
@@ -214,6 +227,56 @@ void GpuTracer::bind_model() const
     materials_.bind(3);
     pyramid_.bind(4);
     view_.bind(0);
+    if (tile_starts_)
+        tile_starts_->bind(8);
+}
+
+std::vector<float> GpuTracer::tile_starts() const
+{
+    if (!tile_starts_)
+        return {};
+    const uint32_t side = uint32_t(sbrt::FIRST_PASS_TILE), tile_cols = first_pass_view_.counts[3];
+    const uint32_t rows = first_pass_view_.grid[3];
+    std::vector<float> starts(size_t(tile_cols) * ((rows + side - 1) / side));
+    tile_starts_->download(starts.data(), starts.size() * sizeof(float));
+    return starts;
+}
+
+sbrt::GpuView GpuTracer::traced_view(const sbrt::Camera &camera, uint32_t loop_budget)
+{
+    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget);
+    if (tracer_.pyramid().levels() == 0)
+        return view; // no skipping, no first pass
+    const uint32_t side = uint32_t(sbrt::FIRST_PASS_TILE);
+    const uint32_t tile_cols = (uint32_t(camera.cols()) + side - 1) / side;
+    const uint32_t tile_rows = (uint32_t(camera.rows()) + side - 1) / side;
+    view.counts[2] = 1;
+    view.counts[3] = tile_cols;
+    // the bounds of this camera are there already: the same view but for
+    // the band's rows
+    sbrt::GpuView key = view;
+    key.options[1] = key.options[2] = key.options[3] = 0;
+    if (tile_starts_ && std::memcmp(&key, &first_pass_view_, sizeof key) == 0)
+        return view;
+    const auto start = Clock::now();
+    const size_t bytes = size_t(tile_cols) * tile_rows * sizeof(float);
+    if (!tile_starts_ || tile_starts_->bytes() < bytes)
+        tile_starts_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                             checked_bytes(bytes, max_block_bytes_, "first pass's tiles"));
+    if (!first_pass_program_)
+        first_pass_program_.emplace(
+            gl_, pass_sources(Pass::first_pass, layout_, tracer_.model()), &cache_);
+    first_pass_program_->use();
+    view_.upload(&view, sizeof view);
+    view_.bind(0);
+    pyramid_.bind(4);
+    tile_starts_->bind(8);
+    gl_.DispatchCompute(GLuint((tile_cols + 7) / 8), GLuint((tile_rows + 7) / 8), 1);
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    check_gl(gl_, "the first pass");
+    first_pass_view_ = key;
+    stats_.trace_ms += ms_since(start);
+    return view;
 }
 
 void GpuTracer::dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, int first_row,
@@ -265,7 +328,7 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
     ensure_band_buffer(gl_, band_, row_count, size_t(cols) * sizeof(sbrt::GpuPixelHit),
                        max_block_bytes_);
     records_.resize(size_t(row_count) * cols);
-    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget);
+    sbrt::GpuView view = traced_view(camera, loop_budget);
     record_program().use();
     bind_model();
     dispatch(camera, view, first_row, row_count, *band_, sizeof(sbrt::GpuPixelHit),
@@ -345,7 +408,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     ensure_band_buffer(gl_, pixels_, row_count, size_t(cols) * words_per_pixel * 4,
                        max_block_bytes_);
     words_.resize(size_t(row_count) * cols * words_per_pixel);
-    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
+    sbrt::GpuView view = traced_view(camera, loop_budget_);
     program.use();
     bind_model();
     bind_shading(shade, shading);
@@ -373,7 +436,7 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
         image_hits_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * sizeof(sbrt::GpuPixelHit));
         depths_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * sizeof(float));
     }
-    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
+    sbrt::GpuView view = traced_view(camera, loop_budget_);
     view.options[2] = 0;
     view.options[3] = uint32_t(rows);
     record_program().use();

@@ -107,6 +107,9 @@ public:
     const GlApi &gl() const { return gl_; }
     /// The program that writes hit records (compiled when first asked for).
     GLuint program() const { return record_program().name(); }
+    /// The first pass's bounds of the last camera traced, per tile
+    /// row-major (read back; tests).
+    std::vector<float> tile_starts() const;
     /// Whether the shading program (shade_program) came from the cache.
     bool shade_program_from_cache() const
     {
@@ -117,8 +120,12 @@ public:
 
 private:
     const GlComputeProgram &record_program() const;
-    /// Binds the model, the materials, the pyramid and the view block.
+    /// Binds the model, the materials, the pyramid, the first pass's
+    /// bounds and the view block.
     void bind_model() const;
+    /// The view block of `camera`, with the first pass's tile bounds on the
+    /// GPU (computed when the camera is not the last one's).
+    sbrt::GpuView traced_view(const sbrt::Camera &camera, uint32_t loop_budget);
     /// Dispatches rows [first, first + count) in bands of at most
     /// `band_rows`, reading `bytes_per_pixel` of each back into `out`.
     void dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, int first, int count,
@@ -160,6 +167,11 @@ private:
     std::optional<GlComputeProgram> kernel_depth_program_, kernel_program_,
         kernel_drape_program_;
     std::optional<GlBuffer> image_hits_, depths_, kernel_cells_, kernel_block_;
+    /// the first pass: its program, the tiles' bounds (binding 8) and the
+    /// view they are of (rows and budget zeroed)
+    std::optional<GlComputeProgram> first_pass_program_;
+    std::optional<GlBuffer> tile_starts_;
+    sbrt::GpuView first_pass_view_{};
     sbrt::GpuKernel kernel_{};
     std::optional<GlBuffer> looks_, shade_, pixels_;
     /// the drape's surface and texture (binding 7), and whose they are

@@ -13,6 +13,7 @@ extern const char *const SHADER_COMMON_LAYOUT; ///< shaders/common/layout.glsl
 extern const char *const SHADER_COMMON_SHADE;  ///< shaders/common/shade.glsl
 extern const char *const SHADER_RAYCAST;       ///< shaders/raycast.comp
 extern const char *const SHADER_KERNEL;        ///< shaders/kernel.comp
+extern const char *const SHADER_FIRST_PASS;    ///< shaders/first_pass.comp
 
 } // namespace sbrt_gl
 

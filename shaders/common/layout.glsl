@@ -27,7 +27,8 @@ layout(std140, binding = 0) uniform View {
     vec4 planes[8];     // clip planes: xyz normal n (local), w: n . base + c;
                         // kept where n . (x - base) + w <= 0
     uvec4 counts;       // x: clip planes; y: levels of the pyramid (0: no
-                        // empty-space skipping)
+                        // empty-space skipping); z: 1 where the first
+                        // pass's bounds are in TileStarts; w: tile columns
 };
 
 #ifndef SBRT_KERNEL
@@ -139,6 +140,10 @@ layout(std430, binding = 4) readonly buffer Pyramid {
     uvec4 levels[MAX_PYRAMID_LEVELS];
     vec2 nodes[];
 };
+
+// The coarse first pass (first_pass.comp): per tile of the image, row-major,
+// a t before which no ray of the tile meets anything (inf: nothing at all).
+layout(std430, binding = 8) buffer TileStarts { float tile_starts[]; };
 
 // How each material looks: rgb colour (0..1) and its Beer-Lambert
 // extinction per exaggerated map unit; negative for an opaque material.

@@ -368,6 +368,55 @@ TEST_P(Gpu, LongestRayStaysWithinTheLoopBudget)
     EXPECT_NEAR(hits[4].point.x, cols - 1, 1e-3);
 }
 
+TEST_P(Gpu, TheFirstPassBoundsTheTilesAsTheCpuDoes)
+{
+    // the GPU's first pass: conservative (the images agree, tested with
+    // every other GPU test) and as tight as the CPU's: the same tiles
+    // meet nothing, and the others start where the CPU's do, give or take
+    // the float margin
+    const Model m = hide_materials(geology(48, 64, 30), {1, 2, 3});
+    const Tracer tracer(m, 2.0);
+    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    const glm::dvec3 c = tracer.centre();
+    const double size = 2 * tracer.radius();
+    const Camera camera = Camera::perspective(c + glm::dvec3(-0.5, -0.6, 0.4) * size, c, 40,
+                                              90, 120);
+    gpu.trace_image(camera, 2);
+    const std::vector<float> gpu_starts = gpu.tile_starts();
+    const FirstHitBounds cpu(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET, 2);
+    ASSERT_EQ(gpu_starts.size(), cpu.tiles());
+    const size_t gpu_empty = size_t(std::count(gpu_starts.begin(), gpu_starts.end(), INFINITY));
+    EXPECT_GT(cpu.empty_tiles(), cpu.tiles() / 10);
+    EXPECT_NEAR(double(gpu_empty), double(cpu.empty_tiles()), 0.01 * double(cpu.tiles()) + 1);
+    // at a pixel of each tile with a bound, the GPU's t (from the view's
+    // base) against the CPU's (along the unit ray from the camera)
+    const GpuView view = make_gpu_view(tracer, camera);
+    const double t_eye = -view.spread_u[3];
+    size_t compared = 0, close = 0;
+    for (int row = 0; row < camera.rows(); row += FIRST_PASS_TILE)
+        for (int col = 0; col < camera.cols(); col += FIRST_PASS_TILE) {
+            const Ray ray = camera.ray(row, col);
+            const double want = cpu.t_start(row, col, ray);
+            const size_t tile = size_t(row / FIRST_PASS_TILE) *
+                                    size_t((camera.cols() + FIRST_PASS_TILE - 1) / FIRST_PASS_TILE) +
+                                size_t(col / FIRST_PASS_TILE);
+            if (!std::isfinite(want) || !std::isfinite(gpu_starts[tile]) || want <= 0)
+                continue;
+            // the GPU's d at this pixel is D / |D| scaled by the local
+            // frame: its t from the eye, in map units along the ray
+            const glm::dvec2 ndc = camera.pixel_ndc(row, col);
+            const glm::dvec3 d(view.forward[0] + ndc.x * view.du[0] + ndc.y * view.dv[0],
+                               view.forward[1] + ndc.x * view.du[1] + ndc.y * view.dv[1],
+                               view.forward[2] + ndc.x * view.du[2] + ndc.y * view.dv[2]);
+            const double got = (gpu_starts[tile] + t_eye) *
+                               glm::length(glm::dvec3(tracer.voxel_size()) * d);
+            ++compared;
+            close += std::fabs(got - want) <= 1e-3 * want + 0.05;
+        }
+    EXPECT_GT(compared, 20u);
+    EXPECT_GE(close, compared * 9 / 10) << close << " of " << compared;
+}
+
 TEST_P(Gpu, SkipsEmptySpaceWithThePyramidAndKeepsTheImage)
 {
     // five of the seven strata hidden: most rays cross empty space
@@ -606,36 +655,43 @@ TEST_P(Gpu, ASecondRunLoadsItsProgramsFromTheCache)
     bool from_cache = true;
     const Image first = gpu_image(*context_, layout(), renderer, camera, cache, from_cache);
     EXPECT_FALSE(from_cache) << "an empty cache gave a program";
-    // one file, the shading program's; the next tracer loads it
+    // a file a program (the first pass's and the shading one); the next
+    // tracer loads them
     std::vector<std::string> files;
     for (const auto &entry : std::filesystem::directory_iterator(cache.directory()))
         files.push_back(entry.path());
-    ASSERT_EQ(files.size(), 1u);
+    ASSERT_EQ(files.size(), 2u);
     const Image second = gpu_image(*context_, layout(), renderer, camera, cache, from_cache);
     EXPECT_TRUE(from_cache) << "the cached binary was not used";
     EXPECT_EQ(second.rgb, first.rgb);
     EXPECT_EQ(second.material, first.material);
     // a damaged file (a byte of the binary flipped, or cut short) is a
     // miss: the program is compiled again and the file replaced
-    const std::vector<uint8_t> good = read_bytes(files[0]);
-    std::vector<uint8_t> flipped = good;
-    flipped[flipped.size() / 2] ^= 0x40;
-    std::vector<uint8_t> cut(good.begin(), good.begin() + long(good.size() / 3));
-    for (const auto &bad : {flipped, cut}) {
-        write_bytes(files[0], bad);
+    std::vector<std::vector<uint8_t>> good;
+    for (const std::string &file : files)
+        good.push_back(read_bytes(file));
+    const auto damage_all = [&](const auto &damage) {
+        for (size_t k = 0; k < files.size(); ++k) {
+            std::vector<uint8_t> bytes = good[k];
+            damage(bytes);
+            write_bytes(files[k], bytes);
+        }
+    };
+    const auto flip = [](std::vector<uint8_t> &b) { b[b.size() / 2] ^= 0x40; };
+    const auto cut = [](std::vector<uint8_t> &b) { b.resize(b.size() / 3); };
+    // a whole file whose binary the driver refuses (as after a driver
+    // update: another format): compiled again
+    const auto foreign = [](std::vector<uint8_t> &b) { b[8] ^= 0x01; };
+    for (int damage = 0; damage < 3; ++damage) {
+        damage_all([&](std::vector<uint8_t> &b) {
+            damage == 0 ? flip(b) : damage == 1 ? cut(b) : foreign(b);
+        });
         EXPECT_EQ(gpu_image(*context_, layout(), renderer, camera, cache, from_cache).rgb,
                   first.rgb);
-        EXPECT_FALSE(from_cache);
-        EXPECT_EQ(read_bytes(files[0]), good) << "the damaged file was not replaced";
+        EXPECT_FALSE(from_cache) << "damage " << damage;
+        for (size_t k = 0; k < files.size(); ++k)
+            EXPECT_EQ(read_bytes(files[k]), good[k]) << "a damaged file was not replaced";
     }
-    // a whole file whose binary the driver refuses (as after a driver
-    // update): compiled again
-    std::vector<uint8_t> foreign = good;
-    foreign[8] ^= 0x01; // the binary format
-    write_bytes(files[0], foreign);
-    EXPECT_EQ(gpu_image(*context_, layout(), renderer, camera, cache, from_cache).rgb,
-              first.rgb);
-    EXPECT_FALSE(from_cache);
     // other sources are another file
     EXPECT_NE(sbrt_gl::ProgramCache::key("gl", {"a", "b"}),
               sbrt_gl::ProgramCache::key("gl", {"ab"}));

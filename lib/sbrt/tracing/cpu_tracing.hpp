@@ -20,7 +20,7 @@ namespace sbrt {
 /// Tile side (pixels) and node budget of the coarse first pass. Measured on
 /// models A to C at 1056 x 884: tiles of 4 pixels cost more than they save
 /// (0.6x on A); 8 and 16, with budgets of 16 to 64, are within noise.
-constexpr int FIRST_PASS_TILE = 8, FIRST_PASS_BUDGET = 8;
+constexpr int FIRST_PASS_TILE = 8, FIRST_PASS_BUDGET = 32;
 
 /// What the coarse first pass did: its tiles, those whose rays all meet
 /// nothing (not walked at all), its time.
