@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "util/error.hpp"
-#include "gpu_tracer.hpp"
+#include "gpu_renderer.hpp"
 #include "util/parallel.hpp"
 
 namespace {
@@ -46,44 +46,35 @@ void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
     report(_("CPU shading and tracing"), camera, r.trace_ms);
 }
 
-void render_on_gpu(const RenderRequest &request, const sbrt::Renderer &renderer,
-                   const sbrt::Camera &camera, const sbrt::Outputs &outputs,
-                   const sbrt::BandSink &sink, sbrt_gl::GpuTracer &gpu, bool first)
+void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
+                   const sbrt::Outputs &outputs, const sbrt::BandSink &sink,
+                   sbrt_gl::GpuRenderer &gpu, bool first)
 {
-    const sbrt::GpuMemory &m = gpu.memory();
+    const sbrt::GpuMemory &m = gpu.gpu().memory();
     G_verbose_message(_("GPU memory, layout=%s: %llu bytes (index %llu, intervals "
                         "%llu), of which %llu hold nothing"),
-                      sbrt::gpu_layout_name(gpu.layout()),
+                      sbrt::gpu_layout_name(gpu.gpu().layout()),
                       (unsigned long long)m.total(), (unsigned long long)m.index_bytes,
                       (unsigned long long)m.interval_bytes,
                       (unsigned long long)m.waste_bytes);
-    G_verbose_message(_("GL_VERSION: %s"), gpu.gl_version().c_str());
-    G_verbose_message(_("GL_RENDERER: %s"), gpu.gl_renderer().c_str());
-    gpu.reset_stats();
-    sbrt_gl::GpuRowTracer rows(gpu, camera, unsigned(request.threads));
-    // face normals, and kernel normals without smoothing where the image's
-    // hit records fit the GPU, are found and shaded on the GPU (with a
-    // drape or without): only the outputs come back
-    const sbrt::Shading &shading = renderer.shading();
-    const bool on_gpu = sbrt::gpu_can_shade(shading) &&
-                        (shading.normals == sbrt::Normals::face || gpu.kernel_fits(camera));
-    if (on_gpu)
-        rows.shade_on_gpu(&shading);
-    G_verbose_message(on_gpu ? _("Shading: on the GPU")
-                             : _("Shading: on the CPU (smoothed kernel normals, or an "
-                                 "image whose hits do not fit the GPU)"));
-    const sbrt::RenderReport r = renderer.render(camera, outputs, sink, &rows);
-    const sbrt_gl::GpuStats &s = gpu.stats();
+    G_verbose_message(_("GL_VERSION: %s"), gpu.gpu().gl_version().c_str());
+    G_verbose_message(_("GL_RENDERER: %s"), gpu.gpu().gl_renderer().c_str());
+    const sbrt_gl::GpuFrameReport r =
+        gpu.render(camera, outputs, sink, unsigned(request.threads));
+    G_verbose_message(r.shaded_on_gpu
+                          ? _("Shading: on the GPU")
+                          : _("Shading: on the CPU (smoothed kernel normals, or an "
+                              "image whose hits do not fit the GPU)"));
     if (first)
         G_verbose_message(_("Model upload: %.1f ms (kept for the next frames)"),
-                          s.upload_ms);
-    G_verbose_message(_("Read back: %.1f ms; %d band(s)"), s.readback_ms, s.bands);
-    report_bands(r);
-    report(_("GPU tracing"), camera, s.trace_ms);
-    if (s.over_budget)
+                          r.gpu.upload_ms);
+    G_verbose_message(_("Read back: %.1f ms; %d band(s)"), r.gpu.readback_ms, r.gpu.bands);
+    report_bands(r.render);
+    report(_("GPU tracing"), camera, r.gpu.trace_ms);
+    if (r.gpu.over_budget)
         G_verbose_message(_("%zu rays exceeded the shader's loop budget and "
                             "were traced on the CPU"),
-                          s.over_budget);
+                          r.gpu.over_budget);
 }
 
 } // namespace
@@ -137,8 +128,7 @@ void Backend::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
     if (context_ && !tried_gpu_) {
         tried_gpu_ = true;
         try {
-            gpu_.emplace(*context_, renderer_.tracer(),
-                         sbrt::parse_gpu_layout(request_.gpu_layout));
+            gpu_.emplace(*context_, renderer_, sbrt::parse_gpu_layout(request_.gpu_layout));
         }
         catch (const sbrt::Error &e) {
             // the model does not fit this GPU's buffers
@@ -149,7 +139,7 @@ void Backend::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
         }
     }
     if (gpu_)
-        render_on_gpu(request_, renderer_, camera, outputs, sink, *gpu_, frames_++ == 0);
+        render_on_gpu(request_, camera, outputs, sink, *gpu_, frames_++ == 0);
     else
         render_on_cpu(request_, renderer_, camera, outputs, sink);
 }

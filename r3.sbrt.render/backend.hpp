@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "gl_context.hpp"
-#include "gpu_tracer.hpp"
+#include "gpu_renderer.hpp"
 #include "render_options.hpp"
 #include "renderer.hpp"
 
@@ -43,7 +43,7 @@ private:
     sbrt_gl::GlContext *context_;
     bool tried_gpu_ = false;
     int frames_ = 0; ///< rendered on the GPU
-    std::optional<sbrt_gl::GpuTracer> gpu_; ///< the model on the GPU
+    std::optional<sbrt_gl::GpuRenderer> gpu_; ///< the scene, its model on the GPU
 };
 
 #endif

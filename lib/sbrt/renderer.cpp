@@ -305,8 +305,7 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     return report;
 }
 
-Image Renderer::render_image(const Camera &camera, const Outputs &outputs,
-                             RowTracer *rows) const
+Image empty_image(const Camera &camera, const Outputs &outputs)
 {
     Image image;
     image.rows = camera.rows();
@@ -316,17 +315,26 @@ Image Renderer::render_image(const Camera &camera, const Outputs &outputs,
     image.material.assign(outputs.material ? pixels : 0, NULL_CLASS);
     image.elevation.assign(outputs.elevation ? pixels : 0, NAN);
     image.depth.assign(outputs.depth ? pixels : 0, NAN);
-    const auto gather = [&](const Band &band) {
-        const size_t at = size_t(band.first_row) * band.cols;
-        std::copy(band.rgb.begin(), band.rgb.end(), image.rgb.begin() + ptrdiff_t(at) * 3);
-        std::copy(band.material.begin(), band.material.end(),
-                  image.material.begin() + ptrdiff_t(band.material.empty() ? 0 : at));
-        std::copy(band.elevation.begin(), band.elevation.end(),
-                  image.elevation.begin() + ptrdiff_t(band.elevation.empty() ? 0 : at));
-        std::copy(band.depth.begin(), band.depth.end(),
-                  image.depth.begin() + ptrdiff_t(band.depth.empty() ? 0 : at));
-    };
-    render(camera, outputs, gather, rows);
+    return image;
+}
+
+void gather_band(const Band &band, Image &image)
+{
+    const size_t at = size_t(band.first_row) * band.cols;
+    std::copy(band.rgb.begin(), band.rgb.end(), image.rgb.begin() + ptrdiff_t(at) * 3);
+    std::copy(band.material.begin(), band.material.end(),
+              image.material.begin() + ptrdiff_t(band.material.empty() ? 0 : at));
+    std::copy(band.elevation.begin(), band.elevation.end(),
+              image.elevation.begin() + ptrdiff_t(band.elevation.empty() ? 0 : at));
+    std::copy(band.depth.begin(), band.depth.end(),
+              image.depth.begin() + ptrdiff_t(band.depth.empty() ? 0 : at));
+}
+
+Image Renderer::render_image(const Camera &camera, const Outputs &outputs,
+                             RowTracer *rows) const
+{
+    Image image = empty_image(camera, outputs);
+    render(camera, outputs, [&](const Band &band) { gather_band(band, image); }, rows);
     return image;
 }
 

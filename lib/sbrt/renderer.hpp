@@ -73,6 +73,11 @@ private:
     RenderSettings settings_;
 };
 
+/// An image of `camera`'s size for `outputs` (misses: NULL_CLASS, NaN).
+Image empty_image(const Camera &camera, const Outputs &outputs);
+/// A band's rows into their place in `image` (a sink gathering a frame).
+void gather_band(const Band &band, Image &image);
+
 } // namespace sbrt
 
 #endif

@@ -21,6 +21,7 @@
 
 #include "tracing/cpu_tracing.hpp"
 #include "util/error.hpp"
+#include "gpu_renderer.hpp"
 #include "gpu_tracer.hpp"
 #include "program_cache.hpp"
 #include "scene/hidden_materials.hpp"
@@ -579,12 +580,12 @@ void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layo
                                const Renderer &renderer, const Camera &camera,
                                const std::string &what, size_t far_allowed = 0)
 {
-    sbrt_gl::GpuTracer gpu(context, renderer.tracer(), layout);
-    sbrt_gl::GpuRowTracer rows(gpu, camera, 2);
-    rows.shade_on_gpu(&renderer.shading());
+    sbrt_gl::GpuRenderer on_gpu(context, renderer, layout);
+    const sbrt_gl::GpuTracer &gpu = on_gpu.gpu();
     const Outputs all{true, true, true};
     const Image want = renderer.render_image(camera, all);
-    const Image got = renderer.render_image(camera, all, &rows);
+    EXPECT_TRUE(on_gpu.shades_on_gpu(camera)) << what;
+    const Image got = on_gpu.render_image(camera, all, 2);
     EXPECT_TRUE(gpu.shade_program() != 0 || gpu.kernel_program() != 0)
         << "the GPU did not shade: " << what;
     if (renderer.shading().normals == Normals::kernel) {
@@ -621,11 +622,9 @@ namespace {
 Image gpu_image(const sbrt_gl::GlContext &context, GpuLayout layout, const Renderer &renderer,
                 const Camera &camera, const sbrt_gl::ProgramCache &cache, bool &from_cache)
 {
-    sbrt_gl::GpuTracer gpu(context, renderer.tracer(), layout, cache);
-    sbrt_gl::GpuRowTracer rows(gpu, camera, 2);
-    rows.shade_on_gpu(&renderer.shading());
-    Image image = renderer.render_image(camera, {true, true, true}, &rows);
-    from_cache = gpu.shade_program_from_cache();
+    sbrt_gl::GpuRenderer on_gpu(context, renderer, layout, cache);
+    Image image = on_gpu.render_image(camera, {true, true, true}, 2);
+    from_cache = on_gpu.gpu().shade_program_from_cache();
     return image;
 }
 

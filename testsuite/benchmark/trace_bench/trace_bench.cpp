@@ -45,6 +45,7 @@
 #include "format/atomic_dir.hpp"
 #include "util/error.hpp"
 #include "format/format.hpp"
+#include "gpu_renderer.hpp"
 #include "gpu_tracer.hpp"
 #include "scene/hidden_materials.hpp"
 #include "util/parallel.hpp"
@@ -343,7 +344,8 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
         std::printf("gpu_frame label=%s no_gl_context\n", label.c_str());
         return;
     }
-    sbrt_gl::GpuTracer gpu(*context, renderer.tracer());
+    sbrt_gl::GpuRenderer on_gpu(*context, renderer);
+    const sbrt_gl::GpuTracer &gpu = on_gpu.gpu();
     const double upload_ms = gpu.stats().upload_ms;
     size_t checksum = 0;
     const auto sink = [&](const Band &band) {
@@ -353,21 +355,20 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
     Shading face = renderer.shading(), kernel = face;
     kernel.normals = Normals::kernel;
     double dispatch_ms[2] = {INFINITY, INFINITY}; // face, kernel: the best
-    const auto on_gpu = [&](const Shading &shading, double &best_dispatch) {
+    const auto gpu_run = [&](const Shading &shading, double &best_dispatch) {
         renderer.set_shading(shading);
-        gpu.reset_stats();
-        sbrt_gl::GpuRowTracer rows(gpu, camera, threads);
-        rows.shade_on_gpu(&renderer.shading());
-        renderer.render(camera, {}, sink, &rows);
-        best_dispatch = std::min(best_dispatch, gpu.stats().trace_ms);
+        const sbrt_gl::GpuFrameReport r = on_gpu.render(camera, {}, sink, threads);
+        if (!r.shaded_on_gpu)
+            fail("gpu_frame: the GPU did not shade the frame");
+        best_dispatch = std::min(best_dispatch, r.gpu.trace_ms);
     };
     const std::vector<double> ms = best_ms_in_turns(
-        repeat, {[&] { on_gpu(face, dispatch_ms[0]); },
+        repeat, {[&] { gpu_run(face, dispatch_ms[0]); },
                  [&] {
                      renderer.set_shading(face);
                      renderer.render(camera, {}, sink);
                  },
-                 [&] { on_gpu(kernel, dispatch_ms[1]); }});
+                 [&] { gpu_run(kernel, dispatch_ms[1]); }});
     const double rays = double(camera.rows()) * camera.cols();
     std::printf("gpu_frame label=%s renderer=\"%s\" cols=%d rows=%d upload_ms=%.1f "
                 "frame_ms=%.2f dispatch_ms=%.2f mrays=%.0f frames_per_s=%.1f "

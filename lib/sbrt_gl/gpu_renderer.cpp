@@ -1,0 +1,46 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   The GL counterpart of sbrt::Renderer
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_renderer.hpp"
+
+namespace sbrt_gl {
+
+GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &renderer,
+                         sbrt::GpuLayout layout, ProgramCache cache)
+    : renderer_(renderer), gpu_(context, renderer.tracer(), layout, std::move(cache))
+{
+}
+
+bool GpuRenderer::shades_on_gpu(const sbrt::Camera &camera) const
+{
+    const sbrt::Shading &shading = renderer_.shading();
+    return sbrt::gpu_can_shade(shading) &&
+           (shading.normals == sbrt::Normals::face || gpu_.kernel_fits(camera));
+}
+
+GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                                   const sbrt::BandSink &sink, unsigned cpu_threads)
+{
+    GpuFrameReport report;
+    gpu_.reset_stats();
+    GpuRowTracer rows(gpu_, camera, cpu_threads);
+    report.shaded_on_gpu = shades_on_gpu(camera);
+    if (report.shaded_on_gpu)
+        rows.shade_on_gpu(&renderer_.shading());
+    report.render = renderer_.render(camera, outputs, sink, &rows);
+    report.gpu = gpu_.stats();
+    return report;
+}
+
+sbrt::Image GpuRenderer::render_image(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                                      unsigned cpu_threads)
+{
+    sbrt::Image image = sbrt::empty_image(camera, outputs);
+    render(camera, outputs, [&](const sbrt::Band &band) { sbrt::gather_band(band, image); },
+           cpu_threads);
+    return image;
+}
+
+} // namespace sbrt_gl
