@@ -80,14 +80,14 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
 } // namespace
 
 std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &request,
-                                                      bool overlays)
+                                                      bool overlays_only)
 {
     if (request.backend == "cpu")
         return nullptr;
-    if (overlays) {
+    if (overlays_only) {
         if (request.backend != "auto")
-            G_warning(_("backend=%s: boreholes and fence curtains are drawn by "
-                        "the CPU ray caster only; using it"),
+            G_warning(_("backend=%s: boreholes alone (-b) and fence diagrams are "
+                        "drawn by the CPU ray caster; using it"),
                       request.backend.c_str());
         return nullptr;
     }

@@ -157,6 +157,27 @@ class TestGeologicalOperations(TestCase):
         # 99 (not a class of the model) and 5 below a 20 m gap at point 2
         stats = gs.read_command("r.stats", flags="n", input="lg_mat").split()
         self.assertEqual(sorted(int(v) for v in stats), [5, 99])
+        # drawn with the model, on the GPU: the GPU draws the model and the
+        # CPU the boreholes' pixels; the class map is the CPU's
+        size = image_region(self, 80, 60)
+        oblique = ["input=geo", "size=%d,%d" % size, "position=1300,300,1200",
+                   "target=525,1225,550", "fov=35", "boreholes=logged", "log_top=dtop",
+                   "log_bottom=dbottom", "log_class=cls", "log_reference=depth",
+                   "borehole_radius=40", "--overwrite"]
+        for backend in ("egl", "cpu"):
+            run = subprocess.run(
+                ["r3.sbrt.render", f"output=lgo_{backend}", f"material=lgo_{backend}_m",
+                 f"backend={backend}", "--verbose"] + oblique,
+                capture_output=True, text=True,
+            )
+            self.assertEqual(run.returncode, 0, msg=run.stderr)
+            self.assertIn(f"Backend: {backend}", run.stderr)
+        self.assertGreater(self.count("if(isnull(lgo_egl_m), 0, lgo_egl_m == 99)"), 4)
+        self.assertLessEqual(
+            self.count("if(isnull(lgo_egl_m) != isnull(lgo_cpu_m) || "
+                       "(!isnull(lgo_egl_m) && lgo_egl_m != lgo_cpu_m), 1, 0)"),
+            80 * 60 // 500 + 1)
+        self.runModule("g.region", region="geo_region")
         self.assertModuleFail(
             "r3.sbrt.render", input="geo", output="bad", boreholes="logged",
             log_top="dtop", log_bottom="dbottom", log_class="nosuchcolumn",

@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "gpu_renderer.hpp"
 
+#include "gpu_row_tracer.hpp"
+
 namespace sbrt_gl {
 
 GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &renderer,

@@ -71,9 +71,6 @@ GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::Tracer &tracer, size_t limi
 /// How each material looks (binding 3).
 GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 {
-    if (tracer.has_overlays())
-        sbrt::fail("boreholes and fence curtains are drawn by the CPU tracer "
-                   "only: render them with backend=cpu");
     const std::vector<sbrt::GpuMaterial> table = sbrt::make_gpu_materials(tracer);
     return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER,
                     table.size() * sizeof(sbrt::GpuMaterial), table.data());

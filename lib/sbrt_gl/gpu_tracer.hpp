@@ -96,6 +96,7 @@ public:
                                      : 0;
     }
 
+    const sbrt::Tracer &tracer() const { return tracer_; }
     std::string gl_version() const;
     std::string gl_renderer() const;
     const GpuStats &stats() const { return stats_; }
@@ -180,56 +181,6 @@ private:
     std::vector<uint32_t> words_;
     GpuStats stats_;
     uint32_t loop_budget_ = sbrt::GPU_LOOP_BUDGET;
-};
-
-/// \brief The GPU as the streamed renderer's row tracer of one camera.
-class GpuRowTracer : public sbrt::RowTracer {
-public:
-    GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads = 0)
-        : gpu_(gpu), camera_(camera), threads_(cpu_threads)
-    {
-    }
-    void trace_rows(int first, int count, sbrt::Hit *out) override
-    {
-        gpu_.trace_rows(camera_, first, count, out, threads_, gpu_.loop_budget());
-    }
-    /// With `shading` (gpu_can_shade) the GPU shades too.
-    void shade_on_gpu(const sbrt::Shading *shading) { shading_ = shading; }
-    /// Kernel normals on the GPU: where it shades and the image fits.
-    bool shades_kernel_normals() const override
-    {
-        return shading_ && shading_->normals == sbrt::Normals::kernel &&
-               gpu_.kernel_fits(camera_);
-    }
-    /// Bands of a million pixels or more: enough rays to fill a GPU.
-    int preferred_band_rows(int cols) const override
-    {
-        return std::max(1, (1 << 20) / std::max(cols, 1));
-    }
-    bool shade_rows(int first, int count, const sbrt::Outputs &outputs,
-                    sbrt::Band &band) override
-    {
-        if (!shading_)
-            return false;
-        if (shading_->normals == sbrt::Normals::kernel) {
-            if (!shades_kernel_normals())
-                return false;
-            if (!kernel_prepared_)
-                gpu_.prepare_kernel(camera_, *shading_);
-            kernel_prepared_ = true;
-            gpu_.shade_kernel_rows(camera_, first, count, *shading_, outputs, band, threads_);
-            return true;
-        }
-        gpu_.shade_rows(camera_, first, count, *shading_, outputs, band, threads_);
-        return true;
-    }
-
-private:
-    GpuTracer &gpu_;
-    const sbrt::Camera &camera_;
-    unsigned threads_;
-    const sbrt::Shading *shading_ = nullptr;
-    bool kernel_prepared_ = false; ///< this camera's hit records are on the GPU
 };
 
 } // namespace sbrt_gl

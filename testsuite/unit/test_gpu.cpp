@@ -789,6 +789,52 @@ TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
     EXPECT_FALSE(gpu_can_shade(smooth));
 }
 
+TEST_P(Gpu, DrawsBoreholesWithTheModelTheirPixelsTracedOnTheCpu)
+{
+    // boreholes drawn with the model: the GPU draws the model, the CPU the
+    // pixels whose rays may meet a borehole (model and boreholes)
+    const Model m = geology(40, 56, 30);
+    const Frame &f = m.frame();
+    Scene scene;
+    for (int k = 0; k < 3; ++k) {
+        Borehole b = sbrt_test::borehole_at(m, f.west + (7.5 + 12 * k) * f.ew_res(),
+                                            f.south + (9.5 + 14 * k) * f.ns_res());
+        // a log of its own, so it shows against the model
+        for (Interval &iv : b.stack)
+            iv.material = 1 + (iv.material % 3);
+        scene.boreholes.push_back(b);
+    }
+    scene.borehole_radius = 1.5 * f.ew_res();
+    const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 16});
+    const Tracer &t = renderer.tracer();
+    ASSERT_TRUE(t.has_overlays());
+    const Camera camera = Camera::perspective(
+        t.centre() + 2.2 * t.radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)), t.centre(),
+        40, 61, 83);
+    expect_gpu_shading_as_cpu(*context_, layout(), renderer, camera, "boreholes");
+    // the CPU's pixels are the CPU's image exactly, and only a part
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, layout());
+    const auto rects = pixel_rects_of(t.overlay_boxes(), camera); // GpuRowTracer's
+    ASSERT_TRUE(rects);
+    const Image want = renderer.render_image(camera, {});
+    const Image got = on_gpu.render_image(camera, {}, 2);
+    size_t cpu_pixels = 0, differing = 0;
+    for (int row = 0; row < camera.rows(); ++row)
+        for (const auto &[c0, c1] : row_spans(*rects, row))
+            for (int col = c0; col <= c1; ++col) {
+                const size_t i = (size_t(row) * size_t(camera.cols()) + size_t(col)) * 3;
+                ++cpu_pixels;
+                differing += !std::equal(want.rgb.begin() + long(i), want.rgb.begin() + long(i) + 3,
+                                         got.rgb.begin() + long(i));
+            }
+    EXPECT_GT(cpu_pixels, 30u);
+    EXPECT_LT(cpu_pixels, size_t(camera.rows()) * size_t(camera.cols()) / 3);
+    EXPECT_EQ(differing, 0u);
+    // the boreholes show: the image differs from the model's alone
+    const Renderer plain(m, 2.0, Scene{}, Shading{}, {2, true, 16});
+    EXPECT_NE(plain.render_image(camera, {}).rgb, want.rgb);
+}
+
 TEST_P(Gpu, ShadesADrapeOnTheGpuAsTheCpuDoes)
 {
     const Model m = geology(40, 56, 30);

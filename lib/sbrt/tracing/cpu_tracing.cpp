@@ -13,19 +13,11 @@
 
 namespace sbrt {
 
-namespace {
-
-/// Where the tracer draws only overlays, the pixel rectangles whose rays
-/// may hit something: those the projections of their boxes cover; none
-/// where every pixel is traced.
-std::optional<std::vector<std::array<int, 4>>> overlay_rects(const Tracer &tracer,
-                                                             const Camera &camera)
+std::optional<std::vector<PixelRect>> pixel_rects_of(
+    const std::vector<std::array<glm::dvec3, 2>> &boxes, const Camera &camera)
 {
     const int rows = camera.rows(), cols = camera.cols();
-    const auto boxes = tracer.overlay_bounds();
-    if (boxes.empty())
-        return std::nullopt;
-    std::vector<std::array<int, 4>> rects;
+    std::vector<PixelRect> rects;
     for (const auto &box : boxes) {
         double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
         for (int k = 0; k < 8; ++k) {
@@ -54,11 +46,29 @@ std::optional<std::vector<std::array<int, 4>>> overlay_rects(const Tracer &trace
     return rects;
 }
 
-} // namespace
+std::vector<std::pair<int, int>> row_spans(const std::vector<PixelRect> &rects, int row)
+{
+    std::vector<std::pair<int, int>> spans;
+    for (const auto &[r0, r1, c0, c1] : rects)
+        if (row >= r0 && row <= r1)
+            spans.emplace_back(c0, c1);
+    std::sort(spans.begin(), spans.end());
+    std::vector<std::pair<int, int>> merged;
+    for (const auto &span : spans) {
+        if (!merged.empty() && span.first <= merged.back().second + 1)
+            merged.back().second = std::max(merged.back().second, span.second);
+        else
+            merged.push_back(span);
+    }
+    return merged;
+}
 
 CpuRowTracer::CpuRowTracer(const Tracer &tracer, const Camera &camera,
                            unsigned threads, bool first_pass)
-    : overlay_rects_(overlay_rects(tracer, camera)), tracer_(tracer),
+    : overlay_rects_(tracer.overlay_bounds().empty()
+                         ? std::nullopt
+                         : pixel_rects_of(tracer.overlay_bounds(), camera)),
+      tracer_(tracer),
       camera_(camera), threads_(threads)
 {
     // no pyramid (skipping off, the model not drawn): every bound is 0
@@ -88,18 +98,11 @@ void CpuRowTracer::trace_row(int row, Hit *out) const
         return;
     }
     // the columns of the rectangles across this row, overlaps merged
-    std::vector<std::pair<int, int>> spans;
-    for (const auto &[r0, r1, c0, c1] : *overlay_rects_)
-        if (row >= r0 && row <= r1)
-            spans.emplace_back(c0, c1);
-    std::sort(spans.begin(), spans.end());
     std::fill(out, out + cols, Hit());
-    int next = 0; // first column not yet traced
-    for (const auto &[c0, c1] : spans)
-        for (int col = std::max(c0, next); col <= c1; ++col) {
+    for (const auto &[c0, c1] : row_spans(*overlay_rects_, row))
+        for (int col = c0; col <= c1; ++col) {
             const Ray ray = camera_.ray(row, col);
             tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
-            next = col + 1;
         }
 }
 

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "output/band.hpp"
@@ -28,6 +29,21 @@ struct FirstPassReport {
     size_t tiles = 0, empty_tiles = 0;
     double ms = 0;
 };
+
+/// A rectangle of an image's pixels: first row, last row, first column,
+/// last column (inclusive).
+using PixelRect = std::array<int, 4>;
+
+/// The rectangles of `camera`'s pixels whose rays may meet one of `boxes`
+/// (low and high corners, exaggerated map coordinates): their projections,
+/// a pixel of margin; none where the camera is among the boxes (every
+/// pixel may).
+std::optional<std::vector<PixelRect>> pixel_rects_of(
+    const std::vector<std::array<glm::dvec3, 2>> &boxes, const Camera &camera);
+
+/// The column spans [first, last] of `row` within any of `rects`, in
+/// order, overlapping or touching spans merged.
+std::vector<std::pair<int, int>> row_spans(const std::vector<PixelRect> &rects, int row);
 
 /// \brief Whatever traces the rows of one camera's image: the CPU tracer
 /// below, or a GPU (lib/sbrt_gl). The streamed renderer asks it for bands
@@ -69,7 +85,7 @@ private:
     /// Where the tracer draws only overlays: pixel rectangles (first row,
     /// last row, first column, last column) outside which no ray can hit
     /// anything; none where every pixel is traced.
-    std::optional<std::vector<std::array<int, 4>>> overlay_rects_;
+    std::optional<std::vector<PixelRect>> overlay_rects_;
     const Tracer &tracer_;
     const Camera &camera_;
     unsigned threads_;

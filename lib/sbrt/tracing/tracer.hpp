@@ -114,6 +114,9 @@ public:
     /// everything this tracer can hit where it does not draw the model;
     /// empty where it does.
     std::vector<std::array<glm::dvec3, 2>> overlay_bounds() const;
+    /// Boxes (the same form) that hold each borehole and fence panel,
+    /// whether the model is drawn or not.
+    std::vector<std::array<glm::dvec3, 2>> overlay_boxes() const;
     /// The empty-space pyramid over what is drawn (no levels when skipping
     /// is off or the model is not drawn).
     const MinMaxPyramid &pyramid() const { return pyramid_; }

@@ -65,9 +65,14 @@ void Tracer::index_overlays()
 
 std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_bounds() const
 {
-    std::vector<std::array<glm::dvec3, 2>> boxes;
     if (scene_.draw_model)
-        return boxes;
+        return {};
+    return overlay_boxes();
+}
+
+std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_boxes() const
+{
+    std::vector<std::array<glm::dvec3, 2>> boxes;
     const double low = corner(0).z, high = corner(7).z;
     const double r = scene_.borehole_radius;
     for (const Borehole &b : scene_.boreholes)

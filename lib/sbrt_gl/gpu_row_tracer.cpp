@@ -1,0 +1,87 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   The GPU as the streamed renderer's row tracer of one camera
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_row_tracer.hpp"
+
+#include <algorithm>
+
+#include "util/parallel.hpp"
+
+namespace sbrt_gl {
+
+GpuRowTracer::GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads)
+    : gpu_(gpu), camera_(camera), threads_(cpu_threads), cpu_rects_(std::vector<sbrt::PixelRect>())
+{
+    // boreholes drawn with the model: the CPU traces their pixels (where
+    // only overlays are drawn the CPU renders the whole frame: backend.cpp)
+    const sbrt::Tracer &tracer = gpu.tracer();
+    if (tracer.has_overlays() && tracer.scene().draw_model)
+        cpu_rects_ = sbrt::pixel_rects_of(tracer.overlay_boxes(), camera);
+}
+
+template <typename PixelFunction>
+void GpuRowTracer::for_cpu_pixels(int first, int count, const PixelFunction &f) const
+{
+    if (cpu_rects_ && cpu_rects_->empty())
+        return;
+    sbrt::for_each_row(first, first + count, threads_, [&](int row) {
+        if (!cpu_rects_) {
+            for (int col = 0; col < camera_.cols(); ++col)
+                f(row, col);
+            return;
+        }
+        for (const auto &[c0, c1] : sbrt::row_spans(*cpu_rects_, row))
+            for (int col = c0; col <= c1; ++col)
+                f(row, col);
+    });
+}
+
+void GpuRowTracer::trace_rows(int first, int count, sbrt::Hit *out)
+{
+    gpu_.trace_rows(camera_, first, count, out, threads_, gpu_.loop_budget());
+    const sbrt::Tracer &tracer = gpu_.tracer();
+    const size_t cols = size_t(camera_.cols());
+    for_cpu_pixels(first, count, [&](int row, int col) {
+        tracer.trace_into(camera_.ray(row, col), 0, out[size_t(row - first) * cols + size_t(col)]);
+    });
+}
+
+bool GpuRowTracer::shades_kernel_normals() const
+{
+    return shading_ && shading_->normals == sbrt::Normals::kernel && gpu_.kernel_fits(camera_) &&
+           cpu_rects_ && cpu_rects_->empty();
+}
+
+int GpuRowTracer::preferred_band_rows(int cols) const
+{
+    return std::max(1, (1 << 20) / std::max(cols, 1));
+}
+
+bool GpuRowTracer::shade_rows(int first, int count, const sbrt::Outputs &outputs,
+                              sbrt::Band &band)
+{
+    if (!shading_)
+        return false;
+    if (shading_->normals == sbrt::Normals::kernel) {
+        if (!shades_kernel_normals())
+            return false;
+        if (!kernel_prepared_)
+            gpu_.prepare_kernel(camera_, *shading_);
+        kernel_prepared_ = true;
+        gpu_.shade_kernel_rows(camera_, first, count, *shading_, outputs, band, threads_);
+        return true;
+    }
+    gpu_.shade_rows(camera_, first, count, *shading_, outputs, band, threads_);
+    const sbrt::Tracer &tracer = gpu_.tracer();
+    const sbrt::PixelShader shader(tracer.model(), *shading_);
+    for_cpu_pixels(first, count, [&](int row, int col) {
+        sbrt::Hit hit;
+        tracer.trace_into(camera_.ray(row, col), 0, hit);
+        sbrt::shade_into_band(tracer, shader, camera_, hit, row, col, band);
+    });
+    return true;
+}
+
+} // namespace sbrt_gl

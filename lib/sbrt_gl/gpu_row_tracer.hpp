@@ -1,0 +1,63 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   The GPU as the streamed renderer's row tracer of one camera;
+ *            the pixels whose rays may meet a borehole traced on the CPU
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GL_GPU_ROW_TRACER_HPP
+#define SBRT_GL_GPU_ROW_TRACER_HPP
+
+#include <optional>
+#include <vector>
+
+#include "gpu_tracer.hpp"
+
+namespace sbrt_gl {
+
+/// \brief Rows of `camera`'s image from the GPU: hit records, or (with
+/// shade_on_gpu) the shaded outputs of whole bands. The GPU draws the
+/// model; where the scene also holds boreholes drawn with it, the pixels
+/// whose rays may meet one (the projections of their boxes) are traced and
+/// shaded again by the exact CPU tracer, which draws both: no other ray
+/// can meet a borehole, and elsewhere the two agree.
+class GpuRowTracer : public sbrt::RowTracer {
+public:
+    GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads = 0);
+
+    void trace_rows(int first, int count, sbrt::Hit *out) override;
+    /// With `shading` (gpu_can_shade) the GPU shades too.
+    void shade_on_gpu(const sbrt::Shading *shading) { shading_ = shading; }
+    /// Kernel normals on the GPU: where it shades, the image fits and no
+    /// borehole's pixels come from the CPU (their kernels read the GPU's
+    /// depths).
+    bool shades_kernel_normals() const override;
+    /// Bands of a million pixels or more: enough rays to fill a GPU.
+    int preferred_band_rows(int cols) const override;
+    bool shade_rows(int first, int count, const sbrt::Outputs &outputs,
+                    sbrt::Band &band) override;
+
+    /// The pixels traced on the CPU: none (no overlays drawn with the
+    /// model), rectangles, or every pixel (none: the camera is among the
+    /// boreholes).
+    const std::optional<std::vector<sbrt::PixelRect>> &cpu_pixels() const
+    {
+        return cpu_rects_;
+    }
+
+private:
+    /// Calls f(row, col) for each pixel of rows [first, first + count)
+    /// the CPU traces, on the threads.
+    template <typename PixelFunction>
+    void for_cpu_pixels(int first, int count, const PixelFunction &f) const;
+
+    GpuTracer &gpu_;
+    const sbrt::Camera &camera_;
+    unsigned threads_;
+    const sbrt::Shading *shading_ = nullptr;
+    bool kernel_prepared_ = false; ///< this camera's hit records are on the GPU
+    std::optional<std::vector<sbrt::PixelRect>> cpu_rects_;
+};
+
+} // namespace sbrt_gl
+
+#endif
