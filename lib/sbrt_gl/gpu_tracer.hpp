@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -131,10 +132,21 @@ private:
     /// `band_rows`, reading `bytes_per_pixel` of each back into `out`.
     void dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, int first, int count,
                   GlBuffer &buffer, size_t bytes_per_pixel, void *out);
+    /// The bound program over rows [first, first + count) of an image
+    /// `cols` wide, in bands that fit `buffer` (binding 2), each band's
+    /// `bytes_per_pixel` read back into `out`; `set_band(first, count)`
+    /// uploads what the program reads of the band; `what` names the step
+    /// in a GL error.
+    void dispatch_bands(int cols, int first, int count, GlBuffer &buffer,
+                        size_t bytes_per_pixel, void *out, const char *what,
+                        const std::function<void(int, int)> &set_band);
     /// The shading program for `shading` (with its drape; the kernel
     /// normals' pass or the ray casting one), compiled and its buffers
     /// uploaded when first needed.
     GlComputeProgram &shading_program(const sbrt::Shading &shading, bool kernel);
+    /// Room for `rows` rows `cols` wide of the words of `shade`'s outputs,
+    /// on the GPU and here; returns the words per pixel.
+    size_t shaded_words(int cols, int rows, const sbrt::GpuShade &shade);
     /// Binds the Shade block, the looks and the drape.
     void bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading);
     /// The shaded words of rows [first, first + count) into `band`; the

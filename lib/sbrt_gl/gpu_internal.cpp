@@ -1,0 +1,84 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   What the GPU tracer's files share: the programs' sources,
+ *            timing, buffer sizes
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_internal.hpp"
+
+#include <algorithm>
+
+#include "shader_sources.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "util/error.hpp"
+
+#define SBRT_STRINGIFY(x) #x
+
+namespace sbrt_gl {
+
+double ms_since(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+size_t checked_bytes(size_t bytes, size_t limit, const char *what)
+{
+    if (bytes > limit)
+        sbrt::fail("the model's ", what, " take ", bytes,
+                   " bytes, more than this GPU's largest storage buffer (",
+                   limit, " bytes): render with backend=cpu");
+    return bytes;
+}
+
+/// A storage buffer for up to `rows` rows of `row_bytes`, within the GPU's
+/// largest binding: the one in `buffer` where it is large enough.
+void ensure_band_buffer(const GlApi &gl, std::optional<GlBuffer> &buffer, int rows,
+                        size_t row_bytes, size_t max_block_bytes)
+{
+    if (row_bytes > max_block_bytes)
+        sbrt::fail("an image row of ", row_bytes, " bytes does not fit a storage buffer");
+    const size_t bytes = std::min(size_t(rows), max_block_bytes / row_bytes) * row_bytes;
+    if (!buffer || buffer->bytes() < bytes)
+        buffer.emplace(gl, GL_SHADER_STORAGE_BUFFER, bytes);
+}
+
+
+/// The first pass's tile and budget, as the CPU's (cpu_tracing.hpp).
+namespace {
+
+const char *const FIRST_PASS_DEFINES =
+    "#define SBRT_FIRST_PASS_TILE " SBRT_STRINGIFY(8) "\n"
+    "#define SBRT_FIRST_PASS_BUDGET " SBRT_STRINGIFY(32) "\n";
+static_assert(sbrt::FIRST_PASS_TILE == 8 && sbrt::FIRST_PASS_BUDGET == 32,
+              "FIRST_PASS_DEFINES follow cpu_tracing.hpp");
+
+} // namespace
+
+/// The sources of `pass` for `layout` and the form `model` is held in;
+/// with `drape`, a drape's colours among the outputs (SBRT_DRAPE).
+std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
+                                       const sbrt::Model &model, bool drape)
+{
+    const unsigned count_bytes = model.index().count_bytes();
+    const bool shade = pass == Pass::shade || pass == Pass::kernel_shade;
+    const bool kernel = pass == Pass::kernel_depth || pass == Pass::kernel_shade;
+    return {"#version 450\n",
+            layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
+            model.intervals().is_compact() ? "#define SBRT_COMPACT_INTERVALS 1\n" : "",
+            count_bytes == 1   ? "#define SBRT_COUNT_BYTES 1\n"
+            : count_bytes == 2 ? "#define SBRT_COUNT_BYTES 2\n"
+                               : "#define SBRT_COUNT_BYTES 4\n",
+            shade ? "#define SBRT_SHADE 1\n" : "",
+            drape && shade ? "#define SBRT_DRAPE 1\n" : "",
+            kernel ? "#define SBRT_KERNEL 1\n" : "",
+            pass == Pass::kernel_depth ? "#define SBRT_KERNEL_DEPTH 1\n" : "",
+            FIRST_PASS_DEFINES,
+            SHADER_COMMON_LAYOUT,
+            shade ? SHADER_COMMON_SHADE : "",
+            kernel                     ? SHADER_KERNEL
+            : pass == Pass::first_pass ? SHADER_FIRST_PASS
+                                       : SHADER_RAYCAST};
+}
+
+
+} // namespace sbrt_gl

@@ -1,0 +1,50 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   What the GPU tracer's files share (private to lib/sbrt_gl):
+ *            its programs' sources per pass, timing, buffer sizes
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GL_GPU_INTERNAL_HPP
+#define SBRT_GL_GPU_INTERNAL_HPP
+
+#include <chrono>
+#include <optional>
+#include <vector>
+
+#include "gl_objects.hpp"
+#include "model/model.hpp"
+#include "tracing/gpu_memory_layout.hpp"
+
+namespace sbrt_gl {
+
+using Clock = std::chrono::steady_clock;
+
+/// Milliseconds since `start`.
+double ms_since(Clock::time_point start);
+
+/// `bytes`, or an error naming `what` where they exceed the GPU's largest
+/// storage buffer (`limit`).
+size_t checked_bytes(size_t bytes, size_t limit, const char *what);
+
+/// A storage buffer for up to `rows` rows of `row_bytes`, within the GPU's
+/// largest binding: the one in `buffer` where it is large enough.
+void ensure_band_buffer(const GlApi &gl, std::optional<GlBuffer> &buffer, int rows,
+                        size_t row_bytes, size_t max_block_bytes);
+
+/// What a program of the GPU path does.
+enum class Pass {
+    records,      ///< raycast.comp: hit records
+    shade,        ///< raycast.comp: the shaded outputs (SBRT_SHADE)
+    kernel_depth, ///< kernel.comp: the view depths (SBRT_KERNEL_DEPTH)
+    kernel_shade, ///< kernel.comp: kernel normals and the shaded outputs
+    first_pass    ///< first_pass.comp: the tiles' first-hit bounds
+};
+
+/// The sources of `pass` for `layout` and the form `model` is held in;
+/// with `drape`, a drape's colours among the outputs (SBRT_DRAPE).
+std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
+                                       const sbrt::Model &model, bool drape = false);
+
+} // namespace sbrt_gl
+
+#endif

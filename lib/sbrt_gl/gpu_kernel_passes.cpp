@@ -1,0 +1,95 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   Image-space kernel normals on the GPU (shaders/kernel.comp):
+ *            the whole image's hit records and view depths kept on the
+ *            GPU, then the kernel normals and shading of each band
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_tracer.hpp"
+
+#include "gpu_internal.hpp"
+#include "shading/kernel_normals.hpp"
+#include "util/error.hpp"
+
+namespace sbrt_gl {
+
+bool GpuTracer::kernel_fits(const sbrt::Camera &camera) const
+{
+    const size_t pixels = size_t(camera.rows()) * size_t(camera.cols());
+    return !camera.is_window() && pixels * sizeof(sbrt::GpuPixelHit) <= max_block_bytes_;
+}
+
+void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading)
+{
+    if (!kernel_fits(camera))
+        sbrt::fail("kernel normals on the GPU: the image's hit records do not fit one "
+                   "storage buffer");
+    const int rows = camera.rows(), cols = camera.cols();
+    const size_t pixels = size_t(rows) * size_t(cols);
+    // 1. the hit records of the whole image, kept on the GPU
+    if (!image_hits_ || image_hits_->bytes() < pixels * sizeof(sbrt::GpuPixelHit)) {
+        image_hits_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * sizeof(sbrt::GpuPixelHit));
+        depths_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * sizeof(float));
+    }
+    sbrt::GpuView view = traced_view(camera, loop_budget_);
+    view.options[2] = 0;
+    view.options[3] = uint32_t(rows);
+    record_program().use();
+    bind_model();
+    view_.upload(&view, sizeof view);
+    image_hits_->bind(2);
+    auto start = Clock::now();
+    gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((rows + 7) / 8), 1);
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // 2. the kernel's cells and camera, and every pixel's view depth
+    const sbrt::KernelNormals kernel(tracer_, camera, shading.kernel);
+    kernel_ = sbrt::make_gpu_kernel(tracer_, camera, kernel);
+    const std::vector<float> cells = sbrt::make_gpu_kernel_cells(kernel);
+    kernel_cells_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, cells.size() * sizeof(float),
+                          cells.data());
+    if (!kernel_block_)
+        kernel_block_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuKernel));
+    kernel_block_->upload(&kernel_, sizeof kernel_);
+    if (!kernel_depth_program_)
+        kernel_depth_program_.emplace(
+            gl_, pass_sources(Pass::kernel_depth, layout_, tracer_.model()), &cache_);
+    kernel_depth_program_->use();
+    view_.bind(0);
+    kernel_block_->bind(2);
+    image_hits_->bind(0);
+    depths_->bind(1);
+    gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((rows + 7) / 8), 1);
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gl_.Finish();
+    check_gl(gl_, "the kernel normals' trace and depth passes");
+    stats_.trace_ms += ms_since(start);
+}
+
+void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int row_count,
+                                  const sbrt::Shading &shading, const sbrt::Outputs &outputs,
+                                  sbrt::Band &band, unsigned cpu_threads)
+{
+    const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
+    GlComputeProgram &program = shading_program(shading, true);
+    const int cols = camera.cols();
+    const size_t words_per_pixel = shaded_words(cols, row_count, shade);
+    sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
+    view_.upload(&view, sizeof view);
+    program.use();
+    view_.bind(0);
+    bind_shading(shade, shading);
+    kernel_block_->bind(2);
+    image_hits_->bind(0);
+    depths_->bind(1);
+    kernel_cells_->bind(4);
+    dispatch_bands(cols, first_row, row_count, *pixels_, words_per_pixel * 4, words_.data(),
+                   "the kernel normals' shading pass", [&](int first, int count) {
+                       kernel_.counts[1] = uint32_t(first);
+                       kernel_.counts[2] = uint32_t(count);
+                       kernel_block_->upload(&kernel_, sizeof kernel_);
+                   });
+    unpack_words(camera, first_row, row_count, shading, outputs, words_per_pixel, band,
+                 cpu_threads);
+}
+
+} // namespace sbrt_gl
