@@ -63,8 +63,8 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
         gpu.render(camera, outputs, sink, unsigned(request.threads));
     G_verbose_message(r.shaded_on_gpu
                           ? _("Shading: on the GPU")
-                          : _("Shading: on the CPU (smoothed kernel normals, or an "
-                              "image whose hits do not fit the GPU)"));
+                          : _("Shading: on the CPU (kernel normals of an image "
+                              "whose hits do not fit the GPU)"));
     if (first)
         G_verbose_message(_("Model upload: %.1f ms (kept for the next frames)"),
                           r.gpu.upload_ms);

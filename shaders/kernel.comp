@@ -2,9 +2,13 @@
 // the hybrid kernel of Graciano et al. 2018, section 4.1.2), over the hit
 // records of the whole image that raycast.comp wrote (SBRT_KERNEL):
 // - the depth pass (SBRT_KERNEL_DEPTH) writes each pixel's view depth;
-// - the shading pass finds the kernel normal of each hit of a band of rows
-//   from the depths its kernel cells project to, and shades the pixel
-//   (common/shade.glsl) into the band's outputs.
+// - with smoothing (kernel_counts.w, the Gaussian's radius in pixels), the
+//   normals pass (SBRT_KERNEL_NORMALS) writes each hit's kernel normal and
+//   the across pass (SBRT_KERNEL_ACROSS) their weighted sums along the rows;
+// - the shading pass (SBRT_SHADE) finds the normal of each hit of a band of
+//   rows (its kernel normal, or the sum down the columns of the across
+//   sums, normalised) and shades the pixel (common/shade.glsl) into the
+//   band's outputs.
 // A ray that went over the loop budget (llvmpipe) shows nothing to its
 // neighbours' kernels, and goes back to the host to be traced there.
 
@@ -12,19 +16,62 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 const float INF = 1.0 / 0.0;
 
+// the pixel of this invocation in the whole image (rows from `first_row`)
+// and its index there; false past the image or the rows asked for
+bool image_pixel(uint first_row, uint rows_asked, out uvec2 pixel, out uint i)
+{
+    pixel = uvec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y + first_row);
+    i = pixel.y * grid.z + pixel.x;
+    return pixel.x < grid.z && pixel.y < grid.w && gl_GlobalInvocationID.y < rows_asked;
+}
+
+// whether a record is a hit the kernels see (not a miss, not over budget)
+bool seen(PixelHit hit)
+{
+    return (hit.code & 0xffffu) != 0u && (hit.code & CODE_OVER_BUDGET) == 0u;
+}
+
+// the local direction of the ray of pixel (col, row), as raycast.comp's
+vec3 pixel_direction(uvec2 pixel, out vec3 start)
+{
+    float x = (float(pixel.x) + 0.5) / float(grid.z) * 2.0 - 1.0;
+    float y = 1.0 - (float(pixel.y) + 0.5) / float(grid.w) * 2.0;
+    vec3 d = forward.xyz + x * du.xyz + y * dv.xyz;
+    start = (origin_hi.xyz + spread_u.w * d) +
+            (origin_lo.xyz + x * spread_u.xyz + y * spread_v.xyz);
+    return d;
+}
+
 #ifdef SBRT_KERNEL_DEPTH
 void main()
 {
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    uint cols = grid.z, rows = grid.w;
-    if (pixel.x >= cols || pixel.y >= rows)
+    uvec2 pixel;
+    uint i;
+    if (!image_pixel(0u, grid.w, pixel, i))
         return;
-    uint i = pixel.y * cols + pixel.x;
     PixelHit hit = image_hits[i];
-    bool seen = (hit.code & 0xffffu) != 0u && (hit.code & CODE_OVER_BUDGET) == 0u;
     // KernelNormals::view_depth: along the view axis from the camera
-    depths[i] = seen ? dot(hit.point * kernel_voxel.xyz - kernel_eye.xyz, kernel_forward.xyz)
-                     : INF;
+    depths[i] = seen(hit)
+        ? dot(hit.point * kernel_voxel.xyz - kernel_eye.xyz, kernel_forward.xyz) : INF;
+}
+#elif defined(SBRT_KERNEL_ACROSS)
+// KernelBands::smooth, its first pass: along the row, over hits only
+void main()
+{
+    uvec2 pixel;
+    uint i;
+    if (!image_pixel(0u, grid.w, pixel, i))
+        return;
+    vec3 sum = vec3(0.0);
+    if (kernel_normals[i].w != 0.0) {
+        int radius = int(kernel_counts.w), cols = int(grid.z);
+        for (int d = -radius; d <= radius; ++d) {
+            int c = int(pixel.x) + d;
+            if (c >= 0 && c < cols && kernel_normals[i + uint(d)].w != 0.0)
+                sum += smoothing_weight(d) * kernel_normals[i + uint(d)].xyz;
+        }
+    }
+    kernel_across[i] = vec4(sum, 0.0);
 }
 #else
 // KernelNormals::normal: the unit vectors towards the kernel's cells that
@@ -39,10 +86,10 @@ bool kernel_normal(vec3 point, float depth, out vec3 n)
     bool parallel_rays = kernel_eye.w != 0.0;
     vec3 sum = vec3(0.0);
     for (uint k = 0u; k < kernel_counts.x; ++k) {
-        vec4 cell = kernel_cells[2u * k], across = kernel_cells[2u * k + 1u];
+        vec4 cell = kernel_cells[2u * k], offsets = kernel_cells[2u * k + 1u];
         float z = depth + cell.w;
-        float x = (p_du + across.x) / kernel_du.w;
-        float y = (p_dv + across.y) / kernel_dv.w;
+        float x = (p_du + offsets.x) / kernel_du.w;
+        float y = (p_dv + offsets.y) / kernel_dv.w;
         if (!parallel_rays) {
             if (!(z > 0.0))
                 continue;
@@ -63,29 +110,63 @@ bool kernel_normal(vec3 point, float depth, out vec3 n)
     return true;
 }
 
+// the normal of a hit: its kernel normal, else its face's
+vec3 hit_kernel_normal(PixelHit hit, uint i, vec3 d)
+{
+    vec3 n;
+    if (!kernel_normal(hit.point, depths[i], n))
+        n = hit_normal(hit.code, d);
+    return n;
+}
+
+#ifdef SBRT_KERNEL_NORMALS
+void main()
+{
+    uvec2 pixel;
+    uint i;
+    if (!image_pixel(0u, grid.w, pixel, i))
+        return;
+    PixelHit hit = image_hits[i];
+    vec3 start;
+    kernel_normals[i] = seen(hit)
+        ? vec4(hit_kernel_normal(hit, i, pixel_direction(pixel, start)), 1.0) : vec4(0.0);
+}
+#else
+// KernelBands::smooth, its second pass: down the column over the hits'
+// sums along their rows, normalised; the kernel normal where it is zero
+vec3 smoothed_normal(uvec2 pixel, uint i)
+{
+    int radius = int(kernel_counts.w), rows = int(grid.w);
+    vec3 sum = vec3(0.0);
+    for (int d = -radius; d <= radius; ++d) {
+        int r = int(pixel.y) + d;
+        uint j = uint(r) * grid.z + pixel.x;
+        if (r >= 0 && r < rows && kernel_normals[j].w != 0.0)
+            sum += smoothing_weight(d) * kernel_across[j].xyz;
+    }
+    float length_of_sum = length(sum);
+    return length_of_sum > 0.0 ? sum / length_of_sum : kernel_normals[i].xyz;
+}
+
 void main()
 {
     // this dispatch covers the band of image rows from kernel_counts.y on
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    uint cols = grid.z, rows = grid.w, row = pixel.y + kernel_counts.y;
-    if (pixel.x >= cols || row >= rows || pixel.y >= kernel_counts.z)
+    uvec2 pixel;
+    uint i;
+    if (!image_pixel(kernel_counts.y, kernel_counts.z, pixel, i))
         return;
-    uint index = pixel.y * cols + pixel.x, i = row * cols + pixel.x;
+    uint index = gl_GlobalInvocationID.y * grid.z + pixel.x;
     PixelHit hit = image_hits[i];
     if ((hit.code & CODE_OVER_BUDGET) != 0u) {
         words[index * outputs.x] = 0u;
         return;
     }
-    // the pixel's ray (as raycast.comp makes it) and where it starts
-    float x = (float(pixel.x) + 0.5) / float(cols) * 2.0 - 1.0;
-    float y = 1.0 - (float(row) + 0.5) / float(rows) * 2.0;
-    vec3 d = forward.xyz + x * du.xyz + y * dv.xyz;
-    vec3 start = (origin_hi.xyz + spread_u.w * d) +
-                 (origin_lo.xyz + x * spread_u.xyz + y * spread_v.xyz);
-    vec3 n;
-    if ((hit.code & 0xffffu) == 0u || !kernel_normal(hit.point, depths[i], n))
-        n = hit_normal(hit.code, d);
+    vec3 start;
+    vec3 d = pixel_direction(pixel, start), n = vec3(0.0);
+    if ((hit.code & 0xffffu) != 0u)
+        n = kernel_counts.w > 0u ? smoothed_normal(pixel, i) : hit_kernel_normal(hit, i, d);
     write_pixel(index, hit.point, hit.code, n, hit.veil,
                 length((hit.point - start) * real_unit.xyz));
 }
+#endif
 #endif

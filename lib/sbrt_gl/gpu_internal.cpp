@@ -60,8 +60,11 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
                                        const sbrt::Model &model, bool drape)
 {
     const unsigned count_bytes = model.index().count_bytes();
-    const bool shade = pass == Pass::shade || pass == Pass::kernel_shade;
-    const bool kernel = pass == Pass::kernel_depth || pass == Pass::kernel_shade;
+    // the normals pass reads a face's normal as shading does
+    const bool shade =
+        pass == Pass::shade || pass == Pass::kernel_shade || pass == Pass::kernel_normals;
+    const bool kernel = pass == Pass::kernel_depth || pass == Pass::kernel_normals ||
+                        pass == Pass::kernel_across || pass == Pass::kernel_shade;
     return {"#version 450\n",
             layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
             model.intervals().is_compact() ? "#define SBRT_COMPACT_INTERVALS 1\n" : "",
@@ -71,7 +74,10 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             shade ? "#define SBRT_SHADE 1\n" : "",
             drape && shade ? "#define SBRT_DRAPE 1\n" : "",
             kernel ? "#define SBRT_KERNEL 1\n" : "",
-            pass == Pass::kernel_depth ? "#define SBRT_KERNEL_DEPTH 1\n" : "",
+            pass == Pass::kernel_depth     ? "#define SBRT_KERNEL_DEPTH 1\n"
+            : pass == Pass::kernel_normals ? "#define SBRT_KERNEL_NORMALS 1\n"
+            : pass == Pass::kernel_across  ? "#define SBRT_KERNEL_ACROSS 1\n"
+                                           : "",
             FIRST_PASS_DEFINES,
             SHADER_COMMON_LAYOUT,
             shade ? SHADER_COMMON_SHADE : "",

@@ -32,10 +32,12 @@ void ensure_band_buffer(const GlApi &gl, std::optional<GlBuffer> &buffer, int ro
                         size_t row_bytes, size_t max_block_bytes);
 
 /// What a program of the GPU path does.
-enum class Pass {
+enum class Pass : int {
     records,      ///< raycast.comp: hit records
     shade,        ///< raycast.comp: the shaded outputs (SBRT_SHADE)
     kernel_depth, ///< kernel.comp: the view depths (SBRT_KERNEL_DEPTH)
+    kernel_normals, ///< kernel.comp: the kernel normals (SBRT_KERNEL_NORMALS)
+    kernel_across,  ///< kernel.comp: their sums along the rows (smoothing)
     kernel_shade, ///< kernel.comp: kernel normals and the shaded outputs
     first_pass    ///< first_pass.comp: the tiles' first-hit bounds
 };

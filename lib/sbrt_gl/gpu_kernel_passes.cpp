@@ -41,28 +41,52 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     auto start = Clock::now();
     gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((rows + 7) / 8), 1);
     gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    // 2. the kernel's cells and camera, and every pixel's view depth
+    // 2. the kernel's cells and camera (and the smoothing's weights)
     const sbrt::KernelNormals kernel(tracer_, camera, shading.kernel);
-    kernel_ = sbrt::make_gpu_kernel(tracer_, camera, kernel);
-    const std::vector<float> cells = sbrt::make_gpu_kernel_cells(kernel);
+    const std::vector<double> weights =
+        shading.smooth > 0 ? sbrt::gaussian_weights(shading.smooth) : std::vector<double>();
+    kernel_ = sbrt::make_gpu_kernel(tracer_, camera, kernel, weights);
+    const std::vector<float> cells = sbrt::make_gpu_kernel_cells(kernel, weights);
     kernel_cells_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, cells.size() * sizeof(float),
                           cells.data());
     if (!kernel_block_)
         kernel_block_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuKernel));
     kernel_block_->upload(&kernel_, sizeof kernel_);
-    if (!kernel_depth_program_)
-        kernel_depth_program_.emplace(
-            gl_, pass_sources(Pass::kernel_depth, layout_, tracer_.model()), &cache_);
-    kernel_depth_program_->use();
+    // 3. every pixel's view depth; with smoothing, every hit's kernel
+    // normal and their sums along the rows
     view_.bind(0);
     kernel_block_->bind(2);
     image_hits_->bind(0);
     depths_->bind(1);
+    kernel_cells_->bind(4);
+    whole_image_pass(Pass::kernel_depth, kernel_depth_program_, cols, rows);
+    if (!weights.empty()) {
+        if (!kernel_normals_ || kernel_normals_->bytes() < pixels * 16) {
+            kernel_normals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * 16);
+            kernel_across_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * 16);
+        }
+        // the normals pass reads the faces' normals as shading does
+        const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, sbrt::Outputs{});
+        shading_program(shading, true);
+        bind_shading(shade, shading);
+        kernel_normals_->bind(3);
+        kernel_across_->bind(6);
+        whole_image_pass(Pass::kernel_normals, kernel_normals_program_, cols, rows);
+        whole_image_pass(Pass::kernel_across, kernel_across_program_, cols, rows);
+    }
+    gl_.Finish();
+    check_gl(gl_, "the kernel normals' trace, depth and smoothing passes");
+    stats_.trace_ms += ms_since(start);
+}
+
+void GpuTracer::whole_image_pass(Pass pass, std::optional<GlComputeProgram> &program,
+                                 int cols, int rows)
+{
+    if (!program)
+        program.emplace(gl_, pass_sources(pass, layout_, tracer_.model()), &cache_);
+    program->use();
     gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((rows + 7) / 8), 1);
     gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    gl_.Finish();
-    check_gl(gl_, "the kernel normals' trace and depth passes");
-    stats_.trace_ms += ms_since(start);
 }
 
 void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int row_count,
@@ -82,6 +106,10 @@ void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int
     image_hits_->bind(0);
     depths_->bind(1);
     kernel_cells_->bind(4);
+    if (kernel_.counts[3] > 0) {
+        kernel_normals_->bind(3);
+        kernel_across_->bind(6);
+    }
     dispatch_bands(cols, first_row, row_count, *pixels_, words_per_pixel * 4, words_.data(),
                    "the kernel normals' shading pass", [&](int first, int count) {
                        kernel_.counts[1] = uint32_t(first);

@@ -18,8 +18,7 @@ GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &rendere
 bool GpuRenderer::shades_on_gpu(const sbrt::Camera &camera) const
 {
     const sbrt::Shading &shading = renderer_.shading();
-    return sbrt::gpu_can_shade(shading) &&
-           (shading.normals == sbrt::Normals::face || gpu_.kernel_fits(camera));
+    return shading.normals == sbrt::Normals::face || gpu_.kernel_fits(camera);
 }
 
 GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,

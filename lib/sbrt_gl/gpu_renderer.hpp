@@ -17,9 +17,8 @@ namespace sbrt_gl {
 struct GpuFrameReport {
     sbrt::RenderReport render; ///< the pipeline's bands and times
     GpuStats gpu;              ///< dispatches, read-back, rays over the budget
-    /// Whether the GPU shaded (face normals, or kernel normals without
-    /// smoothing where the image's hits fit it), else the CPU did from the
-    /// GPU's hits.
+    /// Whether the GPU shaded (face normals, or kernel normals where the
+    /// image's hits fit it), else the CPU did from the GPU's hits.
     bool shaded_on_gpu = false;
 };
 
@@ -29,7 +28,8 @@ struct GpuFrameReport {
 /// frame goes through the renderer's pipeline band by band: the GPU
 /// traces, runs the first pass, finds the normals, drapes and lights, and
 /// only the outputs asked for come back into the bands the sink takes;
-/// smoothed kernel normals are found on the CPU from the GPU's hits. Holds
+/// kernel normals of an image whose hits do not fit the GPU are found on
+/// the CPU from the GPU's hits. Holds
 /// references to both arguments; the context must be current.
 class GpuRenderer {
 public:

@@ -25,7 +25,8 @@ public:
     GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads = 0);
 
     void trace_rows(int first, int count, sbrt::Hit *out) override;
-    /// With `shading` (gpu_can_shade) the GPU shades too.
+    /// With `shading` the GPU shades too (and finds kernel normals where
+    /// shades_kernel_normals says).
     void shade_on_gpu(const sbrt::Shading *shading) { shading_ = shading; }
     /// Kernel normals on the GPU: where it shades, the image fits and no
     /// borehole's pixels come from the CPU (their kernels read the GPU's

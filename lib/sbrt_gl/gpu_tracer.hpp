@@ -25,6 +25,9 @@
 
 namespace sbrt_gl {
 
+/// What a program of the GPU path does (gpu_internal.hpp).
+enum class Pass : int;
+
 /// Figures of the last trace_image call (or of the trace_rows calls since
 /// reset_stats).
 struct GpuStats {
@@ -73,7 +76,8 @@ public:
     /// of its whole image and their view depths, kept on the GPU.
     void prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading);
     /// Then rows [first, first + count): kernel normals (shading.kernel,
-    /// no smoothing) from the depths, shaded as shade_rows does.
+    /// smoothed by shading.smooth) from the depths, shaded as shade_rows
+    /// does.
     void shade_kernel_rows(const sbrt::Camera &camera, int first, int count,
                            const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                            sbrt::Band &band, unsigned cpu_threads = 0);
@@ -147,6 +151,10 @@ private:
     /// Room for `rows` rows `cols` wide of the words of `shade`'s outputs,
     /// on the GPU and here; returns the words per pixel.
     size_t shaded_words(int cols, int rows, const sbrt::GpuShade &shade);
+    /// Compiles `program` for `pass` (gpu_internal.hpp) when
+    /// first needed and runs it over the whole image, its buffers bound.
+    void whole_image_pass(Pass pass, std::optional<GlComputeProgram> &program, int cols,
+                          int rows);
     /// Binds the Shade block, the looks and the drape.
     void bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading);
     /// The shaded words of rows [first, first + count) into `band`; the
@@ -178,8 +186,9 @@ private:
     /// or without), the whole image's hit records and depths, the
     /// kernel's cells and its Kernel block
     std::optional<GlComputeProgram> kernel_depth_program_, kernel_program_,
-        kernel_drape_program_;
-    std::optional<GlBuffer> image_hits_, depths_, kernel_cells_, kernel_block_;
+        kernel_drape_program_, kernel_normals_program_, kernel_across_program_;
+    std::optional<GlBuffer> image_hits_, depths_, kernel_cells_, kernel_block_,
+        kernel_normals_, kernel_across_;
     /// the first pass: its program, the tiles' bounds (binding 8) and the
     /// view they are of (rows and budget zeroed)
     std::optional<GlComputeProgram> first_pass_program_;

@@ -207,8 +207,13 @@ layout(std430, binding = 0) readonly buffer ImageHits { PixelHit image_hits[]; }
 layout(std430, binding = 1) buffer Depths { float depths[]; };
 // The kernel's cells (lib/sbrt/shading/kernel_normals.hpp): per cell two
 // vec4: the unit vector from the centre and its offset along the view's
-// forward axis; its offsets along du and dv.
+// forward axis; its offsets along du and dv. Then, with smoothing, the
+// Gaussian's weights from -radius to radius, one a vec4 (x).
 layout(std430, binding = 4) readonly buffer KernelCells { vec4 kernel_cells[]; };
+// With smoothing: each pixel's kernel normal (w: 1 on a hit the kernels
+// see, else 0), and the sums along its row (binding 6).
+layout(std430, binding = 3) buffer KernelNormals { vec4 kernel_normals[]; };
+layout(std430, binding = 6) buffer KernelAcross { vec4 kernel_across[]; };
 // The camera in the kernel's terms; mirrored by sbrt::GpuKernel.
 layout(std140, binding = 2) uniform Kernel {
     vec4 kernel_eye;     // xyz: the camera's origin from the model's corner
@@ -218,8 +223,15 @@ layout(std140, binding = 2) uniform Kernel {
     vec4 kernel_dv;      // xyz: dv; w: dv . dv
     vec4 kernel_voxel;   // xyz: exaggerated map units per local unit
     uvec4 kernel_counts; // x: cells; y: first image row of this dispatch;
-                         // z: its rows
+                         // z: its rows; w: the smoothing's radius (pixels,
+                         // 0: none)
 };
+
+// the smoothing's weight d pixels away (-radius <= d <= radius)
+float smoothing_weight(int d)
+{
+    return kernel_cells[2u * kernel_counts.x + uint(d + int(kernel_counts.w))].x;
+}
 #endif
 
 const uint FACE_NONE = 0u, FACE_WEST = 1u, FACE_EAST = 2u, FACE_SOUTH = 3u,

@@ -782,11 +782,21 @@ TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
                                                        1.5 * t.radius(), 47, 64),
                                   what + " orthographic");
     }
-    // smoothing stays on the CPU (the renderer's window of rows)
-    Shading smooth;
-    smooth.normals = Normals::kernel;
-    smooth.smooth = 1.0;
-    EXPECT_FALSE(gpu_can_shade(smooth));
+    // smoothed (Gaussian sigma in pixels): two more passes on the GPU
+    for (double sigma : {0.8, 2.0}) {
+        Shading smooth;
+        smooth.light = Shading::light_from(250, 30);
+        smooth.normals = Normals::kernel;
+        smooth.kernel = 5;
+        smooth.smooth = sigma;
+        const Renderer renderer(m, 2.0, Scene{}, smooth, {2, true, 16});
+        const Tracer &t = renderer.tracer();
+        expect_gpu_shading_as_cpu(*context_, layout(), renderer,
+                                  Camera::perspective(t.centre() + 2.2 * t.radius() *
+                                                                      glm::normalize(glm::dvec3(-0.5, -0.7, 0.5)),
+                                                      t.centre(), 40, 61, 83),
+                                  "smoothed " + std::to_string(sigma));
+    }
 }
 
 TEST_P(Gpu, DrawsBoreholesWithTheModelTheirPixelsTracedOnTheCpu)

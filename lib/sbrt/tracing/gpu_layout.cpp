@@ -104,8 +104,6 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid)
 GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
                         const Outputs &outputs)
 {
-    if (!gpu_can_shade(shading))
-        fail("the GPU shades face normals only");
     GpuShade shade{};
     put(shade.light, shading.light);
     shade.light[3] = float(shading.ambient);
@@ -139,7 +137,7 @@ GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
 }
 
 GpuKernel make_gpu_kernel(const Tracer &tracer, const Camera &camera,
-                          const KernelNormals &kernel)
+                          const KernelNormals &kernel, const std::vector<double> &weights)
 {
     GpuKernel k{};
     put(k.eye, camera.origin() - tracer.corner(0));
@@ -152,17 +150,21 @@ GpuKernel make_gpu_kernel(const Tracer &tracer, const Camera &camera,
     k.dv[3] = float(glm::dot(camera.dv(), camera.dv()));
     put(k.voxel, tracer.voxel_size());
     k.counts[0] = uint32_t(kernel.cells().size());
+    k.counts[3] = uint32_t(weights.size() / 2);
     return k;
 }
 
-std::vector<float> make_gpu_kernel_cells(const KernelNormals &kernel)
+std::vector<float> make_gpu_kernel_cells(const KernelNormals &kernel,
+                                         const std::vector<double> &weights)
 {
     std::vector<float> words;
-    words.reserve(kernel.cells().size() * 8);
+    words.reserve(kernel.cells().size() * 8 + weights.size() * 4);
     for (const KernelNormals::Cell &cell : kernel.cells())
         words.insert(words.end(), {float(cell.unit.x), float(cell.unit.y), float(cell.unit.z),
                                    float(cell.along_forward), float(cell.along_du),
                                    float(cell.along_dv), 0.0f, 0.0f});
+    for (double weight : weights)
+        words.insert(words.end(), {float(weight), 0.0f, 0.0f, 0.0f});
     return words;
 }
 

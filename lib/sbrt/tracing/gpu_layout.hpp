@@ -93,7 +93,8 @@ struct GpuKernel {
     float du[4];      ///< w: du . du
     float dv[4];      ///< w: dv . dv
     float voxel[4];   ///< exaggerated map units per local unit
-    uint32_t counts[4]; ///< cells; first image row and rows of a dispatch
+    uint32_t counts[4]; ///< cells; first image row and rows of a dispatch;
+                        ///< the smoothing's radius (0: none)
 };
 static_assert(sizeof(GpuKernel) == 96 && offsetof(GpuKernel, counts) == 80,
               "std140 Kernel block");
@@ -127,25 +128,19 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
                       uint32_t loop_budget = GPU_LOOP_BUDGET);
 
-/// Whether the GPU shades with `shading` itself: face normals, or kernel
-/// normals without smoothing (with it, they are found on the CPU), with or
-/// without a drape.
-inline bool gpu_can_shade(const Shading &shading)
-{
-    return shading.normals == Normals::face || !(shading.smooth > 0);
-}
-
-/// The Kernel block of `camera` (a whole image) with the kernel of size
-/// `k` (Shading::kernel); its cells' count is `cells`' size.
+/// The Kernel block of `camera` (a whole image) with `kernel` and the
+/// smoothing of `weights` (gaussian_weights; none: no smoothing).
 GpuKernel make_gpu_kernel(const Tracer &tracer, const Camera &camera,
-                          const KernelNormals &kernel);
+                          const KernelNormals &kernel, const std::vector<double> &weights);
 
 /// `buffer KernelCells` (std430): per cell of `kernel`, (unit vector,
-/// offset along forward) and (offsets along du and dv, 0, 0).
-std::vector<float> make_gpu_kernel_cells(const KernelNormals &kernel);
+/// offset along forward) and (offsets along du and dv, 0, 0); then each
+/// of `weights` as a vec4 (x).
+std::vector<float> make_gpu_kernel_cells(const KernelNormals &kernel,
+                                         const std::vector<double> &weights);
 
-/// The Shade block of the tracer's scene lit by `shading` (gpu_can_shade),
-/// for `outputs`, with its drape's blend and texture frame.
+/// The Shade block of the tracer's scene lit by `shading`, for `outputs`,
+/// with its drape's blend and texture frame.
 GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
                         const Outputs &outputs);
 
