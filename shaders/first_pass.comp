@@ -15,6 +15,10 @@ const uint HEAP = 4u * uint(SBRT_FIRST_PASS_BUDGET) + 4u;
 
 vec3 o_low = vec3(INF), o_high = vec3(-INF), d_low = vec3(INF), d_high = vec3(-INF);
 float s_first = 0.0; // where the rays start (the eye)
+// the rounding of the beam's float corners, in cells and local z: node
+// boxes are widened by it (the ray casting keeps the origin's high and low
+// parts apart, the beam does not)
+vec3 slack = vec3(0.0);
 
 // narrows [s0, s1] to where o + s d <= c (below) or >= c (not below)
 bool half_line(float o, float d, float c, bool below, inout float s0, inout float s1)
@@ -81,9 +85,9 @@ void push(uint level, int x, int y)
     vec2 range = nodes[l.x + uint(y) * l.y + uint(x)];
     if (range.x > range.y)
         return; // nothing to draw there
-    vec3 low = vec3(float(x << level), float(y << level), range.x);
+    vec3 low = vec3(float(x << level), float(y << level), range.x) - slack;
     vec3 high = vec3(min(float((x + 1) << level), float(grid.x)),
-                     min(float((y + 1) << level), float(grid.y)), range.y);
+                     min(float((y + 1) << level), float(grid.y)), range.y) + slack;
     float s = enters(low, high);
     if (s < INF && heap_count < HEAP)
         heap_push(vec4(s, float(level), float(x), float(y)));
@@ -112,6 +116,9 @@ void main()
         d_high = max(d_high, d);
     }
     s_first = spread_u.w;
+    // a few float steps of the largest coordinate the beam's origin holds
+    vec3 reach = max(abs(o_low), abs(o_high)) + vec3(float(grid.x), float(grid.y), box.x);
+    slack = reach * 4.0e-7 + 1.0e-3;
     // best first: the frontier's nearest node bounds every cell below it
     uint top = counts.y - 1u;
     push(top, 0, 0);

@@ -208,6 +208,10 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
             shade(hits.data(), row, band);
             flow.row_done(row);
         }
+        catch (const BandWriter::Cancelled &) {
+            // another thread failed and cancelled: its error is the one
+            // the caller gets
+        }
         catch (...) {
             flow.abort(); // no thread waits for a band that cannot come
             throw;

@@ -121,6 +121,9 @@ GlComputeProgram::GlComputeProgram(const GlApi &gl,
     };
     const std::string key = ProgramCache::key(
         text(GL_VENDOR) + '\n' + text(GL_RENDERER) + '\n' + text(GL_VERSION), sources);
+    // an error of an earlier step is reported as such, not taken for a
+    // refused binary below
+    check_gl(gl, "before loading or storing a program binary");
     if (load(*cache, key)) {
         from_cache_ = true;
         return;
@@ -147,8 +150,9 @@ bool GlComputeProgram::load(const ProgramCache &cache, const std::string &key)
                        GLsizei(binary->bytes.size()));
     GLint ok = 0;
     gl_->GetProgramiv(program_, GL_LINK_STATUS, &ok);
-    // a binary of another driver build, or damaged: compiled again
-    while (gl_->GetError() != GL_NO_ERROR)
+    // a binary of another driver build, or damaged: compiled again (the
+    // errors it raised cleared; none was pending before: checked)
+    for (int k = 0; k < 16 && gl_->GetError() != GL_NO_ERROR; ++k)
         ok = 0;
     if (!ok) {
         gl_->DeleteProgram(program_);

@@ -41,6 +41,7 @@ sbrt::GpuView GpuTracer::traced_view(const sbrt::Camera &camera, uint32_t loop_b
     if (tile_starts_ && std::memcmp(&key, &first_pass_view_, sizeof key) == 0)
         return view;
     const auto start = Clock::now();
+    first_pass_view_ = {}; // no bounds of any camera until these are done
     const size_t bytes = size_t(tile_cols) * tile_rows * sizeof(float);
     if (!tile_starts_ || tile_starts_->bytes() < bytes)
         tile_starts_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,

@@ -18,7 +18,11 @@ GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &rendere
 bool GpuRenderer::shades_on_gpu(const sbrt::Camera &camera) const
 {
     const sbrt::Shading &shading = renderer_.shading();
-    return shading.normals == sbrt::Normals::face || gpu_.kernel_fits(camera);
+    if (shading.normals == sbrt::Normals::face)
+        return true;
+    // kernel normals: where the image's hits fit and no pixel comes from the CPU
+    const auto cpu_pixels = cpu_pixels_of(renderer_.tracer(), camera);
+    return gpu_.kernel_fits(camera) && cpu_pixels && cpu_pixels->empty();
 }
 
 GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,

@@ -11,14 +11,20 @@
 
 namespace sbrt_gl {
 
-GpuRowTracer::GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads)
-    : gpu_(gpu), camera_(camera), threads_(cpu_threads), cpu_rects_(std::vector<sbrt::PixelRect>())
+std::optional<std::vector<sbrt::PixelRect>> cpu_pixels_of(const sbrt::Tracer &tracer,
+                                                          const sbrt::Camera &camera)
 {
     // boreholes drawn with the model: the CPU traces their pixels (where
     // only overlays are drawn the CPU renders the whole frame: backend.cpp)
-    const sbrt::Tracer &tracer = gpu.tracer();
     if (tracer.has_overlays() && tracer.scene().draw_model)
-        cpu_rects_ = sbrt::pixel_rects_of(tracer.overlay_boxes(), camera);
+        return sbrt::pixel_rects_of(tracer.overlay_boxes(), camera);
+    return std::vector<sbrt::PixelRect>();
+}
+
+GpuRowTracer::GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads)
+    : gpu_(gpu), camera_(camera), threads_(cpu_threads),
+      cpu_rects_(cpu_pixels_of(gpu.tracer(), camera))
+{
 }
 
 template <typename PixelFunction>

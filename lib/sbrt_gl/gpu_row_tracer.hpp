@@ -14,6 +14,13 @@
 
 namespace sbrt_gl {
 
+/// The pixels of `camera`'s image that the CPU traces where `tracer`'s
+/// GPU draws the model: none (no overlays drawn with the model),
+/// rectangles (those whose rays may meet a borehole), or every pixel
+/// (none: a borehole's box reaches behind the camera).
+std::optional<std::vector<sbrt::PixelRect>> cpu_pixels_of(const sbrt::Tracer &tracer,
+                                                          const sbrt::Camera &camera);
+
 /// \brief Rows of `camera`'s image from the GPU: hit records, or (with
 /// shade_on_gpu) the shaded outputs of whole bands. The GPU draws the
 /// model; where the scene also holds boreholes drawn with it, the pixels

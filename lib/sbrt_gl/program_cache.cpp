@@ -25,6 +25,8 @@ namespace {
 /// The file: magic, format, byte count, CRC-32 of the bytes, the bytes.
 constexpr char MAGIC[8] = {'S', 'B', 'R', 'T', 'P', 'R', 'G', '1'};
 constexpr size_t HEADER_BYTES = 8 + 4 + 8 + 4;
+/// Larger than any program binary of ours (tens of kilobytes on Mesa).
+constexpr uint64_t MAX_FILE_BYTES = 64ull << 20;
 
 /// mkdir -p, each level 0755; false where the directory is not there after.
 bool make_directories(const std::string &path)
@@ -84,7 +86,13 @@ std::optional<ProgramBinary> ProgramCache::load(const std::string &key) const
 {
     if (!enabled())
         return std::nullopt;
-    std::ifstream in(path_of(key), std::ios::binary);
+    // an untrusted file: a size no program binary has is a miss, unread
+    struct stat info;
+    const std::string path = path_of(key);
+    if (stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode) ||
+        uint64_t(info.st_size) > MAX_FILE_BYTES)
+        return std::nullopt;
+    std::ifstream in(path, std::ios::binary);
     if (!in)
         return std::nullopt;
     const std::vector<uint8_t> file((std::istreambuf_iterator<char>(in)),
@@ -113,13 +121,15 @@ bool ProgramCache::store(const std::string &key, const ProgramBinary &binary) co
     out.u64(binary.bytes.size());
     out.u32(sbrt::crc32_of(binary.bytes.data(), binary.bytes.size()));
     out.raw(binary.bytes.data(), binary.bytes.size());
-    // a temporary sibling of this process, renamed into place: a reader
-    // sees the old file or the new one, never half of one
+    // a temporary sibling of its own (mkstemp: two writers never share
+    // one), renamed into place: a reader sees the old file or the new one,
+    // never half of one
     const std::string path = path_of(key);
-    const std::string temporary = path + ".tmp." + std::to_string(getpid());
-    const int fd = open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    std::string temporary = path + ".tmp.XXXXXX";
+    const int fd = mkstemp(temporary.data());
     if (fd < 0)
         return false;
+    fchmod(fd, 0644);
     const std::vector<uint8_t> &bytes = out.bytes();
     size_t written = 0;
     while (written < bytes.size()) {

@@ -404,3 +404,30 @@ TEST(Fence, SegmentsFarOutsideTheFrameAreClippedNotOverflowed)
     }
     EXPECT_GT(hits, 0u);
 }
+
+TEST(Overlays, PixelRectanglesSkipBoxesBehindTheCamera)
+{
+    // boxes wholly behind a perspective camera reach no pixel; a box the
+    // camera is in (or that reaches behind it) may reach any pixel
+    const Camera camera = Camera::perspective({0, 0, 0}, {1, 0, 0}, 60, 30, 40);
+    const std::array<glm::dvec3, 2> ahead{glm::dvec3(10, -1, -1), glm::dvec3(12, 1, 1)};
+    const std::array<glm::dvec3, 2> behind{glm::dvec3(-12, -1, -1), glm::dvec3(-10, 1, 1)};
+    const std::array<glm::dvec3, 2> around{glm::dvec3(-1, -1, -1), glm::dvec3(1, 1, 1)};
+    const auto both = pixel_rects_of({ahead, behind}, camera);
+    ASSERT_TRUE(both);
+    ASSERT_EQ(both->size(), 1u);
+    const PixelRect rect = (*both)[0];
+    EXPECT_LT(rect[0], 15); // around the image's centre
+    EXPECT_GT(rect[1], 15);
+    EXPECT_LT(rect[2], 20);
+    EXPECT_GT(rect[3], 20);
+    const auto only_behind = pixel_rects_of({behind}, camera);
+    ASSERT_TRUE(only_behind);
+    EXPECT_TRUE(only_behind->empty());
+    EXPECT_FALSE(pixel_rects_of({ahead, around}, camera));
+    // the spans of a row merge overlapping and touching rectangles
+    const std::vector<PixelRect> rects{{0, 5, 2, 4}, {3, 9, 5, 8}, {1, 2, 12, 13}};
+    EXPECT_EQ(row_spans(rects, 4), (std::vector<std::pair<int, int>>{{2, 8}}));
+    EXPECT_EQ(row_spans(rects, 2), (std::vector<std::pair<int, int>>{{2, 4}, {12, 13}}));
+    EXPECT_TRUE(row_spans(rects, 11).empty());
+}

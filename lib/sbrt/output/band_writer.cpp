@@ -86,7 +86,7 @@ Band BandWriter::take()
     });
     rethrow_locked();
     if (cancelled_)
-        throw Error("band writer: cancelled (a renderer thread failed)");
+        throw Cancelled();
     if (!free_.empty()) {
         Band band = std::move(free_.front());
         free_.pop_front();

@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "output/band.hpp"
+#include "util/error.hpp"
 
 namespace sbrt {
 
@@ -39,8 +40,14 @@ public:
     /// Waits until the sink took every band; rethrows its exception.
     void finish();
     /// Gives up (a renderer thread failed): take() waiting or called later
-    /// throws rather than wait for bands that will never come.
+    /// throws Cancelled rather than wait for bands that will never come.
     void cancel();
+
+    /// What take() throws after cancel(): not the render's error (the
+    /// thread that cancelled has that one), so threads drop it.
+    struct Cancelled : Error {
+        Cancelled() : Error("band writer: cancelled (a renderer thread failed)") {}
+    };
     /// Time the sink took so far (ms; read after finish()).
     double sink_ms() const { return sink_ms_; }
 

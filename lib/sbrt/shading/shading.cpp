@@ -45,6 +45,8 @@ namespace {
 /// per channel: c - floor(c) is exact there.
 uint8_t round_channel(double c)
 {
+    if (!(c >= 0))
+        return 0; // NaN (lround gave 0 too)
     const double low = std::floor(c);
     return uint8_t(c - low >= 0.5 ? low + 1 : low);
 }

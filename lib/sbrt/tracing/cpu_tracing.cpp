@@ -20,16 +20,23 @@ std::optional<std::vector<PixelRect>> pixel_rects_of(
     std::vector<PixelRect> rects;
     for (const auto &box : boxes) {
         double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+        int behind = 0;
         for (int k = 0; k < 8; ++k) {
             const glm::dvec3 p(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z);
             double x, y;
-            if (!camera.project(p, x, y))
-                return std::nullopt; // the camera is among them
+            if (!camera.project(p, x, y)) {
+                ++behind;
+                continue;
+            }
             x0 = std::min(x0, x);
             x1 = std::max(x1, x);
             y0 = std::min(y0, y);
             y1 = std::max(y1, y);
         }
+        if (behind == 8)
+            continue; // wholly behind a perspective camera: no ray goes there
+        if (behind > 0)
+            return std::nullopt; // the camera is among them: any pixel may
         // pixel centres at ((c + 0.5) / cols * 2 - 1, 1 - (r + 0.5) / rows * 2);
         // one pixel of margin; clamped before the conversion to int (a box
         // far outside the frame projects far outside any int)

@@ -36,8 +36,8 @@ using PixelRect = std::array<int, 4>;
 
 /// The rectangles of `camera`'s pixels whose rays may meet one of `boxes`
 /// (low and high corners, exaggerated map coordinates): their projections,
-/// a pixel of margin; none where the camera is among the boxes (every
-/// pixel may).
+/// a pixel of margin (boxes wholly behind a perspective camera: none);
+/// none at all where a box reaches behind the camera (every pixel may).
 std::optional<std::vector<PixelRect>> pixel_rects_of(
     const std::vector<std::array<glm::dvec3, 2>> &boxes, const Camera &camera);
 
