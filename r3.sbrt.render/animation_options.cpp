@@ -69,20 +69,20 @@ void read_animation_options(const RenderOptions &o, RenderRequest &r)
     if (r.frames < 1)
         G_fatal_error(_("frames=%s: give the number of frames, 1 or more"),
                       o.frames->answer);
-    r.path = o.path->answer;
+    r.path = sbrt::parse_path_kind(o.path->answer);
     r.angle = read_double(o.angle);
     r.path_map = answer_or(o.path_map);
     r.keys = answer_or(o.keys);
     if (o.height->answer)
         r.line_height = read_double(o.height);
-    if (r.path == "line" && r.path_map.empty())
+    if (r.path == sbrt::PathKind::line && r.path_map.empty())
         G_fatal_error(_("path=line flies along a vector line: give path_map="));
-    if (r.path == "keys" && r.keys.empty())
+    if (r.path == sbrt::PathKind::keys && r.keys.empty())
         G_fatal_error(_("path=keys moves through keyframes: give keys= (a file)"));
-    if ((r.path == "line" || r.path == "keys") && r.view.kind == sbrt::ViewKind::top)
+    if ((r.path == sbrt::PathKind::line || r.path == sbrt::PathKind::keys) && r.view.kind == sbrt::ViewKind::top)
         G_fatal_error(_("path=%s moves the camera; a top view does not move "
                         "(view=perspective or orthographic)"),
-                      r.path.c_str());
+                      sbrt::path_kind_name(r.path));
     r.first_frame = 1;
     r.last_frame = r.frames;
     if (o.range->answer) {
@@ -108,9 +108,9 @@ void read_animation_options(const RenderOptions &o, RenderRequest &r)
     r.overwrite = G_check_overwrite(0, nullptr);
     if (r.frames == 1 && (!r.strds.empty() || !r.video.empty()))
         G_fatal_error(_("strds= and video= make a sequence: give frames= (2 or more)"));
-    if (r.frames > 1 && r.path == "orbit" && r.view.kind == sbrt::ViewKind::top)
+    if (r.frames > 1 && r.path == sbrt::PathKind::orbit && r.view.kind == sbrt::ViewKind::top)
         G_fatal_error(_("path=orbit turns the camera; a top view does not turn "
                         "(view=perspective or orthographic)"));
-    if (r.frames > 1 && r.path == "sweep" && r.planes.empty() && !r.section)
+    if (r.frames > 1 && r.path == sbrt::PathKind::sweep && r.planes.empty() && !r.section)
         G_fatal_error(_("path=sweep moves a clip plane: give plane= or section="));
 }

@@ -79,16 +79,16 @@ std::vector<sbrt::Borehole> make_boreholes(const RenderRequest &request,
                                             original.intervals()[original.stack_end(cell) - 1].top
                            : f.bottom;
             }
-            const bool depth = request.log_reference == "depth";
             std::vector<sbrt::LoggedInterval> logged;
             for (const LogRow &row_ : log->second) {
-                double top = depth ? collar - row_.top : row_.top;
-                double bottom = depth ? collar - row_.bottom : row_.bottom;
+                const double top = sbrt::log_elevation(row_.top, request.log_reference, collar);
+                const double bottom =
+                    sbrt::log_elevation(row_.bottom, request.log_reference, collar);
                 if (!(top > bottom) || !std::isfinite(top) || !std::isfinite(bottom)) {
                     G_warning(_("Borehole %d: logged interval %g..%g (%s) is "
                                 "empty: skipped"),
                               p.cat, row_.top, row_.bottom,
-                              request.log_reference.c_str());
+                              sbrt::log_reference_name(request.log_reference));
                     continue;
                 }
                 logged.push_back({bottom, top, material_of(shown, row_.class_id)});

@@ -36,16 +36,16 @@ std::vector<sbrt::Camera> frame_cameras(const RenderRequest &request,
                                         const struct Cell_head &region)
 {
     const int frames = request.frames;
-    if (request.path == "sweep" || (frames == 1 && request.path == "orbit"))
+    if (request.path == sbrt::PathKind::sweep || (frames == 1 && request.path == sbrt::PathKind::orbit))
         return std::vector<sbrt::Camera>(size_t(frames),
                                          make_camera(request, framing, region));
     check_image_fits(request.height, request.width,
                      request.normals == sbrt::Normals::kernel);
-    if (request.path == "orbit")
+    if (request.path == sbrt::PathKind::orbit)
         return sbrt::orbit_cameras(request.view, framing, request.height, request.width,
                                    frames, request.angle);
     std::vector<sbrt::Camera> cameras;
-    if (request.path == "keys") {
+    if (request.path == sbrt::PathKind::keys) {
         const std::vector<sbrt::Keyframe> keys =
             sbrt::parse_keyframes(read_text_file(request.keys), request.view.fov);
         for (int k = 1; k <= frames; ++k) {

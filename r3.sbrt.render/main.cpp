@@ -99,7 +99,7 @@ void run(const RenderRequest &request)
     // trace, shade and write band by band, frame by frame
     const sbrt::Shading shading = make_shading(request, drape ? &*drape : nullptr);
     const sbrt::RenderSettings settings{unsigned(request.threads), true, 0};
-    const bool sweep = request.frames > 1 && request.path == "sweep";
+    const bool sweep = request.frames > 1 && request.path == sbrt::PathKind::sweep;
     // a sweep's plane moves across the box of the model as prepared (its
     // box only: no pyramid for this tracer)
     sbrt::Scene box_only;

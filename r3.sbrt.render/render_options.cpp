@@ -401,7 +401,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.log_top = answer_or(o->log_top);
     r.log_bottom = answer_or(o->log_bottom);
     r.log_class = answer_or(o->log_class);
-    r.log_reference = o->log_reference->answer;
+    r.log_reference = sbrt::parse_log_reference(o->log_reference->answer);
     r.split_logs = o->split_logs->answer;
     for (char **a = o->texture->answers; a && *a; ++a)
         r.texture.emplace_back(*a);

@@ -16,6 +16,8 @@
 
 #include "grass.hpp"
 #include "shading/shading.hpp"
+#include "scene/camera_path.hpp"
+#include "scene/scene_parts.hpp"
 #include "scene/view.hpp"
 
 /// \brief Everything the user asked for, validated, map units.
@@ -42,7 +44,7 @@ struct RenderRequest {
     std::optional<double> borehole_radius;   ///< map units (default 0.4 cell)
     bool boreholes_only = false;             ///< -b
     std::string log_top, log_bottom, log_class; ///< columns of the logs
-    std::string log_reference = "elevation";
+    sbrt::LogReference log_reference = sbrt::LogReference::elevation;
     bool split_logs = false;                 ///< -m
     std::vector<std::string> texture;        ///< one map, or red,green,blue
     double texture_blend = 1;
@@ -52,7 +54,7 @@ struct RenderRequest {
     bool walk_every_cell = false;            ///< -e: no empty-space skipping
     // an animation: frames of a path, those of range= rendered
     int frames = 1;
-    std::string path = "orbit";              ///< orbit, line, keys or sweep
+    sbrt::PathKind path = sbrt::PathKind::orbit;
     std::string path_map, keys;              ///< path=line's lines, path=keys' file
     std::optional<double> line_height;       ///< path=line: above the model's top
     double angle = 360;                      ///< the orbit's arc, degrees

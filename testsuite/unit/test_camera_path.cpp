@@ -183,3 +183,12 @@ TEST(CameraWindow, TilesHaveTheWholeImagesRaysAndPixels)
     EXPECT_THROW(whole.window(20, 11, 0, 5), Error);
     EXPECT_THROW(whole.window(0, 5, 40, 5), Error);
 }
+
+TEST(CameraPath, PathKindsFromTheirWords)
+{
+    for (PathKind kind : {PathKind::orbit, PathKind::line, PathKind::keys, PathKind::sweep})
+        EXPECT_EQ(parse_path_kind(path_kind_name(kind)), kind);
+    EXPECT_EQ(std::string(path_kind_name(PathKind::sweep)), "sweep");
+    EXPECT_THROW(parse_path_kind("spiral"), Error);
+    EXPECT_THROW(parse_path_kind(""), Error);
+}

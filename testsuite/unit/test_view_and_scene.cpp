@@ -244,3 +244,14 @@ TEST(SceneParts, LogStackFromLoggedIntervals)
     ASSERT_EQ(merged.size(), 1u);
     EXPECT_FLOAT_EQ(merged[0].top, 30);
 }
+
+TEST(SceneParts, LogValuesAsElevations)
+{
+    EXPECT_EQ(parse_log_reference("depth"), LogReference::depth);
+    EXPECT_EQ(parse_log_reference("elevation"), LogReference::elevation);
+    EXPECT_THROW(parse_log_reference("height"), Error);
+    EXPECT_EQ(std::string(log_reference_name(LogReference::depth)), "depth");
+    // depths below a collar at 120 m; elevations as they are
+    EXPECT_EQ(log_elevation(40, LogReference::depth, 120), 80);
+    EXPECT_EQ(log_elevation(40, LogReference::elevation, 120), 40);
+}

@@ -16,6 +16,25 @@
 
 namespace sbrt {
 
+PathKind parse_path_kind(const std::string &word)
+{
+    for (PathKind kind : {PathKind::orbit, PathKind::line, PathKind::keys, PathKind::sweep})
+        if (word == path_kind_name(kind))
+            return kind;
+    fail("path: '", word, "' is none of orbit, line, keys, sweep");
+}
+
+const char *path_kind_name(PathKind kind)
+{
+    switch (kind) {
+    case PathKind::orbit: return "orbit";
+    case PathKind::line: return "line";
+    case PathKind::keys: return "keys";
+    case PathKind::sweep: return "sweep";
+    }
+    return "?";
+}
+
 glm::dvec3 turn_about_vertical(glm::dvec3 p, glm::dvec3 axis, double degrees)
 {
     const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);

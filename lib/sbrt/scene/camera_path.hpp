@@ -16,6 +16,15 @@
 
 namespace sbrt {
 
+/// \brief How the frames of an animation move: turning about a vertical
+/// axis, along a line, through keyframes, or the plane sweeping across.
+enum class PathKind { orbit, line, keys, sweep };
+
+/// The kind a word names ("orbit", "line", "keys", "sweep"); sbrt::Error
+/// listing them for any other word.
+PathKind parse_path_kind(const std::string &word);
+const char *path_kind_name(PathKind kind);
+
 /// `p` turned by `degrees` about the vertical axis through `axis`,
 /// counter-clockwise seen from above.
 glm::dvec3 turn_about_vertical(glm::dvec3 p, glm::dvec3 axis, double degrees);

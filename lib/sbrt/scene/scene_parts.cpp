@@ -16,6 +16,20 @@
 
 namespace sbrt {
 
+LogReference parse_log_reference(const std::string &word)
+{
+    if (word == log_reference_name(LogReference::elevation))
+        return LogReference::elevation;
+    if (word == log_reference_name(LogReference::depth))
+        return LogReference::depth;
+    fail("log reference: '", word, "' is neither elevation nor depth");
+}
+
+const char *log_reference_name(LogReference reference)
+{
+    return reference == LogReference::depth ? "depth" : "elevation";
+}
+
 ClipPlane section_plane(glm::dvec2 a, glm::dvec2 b, const Camera &camera)
 {
     if (a == b)

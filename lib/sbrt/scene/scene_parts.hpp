@@ -27,6 +27,21 @@ Translucency make_translucency(const Model &model,
                                const std::vector<std::pair<uint32_t, double>> &alphas,
                                double length);
 
+/// \brief What the tops and bottoms of a borehole's log measure.
+enum class LogReference { elevation, depth };
+
+/// The reference a word names ("elevation", "depth"); sbrt::Error for any
+/// other word.
+LogReference parse_log_reference(const std::string &word);
+const char *log_reference_name(LogReference reference);
+
+/// A log's value as an elevation (map z): itself, or `collar` (the
+/// elevation the depths are measured from) less it.
+inline double log_elevation(double value, LogReference reference, double collar)
+{
+    return reference == LogReference::depth ? collar - value : value;
+}
+
 /// \brief One logged interval in elevations (map z), its material index.
 struct LoggedInterval {
     double bottom, top;
