@@ -46,16 +46,11 @@ sbrt::GpuView GpuTracer::traced_view(const sbrt::Camera &camera, uint32_t loop_b
     if (!tile_starts_ || tile_starts_->bytes() < bytes)
         tile_starts_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
                              checked_bytes(bytes, max_block_bytes_, "first pass's tiles"));
-    if (!first_pass_program_)
-        first_pass_program_.emplace(
-            gl_, pass_sources(Pass::first_pass, layout_, tracer_.model()), &cache_);
-    first_pass_program_->use();
     view_.upload(&view, sizeof view);
     view_.bind(0);
     pyramid_.bind(4);
     tile_starts_->bind(8);
-    gl_.DispatchCompute(GLuint((tile_cols + 7) / 8), GLuint((tile_rows + 7) / 8), 1);
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    run_pass(Pass::first_pass, first_pass_program_, int(tile_cols), int(tile_rows));
     check_gl(gl_, "the first pass");
     first_pass_view_ = key;
     stats_.trace_ms += ms_since(start);

@@ -34,13 +34,11 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     sbrt::GpuView view = traced_view(camera, loop_budget_);
     view.options[2] = 0;
     view.options[3] = uint32_t(rows);
-    record_program().use();
     bind_model();
     view_.upload(&view, sizeof view);
     image_hits_->bind(2);
-    auto start = Clock::now();
-    gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((rows + 7) / 8), 1);
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    const auto start = Clock::now();
+    run_pass(Pass::records, program_, cols, rows);
     // 2. the kernel's cells and camera (and the smoothing's weights)
     const sbrt::KernelNormals kernel(tracer_, camera, shading.kernel);
     const std::vector<double> weights =
@@ -59,34 +57,22 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     image_hits_->bind(0);
     depths_->bind(1);
     kernel_cells_->bind(4);
-    whole_image_pass(Pass::kernel_depth, kernel_depth_program_, cols, rows);
+    run_pass(Pass::kernel_depth, kernel_depth_program_, cols, rows);
     if (!weights.empty()) {
         if (!kernel_normals_ || kernel_normals_->bytes() < pixels * 16) {
             kernel_normals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * 16);
             kernel_across_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * 16);
         }
         // the normals pass reads the faces' normals as shading does
-        const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, sbrt::Outputs{});
-        shading_program(shading, true);
-        bind_shading(shade, shading);
+        bind_shading(sbrt::make_gpu_shade(tracer_, shading, sbrt::Outputs{}), shading);
         kernel_normals_->bind(3);
         kernel_across_->bind(6);
-        whole_image_pass(Pass::kernel_normals, kernel_normals_program_, cols, rows);
-        whole_image_pass(Pass::kernel_across, kernel_across_program_, cols, rows);
+        run_pass(Pass::kernel_normals, kernel_normals_program_, cols, rows);
+        run_pass(Pass::kernel_across, kernel_across_program_, cols, rows);
     }
     gl_.Finish();
     check_gl(gl_, "the kernel normals' trace, depth and smoothing passes");
     stats_.trace_ms += ms_since(start);
-}
-
-void GpuTracer::whole_image_pass(Pass pass, std::optional<GlComputeProgram> &program,
-                                 int cols, int rows)
-{
-    if (!program)
-        program.emplace(gl_, pass_sources(pass, layout_, tracer_.model()), &cache_);
-    program->use();
-    gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((rows + 7) / 8), 1);
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int row_count,

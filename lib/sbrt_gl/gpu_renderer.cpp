@@ -31,9 +31,11 @@ GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outpu
     GpuFrameReport report;
     gpu_.reset_stats();
     GpuRowTracer rows(gpu_, camera, cpu_threads);
-    report.shaded_on_gpu = shades_on_gpu(camera);
-    if (report.shaded_on_gpu)
-        rows.shade_on_gpu(&renderer_.shading());
+    // where kernel normals cannot be found on the GPU the renderer finds
+    // them from the GPU's hits (it never asks the GPU to shade then)
+    rows.shade_on_gpu(&renderer_.shading());
+    report.shaded_on_gpu =
+        renderer_.shading().normals == sbrt::Normals::face || rows.shades_kernel_normals();
     report.render = renderer_.render(camera, outputs, sink, &rows);
     report.gpu = gpu_.stats();
     return report;

@@ -248,13 +248,18 @@ GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, bool 
                         &cache_);
         stats_.upload_ms += ms_since(start);
     }
+    return *program;
+}
+
+void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading)
+{
     if (!looks_) {
         const std::vector<sbrt::GpuLook> looks = sbrt::make_gpu_looks(tracer_);
         looks_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, looks.size() * sizeof(sbrt::GpuLook),
                        looks.data());
         shade_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuShade));
     }
-    if (draped && shading.drape != drape_on_gpu_) {
+    if (shading.drape && shading.drape != drape_on_gpu_) {
         // a GpuTracer meets one Drape (the module's, or the view server's
         // until it prepares the scene again: a new GpuTracer)
         const auto start = Clock::now();
@@ -266,7 +271,21 @@ GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, bool 
         drape_on_gpu_ = shading.drape;
         stats_.upload_ms += ms_since(start);
     }
-    return *program;
+    shade_->upload(&shade, sizeof shade);
+    shade_->bind(1);
+    looks_->bind(5);
+    if (shading.drape)
+        drape_->bind(7);
+}
+
+void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, int width,
+                         int height)
+{
+    if (!program)
+        program.emplace(gl_, pass_sources(pass, layout_, tracer_.model()), &cache_);
+    program->use();
+    gl_.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 size_t GpuTracer::shaded_words(int cols, int rows, const sbrt::GpuShade &shade)
@@ -276,15 +295,6 @@ size_t GpuTracer::shaded_words(int cols, int rows, const sbrt::GpuShade &shade)
                        max_block_bytes_);
     words_.resize(size_t(rows) * size_t(cols) * words_per_pixel);
     return words_per_pixel;
-}
-
-void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading)
-{
-    shade_->upload(&shade, sizeof shade);
-    shade_->bind(1);
-    looks_->bind(5);
-    if (shading.drape)
-        drape_->bind(7);
 }
 
 void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_count,

@@ -145,17 +145,18 @@ private:
                         size_t bytes_per_pixel, void *out, const char *what,
                         const std::function<void(int, int)> &set_band);
     /// The shading program for `shading` (with its drape; the kernel
-    /// normals' pass or the ray casting one), compiled and its buffers
-    /// uploaded when first needed.
+    /// normals' pass or the ray casting one), compiled when first needed.
     GlComputeProgram &shading_program(const sbrt::Shading &shading, bool kernel);
     /// Room for `rows` rows `cols` wide of the words of `shade`'s outputs,
     /// on the GPU and here; returns the words per pixel.
     size_t shaded_words(int cols, int rows, const sbrt::GpuShade &shade);
-    /// Compiles `program` for `pass` (gpu_internal.hpp) when
-    /// first needed and runs it over the whole image, its buffers bound.
-    void whole_image_pass(Pass pass, std::optional<GlComputeProgram> &program, int cols,
-                          int rows);
-    /// Binds the Shade block, the looks and the drape.
+    /// Compiles `program` for `pass` (gpu_internal.hpp) when first needed
+    /// and runs it over width x height invocations (pixels of the whole
+    /// image, or the first pass's tiles), its buffers bound; a barrier
+    /// after.
+    void run_pass(Pass pass, std::optional<GlComputeProgram> &program, int width, int height);
+    /// Uploads `shade` and binds it, the looks and the drape (the looks and
+    /// the drape uploaded when first needed).
     void bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading);
     /// The shaded words of rows [first, first + count) into `band`; the
     /// rays over the loop budget traced and shaded on the host.

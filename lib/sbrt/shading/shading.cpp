@@ -54,7 +54,7 @@ uint8_t round_channel(double c)
 } // namespace
 
 PixelShader::PixelShader(const Model &model, const Shading &shading)
-    : model_(model), shading_(shading)
+    : shading_(shading)
 {
     base_.reserve(model.materials().size());
     for (size_t m = 0; m < model.materials().size(); ++m) {

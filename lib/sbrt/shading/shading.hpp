@@ -46,7 +46,7 @@ struct Image {
 std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 
 /// \brief A Shading made ready for one model's pixels: each material's
-/// colour is looked up once, not per pixel. Holds references to both.
+/// colour is looked up once, not per pixel. Holds a reference to `shading`.
 class PixelShader {
 public:
     PixelShader(const Model &model, const Shading &shading);
@@ -55,12 +55,9 @@ public:
     /// them, the lit colour of the hit (or the background).
     std::array<uint8_t, 3> operator()(const Hit &hit) const;
 
-    const Model &model() const { return model_; }
-
 private:
     std::array<uint8_t, 3> lit(const Hit &hit) const;
 
-    const Model &model_;
     const Shading &shading_;
     std::vector<glm::dvec3> base_; ///< per material, 0..255
     /// Without a drape, the colours lit() gives a hit on each of a cell's

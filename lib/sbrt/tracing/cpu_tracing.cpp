@@ -93,24 +93,24 @@ CpuRowTracer::CpuRowTracer(const Tracer &tracer, const Camera &camera,
 void CpuRowTracer::trace_row(int row, Hit *out) const
 {
     const int cols = camera_.cols();
-    if (!overlay_rects_) {
-        for (int col = 0; col < cols; ++col) {
-            if (bounds_->meets_nothing(row, col)) {
-                out[col] = Hit(); // what trace() returns for a t_start of inf
-                continue;
-            }
-            const Ray ray = camera_.ray(row, col);
-            tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
+    const auto trace = [&](int col) {
+        if (bounds_->meets_nothing(row, col)) {
+            out[col] = Hit(); // what trace() returns for a t_start of inf
+            return;
         }
+        const Ray ray = camera_.ray(row, col);
+        tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
+    };
+    if (!overlay_rects_) {
+        for (int col = 0; col < cols; ++col)
+            trace(col);
         return;
     }
     // the columns of the rectangles across this row, overlaps merged
     std::fill(out, out + cols, Hit());
     for (const auto &[c0, c1] : row_spans(*overlay_rects_, row))
-        for (int col = c0; col <= c1; ++col) {
-            const Ray ray = camera_.ray(row, col);
-            tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
-        }
+        for (int col = c0; col <= c1; ++col)
+            trace(col);
 }
 
 void CpuRowTracer::trace_rows(int first, int count, Hit *out)

@@ -10,7 +10,6 @@
 
 #include <array>
 #include <limits>
-#include <optional>
 #include <vector>
 
 #include "scene/camera.hpp"
