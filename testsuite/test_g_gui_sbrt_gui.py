@@ -44,8 +44,13 @@ class TestViewerGui(TestCase):
         set_up_t_model(cls)
         cls.work = tempfile.mkdtemp(prefix="g_gui_sbrt_")
         cls.log_path = os.path.join(cls.work, "viewer.log")
+        # -noreset: without it Xvfb resets when its last client leaves
+        # (the readiness probe below), and a client connecting during
+        # the reset is refused: wx's start failed so on a loaded machine
+        # (reproduced here: 15 of 30 starts under load, 0 with -noreset)
         cls.xvfb = subprocess.Popen(
-            ["Xvfb", "-displayfd", "1", "-screen", "0", "1280x900x24", "-nolisten", "tcp"],
+            ["Xvfb", "-displayfd", "1", "-screen", "0", "1280x900x24", "-nolisten", "tcp",
+             "-noreset"],
             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
         cls.addClassCleanup(cls.xvfb.wait, timeout=10)
         cls.addClassCleanup(cls.xvfb.terminate)

@@ -27,7 +27,7 @@ P=/tmp/peers
 . "$root/tools/grass_env.sh" # puts the built modules on the path
 dims() { case $1 in A) echo 200,250,320 ;; B) echo 400,500,400 ;; C200) echo 800,1000,200 ;; esac; }
 if [ -z "${DISPLAY:-}" ]; then
-    Xvfb :99 -screen 0 1920x1080x24 +extension GLX -nolisten tcp >/tmp/r3sbrt_xvfb.log 2>&1 &
+    Xvfb :99 -screen 0 1920x1080x24 +extension GLX -nolisten tcp -noreset >/tmp/r3sbrt_xvfb.log 2>&1 &
     xpid=$!
     trap 'kill $xpid 2>/dev/null' EXIT
     export DISPLAY=:99

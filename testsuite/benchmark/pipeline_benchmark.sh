@@ -105,7 +105,7 @@ for s in $sizes; do
         "$repeat" "$camera" 2>&1 | grep "^pipeline" | tee "$SBRT_GISDBASE/pipeline_$s.txt"
     nviz=""
     if [ -x "$peers/nviz.sh" ] && command -v Xvfb >/dev/null; then
-        Xvfb :99 -screen 0 1280x1024x24 >/dev/null 2>&1 &
+        Xvfb :99 -screen 0 1280x1024x24 -noreset >/dev/null 2>&1 &
         xvfb=$!
         sleep 2
         # none where the peers' data are not made (nviz.sh then fails)

@@ -57,7 +57,7 @@ def renderer_alone(sbrt, width, height):
 def viewer(sbrt, width, height):
     work = tempfile.mkdtemp(prefix="viewer_bench_")
     log = os.path.join(work, "viewer.log")
-    xvfb = subprocess.Popen(["Xvfb", "-displayfd", "1", "-screen", "0", "1600x1000x24"],
+    xvfb = subprocess.Popen(["Xvfb", "-displayfd", "1", "-screen", "0", "1600x1000x24", "-noreset"],
                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
     display = ":" + xvfb.stdout.readline().decode().strip()
     env = dict(os.environ, DISPLAY=display, GRASS_SBRT_VIEWER_LOG=log, NO_AT_BRIDGE="1")
