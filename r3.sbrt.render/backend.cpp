@@ -79,18 +79,10 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
 
 } // namespace
 
-std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &request,
-                                                      bool overlays_only)
+std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &request)
 {
     if (request.backend == "cpu")
         return nullptr;
-    if (overlays_only) {
-        if (request.backend != "auto")
-            G_warning(_("backend=%s: boreholes alone (-b) and fence diagrams are "
-                        "drawn by the CPU ray caster; using it"),
-                      request.backend.c_str());
-        return nullptr;
-    }
     std::unique_ptr<sbrt_gl::GlContext> context;
     try {
         context = sbrt_gl::create_gl_context(request.backend);

@@ -17,12 +17,10 @@
 /// The GL context to render in, or none for the CPU. backend=egl|osmesa
 /// fail with the reason; backend=auto takes a hardware GL context where
 /// one works and the CPU otherwise (a software OpenGL is slower than the
-/// CPU ray caster on the same cores). A scene of overlays only
-/// (`overlays_only`: boreholes alone, a fence diagram) is drawn by the CPU
-/// ray caster (only the pixels of the overlays are traced); boreholes
-/// drawn with the model go to the GPU, their pixels traced on the CPU.
-std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &request,
-                                                      bool overlays_only);
+/// CPU ray caster on the same cores). Boreholes alone and fence diagrams
+/// are traced and shaded on the GPU; boreholes drawn with the model go to
+/// the GPU with the model, their pixels traced on the CPU.
+std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &request);
 
 /// \brief Where the frames of one prepared scene render: the CPU, or the
 /// GPU of a context, the model uploaded once (at the first frame) and kept

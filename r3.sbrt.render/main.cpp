@@ -86,8 +86,7 @@ void run(const RenderRequest &request)
 
     // 3. the backend; on a GPU what no ray of a single view reaches is not
     // uploaded (the CPU never reads it anyway)
-    const std::unique_ptr<sbrt_gl::GlContext> context =
-        choose_gl_context(request, !scene.draw_model);
+    const std::unique_ptr<sbrt_gl::GlContext> context = choose_gl_context(request);
     if (context && scene.skip_empty_space && scene.draw_model && request.frames == 1) {
         sbrt::Pruning pruning = sbrt::prune_for_view(
             sbrt::Tracer(model, request.zexag, scene), cameras.front());

@@ -131,13 +131,11 @@ void ViewServer::prepare(const RenderRequest &request, const sbrt::Camera &camer
         drape_key_ = drape_key.str();
     }
     PreparedScene prepared = prepare_scene(request, *model_, camera);
-    const bool overlays_only = !prepared.scene.draw_model;
-    const std::string context_key = request.backend + (overlays_only ? " overlays" : "");
-    if (context_key != context_key_) {
+    if (request.backend != context_key_) {
         context_.reset(); // before another on the same display
         context_key_.clear();
-        context_ = choose_gl_context(request, overlays_only);
-        context_key_ = context_key;
+        context_ = choose_gl_context(request);
+        context_key_ = request.backend;
     }
     scene_request_ = std::make_unique<RenderRequest>(request);
     renderer_ = std::make_unique<sbrt::Renderer>(

@@ -132,6 +132,12 @@ bool climb(uint level, int ix, int iy, vec3 hi, vec3 lo, vec3 d, float z_in,
     return true;
 }
 
+#ifdef SBRT_OVERLAYS
+// boreholes and fence curtains alone (common/overlays.glsl, after this file)
+void trace_overlays(uint index, vec3 hi, vec3 lo, vec3 d, float t_near, float t_far,
+                    uint wall);
+#endif
+
 void main()
 {
     // this dispatch covers the band of image rows from options.z on
@@ -198,6 +204,11 @@ void main()
     }
     if (!(t_near <= t_far) || box.x <= 0.0)
         return;
+#ifdef SBRT_OVERLAYS
+    // no model: the boreholes and curtains met directly
+    trace_overlays(index, hi, lo, d, t_near, t_far, wall);
+    return;
+#endif
 
     // 2. 2D DDA; wall distances from the cell index, never accumulated
     int cols = int(grid.x), rows = int(grid.y);

@@ -132,6 +132,46 @@ class TestGeologicalOperations(TestCase):
                           boreholes="bh", material="bh2_mat", overwrite=True)
         self.assertRastersNoDifference("bh2_mat", "top_class", precision=0)
 
+    def test_overlays_alone_on_the_gpu_equal_the_cpu(self):
+        """A fence diagram and boreholes alone (-b), traced and shaded on the
+        GPU (llvmpipe here): the CPU's class map."""
+        fence = gs.tempfile()
+        with open(fence, "w") as f:
+            f.write("L 3\n 150 300\n 900 1400\n 1800 1600\n")
+        self.runModule("v.in.ascii", input=fence, output="gpu_fence", format="standard",
+                       flags="n", overwrite=True)
+        points = gs.tempfile()
+        with open(points, "w") as f:
+            f.write("1|525|1225\n2|1475|1975\n3|1100|700\n")
+        self.runModule("v.in.ascii", input=points, output="gpu_bh", separator="pipe",
+                       x=2, y=3, cat=1, columns="cat int, x double precision, "
+                       "y double precision", overwrite=True)
+        size = image_region(self, 90, 70)
+        view = ["input=geo", "size=%d,%d" % size, "position=2600,-900,1500",
+                "target=1000,1250,400", "fov=40", "--overwrite"]
+        for name, scene in (("fence", ["fence=gpu_fence"]),
+                            ("alone", ["-b", "boreholes=gpu_bh", "borehole_radius=60"])):
+            for backend in ("egl", "cpu"):
+                run = subprocess.run(
+                    ["r3.sbrt.render", f"output=ov_{name}_{backend}",
+                     f"material=ov_{name}_{backend}_m", f"backend={backend}", "--verbose"]
+                    + view + scene,
+                    capture_output=True, text=True,
+                )
+                self.assertEqual(run.returncode, 0, msg=run.stderr)
+                self.assertIn(f"Backend: {backend}", run.stderr)
+            gpu, cpu = f"ov_{name}_egl_m", f"ov_{name}_cpu_m"
+            self.assertGreater(self.count(f"if(isnull({cpu}), 0, 1)"), 90 * 70 // 50, msg=name)
+            self.assertLessEqual(
+                self.count(f"if(isnull({gpu}) != isnull({cpu}) || "
+                           f"(!isnull({gpu}) && {gpu} != {cpu}), 1, 0)"),
+                90 * 70 // 500 + 1, msg=name)
+            self.assertLessEqual(
+                self.count(f"if(abs(ov_{name}_egl.red - ov_{name}_cpu.red) > 1 || "
+                           f"abs(ov_{name}_egl.green - ov_{name}_cpu.green) > 1, 1, 0)"),
+                90 * 70 // 200, msg=name)
+        self.runModule("g.region", region="geo_region")
+
     def test_borehole_logs_replace_the_model_stack(self):
         points = gs.tempfile()
         with open(points, "w") as f:

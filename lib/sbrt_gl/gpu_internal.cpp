@@ -61,8 +61,8 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
 {
     const unsigned count_bytes = model.index().count_bytes();
     // the normals pass reads a face's normal as shading does
-    const bool shade =
-        pass == Pass::shade || pass == Pass::kernel_shade || pass == Pass::kernel_normals;
+    const bool shade = pass == Pass::shade || pass == Pass::kernel_shade ||
+                       pass == Pass::kernel_normals || pass == Pass::overlays;
     const bool kernel = pass == Pass::kernel_depth || pass == Pass::kernel_normals ||
                         pass == Pass::kernel_across || pass == Pass::kernel_shade;
     return {"#version 450\n",
@@ -74,6 +74,7 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             shade ? "#define SBRT_SHADE 1\n" : "",
             drape && shade ? "#define SBRT_DRAPE 1\n" : "",
             kernel ? "#define SBRT_KERNEL 1\n" : "",
+            pass == Pass::overlays ? "#define SBRT_OVERLAYS 1\n" : "",
             pass == Pass::kernel_depth     ? "#define SBRT_KERNEL_DEPTH 1\n"
             : pass == Pass::kernel_normals ? "#define SBRT_KERNEL_NORMALS 1\n"
             : pass == Pass::kernel_across  ? "#define SBRT_KERNEL_ACROSS 1\n"
@@ -83,7 +84,8 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             shade ? SHADER_COMMON_SHADE : "",
             kernel                     ? SHADER_KERNEL
             : pass == Pass::first_pass ? SHADER_FIRST_PASS
-                                       : SHADER_RAYCAST};
+                                       : SHADER_RAYCAST,
+            pass == Pass::overlays ? SHADER_COMMON_OVERLAYS : ""};
 }
 
 

@@ -39,7 +39,9 @@ enum class Pass : int {
     kernel_normals, ///< kernel.comp: the kernel normals (SBRT_KERNEL_NORMALS)
     kernel_across,  ///< kernel.comp: their sums along the rows (smoothing)
     kernel_shade, ///< kernel.comp: kernel normals and the shaded outputs
-    first_pass    ///< first_pass.comp: the tiles' first-hit bounds
+    first_pass,   ///< first_pass.comp: the tiles' first-hit bounds
+    overlays      ///< raycast.comp with common/overlays.glsl: boreholes and
+                  ///< curtains alone, shaded (SBRT_SHADE, SBRT_OVERLAYS)
 };
 
 /// The sources of `pass` for `layout` and the form `model` is held in;

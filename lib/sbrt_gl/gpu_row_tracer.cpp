@@ -14,8 +14,8 @@ namespace sbrt_gl {
 std::optional<std::vector<sbrt::PixelRect>> cpu_pixels_of(const sbrt::Tracer &tracer,
                                                           const sbrt::Camera &camera)
 {
-    // boreholes drawn with the model: the CPU traces their pixels (where
-    // only overlays are drawn the CPU renders the whole frame: backend.cpp)
+    // boreholes drawn with the model: the CPU traces their pixels (drawn
+    // alone, boreholes and curtains are shaded on the GPU)
     if (tracer.has_overlays() && tracer.scene().draw_model)
         return sbrt::pixel_rects_of(tracer.overlay_boxes(), camera);
     return std::vector<sbrt::PixelRect>();
@@ -56,8 +56,9 @@ void GpuRowTracer::trace_rows(int first, int count, sbrt::Hit *out)
 
 bool GpuRowTracer::shades_kernel_normals() const
 {
-    return shading_ && shading_->normals == sbrt::Normals::kernel && gpu_.kernel_fits(camera_) &&
-           cpu_rects_ && cpu_rects_->empty();
+    return shading_ && shading_->normals == sbrt::Normals::kernel &&
+           gpu_.tracer().scene().draw_model && gpu_.kernel_fits(camera_) && cpu_rects_ &&
+           cpu_rects_->empty();
 }
 
 int GpuRowTracer::preferred_band_rows(int cols) const

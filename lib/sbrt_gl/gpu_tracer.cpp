@@ -206,6 +206,16 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
                            sbrt::Hit *out, unsigned cpu_threads, uint32_t loop_budget)
 {
     const int cols = camera.cols();
+    if (!tracer_.scene().draw_model) {
+        // boreholes and curtains alone: the GPU shades them (shade_rows),
+        // a hit record would lack their surfaces' normals
+        sbrt::for_each_row(first_row, first_row + row_count, cpu_threads, [&](int row) {
+            for (int col = 0; col < cols; ++col)
+                tracer_.trace_into(camera.ray(row, col), 0,
+                                   out[size_t(row - first_row) * cols + size_t(col)]);
+        });
+        return;
+    }
     ensure_band_buffer(gl_, band_, row_count, size_t(cols) * sizeof(sbrt::GpuPixelHit),
                        max_block_bytes_);
     records_.resize(size_t(row_count) * cols);
@@ -237,15 +247,17 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
 GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, bool kernel)
 {
     const bool draped = shading.drape != nullptr;
+    const bool overlays = !tracer_.scene().draw_model;
+    if (kernel && overlays)
+        sbrt::fail("kernel normals of boreholes and curtains alone are found on the CPU");
     std::optional<GlComputeProgram> &program =
-        kernel ? (draped ? kernel_drape_program_ : kernel_program_)
-               : (draped ? drape_program_ : shade_program_);
+        kernel     ? (draped ? kernel_drape_program_ : kernel_program_)
+        : overlays ? (draped ? overlays_drape_program_ : overlays_program_)
+                   : (draped ? drape_program_ : shade_program_);
     if (!program) {
         const auto start = Clock::now();
-        program.emplace(gl_,
-                        pass_sources(kernel ? Pass::kernel_shade : Pass::shade, layout_,
-                                     tracer_.model(), draped),
-                        &cache_);
+        const Pass pass = kernel ? Pass::kernel_shade : overlays ? Pass::overlays : Pass::shade;
+        program.emplace(gl_, pass_sources(pass, layout_, tracer_.model(), draped), &cache_);
         stats_.upload_ms += ms_since(start);
     }
     return *program;
@@ -276,6 +288,21 @@ void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &s
     looks_->bind(5);
     if (shading.drape)
         drape_->bind(7);
+    if (!tracer_.scene().draw_model) {
+        if (!overlays_) {
+            const sbrt::GpuOverlays overlays = sbrt::make_gpu_overlays(tracer_);
+            overlays_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                              checked_bytes(overlays.words.size() * sizeof(uint32_t),
+                                            max_block_bytes_, "boreholes and fence panels"),
+                              overlays.words.data());
+            logs_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                          checked_bytes(overlays.logs.size() * sizeof(sbrt::Interval),
+                                        max_block_bytes_, "borehole logs"),
+                          overlays.logs.data());
+        }
+        overlays_->bind(9);
+        logs_->bind(10);
+    }
 }
 
 void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, int width,

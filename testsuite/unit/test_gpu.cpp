@@ -28,6 +28,7 @@
 #include "shading/drape.hpp"
 #include "gpu_compare.hpp"
 #include "tracing/gpu_memory_layout.hpp"
+#include "tracing/gpu_overlays.hpp"
 #include "renderer.hpp"
 #include "test_support.hpp"
 
@@ -575,10 +576,11 @@ namespace {
 /// levels within 1, classes equal but on a share of edge pixels,
 /// elevation and depth within float rounding of the model's size but on
 /// `far_allowed` pixels (a ray along a cell's edge, in float, may meet the
-/// material of the cell beside).
+/// material of the cell beside); more than one pixel in `hits_in` a hit.
 void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layout,
                                const Renderer &renderer, const Camera &camera,
-                               const std::string &what, size_t far_allowed = 0)
+                               const std::string &what, size_t far_allowed = 0,
+                               size_t hits_in = 10)
 {
     sbrt_gl::GpuRenderer on_gpu(context, renderer, layout);
     const sbrt_gl::GpuTracer &gpu = on_gpu.gpu();
@@ -607,7 +609,9 @@ void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layo
             far += !(std::isnan(got.elevation[i]) && std::isnan(got.depth[i]));
         }
     }
-    EXPECT_GT(hits, n / 10) << what;
+    // the GPU traced them (the host traces again only rays over its budget)
+    EXPECT_LE(gpu.stats().over_budget, n / 100) << what;
+    EXPECT_GT(hits, n / hits_in) << what;
     EXPECT_LE(classes, n / 500 + 1) << what;
     EXPECT_LE(colours, n / 200 + classes * 3) << what;
     EXPECT_LE(far, far_allowed) << what;
@@ -889,4 +893,121 @@ TEST_P(Gpu, ShadesADrapeOnTheGpuAsTheCpuDoes)
     for (size_t i = 0; i < with.rgb.size(); ++i)
         changed += with.rgb[i] != without.rgb[i];
     EXPECT_GT(changed, with.rgb.size() / 10);
+}
+
+namespace {
+
+/// Boreholes with logs of their own and a fence of three curtains over
+/// geology(40, 56, 30), without the model.
+Scene overlays_alone(const Model &m)
+{
+    const Frame &f = m.frame();
+    Scene scene;
+    for (int k = 0; k < 3; ++k) {
+        Borehole b = sbrt_test::borehole_at(m, f.west + (7.5 + 15 * k) * f.ew_res(),
+                                            f.south + (29.5 - 9 * k) * f.ns_res());
+        for (Interval &iv : b.stack)
+            iv.material = 1 + (iv.material % 3);
+        scene.boreholes.push_back(b);
+    }
+    scene.borehole_radius = 1.5 * f.ew_res();
+    const glm::dvec2 corner(f.west, f.south);
+    const glm::dvec2 cell(f.ew_res(), f.ns_res());
+    const glm::dvec2 points[] = {{4, 6}, {20, 14}, {33, 8}, {50, 27}};
+    for (int k = 0; k < 3; ++k)
+        scene.fence.push_back({corner + points[k] * cell, corner + points[k + 1] * cell});
+    scene.draw_model = false;
+    return scene;
+}
+
+} // namespace
+
+TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
+{
+    const Model m = geology(40, 56, 30);
+    const Frame &f = m.frame();
+    Shading lit;
+    lit.light = Shading::light_from(230, 35);
+    const Renderer alone(m, 2.0, overlays_alone(m), lit, {2, true, 16});
+    const Tracer &t = alone.tracer();
+    const glm::dvec3 c = t.centre();
+    const Camera views[] = {
+        Camera::perspective(c + 2.2 * t.radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.6)), c,
+                            40, 61, 83),
+        Camera::perspective(c + 2.2 * t.radius() * glm::normalize(glm::dvec3(-0.8, 0.5, 0.3)), c,
+                            40, 61, 83),
+        Camera::orthographic(c + glm::dvec3(300, -400, 500), c, 1.5 * t.radius(), 47, 64),
+        // among the overlays, looking along the fence
+        Camera::perspective(c + glm::dvec3(-0.45 * (f.east - f.west), -0.2 * (f.north - f.south), 0),
+                            c + glm::dvec3(0, 0, -50), 70, 40, 50)};
+    for (size_t k = 0; k < std::size(views); ++k)
+        expect_gpu_shading_as_cpu(*context_, layout(), alone, views[k],
+                                  "boreholes and fence, view " + std::to_string(k), 0, 30);
+    {
+        // the overlays' buffers as the shader reads them (gpu_overlays.hpp)
+        sbrt_gl::GpuRenderer on_gpu(*context_, alone, layout());
+        on_gpu.render_image(views[0], {}, 2);
+        const sbrt_gl::GlApi &gl = on_gpu.gpu().gl();
+        const GLuint program = on_gpu.gpu().shade_program();
+        ASSERT_NE(program, 0u);
+        auto property = [&](const char *name, GLenum what) {
+            const GLuint index = gl.GetProgramResourceIndex(program, GL_BUFFER_VARIABLE, name);
+            EXPECT_NE(index, GL_INVALID_INDEX) << name;
+            GLint value = -1;
+            gl.GetProgramResourceiv(program, GL_BUFFER_VARIABLE, index, 1, &what, 1, nullptr,
+                                    &value);
+            return value;
+        };
+        EXPECT_EQ(property("overlay_head", GL_OFFSET), int(offsetof(GpuOverlayHead, borehole_radius)));
+        EXPECT_EQ(property("map_unit", GL_OFFSET), int(offsetof(GpuOverlayHead, map_unit)));
+        EXPECT_EQ(property("overlay_count", GL_OFFSET), int(offsetof(GpuOverlayHead, count)));
+        EXPECT_EQ(property("overlays[0].ends", GL_OFFSET), int(sizeof(GpuOverlayHead)));
+        EXPECT_EQ(property("overlays[0].stacks", GL_OFFSET),
+                  int(sizeof(GpuOverlayHead) + offsetof(GpuOverlay, log_first)));
+        EXPECT_EQ(property("overlays[0].ends", GL_TOP_LEVEL_ARRAY_STRIDE), int(sizeof(GpuOverlay)));
+        EXPECT_EQ(property("logs[0].top", GL_OFFSET), int(offsetof(Interval, top)));
+        EXPECT_EQ(property("logs[0].top", GL_TOP_LEVEL_ARRAY_STRIDE), int(sizeof(Interval)));
+    }
+    // split cylinders: the log on one side, the model's stack on the other
+    Scene split = overlays_alone(m);
+    split.fence.clear();
+    for (Borehole &b : split.boreholes) {
+        for (Interval &iv : b.model_stack)
+            iv.material = 4 + (iv.material % 2);
+        // gaps in the logs: rays reach the split face through them
+        for (size_t k = 0; k < b.stack.size(); k += 2)
+            b.stack[k].material = EMPTY;
+    }
+    split.split = glm::normalize(glm::dvec2(1, 1));
+    const Renderer halves(m, 2.0, split, lit, {2, true, 16});
+    // close to one of them, seeing both halves
+    const glm::dvec3 axis(split.boreholes[1].x, split.boreholes[1].y, c.z);
+    const Camera close = Camera::perspective(
+        axis + glm::dvec3(7 * f.ew_res(), 8 * f.ns_res(), 3 * f.ew_res()), axis, 40, 61, 83);
+    size_t on_split = 0;
+    for (int row = 0; row < close.rows(); ++row)
+        for (int col = 0; col < close.cols(); ++col)
+            on_split += halves.tracer().trace(close.ray(row, col)).face == Face::split;
+    EXPECT_GT(on_split, 20u);
+    expect_gpu_shading_as_cpu(*context_, layout(), halves, close, "split cylinders");
+    // a clip plane and a translucent material (the curtains' alpha)
+    Scene veiled = sbrt_test::cut_and_translucent_scene(m);
+    const Scene overlays = overlays_alone(m);
+    veiled.boreholes = overlays.boreholes;
+    veiled.borehole_radius = overlays.borehole_radius;
+    veiled.fence = overlays.fence;
+    veiled.draw_model = false;
+    const Renderer translucent(m, 2.0, veiled, lit, {2, true, 16});
+    expect_gpu_shading_as_cpu(*context_, layout(), translucent, views[1], "plane and veil", 0, 30);
+    // more overlays than the CPU meets directly (it walks the cells then)
+    Scene many;
+    for (int row = 0; row < 40; row += 2)
+        for (int col = 0; col < 56; col += 4)
+            many.boreholes.push_back(sbrt_test::borehole_at(
+                m, f.west + (col + 0.5) * f.ew_res(), f.north - (row + 0.5) * f.ns_res()));
+    ASSERT_GT(many.boreholes.size(), 256u);
+    many.borehole_radius = 0.6 * f.ew_res();
+    many.draw_model = false;
+    const Renderer forest(m, 2.0, many, lit, {2, true, 16});
+    expect_gpu_shading_as_cpu(*context_, layout(), forest, views[0], "280 boreholes");
 }

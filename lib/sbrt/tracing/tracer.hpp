@@ -107,7 +107,8 @@ public:
     double zexag() const { return zexag_; }
     const Scene &scene() const { return scene_; }
     /// Whether the scene holds more than the model's stacks and planes
-    /// (boreholes or a fence: only this CPU tracer draws them).
+    /// (boreholes or a fence; on the GPU, shaders/common/overlays.glsl
+    /// draws them where the model is not drawn).
     bool has_overlays() const { return !overlay_items_.empty(); }
     /// Boxes (low, high corners; exaggerated map coordinates) that hold
     /// everything this tracer can hit where it does not draw the model;

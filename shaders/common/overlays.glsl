@@ -1,0 +1,276 @@
+// Boreholes and fence curtains drawn alone (Scene::draw_model false), met
+// as lib/sbrt/tracing/tracer_overlays.cpp meets them without walking the
+// cells: every overlay the ray crosses between t_near and t_far, in the
+// order of their starts. A curtain shows the model's class at its point;
+// a borehole its log (a split cylinder: its log on one side, the model's
+// stack on the other). Appended after raycast.comp (SBRT_OVERLAYS), in
+// float; shaded here only (the surfaces' normals are not in a hit record).
+
+#ifndef SBRT_SHADE
+#error "the overlays are shaded on the GPU (SBRT_SHADE)"
+#endif
+
+// mirrored by sbrt::GpuOverlayHead and sbrt::GpuOverlay (gpu_overlays.hpp)
+struct Overlay {
+    vec4 ends;    // local x, y of a panel's ends, or twice a borehole's axis
+    uvec4 stacks; // the log's first interval and count (first = PANEL: a
+                  // fence panel), the model stack's first and count
+};
+layout(std430, binding = 9) readonly buffer Overlays {
+    vec4 overlay_head;   // x: borehole radius (map units); y: the length a
+                         // curtain absorbs as; zw: split direction (map;
+                         // 0, 0: whole cylinders)
+    vec4 map_unit;       // xy: map units per local x, y
+    uvec4 overlay_count; // x: overlays
+    Overlay overlays[];
+};
+struct LogInterval {
+    uint material;
+    float top; // local z
+};
+layout(std430, binding = 10) readonly buffer Logs { LogInterval logs[]; };
+
+const uint PANEL = 0xffffffffu;
+const uint FACE_CYLINDER = 8u, FACE_FENCE = 9u, FACE_SPLIT = 10u;
+
+// the ray of this invocation: local (hi + t d) + lo; work done so far
+// against the loop budget (llvmpipe), and where it ends
+vec3 ov_hi, ov_lo, ov_d;
+uint ov_index, ov_work = 0u, ov_limit = 0u;
+float ov_length_per_t = 0.0;
+
+float ov_z(float t) { return (ov_hi.z + t * ov_d.z) + ov_lo.z; }
+float ov_t_at(float z) { return from_origin(z, ov_hi.z, ov_lo.z) / ov_d.z; }
+// the ray's horizontal origin and direction from local point c, map units
+vec2 ov_from(vec2 c) { return ((ov_hi.xy - c) + ov_lo.xy) * map_unit.xy; }
+vec2 ov_dir() { return ov_d.xy * map_unit.xy; }
+
+// `surface`: face | plane << 4 (as raycast.comp's wall); n its normal
+// where it is a cylinder, curtain or split face
+void ov_write(float t, uint material, uint surface, vec3 n)
+{
+    uint code = material | surface << 16;
+    if ((surface & 0xfu) < FACE_CYLINDER)
+        n = hit_normal(code, ray_d);
+    write_pixel(ov_index, (ov_hi + t * ov_d) + ov_lo, code, n,
+                vec4(veil, transmittance), length((t - t_eye) * ray_d * real_unit.xyz));
+}
+
+// Tracer::meet: true where the walk ends (an opaque hit, written, or a
+// veil nothing shows through)
+bool ov_meet(uint material, float t_enter, float t_exit, uint surface, vec3 n)
+{
+    if (material == 0u)
+        return false;
+    vec4 look = materials[material];
+    if (look.w < 0.0) {
+        ov_write(t_enter, material, surface, n);
+        return true;
+    }
+    float crossed = t_exit > t_enter ? (t_exit - t_enter) * ov_length_per_t : overlay_head.y;
+    if (absorb(look, crossed)) {
+        ov_write(0.0, 0u, FACE_NONE, vec3(0.0));
+        return true;
+    }
+    return false;
+}
+
+// Tracer::walk_stack over logs[first, last) from t_a to t_b, entering
+// through `surface`; false where the ray passes
+bool ov_walk(uint first, uint last, float t_a, float t_b, uint surface, vec3 n)
+{
+    float z_a = ov_z(t_a), z_b = ov_z(t_b);
+    if (first == last || min(z_a, z_b) >= logs[last - 1u].top)
+        return false;
+    if (ov_d.z < 0.0) {
+        // descending: intervals (bottom, top]; the one holding z_a
+        uint k = first;
+        while (k < last && logs[k].top < z_a)
+            ++k;
+        ov_work += k - first;
+        for (uint j = k;; --j) {
+            ++ov_work;
+            if (j != last) {
+                float t_exit = j > first ? min(t_b, ov_t_at(logs[j - 1u].top)) : t_b;
+                if (j == k ? ov_meet(logs[j].material, t_a, t_exit, surface, n)
+                           : ov_meet(logs[j].material, ov_t_at(logs[j].top), t_exit,
+                                     FACE_TOP, vec3(0.0)))
+                    return true;
+            }
+            if (j == first || !(logs[j - 1u].top > z_b))
+                return false;
+        }
+    }
+    // ascending or level: intervals [bottom, top)
+    uint k = first;
+    while (k < last && !(z_a < logs[k].top))
+        ++k;
+    ov_work += k - first;
+    for (uint j = k; j != last; ++j) {
+        ++ov_work;
+        if (j != k && !(logs[j - 1u].top < z_b))
+            return false;
+        float t_exit = ov_d.z == 0.0 ? t_b : min(t_b, ov_t_at(logs[j].top));
+        if (j == k ? ov_meet(logs[j].material, t_a, t_exit, surface, n)
+                   : ov_meet(logs[j].material, ov_t_at(logs[j - 1u].top), t_exit,
+                             FACE_BOTTOM, vec3(0.0)))
+            return true;
+        if (ov_d.z == 0.0)
+            return false;
+    }
+    return false;
+}
+
+// Tracer::cross_borehole: the cylinder of `o` from t_a to t_b
+bool ov_borehole(Overlay o, float t_a, float t_b, uint surface, vec3 n)
+{
+    uvec2 log_stack = uvec2(o.stacks.x, o.stacks.x + o.stacks.y);
+    vec2 s = overlay_head.zw;
+    if (s == vec2(0.0))
+        return ov_walk(log_stack.x, log_stack.y, t_a, t_b, surface, n);
+    uvec2 model_stack = uvec2(o.stacks.z, o.stacks.z + o.stacks.w);
+    // the log on the side s points to, the model's stack on the other
+    float s0 = dot(ov_from(o.ends.xy), s), s1 = dot(ov_dir(), s);
+    float t_split = s1 != 0.0 ? -s0 / s1 : 1.0 / 0.0;
+    if (!(t_split > t_a && t_split < t_b)) {
+        uvec2 half_stack = s0 + 0.5 * (t_a + t_b) * s1 >= 0.0 ? log_stack : model_stack;
+        return ov_walk(half_stack.x, half_stack.y, t_a, t_b, surface, n);
+    }
+    uvec2 before = s0 + 0.5 * (t_a + t_split) * s1 >= 0.0 ? log_stack : model_stack;
+    if (ov_walk(before.x, before.y, t_a, t_split, surface, n))
+        return true;
+    uvec2 after = s0 + 0.5 * (t_split + t_b) * s1 >= 0.0 ? log_stack : model_stack;
+    return ov_walk(after.x, after.y, t_split, t_b, FACE_SPLIT, vec3(s1 > 0.0 ? -s : s, 0.0));
+}
+
+// Tracer::overlay_events for one overlay: its stretch [start, end] of
+// [t_lo, t_hi] (a curtain: a point) and the normal where it starts (0:
+// a cylinder entered before t_lo); false where the ray misses it there
+bool ov_event(Overlay o, float t_lo, float t_hi, out float start, out float end, out vec3 n)
+{
+    start = end = 0.0;
+    n = vec3(0.0);
+    vec2 q = ov_from(o.ends.xy), dd = ov_dir();
+    if (o.stacks.x == PANEL) {
+        // ray_panel: where the ray crosses the segment
+        vec2 e = (o.ends.zw - o.ends.xy) * map_unit.xy;
+        float denom = dd.x * e.y - dd.y * e.x;
+        if (denom == 0.0)
+            return false;
+        float t = (-q.x * e.y + q.y * e.x) / denom;
+        float u = (-q.x * dd.y + q.y * dd.x) / denom;
+        if (!(u >= 0.0 && u <= 1.0) || !(t >= t_lo && t < t_hi))
+            return false;
+        vec2 normal = normalize(vec2(-e.y, e.x));
+        n = vec3(dot(normal, dd) > 0.0 ? -normal : normal, 0.0);
+        start = end = t;
+        return true;
+    }
+    // ray_cylinder, from the closest approach (float keeps its precision
+    // there, where b^2 - ac would cancel)
+    float r = overlay_head.x, a = dot(dd, dd), t0, t1;
+    if (a == 0.0) {
+        if (!(dot(q, q) < r * r))
+            return false;
+        t0 = -1.0 / 0.0;
+        t1 = 1.0 / 0.0;
+    }
+    else {
+        float t_c = -dot(q, dd) / a;
+        vec2 closest = q + t_c * dd;
+        float h = (r * r - dot(closest, closest)) / a;
+        if (!(h > 0.0))
+            return false;
+        t0 = t_c - sqrt(h);
+        t1 = t_c + sqrt(h);
+    }
+    if (t1 <= t_lo || t0 >= t_hi)
+        return false;
+    start = max(t0, t_lo);
+    end = min(t1, t_hi);
+    if (t0 >= t_lo)
+        n = vec3(normalize(q + t0 * dd), 0.0);
+    return true;
+}
+
+// Tracer::cross_events without the model: the overlays in the order of
+// their starts (ties: the lower index first), each once
+void trace_overlays(uint index, vec3 hi, vec3 lo, vec3 d, float t_near, float t_far,
+                    uint wall)
+{
+    ov_hi = hi;
+    ov_lo = lo;
+    ov_d = d;
+    ov_index = index;
+    ov_length_per_t = length(d * box.yzw);
+    // on llvmpipe, a margin below its limit for the loops a SIMD vector
+    // runs for lanes already done
+    ov_limit = options.y == 0xffffffffu ? options.y : options.y / 2u;
+    uint n = overlay_count.x, surface = wall, last = 0u;
+    vec3 surface_n = vec3(0.0);
+    float cursor = t_near, last_start = -1.0 / 0.0;
+    int cols = int(grid.x), rows = int(grid.y);
+    for (;;) {
+        // the next event after (last_start, last)
+        uint best = n;
+        float best_start = 0.0, best_end = 0.0;
+        vec3 best_n = vec3(0.0);
+        for (uint i = 0u; i < n; ++i) {
+            float start, end;
+            vec3 normal;
+            if (!ov_event(overlays[i], t_near, t_far, start, end, normal))
+                continue;
+            bool later = start > last_start || (start == last_start && i > last);
+            if (later && (best == n || start < best_start)) {
+                best = i;
+                best_start = start;
+                best_end = end;
+                best_n = normal;
+            }
+        }
+        ov_work += n + 1u;
+        if (ov_work > ov_limit) {
+            words[index * outputs.x] = 0u; // over the budget: the host's
+            return;
+        }
+        if (best == n)
+            break;
+        last_start = best_start;
+        last = best;
+        Overlay o = overlays[best];
+        bool panel = o.stacks.x == PANEL;
+        if (panel ? best_start < cursor : best_end <= cursor)
+            continue; // inside a cylinder already crossed
+        if (panel) {
+            // the class of the model at the curtain's point
+            vec3 p = (hi + best_start * d) + lo;
+            uvec2 stack = stack_range(clamp(int(floor(p.x)), 0, cols - 1),
+                                      rows - 1 - clamp(int(floor(p.y)), 0, rows - 1));
+            uint low = stack.x, high = stack.y;
+            while (low < high) {
+                uint mid = (low + high) / 2u;
+                if (p.z < interval_top(mid))
+                    high = mid;
+                else
+                    low = mid + 1u;
+            }
+            surface = FACE_FENCE;
+            surface_n = best_n;
+            if (low != stack.y &&
+                ov_meet(interval_material(low), best_start, best_start, surface, surface_n))
+                return;
+            cursor = best_start;
+            continue;
+        }
+        float start = max(best_start, cursor);
+        bool through_mantle = start == best_start && best_n != vec3(0.0);
+        if (ov_borehole(o, start, best_end, through_mantle ? FACE_CYLINDER : surface,
+                        through_mantle ? best_n : surface_n))
+            return;
+        cursor = best_end;
+        // leaving the cylinder: its mantle, seen from inside
+        surface = FACE_CYLINDER;
+        surface_n = vec3(-normalize(ov_from(o.ends.xy) + cursor * ov_dir()), 0.0);
+    }
+    ov_write(0.0, 0u, FACE_NONE, vec3(0.0)); // no hit: the veil before the background
+}
