@@ -71,6 +71,17 @@ class TestGeologicalOperations(TestCase):
             ortho_height=DEPTHS * TB * ZEXAG, overwrite=True, **options,
         )
 
+    def lines_map(self, name, text):
+        """Vector map `name` from v.in.ascii's standard format."""
+        gs.write_command("v.in.ascii", input="-", stdin=text, output=name,
+                         format="standard", flags="n", overwrite=True, quiet=True)
+
+    def points_map(self, name, rows, more_columns=""):
+        """Vector map `name` of points from rows cat|x|y[|...]."""
+        gs.write_command("v.in.ascii", input="-", stdin=rows, output=name, separator="pipe",
+                         x=2, y=3, cat=1, columns="cat int, x double precision, "
+                         "y double precision" + more_columns, overwrite=True, quiet=True)
+
     def count(self, expression):
         self.runModule("r.mapcalc", expression=f"cnt = {expression}", overwrite=True)
         return int(float(gs.parse_command("r.univar", map="cnt", flags="g")["sum"]))
@@ -94,23 +105,15 @@ class TestGeologicalOperations(TestCase):
             self.assertEqual([p for p in pairs if p[0] != p[1]], [], msg=backend)
 
     def test_fence_curtain_equals_r3_cross_rast(self):
-        fence = gs.tempfile()
-        with open(fence, "w") as f:
-            f.write(f"L 2\n 0 {Y0}\n 2000 {Y0}\n")
-        self.runModule("v.in.ascii", input=fence, output="fence_line", format="standard",
-                       flags="n", overwrite=True)
+        self.lines_map("fence_line", f"L 2\n 0 {Y0}\n 2000 {Y0}\n")
         self.head_on(output="fc", material="fc_mat", fence="fence_line")
         # only the curtain is drawn: nulls of the section are holes in it
         self.assertEqual(self.grid("fc_mat"), self.xsec)
 
     def test_boreholes_show_the_stack_at_their_points(self):
-        points = gs.tempfile()
-        with open(points, "w") as f:
-            # two at cell centres, one outside the model
-            f.write("1|525|1225|a\n2|1475|1975|b\n3|5000|5000|c\n")
-        self.runModule("v.in.ascii", input=points, output="bh", separator="pipe",
-                       columns="cat int, x double precision, y double precision, "
-                       "name varchar(8)", x=2, y=3, cat=1, overwrite=True)
+        # two at cell centres, one outside the model
+        self.points_map("bh", "1|525|1225|a\n2|1475|1975|b\n3|5000|5000|c\n",
+                        ", name varchar(8)")
         run = subprocess.run(
             ["r3.sbrt.render", "input=geo", "output=bh", "view=top", "-b",
              "boreholes=bh", "material=bh_mat", "--overwrite"],
@@ -135,17 +138,8 @@ class TestGeologicalOperations(TestCase):
     def test_overlays_alone_on_the_gpu_equal_the_cpu(self):
         """A fence diagram and boreholes alone (-b), traced and shaded on the
         GPU (llvmpipe here): the CPU's class map."""
-        fence = gs.tempfile()
-        with open(fence, "w") as f:
-            f.write("L 3\n 150 300\n 900 1400\n 1800 1600\n")
-        self.runModule("v.in.ascii", input=fence, output="gpu_fence", format="standard",
-                       flags="n", overwrite=True)
-        points = gs.tempfile()
-        with open(points, "w") as f:
-            f.write("1|525|1225\n2|1475|1975\n3|1100|700\n")
-        self.runModule("v.in.ascii", input=points, output="gpu_bh", separator="pipe",
-                       x=2, y=3, cat=1, columns="cat int, x double precision, "
-                       "y double precision", overwrite=True)
+        self.lines_map("gpu_fence", "L 3\n 150 300\n 900 1400\n 1800 1600\n")
+        self.points_map("gpu_bh", "1|525|1225\n2|1475|1975\n3|1100|700\n")
         size = image_region(self, 90, 70)
         view = ["input=geo", "size=%d,%d" % size, "position=2600,-900,1500",
                 "target=1000,1250,400", "fov=40", "--overwrite"]
@@ -173,12 +167,7 @@ class TestGeologicalOperations(TestCase):
         self.runModule("g.region", region="geo_region")
 
     def test_borehole_logs_replace_the_model_stack(self):
-        points = gs.tempfile()
-        with open(points, "w") as f:
-            f.write("1|525|1225\n2|1475|1975\n")
-        self.runModule("v.in.ascii", input=points, output="logged", separator="pipe",
-                       columns="cat int, x double precision, y double precision",
-                       x=2, y=3, cat=1, overwrite=True)
+        self.points_map("logged", "1|525|1225\n2|1475|1975\n")
         # one row per logged interval in a table linked by cat
         self.runModule("db.execute", sql="DROP TABLE IF EXISTS bh_log")
         self.runModule("db.execute", sql="CREATE TABLE bh_log (cat integer, "
@@ -292,16 +281,8 @@ class TestGeologicalOperations(TestCase):
                               texture=["tr", "tg"])
 
     def test_bad_vector_input_fails(self):
-        lines = gs.tempfile()
-        with open(lines, "w") as f:
-            f.write("L 2\n 100 100\n 900 900\n")
-        self.runModule("v.in.ascii", input=lines, output="only_lines", format="standard",
-                       flags="n", overwrite=True)
-        points = gs.tempfile()
-        with open(points, "w") as f:
-            f.write("1|525|1225\n")
-        self.runModule("v.in.ascii", input=points, output="one_point", separator="pipe",
-                       overwrite=True)
+        self.lines_map("only_lines", "L 2\n 100 100\n 900 900\n")
+        self.points_map("one_point", "1|525|1225\n")
         for options in (
             dict(boreholes="only_lines"),       # lines where points are needed
             dict(fence="one_point"),            # points where lines are needed
