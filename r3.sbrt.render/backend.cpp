@@ -83,6 +83,12 @@ std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &reque
 {
     if (request.backend == "cpu")
         return nullptr;
+    if (request.backend == "auto" && sbrt_gl::gpu_device_node().empty()) {
+        // only a software GL could answer: not worth loading it
+        G_verbose_message(_("No GPU device (/dev/dri/renderD*, /dev/nvidiactl, /dev/dxg): "
+                            "using the CPU"));
+        return nullptr;
+    }
     std::unique_ptr<sbrt_gl::GlContext> context;
     try {
         context = sbrt_gl::create_gl_context(request.backend);

@@ -5,6 +5,7 @@ PURPOSE:   r3.sbrt.render against GRASS's own tools: the top view equals the
            errors, missing and corrupt SBRTs
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
+import glob
 import os
 import subprocess
 
@@ -265,6 +266,22 @@ class TestRenderTopView(TestCase):
         )
         self.assertEqual(run.returncode, 0, msg=run.stderr)
         self.assertRasterExists("noegl.red")
+
+    def test_auto_without_a_gpu_device_takes_the_cpu_at_once(self):
+        nodes = glob.glob("/dev/dri/renderD*") + [
+            n for n in ("/dev/nvidiactl", "/dev/dxg") if os.path.exists(n)]
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=geo", "output=auto_img", "backend=auto", "size=40,30",
+             "--verbose", "--overwrite"],
+            capture_output=True, text=True,
+        )
+        self.assertEqual(run.returncode, 0, msg=run.stderr)
+        if nodes:  # a GPU may be there: EGL is tried
+            self.assertNotIn("No GPU device", run.stderr)
+        else:  # Mesa is not even loaded
+            self.assertIn("No GPU device", run.stderr)
+            self.assertIn("Backend: cpu", run.stderr)
+            self.assertNotIn("software", run.stderr)
 
     def test_kernel_normals_shade_but_keep_materials(self):
         size = image_region(self, 80, 60)

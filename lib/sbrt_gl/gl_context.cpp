@@ -5,6 +5,9 @@
  ****************************************************************************/
 #include "gl_context.hpp"
 
+#include <filesystem>
+#include <system_error>
+
 #include "util/error.hpp"
 
 namespace sbrt_gl {
@@ -27,6 +30,19 @@ std::unique_ptr<GlContext> create_gl_context(const std::string &backend)
         }
     }
     sbrt::fail("no OpenGL backend works: ", reasons);
+}
+
+std::string gpu_device_node()
+{
+    namespace fs = std::filesystem;
+    std::error_code error; // a directory that cannot be read holds none
+    for (const fs::directory_entry &entry : fs::directory_iterator("/dev/dri", error))
+        if (entry.path().filename().string().rfind("renderD", 0) == 0)
+            return entry.path().string();
+    for (const char *node : {"/dev/nvidiactl", "/dev/dxg"})
+        if (fs::exists(node, error))
+            return node;
+    return "";
 }
 
 bool is_software_renderer(const std::string &renderer)

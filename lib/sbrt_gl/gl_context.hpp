@@ -36,6 +36,12 @@ std::unique_ptr<GlContext> create_osmesa_context();
 /// sbrt::Error listing each backend tried and why it failed.
 std::unique_ptr<GlContext> create_gl_context(const std::string &backend);
 
+/// The first device node a hardware OpenGL would go through (a DRM render
+/// node, NVIDIA's control device, WSL's /dev/dxg), or "" where there is
+/// none: then only a software rasteriser can make a context, and looking
+/// for one (loading Mesa and LLVM) can be skipped.
+std::string gpu_device_node();
+
 /// Whether a GL_RENDERER string names a software rasteriser (Mesa's
 /// llvmpipe, softpipe, swrast, or a driver that says "Software").
 bool is_software_renderer(const std::string &renderer);
