@@ -8,16 +8,12 @@
 // So the traversal is ONE loop, a state machine whose every iteration is
 // one step: enter a cell, halve the search range of its stack, or walk one
 // interval. The loop budget (options.y) bounds it; a ray that would need
-// more is flagged, and the host traces it on the CPU.
+// more is flagged, and the host traces it on the CPU. (common/ray.glsl
+// holds the ray's state; common/overlays.glsl, where it comes before this
+// file, the boreholes and fence curtains.)
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-// a plane's signed distance from the origin hi + lo along one axis
-float from_origin(float plane, float hi, float lo)
-{
-    precise float distance = (plane - hi) - lo;
-    return distance;
-}
 
 uint entry_face(int axis, float d)
 {
@@ -66,16 +62,6 @@ bool passes(vec2 range, float z_a, float z_b)
     return range.x > range.y || min(z_a, z_b) >= range.y || max(z_a, z_b) < range.x;
 }
 
-// light of the translucent strata crossed so far (premultiplied colour)
-// and the share of what is behind that still reaches the camera
-vec3 veil = vec3(0.0);
-float transmittance = 1.0;
-const float MIN_TRANSMITTANCE = 1.0 / 4096.0;
-
-// the ray of this invocation (local frame) and the t of the camera's eye
-vec3 ray_d = vec3(0.0);
-float t_eye = 0.0;
-
 #ifdef SBRT_SHADE
 // The outputs of the pixel (common/shade.glsl), or the word that sends it
 // back to the host: over the loop budget
@@ -94,16 +80,6 @@ void finish(uint index, vec3 point, uint code, float t)
     hits[index] = PixelHit(point, code, vec4(veil, transmittance));
 }
 #endif
-
-// Beer-Lambert over `length` map units of a translucent material; true
-// once (almost) nothing behind can be seen
-bool absorb(vec4 material, float length)
-{
-    float keep = exp(-material.w * length);
-    veil += transmittance * (1.0 - keep) * material.rgb;
-    transmittance *= keep;
-    return transmittance < MIN_TRANSMITTANCE;
-}
 
 // Pyramid node of `level` around cell (ix, iy): true where the ray, at
 // height z_in when it enters the cell, stays out of the node's range until
@@ -132,12 +108,6 @@ bool climb(uint level, int ix, int iy, vec3 hi, vec3 lo, vec3 d, float z_in,
     return true;
 }
 
-#ifdef SBRT_OVERLAYS
-// boreholes and fence curtains alone (common/overlays.glsl, after this file)
-void trace_overlays(uint index, vec3 hi, vec3 lo, vec3 d, float t_near, float t_far,
-                    uint wall);
-#endif
-
 void main()
 {
     // this dispatch covers the band of image rows from options.z on
@@ -161,6 +131,9 @@ void main()
     ray_d = d;
     t_eye = t_min;
     finish(index, vec3(0.0), 0u, 0.0);
+#if defined(SBRT_OVERLAYS) || defined(SBRT_BOREHOLES)
+    ov_begin(index, hi, lo, d);
+#endif
 
     // 1. slab clip to [0, cols] x [0, rows] x [0, z_max], without a loop
     float t_near = -1.0 / 0.0, t_far = 1.0 / 0.0;
@@ -206,7 +179,7 @@ void main()
         return;
 #ifdef SBRT_OVERLAYS
     // no model: the boreholes and curtains met directly
-    trace_overlays(index, hi, lo, d, t_near, t_far, wall);
+    trace_overlays(t_near, t_far, wall);
     return;
 #endif
 
@@ -234,7 +207,13 @@ void main()
     // is in there, it walks the cells without the pyramid (close above
     // material, a climb costs more than it saves)
     int stuck_x = -1, stuck_y = -1;
-    for (uint work = 0u;; ++work) {
+    // with boreholes (SBRT_BOREHOLES): the loop is left at a cell that
+    // holds some, which is crossed out here (common/overlays.glsl), and
+    // the loop goes on at the next cell; one small loop for the other cells
+    uint work = 0u;
+    bool at_boreholes = false, boreholes_crossed = false;
+    for (;;) {
+    for (;; ++work) {
         if (work >= options.y) {
             finish(index, vec3(0.0), CODE_OVER_BUDGET, 0.0);
             return;
@@ -270,8 +249,19 @@ void main()
                 uvec2 stack = stack_range(ix, rows - 1 - iy);
                 first = stack.x;
                 last = stack.y;
-                // nothing to find where the ray stays at or above the stack's top
-                if (first == last || min(z_in, z_out) >= interval_top(last - 1u)) {
+#ifdef SBRT_BOREHOLES
+                // a cell with boreholes: crossed out of this loop
+                if (!boreholes_crossed &&
+                    ov_has_boreholes(uint(rows - 1 - iy) * grid.x + uint(ix))) {
+                    at_boreholes = true;
+                    break;
+                }
+#endif
+                // nothing to find where the ray stays at or above the stack's
+                // top (or its boreholes were crossed)
+                if (boreholes_crossed || first == last ||
+                    min(z_in, z_out) >= interval_top(last - 1u)) {
+                    boreholes_crossed = false;
                     next_cell = true;
                 }
                 else {
@@ -388,6 +378,24 @@ void main()
         if (ix < 0 || ix >= cols || iy < 0 || iy >= rows)
             break;
         mode = ENTER;
+    }
+#ifdef SBRT_BOREHOLES
+    if (at_boreholes) {
+        // they and the cell's stack between them
+        at_boreholes = false;
+        uint crossed = ov_cross_cell(uint(rows - 1 - iy) * grid.x + uint(ix), uvec2(first, last),
+                                     t_in, t_out, wall, work);
+        if (crossed == OV_OVER_BUDGET) {
+            finish(index, vec3(0.0), CODE_OVER_BUDGET, 0.0);
+            return;
+        }
+        if (crossed == OV_ENDED)
+            return;
+        boreholes_crossed = true; // on to the next cell
+        continue;
+    }
+#endif
+    break;
     }
     finish(index, vec3(0.0), 0u, 0.0);
 }

@@ -10,6 +10,7 @@
 
 #include "shader_sources.hpp"
 #include "tracing/cpu_tracing.hpp"
+#include "tracing/gpu_overlays.hpp"
 #include "util/error.hpp"
 
 #define SBRT_STRINGIFY(x) #x
@@ -57,12 +58,17 @@ static_assert(sbrt::FIRST_PASS_TILE == 8 && sbrt::FIRST_PASS_BUDGET == 32,
 /// The sources of `pass` for `layout` and the form `model` is held in;
 /// with `drape`, a drape's colours among the outputs (SBRT_DRAPE).
 std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
-                                       const sbrt::Model &model, bool drape)
+                                       const sbrt::Tracer &tracer, bool drape)
 {
+    const sbrt::Model &model = tracer.model();
     const unsigned count_bytes = model.index().count_bytes();
     // the normals pass reads a face's normal as shading does
-    const bool shade = pass == Pass::shade || pass == Pass::kernel_shade ||
-                       pass == Pass::kernel_normals || pass == Pass::overlays;
+    const bool shade =
+        pass == Pass::shade || pass == Pass::kernel_shade || pass == Pass::kernel_normals;
+    // overlays are shaded where they are met (a hit record lacks their
+    // surfaces' normals)
+    const sbrt::GpuOverlayMode overlays =
+        pass == Pass::shade ? sbrt::gpu_overlay_mode(tracer) : sbrt::GpuOverlayMode::none;
     const bool kernel = pass == Pass::kernel_depth || pass == Pass::kernel_normals ||
                         pass == Pass::kernel_across || pass == Pass::kernel_shade;
     return {"#version 450\n",
@@ -74,7 +80,9 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             shade ? "#define SBRT_SHADE 1\n" : "",
             drape && shade ? "#define SBRT_DRAPE 1\n" : "",
             kernel ? "#define SBRT_KERNEL 1\n" : "",
-            pass == Pass::overlays ? "#define SBRT_OVERLAYS 1\n" : "",
+            overlays == sbrt::GpuOverlayMode::alone        ? "#define SBRT_OVERLAYS 1\n"
+            : overlays == sbrt::GpuOverlayMode::with_model ? "#define SBRT_BOREHOLES 1\n"
+                                                           : "",
             pass == Pass::kernel_depth     ? "#define SBRT_KERNEL_DEPTH 1\n"
             : pass == Pass::kernel_normals ? "#define SBRT_KERNEL_NORMALS 1\n"
             : pass == Pass::kernel_across  ? "#define SBRT_KERNEL_ACROSS 1\n"
@@ -82,10 +90,14 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             FIRST_PASS_DEFINES,
             SHADER_COMMON_LAYOUT,
             shade ? SHADER_COMMON_SHADE : "",
+            kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_RAY,
+            overlays == sbrt::GpuOverlayMode::alone ||
+                    overlays == sbrt::GpuOverlayMode::with_model
+                ? SHADER_COMMON_OVERLAYS
+                : "",
             kernel                     ? SHADER_KERNEL
             : pass == Pass::first_pass ? SHADER_FIRST_PASS
-                                       : SHADER_RAYCAST,
-            pass == Pass::overlays ? SHADER_COMMON_OVERLAYS : ""};
+                                       : SHADER_RAYCAST};
 }
 
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "gl_objects.hpp"
-#include "model/model.hpp"
+#include "tracing/tracer.hpp"
 #include "tracing/gpu_memory_layout.hpp"
 
 namespace sbrt_gl {
@@ -39,15 +39,15 @@ enum class Pass : int {
     kernel_normals, ///< kernel.comp: the kernel normals (SBRT_KERNEL_NORMALS)
     kernel_across,  ///< kernel.comp: their sums along the rows (smoothing)
     kernel_shade, ///< kernel.comp: kernel normals and the shaded outputs
-    first_pass,   ///< first_pass.comp: the tiles' first-hit bounds
-    overlays      ///< raycast.comp with common/overlays.glsl: boreholes and
-                  ///< curtains alone, shaded (SBRT_SHADE, SBRT_OVERLAYS)
+    first_pass    ///< first_pass.comp: the tiles' first-hit bounds
 };
 
-/// The sources of `pass` for `layout` and the form `model` is held in;
-/// with `drape`, a drape's colours among the outputs (SBRT_DRAPE).
+/// The sources of `pass` for `layout`, the form the tracer's model is held
+/// in and its overlays (the shaded ray casting pass draws them:
+/// common/overlays.glsl); with `drape`, a drape's colours among the
+/// outputs (SBRT_DRAPE).
 std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
-                                       const sbrt::Model &model, bool drape = false);
+                                       const sbrt::Tracer &tracer, bool drape = false);
 
 } // namespace sbrt_gl
 

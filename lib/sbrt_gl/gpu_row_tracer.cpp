@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "tracing/gpu_overlays.hpp"
 #include "util/parallel.hpp"
 
 namespace sbrt_gl {
@@ -14,8 +15,9 @@ namespace sbrt_gl {
 std::optional<std::vector<sbrt::PixelRect>> cpu_pixels_of(const sbrt::Tracer &tracer,
                                                           const sbrt::Camera &camera)
 {
-    // boreholes drawn with the model: the CPU traces their pixels (drawn
-    // alone, boreholes and curtains are shaded on the GPU)
+    // overlays drawn with the model: the CPU traces their pixels where the
+    // GPU writes hit records (the shading program draws boreholes itself;
+    // drawn alone, boreholes and curtains are shaded on the GPU)
     if (tracer.has_overlays() && tracer.scene().draw_model)
         return sbrt::pixel_rects_of(tracer.overlay_boxes(), camera);
     return std::vector<sbrt::PixelRect>();
@@ -82,6 +84,8 @@ bool GpuRowTracer::shade_rows(int first, int count, const sbrt::Outputs &outputs
     }
     gpu_.shade_rows(camera_, first, count, *shading_, outputs, band, threads_);
     const sbrt::Tracer &tracer = gpu_.tracer();
+    if (sbrt::gpu_overlay_mode(tracer) == sbrt::GpuOverlayMode::with_model)
+        return true; // the shading program drew the boreholes
     const sbrt::PixelShader shader(tracer.model(), *shading_);
     for_cpu_pixels(first, count, [&](int row, int col) {
         sbrt::Hit hit;

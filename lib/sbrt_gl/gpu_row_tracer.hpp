@@ -22,11 +22,13 @@ std::optional<std::vector<sbrt::PixelRect>> cpu_pixels_of(const sbrt::Tracer &tr
                                                           const sbrt::Camera &camera);
 
 /// \brief Rows of `camera`'s image from the GPU: hit records, or (with
-/// shade_on_gpu) the shaded outputs of whole bands. The GPU draws the
-/// model; where the scene also holds boreholes drawn with it, the pixels
-/// whose rays may meet one (the projections of their boxes) are traced and
-/// shaded again by the exact CPU tracer, which draws both: no other ray
-/// can meet a borehole, and elsewhere the two agree.
+/// shade_on_gpu) the shaded outputs of whole bands. Shading, the GPU draws
+/// the model and its boreholes (or boreholes and curtains alone). Hit
+/// records hold no normals of a borehole's surfaces: where the GPU writes
+/// them for a scene with boreholes drawn with the model (or curtains:
+/// shaded too), the pixels whose rays may meet one (the projections of
+/// their boxes) are traced again by the exact CPU tracer, which draws
+/// both: no other ray can meet a borehole, and elsewhere the two agree.
 class GpuRowTracer : public sbrt::RowTracer {
 public:
     GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads = 0);

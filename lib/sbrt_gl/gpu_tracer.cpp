@@ -143,7 +143,7 @@ const GlComputeProgram &GpuTracer::record_program() const
 {
     // compiled when first used: a render shaded on the GPU never needs it
     if (!program_)
-        program_.emplace(gl_, pass_sources(Pass::records, layout_, tracer_.model()), &cache_);
+        program_.emplace(gl_, pass_sources(Pass::records, layout_, tracer_), &cache_);
     return *program_;
 }
 
@@ -247,17 +247,17 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
 GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, bool kernel)
 {
     const bool draped = shading.drape != nullptr;
-    const bool overlays = !tracer_.scene().draw_model;
-    if (kernel && overlays)
+    if (kernel && !tracer_.scene().draw_model)
         sbrt::fail("kernel normals of boreholes and curtains alone are found on the CPU");
     std::optional<GlComputeProgram> &program =
-        kernel     ? (draped ? kernel_drape_program_ : kernel_program_)
-        : overlays ? (draped ? overlays_drape_program_ : overlays_program_)
-                   : (draped ? drape_program_ : shade_program_);
+        kernel ? (draped ? kernel_drape_program_ : kernel_program_)
+               : (draped ? drape_program_ : shade_program_);
     if (!program) {
         const auto start = Clock::now();
-        const Pass pass = kernel ? Pass::kernel_shade : overlays ? Pass::overlays : Pass::shade;
-        program.emplace(gl_, pass_sources(pass, layout_, tracer_.model(), draped), &cache_);
+        program.emplace(gl_,
+                        pass_sources(kernel ? Pass::kernel_shade : Pass::shade, layout_, tracer_,
+                                     draped),
+                        &cache_);
         stats_.upload_ms += ms_since(start);
     }
     return *program;
@@ -288,28 +288,36 @@ void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &s
     looks_->bind(5);
     if (shading.drape)
         drape_->bind(7);
-    if (!tracer_.scene().draw_model) {
-        if (!overlays_) {
-            const sbrt::GpuOverlays overlays = sbrt::make_gpu_overlays(tracer_);
-            overlays_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                              checked_bytes(overlays.words.size() * sizeof(uint32_t),
-                                            max_block_bytes_, "boreholes and fence panels"),
-                              overlays.words.data());
-            logs_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                          checked_bytes(overlays.logs.size() * sizeof(sbrt::Interval),
-                                        max_block_bytes_, "borehole logs"),
-                          overlays.logs.data());
-        }
-        overlays_->bind(9);
-        logs_->bind(10);
+    const sbrt::GpuOverlayMode mode = sbrt::gpu_overlay_mode(tracer_);
+    if (mode != sbrt::GpuOverlayMode::alone && mode != sbrt::GpuOverlayMode::with_model)
+        return;
+    if (!overlays_) {
+        const sbrt::GpuOverlays overlays = sbrt::make_gpu_overlays(tracer_);
+        overlays_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                          checked_bytes(overlays.words.size() * sizeof(uint32_t),
+                                        max_block_bytes_, "boreholes and fence panels"),
+                          overlays.words.data());
+        logs_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                      checked_bytes(overlays.logs.size() * sizeof(sbrt::Interval),
+                                    max_block_bytes_, "borehole logs"),
+                      overlays.logs.data());
+        if (!overlays.cells.empty())
+            cell_overlays_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                                   checked_bytes(overlays.cells.size() * sizeof(uint32_t),
+                                                 max_block_bytes_, "cells' boreholes"),
+                                   overlays.cells.data());
     }
+    overlays_->bind(9);
+    logs_->bind(10);
+    if (cell_overlays_)
+        cell_overlays_->bind(11);
 }
 
 void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, int width,
                          int height)
 {
     if (!program)
-        program.emplace(gl_, pass_sources(pass, layout_, tracer_.model()), &cache_);
+        program.emplace(gl_, pass_sources(pass, layout_, tracer_), &cache_);
     program->use();
     gl_.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
     gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

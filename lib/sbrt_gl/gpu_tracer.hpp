@@ -89,11 +89,9 @@ public:
     /// the drape where there was one), or 0.
     GLuint shade_program() const
     {
-        return drape_program_            ? drape_program_->name()
-               : shade_program_          ? shade_program_->name()
-               : overlays_drape_program_ ? overlays_drape_program_->name()
-               : overlays_program_       ? overlays_program_->name()
-                                         : 0;
+        return drape_program_   ? drape_program_->name()
+               : shade_program_ ? shade_program_->name()
+                                : 0;
     }
     /// The kernel normals' shading program (compiled by the first
     /// shade_kernel_rows), or 0.
@@ -186,10 +184,9 @@ private:
     /// shading on the GPU: its program, the materials' looks, the Shade
     /// block, the band's output words
     std::optional<GlComputeProgram> shade_program_, drape_program_;
-    /// boreholes and curtains alone (the scene does not draw the model):
-    /// their programs and buffers (bindings 9 and 10)
-    std::optional<GlComputeProgram> overlays_program_, overlays_drape_program_;
-    std::optional<GlBuffer> overlays_, logs_;
+    /// boreholes and curtains drawn by the shading program (bindings 9,
+    /// 10 and, with the model, each cell's boreholes: 11)
+    std::optional<GlBuffer> overlays_, logs_, cell_overlays_;
     /// kernel normals: the depth pass and the shading pass (with a drape
     /// or without), the whole image's hit records and depths, the
     /// kernel's cells and its Kernel block

@@ -11,6 +11,7 @@ namespace sbrt_gl {
 
 extern const char *const SHADER_COMMON_LAYOUT; ///< shaders/common/layout.glsl
 extern const char *const SHADER_COMMON_SHADE;  ///< shaders/common/shade.glsl
+extern const char *const SHADER_COMMON_RAY;    ///< shaders/common/ray.glsl
 extern const char *const SHADER_COMMON_OVERLAYS; ///< shaders/common/overlays.glsl
 extern const char *const SHADER_RAYCAST;       ///< shaders/raycast.comp
 extern const char *const SHADER_KERNEL;        ///< shaders/kernel.comp

@@ -1,10 +1,14 @@
-// Boreholes and fence curtains drawn alone (Scene::draw_model false), met
-// as lib/sbrt/tracing/tracer_overlays.cpp meets them without walking the
-// cells: every overlay the ray crosses between t_near and t_far, in the
-// order of their starts. A curtain shows the model's class at its point;
-// a borehole its log (a split cylinder: its log on one side, the model's
-// stack on the other). Appended after raycast.comp (SBRT_OVERLAYS), in
-// float; shaded here only (the surfaces' normals are not in a hit record).
+// Boreholes and fence curtains on the GPU, as lib/sbrt/tracing/
+// tracer_overlays.cpp meets them, in float; before raycast.comp, which
+// calls them:
+// - SBRT_OVERLAYS, the model not drawn (boreholes alone, a fence diagram):
+//   every overlay the ray crosses between t_near and t_far, in the order
+//   of their starts, without walking the cells (trace_overlays);
+// - SBRT_BOREHOLES, boreholes drawn with the model: in a cell that holds
+//   some, they and the model's stack between them (ov_cross_cell).
+// A curtain shows the model's class at its point; a borehole its log (a
+// split cylinder: its log on one side, the model's stack on the other).
+// Shaded here only (the surfaces' normals are not in a hit record).
 
 #ifndef SBRT_SHADE
 #error "the overlays are shaded on the GPU (SBRT_SHADE)"
@@ -29,6 +33,11 @@ struct LogInterval {
     float top; // local z
 };
 layout(std430, binding = 10) readonly buffer Logs { LogInterval logs[]; };
+#ifdef SBRT_BOREHOLES
+// each cell's first item (row-major from the north; cells + 1 words), then
+// the items: indices of overlays
+layout(std430, binding = 11) readonly buffer CellOverlays { uint cell_overlays[]; };
+#endif
 
 const uint PANEL = 0xffffffffu;
 const uint FACE_CYLINDER = 8u, FACE_FENCE = 9u, FACE_SPLIT = 10u;
@@ -38,6 +47,18 @@ const uint FACE_CYLINDER = 8u, FACE_FENCE = 9u, FACE_SPLIT = 10u;
 vec3 ov_hi, ov_lo, ov_d;
 uint ov_index, ov_work = 0u, ov_limit = 0u;
 float ov_length_per_t = 0.0;
+
+void ov_begin(uint index, vec3 hi, vec3 lo, vec3 d)
+{
+    ov_hi = hi;
+    ov_lo = lo;
+    ov_d = d;
+    ov_index = index;
+    ov_length_per_t = length(d * box.yzw);
+    // on llvmpipe, a margin below its limit for the loops a SIMD vector
+    // runs for lanes already done
+    ov_limit = options.y == 0xffffffffu ? options.y : options.y / 2u;
+}
 
 float ov_z(float t) { return (ov_hi.z + t * ov_d.z) + ov_lo.z; }
 float ov_t_at(float z) { return from_origin(z, ov_hi.z, ov_lo.z) / ov_d.z; }
@@ -75,44 +96,53 @@ bool ov_meet(uint material, float t_enter, float t_exit, uint surface, vec3 n)
     return false;
 }
 
-// Tracer::walk_stack over logs[first, last) from t_a to t_b, entering
-// through `surface`; false where the ray passes
-bool ov_walk(uint first, uint last, float t_a, float t_b, uint surface, vec3 n)
+// interval j of the model's intervals or of the logs
+float ov_top(bool model, uint j) { return model ? interval_top(j) : logs[j].top; }
+uint ov_material(bool model, uint j) { return model ? interval_material(j) : logs[j].material; }
+
+// Tracer::walk_stack over [first, last) of the model's intervals or of the
+// logs, from t_a to t_b, entering through `surface`; false where the ray
+// passes
+bool ov_walk(bool model, uint first, uint last, float t_a, float t_b, uint surface, vec3 n)
 {
     float z_a = ov_z(t_a), z_b = ov_z(t_b);
-    if (first == last || min(z_a, z_b) >= logs[last - 1u].top)
+    if (first == last || min(z_a, z_b) >= ov_top(model, last - 1u))
         return false;
-    if (ov_d.z < 0.0) {
-        // descending: intervals (bottom, top]; the one holding z_a
-        uint k = first;
-        while (k < last && logs[k].top < z_a)
-            ++k;
-        ov_work += k - first;
+    // descending: intervals (bottom, top], the first top >= z_a holds z_a;
+    // ascending or level: [bottom, top), the first top > z_a
+    bool down = ov_d.z < 0.0;
+    uint low = first, high = last;
+    while (low < high) {
+        uint mid = (low + high) / 2u;
+        float top = ov_top(model, mid);
+        if (down ? top < z_a : !(z_a < top))
+            low = mid + 1u;
+        else
+            high = mid;
+        ++ov_work;
+    }
+    uint k = low;
+    if (down) {
         for (uint j = k;; --j) {
             ++ov_work;
             if (j != last) {
-                float t_exit = j > first ? min(t_b, ov_t_at(logs[j - 1u].top)) : t_b;
-                if (j == k ? ov_meet(logs[j].material, t_a, t_exit, surface, n)
-                           : ov_meet(logs[j].material, ov_t_at(logs[j].top), t_exit,
+                float t_exit = j > first ? min(t_b, ov_t_at(ov_top(model, j - 1u))) : t_b;
+                if (j == k ? ov_meet(ov_material(model, j), t_a, t_exit, surface, n)
+                           : ov_meet(ov_material(model, j), ov_t_at(ov_top(model, j)), t_exit,
                                      FACE_TOP, vec3(0.0)))
                     return true;
             }
-            if (j == first || !(logs[j - 1u].top > z_b))
+            if (j == first || !(ov_top(model, j - 1u) > z_b))
                 return false;
         }
     }
-    // ascending or level: intervals [bottom, top)
-    uint k = first;
-    while (k < last && !(z_a < logs[k].top))
-        ++k;
-    ov_work += k - first;
     for (uint j = k; j != last; ++j) {
         ++ov_work;
-        if (j != k && !(logs[j - 1u].top < z_b))
+        if (j != k && !(ov_top(model, j - 1u) < z_b))
             return false;
-        float t_exit = ov_d.z == 0.0 ? t_b : min(t_b, ov_t_at(logs[j].top));
-        if (j == k ? ov_meet(logs[j].material, t_a, t_exit, surface, n)
-                   : ov_meet(logs[j].material, ov_t_at(logs[j - 1u].top), t_exit,
+        float t_exit = ov_d.z == 0.0 ? t_b : min(t_b, ov_t_at(ov_top(model, j)));
+        if (j == k ? ov_meet(ov_material(model, j), t_a, t_exit, surface, n)
+                   : ov_meet(ov_material(model, j), ov_t_at(ov_top(model, j - 1u)), t_exit,
                              FACE_BOTTOM, vec3(0.0)))
             return true;
         if (ov_d.z == 0.0)
@@ -127,20 +157,21 @@ bool ov_borehole(Overlay o, float t_a, float t_b, uint surface, vec3 n)
     uvec2 log_stack = uvec2(o.stacks.x, o.stacks.x + o.stacks.y);
     vec2 s = overlay_head.zw;
     if (s == vec2(0.0))
-        return ov_walk(log_stack.x, log_stack.y, t_a, t_b, surface, n);
+        return ov_walk(false, log_stack.x, log_stack.y, t_a, t_b, surface, n);
     uvec2 model_stack = uvec2(o.stacks.z, o.stacks.z + o.stacks.w);
     // the log on the side s points to, the model's stack on the other
     float s0 = dot(ov_from(o.ends.xy), s), s1 = dot(ov_dir(), s);
     float t_split = s1 != 0.0 ? -s0 / s1 : 1.0 / 0.0;
     if (!(t_split > t_a && t_split < t_b)) {
         uvec2 half_stack = s0 + 0.5 * (t_a + t_b) * s1 >= 0.0 ? log_stack : model_stack;
-        return ov_walk(half_stack.x, half_stack.y, t_a, t_b, surface, n);
+        return ov_walk(false, half_stack.x, half_stack.y, t_a, t_b, surface, n);
     }
     uvec2 before = s0 + 0.5 * (t_a + t_split) * s1 >= 0.0 ? log_stack : model_stack;
-    if (ov_walk(before.x, before.y, t_a, t_split, surface, n))
+    if (ov_walk(false, before.x, before.y, t_a, t_split, surface, n))
         return true;
     uvec2 after = s0 + 0.5 * (t_split + t_b) * s1 >= 0.0 ? log_stack : model_stack;
-    return ov_walk(after.x, after.y, t_split, t_b, FACE_SPLIT, vec3(s1 > 0.0 ? -s : s, 0.0));
+    return ov_walk(false, after.x, after.y, t_split, t_b, FACE_SPLIT,
+                   vec3(s1 > 0.0 ? -s : s, 0.0));
 }
 
 // Tracer::overlay_events for one overlay: its stretch [start, end] of
@@ -193,19 +224,11 @@ bool ov_event(Overlay o, float t_lo, float t_hi, out float start, out float end,
     return true;
 }
 
+#ifdef SBRT_OVERLAYS
 // Tracer::cross_events without the model: the overlays in the order of
 // their starts (ties: the lower index first), each once
-void trace_overlays(uint index, vec3 hi, vec3 lo, vec3 d, float t_near, float t_far,
-                    uint wall)
+void trace_overlays(float t_near, float t_far, uint wall)
 {
-    ov_hi = hi;
-    ov_lo = lo;
-    ov_d = d;
-    ov_index = index;
-    ov_length_per_t = length(d * box.yzw);
-    // on llvmpipe, a margin below its limit for the loops a SIMD vector
-    // runs for lanes already done
-    ov_limit = options.y == 0xffffffffu ? options.y : options.y / 2u;
     uint n = overlay_count.x, surface = wall, last = 0u;
     vec3 surface_n = vec3(0.0);
     float cursor = t_near, last_start = -1.0 / 0.0;
@@ -230,7 +253,7 @@ void trace_overlays(uint index, vec3 hi, vec3 lo, vec3 d, float t_near, float t_
         }
         ov_work += n + 1u;
         if (ov_work > ov_limit) {
-            words[index * outputs.x] = 0u; // over the budget: the host's
+            words[ov_index * outputs.x] = 0u; // over the budget: the host's
             return;
         }
         if (best == n)
@@ -243,7 +266,7 @@ void trace_overlays(uint index, vec3 hi, vec3 lo, vec3 d, float t_near, float t_
             continue; // inside a cylinder already crossed
         if (panel) {
             // the class of the model at the curtain's point
-            vec3 p = (hi + best_start * d) + lo;
+            vec3 p = (ov_hi + best_start * ov_d) + ov_lo;
             uvec2 stack = stack_range(clamp(int(floor(p.x)), 0, cols - 1),
                                       rows - 1 - clamp(int(floor(p.y)), 0, rows - 1));
             uint low = stack.x, high = stack.y;
@@ -274,3 +297,68 @@ void trace_overlays(uint index, vec3 hi, vec3 lo, vec3 d, float t_near, float t_
     }
     ov_write(0.0, 0u, FACE_NONE, vec3(0.0)); // no hit: the veil before the background
 }
+#endif
+
+#ifdef SBRT_BOREHOLES
+// Tracer::cross_overlays with the model in `cell` (row-major from the
+// north), crossed from t_in to t_out through `wall`: its boreholes in the
+// order of their starts, the model's `stack` between them. OV_NONE where
+// the cell holds none; `work` counts against the loop budget.
+bool ov_has_boreholes(uint cell) { return cell_overlays[cell] != cell_overlays[cell + 1u]; }
+
+uint ov_cross_cell(uint cell, uvec2 stack, float t_in, float t_out, uint wall, inout uint work)
+{
+    uint items_first = cell_overlays[cell], items_last = cell_overlays[cell + 1u];
+    if (items_first == items_last)
+        return OV_NONE;
+    uint items = grid.x * grid.y + 1u; // where the items begin
+    ov_work = work;
+    uint surface = wall, last = 0u, none = 0xffffffffu;
+    vec3 surface_n = vec3(0.0);
+    float cursor = t_in, last_start = -1.0 / 0.0;
+    for (;;) {
+        uint best = none;
+        float best_start = 0.0, best_end = 0.0;
+        vec3 best_n = vec3(0.0);
+        for (uint i = items_first; i < items_last; ++i) {
+            uint k = cell_overlays[items + i];
+            float start, end;
+            vec3 normal;
+            if (!ov_event(overlays[k], t_in, t_out, start, end, normal))
+                continue;
+            bool later = start > last_start || (start == last_start && k > last);
+            if (later && (best == none || start < best_start ||
+                          (start == best_start && k < best))) {
+                best = k;
+                best_start = start;
+                best_end = end;
+                best_n = normal;
+            }
+        }
+        ov_work += items_last - items_first + 1u;
+        if (ov_work > ov_limit)
+            return OV_OVER_BUDGET;
+        if (best == none)
+            break;
+        last_start = best_start;
+        last = best;
+        if (best_end <= cursor)
+            continue; // inside a cylinder already crossed
+        if (best_start > cursor &&
+            ov_walk(true, stack.x, stack.y, cursor, best_start, surface, surface_n))
+            return OV_ENDED;
+        float start = max(best_start, cursor);
+        bool through_mantle = start == best_start && best_n != vec3(0.0);
+        Overlay o = overlays[best];
+        if (ov_borehole(o, start, best_end, through_mantle ? FACE_CYLINDER : surface,
+                        through_mantle ? best_n : surface_n))
+            return OV_ENDED;
+        cursor = best_end;
+        surface = FACE_CYLINDER;
+        surface_n = vec3(-normalize(ov_from(o.ends.xy) + cursor * ov_dir()), 0.0);
+    }
+    bool ended = cursor < t_out && ov_walk(true, stack.x, stack.y, cursor, t_out, surface, surface_n);
+    work = ov_work;
+    return ended ? OV_ENDED : OV_PASSED;
+}
+#endif

@@ -22,6 +22,7 @@
 #include "tracing/cpu_tracing.hpp"
 #include "util/error.hpp"
 #include "gpu_renderer.hpp"
+#include "gpu_row_tracer.hpp"
 #include "gpu_tracer.hpp"
 #include "program_cache.hpp"
 #include "scene/hidden_materials.hpp"
@@ -803,10 +804,11 @@ TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
     }
 }
 
-TEST_P(Gpu, DrawsBoreholesWithTheModelTheirPixelsTracedOnTheCpu)
+TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
 {
-    // boreholes drawn with the model: the GPU draws the model, the CPU the
-    // pixels whose rays may meet a borehole (model and boreholes)
+    // boreholes drawn with the model: shading, the GPU draws both; its hit
+    // records (no normals of a cylinder) leave the pixels whose rays may
+    // meet a borehole to the CPU
     const Model m = geology(40, 56, 30);
     const Frame &f = m.frame();
     Scene scene;
@@ -826,27 +828,48 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelTheirPixelsTracedOnTheCpu)
         t.centre() + 2.2 * t.radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)), t.centre(),
         40, 61, 83);
     expect_gpu_shading_as_cpu(*context_, layout(), renderer, camera, "boreholes");
-    // the CPU's pixels are the CPU's image exactly, and only a part
-    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, layout());
-    const auto rects = pixel_rects_of(t.overlay_boxes(), camera); // GpuRowTracer's
-    ASSERT_TRUE(rects);
+    // the boreholes show: the image differs from the model's alone
     const Image want = renderer.render_image(camera, {});
-    const Image got = on_gpu.render_image(camera, {}, 2);
+    const Renderer plain(m, 2.0, Scene{}, Shading{}, {2, true, 16});
+    EXPECT_NE(plain.render_image(camera, {}).rgb, want.rgb);
+    // split cylinders through gaps in their logs, and a translucent material
+    Scene split = scene;
+    for (Borehole &b : split.boreholes) {
+        for (Interval &iv : b.model_stack)
+            iv.material = 4 + (iv.material % 2);
+        for (size_t k = 0; k < b.stack.size(); k += 2)
+            b.stack[k].material = EMPTY;
+    }
+    split.split = glm::normalize(glm::dvec2(1, 1));
+    split.translucency = sbrt_test::cut_and_translucent_scene(m).translucency;
+    // cut through one borehole's axis, the cut face towards the camera
+    const glm::dvec3 axis(split.boreholes[1].x, split.boreholes[1].y, t.centre().z);
+    split.planes = {{axis, {1, 0.5, 0}}};
+    const Renderer halves(m, 2.0, split, Shading{}, {2, true, 16});
+    const Camera close = Camera::perspective(
+        axis + glm::dvec3(7 * f.ew_res(), 8 * f.ns_res(), 3 * f.ew_res()), axis, 40, 61, 83);
+    expect_gpu_shading_as_cpu(*context_, layout(), halves, close, "split cylinders");
+    expect_gpu_shading_as_cpu(*context_, layout(), halves, camera, "split cylinders, far");
+
+    // hit records: the CPU's pixels are the CPU's hits exactly, and only a part
+    sbrt_gl::GpuTracer gpu(*context_, t, layout());
+    sbrt_gl::GpuRowTracer rows(gpu, camera, 2);
+    ASSERT_TRUE(rows.cpu_pixels());
+    const auto &rects = *rows.cpu_pixels();
+    HitImage got(size_t(camera.rows()) * size_t(camera.cols()));
+    rows.trace_rows(0, camera.rows(), got.data());
     size_t cpu_pixels = 0, differing = 0;
     for (int row = 0; row < camera.rows(); ++row)
-        for (const auto &[c0, c1] : row_spans(*rects, row))
+        for (const auto &[c0, c1] : row_spans(rects, row))
             for (int col = c0; col <= c1; ++col) {
-                const size_t i = (size_t(row) * size_t(camera.cols()) + size_t(col)) * 3;
+                const Hit hit = t.trace(camera.ray(row, col));
+                const Hit &g = got[size_t(row) * size_t(camera.cols()) + size_t(col)];
                 ++cpu_pixels;
-                differing += !std::equal(want.rgb.begin() + long(i), want.rgb.begin() + long(i) + 3,
-                                         got.rgb.begin() + long(i));
+                differing += hit.material != g.material || hit.t != g.t;
             }
     EXPECT_GT(cpu_pixels, 30u);
     EXPECT_LT(cpu_pixels, size_t(camera.rows()) * size_t(camera.cols()) / 3);
     EXPECT_EQ(differing, 0u);
-    // the boreholes show: the image differs from the model's alone
-    const Renderer plain(m, 2.0, Scene{}, Shading{}, {2, true, 16});
-    EXPECT_NE(plain.render_image(camera, {}).rgb, want.rgb);
 }
 
 TEST_P(Gpu, ShadesADrapeOnTheGpuAsTheCpuDoes)

@@ -132,6 +132,37 @@ TEST(EmptySpaceSkipping, HiddenStrataPlanesAndTranslucency)
     expect_same_image(m, veil, view(m, 120, 15));
 }
 
+TEST(EmptySpaceSkipping, BoreholesAreWalkedUpToTheirLogsTops)
+{
+    // a cell with boreholes is walked up to the highest log there (not the
+    // model's top): logs rising above the model, split cylinders whose
+    // other half is the model's stack at the axis, low views over the top
+    const Model m = sbrt_test::geology(60, 90, 40);
+    const Frame &f = m.frame();
+    Scene scene;
+    for (int k = 0; k < 4; ++k) {
+        Borehole b = sbrt_test::borehole_at(m, f.west + (10.5 + 20 * k) * f.ew_res(),
+                                            f.south + (12.5 + 11 * k) * f.ns_res());
+        b.stack.back().top += float(5 * (k + 1)); // above the model there
+        for (Interval &iv : b.stack)
+            iv.material = 1 + (iv.material % 3);
+        scene.boreholes.push_back(b);
+    }
+    scene.borehole_radius = 2.5 * f.ew_res();
+    const Tracer with(m, 1.0, scene);
+    // the cells around a borehole reach its log's top, no higher
+    const Frame &frame = m.frame();
+    const Borehole &b = scene.boreholes[3];
+    const int x = int((b.x - frame.west) / frame.ew_res()), y = int((b.y - frame.south) / frame.ns_res());
+    EXPECT_EQ(with.pyramid().node(0, x, y).high, b.stack.back().top);
+    EXPECT_LT(with.pyramid().node(0, x, y).high, float(with.top_local()) + 1e-3f);
+    for (double elevation : {35.0, 8.0, 1.0})
+        for (double azimuth : {20.0, 200.0})
+            expect_same_image(m, scene, view(m, azimuth, elevation));
+    scene.split = glm::normalize(glm::dvec2(1, -1));
+    expect_same_image(m, scene, view(m, 140, 12));
+}
+
 TEST(EmptySpaceSkipping, CellsCutAwayByAPlaneAreEmpty)
 {
     const Model m = sbrt_test::geology(32, 32, 10);

@@ -27,6 +27,16 @@ std::pair<uint32_t, uint32_t> append(std::vector<Interval> &logs,
 
 } // namespace
 
+GpuOverlayMode gpu_overlay_mode(const Tracer &tracer)
+{
+    const Scene &scene = tracer.scene();
+    if (!tracer.has_overlays())
+        return GpuOverlayMode::none;
+    if (!scene.draw_model)
+        return GpuOverlayMode::alone;
+    return scene.fence.empty() ? GpuOverlayMode::with_model : GpuOverlayMode::on_cpu;
+}
+
 GpuOverlays make_gpu_overlays(const Tracer &tracer)
 {
     const Scene &scene = tracer.scene();
@@ -61,6 +71,15 @@ GpuOverlays make_gpu_overlays(const Tracer &tracer)
                     overlays.size() * sizeof(GpuOverlay));
     if (out.logs.empty())
         out.logs.push_back({0, 0}); // a buffer is never empty
+    if (gpu_overlay_mode(tracer) == GpuOverlayMode::with_model) {
+        // the tracer's lists, a panel after the boreholes
+        out.cells = tracer.overlay_cell_offsets();
+        const uint32_t boreholes = uint32_t(scene.boreholes.size());
+        for (uint32_t item : tracer.overlay_cell_items())
+            out.cells.push_back(item & Tracer::OVERLAY_PANEL
+                                    ? boreholes + (item & ~Tracer::OVERLAY_PANEL)
+                                    : item);
+    }
     return out;
 }
 

@@ -39,11 +39,26 @@ static_assert(sizeof(GpuOverlay) == 32, "std430 vec4 + uvec4");
 
 constexpr uint32_t GPU_PANEL = 0xffffffffu;
 
+/// How the GPU draws a tracer's boreholes and fence panels.
+enum class GpuOverlayMode {
+    none,       ///< there are none
+    alone,      ///< the model is not drawn: every ray meets them directly
+                ///< (SBRT_OVERLAYS)
+    with_model, ///< boreholes in the cells the DDA crosses (SBRT_BOREHOLES;
+                ///< shaded passes only)
+    on_cpu      ///< curtains with the model: the CPU traces their pixels
+};
+GpuOverlayMode gpu_overlay_mode(const Tracer &tracer);
+
 /// The overlays of the tracer's scene on the GPU: the Overlays buffer's
-/// words (head, then the overlays) and the logs (intervals, local tops).
+/// words (head, then the overlays), the logs (intervals, local tops) and,
+/// with the model, `buffer CellOverlays`: each cell's first item (cells +
+/// 1 words, row-major from the north), then the items, indices into the
+/// overlays.
 struct GpuOverlays {
     std::vector<uint32_t> words;
     std::vector<Interval> logs;
+    std::vector<uint32_t> cells;
 };
 
 /// Every borehole and fence panel of `tracer`'s scene.

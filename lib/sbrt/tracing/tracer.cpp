@@ -120,7 +120,19 @@ void Tracer::build_pyramid()
         const uint64_t cell = model_.cell_index(f.rows - 1 - y, x);
         if (!overlay_items_.empty() &&
             overlay_offsets_[cell] != overlay_offsets_[cell + 1]) {
-            range = {0, float(z_max_local_)}; // overlays: always walked
+            // overlays: walked up to the highest a ray can meet there (a
+            // curtain shows the model's class: its top; a cylinder its
+            // log, or the model's stack at its axis)
+            float top = range.high;
+            for (uint32_t k = overlay_offsets_[cell]; k < overlay_offsets_[cell + 1]; ++k) {
+                if (overlay_items_[k] & OVERLAY_PANEL)
+                    continue;
+                const Borehole &b = scene_.boreholes[overlay_items_[k]];
+                for (const std::vector<Interval> *stack : {&b.stack, &b.model_stack})
+                    if (!stack->empty())
+                        top = std::max(top, stack->back().top);
+            }
+            range = {0, top};
             return;
         }
         // a column that lies wholly on the removed side of a clip plane

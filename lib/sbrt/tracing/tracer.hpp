@@ -110,6 +110,13 @@ public:
     /// (boreholes or a fence; on the GPU, shaders/common/overlays.glsl
     /// draws them where the model is not drawn).
     bool has_overlays() const { return !overlay_items_.empty(); }
+    /// Each cell's overlays (row-major, row 0 north): items
+    /// [offsets[c], offsets[c + 1]) of overlay_cell_items(), a borehole's
+    /// index, or a fence panel's with OVERLAY_PANEL set; empty without
+    /// overlays.
+    const std::vector<uint32_t> &overlay_cell_offsets() const { return overlay_offsets_; }
+    const std::vector<uint32_t> &overlay_cell_items() const { return overlay_items_; }
+    static constexpr uint32_t OVERLAY_PANEL = 1u << 31;
     /// Boxes (low, high corners; exaggerated map coordinates) that hold
     /// everything this tracer can hit where it does not draw the model;
     /// empty where it does.

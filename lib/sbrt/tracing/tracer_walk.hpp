@@ -20,7 +20,7 @@ namespace tracer_detail {
 
 constexpr double INF = std::numeric_limits<double>::infinity();
 /// Marks a fence panel in a cell's overlay list (else a borehole).
-constexpr uint32_t PANEL = 1u << 31;
+constexpr uint32_t PANEL = Tracer::OVERLAY_PANEL;
 /// Up to this many overlays, a ray without the model meets each of them
 /// directly rather than walking the cells between them.
 constexpr size_t DIRECT_OVERLAYS = 256;

@@ -1,0 +1,33 @@
+// The state of one ray (one invocation) of the ray casting shaders:
+// where it starts, what the translucent strata it crossed let through.
+
+// a plane's signed distance from the origin hi + lo along one axis
+float from_origin(float plane, float hi, float lo)
+{
+    precise float distance = (plane - hi) - lo;
+    return distance;
+}
+
+// light of the translucent strata crossed so far (premultiplied colour)
+// and the share of what is behind that still reaches the camera
+vec3 veil = vec3(0.0);
+float transmittance = 1.0;
+const float MIN_TRANSMITTANCE = 1.0 / 4096.0;
+
+// the ray of this invocation (local frame) and the t of the camera's eye
+vec3 ray_d = vec3(0.0);
+float t_eye = 0.0;
+
+// Beer-Lambert over `length` map units of a translucent material; true
+// once (almost) nothing behind can be seen
+bool absorb(vec4 material, float length)
+{
+    float keep = exp(-material.w * length);
+    veil += transmittance * (1.0 - keep) * material.rgb;
+    transmittance *= keep;
+    return transmittance < MIN_TRANSMITTANCE;
+}
+
+// what a cell with boreholes gave (common/overlays.glsl): none there, the
+// ray passes, it ended (its pixel written) or ran over the loop budget
+const uint OV_NONE = 0u, OV_PASSED = 1u, OV_ENDED = 2u, OV_OVER_BUDGET = 3u;
