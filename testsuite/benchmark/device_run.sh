@@ -9,6 +9,8 @@
 #              the same machine's CPU frame on all cores; kernel normals
 #              against face normals on the GPU;
 #            - 800 x 600 frames per second (the viewer's renderer alone);
+#            - model B, the peers' view with 100 boreholes drawn with the
+#              model (GPU against CPU);
 #            - model B, the peers' view on the CPU on 1, 2, 4, 8, 16 cores.
 #            Runs here too (llvmpipe), which checks the script.
 # USAGE:     bash .device/device_run.sh [SIZES] (A B C)
@@ -39,9 +41,12 @@ for size in $sizes; do
             threads="$cores" cols=800 rows=600 | sed "s/^/device size=$size view=$name /"
     done
 done
-# the CPU's scaling, model B where it was bundled
+# the CPU's scaling, model B where it was bundled; 100 boreholes drawn
+# with the model on the GPU
 if [ -f "$bundle/sbrt/geo_B.tar.gz" ]; then
     [ -d "$data/geo_B" ] || tar -C "$data" -xzf "$bundle/sbrt/geo_B.tar.gz"
+    "$bench" gpu_frame "$data/geo_B" ${views[0]#best } label=B/boreholes repeat=5 \
+        threads="$cores" boreholes=100 radius=20 | sed "s/^/device size=B view=best /"
     for n in 1 2 4 8 16; do
         [ "$n" -le "$cores" ] || break
         taskset -c "0-$((n - 1))" "$bench" frame "$data/geo_B" ${views[0]#best } \

@@ -25,7 +25,7 @@
  *            target=x,y,z [fov=25] [zexag=1] [cols=1056] [rows=884]
  *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
  *            [threads=N] [classes=FILE: error writes the reference's class
- *            ids, int32]
+ *            ids, int32] [boreholes=N radius=R: gpu_frame with N boreholes]
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <chrono>
@@ -328,16 +328,41 @@ void frame(const std::string &dir, const Args &args, const Camera &camera, doubl
                 load_ms, prepare_ms, ms[0], rays / ms[0] / 1000, ms[1], checksum);
 }
 
+/// boreholes=N on a grid over the model (each showing the model's stack
+/// at its axis), radius= map units (default two cells).
+Scene boreholes(const Model &model, const Args &args)
+{
+    Scene scene;
+    const int n = std::stoi(args.get("boreholes", "0"));
+    const Frame &f = model.frame();
+    const int side = int(std::ceil(std::sqrt(double(std::max(n, 1)))));
+    for (int k = 0; k < n; ++k) {
+        const int row = int((k / side + 0.5) * f.rows / side);
+        const int col = int((k % side + 0.5) * f.cols / side);
+        Borehole b;
+        b.x = f.west + (col + 0.5) * f.ew_res();
+        b.y = f.north - (row + 0.5) * f.ns_res();
+        b.stack = b.model_stack = model.stack_intervals(model.cell_index(row, col));
+        if (!b.stack.empty())
+            scene.boreholes.push_back(std::move(b));
+    }
+    scene.borehole_radius = std::stod(args.get("radius", std::to_string(2 * f.ew_res())));
+    return scene;
+}
+
 /// The streamed frame on the GPU (gpu=egl|osmesa): the model uploaded
-/// once, every frame traced, shaded (face normals, then kernel normals) and
-/// its RGB bands read back into host memory, warm, best of `repeat`, in
-/// turns with the same frame on the CPU (threads=).
+/// once, every frame traced, shaded (face normals, then kernel normals, not
+/// with boreholes=) and its RGB bands read back into host memory, warm,
+/// best of `repeat`, in turns with the same frame on the CPU (threads=).
 void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, double zexag,
                int repeat)
 {
     const std::string label = args.get("label", "view");
     const unsigned threads = unsigned(std::stoi(args.get("threads", "0")));
-    Renderer renderer(load(dir, args), zexag, Scene{}, Shading{},
+    Model model = load(dir, args);
+    Scene scene = boreholes(model, args);
+    const size_t drilled = scene.boreholes.size();
+    Renderer renderer(std::move(model), zexag, std::move(scene), Shading{},
                       RenderSettings{threads, true, 0});
     const std::unique_ptr<sbrt_gl::GlContext> context = gl_context(args);
     if (!context) {
@@ -362,19 +387,21 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
             fail("gpu_frame: the GPU did not shade the frame");
         best_dispatch = std::min(best_dispatch, r.gpu.trace_ms);
     };
-    const std::vector<double> ms = best_ms_in_turns(
-        repeat, {[&] { gpu_run(face, dispatch_ms[0]); },
-                 [&] {
-                     renderer.set_shading(face);
-                     renderer.render(camera, {}, sink);
-                 },
-                 [&] { gpu_run(kernel, dispatch_ms[1]); }});
+    std::vector<std::function<void()>> runs = {[&] { gpu_run(face, dispatch_ms[0]); },
+                                               [&] {
+                                                   renderer.set_shading(face);
+                                                   renderer.render(camera, {}, sink);
+                                               }};
+    if (drilled == 0) // with boreholes the CPU finds kernel normals
+        runs.push_back([&] { gpu_run(kernel, dispatch_ms[1]); });
+    std::vector<double> ms = best_ms_in_turns(repeat, runs);
+    ms.resize(3, NAN);
     const double rays = double(camera.rows()) * camera.cols();
-    std::printf("gpu_frame label=%s renderer=\"%s\" cols=%d rows=%d upload_ms=%.1f "
+    std::printf("gpu_frame label=%s boreholes=%zu renderer=\"%s\" cols=%d rows=%d upload_ms=%.1f "
                 "frame_ms=%.2f dispatch_ms=%.2f mrays=%.0f frames_per_s=%.1f "
                 "cpu_frame_ms=%.1f cpu_threads=%u gpu/cpu=%.1f kernel_frame_ms=%.2f "
                 "kernel_dispatch_ms=%.2f kernel/face_dispatch=%.2f (checksum %zu)\n",
-                label.c_str(), gpu.gl_renderer().c_str(), camera.cols(), camera.rows(),
+                label.c_str(), drilled, gpu.gl_renderer().c_str(), camera.cols(), camera.rows(),
                 upload_ms, ms[0], dispatch_ms[0], rays / ms[0] / 1000, 1000 / ms[0], ms[1],
                 thread_count(threads), ms[1] / ms[0], ms[2], dispatch_ms[1],
                 dispatch_ms[1] / dispatch_ms[0], checksum);
