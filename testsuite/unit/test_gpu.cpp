@@ -5,6 +5,7 @@
  *            block layout, agreement from many cameras, the loop budget
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -1033,4 +1034,15 @@ TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
     many.draw_model = false;
     const Renderer forest(m, 2.0, many, lit, {2, true, 16});
     expect_gpu_shading_as_cpu(*context_, layout(), forest, views[0], "280 boreholes");
+    // a fence wholly outside the model: nothing to draw, not the model
+    Scene outside;
+    outside.fence = {{{f.east + 100, f.south}, {f.east + 300, f.north}}};
+    outside.draw_model = false;
+    const Renderer nothing(m, 2.0, outside, lit, {2, true, 16});
+    ASSERT_FALSE(nothing.tracer().has_overlays());
+    sbrt_gl::GpuRenderer on_gpu(*context_, nothing, layout());
+    const Image image = on_gpu.render_image(views[0], {true, false, false}, 2);
+    EXPECT_EQ(std::count(image.material.begin(), image.material.end(), NULL_CLASS),
+              long(image.material.size()));
+    EXPECT_EQ(image.rgb, nothing.render_image(views[0], {}).rgb);
 }

@@ -161,6 +161,28 @@ TEST(EmptySpaceSkipping, BoreholesAreWalkedUpToTheirLogsTops)
             expect_same_image(m, scene, view(m, azimuth, elevation));
     scene.split = glm::normalize(glm::dvec2(1, -1));
     expect_same_image(m, scene, view(m, 140, 12));
+    // a borehole in the hole through the model (cells that hold nothing),
+    // its log taken from beside it: seen from above
+    const int hole_row = 60 / 3, hole_col = 90 / 4;
+    ASSERT_EQ(m.stack_size(m.cell_index(hole_row, hole_col)), 0u);
+    Borehole in_hole;
+    in_hole.x = f.west + (hole_col + 0.5) * f.ew_res();
+    in_hole.y = f.north - (hole_row + 0.5) * f.ns_res();
+    in_hole.stack = in_hole.model_stack = m.stack_intervals(m.cell_index(hole_row, hole_col + 4));
+    scene = Scene{};
+    scene.boreholes = {in_hole};
+    scene.borehole_radius = 1.2 * f.ew_res();
+    const Tracer t(m, 1.0);
+    const glm::dvec3 axis(in_hole.x, in_hole.y, t.centre().z);
+    const Camera above = Camera::perspective(axis + glm::dvec3(3, 2, 40) * f.ew_res(), axis, 20,
+                                             96, 128);
+    expect_same_image(m, scene, above);
+    size_t on_cylinder = 0;
+    const Tracer drilled(m, 1.0, scene);
+    for (int row = 0; row < above.rows(); ++row)
+        for (int col = 0; col < above.cols(); ++col)
+            on_cylinder += drilled.trace(above.ray(row, col)).face == Face::cylinder;
+    EXPECT_GT(on_cylinder, 20u);
 }
 
 TEST(EmptySpaceSkipping, CellsCutAwayByAPlaneAreEmpty)

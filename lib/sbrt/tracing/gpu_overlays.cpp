@@ -30,10 +30,12 @@ std::pair<uint32_t, uint32_t> append(std::vector<Interval> &logs,
 GpuOverlayMode gpu_overlay_mode(const Tracer &tracer)
 {
     const Scene &scene = tracer.scene();
-    if (!tracer.has_overlays())
-        return GpuOverlayMode::none;
+    // without the model, overlays that touch no cell leave nothing to draw
+    // (not the model)
     if (!scene.draw_model)
         return GpuOverlayMode::alone;
+    if (!tracer.has_overlays())
+        return GpuOverlayMode::none;
     return scene.fence.empty() ? GpuOverlayMode::with_model : GpuOverlayMode::on_cpu;
 }
 

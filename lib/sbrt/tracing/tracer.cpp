@@ -78,8 +78,9 @@ Tracer::Tracer(const Model &model, double zexag, Scene scene)
             z_max_local_ = std::max(
                 z_max_local_, double(model.intervals()[model.stack_end(c) - 1].top));
     for (const Borehole &b : scene_.boreholes)
-        if (!b.stack.empty())
-            z_max_local_ = std::max(z_max_local_, double(b.stack.back().top));
+        for (const std::vector<Interval> *stack : {&b.stack, &b.model_stack})
+            if (!stack->empty())
+                z_max_local_ = std::max(z_max_local_, double(stack->back().top));
     scale_ = glm::dvec3(1.0 / f.ew_res(), 1.0 / f.ns_res(),
                         1.0 / (f.tb_res() * zexag));
     const std::vector<ClipPlane> &planes = scene_.planes;
@@ -115,15 +116,14 @@ void Tracer::build_pyramid()
         return;
     const Frame &f = model_.frame();
     pyramid_ = MinMaxPyramid(model_, [&](int x, int y, ZRange &range) {
-        if (range.empty())
-            return;
         const uint64_t cell = model_.cell_index(f.rows - 1 - y, x);
         if (!overlay_items_.empty() &&
             overlay_offsets_[cell] != overlay_offsets_[cell + 1]) {
             // overlays: walked up to the highest a ray can meet there (a
             // curtain shows the model's class: its top; a cylinder its
-            // log, or the model's stack at its axis)
-            float top = range.high;
+            // log, or the model's stack at its axis), also where the
+            // model holds nothing
+            float top = range.empty() ? 0.0f : range.high;
             for (uint32_t k = overlay_offsets_[cell]; k < overlay_offsets_[cell + 1]; ++k) {
                 if (overlay_items_[k] & OVERLAY_PANEL)
                     continue;
@@ -135,6 +135,8 @@ void Tracer::build_pyramid()
             range = {0, top};
             return;
         }
+        if (range.empty())
+            return;
         // a column that lies wholly on the removed side of a clip plane
         for (const LocalPlane &plane : planes_) {
             bool removed = true;
