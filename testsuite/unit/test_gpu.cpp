@@ -805,6 +805,55 @@ TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
     }
 }
 
+namespace {
+
+/// A borehole at (col, row) cells from the south-west corner with a log
+/// of its own (classes 1-3 in the model's layers), so it shows against the
+/// model.
+Borehole logged_borehole(const Model &m, double col, double row)
+{
+    const Frame &f = m.frame();
+    Borehole b = sbrt_test::borehole_at(m, f.west + col * f.ew_res(), f.south + row * f.ns_res());
+    for (Interval &iv : b.stack)
+        iv.material = 1 + (iv.material % 3);
+    return b;
+}
+
+/// `scene` with split cylinders: the model's side in classes 4 and 5, gaps
+/// in every other interval of the logs (rays reach the split face through
+/// them).
+Scene split_through_gaps(Scene scene)
+{
+    for (Borehole &b : scene.boreholes) {
+        for (Interval &iv : b.model_stack)
+            iv.material = 4 + (iv.material % 2);
+        for (size_t k = 0; k < b.stack.size(); k += 2)
+            b.stack[k].material = EMPTY;
+    }
+    scene.split = glm::normalize(glm::dvec2(1, 1));
+    return scene;
+}
+
+/// Boreholes with logs of their own and a fence of three curtains over
+/// geology(40, 56, 30), without the model.
+Scene overlays_alone(const Model &m)
+{
+    const Frame &f = m.frame();
+    Scene scene;
+    for (int k = 0; k < 3; ++k)
+        scene.boreholes.push_back(logged_borehole(m, 7.5 + 15 * k, 29.5 - 9 * k));
+    scene.borehole_radius = 1.5 * f.ew_res();
+    const glm::dvec2 corner(f.west, f.south);
+    const glm::dvec2 cell(f.ew_res(), f.ns_res());
+    const glm::dvec2 points[] = {{4, 6}, {20, 14}, {33, 8}, {50, 27}};
+    for (int k = 0; k < 3; ++k)
+        scene.fence.push_back({corner + points[k] * cell, corner + points[k + 1] * cell});
+    scene.draw_model = false;
+    return scene;
+}
+
+} // namespace
+
 TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
 {
     // boreholes drawn with the model: shading, the GPU draws both; its hit
@@ -813,14 +862,8 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
     const Model m = geology(40, 56, 30);
     const Frame &f = m.frame();
     Scene scene;
-    for (int k = 0; k < 3; ++k) {
-        Borehole b = sbrt_test::borehole_at(m, f.west + (7.5 + 12 * k) * f.ew_res(),
-                                            f.south + (9.5 + 14 * k) * f.ns_res());
-        // a log of its own, so it shows against the model
-        for (Interval &iv : b.stack)
-            iv.material = 1 + (iv.material % 3);
-        scene.boreholes.push_back(b);
-    }
+    for (int k = 0; k < 3; ++k)
+        scene.boreholes.push_back(logged_borehole(m, 7.5 + 12 * k, 9.5 + 14 * k));
     scene.borehole_radius = 1.5 * f.ew_res();
     const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 16});
     const Tracer &t = renderer.tracer();
@@ -834,14 +877,7 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
     const Renderer plain(m, 2.0, Scene{}, Shading{}, {2, true, 16});
     EXPECT_NE(plain.render_image(camera, {}).rgb, want.rgb);
     // split cylinders through gaps in their logs, and a translucent material
-    Scene split = scene;
-    for (Borehole &b : split.boreholes) {
-        for (Interval &iv : b.model_stack)
-            iv.material = 4 + (iv.material % 2);
-        for (size_t k = 0; k < b.stack.size(); k += 2)
-            b.stack[k].material = EMPTY;
-    }
-    split.split = glm::normalize(glm::dvec2(1, 1));
+    Scene split = split_through_gaps(scene);
     split.translucency = sbrt_test::cut_and_translucent_scene(m).translucency;
     // cut through one borehole's axis, the cut face towards the camera
     const glm::dvec3 axis(split.boreholes[1].x, split.boreholes[1].y, t.centre().z);
@@ -919,33 +955,6 @@ TEST_P(Gpu, ShadesADrapeOnTheGpuAsTheCpuDoes)
     EXPECT_GT(changed, with.rgb.size() / 10);
 }
 
-namespace {
-
-/// Boreholes with logs of their own and a fence of three curtains over
-/// geology(40, 56, 30), without the model.
-Scene overlays_alone(const Model &m)
-{
-    const Frame &f = m.frame();
-    Scene scene;
-    for (int k = 0; k < 3; ++k) {
-        Borehole b = sbrt_test::borehole_at(m, f.west + (7.5 + 15 * k) * f.ew_res(),
-                                            f.south + (29.5 - 9 * k) * f.ns_res());
-        for (Interval &iv : b.stack)
-            iv.material = 1 + (iv.material % 3);
-        scene.boreholes.push_back(b);
-    }
-    scene.borehole_radius = 1.5 * f.ew_res();
-    const glm::dvec2 corner(f.west, f.south);
-    const glm::dvec2 cell(f.ew_res(), f.ns_res());
-    const glm::dvec2 points[] = {{4, 6}, {20, 14}, {33, 8}, {50, 27}};
-    for (int k = 0; k < 3; ++k)
-        scene.fence.push_back({corner + points[k] * cell, corner + points[k + 1] * cell});
-    scene.draw_model = false;
-    return scene;
-}
-
-} // namespace
-
 TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
 {
     const Model m = geology(40, 56, 30);
@@ -993,16 +1002,9 @@ TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
         EXPECT_EQ(property("logs[0].top", GL_TOP_LEVEL_ARRAY_STRIDE), int(sizeof(Interval)));
     }
     // split cylinders: the log on one side, the model's stack on the other
-    Scene split = overlays_alone(m);
-    split.fence.clear();
-    for (Borehole &b : split.boreholes) {
-        for (Interval &iv : b.model_stack)
-            iv.material = 4 + (iv.material % 2);
-        // gaps in the logs: rays reach the split face through them
-        for (size_t k = 0; k < b.stack.size(); k += 2)
-            b.stack[k].material = EMPTY;
-    }
-    split.split = glm::normalize(glm::dvec2(1, 1));
+    Scene alone_split = overlays_alone(m);
+    alone_split.fence.clear();
+    const Scene split = split_through_gaps(alone_split);
     const Renderer halves(m, 2.0, split, lit, {2, true, 16});
     // close to one of them, seeing both halves
     const glm::dvec3 axis(split.boreholes[1].x, split.boreholes[1].y, c.z);
