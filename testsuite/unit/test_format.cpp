@@ -179,3 +179,45 @@ TEST(Format, ReadOfV1MapsTheIntervalsWithoutACopy)
     const std::vector<uint8_t> bytes = encode_stacks_v1(written);
     EXPECT_FALSE(decode_stacks(bytes.data(), bytes.size(), "bytes").intervals().is_view());
 }
+
+TEST(Format, ValidationListsTheFirstProblemsInCellOrderAndCountsAll)
+{
+    // problems spread over the whole grid (validation runs on all cores in
+    // runs of cells): the first eight listed by cell, all counted
+    const Model good = sbrt_test::build_model(sbrt_test::random_voxels(11, 60, 70, 12, 5));
+    const Frame &f = good.frame();
+    auto corrupt = [&](const std::vector<uint64_t> &cells) {
+        Intervals wide(good.intervals().size());
+        for (size_t i = 0; i < wide.size(); ++i)
+            wide[i] = good.intervals()[i];
+        for (uint64_t c : cells)
+            wide[good.index().range(c).begin].material = 999; // beyond the table
+        return Model(f, good.materials(), good.index(), IntervalArray(std::move(wide)));
+    };
+    std::vector<uint64_t> cells;
+    for (uint64_t c = f.cells() - 1; cells.size() < 20; c -= f.cells() / 23)
+        if (good.index().size(c) > 0)
+            cells.push_back(c);
+    std::sort(cells.begin(), cells.end());
+    std::string message;
+    try {
+        corrupt(cells).validate();
+    }
+    catch (const Error &e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("20 problem(s)"), std::string::npos) << message;
+    size_t at = 0;
+    for (size_t k = 0; k < cells.size(); ++k) {
+        const size_t found = message.find("cell " + std::to_string(cells[k]) + ":");
+        if (k < 8) {
+            ASSERT_NE(found, std::string::npos) << k << ": " << message;
+            EXPECT_GT(found, at) << "in cell order";
+            at = found;
+        }
+        else {
+            EXPECT_EQ(found, std::string::npos) << "only the first eight are listed";
+        }
+    }
+    EXPECT_NO_THROW(good.validate());
+}

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "util/error.hpp"
+#include "util/parallel.hpp"
 
 namespace sbrt {
 
@@ -99,47 +100,73 @@ Stats Model::stats() const
 void Model::validate() const
 {
     frame_.validate("SBRT model");
-    std::ostringstream problems;
-    int count = 0;
-    auto problem = [&](const std::string &text) {
-        if (count++ < 8)
-            problems << "\n  " << text;
-    };
-    if (materials_.empty() || materials_.size() > MAX_MATERIALS)
-        problem("material count " + std::to_string(materials_.size()) +
-                " not in 1.." + std::to_string(MAX_MATERIALS));
     if (index_.cells() != frame_.cells())
         fail("SBRT model: index has ", index_.cells(), " cells, expected ",
              frame_.cells());
     if (index_.total() != intervals_.size())
         fail("SBRT model: index does not span the ", intervals_.size(),
              " intervals");
-    const float depth_limit = float(frame_.depths);
-    for (uint64_t c = 0; c < frame_.cells(); ++c) {
-        const StackRange stack = index_.range(c);
-        float below = 0;
-        uint32_t previous = UINT32_MAX;
-        for (uint64_t i = stack.begin; i < stack.end; ++i) {
-            const Interval iv = intervals_[i];
-            if (iv.material >= materials_.size())
-                problem("cell " + std::to_string(c) + ": material index " +
-                        std::to_string(iv.material) + " out of range");
-            if (!(iv.top > below) || !(iv.top <= depth_limit))
-                problem("cell " + std::to_string(c) + ": interval top " +
-                        std::to_string(iv.top) + " not in (" +
-                        std::to_string(below) + ", " +
-                        std::to_string(depth_limit) + "]");
-            if (iv.material == previous)
-                problem("cell " + std::to_string(c) +
-                        ": adjacent intervals of one material");
-            below = iv.top;
-            previous = iv.material;
+    // the problems of each run of cells, on all cores; the first few (in
+    // cell order) are listed
+    constexpr int LISTED = 8;
+    struct Problems {
+        int count = 0;
+        std::vector<std::string> first;
+        void add(const std::string &text)
+        {
+            if (count++ < LISTED)
+                first.push_back(text);
         }
-        if (stack.size() && previous == EMPTY)
-            problem("cell " + std::to_string(c) + ": trailing EMPTY interval");
+    };
+    const uint64_t cells = frame_.cells();
+    const int runs = int(std::min<uint64_t>(cells, 1024));
+    std::vector<Problems> found(size_t(runs) + 1);
+    if (materials_.empty() || materials_.size() > MAX_MATERIALS)
+        found[0].add("material count " + std::to_string(materials_.size()) + " not in 1.." +
+                     std::to_string(MAX_MATERIALS));
+    const float depth_limit = float(frame_.depths);
+    intervals_.visit([&](const auto *records) {
+        for_each_row(runs, 0, [&](int run) {
+            Problems &problems = found[size_t(run) + 1];
+            const uint64_t first = cells * uint64_t(run) / uint64_t(runs);
+            const uint64_t last = cells * uint64_t(run + 1) / uint64_t(runs);
+            uint64_t i = index_.range(first).begin;
+            for (uint64_t c = first; c < last; ++c) {
+                const uint64_t end = i + index_.size(c);
+                float below = 0;
+                uint32_t previous = UINT32_MAX;
+                for (; i < end; ++i) {
+                    const uint32_t material = records[i].material;
+                    const float top = float(records[i].top);
+                    if (material >= materials_.size())
+                        problems.add("cell " + std::to_string(c) + ": material index " +
+                                     std::to_string(material) + " out of range");
+                    if (!(top > below) || !(top <= depth_limit))
+                        problems.add("cell " + std::to_string(c) + ": interval top " +
+                                     std::to_string(top) + " not in (" +
+                                     std::to_string(below) + ", " +
+                                     std::to_string(depth_limit) + "]");
+                    if (material == previous)
+                        problems.add("cell " + std::to_string(c) +
+                                     ": adjacent intervals of one material");
+                    below = top;
+                    previous = material;
+                }
+                if (previous == EMPTY)
+                    problems.add("cell " + std::to_string(c) + ": trailing EMPTY interval");
+            }
+        });
+    });
+    int count = 0, shown = 0;
+    std::ostringstream listed;
+    for (const Problems &problems : found) {
+        count += problems.count;
+        for (const std::string &text : problems.first)
+            if (shown++ < LISTED)
+                listed << "\n  " << text;
     }
     if (count)
-        fail("SBRT model: ", count, " problem(s):", problems.str());
+        fail("SBRT model: ", count, " problem(s):", listed.str());
 }
 
 } // namespace sbrt
