@@ -184,7 +184,7 @@ TEST(Format, ValidationListsTheFirstProblemsInCellOrderAndCountsAll)
 {
     // problems spread over the whole grid (validation runs on all cores in
     // runs of cells): the first eight listed by cell, all counted
-    const Model good = sbrt_test::build_model(sbrt_test::random_voxels(11, 60, 70, 12, 5));
+    const Model good = sbrt_test::build_model(sbrt_test::random_voxels(11, 120, 140, 12, 5));
     const Frame &f = good.frame();
     auto corrupt = [&](const std::vector<uint64_t> &cells) {
         Intervals wide(good.intervals().size());

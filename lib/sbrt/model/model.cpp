@@ -119,7 +119,9 @@ void Model::validate() const
         }
     };
     const uint64_t cells = frame_.cells();
-    const int runs = int(std::min<uint64_t>(cells, 1024));
+    // runs of 4096 cells or more: a small model (and the fuzzer's) on
+    // this thread alone
+    const int runs = int(std::min<uint64_t>(cells / 4096 + 1, 1024));
     std::vector<Problems> found(size_t(runs) + 1);
     if (materials_.empty() || materials_.size() > MAX_MATERIALS)
         found[0].add("material count " + std::to_string(materials_.size()) + " not in 1.." +
