@@ -11,8 +11,11 @@
 #            - end to end: r3.sbrt.render writing the three RGB maps, a
 #              fresh process (best of 3; cold: the first of them after the
 #              page cache was dropped, where allowed), with its ratio to the
-#              in-process frame; the floor of any GRASS module here
-#              (r.info -g, r3.sbrt.render --help);
+#              in-process frame (wall to the millisecond); the floor of
+#              any GRASS raster module here (r.info -g, r3.sbrt.render
+#              --help; g.version, which loads no raster library: the
+#              libraries libgrass_raster brings in, GDAL's tree, are the
+#              difference);
 #            - the maps' compressor: GRASS_COMPRESSOR=LZ4 (our default)
 #              against ZSTD (GRASS's), render stage and bytes;
 #            - 4096 x 3456: wall time and peak RSS;
@@ -53,9 +56,15 @@ one() { # label env... -- options...
     local envs=()
     while [ "$1" != "--" ]; do envs+=("$1"); shift; done
     shift
-    env "${envs[@]}" /usr/bin/time -f "%e %M" -o /tmp/r3sbrt_pipe_time r3.sbrt.render --o --verbose \
+    # the wall time to the millisecond (time's %e has 10 ms steps), the
+    # peak RSS from time
+    local start end
+    start=$(date +%s%N)
+    env "${envs[@]}" /usr/bin/time -f "%M" -o /tmp/r3sbrt_pipe_time r3.sbrt.render --o --verbose \
         input=$map output=pipe_img size="$image" "$@" 2>/tmp/r3sbrt_pipe_log >/dev/null
-    read -r wall rss </tmp/r3sbrt_pipe_time
+    end=$(date +%s%N)
+    wall=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", (b - a) / 1e9 }')
+    read -r rss </tmp/r3sbrt_pipe_time
     # the whole streamed render: tracing, shading and the maps
     ms=$(tr '\n' ' ' </tmp/r3sbrt_pipe_log | sed -n 's/.*held; \([0-9.]*\) ms in all.*/\1/p')
     echo "$label $wall $rss $ms"
@@ -84,16 +93,18 @@ for c in LZ4 ZSTD; do
     bytes=$(du -cb "$loc/$(g.gisenv get=MAPSET)"/cell/pipe_$c.* | tail -1 | cut -f1)
     echo "pipeline size=$size compressor=$c rgb_map_bytes=$bytes"
 done
-floor() { # best of 3 wall of a command
-    local b=""
-    for i in 1 2 3; do
-        /usr/bin/time -f "%e" -o /tmp/r3sbrt_pipe_time "$@" >/dev/null 2>&1 || true
-        w=$(cat /tmp/r3sbrt_pipe_time)
+floor() { # best of 5 wall of a command (to the millisecond)
+    local b="" start end w
+    for i in 1 2 3 4 5; do
+        start=$(date +%s%N)
+        "$@" >/dev/null 2>&1 || true
+        end=$(date +%s%N)
+        w=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", (b - a) / 1e9 }')
         if [ -z "$b" ] || awk -v a="$w" -v c="$b" 'BEGIN{exit !(a<c)}'; then b=$w; fi
     done
     echo "$b"
 }
-echo "pipeline size=$size floor r_info_s=$(floor r.info -g map=pipe_LZ4.red) render_help_s=$(floor r3.sbrt.render --help)"
+echo "pipeline size=$size floor r_info_s=$(floor r.info -g map=pipe_LZ4.red) render_help_s=$(floor r3.sbrt.render --help) g_version_s=$(floor g.version)"
 image=4096,3456
 # shellcheck disable=SC2086
 best big_4096x3456 A=1 -- backend=cpu $camera
