@@ -14,7 +14,6 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-
 uint entry_face(int axis, float d)
 {
     if (axis == 0)

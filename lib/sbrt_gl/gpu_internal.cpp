@@ -91,10 +91,7 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             SHADER_COMMON_LAYOUT,
             shade ? SHADER_COMMON_SHADE : "",
             kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_RAY,
-            overlays == sbrt::GpuOverlayMode::alone ||
-                    overlays == sbrt::GpuOverlayMode::with_model
-                ? SHADER_COMMON_OVERLAYS
-                : "",
+            sbrt::shaded_on_gpu(overlays) ? SHADER_COMMON_OVERLAYS : "",
             kernel                     ? SHADER_KERNEL
             : pass == Pass::first_pass ? SHADER_FIRST_PASS
                                        : SHADER_RAYCAST};

@@ -15,15 +15,18 @@ namespace sbrt_gl {
 
 bool GpuTracer::kernel_fits(const sbrt::Camera &camera) const
 {
+    // the GPU writes no hit records of boreholes and curtains alone
     const size_t pixels = size_t(camera.rows()) * size_t(camera.cols());
-    return !camera.is_window() && pixels * sizeof(sbrt::GpuPixelHit) <= max_block_bytes_;
+    return tracer_.scene().draw_model && !camera.is_window() &&
+           pixels * sizeof(sbrt::GpuPixelHit) <= max_block_bytes_;
 }
 
 void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading)
 {
     if (!kernel_fits(camera))
         sbrt::fail("kernel normals on the GPU: the image's hit records do not fit one "
-                   "storage buffer");
+                   "storage buffer, or the GPU does not write them (boreholes and curtains "
+                   "alone, a window of an image)");
     const int rows = camera.rows(), cols = camera.cols();
     const size_t pixels = size_t(rows) * size_t(cols);
     // 1. the hit records of the whole image, kept on the GPU

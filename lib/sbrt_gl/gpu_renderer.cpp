@@ -20,11 +20,9 @@ bool GpuRenderer::shades_on_gpu(const sbrt::Camera &camera) const
     const sbrt::Shading &shading = renderer_.shading();
     if (shading.normals == sbrt::Normals::face)
         return true;
-    // kernel normals: where the image's hits fit and no pixel comes from
-    // the CPU (nor its normals: boreholes and curtains alone)
+    // kernel normals: where the image's hits fit and no pixel comes from the CPU
     const auto cpu_pixels = cpu_pixels_of(renderer_.tracer(), camera);
-    return renderer_.tracer().scene().draw_model && gpu_.kernel_fits(camera) && cpu_pixels &&
-           cpu_pixels->empty();
+    return gpu_.kernel_fits(camera) && cpu_pixels && cpu_pixels->empty();
 }
 
 GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,

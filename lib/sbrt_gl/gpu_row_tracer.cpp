@@ -58,9 +58,8 @@ void GpuRowTracer::trace_rows(int first, int count, sbrt::Hit *out)
 
 bool GpuRowTracer::shades_kernel_normals() const
 {
-    return shading_ && shading_->normals == sbrt::Normals::kernel &&
-           gpu_.tracer().scene().draw_model && gpu_.kernel_fits(camera_) && cpu_rects_ &&
-           cpu_rects_->empty();
+    return shading_ && shading_->normals == sbrt::Normals::kernel && gpu_.kernel_fits(camera_) &&
+           cpu_rects_ && cpu_rects_->empty();
 }
 
 int GpuRowTracer::preferred_band_rows(int cols) const

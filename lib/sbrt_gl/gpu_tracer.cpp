@@ -247,8 +247,6 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
 GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, bool kernel)
 {
     const bool draped = shading.drape != nullptr;
-    if (kernel && !tracer_.scene().draw_model)
-        sbrt::fail("kernel normals of boreholes and curtains alone are found on the CPU");
     std::optional<GlComputeProgram> &program =
         kernel ? (draped ? kernel_drape_program_ : kernel_program_)
                : (draped ? drape_program_ : shade_program_);
@@ -288,8 +286,7 @@ void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &s
     looks_->bind(5);
     if (shading.drape)
         drape_->bind(7);
-    const sbrt::GpuOverlayMode mode = sbrt::gpu_overlay_mode(tracer_);
-    if (mode != sbrt::GpuOverlayMode::alone && mode != sbrt::GpuOverlayMode::with_model)
+    if (!sbrt::shaded_on_gpu(sbrt::gpu_overlay_mode(tracer_)))
         return;
     if (!overlays_) {
         const sbrt::GpuOverlays overlays = sbrt::make_gpu_overlays(tracer_);

@@ -71,7 +71,8 @@ public:
                     sbrt::Band &band, unsigned cpu_threads = 0);
     /// Whether kernel normals of `camera`'s image can be found on the GPU:
     /// the hit records of the whole image fit one storage buffer (and the
-    /// camera is not a window of a larger image).
+    /// camera is not a window of a larger image), and the GPU writes them
+    /// (not for boreholes and curtains alone).
     bool kernel_fits(const sbrt::Camera &camera) const;
     /// Kernel normals on the GPU, first for a camera: traces the hit records
     /// of its whole image and their view depths, kept on the GPU.

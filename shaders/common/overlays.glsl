@@ -224,138 +224,146 @@ bool ov_event(Overlay o, float t_lo, float t_hi, out float start, out float end,
     return true;
 }
 
+// what a cell with boreholes gave (ov_cross_cell): the ray passes, it
+// ended (its pixel written) or ran over the loop budget
+const uint OV_PASSED = 1u, OV_ENDED = 2u, OV_OVER_BUDGET = 3u;
+const uint OV_NONE = 0xffffffffu; // no overlay
+
+// overlay index of item i: every overlay without the model, a cell's list
+// with it
+#ifdef SBRT_BOREHOLES
+uint ov_item(uint i) { return cell_overlays[grid.x * grid.y + 1u + i]; }
+#else
+uint ov_item(uint i) { return i; }
+#endif
+
+// Tracer::cross_events' order: of items [first, end), the overlay met
+// next after (last_start, last) within [t_lo, t_hi], ties to the lower
+// index; OV_NONE where none is left
+uint ov_next(uint first, uint end, float t_lo, float t_hi, float last_start, uint last,
+             out float start, out float stop, out vec3 n)
+{
+    uint best = OV_NONE;
+    start = stop = 0.0;
+    n = vec3(0.0);
+    for (uint i = first; i < end; ++i) {
+        uint k = ov_item(i);
+        float a, b;
+        vec3 normal;
+        if (!ov_event(overlays[k], t_lo, t_hi, a, b, normal))
+            continue;
+        bool later = a > last_start || (a == last_start && k > last);
+        if (later && (best == OV_NONE || a < start || (a == start && k < best))) {
+            best = k;
+            start = a;
+            stop = b;
+            n = normal;
+        }
+    }
+    ov_work += end - first + 1u;
+    return best;
+}
+
+// The cylinder of `o` met from `start` (its normal n there, 0 where it
+// was entered before) to `stop`, the ray at `cursor` through `surface`:
+// true where the walk ends in it; else cursor and surface move to where
+// the ray leaves it (its mantle, seen from inside)
+bool ov_cross_cylinder(Overlay o, float start, float stop, vec3 n, inout float cursor,
+                       inout uint surface, inout vec3 surface_n)
+{
+    float from = max(start, cursor);
+    bool through_mantle = from == start && n != vec3(0.0);
+    if (ov_borehole(o, from, stop, through_mantle ? FACE_CYLINDER : surface,
+                    through_mantle ? n : surface_n))
+        return true;
+    cursor = stop;
+    surface = FACE_CYLINDER;
+    surface_n = vec3(-normalize(ov_from(o.ends.xy) + cursor * ov_dir()), 0.0);
+    return false;
+}
+
 #ifdef SBRT_OVERLAYS
-// Tracer::cross_events without the model: the overlays in the order of
-// their starts (ties: the lower index first), each once
+// Tracer::cross_events without the model: every overlay in the order of
+// their starts, each once
 void trace_overlays(float t_near, float t_far, uint wall)
 {
-    uint n = overlay_count.x, surface = wall, last = 0u;
+    uint surface = wall, last = 0u;
     vec3 surface_n = vec3(0.0);
     float cursor = t_near, last_start = -1.0 / 0.0;
     int cols = int(grid.x), rows = int(grid.y);
     for (;;) {
-        // the next event after (last_start, last)
-        uint best = n;
-        float best_start = 0.0, best_end = 0.0;
-        vec3 best_n = vec3(0.0);
-        for (uint i = 0u; i < n; ++i) {
-            float start, end;
-            vec3 normal;
-            if (!ov_event(overlays[i], t_near, t_far, start, end, normal))
-                continue;
-            bool later = start > last_start || (start == last_start && i > last);
-            if (later && (best == n || start < best_start)) {
-                best = i;
-                best_start = start;
-                best_end = end;
-                best_n = normal;
-            }
-        }
-        ov_work += n + 1u;
+        float start, stop;
+        vec3 n;
+        uint next = ov_next(0u, overlay_count.x, t_near, t_far, last_start, last, start, stop, n);
         if (ov_work > ov_limit) {
             words[ov_index * outputs.x] = 0u; // over the budget: the host's
             return;
         }
-        if (best == n)
+        if (next == OV_NONE)
             break;
-        last_start = best_start;
-        last = best;
-        Overlay o = overlays[best];
+        last_start = start;
+        last = next;
+        Overlay o = overlays[next];
         bool panel = o.stacks.x == PANEL;
-        if (panel ? best_start < cursor : best_end <= cursor)
+        if (panel ? start < cursor : stop <= cursor)
             continue; // inside a cylinder already crossed
-        if (panel) {
-            // the class of the model at the curtain's point
-            vec3 p = (ov_hi + best_start * ov_d) + ov_lo;
-            uvec2 stack = stack_range(clamp(int(floor(p.x)), 0, cols - 1),
-                                      rows - 1 - clamp(int(floor(p.y)), 0, rows - 1));
-            uint low = stack.x, high = stack.y;
-            while (low < high) {
-                uint mid = (low + high) / 2u;
-                if (p.z < interval_top(mid))
-                    high = mid;
-                else
-                    low = mid + 1u;
-            }
-            surface = FACE_FENCE;
-            surface_n = best_n;
-            if (low != stack.y &&
-                ov_meet(interval_material(low), best_start, best_start, surface, surface_n))
+        if (!panel) {
+            if (ov_cross_cylinder(o, start, stop, n, cursor, surface, surface_n))
                 return;
-            cursor = best_start;
             continue;
         }
-        float start = max(best_start, cursor);
-        bool through_mantle = start == best_start && best_n != vec3(0.0);
-        if (ov_borehole(o, start, best_end, through_mantle ? FACE_CYLINDER : surface,
-                        through_mantle ? best_n : surface_n))
+        // a curtain: the class of the model at its point
+        vec3 p = (ov_hi + start * ov_d) + ov_lo;
+        uvec2 stack = stack_range(clamp(int(floor(p.x)), 0, cols - 1),
+                                  rows - 1 - clamp(int(floor(p.y)), 0, rows - 1));
+        uint low = stack.x, high = stack.y;
+        while (low < high) {
+            uint mid = (low + high) / 2u;
+            if (p.z < interval_top(mid))
+                high = mid;
+            else
+                low = mid + 1u;
+        }
+        surface = FACE_FENCE;
+        surface_n = n;
+        if (low != stack.y && ov_meet(interval_material(low), start, start, surface, surface_n))
             return;
-        cursor = best_end;
-        // leaving the cylinder: its mantle, seen from inside
-        surface = FACE_CYLINDER;
-        surface_n = vec3(-normalize(ov_from(o.ends.xy) + cursor * ov_dir()), 0.0);
+        cursor = start;
     }
     ov_write(0.0, 0u, FACE_NONE, vec3(0.0)); // no hit: the veil before the background
 }
 #endif
 
 #ifdef SBRT_BOREHOLES
-// Tracer::cross_overlays with the model in `cell` (row-major from the
-// north), crossed from t_in to t_out through `wall`: its boreholes in the
-// order of their starts, the model's `stack` between them. OV_NONE where
-// the cell holds none; `work` counts against the loop budget.
 bool ov_has_boreholes(uint cell) { return cell_overlays[cell] != cell_overlays[cell + 1u]; }
 
+// Tracer::cross_overlays with the model in `cell` (row-major from the
+// north; it holds boreholes), crossed from t_in to t_out through `wall`:
+// its boreholes in the order of their starts, the model's `stack` between
+// them; `work` counts against the loop budget
 uint ov_cross_cell(uint cell, uvec2 stack, float t_in, float t_out, uint wall, inout uint work)
 {
     uint items_first = cell_overlays[cell], items_last = cell_overlays[cell + 1u];
-    if (items_first == items_last)
-        return OV_NONE;
-    uint items = grid.x * grid.y + 1u; // where the items begin
     ov_work = work;
-    uint surface = wall, last = 0u, none = 0xffffffffu;
+    uint surface = wall, last = 0u;
     vec3 surface_n = vec3(0.0);
     float cursor = t_in, last_start = -1.0 / 0.0;
     for (;;) {
-        uint best = none;
-        float best_start = 0.0, best_end = 0.0;
-        vec3 best_n = vec3(0.0);
-        for (uint i = items_first; i < items_last; ++i) {
-            uint k = cell_overlays[items + i];
-            float start, end;
-            vec3 normal;
-            if (!ov_event(overlays[k], t_in, t_out, start, end, normal))
-                continue;
-            bool later = start > last_start || (start == last_start && k > last);
-            if (later && (best == none || start < best_start ||
-                          (start == best_start && k < best))) {
-                best = k;
-                best_start = start;
-                best_end = end;
-                best_n = normal;
-            }
-        }
-        ov_work += items_last - items_first + 1u;
+        float start, stop;
+        vec3 n;
+        uint next = ov_next(items_first, items_last, t_in, t_out, last_start, last, start, stop, n);
         if (ov_work > ov_limit)
             return OV_OVER_BUDGET;
-        if (best == none)
+        if (next == OV_NONE)
             break;
-        last_start = best_start;
-        last = best;
-        if (best_end <= cursor)
+        last_start = start;
+        last = next;
+        if (stop <= cursor)
             continue; // inside a cylinder already crossed
-        if (best_start > cursor &&
-            ov_walk(true, stack.x, stack.y, cursor, best_start, surface, surface_n))
+        if (start > cursor && ov_walk(true, stack.x, stack.y, cursor, start, surface, surface_n))
             return OV_ENDED;
-        float start = max(best_start, cursor);
-        bool through_mantle = start == best_start && best_n != vec3(0.0);
-        Overlay o = overlays[best];
-        if (ov_borehole(o, start, best_end, through_mantle ? FACE_CYLINDER : surface,
-                        through_mantle ? best_n : surface_n))
+        if (ov_cross_cylinder(overlays[next], start, stop, n, cursor, surface, surface_n))
             return OV_ENDED;
-        cursor = best_end;
-        surface = FACE_CYLINDER;
-        surface_n = vec3(-normalize(ov_from(o.ends.xy) + cursor * ov_dir()), 0.0);
     }
     bool ended = cursor < t_out && ov_walk(true, stack.x, stack.y, cursor, t_out, surface, surface_n);
     work = ov_work;

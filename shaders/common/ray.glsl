@@ -27,7 +27,3 @@ bool absorb(vec4 material, float length)
     transmittance *= keep;
     return transmittance < MIN_TRANSMITTANCE;
 }
-
-// what a cell with boreholes gave (common/overlays.glsl): none there, the
-// ray passes, it ended (its pixel written) or ran over the loop budget
-const uint OV_NONE = 0u, OV_PASSED = 1u, OV_ENDED = 2u, OV_OVER_BUDGET = 3u;

@@ -49,6 +49,11 @@ enum class GpuOverlayMode {
     on_cpu      ///< curtains with the model: the CPU traces their pixels
 };
 GpuOverlayMode gpu_overlay_mode(const Tracer &tracer);
+/// Whether the shading program draws them (alone or with the model).
+inline bool shaded_on_gpu(GpuOverlayMode mode)
+{
+    return mode == GpuOverlayMode::alone || mode == GpuOverlayMode::with_model;
+}
 
 /// The overlays of the tracer's scene on the GPU: the Overlays buffer's
 /// words (head, then the overlays), the logs (intervals, local tops) and,
