@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <future>
-#include <type_traits>
 
+#include "builders/band_import.hpp"
 #include "builders/column_builder.hpp"
 #include "util/error.hpp"
 #include "file_crs.hpp"
@@ -35,143 +35,6 @@ sbrt::Frame located_frame(const FileVariable &variable)
     frame.zone = window.zone;
     return frame;
 }
-
-/// Value -> class of one band's type. 8- and 16-bit integers without rules
-/// are classes as they are, looked up in a table that has the missing
-/// values already; everything else goes through the classifier (range
-/// checks, rules).
-template <typename T>
-class BandClasses {
-public:
-    BandClasses(const sbrt::MissingValues &missing, sbrt::Classifier &classifier)
-        : missing_(missing), classifier_(classifier)
-    {
-        if constexpr (TABLED) {
-            if (classifier.has_rules())
-                return;
-            table_.resize(size_t(1) << (8 * sizeof(T)));
-            for (size_t u = 0; u < table_.size(); ++u) {
-                const T value = T(u);
-                table_[u] = missing.is_missing(double(value)) ? sbrt::NULL_CLASS
-                                                              : int32_t(value);
-            }
-        }
-    }
-
-    int32_t operator()(T value)
-    {
-        if constexpr (TABLED) {
-            if (!table_.empty())
-                return table_[std::make_unsigned_t<T>(value)];
-        }
-        const double v = double(value);
-        return missing_.is_missing(v) ? sbrt::NULL_CLASS : classifier_.classify(v);
-    }
-
-private:
-    static constexpr bool TABLED = std::is_integral_v<T> && sizeof(T) <= 2;
-    const sbrt::MissingValues &missing_;
-    sbrt::Classifier &classifier_;
-    std::vector<int32_t> table_;
-};
-
-/// \brief Bands of a file variable into a ColumnStackBuilder: rows north
-/// to south, columns west to east, depths bottom up, whatever the order of
-/// the file's indices.
-class BandImport {
-public:
-    BandImport(const FileVariable &variable, sbrt::Classifier &classifier,
-               sbrt::ColumnStackBuilder &builder)
-        : variable_(variable), classifier_(classifier), builder_(builder)
-    {
-    }
-
-    /// Rows [row0, row0 + rows) of a band, read as variable.sample(),
-    /// whose first northing index is `first`.
-    void add(const void *values, const FileVariable::BandStrides &step,
-             size_t row0, size_t rows, size_t first)
-    {
-        using Sample = FileVariable::Sample;
-        auto as = [&](auto *type) {
-            using T = std::remove_pointer_t<decltype(type)>;
-            add_typed(static_cast<const T *>(values), step, row0, rows, first);
-        };
-        switch (variable_.sample()) {
-        case Sample::int8:
-            return as(static_cast<int8_t *>(nullptr));
-        case Sample::uint8:
-            return as(static_cast<uint8_t *>(nullptr));
-        case Sample::int16:
-            return as(static_cast<int16_t *>(nullptr));
-        case Sample::uint16:
-            return as(static_cast<uint16_t *>(nullptr));
-        case Sample::int32:
-            return as(static_cast<int32_t *>(nullptr));
-        case Sample::uint32:
-            return as(static_cast<uint32_t *>(nullptr));
-        case Sample::float32:
-            return as(static_cast<float *>(nullptr));
-        case Sample::float64:
-            return as(static_cast<double *>(nullptr));
-        }
-    }
-
-    /// Voxels with a value no rule covered (they became empty).
-    uint64_t unmatched() const { return unmatched_; }
-
-private:
-    template <typename T>
-    void add_typed(const T *values, const FileVariable::BandStrides &step,
-                   size_t row0, size_t rows, size_t first)
-    {
-        const sbrt::RegularAxis &x = variable_.easting(),
-                                &y = variable_.northing(), &z = variable_.vertical();
-        const size_t nx = x.size, ny = y.size, nz = z.size;
-        const sbrt::MissingValues &missing = variable_.missing();
-        BandClasses<T> class_of(missing, classifier_);
-        // runs of equal values: a value is classified once per run
-        std::vector<sbrt::ColumnStackBuilder::ClassRun> runs;
-        runs.reserve(nz);
-        const ptrdiff_t dz =
-            z.ascending ? ptrdiff_t(step.vertical) : -ptrdiff_t(step.vertical);
-        for (size_t row = row0; row < row0 + rows; ++row) {
-            const size_t yi = (y.ascending ? ny - 1 - row : row) - first;
-            for (size_t col = 0; col < nx; ++col) {
-                const size_t xi = x.ascending ? col : nx - 1 - col;
-                // index of the bottom voxel; depth d is at bottom + d * dz
-                const ptrdiff_t bottom =
-                    ptrdiff_t(yi * step.northing + xi * step.easting +
-                              (z.ascending ? 0 : (nz - 1) * step.vertical));
-                runs.clear();
-                size_t d = 0;
-                try {
-                    while (d < nz) {
-                        const T value = values[bottom + ptrdiff_t(d) * dz];
-                        size_t top = d + 1;
-                        while (top < nz && values[bottom + ptrdiff_t(top) * dz] == value)
-                            ++top;
-                        const int32_t id = class_of(value);
-                        if (id == sbrt::NULL_CLASS && classifier_.has_rules() &&
-                            !missing.is_missing(double(value)))
-                            unmatched_ += top - d;
-                        runs.push_back({id, uint32_t(top)});
-                        d = top;
-                    }
-                }
-                catch (const sbrt::Error &e) {
-                    sbrt::fail("row ", row + 1, ", column ", col + 1, ", depth ",
-                               d + 1, " (from the bottom): ", e.what());
-                }
-                builder_.add_runs(runs.data(), runs.size());
-            }
-        }
-    }
-
-    const FileVariable &variable_;
-    sbrt::Classifier &classifier_;
-    sbrt::ColumnStackBuilder &builder_;
-    uint64_t unmatched_ = 0;
-};
 
 } // namespace
 
@@ -214,11 +77,11 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
             return variable.read_band(rows.first, rows.count, buffer.data());
         });
     };
-    BandImport import(variable, classifier, builder);
-    std::future<FileVariable::BandStrides> pending = read(0, buffers[0]);
+    sbrt::BandImport import(variable.band_grid(), classifier, builder);
+    std::future<sbrt::BandStrides> pending = read(0, buffers[0]);
     for (size_t row0 = 0, b = 0; row0 < ny; row0 += band, b ^= 1) {
         G_percent(row0, ny, 2);
-        const FileVariable::BandStrides step = pending.get();
+        const sbrt::BandStrides step = pending.get();
         if (row0 + band < ny)
             pending = read(row0 + band, buffers[b ^ 1]);
         const Rows rows = rows_of(row0);

@@ -160,30 +160,30 @@ std::vector<double> coordinates_of(const GDALDimension &dim,
     return values;
 }
 
-struct SampleType {
+/// GDAL's type of each sample type band decoding takes.
+struct GdalSample {
     GDALDataType gdal;
-    FileVariable::Sample sample;
-    size_t bytes;
+    sbrt::SampleType sample;
 };
-constexpr SampleType SAMPLE_TYPES[] = {
-    {GDT_Byte, FileVariable::Sample::uint8, 1},
+constexpr GdalSample SAMPLE_TYPES[] = {
+    {GDT_Byte, sbrt::SampleType::uint8},
 #if GDAL_VERSION_NUM >= 3070000
-    {GDT_Int8, FileVariable::Sample::int8, 1},
+    {GDT_Int8, sbrt::SampleType::int8},
 #endif
-    {GDT_Int16, FileVariable::Sample::int16, 2},
-    {GDT_UInt16, FileVariable::Sample::uint16, 2},
-    {GDT_Int32, FileVariable::Sample::int32, 4},
-    {GDT_UInt32, FileVariable::Sample::uint32, 4},
-    {GDT_Float32, FileVariable::Sample::float32, 4},
-    {GDT_Float64, FileVariable::Sample::float64, 8},
+    {GDT_Int16, sbrt::SampleType::int16},
+    {GDT_UInt16, sbrt::SampleType::uint16},
+    {GDT_Int32, sbrt::SampleType::int32},
+    {GDT_UInt32, sbrt::SampleType::uint32},
+    {GDT_Float32, sbrt::SampleType::float32},
+    {GDT_Float64, sbrt::SampleType::float64},
 };
 
-const SampleType &sample_type(FileVariable::Sample sample)
+GDALDataType gdal_type(sbrt::SampleType sample)
 {
-    for (const SampleType &t : SAMPLE_TYPES)
+    for (const GdalSample &t : SAMPLE_TYPES)
         if (t.sample == sample)
-            return t;
-    return SAMPLE_TYPES[std::size(SAMPLE_TYPES) - 1];
+            return t.gdal;
+    return GDT_Float64;
 }
 
 std::shared_ptr<OGRSpatialReference> srs_from_text(const std::string &text)
@@ -257,13 +257,13 @@ FileVariable::FileVariable(const std::string &path, const std::string &name)
         sbrt::fail(where, " is packed (scale_factor/add_offset); unpack it "
                           "first, e.g. ncpdq -U");
 
-    for (const SampleType &t : SAMPLE_TYPES)
+    for (const GdalSample &t : SAMPLE_TYPES)
         if (t.gdal == type.GetNumericDataType())
-            sample_ = t.sample;
+            grid_.sample = t.sample;
     // GDAL's netCDF driver gives signed bytes as Byte with this hint
     if (type.GetNumericDataType() == GDT_Byte &&
         string_attribute(*array_, "_Unsigned") == "false")
-        sample_ = Sample::float64;
+        grid_.sample = sbrt::SampleType::float64;
 
     const auto &dims = array_->GetDimensions();
     std::string dim_list;
@@ -311,7 +311,10 @@ FileVariable::FileVariable(const std::string &path, const std::string &name)
     for (int axis = 0; axis < 3; ++axis) {
         const GDALDimension &d = *dims[dim_of_axis_[axis]];
         const std::string what = where + ", dimension '" + d.GetName() + "'";
-        axes_[axis] = sbrt::regular_axis(
+        sbrt::RegularAxis &target = axis == 0   ? grid_.easting
+                                    : axis == 1 ? grid_.northing
+                                                : grid_.vertical;
+        target = sbrt::regular_axis(
             coordinates_of(d, what),
             axis == int(sbrt::AxisRole::vertical) && negate_vertical, what);
     }
@@ -319,21 +322,21 @@ FileVariable::FileVariable(const std::string &path, const std::string &name)
     bool has_fill = false;
     const double fill = array_->GetNoDataValueAsDouble(&has_fill);
     if (has_fill)
-        missing_.exact.push_back(fill);
+        grid_.missing.exact.push_back(fill);
     for (const char *key : {"_FillValue", "missing_value"})
         for (double v : numeric_attribute(*array_, key))
-            missing_.exact.push_back(v);
+            grid_.missing.exact.push_back(v);
     const std::vector<double> range = numeric_attribute(*array_, "valid_range");
     if (range.size() == 2) {
-        missing_.valid_min = range[0];
-        missing_.valid_max = range[1];
+        grid_.missing.valid_min = range[0];
+        grid_.missing.valid_max = range[1];
     }
     const std::vector<double> vmin = numeric_attribute(*array_, "valid_min");
     const std::vector<double> vmax = numeric_attribute(*array_, "valid_max");
     if (vmin.size() == 1)
-        missing_.valid_min = vmin[0];
+        grid_.missing.valid_min = vmin[0];
     if (vmax.size() == 1)
-        missing_.valid_max = vmax[0];
+        grid_.missing.valid_max = vmax[0];
 }
 
 FileVariable::~FileVariable() = default;
@@ -413,12 +416,7 @@ size_t FileVariable::band_size(size_t max_bytes) const
     return std::min(rows, northing().size);
 }
 
-size_t FileVariable::sample_bytes() const
-{
-    return sample_type(sample_).bytes;
-}
-
-FileVariable::BandStrides FileVariable::read_band(size_t first, size_t count,
+sbrt::BandStrides FileVariable::read_band(size_t first, size_t count,
                                                   void *values) const
 {
     const size_t n = array_->GetDimensionCount();
@@ -437,7 +435,7 @@ FileVariable::BandStrides FileVariable::read_band(size_t first, size_t count,
     }
     QuietGdalErrors quiet;
     if (!array_->Read(start.data(), counts.data(), nullptr, strides.data(),
-                      GDALExtendedDataType::Create(sample_type(sample_).gdal),
+                      GDALExtendedDataType::Create(gdal_type(grid_.sample)),
                       values))
         sbrt::fail("variable '", name_, "' of <", path_,
                    ">: reading northing indices ", first + 1, "-", first + count,

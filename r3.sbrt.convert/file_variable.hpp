@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "builders/band_import.hpp"
 #include "builders/grid_axes.hpp"
 #include "builders/missing_values.hpp"
 #include "model/model.hpp"
@@ -54,10 +55,12 @@ public:
     bool is_integer() const;
     /// The grid of the cell centres: rows north to south, depth 0 bottom.
     sbrt::Frame frame() const;
-    const sbrt::RegularAxis &easting() const { return axes_[0]; }
-    const sbrt::RegularAxis &northing() const { return axes_[1]; }
-    const sbrt::RegularAxis &vertical() const { return axes_[2]; }
-    const sbrt::MissingValues &missing() const { return missing_; }
+    const sbrt::RegularAxis &easting() const { return grid_.easting; }
+    const sbrt::RegularAxis &northing() const { return grid_.northing; }
+    const sbrt::RegularAxis &vertical() const { return grid_.vertical; }
+    const sbrt::MissingValues &missing() const { return grid_.missing; }
+    /// Axes, missing values and sample type, as band decoding takes them.
+    const sbrt::BandGrid &band_grid() const { return grid_; }
     /// Labels by value from `flag_values` and `flag_meanings` ('_' -> ' ').
     std::vector<sbrt::Material> flag_labels() const;
     /// The file's CRS (grid mapping, or `crs`/`spatial_ref`/`epsg`
@@ -67,30 +70,22 @@ public:
     /// Northing index count per read that keeps a band near `max_bytes`,
     /// a multiple of the file's chunk where that fits.
     size_t band_size(size_t max_bytes) const;
-    /// Element strides of the easting, northing and vertical indices in
-    /// a band read by read_band.
-    struct BandStrides {
-        size_t easting, northing, vertical;
-    };
     /// The type values are read in: the file's own where listed (GDAL then
     /// copies without converting), else float64.
-    enum class Sample { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
-    Sample sample() const { return sample_; }
+    sbrt::SampleType sample() const { return grid_.sample; }
     /// Bytes of one value read.
-    size_t sample_bytes() const;
+    size_t sample_bytes() const { return sbrt::sample_bytes(grid_.sample); }
     /// Reads northing indices [first, first + count) as sample() values
     /// into `values` in the file's own index order; returns where each
     /// index steps.
-    BandStrides read_band(size_t first, size_t count, void *values) const;
+    sbrt::BandStrides read_band(size_t first, size_t count, void *values) const;
 
 private:
     std::string path_, name_;
     GdalDatasetPtr dataset_;
     std::shared_ptr<GDALMDArray> array_;
     size_t dim_of_axis_[3] = {0, 0, 0}; ///< array dimension of each axis
-    sbrt::RegularAxis axes_[3];
-    sbrt::MissingValues missing_;
-    Sample sample_ = Sample::float64;
+    sbrt::BandGrid grid_;
 };
 
 #endif
