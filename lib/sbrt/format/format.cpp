@@ -5,18 +5,16 @@
  ****************************************************************************/
 #include "format/format.hpp"
 
-#include <cerrno>
 #include <cstddef>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <sstream>
-#include <sys/stat.h>
 
 #include "format/atomic_dir.hpp"
 #include "format/byte_sink.hpp"
 #include "util/error.hpp"
 #include "format/mapped_file.hpp"
+#include "format/member_dir.hpp"
 #include "format/stacks_fields.hpp"
 
 namespace sbrt {
@@ -94,8 +92,9 @@ std::string encode_header(const Model &model)
 
 StacksFileInfo stacks_file_info(const std::string &directory)
 {
-    const std::string path = directory + "/stacks";
-    const MappedFile file(path);
+    const MemberDirectory dir(directory);
+    const std::string path = dir.member_path("stacks");
+    const MappedFile file(dir.open_regular("stacks"), path);
     StacksFileInfo info;
     info.bytes = file.size();
     info.major = stacks_major_version(file.data(), file.size());
@@ -108,21 +107,7 @@ StacksFileInfo stacks_file_info(const std::string &directory)
 
 std::vector<uint8_t> read_file_bytes(const std::string &path)
 {
-    FILE *fp = std::fopen(path.c_str(), "rb");
-    if (!fp)
-        fail(path, ": cannot open: ", std::strerror(errno));
-    struct stat st;
-    if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode)) {
-        std::fclose(fp);
-        fail(path, ": not a regular file");
-    }
-    std::vector<uint8_t> bytes(size_t(st.st_size));
-    const size_t got =
-        bytes.empty() ? 0 : std::fread(bytes.data(), 1, bytes.size(), fp);
-    std::fclose(fp);
-    if (got != bytes.size())
-        fail(path, ": read ", got, " of ", bytes.size(), " bytes");
-    return bytes;
+    return read_all(open_regular_file(path), path);
 }
 
 void write_sbrt(const std::string &directory, const Model &model,
@@ -141,15 +126,17 @@ void write_sbrt(const std::string &directory, const Model &model,
 
 Model read_sbrt(const std::string &directory, const ReadOptions &options)
 {
-    const std::string stacks_path = directory + "/stacks";
-    const auto file = std::make_shared<const MappedFile>(stacks_path);
+    // members relative to the directory: no links, no FIFOs (issue 28)
+    const MemberDirectory dir(directory);
+    const std::string stacks_path = dir.member_path("stacks");
+    const auto file =
+        std::make_shared<const MappedFile>(dir.open_regular("stacks"), stacks_path);
     Model model =
         decode_stacks(file->data(), file->size(), stacks_path, file, options);
-    const std::string cats_path = directory + "/cats";
-    struct stat st;
-    if (stat(cats_path.c_str(), &st) == 0) {
-        const std::vector<uint8_t> cats = read_file_bytes(cats_path);
-        decode_cats(std::string(cats.begin(), cats.end()), model, cats_path);
+    if (const auto cats = dir.open_regular_if_present("cats")) {
+        const std::string cats_path = dir.member_path("cats");
+        const std::vector<uint8_t> bytes = read_all(*cats, cats_path);
+        decode_cats(std::string(bytes.begin(), bytes.end()), model, cats_path);
     }
     return model;
 }

@@ -8,37 +8,31 @@
 #include <cerrno>
 #include <cstring>
 
-#include <fcntl.h>
 #include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "format/member_dir.hpp"
 #include "util/error.hpp"
 
 namespace sbrt {
 
 MappedFile::MappedFile(const std::string &path)
+    : MappedFile(open_regular_file(path), path)
 {
-    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        fail(path, ": cannot open: ", std::strerror(errno));
-    struct stat st;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        close(fd);
-        fail(path, ": not a regular file");
-    }
-    size_ = size_t(st.st_size);
+}
+
+MappedFile::MappedFile(const FileDescriptor &file, const std::string &what)
+{
+    size_ = size_t(regular_file_size(file, what));
     if (size_ > 0) {
         // populated at once: one call instead of a page fault per 4 KiB
-        data_ = mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+        data_ = mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE,
+                     file.get(), 0);
         if (data_ == MAP_FAILED) {
             const int error = errno;
             data_ = nullptr;
-            close(fd);
-            fail(path, ": cannot map ", size_, " bytes: ", std::strerror(error));
+            fail(what, ": cannot map ", size_, " bytes: ", std::strerror(error));
         }
     }
-    close(fd); // the mapping stays
 }
 
 MappedFile::~MappedFile()

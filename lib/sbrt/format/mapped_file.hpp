@@ -14,11 +14,17 @@
 
 namespace sbrt {
 
+class FileDescriptor;
+
 /// \brief The bytes of a regular file; throws sbrt::Error where it cannot
-/// be opened or mapped.
+/// be opened or mapped, or is no regular file (a FIFO is refused, not
+/// waited on).
 class MappedFile {
 public:
     explicit MappedFile(const std::string &path);
+    /// Maps the regular file open as `file` (which may be closed after);
+    /// `what` names it in errors.
+    MappedFile(const FileDescriptor &file, const std::string &what);
     ~MappedFile();
     MappedFile(const MappedFile &) = delete;
     MappedFile &operator=(const MappedFile &) = delete;
