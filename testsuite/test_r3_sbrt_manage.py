@@ -157,6 +157,36 @@ class TestManageList(ManageFixture):
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("Mapset <no_such_mapset> does not exist", run.messages)
 
+    def test_list_only_mapsets_of_the_location(self):
+        """Issue 28, item 3: mapset= is the name of a mapset of the
+        location, never a path out of it or a directory that is no mapset."""
+        location = os.path.basename(self.location)
+        outside = os.path.join(os.path.dirname(self.location), "sbrt_manage_outside")
+        not_a_mapset = os.path.join(self.location, "sbrt_manage_no_mapset")
+        for top in (outside, not_a_mapset):
+            os.makedirs(os.path.join(top, "sbrt", "secret"), exist_ok=True)
+        self.addCleanup(shutil.rmtree, outside, ignore_errors=True)
+        self.addCleanup(shutil.rmtree, not_a_mapset, ignore_errors=True)
+        for mapset in (
+            f"../{location}/{OTHER}",
+            "../sbrt_manage_outside",
+            f"{OTHER}/../{WORK}",
+            "sbrt_manage_no_mapset",
+        ):
+            with self.subTest(mapset=mapset):
+                run = self.manage("-l", "-m", mapset=mapset)
+                self.assertNotEqual(run.returncode, 0)
+                self.assertEqual(run.stdout, "")
+                self.assertIn(
+                    f"Mapset <{mapset}> does not exist in location <{location}>",
+                    run.messages,
+                )
+        # nor as the mapset of a name to copy
+        run = self.manage(copy="secret@sbrt_manage_no_mapset,secret")
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("<secret@sbrt_manage_no_mapset> does not exist", run.messages)
+        self.assertEntries(WORK, ["cave", "geo"])
+
     def test_list_skips_hidden_leftovers_and_empty_mapsets(self):
         # what a killed copy leaves behind is not an SBRT
         os.makedirs(self.path(WORK, ".geo.tmp.12345"))
@@ -271,6 +301,72 @@ class TestManageCopy(ManageFixture):
         # no temporary directory left, the replaced SBRT as it was
         self.assertEntries(WORK, ["cave", "geo"])
         self.assertSameModel(self.path(WORK, "cave"), "manage_caves")
+
+
+class TestManageCopyHostile(ManageFixture):
+    """Issue 28, item 1: an SBRT of another mapset is untrusted input; its
+    members are copied only as regular files, never through a link."""
+
+    def copy_refused(self, member, kind):
+        """copy=geo@OTHER,copied fails in time, naming `member` and what it
+        is, and writes nothing: WORK and everything outside as they were."""
+        work = self.snapshot(WORK)
+        around = sorted(os.listdir(os.path.dirname(self.location)))
+        run = subprocess.run(
+            ["r3.sbrt.manage", f"copy=geo@{OTHER},copied"],
+            env=self.env, capture_output=True, text=True, timeout=5,
+        )
+        messages = " ".join(run.stderr.split())
+        self.assertNotEqual(run.returncode, 0, messages)
+        self.assertIn(
+            f"{self.path(OTHER, 'geo')}/{member}: {kind}, not a regular file",
+            messages,
+        )
+        self.assertIn("Nothing was copied.", messages)
+        self.assertEqual(self.snapshot(WORK), work)
+        self.assertEntries(WORK, ["cave", "geo"])
+        self.assertEqual(sorted(os.listdir(os.path.dirname(self.location))), around)
+
+    def test_symlinked_stacks_is_not_followed(self):
+        # a file outside the location: read through the link, it would be
+        # copied (and a relative path built from it can leave the mapset)
+        outside = os.path.join(os.path.dirname(self.location), "sbrt_manage_file")
+        with open(outside, "w") as f:
+            f.write("not an SBRT\n")
+        self.addCleanup(os.remove, outside)
+        os.remove(self.path(OTHER, "geo/stacks"))
+        os.symlink(outside, self.path(OTHER, "geo/stacks"))
+        self.copy_refused("stacks", "a symbolic link")
+        with open(outside) as f:
+            self.assertEqual(f.read(), "not an SBRT\n")
+
+    def test_member_linked_to_a_directory_is_not_walked(self):
+        os.symlink("/etc", self.path(OTHER, "geo/etc"))
+        self.copy_refused("etc", "a symbolic link")
+
+    def test_fifo_member_is_refused_without_waiting(self):
+        for member in ("cats", "hist"):
+            with self.subTest(member=member):
+                self.setUp()
+                os.remove(self.path(OTHER, f"geo/{member}"))
+                os.mkfifo(self.path(OTHER, f"geo/{member}"))
+                self.copy_refused(member, "a FIFO")
+
+    def test_subdirectory_is_refused(self):
+        os.makedirs(self.path(OTHER, "geo/sub"))
+        with open(self.path(OTHER, "geo/sub/file"), "w") as f:
+            f.write("x")
+        self.copy_refused("sub", "a directory")
+
+    def test_linked_sbrt_is_refused(self):
+        os.symlink(self.path(WORK, "cave"), self.path(OTHER, "linked"))
+        run = self.manage(copy=f"linked@{OTHER},copied")
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn(
+            f"{self.path(OTHER, 'linked')}: a symbolic link, not a directory",
+            run.messages,
+        )
+        self.assertEntries(WORK, ["cave", "geo"])
 
 
 class TestManageRename(ManageFixture):

@@ -24,8 +24,9 @@ struct StoredSbrt {
 };
 
 /// The SBRT `name` (or `name@mapset`) in `mapset`, or in the search path
-/// when `mapset` is empty; none when it is not there or the name is not
-/// a legal one (quietly: callers report names themselves).
+/// when `mapset` is empty; none when it is not there, the name is not a
+/// legal one or a mapset named is not one of the location (quietly:
+/// callers report names themselves).
 std::optional<StoredSbrt> find_stored_sbrt(const std::string &name,
                                            const std::string &mapset);
 
@@ -38,10 +39,13 @@ list_stored_sbrts(const std::vector<std::string> &mapsets);
 std::string sbrt_directory(const std::string &name, const std::string &mapset);
 
 /// \brief Copies `source` into the current mapset as `target`, replacing an
-/// existing `target`. The files go first to a hidden temporary directory in
-/// the current mapset's sbrt element, `hist` gains a record of the copy, and
-/// the directory is then renamed into place: an interrupted copy leaves no
-/// partial SBRT under `target`. Throws sbrt::Error.
+/// existing `target`, through sbrt::AtomicDirectory: the files go first to
+/// a hidden temporary directory in the current mapset's sbrt element,
+/// `hist` gains a record of the copy, and the directory then takes the
+/// name: an interrupted copy leaves no partial SBRT under `target`. The
+/// source (perhaps another user's) is read as untrusted: its members are
+/// regular files opened relative to it, never a symbolic link, FIFO or
+/// subdirectory (sbrt::MemberDirectory). Throws sbrt::Error.
 void copy_sbrt(const StoredSbrt &source, const std::string &target);
 
 /// \brief Renames SBRT `from` of the current mapset to `to`, replacing an

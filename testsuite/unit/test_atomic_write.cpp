@@ -1,6 +1,7 @@
 /****************************************************************************
  * MODULE:    testsuite/unit (r3.sbrt addon)
- * PURPOSE:   A write killed at any moment leaves the previous SBRT intact
+ * PURPOSE:   A write killed at any moment leaves the previous SBRT intact;
+ *            staged copies, renames and removals of whole directories
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <csignal>
@@ -23,7 +24,9 @@
 
 #include "format/atomic_dir.hpp"
 #include "format/format.hpp"
+#include "format/member_dir.hpp"
 #include "test_support.hpp"
+#include "util/error.hpp"
 #include "builders/voxel_builder.hpp"
 
 extern char **environ;
@@ -280,5 +283,92 @@ TEST(AtomicWrite, TheNextWriteSweepsOnlyOldTemporariesOfGoneProcesses)
     make(".m.tmp." + dead, false);
     write_sbrt(parent + "/m", model_with_seed(3, 6), "new\n");
     EXPECT_TRUE(fs::exists(parent + "/.m.tmp." + dead));
+    remove_tree(parent);
+}
+
+// What r3.sbrt.manage stages through AtomicDirectory (issue 28, reuse):
+// a copy of another directory file by file, rename and removal.
+
+TEST(AtomicWrite, CopyFileStagesAWholeCopyOfAnotherDirectory)
+{
+    const std::string parent = sbrt_test::temp_dir("copy");
+    const std::string source = parent + "/source", target = parent + "/target";
+    write_sbrt(source, model_with_seed(5, 7), "source history\n");
+    write_sbrt(target, model_with_seed(6, 5), "replaced\n");
+    for (int round = 0; round < 2; ++round) { // onto the old target, then onto a copy
+        const MemberDirectory from(source);
+        AtomicDirectory staged(target);
+        for (const std::string &name : from.member_names())
+            staged.copy_file(name, from.open_regular(name), from.member_path(name));
+        staged.commit();
+        EXPECT_EQ(snapshot(target), snapshot(source));
+    }
+    EXPECT_EQ(entries(parent), (std::set<std::string>{"source", "target"}));
+    remove_tree(parent);
+}
+
+TEST(AtomicWrite, CopyFileOfALargeFileIsWhole)
+{
+    const std::string parent = sbrt_test::temp_dir("bigcopy");
+    std::string bytes(3 << 20, '\0'); // past one buffer of the fallback
+    for (size_t i = 0; i < bytes.size(); ++i)
+        bytes[i] = char(i * 2654435761u >> 24);
+    {
+        std::ofstream(parent + "/big", std::ios::binary) << bytes;
+    }
+    AtomicDirectory staged(parent + "/m");
+    staged.copy_file("big", open_regular_file(parent + "/big"), "big");
+    staged.commit();
+    EXPECT_EQ(file_text(parent + "/m/big"), bytes);
+    remove_tree(parent);
+}
+
+TEST(AtomicWrite, Issue28FileNamesStayInTheTemporaryDirectory)
+{
+    const std::string parent = sbrt_test::temp_dir("names");
+    AtomicDirectory staged(parent + "/sub/m");
+    for (const std::string name : {"../escaped", "..", ".", "", "a/b"})
+        EXPECT_THROW(staged.write_file(name, std::string("x")), Error) << name;
+    {
+        std::ofstream(parent + "/source") << "source";
+    }
+    for (const std::string name : {"../escaped", "../../escaped"})
+        EXPECT_THROW(staged.copy_file(name, open_regular_file(parent + "/source"), "source"),
+                     Error)
+            << name;
+    EXPECT_FALSE(std::filesystem::exists(parent + "/sub/escaped"));
+    EXPECT_FALSE(std::filesystem::exists(parent + "/escaped"));
+    remove_tree(parent);
+}
+
+TEST(AtomicWrite, ReplaceDirectoryMovesOneDirectoryOntoAnother)
+{
+    const std::string parent = sbrt_test::temp_dir("replace");
+    write_sbrt(parent + "/a", model_with_seed(1, 6), "a\n");
+    const auto a = snapshot(parent + "/a");
+    // onto a free name: a rename
+    replace_directory(parent + "/a", parent + "/b");
+    EXPECT_EQ(entries(parent), std::set<std::string>{"b"});
+    EXPECT_EQ(snapshot(parent + "/b"), a);
+    // onto an existing one: its content goes, nothing hidden stays
+    write_sbrt(parent + "/c", model_with_seed(2, 7), "c\n");
+    const auto c = snapshot(parent + "/c");
+    replace_directory(parent + "/c", parent + "/b");
+    EXPECT_EQ(entries(parent), std::set<std::string>{"b"});
+    EXPECT_EQ(snapshot(parent + "/b"), c);
+    // a missing source: an error, the target as it was
+    EXPECT_THROW(replace_directory(parent + "/none", parent + "/b"), Error);
+    EXPECT_EQ(snapshot(parent + "/b"), c);
+    remove_tree(parent);
+}
+
+TEST(AtomicWrite, RemoveDirectoryLeavesNothing)
+{
+    const std::string parent = sbrt_test::temp_dir("remove");
+    write_sbrt(parent + "/a", model_with_seed(1, 6), "a\n");
+    write_sbrt(parent + "/b", model_with_seed(1, 6), "b\n");
+    remove_directory(parent + "/a");
+    EXPECT_EQ(entries(parent), std::set<std::string>{"b"});
+    EXPECT_THROW(remove_directory(parent + "/a"), Error);
     remove_tree(parent);
 }

@@ -17,6 +17,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "format/member_dir.hpp"
 #include "util/error.hpp"
 
 namespace sbrt {
@@ -64,6 +65,52 @@ bool exchange(const std::string &a, const std::string &b)
     (void)b;
     return false;
 #endif
+}
+
+/// `name` is one entry of a directory, so that a file of the temporary
+/// directory stays in it.
+void require_entry_name(const std::string &name, const std::string &dir)
+{
+    if (name.empty() || name == "." || name == ".." ||
+        name.find('/') != std::string::npos)
+        fail("AtomicDirectory: <", name, "> is not a file name in ", dir);
+}
+
+/// A new file of the temporary directory, opened for writing; never
+/// through a symbolic link.
+FileDescriptor create_entry(const std::string &path)
+{
+    const int fd = open(path.c_str(),
+                        O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0)
+        fail("AtomicDirectory: cannot create ", path, ": ", std::strerror(errno));
+    return FileDescriptor(fd);
+}
+
+/// Writes all `size` bytes of `data` to `fd`.
+void write_all(int fd, const uint8_t *data, size_t size, const std::string &path)
+{
+    while (size > 0) {
+        const ssize_t n = write(fd, data, size);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            fail("AtomicDirectory: cannot write ", path, ": ",
+                 n < 0 ? std::strerror(errno) : "nothing written");
+        data += n;
+        size -= size_t(n);
+    }
+}
+
+/// Syncs the file open as `fd` and closes it.
+void finish_entry(FileDescriptor file, const std::string &path)
+{
+    const bool synced = fsync(file.get()) == 0;
+    const int error = errno;
+    const bool closed = close(file.release()) == 0;
+    if (!synced || !closed)
+        fail("AtomicDirectory: cannot write ", path, ": ",
+             std::strerror(synced ? errno : error));
 }
 
 /// Whether nothing in `dir` (the directory and its files) changed for
@@ -134,18 +181,11 @@ AtomicDirectory::~AtomicDirectory()
 void AtomicDirectory::write_file(const std::string &name,
                                  const std::vector<uint8_t> &bytes)
 {
-    const std::string path = temp_ + "/" + name;
-    FILE *fp = std::fopen(path.c_str(), "wb");
-    if (!fp)
-        fail("AtomicDirectory: cannot create ", path, ": ",
-             std::strerror(errno));
-    const size_t written =
-        bytes.empty() ? 0 : std::fwrite(bytes.data(), 1, bytes.size(), fp);
-    const bool flushed = std::fflush(fp) == 0 && fsync(fileno(fp)) == 0;
-    const bool closed = std::fclose(fp) == 0;
-    if (written != bytes.size() || !flushed || !closed)
-        fail("AtomicDirectory: cannot write ", path, " (", bytes.size(),
-             " bytes): ", std::strerror(errno));
+    require_entry_name(name, temp_);
+    const std::string path = file_path(name);
+    FileDescriptor file = create_entry(path);
+    write_all(file.get(), bytes.data(), bytes.size(), path);
+    finish_entry(std::move(file), path);
 }
 
 void AtomicDirectory::write_file(const std::string &name,
@@ -154,30 +194,82 @@ void AtomicDirectory::write_file(const std::string &name,
     write_file(name, std::vector<uint8_t>(text.begin(), text.end()));
 }
 
+void AtomicDirectory::copy_file(const std::string &name,
+                                const FileDescriptor &source,
+                                const std::string &what)
+{
+    require_entry_name(name, temp_);
+    const std::string path = file_path(name);
+    FileDescriptor file = create_entry(path);
+    const uint64_t size = regular_file_size(source, what);
+    // in the kernel where it can (copy_file_range, Linux 4.5), else read
+    // and write; from offset 0 whatever the source's position
+    loff_t in = 0;
+    while (uint64_t(in) < size) {
+        const ssize_t n = copy_file_range(source.get(), &in, file.get(), nullptr,
+                                          size_t(size - uint64_t(in)), 0);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break; // not between these file systems: the loop below
+    }
+    std::vector<uint8_t> buffer(size_t(1) << 20);
+    while (uint64_t(in) < size) {
+        const ssize_t n = pread(source.get(), buffer.data(), buffer.size(), in);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            fail("AtomicDirectory: cannot read ", what, " at byte ", in, ": ",
+                 n < 0 ? std::strerror(errno) : "the file ended");
+        write_all(file.get(), buffer.data(), size_t(n), path);
+        in += n;
+    }
+    finish_entry(std::move(file), path);
+}
+
 void AtomicDirectory::commit()
 {
     sync_path(temp_);
+    replace_directory(temp_, target_);
+    committed_ = true;
+}
+
+void replace_directory(const std::string &from, const std::string &target)
+{
     struct stat st;
-    if (stat(target_.c_str(), &st) != 0) {
-        if (std::rename(temp_.c_str(), target_.c_str()) != 0)
-            fail("AtomicDirectory: cannot rename ", temp_, " to ", target_,
-                 ": ", std::strerror(errno));
+    if (lstat(target.c_str(), &st) != 0) {
+        if (std::rename(from.c_str(), target.c_str()) != 0)
+            fail("cannot rename ", from, " to ", target, ": ", std::strerror(errno));
     }
-    else if (exchange(temp_, target_)) {
-        remove_tree(temp_); // now holds the previous version
+    else if (exchange(from, target)) {
+        remove_tree(from); // now holds the previous version
     }
     else {
         // fallback: a short window in which only the .old copy exists
-        const std::string old = sibling(target_, "old");
+        const std::string old = sibling(target, "old");
         remove_tree(old);
-        if (std::rename(target_.c_str(), old.c_str()) != 0 ||
-            std::rename(temp_.c_str(), target_.c_str()) != 0)
-            fail("AtomicDirectory: cannot replace ", target_, ": ",
-                 std::strerror(errno));
+        if (std::rename(target.c_str(), old.c_str()) != 0)
+            fail("cannot rename ", target, " to ", old, ": ", std::strerror(errno));
+        if (std::rename(from.c_str(), target.c_str()) != 0) {
+            const int error = errno;
+            std::rename(old.c_str(), target.c_str());
+            fail("cannot rename ", from, " to ", target, ": ", std::strerror(error));
+        }
         remove_tree(old);
     }
-    sync_path(parent_of(target_));
-    committed_ = true;
+    sync_path(parent_of(target));
+}
+
+void remove_directory(const std::string &path)
+{
+    // out of its name first: a removal cut short leaves only a hidden rest
+    const std::string doomed = sibling(path, "removed");
+    remove_tree(doomed);
+    if (std::rename(path.c_str(), doomed.c_str()) != 0)
+        fail("cannot rename ", path, " to ", doomed, ": ", std::strerror(errno));
+    sync_path(parent_of(path));
+    if (!remove_tree(doomed))
+        fail("removed from the list, but cannot delete ", doomed);
 }
 
 } // namespace sbrt
