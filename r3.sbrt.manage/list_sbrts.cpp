@@ -8,6 +8,7 @@
 
 #include "manage.hpp"
 #include "sbrt_manage.hpp"
+#include "sbrt_store.hpp"
 
 std::vector<std::string> mapsets_to_list(const Option *mapset)
 {
@@ -26,8 +27,13 @@ std::vector<std::string> mapsets_to_list(const Option *mapset)
         else if (std::string(name) == ".") {
             mapsets.push_back(G_mapset());
         }
-        else if (G_mapset_permissions(name) == -1) {
-            G_fatal_error(_("Mapset <%s> does not exist"), name);
+        else if (!sbrt_grass::is_location_mapset(name)) {
+            // a name only: "../x" or a directory that is no mapset would
+            // list what lies outside the location's mapsets (issue 28)
+            G_fatal_error(_("Mapset <%s> does not exist in location <%s>: "
+                            "mapset= takes the name of one of its mapsets "
+                            "(g.mapsets -l lists them), '.' or '*'"),
+                          name, G_location());
         }
         else {
             mapsets.push_back(name);

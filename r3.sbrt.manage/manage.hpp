@@ -18,8 +18,8 @@
 constexpr const char *SBRT_DESCRIPTION = "SBRT model";
 
 /// The mapsets that mapset= names ('.' current, '*' all of the location),
-/// or the search path without it; fatal error for a mapset that does not
-/// exist.
+/// or the search path without it; fatal error for a name that is not one
+/// of a mapset of the current location.
 std::vector<std::string> mapsets_to_list(const Option *mapset);
 
 /// Prints the SBRTs of `mapsets`, one a line, sorted as g.list sorts: the

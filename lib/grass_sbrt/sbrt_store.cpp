@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "sbrt_store.hpp"
 
+#include <cstdarg>
+#include <cstring>
 
 #include <algorithm>
 #include <ctime>
@@ -16,17 +18,55 @@
 
 namespace sbrt_grass {
 
+namespace {
+
+/// sbrt::fail with a printf-style (translatable) message.
+[[noreturn]] void fail_with(const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    char *text = nullptr;
+    G_vasprintf(&text, format, args);
+    va_end(args);
+    const std::string message = text ? text : format;
+    G_free(text);
+    throw sbrt::Error(message);
+}
+
+} // namespace
+
+bool is_location_mapset(const char *mapset)
+{
+    const int previous = G_suppress_warnings(1);
+    const bool legal = G_legal_filename(mapset) == 1;
+    G_suppress_warnings(previous);
+    if (!legal)
+        return false;
+    char **mapsets = G_get_available_mapsets();
+    for (int i = 0; mapsets && mapsets[i]; ++i)
+        if (std::strcmp(mapsets[i], mapset) == 0)
+            return true;
+    return false;
+}
+
 std::string find_sbrt(const char *name)
 {
-    const char *mapset = G_find_file2(ELEMENT, name, "");
-    if (!mapset)
-        G_fatal_error(_("SBRT <%s> not found in the search path; list the "
-                        "available ones with r3.sbrt.convert -l"),
-                      name);
     char xname[GNAME_MAX], xmapset[GMAPSET_MAX];
     const char *bare = name;
-    if (G_name_is_fully_qualified(name, xname, xmapset))
+    // G_name_is_fully_qualified copies both parts without a bound
+    if (std::strlen(name) < size_t(std::min(GNAME_MAX, GMAPSET_MAX)) &&
+        G_name_is_fully_qualified(name, xname, xmapset)) {
+        if (!is_location_mapset(xmapset))
+            fail_with(_("SBRT <%s>: <%s> is not a mapset of location <%s>; "
+                        "name one that g.mapsets -l lists"),
+                      name, xmapset, G_location());
         bare = xname;
+    }
+    const char *mapset = G_find_file2(ELEMENT, name, "");
+    if (!mapset)
+        fail_with(_("SBRT <%s> not found in the search path; list the "
+                    "available ones with r3.sbrt.convert -l"),
+                  name);
     char path[GPATH_MAX];
     G_file_name(path, ELEMENT, bare, mapset);
     return path;
@@ -39,9 +79,9 @@ sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options)
         return sbrt::read_sbrt(dir, options);
     }
     catch (const sbrt::Error &e) {
-        G_fatal_error(_("SBRT <%s> is damaged or not an SBRT: %s. Convert "
-                        "the source map again with r3.sbrt.convert"),
-                      name, e.what());
+        fail_with(_("SBRT <%s> is damaged or not an SBRT: %s. Convert "
+                    "the source map again with r3.sbrt.convert"),
+                  name, e.what());
     }
 }
 

@@ -17,11 +17,18 @@ namespace sbrt_grass {
 
 constexpr const char *ELEMENT = "sbrt";
 
-/// Directory of an existing SBRT `name` or `name@mapset`; fatal error with
-/// advice when it is not found.
+/// Whether `mapset` is the name of a mapset of the current location (a
+/// legal name that G_get_available_mapsets lists): what a user's mapset
+/// name must be before it becomes part of a path.
+bool is_location_mapset(const char *mapset);
+/// Directory of an existing SBRT `name` or `name@mapset` (a mapset of the
+/// location); throws sbrt::Error with advice when it is not found. Errors
+/// are exceptions, not fatal errors, so that the view server answers them
+/// and goes on; the modules turn them into G_fatal_error.
 std::string find_sbrt(const char *name);
-/// Reads an SBRT (all of it, or what `options` ask for); a damaged one
-/// gives a fatal error naming the map.
+/// Reads an SBRT (all of it, or what `options` ask for); a damaged one,
+/// or one with a member that is no regular file, throws sbrt::Error
+/// naming the map and what to do.
 sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options = {});
 /// Checks the name and overwrite rules, then returns the directory of the
 /// new SBRT in the current mapset.
