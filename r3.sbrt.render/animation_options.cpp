@@ -10,6 +10,7 @@
 #include <cstdlib>
 
 #include "option_parts.hpp"
+#include "request_error.hpp"
 
 using namespace option_parts;
 
@@ -67,7 +68,7 @@ void read_animation_options(const RenderOptions &o, RenderRequest &r)
 {
     r.frames = std::atoi(o.frames->answer);
     if (r.frames < 1)
-        G_fatal_error(_("frames=%s: give the number of frames, 1 or more"),
+        bad_request(_("frames=%s: give the number of frames, 1 or more"),
                       o.frames->answer);
     r.path = sbrt::parse_path_kind(o.path->answer);
     r.angle = read_double(o.angle);
@@ -76,11 +77,11 @@ void read_animation_options(const RenderOptions &o, RenderRequest &r)
     if (o.height->answer)
         r.line_height = read_double(o.height);
     if (r.path == sbrt::PathKind::line && r.path_map.empty())
-        G_fatal_error(_("path=line flies along a vector line: give path_map="));
+        bad_request(_("path=line flies along a vector line: give path_map="));
     if (r.path == sbrt::PathKind::keys && r.keys.empty())
-        G_fatal_error(_("path=keys moves through keyframes: give keys= (a file)"));
+        bad_request(_("path=keys moves through keyframes: give keys= (a file)"));
     if ((r.path == sbrt::PathKind::line || r.path == sbrt::PathKind::keys) && r.view.kind == sbrt::ViewKind::top)
-        G_fatal_error(_("path=%s moves the camera; a top view does not move "
+        bad_request(_("path=%s moves the camera; a top view does not move "
                         "(view=perspective or orthographic)"),
                       sbrt::path_kind_name(r.path));
     r.first_frame = 1;
@@ -94,7 +95,7 @@ void read_animation_options(const RenderOptions &o, RenderRequest &r)
         else if (n != 2)
             first = 0;
         if (first < 1 || last < first || last > r.frames)
-            G_fatal_error(_("range=%s: give first-last with 1 <= first <= last <= "
+            bad_request(_("range=%s: give first-last with 1 <= first <= last <= "
                             "frames (%d)"),
                           o.range->answer, r.frames);
         r.first_frame = first;
@@ -104,13 +105,13 @@ void read_animation_options(const RenderOptions &o, RenderRequest &r)
     r.video = answer_or(o.video);
     r.fps = read_double(o.fps);
     if (!(r.fps > 0))
-        G_fatal_error(_("fps= must be positive"));
+        bad_request(_("fps= must be positive"));
     r.overwrite = G_check_overwrite(0, nullptr);
     if (r.frames == 1 && (!r.strds.empty() || !r.video.empty()))
-        G_fatal_error(_("strds= and video= make a sequence: give frames= (2 or more)"));
+        bad_request(_("strds= and video= make a sequence: give frames= (2 or more)"));
     if (r.frames > 1 && r.path == sbrt::PathKind::orbit && r.view.kind == sbrt::ViewKind::top)
-        G_fatal_error(_("path=orbit turns the camera; a top view does not turn "
+        bad_request(_("path=orbit turns the camera; a top view does not turn "
                         "(view=perspective or orthographic)"));
     if (r.frames > 1 && r.path == sbrt::PathKind::sweep && r.planes.empty() && !r.section)
-        G_fatal_error(_("path=sweep moves a clip plane: give plane= or section="));
+        bad_request(_("path=sweep moves a clip plane: give plane= or section="));
 }

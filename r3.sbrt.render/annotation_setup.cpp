@@ -15,16 +15,16 @@ namespace {
 
 /// Where north points on the image at the model's centre (x right, y
 /// down), if the camera sees it.
-std::optional<glm::dvec2> north_on_image(const sbrt::Tracer &tracer,
+std::optional<glm::dvec2> north_on_image(const sbrt::CoordinateFrame &frame,
                                          const sbrt::Camera &camera)
 {
     // a point ahead of the camera, at the depth of the model's centre
     const glm::dvec3 ahead = camera.forward();
-    double depth = glm::dot(tracer.centre() - camera.origin(), ahead);
+    double depth = glm::dot(frame.centre() - camera.origin(), ahead);
     if (!(depth > 0))
-        depth = tracer.radius();
+        depth = frame.radius();
     const glm::dvec3 p = camera.origin() + depth * ahead;
-    const glm::dvec3 q = p + glm::dvec3(0, 0.01 * tracer.radius(), 0);
+    const glm::dvec3 q = p + glm::dvec3(0, 0.01 * frame.radius(), 0);
     double px, py, qx, qy;
     if (!camera.project(p, px, py) || !camera.project(q, qx, qy))
         return std::nullopt;
@@ -38,8 +38,8 @@ std::optional<glm::dvec2> north_on_image(const sbrt::Tracer &tracer,
 
 } // namespace
 
-PngAnnotations make_annotations(const RenderRequest &request,
-                                const sbrt::Tracer &tracer,
+PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model &model,
+                                const sbrt::CoordinateFrame &frame,
                                 const sbrt::Camera &camera,
                                 const struct Cell_head &region)
 {
@@ -47,14 +47,13 @@ PngAnnotations make_annotations(const RenderRequest &request,
     // a tile's PNG is plain: tiles mosaic to the whole image
     if (request.png.empty() || !request.annotate || request.tile)
         return a;
-    const sbrt::Model &model = tracer.model();
     const std::string input = request.input;
     a.title = input.substr(0, input.find('@'));
     for (size_t i = 1; i < model.materials().size(); ++i) {
         const sbrt::Material &m = model.materials()[i];
         a.classes.push_back({m.id, m.label, sbrt::material_color(model, uint32_t(i))});
     }
-    a.north = north_on_image(tracer, camera);
+    a.north = north_on_image(frame, camera);
     if (request.view.kind != sbrt::ViewKind::top) {
         a.zexag = request.zexag;
         return a;

@@ -10,14 +10,14 @@
 #include "grass.hpp"
 #include "png_annotations.hpp"
 #include "render_options.hpp"
-#include "tracing/tracer.hpp"
+#include "frame/coordinate_frame.hpp"
 
 /// The legend (every class of the prepared model; the PNG keeps those the
 /// image shows), the north arrow where north points on the image, the
 /// vertical exaggeration of 3D views and the scale bar of top views (cells
 /// of `region`); nothing with -n or without png=.
-PngAnnotations make_annotations(const RenderRequest &request,
-                                const sbrt::Tracer &tracer,
+PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model &model,
+                                const sbrt::CoordinateFrame &frame,
                                 const sbrt::Camera &camera,
                                 const struct Cell_head &region);
 

@@ -10,6 +10,7 @@
 #include "util/error.hpp"
 #include "gpu_renderer.hpp"
 #include "util/parallel.hpp"
+#include "request_error.hpp"
 
 namespace {
 
@@ -95,7 +96,7 @@ std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &reque
     }
     catch (const sbrt::Error &e) {
         if (request.backend != "auto")
-            G_fatal_error(_("backend=%s: %s"), request.backend.c_str(), e.what());
+            bad_request(_("backend=%s: %s"), request.backend.c_str(), e.what());
         G_verbose_message(_("No OpenGL context (%s): using the CPU"), e.what());
         return nullptr;
     }

@@ -10,6 +10,7 @@
 
 #include "grass.hpp"
 #include "vector_input.hpp"
+#include "request_error.hpp"
 
 namespace {
 
@@ -20,7 +21,7 @@ uint32_t material_of(sbrt::Model &model, int id)
     if (k > 0)
         return uint32_t(k);
     if (model.materials().size() >= sbrt::MAX_MATERIALS)
-        G_fatal_error(_("log_class=: class %d would be material %zu, beyond the "
+        bad_request(_("log_class=: class %d would be material %zu, beyond the "
                         "supported %u"),
                       id, model.materials().size(), sbrt::MAX_MATERIALS - 1);
     G_verbose_message(_("Logged class %d is not in the model: drawn with a "
@@ -104,7 +105,7 @@ std::vector<sbrt::Borehole> make_boreholes(const RenderRequest &request,
                     "model's stack"),
                   unlogged);
     if (boreholes.empty())
-        G_fatal_error(_("None of the %zu points of boreholes=%s lies on the model"),
+        bad_request(_("None of the %zu points of boreholes=%s lies on the model"),
                       points.size(), request.boreholes.c_str());
     return boreholes;
 }

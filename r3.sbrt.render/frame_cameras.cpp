@@ -15,6 +15,7 @@
 #include "scene/camera_path.hpp"
 #include "scene_camera.hpp"
 #include "vector_input.hpp"
+#include "request_error.hpp"
 
 namespace {
 
@@ -23,7 +24,7 @@ std::string read_text_file(const std::string &path)
 {
     std::ifstream in(path);
     if (!in)
-        G_fatal_error(_("keys=%s: cannot read this file"), path.c_str());
+        bad_request(_("keys=%s: cannot read this file"), path.c_str());
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
@@ -32,17 +33,17 @@ std::string read_text_file(const std::string &path)
 } // namespace
 
 std::vector<sbrt::Camera> frame_cameras(const RenderRequest &request,
-                                        const sbrt::Tracer &framing,
+                                        const sbrt::Model &model,
+                                        const sbrt::CoordinateFrame &frame,
                                         const struct Cell_head &region)
 {
     const int frames = request.frames;
     if (request.path == sbrt::PathKind::sweep || (frames == 1 && request.path == sbrt::PathKind::orbit))
         return std::vector<sbrt::Camera>(size_t(frames),
-                                         make_camera(request, framing, region));
-    check_image_fits(request.height, request.width,
-                     request.normals == sbrt::Normals::kernel);
+                                         make_camera(request, model, frame, region));
+    check_image_fits(request, request.height, request.width);
     if (request.path == sbrt::PathKind::orbit)
-        return sbrt::orbit_cameras(request.view, framing, request.height, request.width,
+        return sbrt::orbit_cameras(request.view, model, frame, request.height, request.width,
                                    frames, request.angle);
     std::vector<sbrt::Camera> cameras;
     if (request.path == sbrt::PathKind::keys) {
@@ -55,7 +56,7 @@ std::vector<sbrt::Camera> frame_cameras(const RenderRequest &request,
             view.target = key.target;
             view.fov = key.fov;
             cameras.push_back(
-                sbrt::view_camera(view, framing, request.height, request.width));
+                sbrt::view_camera(view, model, frame, request.height, request.width));
         }
         return cameras;
     }
@@ -63,13 +64,13 @@ std::vector<sbrt::Camera> frame_cameras(const RenderRequest &request,
     bool is_3d = false;
     const std::vector<glm::dvec3> line = read_path_line(request.path_map, is_3d);
     if (!is_3d && !request.line_height)
-        G_fatal_error(_("path_map=%s is 2D: give height= (the camera's height "
+        bad_request(_("path_map=%s is 2D: give height= (the camera's height "
                         "above the model's top)"),
                       request.path_map.c_str());
     const double length = sbrt::line_length(line);
     auto lifted = [&](glm::dvec3 p) {
         if (request.line_height)
-            p.z = sbrt::surface_elevation(framing, p.x, p.y) + *request.line_height;
+            p.z = sbrt::surface_elevation(model, frame, p.x, p.y) + *request.line_height;
         return p;
     };
     for (int k = 1; k <= frames; ++k) {
@@ -83,11 +84,11 @@ std::vector<sbrt::Camera> frame_cameras(const RenderRequest &request,
         if (!view.target && request.line_height) {
             const glm::dvec3 there = at + ahead * (3 * std::fabs(*request.line_height));
             view.target = glm::dvec3(there.x, there.y,
-                                     sbrt::surface_elevation(framing, there.x, there.y));
+                                     sbrt::surface_elevation(model, frame, there.x, there.y));
         }
         else if (!view.target)
             view.target = *view.position + ahead * (length / std::max(1, frames - 1));
-        cameras.push_back(sbrt::view_camera(view, framing, request.height, request.width));
+        cameras.push_back(sbrt::view_camera(view, model, frame, request.height, request.width));
     }
     return cameras;
 }

@@ -11,12 +11,13 @@
 
 #include "scene/camera.hpp"
 #include "render_options.hpp"
-#include "tracing/tracer.hpp"
+#include "frame/coordinate_frame.hpp"
 
-/// The cameras of frames 1..frames= of the request; `framing` holds the
-/// model as read (the view does not move when strata are hidden).
+/// The cameras of frames 1..frames= of the request, framing `model` as read
+/// in `frame` (the view does not move when strata are hidden).
 std::vector<sbrt::Camera> frame_cameras(const RenderRequest &request,
-                                        const sbrt::Tracer &framing,
+                                        const sbrt::Model &model,
+                                        const sbrt::CoordinateFrame &frame,
                                         const struct Cell_head &region);
 
 #endif

@@ -4,6 +4,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "frames.hpp"
+#include "request_error.hpp"
 
 #include <cctype>
 #include <cstdio>
@@ -16,6 +17,10 @@
 
 
 namespace {
+
+/// The widest frame number field of a png= pattern (a frame number has at
+/// most 10 digits).
+constexpr int MAX_FRAME_DIGITS = 10;
 
 std::string numbered(const std::string &name, int frame)
 {
@@ -34,9 +39,17 @@ std::pair<size_t, size_t> conversion(const std::string &png)
     while (end < png.size() && (std::isdigit(png[end]) || png[end] == '0'))
         ++end;
     if (end >= png.size() || png[end] != 'd' || png.find('%', end) != std::string::npos)
-        G_fatal_error(_("png=%s: a pattern takes one %%d (e.g. orbit_%%04d.png) and "
-                        "no other %%"),
-                      png.c_str());
+        bad_request(_("png=%s: a pattern takes one %%d (e.g. orbit_%%04d.png) and "
+                      "no other %%"),
+                    shortened(png).c_str());
+    // a frame number has at most 10 digits: a wider field only pads the
+    // name (%99999999d made one file of spaces for every frame)
+    const std::string digits = png.substr(at + 1, end - at - 1);
+    if (digits.size() > 2 || (!digits.empty() && std::atoi(digits.c_str()) > MAX_FRAME_DIGITS))
+        bad_request(_("png=%s: the frame number's width %%%sd is too wide; at most "
+                      "%%0%dd (e.g. orbit_%%04d.png)"),
+                    shortened(png).c_str(), shortened(digits, 20).c_str(),
+                    MAX_FRAME_DIGITS);
     return {at, end + 1 - at};
 }
 
@@ -136,13 +149,13 @@ void check_video(const RenderRequest &request)
         return;
     const std::string ext = extension(request.video);
     if (ext != "mp4" && ext != "webm" && ext != "gif")
-        G_fatal_error(_("video=%s: give a .mp4, .webm or .gif file"),
+        bad_request(_("video=%s: give a .mp4, .webm or .gif file"),
                       request.video.c_str());
     if (request.png.empty())
-        G_fatal_error(_("video= is made of the frames' PNG files: give png= too "
+        bad_request(_("video= is made of the frames' PNG files: give png= too "
                         "(e.g. png=orbit_%%04d.png)"));
     if (!on_path("ffmpeg"))
-        G_fatal_error(_("video=%s needs ffmpeg, which is not on the PATH: install "
+        bad_request(_("video=%s needs ffmpeg, which is not on the PATH: install "
                         "it (Debian: apt-get install ffmpeg), or leave video= out "
                         "and assemble the PNG files yourself"),
                       request.video.c_str());
@@ -169,11 +182,11 @@ void register_frames(const RenderRequest &request)
         run_command({"t.create", "--quiet", "type=strds", "temporaltype=relative",
                      output.c_str(), "title=r3.sbrt.render frames",
                      "description=Frames of an r3.sbrt.render animation"}) != 0)
-        G_fatal_error(_("strds=%s: t.create failed (see above)"), request.strds.c_str());
+        bad_request(_("strds=%s: t.create failed (see above)"), request.strds.c_str());
     if (run_command({"t.register", "--quiet", "--overwrite", "type=raster",
                      input.c_str(), map_list.c_str(), start.c_str(), "unit=seconds",
                      "increment=1"}) != 0)
-        G_fatal_error(_("strds=%s: t.register failed (see above)"),
+        bad_request(_("strds=%s: t.register failed (see above)"),
                       request.strds.c_str());
 }
 
@@ -211,10 +224,10 @@ void assemble_video(const RenderRequest &request)
               request.video.c_str());
     if (run_command(argv) != 0) {
         std::remove(temp.c_str());
-        G_fatal_error(_("ffmpeg could not make video=%s (see above)"),
+        bad_request(_("ffmpeg could not make video=%s (see above)"),
                       request.video.c_str());
     }
     if (std::rename(temp.c_str(), request.video.c_str()) != 0)
-        G_fatal_error(_("Cannot move the video into place as <%s>"),
+        bad_request(_("Cannot move the video into place as <%s>"),
                       request.video.c_str());
 }

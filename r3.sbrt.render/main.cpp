@@ -13,33 +13,20 @@
 #include <vector>
 
 #include "annotation_setup.hpp"
-#include "backend.hpp"
-#include "scene/camera_path.hpp"
-#include "frame_cameras.hpp"
 #include "frames.hpp"
-#include "shading/drape.hpp"
-#include "util/error.hpp"
 #include "grass.hpp"
-#include "material_colors.hpp"
-#include "model_reading.hpp"
-#include "prepared_scene.hpp"
 #include "raster_output.hpp"
-#include "scene/scene_pruning.hpp"
 #include "render_options.hpp"
+#include "render_session.hpp"
 #include "sbrt_choices.hpp"
-#include "sbrt_store.hpp"
-#include "scene_camera.hpp"
-#include "skipping_report.hpp"
-#include "texture_input.hpp"
+#include "util/error.hpp"
 #include "view_server.hpp"
 
 namespace {
 
-/// Traces, shades and writes one image of `renderer` seen by `camera`, on
-/// `backend` (the renderer's).
-void render_frame(const RenderRequest &request, const sbrt::Renderer &renderer,
-                  Backend &backend, const sbrt::Camera &camera,
-                  const struct Cell_head &region)
+/// Traces, shades and writes one image of `session` seen by `camera`.
+void render_frame(const RenderRequest &request, RenderSession &session,
+                  const sbrt::Camera &camera, const struct Cell_head &region)
 {
     struct Cell_head window =
         request.view.kind == sbrt::ViewKind::top
@@ -48,71 +35,25 @@ void render_frame(const RenderRequest &request, const sbrt::Renderer &renderer,
     if (request.tile)
         window = tile_window(window, *request.tile);
     ImageMaps maps(request, window,
-                   make_annotations(request, renderer.tracer(), camera, region));
-    backend.render(camera, maps.outputs(),
-                   [&](const sbrt::Band &band) { maps.write(band); });
-    maps.close(renderer.model());
+                   make_annotations(request, session.renderer().model(), session.frame(),
+                                    camera, region));
+    session.render(camera, maps.outputs(), [&](const sbrt::Band &band) { maps.write(band); });
+    maps.close(session.renderer().model());
 }
 
 void run(const RenderRequest &request)
 {
     check_png_pattern(request.png);
     check_video(request);
-    // 1. the model, its colours, the drape, the cameras
     struct Cell_head region;
     G_get_window(&region);
-    sbrt::Model model = read_model(request, region);
-    apply_color_option(request, model);
-    std::optional<sbrt::Drape> drape;
-    if (!request.texture.empty())
-        drape.emplace(model, read_texture(request.texture), request.texture_blend);
-    // the camera frames the model as read, whatever is hidden or cut: the
-    // view stays put while strata are switched off (its box only: no
-    // pyramid for this tracer)
-    sbrt::Scene framing;
-    framing.skip_empty_space = false;
-    std::vector<sbrt::Camera> cameras =
-        frame_cameras(request, sbrt::Tracer(model, request.zexag, framing), region);
-    if (request.tile)
-        for (sbrt::Camera &camera : cameras)
-            camera = camera.window((*request.tile)[0], (*request.tile)[2],
-                                   (*request.tile)[1], (*request.tile)[3]);
-
-    // 2. the scene: hidden strata, planes, boreholes, fence, translucency
-    // (sections and split logs face the first frame's camera)
-    PreparedScene prepared = prepare_scene(request, std::move(model), cameras.front());
-    model = std::move(prepared.model);
-    const sbrt::Scene &scene = prepared.scene;
-
-    // 3. the backend; on a GPU what no ray of a single view reaches is not
-    // uploaded (the CPU never reads it anyway)
-    const std::unique_ptr<sbrt_gl::GlContext> context = choose_gl_context(request);
-    if (context && scene.skip_empty_space && scene.draw_model && request.frames == 1) {
-        sbrt::Pruning pruning = sbrt::prune_for_view(
-            sbrt::Tracer(model, request.zexag, scene), cameras.front());
-        report_pruning(pruning, scene.planes.size());
-        model = std::move(pruning.model);
-    }
-
-    // 4. prepare once (a sweep: once a frame, its plane moved), then
-    // trace, shade and write band by band, frame by frame
-    const sbrt::Shading shading = make_shading(request, drape ? &*drape : nullptr);
-    const sbrt::RenderSettings settings{unsigned(request.threads), true, 0};
+    // load, frame, prepare once (a sweep: once a frame, its plane moved),
+    // then trace, shade and write band by band, frame by frame
+    RenderSession session;
+    session.load(request, region);
+    const std::vector<sbrt::Camera> cameras = session.cameras(request, region);
+    session.prepare(request, cameras.front(), request.frames == 1);
     const bool sweep = request.frames > 1 && request.path == sbrt::PathKind::sweep;
-    // a sweep's plane moves across the box of the model as prepared (its
-    // box only: no pyramid for this tracer)
-    sbrt::Scene box_only;
-    box_only.skip_empty_space = false;
-    std::optional<sbrt::Tracer> box;
-    if (sweep)
-        box.emplace(model, request.zexag, box_only);
-    std::optional<sbrt::Renderer> renderer;
-    std::optional<Backend> backend; // a GPU keeps the renderer's model
-    if (!sweep) {
-        renderer.emplace(std::move(model), request.zexag, scene, shading, settings);
-        report_pyramid(renderer->tracer());
-        backend.emplace(request, *renderer, context.get());
-    }
     int skipped = 0;
     for (int k = request.first_frame; k <= request.last_frame; ++k) {
         if (request.frames > 1)
@@ -123,16 +64,9 @@ void run(const RenderRequest &request)
             ++skipped; // a rerun: finished frames stay as they are
             continue;
         }
-        if (sweep) {
-            sbrt::Scene swept = scene;
-            // the sweep moves the first plane= (else section=)
-            swept.planes.front() =
-                sbrt::swept_plane(scene.planes.front(), *box, k, request.frames);
-            backend.reset(); // it refers to the previous frame's renderer
-            renderer.emplace(model, request.zexag, std::move(swept), shading, settings);
-            backend.emplace(request, *renderer, context.get());
-        }
-        render_frame(frame, *renderer, *backend, cameras[size_t(k - 1)], region);
+        if (sweep)
+            session.sweep_to(k);
+        render_frame(frame, session, cameras[size_t(k - 1)], region);
     }
     if (request.frames > 1) {
         G_percent(1, 1, 1);
@@ -173,7 +107,10 @@ int main(int argc, char *argv[])
     sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
-    const RenderRequest request = read_render_options(options);
+    const ParsedRequest parsed = parse_render_request(options);
+    if (!parsed.request)
+        G_fatal_error("%s", parsed.error.c_str());
+    const RenderRequest &request = *parsed.request;
     try {
         run(request);
     }

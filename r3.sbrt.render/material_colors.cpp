@@ -4,6 +4,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "material_colors.hpp"
+#include "request_error.hpp"
 
 #include <algorithm>
 
@@ -25,10 +26,10 @@ void apply_color_option(const RenderRequest &request, sbrt::Model &model)
         Rast_make_colors(&colors, request.color.c_str(), low, high); // fatal if unknown
     else if (request.rules == "-") {
         if (!Rast_read_color_rules(&colors, low, high, Rast_read_color_rule, stdin))
-            G_fatal_error(_("rules=-: no valid colour rules on standard input"));
+            bad_request(_("rules=-: no valid colour rules on standard input"));
     }
     else if (!Rast_load_colors(&colors, request.rules.c_str(), low, high))
-        G_fatal_error(_("rules=%s: cannot read colour rules from this file"),
+        bad_request(_("rules=%s: cannot read colour rules from this file"),
                       request.rules.c_str());
     for (size_t i = 1; i < materials.size(); ++i) {
         int red, green, blue;

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "request_error.hpp"
 #include "util/error.hpp"
 
 std::vector<std::string> split_words(const std::string &line)
@@ -32,7 +33,7 @@ std::vector<std::string> split_words(const std::string &line)
         else if (c == '\'' || c == '"') {
             const size_t end = line.find(c, i + 1);
             if (end == std::string::npos)
-                sbrt::fail("unclosed quote " + std::string(1, c) + " in: " + line);
+                sbrt::fail("unclosed quote " + std::string(1, c) + " in: " + shortened(line));
             std::string quoted = line.substr(i + 1, end - i - 1);
             if (c == '"') { // \" and \\ within double quotes
                 std::string plain;
@@ -117,24 +118,26 @@ void OptionAnswers::answer(const std::vector<std::string> &words)
                 while (i < flags_.size() && flags_[i]->key != word[k])
                     ++i;
                 if (i == flags_.size())
-                    sbrt::fail("unknown flag -" + std::string(1, word[k]));
+                    sbrt::fail("unknown flag -" + shortened(std::string(1, word[k]), 8));
                 flags[i] = 1;
             }
             continue;
         }
         const size_t equals = word.find('=');
         if (equals == std::string::npos || equals == 0)
-            sbrt::fail("<" + word + "> is neither key=value nor a -flag");
+            sbrt::fail("<" + shortened(word) + "> is neither key=value nor a -flag");
         const std::string key = word.substr(0, equals), value = word.substr(equals + 1);
         size_t i = 0;
         while (i < options_.size() && key != options_[i].option->key)
             ++i;
         if (i == options_.size())
-            sbrt::fail("unknown option <" + key + ">");
+            sbrt::fail("unknown option <" + shortened(key) + ">");
         if (value.empty())
             sbrt::fail(key + "=: give a value (or leave the option out)");
+        if (given[i])
+            sbrt::fail(key + "= is given twice; give each option once");
         if (!allowed(options_[i].option, value))
-            sbrt::fail(key + "=" + value + ": not " +
+            sbrt::fail(key + "=" + shortened(value) + ": not " +
                        (options_[i].option->type == TYPE_STRING ? "one of " : "within ") +
                        options_[i].option->options);
         given[i] = value;

@@ -4,6 +4,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "option_parts.hpp"
+#include "request_error.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -75,7 +76,7 @@ std::vector<double> read_numbers(const Option *o)
         char *end = nullptr;
         const double v = std::strtod(*a, &end);
         if (*end || !std::isfinite(v))
-            G_fatal_error(_("Option <%s>: <%s> is not a number"), o->key, *a);
+            bad_request(_("Option <%s>: <%s> is not a number"), o->key, *a);
         values.push_back(v);
     }
     return values;
@@ -88,7 +89,7 @@ std::optional<glm::dvec3> read_point(const Option *o)
         return std::nullopt;
     const std::vector<double> v = read_numbers(o);
     if (v.size() != 3)
-        G_fatal_error(_("Option <%s> needs three values x,y,z"), o->key);
+        bad_request(_("Option <%s> needs three values x,y,z"), o->key);
     return glm::dvec3(v[0], v[1], v[2]);
 }
 
@@ -97,7 +98,7 @@ double read_double(const Option *o)
     char *end = nullptr;
     const double v = std::strtod(o->answer, &end);
     if (*end || !std::isfinite(v))
-        G_fatal_error(_("Option <%s>: <%s> is not a number"), o->key, o->answer);
+        bad_request(_("Option <%s>: <%s> is not a number"), o->key, o->answer);
     return v;
 }
 

@@ -13,7 +13,9 @@
 
 #include "animation_options.hpp"
 #include "option_parts.hpp"
-#include "tracing/tracer.hpp"
+#include "util/error.hpp"
+#include "scene/scene.hpp"
+#include "request_error.hpp"
 
 using namespace option_parts;
 
@@ -248,6 +250,9 @@ RenderOptions define_render_options()
     return options;
 }
 
+namespace {
+
+/// The request of the answers; throws sbrt::Error (bad_request).
 RenderRequest read_render_options(const RenderOptions &options)
 {
     const RenderOptions *o = &options;
@@ -269,7 +274,7 @@ RenderRequest read_render_options(const RenderOptions &options)
         if (size.size() != 2 || size[0] < 1 || size[1] < 1 ||
             size[0] != std::floor(size[0]) || size[1] != std::floor(size[1]) ||
             size[0] > 65536 || size[1] > 65536)
-            G_fatal_error(_("size= takes the image's width,height in pixels "
+            bad_request(_("size= takes the image's width,height in pixels "
                             "(1 to 65536 each), e.g. size=1056,884"));
         if (v.kind == sbrt::ViewKind::top)
             G_warning(_("size= is ignored with view=top: a top view has one "
@@ -282,12 +287,12 @@ RenderRequest read_render_options(const RenderOptions &options)
         const std::vector<double> t = read_numbers(o->tile);
         if (t.size() != 4 || t[0] < 0 || t[1] < 0 || t[2] < 1 || t[3] < 1 ||
             t[0] + t[2] > r.height || t[1] + t[3] > r.width)
-            G_fatal_error(_("tile= takes row,col,rows,cols of a rectangle within the "
+            bad_request(_("tile= takes row,col,rows,cols of a rectangle within the "
                             "%d x %d image (size=), rows and columns from 0 at the "
                             "top left"),
                           r.width, r.height);
         if (v.kind == sbrt::ViewKind::top)
-            G_fatal_error(_("tile= is for perspective and orthographic views; a top "
+            bad_request(_("tile= is for perspective and orthographic views; a top "
                             "view's tile is a region (g.region)"));
         r.tile = {int(t[0]), int(t[1]), int(t[2]), int(t[3])};
     }
@@ -298,75 +303,75 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (o->distance->answer) {
         v.distance = read_double(o->distance);
         if (!(*v.distance > 0))
-            G_fatal_error(_("distance= must be positive"));
+            bad_request(_("distance= must be positive"));
     }
     v.fov = read_double(o->fov);
     if (!(v.fov > 0 && v.fov < 180))
-        G_fatal_error(_("fov=%g: the field of view must lie between 0 and "
+        bad_request(_("fov=%g: the field of view must lie between 0 and "
                         "180 degrees"),
                       v.fov);
     if (o->ortho_height->answer) {
         v.ortho_height = read_double(o->ortho_height);
         if (!(*v.ortho_height > 0))
-            G_fatal_error(_("ortho_height= must be positive"));
+            bad_request(_("ortho_height= must be positive"));
     }
     r.zexag = read_double(o->zexag);
     if (!(r.zexag > 0))
-        G_fatal_error(_("zexag=%g: the vertical exaggeration must be positive"),
+        bad_request(_("zexag=%g: the vertical exaggeration must be positive"),
                       r.zexag);
     const std::vector<double> light = read_numbers(o->light);
     if (light.size() != 2)
-        G_fatal_error(_("light= needs azimuth,elevation"));
+        bad_request(_("light= needs azimuth,elevation"));
     r.light_azimuth = light[0];
     r.light_elevation = light[1];
     r.ambient = read_double(o->ambient);
     int red, green, blue;
     if (G_str_to_color(o->background->answer, &red, &green, &blue) != 1)
-        G_fatal_error(_("background=<%s> is not a colour"), o->background->answer);
+        bad_request(_("background=<%s> is not a colour"), o->background->answer);
     r.background = {uint8_t(red), uint8_t(green), uint8_t(blue)};
     r.normals = std::string(o->normals->answer) == "kernel" ? sbrt::Normals::kernel
                                                             : sbrt::Normals::face;
     r.kernel = std::atoi(o->kernel->answer);
     if (r.tile && r.normals == sbrt::Normals::kernel)
-        G_fatal_error(_("tile= with normals=kernel: the kernel reads pixels across "
+        bad_request(_("tile= with normals=kernel: the kernel reads pixels across "
                         "the tile's edges, so tiles would not mosaic exactly; use "
                         "normals=face"));
     if (r.kernel % 2 == 0)
-        G_fatal_error(_("kernel=%d: the kernel size must be odd (3, 5, 7, 9 "
+        bad_request(_("kernel=%d: the kernel size must be odd (3, 5, 7, 9 "
                         "or 11)"),
                       r.kernel);
     r.smooth = read_double(o->smooth);
     if (r.smooth < 0)
-        G_fatal_error(_("smooth=%g must not be negative"), r.smooth);
+        bad_request(_("smooth=%g must not be negative"), r.smooth);
     r.color = answer_or(o->color);
     r.rules = answer_or(o->rules);
     for (char **a = o->hide->answers; a && *a; ++a)
         r.hide.emplace_back(*a);
     const std::vector<double> plane = read_numbers(o->plane);
     if (plane.size() % 6)
-        G_fatal_error(_("plane= takes six numbers per plane (x,y,z,nx,ny,nz), "
+        bad_request(_("plane= takes six numbers per plane (x,y,z,nx,ny,nz), "
                         "not %zu"),
                       plane.size());
     if (plane.size() / 6 > size_t(sbrt::MAX_CLIP_PLANES))
-        G_fatal_error(_("plane= gives %zu planes; at most %d"), plane.size() / 6,
+        bad_request(_("plane= gives %zu planes; at most %d"), plane.size() / 6,
                       sbrt::MAX_CLIP_PLANES);
     for (size_t i = 0; i < plane.size(); i += 6) {
         std::array<double, 6> p;
         std::copy_n(plane.begin() + long(i), 6, p.begin());
         if (p[3] == 0 && p[4] == 0 && p[5] == 0)
-            G_fatal_error(_("plane=%g,%g,%g,%g,%g,%g: the normal is zero"), p[0],
+            bad_request(_("plane=%g,%g,%g,%g,%g,%g: the normal is zero"), p[0],
                           p[1], p[2], p[3], p[4], p[5]);
         r.planes.push_back(p);
     }
     const std::vector<double> section = read_numbers(o->section);
     if (!section.empty()) {
         if (section.size() != 4)
-            G_fatal_error(_("section= takes four numbers x1,y1,x2,y2"));
+            bad_request(_("section= takes four numbers x1,y1,x2,y2"));
         if (section[0] == section[2] && section[1] == section[3])
-            G_fatal_error(_("section=: the two points are the same"));
+            bad_request(_("section=: the two points are the same"));
         r.section = {section[0], section[1], section[2], section[3]};
         if (r.planes.size() + 1 > size_t(sbrt::MAX_CLIP_PLANES))
-            G_fatal_error(_("plane= and section= give more than %d planes"),
+            bad_request(_("plane= and section= give more than %d planes"),
                           sbrt::MAX_CLIP_PLANES);
     }
     for (char **a = o->opacity->answers; a && *a; ++a) {
@@ -378,7 +383,7 @@ RenderRequest read_render_options(const RenderOptions &options)
                                  : std::strtod(pair.c_str() + colon + 1, &end);
         if (colon == std::string::npos || colon == 0 || *end ||
             !(alpha >= 0 && alpha <= 1))
-            G_fatal_error(_("opacity=%s: give class:alpha with alpha from 0 "
+            bad_request(_("opacity=%s: give class:alpha with alpha from 0 "
                             "(invisible) to 1 (opaque)"),
                           pair.c_str());
         r.opacity.emplace_back(pair.substr(0, colon), alpha);
@@ -386,7 +391,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (o->opacity_length->answer) {
         r.opacity_length = read_double(o->opacity_length);
         if (!(*r.opacity_length > 0))
-            G_fatal_error(_("opacity_length= must be positive"));
+            bad_request(_("opacity_length= must be positive"));
     }
     r.fence = answer_or(o->fence);
     r.boreholes = answer_or(o->boreholes);
@@ -395,7 +400,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (o->borehole_radius->answer) {
         r.borehole_radius = read_double(o->borehole_radius);
         if (!(*r.borehole_radius > 0))
-            G_fatal_error(_("borehole_radius= must be positive"));
+            bad_request(_("borehole_radius= must be positive"));
     }
     r.boreholes_only = o->boreholes_only->answer;
     r.log_top = answer_or(o->log_top);
@@ -406,12 +411,12 @@ RenderRequest read_render_options(const RenderOptions &options)
     for (char **a = o->texture->answers; a && *a; ++a)
         r.texture.emplace_back(*a);
     if (r.texture.size() != 0 && r.texture.size() != 1 && r.texture.size() != 3)
-        G_fatal_error(_("texture= takes one map (with its colour table) or three "
+        bad_request(_("texture= takes one map (with its colour table) or three "
                         "maps red,green,blue, not %zu"),
                       r.texture.size());
     r.texture_blend = read_double(o->texture_blend);
     if (!(r.texture_blend >= 0 && r.texture_blend <= 1))
-        G_fatal_error(_("texture_blend=%g must lie in 0..1"), r.texture_blend);
+        bad_request(_("texture_blend=%g must lie in 0..1"), r.texture_blend);
     r.backend = o->backend->answer;
     r.gpu_layout = o->gpu_layout->answer;
     r.walk_every_cell = o->walk_every_cell->answer;
@@ -420,7 +425,19 @@ RenderRequest read_render_options(const RenderOptions &options)
         r.threads = std::max(1, int(std::thread::hardware_concurrency()) + r.threads);
     read_animation_options(*o, r);
     if (r.view.position && r.view.target && *r.view.position == *r.view.target)
-        G_fatal_error(_("position= and target= are the same point: the "
+        bad_request(_("position= and target= are the same point: the "
                         "camera has no direction"));
     return r;
+}
+
+} // namespace
+
+ParsedRequest parse_render_request(const RenderOptions &options)
+{
+    try {
+        return {read_render_options(options), {}};
+    }
+    catch (const sbrt::Error &e) {
+        return {std::nullopt, e.what()};
+    }
 }

@@ -83,7 +83,15 @@ struct RenderOptions {
     Flag *walk_every_cell;
 };
 
+/// \brief A request, or why the answers are not one (errors as values: the
+/// command line fails with the message, the view server replies with it).
+struct ParsedRequest {
+    std::optional<RenderRequest> request;
+    std::string error;
+};
+
 RenderOptions define_render_options();
-RenderRequest read_render_options(const RenderOptions &options);
+/// The request of the options' answers, checked as G_parser does not.
+ParsedRequest parse_render_request(const RenderOptions &options);
 
 #endif

@@ -8,17 +8,17 @@
 
 #include "scene/camera.hpp"
 #include "render_options.hpp"
-#include "tracing/tracer.hpp"
+#include "frame/coordinate_frame.hpp"
 
-/// Fatal error unless an image of rows x cols fits in this machine's
-/// memory (what the streamed bands take, or with `kernel_normals` the
-/// kernel's window at its largest, the whole image; with a margin).
-void check_image_fits(int rows, int cols, bool kernel_normals);
+/// An error unless an image of rows x cols of `request` fits in this
+/// machine's available memory (sbrt::check_image_fits: the streamed bands,
+/// the kernel's window, an annotated PNG's whole image).
+void check_image_fits(const RenderRequest &request, int rows, int cols);
 
 /// Camera of the request: size= pixels, or for view=top one pixel per
 /// cell of the current region.
-sbrt::Camera make_camera(const RenderRequest &request,
-                         const sbrt::Tracer &tracer,
+sbrt::Camera make_camera(const RenderRequest &request, const sbrt::Model &model,
+                         const sbrt::CoordinateFrame &frame,
                          const struct Cell_head &region);
 
 #endif

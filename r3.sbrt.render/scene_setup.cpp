@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "scene/scene_parts.hpp"
+#include "request_error.hpp"
 
 uint32_t find_class(const sbrt::Model &model, const std::string &name,
                     const char *option, const std::string &input)
@@ -29,7 +30,7 @@ uint32_t find_class(const sbrt::Model &model, const std::string &name,
     for (uint32_t i = 1; i < materials.size(); ++i)
         classes += (i > 1 ? ", " : "") + std::to_string(materials[i].id) +
                    (materials[i].label.empty() ? "" : " (" + materials[i].label + ")");
-    G_fatal_error(_("%s=%s: SBRT <%s> has no class with this id or label; its "
+    bad_request(_("%s=%s: SBRT <%s> has no class with this id or label; its "
                     "classes are %s"),
                   option, name.c_str(), input.c_str(), classes.c_str());
 }

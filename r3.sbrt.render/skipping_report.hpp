@@ -7,7 +7,7 @@
 #ifndef R3_SBRT_RENDER_SKIPPING_REPORT_HPP
 #define R3_SBRT_RENDER_SKIPPING_REPORT_HPP
 
-#include "scene/scene_pruning.hpp"
+#include "tracing/scene_pruning.hpp"
 
 /// Intervals and bytes hide= removed (the model as read against what is left).
 void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidden);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "grass.hpp"
+#include "request_error.hpp"
 
 namespace {
 
@@ -19,7 +20,7 @@ public:
         : name_(name), mapset_(G_find_raster2(name.c_str(), ""))
     {
         if (!mapset_)
-            G_fatal_error(_("texture=: raster map <%s> not found"), name.c_str());
+            bad_request(_("texture=: raster map <%s> not found"), name.c_str());
         fd_ = Rast_open_old(name.c_str(), mapset_);
     }
     ~RasterInput() { Rast_close(fd_); }
@@ -45,7 +46,7 @@ sbrt::Texture read_texture(const std::vector<std::string> &maps)
     {
         const char *mapset = G_find_raster2(maps[0].c_str(), "");
         if (!mapset)
-            G_fatal_error(_("texture=: raster map <%s> not found"), maps[0].c_str());
+            bad_request(_("texture=: raster map <%s> not found"), maps[0].c_str());
         Rast_get_cellhd(maps[0].c_str(), mapset, &own);
     }
     Rast_set_input_window(&own);
@@ -63,7 +64,7 @@ sbrt::Texture read_texture(const std::vector<std::string> &maps)
         RasterInput in(maps[0]);
         Colors colors;
         if (Rast_read_colors(maps[0].c_str(), in.mapset(), &colors) < 0)
-            G_fatal_error(_("texture=%s has no colour table"), maps[0].c_str());
+            bad_request(_("texture=%s has no colour table"), maps[0].c_str());
         std::vector<DCELL> row(cols);
         std::vector<unsigned char> r(cols), g(cols), b(cols), set(cols);
         for (int y = 0; y < own.rows; ++y) {

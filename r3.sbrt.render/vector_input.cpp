@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "grass.hpp"
+#include "request_error.hpp"
 extern "C" {
 #include <grass/dbmi.h>
 #include <grass/vector.h>
@@ -22,9 +23,12 @@ public:
     VectorMap(const std::string &name, const char *layer)
         : points_(Vect_new_line_struct()), cats_(Vect_new_cats_struct())
     {
+        // Vect_open_old2 ends the process on a missing map: looked up first
+        if (!G_find_vector2(name.c_str(), ""))
+            bad_request(_("Vector map <%s> not found"), shortened(name).c_str());
         Vect_set_open_level(1);
         if (Vect_open_old2(&map_, name.c_str(), "", layer) < 0)
-            G_fatal_error(_("Unable to open vector map <%s>"), name.c_str());
+            bad_request(_("Unable to open vector map <%s>"), name.c_str());
     }
     ~VectorMap()
     {
@@ -40,7 +44,7 @@ public:
     {
         const int type = Vect_read_next_line(&map_, points_, cats_);
         if (type == -1)
-            G_fatal_error(_("Unable to read vector map <%s>"), Vect_get_full_name(&map_));
+            bad_request(_("Unable to read vector map <%s>"), Vect_get_full_name(&map_));
         return type < 0 ? 0 : type;
     }
     const line_pnts &points() const { return *points_; }
@@ -60,13 +64,13 @@ public:
     {
         info_ = Vect_get_field(&map, layer);
         if (!info_)
-            G_fatal_error(_("%s: vector map <%s> has no attribute table in layer "
+            bad_request(_("%s: vector map <%s> has no attribute table in layer "
                             "%d (connect one with v.db.connect)"),
                           what, Vect_get_full_name(&map), layer);
         driver_ = db_start_driver_open_database(info_->driver,
                                                 Vect_subst_var(info_->database, &map));
         if (!driver_)
-            G_fatal_error(_("Unable to open database <%s> by driver <%s>"),
+            bad_request(_("Unable to open database <%s> by driver <%s>"),
                           info_->database, info_->driver);
     }
     ~LayerTable()
@@ -100,7 +104,7 @@ bool column_number(dbTable *table, int k, const char *name, double &out)
         out = db_get_value_double(value);
         return true;
     default:
-        G_fatal_error(_("Column <%s> is not numeric"), name);
+        bad_request(_("Column <%s> is not numeric"), name);
     }
 }
 
@@ -111,7 +115,7 @@ std::vector<int> selected_categories(LayerTable &table, const std::string &where
     const int n = db_select_int(table.driver(), table.info().table, table.info().key,
                                 where.c_str(), &cats);
     if (n < 0)
-        G_fatal_error(_("where=%s: the query failed on table <%s>"), where.c_str(),
+        bad_request(_("where=%s: the query failed on table <%s>"), where.c_str(),
                       table.info().table);
     std::vector<int> selected(cats, cats + n);
     G_free(cats);
@@ -132,7 +136,7 @@ std::map<int, std::vector<LogRow>> logged_intervals(LayerTable &table,
     dbCursor cursor;
     if (db_open_select_cursor(table.driver(), &statement, &cursor, DB_SEQUENTIAL) !=
         DB_OK)
-        G_fatal_error(_("Unable to read the logs (%s): check log_top=, "
+        bad_request(_("Unable to read the logs (%s): check log_top=, "
                         "log_bottom= and log_class= against the columns of "
                         "table <%s>"),
                       sql.c_str(), table.info().table);
@@ -145,7 +149,7 @@ std::map<int, std::vector<LogRow>> logged_intervals(LayerTable &table,
     for (;;) {
         int more = 0;
         if (db_fetch(&cursor, DB_NEXT, &more) != DB_OK)
-            G_fatal_error(_("Unable to fetch a row of table <%s>"), table.info().table);
+            bad_request(_("Unable to fetch a row of table <%s>"), table.info().table);
         if (!more)
             break;
         double v[4];
@@ -198,7 +202,7 @@ BoreholeInput read_boreholes(const RenderRequest &request)
         in.points.push_back(p);
     }
     if (in.points.empty())
-        G_fatal_error(_("boreholes=%s has no points in layer %d%s (it holds %zu "
+        bad_request(_("boreholes=%s has no points in layer %d%s (it holds %zu "
                         "lines or boundaries): boreholes= needs a vector map of "
                         "points"),
                       request.boreholes.c_str(), layer,
@@ -228,7 +232,7 @@ std::vector<glm::dvec3> read_path_line(const std::string &name, bool &is_3d)
         }
     }
     if (line.empty())
-        G_fatal_error(_("path_map=%s has no lines: path=line needs a vector map "
+        bad_request(_("path_map=%s has no lines: path=line needs a vector map "
                         "of lines (v.in.ascii, v.digit)"),
                       name.c_str());
     if (lines > 1)
@@ -253,7 +257,7 @@ std::vector<sbrt::FencePanel> read_fence(const std::string &name)
                 panels.push_back({{p.x[k], p.y[k]}, {p.x[k + 1], p.y[k + 1]}});
     }
     if (panels.empty())
-        G_fatal_error(_("fence=%s has no lines (it holds %zu points): a fence "
+        bad_request(_("fence=%s has no lines (it holds %zu points): a fence "
                         "diagram needs a vector map of lines"),
                       name.c_str(), points);
     return panels;

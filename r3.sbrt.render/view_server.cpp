@@ -11,162 +11,60 @@
 #include <cstring>
 #include <memory>
 #include <optional>
-#include <set>
-#include <sstream>
+#include <new>
 #include <string>
 
 #include <glm/geometric.hpp>
 
-#include "backend.hpp"
-#include "util/error.hpp"
-#include "material_colors.hpp"
+#include "image_memory.hpp"
 #include "option_answers.hpp"
-#include "prepared_scene.hpp"
-#include "sbrt_store.hpp"
-#include "scene_camera.hpp"
-#include "scene_setup.hpp"
-#include "texture_input.hpp"
+#include "render_session.hpp"
+#include "request_error.hpp"
+#include "util/error.hpp"
 
 namespace {
 
-/// Options that move the camera, light the scene or name outputs: the
-/// prepared scene does not depend on them (sections face the camera: their
-/// planes are compared as computed; the shading is set for every frame).
-const std::set<std::string> camera_keys = {
-    "size", "position", "target", "azimuth", "elevation", "distance", "fov",
-    "ortho_height", "view", "output", "material", "hit_elevation", "depth", "png", "-n",
-    "light", "ambient", "background", "normals", "kernel", "smooth"};
+/// The longest request line read whole: anything longer is answered with
+/// an error and skipped (a frame request is a few hundred bytes).
+constexpr size_t MAX_LINE = 1 << 16;
+/// The longest error reply (a message quotes values of the request).
+constexpr size_t MAX_REPLY = 2000;
 
-/// The words of a request that shape its scene, in one string.
-std::string scene_words(const std::vector<std::string> &words)
-{
-    std::vector<std::string> kept;
-    for (const std::string &word : words)
-        if (!camera_keys.count(word.substr(0, word.find('='))))
-            kept.push_back(word);
-    std::sort(kept.begin(), kept.end());
-    std::string key;
-    for (const std::string &word : kept)
-        key += word + '\n';
-    return key;
-}
+/// Options that name outputs of the command line: a view server's frame
+/// is its reply.
+const char *const OUTPUT_KEYS[] = {"output", "material", "hit_elevation", "depth", "png",
+                                   "strds", "video"};
 
-/// The planes and split direction the camera gives the scene, in one
-/// string (exact: hexadecimal floats).
-std::string camera_dependent_scene(const RenderRequest &request, const sbrt::Camera &camera)
-{
-    std::ostringstream key;
-    key << std::hexfloat;
-    for (const sbrt::ClipPlane &p : clip_planes(request, camera))
-        key << p.point.x << ' ' << p.point.y << ' ' << p.point.z << ' ' << p.normal.x
-            << ' ' << p.normal.y << ' ' << p.normal.z << '\n';
-    if (request.split_logs)
-        key << camera.du().x << ' ' << camera.du().y << '\n';
-    return key.str();
-}
-
-/// \brief The server's state: the model as read, the framing tracer, the
-/// drape and the prepared renderer, each rebuilt only when what it
-/// depends on changes.
+/// \brief The server's session and the replies it writes.
 class ViewServer {
 public:
     explicit ViewServer(FILE *out) : out_(out) {}
 
-    void render(const RenderRequest &request, const std::vector<std::string> &words);
+    void render(const RenderRequest &request);
     void classes(const RenderRequest &request);
+    void error(const std::string &message);
 
 private:
-    void load(const RenderRequest &request);
-    void prepare(const RenderRequest &request, const sbrt::Camera &camera,
-                 const std::string &key);
-
     FILE *out_;
-    struct Cell_head region_;
-    std::string model_key_;
-    std::unique_ptr<sbrt::Model> model_; ///< as read, colours applied
-    double framing_zexag_ = 0;
-    std::unique_ptr<sbrt::Tracer> framing_; ///< its box only
-    std::string drape_key_;
-    std::unique_ptr<sbrt::Drape> drape_;
-    std::string context_key_;
-    std::unique_ptr<sbrt_gl::GlContext> context_;
-    // the prepared scene: the backend refers to the request and renderer
-    std::string scene_key_;
-    std::unique_ptr<RenderRequest> scene_request_;
-    std::unique_ptr<sbrt::Renderer> renderer_;
-    std::unique_ptr<Backend> backend_;
+    RenderSession session_;
 };
 
-void ViewServer::load(const RenderRequest &request)
+void ViewServer::render(const RenderRequest &request)
 {
-    const std::string key = request.input + '\n' + request.color + '\n' + request.rules;
-    if (model_ && key == model_key_)
-        return;
-    backend_.reset();
-    renderer_.reset();
-    drape_.reset();
-    framing_.reset();
-    scene_key_.clear();
-    drape_key_.clear();
-    model_ = std::make_unique<sbrt::Model>(sbrt_grass::read_sbrt_map(request.input.c_str()));
-    apply_color_option(request, *model_);
-    model_key_ = key;
-}
-
-void ViewServer::prepare(const RenderRequest &request, const sbrt::Camera &camera,
-                         const std::string &key)
-{
-    backend_.reset();
-    renderer_.reset();
-    std::ostringstream drape_key;
-    drape_key << std::hexfloat << request.texture_blend;
-    for (const std::string &map : request.texture)
-        drape_key << ',' << map;
-    if (drape_key.str() != drape_key_) {
-        drape_.reset();
-        drape_key_.clear();
-        if (!request.texture.empty())
-            drape_ = std::make_unique<sbrt::Drape>(*model_, read_texture(request.texture),
-                                                   request.texture_blend);
-        drape_key_ = drape_key.str();
-    }
-    PreparedScene prepared = prepare_scene(request, *model_, camera);
-    if (request.backend != context_key_) {
-        context_.reset(); // before another on the same display
-        context_key_.clear();
-        context_ = choose_gl_context(request);
-        context_key_ = request.backend;
-    }
-    scene_request_ = std::make_unique<RenderRequest>(request);
-    renderer_ = std::make_unique<sbrt::Renderer>(
-        std::move(prepared.model), request.zexag, std::move(prepared.scene),
-        make_shading(request, drape_.get()),
-        sbrt::RenderSettings{unsigned(request.threads), true, 0});
-    backend_ = std::make_unique<Backend>(*scene_request_, *renderer_, context_.get());
-    scene_key_ = key;
-}
-
-void ViewServer::render(const RenderRequest &request, const std::vector<std::string> &words)
-{
-    load(request);
-    if (!framing_ || framing_zexag_ != request.zexag) {
-        // the camera frames the model as read, whatever is hidden or cut
-        sbrt::Scene box_only;
-        box_only.skip_empty_space = false;
-        framing_ = std::make_unique<sbrt::Tracer>(*model_, request.zexag, box_only);
-        framing_zexag_ = request.zexag;
-    }
     const auto start = std::chrono::steady_clock::now();
-    G_get_window(&region_); // a top view's, as g.region set it now
-    const sbrt::Camera camera = make_camera(request, *framing_, region_);
-    const std::string key = scene_words(words) + camera_dependent_scene(request, camera);
-    if (!renderer_ || key != scene_key_)
-        prepare(request, camera, key);
-    renderer_->set_shading(make_shading(request, drape_.get()));
-
+    struct Cell_head region;
+    G_get_window(&region); // a top view's, as g.region set it now
+    session_.load(request, region);
+    const sbrt::Camera camera = session_.cameras(request, region).front();
     const int rows = camera.rows(), cols = camera.cols();
+    // the frame is kept whole for the reply
+    sbrt::ImageNeeds needs;
+    needs.kernel_normals = request.normals == sbrt::Normals::kernel;
+    needs.whole_image_bytes_per_pixel = 3;
+    sbrt::check_image_fits(rows, cols, needs);
+    session_.prepare(request, camera, false);
     std::vector<uint8_t> rgb(size_t(rows) * size_t(cols) * 3);
-    backend_->render(camera, sbrt::Outputs{}, [&](const sbrt::Band &band) {
+    session_.render(camera, sbrt::Outputs{}, [&](const sbrt::Band &band) {
         std::copy(band.rgb.begin(), band.rgb.end(),
                   rgb.begin() + long(band.first_row) * cols * 3);
     });
@@ -176,9 +74,10 @@ void ViewServer::render(const RenderRequest &request, const std::vector<std::str
 
     // the camera as azimuth=, elevation=, distance= and target=: the point
     // of its axis nearest the model's centre (what a framed view looks at)
+    const sbrt::CoordinateFrame &frame = session_.frame();
     const glm::dvec3 eye = camera.origin(), forward = camera.forward();
-    const glm::dvec3 at = eye + forward * glm::dot(framing_->centre() - eye, forward);
-    const glm::dvec3 target = framing_->unexaggerate(at);
+    const glm::dvec3 at = eye + forward * glm::dot(frame.centre() - eye, forward);
+    const glm::dvec3 target = frame.unexaggerate(at);
     double azimuth = std::atan2(-forward.x, -forward.y) * 180 / M_PI;
     if (azimuth < 0)
         azimuth += 360;
@@ -193,17 +92,79 @@ void ViewServer::render(const RenderRequest &request, const std::vector<std::str
 
 void ViewServer::classes(const RenderRequest &request)
 {
-    load(request);
-    const sbrt::Frame &f = model_->frame();
+    struct Cell_head region;
+    G_get_window(&region);
+    RenderRequest whole = request; // every block, whatever the view
+    whole.view.kind = sbrt::ViewKind::perspective;
+    session_.load(whole, region);
+    const sbrt::Model &model = session_.model();
+    const sbrt::Frame &f = model.frame();
     std::fprintf(out_, "model %.17g %.17g %.17g %.17g %.17g %.17g\n", f.north, f.south,
                  f.east, f.west, f.bottom, f.top);
-    std::fprintf(out_, "classes %zu\n", model_->materials().size());
-    for (const sbrt::Material &m : model_->materials()) {
+    std::fprintf(out_, "classes %zu\n", model.materials().size());
+    for (const sbrt::Material &m : model.materials()) {
         std::string label = m.label;
         std::replace(label.begin(), label.end(), '\n', ' ');
         std::fprintf(out_, "%d %d %d %d %s\n", m.id, m.red, m.green, m.blue, label.c_str());
     }
     std::fflush(out_);
+}
+
+void ViewServer::error(const std::string &message)
+{
+    std::string line = shortened(message, MAX_REPLY); // one line: the protocol's
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    std::replace(line.begin(), line.end(), '\r', ' ');
+    std::fprintf(out_, "error %s\n", line.c_str());
+    std::fflush(out_);
+}
+
+/// The request of one line's words (the verb taken off), or an error.
+RenderRequest read_request(OptionAnswers &answers, const RenderOptions &options,
+                           std::vector<std::string> &words)
+{
+    for (const char *key : OUTPUT_KEYS)
+        for (const std::string &word : words)
+            if (word.compare(0, std::strlen(key) + 1, std::string(key) + "=") == 0)
+                bad_request(_("%s= names an output of the command line; the view "
+                              "server's frame is its reply"),
+                            key);
+    answers.answer(words);
+    if (!options.input->answer)
+        bad_request(_("the request names no input="));
+    ParsedRequest parsed = parse_render_request(options);
+    if (!parsed.request)
+        throw sbrt::Error(parsed.error);
+    // one frame of a view: what makes sequences and tiles, and rules from
+    // stdin (the requests' stream), is the command line's
+    if (parsed.request->frames != 1 || parsed.request->tile || parsed.request->rules == "-")
+        bad_request(_("frames=, tile= and rules=- are for the command line, not the "
+                      "view server"));
+    return std::move(*parsed.request);
+}
+
+/// Serves one request line (without its end of line); false at "quit".
+bool serve_line(ViewServer &server, OptionAnswers &answers, const RenderOptions &options,
+                const std::string &text)
+{
+    if (text.find('\0') != std::string::npos)
+        bad_request(_("the request holds a NUL byte; a request is one line of text"));
+    std::vector<std::string> words = split_words(text);
+    if (words.empty())
+        bad_request(_("empty request: render key=value..., classes input=NAME or quit"));
+    if (words[0] == "quit")
+        return false;
+    if (words[0] != "render" && words[0] != "classes")
+        bad_request(_("unknown request <%s>: render, classes or quit"),
+                    shortened(words[0], 100).c_str());
+    const std::string verb = words[0];
+    words.erase(words.begin());
+    const RenderRequest request = read_request(answers, options, words);
+    if (verb == "render")
+        server.render(request);
+    else
+        server.classes(request);
+    return true;
 }
 
 } // namespace
@@ -212,45 +173,37 @@ void serve_views(const RenderOptions &options, FILE *in, FILE *out)
 {
     OptionAnswers answers(options.input, options.plain_png);
     ViewServer server(out);
-    char *line = nullptr;
-    size_t capacity = 0;
-    while (getline(&line, &capacity, in) > 0) {
-        std::vector<std::string> words;
-        try {
-            std::string text = line;
-            while (!text.empty() && (text.back() == '\n' || text.back() == '\r'))
-                text.pop_back();
-            words = split_words(text);
-            if (words.empty())
-                continue;
-            if (words[0] == "quit")
-                break;
-            if (words[0] != "render" && words[0] != "classes")
-                sbrt::fail("unknown request <" + words[0] + ">: render, classes or quit");
-            const std::string verb = words[0];
-            words.erase(words.begin());
-            answers.answer(words);
-            if (!options.input->answer)
-                sbrt::fail("the request names no input=");
-            const RenderRequest request = read_render_options(options);
-            // one frame of a view: what makes sequences and tiles, and
-            // rules from stdin (the requests' stream), is the command line's
-            if (request.frames != 1 || request.tile || request.rules == "-")
-                sbrt::fail("frames=, tile= and rules=- are for the command line, "
-                           "not the view server");
-            if (verb == "render")
-                server.render(request, words);
+    std::string text;
+    for (;;) {
+        // one line, read whole up to MAX_LINE bytes; the rest of a longer
+        // one is skipped
+        text.clear();
+        bool too_long = false;
+        int c;
+        while ((c = std::fgetc(in)) != EOF && c != '\n') {
+            if (text.size() < MAX_LINE)
+                text.push_back(char(c));
             else
-                server.classes(request);
+                too_long = true;
         }
-        catch (const sbrt::Error &e) {
-            // answered, and the server goes on (what the command line
-            // stops at with G_fatal_error ends the server too)
-            std::string message = e.what(); // one line: the protocol's
-            std::replace(message.begin(), message.end(), '\n', ' ');
-            std::fprintf(out, "error %s\n", message.c_str());
-            std::fflush(out);
+        if (c == EOF && text.empty())
+            break;
+        if (!text.empty() && text.back() == '\r')
+            text.pop_back();
+        try {
+            if (too_long)
+                bad_request(_("the request line is longer than %zu bytes"), MAX_LINE);
+            if (!serve_line(server, answers, options, text))
+                break;
         }
+        catch (const std::bad_alloc &) {
+            server.error(_("out of memory: ask for a smaller image (size=)"));
+        }
+        catch (const std::exception &e) {
+            // answered, and the server goes on
+            server.error(e.what());
+        }
+        if (c == EOF)
+            break;
     }
-    std::free(line);
 }

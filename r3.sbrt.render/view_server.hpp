@@ -23,14 +23,15 @@
 ///     anything wrong              ->  "error MESSAGE\n"
 ///
 /// A request's words are those of the command line and are read by the
-/// same code (read_render_options), so a frame is the image the same
-/// command renders; output=, png= and the other maps are ignored, frames=,
-/// tile= and rules=- refused. A camera, light, ambient, background or
-/// normals change keeps the prepared scene; any other option prepares it
-/// again. AZ, EL,
-/// DIST and TX,TY,TZ are the camera as azimuth=, elevation=, distance=
-/// and target= (the defaults resolved). Errors the command line would
-/// also stop at end the server (the message on stderr, as there).
+/// same code (parse_render_request) into the same render session, so a
+/// frame is the image the same command renders; output=, png= and the other
+/// outputs, frames=, tile= and rules=- are refused, as are an option given
+/// twice, an empty line, a NUL byte and a line over 64 KiB. A camera,
+/// light, ambient, background or normals change keeps the prepared scene;
+/// any other option prepares it again. AZ, EL, DIST and TX,TY,TZ are the
+/// camera as azimuth=, elevation=, distance= and target= (the defaults
+/// resolved). Every line gets a reply: a frame, the classes or an error,
+/// after which the server goes on.
 void serve_views(const RenderOptions &options, FILE *in, FILE *out);
 
 #endif

@@ -59,6 +59,13 @@ else
     echo "fuzz (SBRT reader): failed (log $log/fuzz.log)"
 fi
 
+# 3b. lib/sbrt's stages include only themselves and the stages below: one test
+if tools/check_stage_order.sh >"$log/stage_order.log" 2>&1; then
+    passed=$((passed + 1)); echo "stage order of lib/sbrt: passed"
+else
+    failed=$((failed + 1)); cat "$log/stage_order.log"; echo "stage order of lib/sbrt: failed"
+fi
+
 # 4. both modules under valgrind's memcheck on a small model: one test a run
 tools/valgrind_modules.sh >"$log/valgrind.log" 2>&1
 p=$(sed -n 's/^valgrind: \([0-9]*\) passed.*/\1/p' "$log/valgrind.log")

@@ -10,7 +10,7 @@
 
 #include "shader_sources.hpp"
 #include "tracing/cpu_tracing.hpp"
-#include "tracing/gpu_overlays.hpp"
+#include "gpu/gpu_overlays.hpp"
 #include "util/error.hpp"
 
 #define SBRT_STRINGIFY(x) #x

@@ -13,7 +13,7 @@
 
 #include "gl_objects.hpp"
 #include "tracing/tracer.hpp"
-#include "tracing/gpu_memory_layout.hpp"
+#include "gpu/gpu_memory_layout.hpp"
 
 namespace sbrt_gl {
 

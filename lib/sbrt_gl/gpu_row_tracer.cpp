@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "tracing/gpu_overlays.hpp"
+#include "gpu/gpu_overlays.hpp"
 #include "util/parallel.hpp"
 
 namespace sbrt_gl {

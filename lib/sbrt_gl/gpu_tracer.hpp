@@ -18,10 +18,10 @@
 
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
-#include "tracing/gpu_layout.hpp"
+#include "gpu/gpu_layout.hpp"
 #include "tracing/cpu_tracing.hpp"
-#include "tracing/gpu_memory_layout.hpp"
-#include "tracing/gpu_overlays.hpp"
+#include "gpu/gpu_memory_layout.hpp"
+#include "gpu/gpu_overlays.hpp"
 #include "tracing/hit_image.hpp"
 
 namespace sbrt_gl {

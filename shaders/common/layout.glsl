@@ -1,5 +1,5 @@
 // Blocks shared by the ray casting shaders; mirrored in C++ by
-// lib/sbrt/tracing/gpu_layout.hpp (static_asserts there, offsets checked by the
+// lib/sbrt/gpu/gpu_layout.hpp (static_asserts there, offsets checked by the
 // unit test GpuLayout.MatchesTheShader). Local frame: x in cells from the
 // west edge, y in cells from the south edge, z in tb_res steps from the
 // bottom, vertical exaggeration applied.

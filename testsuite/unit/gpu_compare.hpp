@@ -66,7 +66,7 @@ inline Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
                          const Camera &camera, size_t *over_budget = nullptr,
                   uint32_t budget = GPU_LOOP_BUDGET)
 {
-    return compare(gpu, tracer, camera, 1e-4 * 2 * tracer.radius(), over_budget,
+    return compare(gpu, tracer, camera, 1e-4 * 2 * tracer.frame().radius(), over_budget,
                    budget);
 }
 

@@ -33,10 +33,10 @@ TEST(CameraPath, OrbitKeepsDistanceAndTurns)
     View v;
     v.position = glm::dvec3(-500, -400, 900);
     v.target = glm::dvec3(300, 350, 100);
-    const std::vector<Camera> cams = orbit_cameras(v, t, 30, 40, 4, 360);
+    const std::vector<Camera> cams = orbit_cameras(v, t.model(), t.frame(), 30, 40, 4, 360);
     ASSERT_EQ(cams.size(), 4u);
-    const glm::dvec3 target = t.exaggerate(*v.target);
-    const glm::dvec3 first = t.exaggerate(*v.position);
+    const glm::dvec3 target = t.frame().exaggerate(*v.target);
+    const glm::dvec3 first = t.frame().exaggerate(*v.position);
     for (int k = 0; k < 4; ++k) {
         EXPECT_NEAR(glm::length(cams[size_t(k)].origin() - target),
                     glm::length(first - target), 1e-9);
@@ -44,7 +44,7 @@ TEST(CameraPath, OrbitKeepsDistanceAndTurns)
         EXPECT_LT(glm::length(cams[size_t(k)].origin() - want), 1e-9) << k;
     }
     v.kind = ViewKind::top;
-    EXPECT_THROW(orbit_cameras(v, t, 30, 40, 4, 360), Error);
+    EXPECT_THROW(orbit_cameras(v, t.model(), t.frame(), 30, 40, 4, 360), Error);
 }
 
 TEST(CameraPath, KeyframesAreParsedAndPassedThrough)
@@ -100,13 +100,13 @@ TEST(CameraPath, SweepStartsOutsideAndCutsEvenly)
     const Model m = sbrt_test::geology(20, 24, 12);
     const Tracer t(m, 1.0);
     const ClipPlane up{{0, 0, 0}, {0, 0, 2}};
-    const double top = t.top_elevation(), bottom = m.frame().bottom;
+    const double top = t.frame().top_elevation(), bottom = m.frame().bottom;
     for (int k = 1; k <= 4; ++k) {
-        const ClipPlane p = swept_plane(up, t, k, 4);
+        const ClipPlane p = swept_plane(up, t.frame(), k, 4);
         EXPECT_EQ(p.normal, up.normal);
         EXPECT_NEAR(p.point.z, top - (top - bottom) * (k - 1) / 4, 1e-9) << k;
     }
-    EXPECT_THROW(swept_plane(up, t, 5, 4), Error);
+    EXPECT_THROW(swept_plane(up, t.frame(), 5, 4), Error);
 }
 
 TEST(CameraPath, SurfaceElevationIsTheStackTop)
@@ -121,11 +121,11 @@ TEST(CameraPath, SurfaceElevationIsTheStackTop)
                 continue;
             const double want =
                 f.bottom + double(m.intervals()[m.stack_end(cell) - 1].top) * f.tb_res();
-            EXPECT_NEAR(surface_elevation(t, f.west + (col + 0.5) * f.ew_res(),
+            EXPECT_NEAR(surface_elevation(t.model(), t.frame(), f.west + (col + 0.5) * f.ew_res(),
                                           f.north - (row + 0.5) * f.ns_res()),
                         want, 1e-9);
         }
-    EXPECT_EQ(surface_elevation(t, f.west - 1, f.north + 1), t.top_elevation());
+    EXPECT_EQ(surface_elevation(t.model(), t.frame(), f.west - 1, f.north + 1), t.frame().top_elevation());
 }
 
 TEST(CameraWindow, TilesHaveTheWholeImagesRaysAndPixels)
@@ -137,7 +137,7 @@ TEST(CameraWindow, TilesHaveTheWholeImagesRaysAndPixels)
     const int rows = 30, cols = 44;
     for (const ViewKind kind : {ViewKind::perspective, ViewKind::orthographic}) {
         v.kind = kind;
-        const Camera whole = view_camera(v, t, rows, cols);
+        const Camera whole = view_camera(v, t.model(), t.frame(), rows, cols);
         const Camera tile = whole.window(7, 13, 20, 17);
         EXPECT_TRUE(tile.is_window());
         EXPECT_FALSE(whole.is_window());
@@ -179,7 +179,7 @@ TEST(CameraWindow, TilesHaveTheWholeImagesRaysAndPixels)
                     ASSERT_EQ(all.rgb[3 * i + k], part.rgb[3 * j + k]);
             }
     }
-    const Camera whole = view_camera(v, t, rows, cols);
+    const Camera whole = view_camera(v, t.model(), t.frame(), rows, cols);
     EXPECT_THROW(whole.window(20, 11, 0, 5), Error);
     EXPECT_THROW(whole.window(0, 5, 40, 5), Error);
 }

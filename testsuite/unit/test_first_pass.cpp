@@ -30,7 +30,7 @@ double expect_sound_bounds(const Tracer &tracer, const Camera &camera, int tile,
     const FirstHitBounds bounds(tracer, camera, tile, budget, 2);
     EXPECT_EQ(bounds.tiles(), size_t((camera.rows() + tile - 1) / tile) *
                                   size_t((camera.cols() + tile - 1) / tile));
-    const double tolerance = 1e-9 * 2 * tracer.radius();
+    const double tolerance = 1e-9 * 2 * tracer.frame().radius();
     size_t late = 0, differ = 0, hits = 0;
     double skipped = 0;
     for (int row = 0; row < camera.rows(); ++row)
@@ -60,7 +60,7 @@ Camera view(const Tracer &t, double azimuth, double elevation, int rows = 72,
 {
     const double a = glm::radians(azimuth), e = glm::radians(elevation);
     const glm::dvec3 dir(std::sin(a) * std::cos(e), std::cos(a) * std::cos(e), std::sin(e));
-    return Camera::perspective(t.centre() + 2.2 * t.radius() * dir, t.centre(), 40, rows,
+    return Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() * dir, t.frame().centre(), 40, rows,
                                cols);
 }
 
@@ -77,8 +77,8 @@ TEST(FirstPass, BoundsNeverPassTheHitFromAnyCamera)
                     expect_sound_bounds(tracer, view(tracer, azimuth, elevation), tile,
                                         budget);
     // parallel rays, and rows of an image traced as an image of their own
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     const glm::dvec3 side = c + size * glm::dvec3(0.6, -0.5, 0.4);
     expect_sound_bounds(tracer, Camera::orthographic(side, c, size, 60, 80), 8, 32);
     const Frame &f = m.frame();
@@ -87,7 +87,7 @@ TEST(FirstPass, BoundsNeverPassTheHitFromAnyCamera)
     expect_sound_bounds(tracer, view(tracer, 20, 30, 200, 96).rows_window(57, 41), 8, 32);
     // from inside the model's box, in the cave of geology()
     const glm::dvec3 cave(f.west + 28 * f.ew_res(), f.north - 24 * f.ns_res(),
-                          tracer.exaggerate({0, 0, f.bottom + 10 * f.tb_res()}).z);
+                          tracer.frame().exaggerate({0, 0, f.bottom + 10 * f.tb_res()}).z);
     const glm::dvec3 ahead = cave + glm::dvec3(0.2, 1, 0.05);
     expect_sound_bounds(tracer, Camera::perspective(cave, ahead, 90, 40, 60), 8, 32);
 }
@@ -98,7 +98,7 @@ TEST(FirstPass, HiddenStrataPlanesAndTranslucency)
     const Model m = hide_materials(full, {1, 3, 5}); // floating strata
     const Tracer probe(m, 1.0);
     Scene cut;
-    cut.planes = {{probe.centre(), {1, 0.3, 0.2}}, {probe.centre(), {0, -1, 0.5}}};
+    cut.planes = {{probe.frame().centre(), {1, 0.3, 0.2}}, {probe.frame().centre(), {0, -1, 0.5}}};
     const Tracer planes(m, 1.0, cut);
     expect_sound_bounds(planes, view(planes, 60, 25), 8, 32);
     expect_sound_bounds(planes, view(planes, 250, 10), 8, 32);
@@ -119,9 +119,9 @@ TEST(FirstPass, SkipsMostOfTheWalkDownOntoTheModel)
     // inside the box, so the share of t skipped is the share of the walk
     const Frame &f = m.frame();
     const glm::dvec3 eye(f.west + 2 * f.ew_res(), f.south + 2 * f.ns_res(),
-                         tracer.corner(7).z);
+                         tracer.frame().corner(7).z);
     const Camera down = Camera::perspective(
-        eye, tracer.exaggerate({f.east, f.north, f.bottom}), 30, 60, 80);
+        eye, tracer.frame().exaggerate({f.east, f.north, f.bottom}), 30, 60, 80);
     const double skipped = expect_sound_bounds(tracer, down, 8, 32);
     std::printf("[ first pass ] the bounds skip %.1f %% of t to the hits\n", 100 * skipped);
     EXPECT_GT(skipped, 0.8);

@@ -29,8 +29,8 @@
 #include "scene/hidden_materials.hpp"
 #include "shading/drape.hpp"
 #include "gpu_compare.hpp"
-#include "tracing/gpu_memory_layout.hpp"
-#include "tracing/gpu_overlays.hpp"
+#include "gpu/gpu_memory_layout.hpp"
+#include "gpu/gpu_overlays.hpp"
 #include "renderer.hpp"
 #include "test_support.hpp"
 
@@ -192,8 +192,8 @@ TEST_P(Gpu, AgreesWithTheCpuOnStacksLongerThanACountByte)
     ASSERT_GT(m.index().max_size(), 255u);
     const Tracer tracer(m, 0.2);
     sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     for (const glm::dvec3 &from : {glm::dvec3(-0.6, -0.7, 0.5), glm::dvec3(0.5, 0.4, 0.3)}) {
         size_t over = 0;
         const Agreement a =
@@ -213,8 +213,8 @@ TEST_P(Gpu, AgreesWithTheCpuTracerFromManyCameras)
         const Model &m = zexag == 1.0 ? compact : wide;
         const Tracer tracer(m, zexag);
         sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
-        const glm::dvec3 c = tracer.centre(), lo = tracer.corner(0),
-                         hi = tracer.corner(7);
+        const glm::dvec3 c = tracer.frame().centre(), lo = tracer.frame().corner(0),
+                         hi = tracer.frame().corner(7);
         const double size = glm::length(hi - lo);
         struct View {
             const char *name;
@@ -269,8 +269,8 @@ TEST_P(Gpu, AgreesWithClipPlanesAndHiddenMaterials)
     for (size_t n = 1; n <= planes.size(); ++n) {
         const Tracer tracer(m, 2.0, {planes.begin(), planes.begin() + n});
         sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
-        const glm::dvec3 c = tracer.centre();
-        const double size = 2 * tracer.radius();
+        const glm::dvec3 c = tracer.frame().centre();
+        const double size = 2 * tracer.frame().radius();
         size_t over = 0;
         const Agreement a = compare(
             gpu, tracer,
@@ -298,8 +298,8 @@ TEST_P(Gpu, AgreesOnTranslucentStrata)
     for (double zexag : {1.0, 3.0}) {
         const Tracer tracer(m, zexag, Scene{{}, tr, {}, 0, {}, {}, true});
         sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
-        const glm::dvec3 c = tracer.centre();
-        const double size = 2 * tracer.radius();
+        const glm::dvec3 c = tracer.frame().centre();
+        const double size = 2 * tracer.frame().radius();
         for (const Camera &camera :
              {Camera::perspective(c + glm::dvec3(0.5, -0.7, 0.45) * size, c, 40, 70, 90),
               sbrt_test::top_camera(m.frame(), m.frame().top + size)}) {
@@ -327,8 +327,8 @@ TEST_P(Gpu, AgreesOnRandomModels)
         const Model m = sbrt_test::build_model(v);
         const Tracer tracer(m, 2.0);
         sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
-        const glm::dvec3 c = tracer.centre();
-        const double size = 2 * tracer.radius();
+        const glm::dvec3 c = tracer.frame().centre();
+        const double size = 2 * tracer.frame().radius();
         for (double az = 0.3; az < 6.28; az += 1.1) {
             const glm::dvec3 eye =
                 c + size * glm::dvec3(std::sin(az), std::cos(az), 0.4 + 0.1 * seed);
@@ -381,8 +381,8 @@ TEST_P(Gpu, TheFirstPassBoundsTheTilesAsTheCpuDoes)
     const Model m = hide_materials(geology(48, 64, 30), {1, 2, 3});
     const Tracer tracer(m, 2.0);
     sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     const Camera camera = Camera::perspective(c + glm::dvec3(-0.5, -0.6, 0.4) * size, c, 40,
                                               90, 120);
     gpu.trace_image(camera, 2);
@@ -413,7 +413,7 @@ TEST_P(Gpu, TheFirstPassBoundsTheTilesAsTheCpuDoes)
                                view.forward[1] + ndc.x * view.du[1] + ndc.y * view.dv[1],
                                view.forward[2] + ndc.x * view.du[2] + ndc.y * view.dv[2]);
             const double got = (gpu_starts[tile] + t_eye) *
-                               glm::length(glm::dvec3(tracer.voxel_size()) * d);
+                               glm::length(glm::dvec3(tracer.frame().voxel_size()) * d);
             ++compared;
             close += std::fabs(got - want) <= 1e-3 * want + 0.05;
         }
@@ -431,8 +431,8 @@ TEST_P(Gpu, SkipsEmptySpaceWithThePyramidAndKeepsTheImage)
     ASSERT_GT(skipping.pyramid().levels(), 3);
     sbrt_gl::GpuTracer gpu_skipping(*context_, skipping, layout());
     sbrt_gl::GpuTracer gpu_walking(*context_, walking, layout());
-    const glm::dvec3 c = skipping.centre();
-    const double size = 2 * skipping.radius();
+    const glm::dvec3 c = skipping.frame().centre();
+    const double size = 2 * skipping.frame().radius();
     const Camera cameras[] = {
         Camera::perspective(c + glm::dvec3(-0.5, -0.6, 0.4) * size, c, 40, 90, 120),
         Camera::perspective(c + glm::dvec3(0.9, 0.2, 0.05) * size, c, 40, 90, 120),
@@ -461,8 +461,8 @@ TEST_P(Gpu, RaysOverTheBudgetAreTracedOnTheCpu)
     const Model m = geology(40, 50, 20);
     const Tracer tracer(m, 1.0);
     sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     const Camera camera = Camera::perspective(c + glm::dvec3(-0.4, -0.5, 0.3) * size,
                                               c, 40, 60, 80);
     size_t over = 0;
@@ -597,7 +597,7 @@ void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layo
     }
     const size_t n = want.material.size();
     size_t classes = 0, colours = 0, far = 0, hits = 0;
-    const double tolerance = 2e-5 * 2 * renderer.tracer().radius();
+    const double tolerance = 2e-5 * 2 * renderer.tracer().frame().radius();
     for (size_t i = 0; i < n; ++i) {
         classes += got.material[i] != want.material[i];
         for (int k = 0; k < 3; ++k)
@@ -653,9 +653,9 @@ TEST_P(Gpu, ASecondRunLoadsItsProgramsFromTheCache)
     const Model m = geology(20, 24, 16);
     const Renderer renderer(m, 2.0, Scene{}, Shading{}, {2, true, 16});
     const Tracer &t = renderer.tracer();
-    const Camera camera = Camera::perspective(t.centre() + 2.2 * t.radius() *
+    const Camera camera = Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() *
                                                                glm::normalize(glm::dvec3(1, -1, 1)),
-                                              t.centre(), 40, 31, 37);
+                                              t.frame().centre(), 40, 31, 37);
     const sbrt_gl::ProgramCache cache(sbrt_test::temp_dir("programs") + "/cache");
     bool from_cache = true;
     const Image first = gpu_image(*context_, layout(), renderer, camera, cache, from_cache);
@@ -742,24 +742,24 @@ TEST_P(Gpu, ShadesOnTheGpuAsTheCpuDoes)
     for (double azimuth : {30.0, 210.0}) {
         const glm::dvec3 dir(std::sin(azimuth * M_PI / 180), std::cos(azimuth * M_PI / 180), 0.6);
         expect_gpu_shading_as_cpu(*context_, layout(), plain,
-                                  Camera::perspective(t.centre() + 2.2 * t.radius() * dir,
-                                                      t.centre(), 40, 61, 83),
+                                  Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() * dir,
+                                                      t.frame().centre(), 40, 61, 83),
                                   "view " + std::to_string(azimuth));
     }
     // parallel rays from above
-    const glm::dvec3 c = t.centre();
+    const glm::dvec3 c = t.frame().centre();
     expect_gpu_shading_as_cpu(*context_, layout(), plain,
                               Camera::orthographic(c + glm::dvec3(300, -400, 500), c,
-                                                   1.5 * t.radius(), 47, 64),
+                                                   1.5 * t.frame().radius(), 47, 64),
                               "orthographic");
     // clip planes (their shading normals) and translucent strata (the veil)
     const Renderer cut(m, 2.0, sbrt_test::cut_and_translucent_scene(m), lit, {2, true, 16});
     const glm::dvec3 dir(0.8, -0.3, 0.5);
     expect_gpu_shading_as_cpu(*context_, layout(), cut,
-                              Camera::perspective(c + 2.2 * t.radius() * dir, c, 40, 61, 83),
+                              Camera::perspective(c + 2.2 * t.frame().radius() * dir, c, 40, 61, 83),
                               "planes and translucency");
     // the camera inside the model (faces none)
-    const glm::dvec3 inside = c + glm::dvec3(0, 0, -0.1 * t.radius());
+    const glm::dvec3 inside = c + glm::dvec3(0, 0, -0.1 * t.frame().radius());
     expect_gpu_shading_as_cpu(*context_, layout(), plain,
                               Camera::perspective(inside, inside + glm::dvec3(1, 0.3, -0.2),
                                                   70, 40, 50),
@@ -776,16 +776,16 @@ TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
         kernel.kernel = k;
         const Renderer renderer(m, 2.0, Scene{}, kernel, {2, true, 16});
         const Tracer &t = renderer.tracer();
-        const glm::dvec3 c = t.centre();
+        const glm::dvec3 c = t.frame().centre();
         const std::string what = "kernel " + std::to_string(k);
         expect_gpu_shading_as_cpu(*context_, layout(), renderer,
-                                  Camera::perspective(c + 2.2 * t.radius() *
+                                  Camera::perspective(c + 2.2 * t.frame().radius() *
                                                               glm::normalize(glm::dvec3(0.6, -0.5, 0.6)),
                                                       c, 40, 61, 83),
                                   what);
         expect_gpu_shading_as_cpu(*context_, layout(), renderer,
                                   Camera::orthographic(c + glm::dvec3(300, -400, 500), c,
-                                                       1.5 * t.radius(), 47, 64),
+                                                       1.5 * t.frame().radius(), 47, 64),
                                   what + " orthographic");
     }
     // smoothed (Gaussian sigma in pixels): two more passes on the GPU
@@ -798,9 +798,9 @@ TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
         const Renderer renderer(m, 2.0, Scene{}, smooth, {2, true, 16});
         const Tracer &t = renderer.tracer();
         expect_gpu_shading_as_cpu(*context_, layout(), renderer,
-                                  Camera::perspective(t.centre() + 2.2 * t.radius() *
+                                  Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() *
                                                                       glm::normalize(glm::dvec3(-0.5, -0.7, 0.5)),
-                                                      t.centre(), 40, 61, 83),
+                                                      t.frame().centre(), 40, 61, 83),
                                   "smoothed " + std::to_string(sigma));
     }
 }
@@ -869,7 +869,7 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
     const Tracer &t = renderer.tracer();
     ASSERT_TRUE(t.has_overlays());
     const Camera camera = Camera::perspective(
-        t.centre() + 2.2 * t.radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)), t.centre(),
+        t.frame().centre() + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)), t.frame().centre(),
         40, 61, 83);
     expect_gpu_shading_as_cpu(*context_, layout(), renderer, camera, "boreholes");
     // the boreholes show: the image differs from the model's alone
@@ -880,7 +880,7 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
     Scene split = split_through_gaps(scene);
     split.translucency = sbrt_test::cut_and_translucent_scene(m).translucency;
     // cut through one borehole's axis, the cut face towards the camera
-    const glm::dvec3 axis(split.boreholes[1].x, split.boreholes[1].y, t.centre().z);
+    const glm::dvec3 axis(split.boreholes[1].x, split.boreholes[1].y, t.frame().centre().z);
     split.planes = {{axis, {1, 0.5, 0}}};
     const Renderer halves(m, 2.0, split, Shading{}, {2, true, 16});
     const Camera close = Camera::perspective(
@@ -937,17 +937,17 @@ TEST_P(Gpu, ShadesADrapeOnTheGpuAsTheCpuDoes)
     // from above (tops) and low from the south-west (the staircase's walls)
     for (const glm::dvec3 dir : {glm::dvec3(0.3, -0.4, 1.2), glm::dvec3(-0.7, -0.6, 0.5)})
         expect_gpu_shading_as_cpu(*context_, layout(), renderer,
-                                  Camera::perspective(t.centre() + 2.2 * t.radius() *
+                                  Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() *
                                                                        glm::normalize(dir),
-                                                      t.centre(), 40, 61, 83),
+                                                      t.frame().centre(), 40, 61, 83),
                                   "drape", 1);
     // the drape's colours differ from the classes' (the test sees them)
     Shading plain = draped;
     plain.drape = nullptr;
     const Renderer undraped(m, 2.0, Scene{}, plain, {2, true, 16});
-    const Camera above = Camera::perspective(t.centre() + 2.2 * t.radius() *
+    const Camera above = Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() *
                                                               glm::normalize(glm::dvec3(0.3, -0.4, 1.2)),
-                                             t.centre(), 40, 61, 83);
+                                             t.frame().centre(), 40, 61, 83);
     const Image with = renderer.render_image(above, {}), without = undraped.render_image(above, {});
     size_t changed = 0;
     for (size_t i = 0; i < with.rgb.size(); ++i)
@@ -963,13 +963,13 @@ TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
     lit.light = Shading::light_from(230, 35);
     const Renderer alone(m, 2.0, overlays_alone(m), lit, {2, true, 16});
     const Tracer &t = alone.tracer();
-    const glm::dvec3 c = t.centre();
+    const glm::dvec3 c = t.frame().centre();
     const Camera views[] = {
-        Camera::perspective(c + 2.2 * t.radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.6)), c,
+        Camera::perspective(c + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.6)), c,
                             40, 61, 83),
-        Camera::perspective(c + 2.2 * t.radius() * glm::normalize(glm::dvec3(-0.8, 0.5, 0.3)), c,
+        Camera::perspective(c + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(-0.8, 0.5, 0.3)), c,
                             40, 61, 83),
-        Camera::orthographic(c + glm::dvec3(300, -400, 500), c, 1.5 * t.radius(), 47, 64),
+        Camera::orthographic(c + glm::dvec3(300, -400, 500), c, 1.5 * t.frame().radius(), 47, 64),
         // among the overlays, looking along the fence
         Camera::perspective(c + glm::dvec3(-0.45 * (f.east - f.west), -0.2 * (f.north - f.south), 0),
                             c + glm::dvec3(0, 0, -50), 70, 40, 50)};

@@ -64,7 +64,7 @@ Hit march(const sbrt_test::Voxels &v, const Model &m, const Translucency &tr,
     glm::dvec3 veil(0); // accumulated in double, stored as the tracer stores it
     double transmittance = 1;
     for (double t = step / 2; t < t_end; t += step) {
-        const int32_t id = voxel_class(v, tracer.unexaggerate(ray.origin + t * ray.direction));
+        const int32_t id = voxel_class(v, tracer.frame().unexaggerate(ray.origin + t * ray.direction));
         if (id == NULL_CLASS)
             continue;
         const uint32_t k = uint32_t(m.find_material(id));
@@ -130,8 +130,8 @@ TEST(Translucency, ObliqueRaysMatchAFineMarch)
     const Translucency tr = translucent(m, {-13, 1, 8}, 0.25, 5.0);
     const double zexag = 2;
     const Tracer tracer(m, zexag, Scene{{}, tr, {}, 0, {}, {}, true});
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     const Camera cam = Camera::perspective(c + size * glm::dvec3(0.7, -0.9, 0.6), c,
                                            40, 12, 16);
     const double step = 0.002;
@@ -290,7 +290,7 @@ TEST(Fence, CurtainShowsTheClassAtEachPoint)
             const glm::dvec3 target(p, f.bottom + (z - f.bottom) * zexag);
             const glm::dvec3 dir = glm::normalize(glm::dvec3(-normal, -0.05));
             const Hit hit = tracer.trace({target - 200.0 * dir, dir});
-            const int32_t want = voxel_class(v, tracer.unexaggerate(target));
+            const int32_t want = voxel_class(v, tracer.frame().unexaggerate(target));
             if (want == NULL_CLASS) {
                 // the ray may still hit the curtain lower down; never here
                 EXPECT_TRUE(!hit.is_hit() || hit.t > 200 + 1e-9);
@@ -351,8 +351,8 @@ TEST(Overlays, ImagesTraceOnlyWhereTheOverlaysProject)
     scene.draw_model = false;
     const Tracer tracer(m, 2.0, scene);
     ASSERT_EQ(tracer.overlay_bounds().size(), 3u);
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     size_t hits = 0;
     for (const Camera &cam :
          {Camera::perspective(c + glm::dvec3(0.6, -0.8, 0.5) * size, c, 40, 60, 80),
@@ -394,7 +394,7 @@ TEST(Fence, SegmentsFarOutsideTheFrameAreClippedNotOverflowed)
     near_scene.fence = {{{f.west - 1e3, y}, {f.east + 1e3, y}}};
     far_scene.draw_model = near_scene.draw_model = false;
     const Tracer a(m, 1.0, far_scene), b(m, 1.0, near_scene);
-    const glm::dvec3 c = a.centre();
+    const glm::dvec3 c = a.frame().centre();
     const Camera cam = Camera::perspective(c + glm::dvec3(30, -200, 80), c, 50, 30, 40);
     const auto ha = trace_image(a, cam, 2), hb = trace_image(b, cam, 2);
     size_t hits = 0;

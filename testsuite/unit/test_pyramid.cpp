@@ -16,7 +16,7 @@
 #include "gpu_compare.hpp"
 #include "scene/hidden_materials.hpp"
 #include "scene/minmax_pyramid.hpp"
-#include "scene/scene_pruning.hpp"
+#include "tracing/scene_pruning.hpp"
 
 using namespace sbrt;
 
@@ -56,7 +56,7 @@ void expect_same_image(const Model &m, Scene scene, const Camera &camera,
     const HitImage got = trace_image(skipping, camera, 2);
     const HitImage want = trace_image(plain, camera, 2);
     size_t differ = 0, hits = 0;
-    const double tolerance = 1e-9 * 2 * plain.radius();
+    const double tolerance = 1e-9 * 2 * plain.frame().radius();
     for (size_t i = 0; i < want.size(); ++i) {
         hits += want[i].is_hit();
         const bool same = got[i].material == want[i].material &&
@@ -76,7 +76,7 @@ Camera view(const Model &m, double azimuth, double elevation, double distance = 
     const Tracer t(m, 1.0);
     const double a = glm::radians(azimuth), e = glm::radians(elevation);
     const glm::dvec3 dir(std::sin(a) * std::cos(e), std::cos(a) * std::cos(e), std::sin(e));
-    return Camera::perspective(t.centre() + distance * t.radius() * dir, t.centre(), 40,
+    return Camera::perspective(t.frame().centre() + distance * t.frame().radius() * dir, t.frame().centre(), 40,
                                96, 128);
 }
 
@@ -121,7 +121,7 @@ TEST(EmptySpaceSkipping, HiddenStrataPlanesAndTranslucency)
     expect_same_image(m, {}, view(m, 30, 20));
     const Tracer t(m, 1.0);
     Scene cut;
-    cut.planes = {{t.centre(), {1, 0.3, 0.2}}, {t.centre(), {0, -1, 0.5}}};
+    cut.planes = {{t.frame().centre(), {1, 0.3, 0.2}}, {t.frame().centre(), {0, -1, 0.5}}};
     expect_same_image(m, cut, view(m, 60, 25));
     expect_same_image(m, cut, view(m, 250, 10), 3.0);
     Scene veil;
@@ -155,7 +155,7 @@ TEST(EmptySpaceSkipping, BoreholesAreWalkedUpToTheirLogsTops)
     const Borehole &b = scene.boreholes[3];
     const int x = int((b.x - frame.west) / frame.ew_res()), y = int((b.y - frame.south) / frame.ns_res());
     EXPECT_EQ(with.pyramid().node(0, x, y).high, b.stack.back().top);
-    EXPECT_LT(with.pyramid().node(0, x, y).high, float(with.top_local()) + 1e-3f);
+    EXPECT_LT(with.pyramid().node(0, x, y).high, float(with.frame().top_local()) + 1e-3f);
     for (double elevation : {35.0, 8.0, 1.0})
         for (double azimuth : {20.0, 200.0})
             expect_same_image(m, scene, view(m, azimuth, elevation));
@@ -173,7 +173,7 @@ TEST(EmptySpaceSkipping, BoreholesAreWalkedUpToTheirLogsTops)
     scene.boreholes = {in_hole};
     scene.borehole_radius = 1.2 * f.ew_res();
     const Tracer t(m, 1.0);
-    const glm::dvec3 axis(in_hole.x, in_hole.y, t.centre().z);
+    const glm::dvec3 axis(in_hole.x, in_hole.y, t.frame().centre().z);
     const Camera above = Camera::perspective(axis + glm::dvec3(3, 2, 40) * f.ew_res(), axis, 20,
                                              96, 128);
     expect_same_image(m, scene, above);
@@ -190,7 +190,7 @@ TEST(EmptySpaceSkipping, CellsCutAwayByAPlaneAreEmpty)
     const Model m = sbrt_test::geology(32, 32, 10);
     const Tracer t(m, 1.0);
     Scene cut; // keep the west half: x <= centre
-    cut.planes = {{t.centre(), {1, 0, 0}}};
+    cut.planes = {{t.frame().centre(), {1, 0, 0}}};
     const Tracer tracer(m, 1.0, cut);
     // columns 17..31 are cut away (16 touches the plane), the rest are
     // empty where the model is
@@ -207,10 +207,10 @@ TEST(ScenePruning, LeavesOutWhatNoRayReachesAndKeepsTheImage)
     const Model m = sbrt_test::geology(60, 90, 40);
     const Tracer probe(m, 1.0);
     Scene cut;
-    cut.planes = {{probe.centre(), {0, 1, 0}}}; // keep the south half
+    cut.planes = {{probe.frame().centre(), {0, 1, 0}}}; // keep the south half
     const Tracer tracer(m, 1.0, cut);
     // close up on the south-west corner: most cells are out of view
-    const glm::dvec3 corner = probe.corner(0);
+    const glm::dvec3 corner = probe.frame().corner(0);
     const Camera camera = Camera::perspective(
         corner + glm::dvec3(-300, -300, 400), corner + glm::dvec3(200, 200, 0), 30, 96, 128);
     const Pruning p = prune_for_view(tracer, camera);

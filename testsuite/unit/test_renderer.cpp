@@ -33,7 +33,7 @@ Camera view(const Tracer &t, double azimuth, double elevation, double distance =
 {
     const double a = glm::radians(azimuth), e = glm::radians(elevation);
     const glm::dvec3 dir(std::sin(a) * std::cos(e), std::cos(a) * std::cos(e), std::sin(e));
-    return Camera::perspective(t.centre() + distance * t.radius() * dir, t.centre(), 40,
+    return Camera::perspective(t.frame().centre() + distance * t.frame().radius() * dir, t.frame().centre(), 40,
                                rows, cols);
 }
 
@@ -121,10 +121,10 @@ TEST(Renderer, KernelNormalsAsTheReferenceThroughAWindowOfRows)
             // close up: a kernel cell spans many pixels
             expect_as_reference(renderer, view(t, 120, 45, 0.45), nullptr, what + " close");
             // parallel rays from above the top
-            const glm::dvec3 c = t.centre();
+            const glm::dvec3 c = t.frame().centre();
             expect_as_reference(renderer,
                                 Camera::orthographic(c + glm::dvec3(300, -400, 500), c,
-                                                     1.5 * t.radius(), 47, 64),
+                                                     1.5 * t.frame().radius(), 47, 64),
                                 nullptr, what + " orthographic");
         }
 }
@@ -153,7 +153,7 @@ TEST(Renderer, InsideTheModelAndWithHiddenStrataOverlaysAndPlanes)
     {
         const Renderer renderer(m, 2.0, Scene{}, kernel_shading(5, 0.8), {2, true, 5});
         const Tracer &t = renderer.tracer();
-        const glm::dvec3 inside = t.centre() + glm::dvec3(0, 0, -0.1 * t.radius());
+        const glm::dvec3 inside = t.frame().centre() + glm::dvec3(0, 0, -0.1 * t.frame().radius());
         expect_as_reference(renderer,
                             Camera::perspective(inside, inside + glm::dvec3(1, 0.3, -0.2),
                                                 70, 40, 50),

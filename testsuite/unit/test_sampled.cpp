@@ -31,7 +31,7 @@ Errors errors(const Tracer &tracer, const Camera &camera, const Sampling &s)
     const HitImage exact = trace_image(tracer, camera, 2);
     const HitImage sampled = sample_image(tracer, camera, s, 2);
     const double step_t = (s.fine_step > 0 ? s.fine_step : s.step) /
-                          glm::length(tracer.local_direction({0, 0, 1}));
+                          glm::length(tracer.frame().local_direction({0, 0, 1}));
     Errors e;
     e.pixels = exact.size();
     for (size_t i = 0; i < exact.size(); ++i) {
@@ -56,7 +56,7 @@ TEST(SampledTracer, ConvergesToTheExactImageAsTheStepShrinks)
     const Model m = sbrt_test::geology(40, 60, 30, {0, 0, 10, 10, 0});
     const Tracer tracer(m, 1.0);
     const Camera camera = Camera::perspective(
-        tracer.centre() + glm::dvec3(500, -700, 500), tracer.centre(), 40, 90, 120);
+        tracer.frame().centre() + glm::dvec3(500, -700, 500), tracer.frame().centre(), 40, 90, 120);
     size_t previous = SIZE_MAX;
     for (double step : {1.0, 0.25, 1.0 / 16}) {
         const Errors e = errors(tracer, camera, {step, 0});

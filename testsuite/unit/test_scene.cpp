@@ -80,7 +80,7 @@ TEST(ClipPlanes, HorizontalCutIsAVoxelSlice)
         for (double zexag : {1.0, 4.0}) {
             const Tracer tracer(m, zexag, {{{0, 0, z0}, {0, 0, 1}}});
             const Camera cam = Camera::top(f.north, f.south, f.east, f.west,
-                                           tracer.exaggerate({0, 0, f.top}).z + 10,
+                                           tracer.frame().exaggerate({0, 0, f.top}).z + 10,
                                            f.rows, f.cols);
             const HitImage hits = trace_image(tracer, cam, 2);
             for (int row = 0; row < f.rows; ++row)

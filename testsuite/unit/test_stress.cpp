@@ -35,7 +35,7 @@ void stress(const char *name, const Tracer &tracer, const Camera &camera,
     sbrt_gl::GpuTracer gpu(*context, tracer);
     const HitImage want = trace_image(tracer, camera, 2);
     const HitImage got = gpu.trace_image(camera, 2);
-    const double size = 2 * tracer.radius();
+    const double size = 2 * tracer.frame().radius();
     size_t hits = 0, agreeing = 0;
     double worst = 0;
     for (size_t i = 0; i < want.size(); ++i) {
@@ -68,8 +68,8 @@ void stress(const char *name, const Tracer &tracer, const Camera &camera,
 /// An oblique view of the whole model.
 Camera oblique(const Tracer &tracer, int rows = 90, int cols = 120, double elevation = 0.45)
 {
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     return Camera::perspective(c + glm::dvec3(0.5, -0.75, elevation) * size, c, 40,
                                rows, cols);
 }
@@ -179,9 +179,9 @@ TEST(Stress, GrazingRays)
     const Model m = geology(30, 40, 24);
     const Tracer tracer(m, 2.0);
     // 0.01 degrees above the horizon, level with the highest top
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
-    const double top = tracer.corner(7).z;
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
+    const double top = tracer.frame().corner(7).z;
     const double el = 0.01 * M_PI / 180;
     const glm::dvec3 eye(c.x - size, c.y - 0.3 * size, top + size * std::tan(el));
     stress("grazing, 0.01 degrees", tracer,
@@ -237,8 +237,8 @@ TEST(Stress, CameraInsideRockInsideACaveAndFarAway)
     EXPECT_EQ(away, cave_hits.size()); // walls all round, none at the eye
     stress("camera inside a cave", tracer, in_cave, 2400);
     // a million model sizes away, with the field of view to match
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     const glm::dvec3 far = c + 1e6 * size * glm::normalize(glm::dvec3(0.5, -0.75, 0.45));
     const double fov = 2 * std::atan(0.6 / 1e6) * 180 / M_PI;
     stress("1e6 model sizes away, perspective", tracer,
@@ -251,9 +251,9 @@ TEST(Stress, OnePixelAndFourMegapixelImages)
 {
     const Model m = geology(30, 40, 24);
     const Tracer tracer(m, 2.0);
-    const glm::dvec3 c = tracer.centre();
+    const glm::dvec3 c = tracer.frame().centre();
     stress("1 x 1 image", tracer,
-           Camera::perspective(c + glm::dvec3(0, 0, 2 * tracer.radius()), c, 10, 1, 1), 1);
+           Camera::perspective(c + glm::dvec3(0, 0, 2 * tracer.frame().radius()), c, 10, 1, 1), 1);
     stress("2048 x 2048 image", tracer, oblique(tracer, 2048, 2048), 1000000);
 }
 
@@ -265,8 +265,8 @@ TEST(Stress, EightThousandPixelImageBandByBand)
     const Model m = geology(30, 40, 24);
     const Tracer tracer(m, 2.0);
     const int side = 8192;
-    const glm::dvec3 c = tracer.centre();
-    const double size = 2 * tracer.radius();
+    const glm::dvec3 c = tracer.frame().centre();
+    const double size = 2 * tracer.frame().radius();
     for (const Camera &image :
          {oblique(tracer, side, side),
           Camera::orthographic(c + glm::dvec3(1, -2, 1) * size, c, size, side, side)}) {

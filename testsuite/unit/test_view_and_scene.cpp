@@ -28,7 +28,7 @@ bool hull_extent(const Tracer &t, const Camera &camera, double e[4])
 {
     e[0] = e[2] = 1e9;
     e[1] = e[3] = -1e9;
-    for (const glm::dvec3 &p : framing_hull(t)) {
+    for (const glm::dvec3 &p : framing_hull(t.model(), t.frame())) {
         double x, y;
         if (!camera.project(p, x, y))
             return false;
@@ -72,7 +72,7 @@ TEST(View, DefaultViewFramesTheModelTightlyAndCentred)
                     v.kind = kind;
                     v.azimuth = azimuth;
                     v.elevation = elevation;
-                    const Camera camera = view_camera(v, t, rows, cols);
+                    const Camera camera = view_camera(v, t.model(), t.frame(), rows, cols);
                     double e[4];
                     ASSERT_TRUE(hull_extent(t, camera, e));
                     const std::string what = std::to_string(int(kind)) + " " +
@@ -101,7 +101,7 @@ TEST(View, TracedModelFillsTheImageWithoutTouchingItsBorder)
                 View v;
                 v.kind = kind;
                 v.azimuth = azimuth;
-                const Camera c = view_camera(v, t, rows, cols);
+                const Camera c = view_camera(v, t.model(), t.frame(), rows, cols);
                 const auto outer = hits_near_edges(t, c, 0.02);
                 EXPECT_EQ(outer, (std::array<int, 4>{0, 0, 0, 0}))
                     << int(kind) << " " << azimuth << " " << rows << "x" << cols;
@@ -119,13 +119,13 @@ TEST(View, HullHoldsEveryColumnAndIsTighterThanTheBox)
 {
     const Model m = sbrt_test::geology(40, 56, 30);
     const Tracer t(m, 2.0);
-    const std::vector<glm::dvec3> hull = framing_hull(t);
+    const std::vector<glm::dvec3> hull = framing_hull(t.model(), t.frame());
     ASSERT_EQ(hull.size(), 8u * 8u * 8u);
     double hull_top_sum = 0;
     for (const glm::dvec3 &p : hull) {
         for (int k = 0; k < 3; ++k) {
-            EXPECT_GE(p[k], t.corner(0)[k] - 1e-6);
-            EXPECT_LE(p[k], t.corner(7)[k] + 1e-6);
+            EXPECT_GE(p[k], t.frame().corner(0)[k] - 1e-6);
+            EXPECT_LE(p[k], t.frame().corner(7)[k] + 1e-6);
         }
         hull_top_sum += p.z;
     }
@@ -137,7 +137,7 @@ TEST(View, HullHoldsEveryColumnAndIsTighterThanTheBox)
             if (m.stack_size(cell) == 0)
                 continue;
             const double top =
-                t.exaggerate(t.from_local({0, 0, m.intervals()[m.stack_end(cell) - 1].top})).z;
+                t.frame().exaggerate(t.frame().from_local({0, 0, m.intervals()[m.stack_end(cell) - 1].top})).z;
             const double x = f.west + (col + 0.5) * f.ew_res(),
                          y = f.north - (row + 0.5) * f.ns_res();
             double above = -1e300;
@@ -148,7 +148,7 @@ TEST(View, HullHoldsEveryColumnAndIsTighterThanTheBox)
             EXPECT_GE(above, top - 1e-6) << row << " " << col;
         }
     // the geology model's terrain is not flat: lower on average than the box
-    EXPECT_LT(hull_top_sum / double(hull.size()), (t.corner(0).z + t.corner(7).z) / 2);
+    EXPECT_LT(hull_top_sum / double(hull.size()), (t.frame().corner(0).z + t.frame().corner(7).z) / 2);
 }
 
 TEST(View, AzimuthIsWhereTheCameraLooksFrom)
@@ -158,24 +158,24 @@ TEST(View, AzimuthIsWhereTheCameraLooksFrom)
     View v;
     v.elevation = 20;
     v.distance = 5000;
-    v.target = t.unexaggerate(t.centre());
+    v.target = t.frame().unexaggerate(t.frame().centre());
     v.azimuth = 180; // from the south
-    Camera c = view_camera(v, t, 40, 50);
-    EXPECT_LT(c.origin().y, t.centre().y);
+    Camera c = view_camera(v, t.model(), t.frame(), 40, 50);
+    EXPECT_LT(c.origin().y, t.frame().centre().y);
     EXPECT_GT(c.forward().y, 0.9); // looking north
-    EXPECT_NEAR(glm::length(c.origin() - t.centre()), 5000, 1e-6);
+    EXPECT_NEAR(glm::length(c.origin() - t.frame().centre()), 5000, 1e-6);
     v.azimuth = 90; // from the east
-    c = view_camera(v, t, 40, 50);
-    EXPECT_GT(c.origin().x, t.centre().x);
+    c = view_camera(v, t.model(), t.frame(), 40, 50);
+    EXPECT_GT(c.origin().x, t.frame().centre().x);
     EXPECT_LT(c.forward().x, -0.9);
     // position and target win over the angles (map z exaggerated)
     const Tracer t2(m, 3.0);
-    v.position = t2.unexaggerate(t2.centre() + glm::dvec3(0, -100, 50));
-    v.target = t2.unexaggerate(t2.centre());
-    c = view_camera(v, t2, 40, 50);
-    EXPECT_LT(glm::length(c.origin() - (t2.centre() + glm::dvec3(0, -100, 50))), 1e-6);
+    v.position = t2.frame().unexaggerate(t2.frame().centre() + glm::dvec3(0, -100, 50));
+    v.target = t2.frame().unexaggerate(t2.frame().centre());
+    c = view_camera(v, t2.model(), t2.frame(), 40, 50);
+    EXPECT_LT(glm::length(c.origin() - (t2.frame().centre() + glm::dvec3(0, -100, 50))), 1e-6);
     v.kind = ViewKind::top;
-    EXPECT_THROW(view_camera(v, t2, 40, 50), Error);
+    EXPECT_THROW(view_camera(v, t2.model(), t2.frame(), 40, 50), Error);
 }
 
 TEST(View, OrthographicRaysStartOutsideTheModel)
@@ -184,10 +184,10 @@ TEST(View, OrthographicRaysStartOutsideTheModel)
     const Tracer t(m, 1.0);
     View v;
     v.kind = ViewKind::orthographic;
-    v.position = t.centre() + glm::dvec3(1, 1, 1); // inside the box
-    const Camera c = view_camera(v, t, 30, 40);
+    v.position = t.frame().centre() + glm::dvec3(1, 1, 1); // inside the box
+    const Camera c = view_camera(v, t.model(), t.frame(), 30, 40);
     EXPECT_TRUE(c.parallel());
-    EXPECT_GT(glm::length(c.origin() - t.centre()), t.radius());
+    EXPECT_GT(glm::length(c.origin() - t.frame().centre()), t.frame().radius());
 }
 
 TEST(SceneParts, SectionRemovesTheCameraSide)

@@ -7,6 +7,8 @@
 #ifndef SBRT_MATERIAL_TABLE_HPP
 #define SBRT_MATERIAL_TABLE_HPP
 
+#include <array>
+#include <cstdint>
 #include <unordered_map>
 #include <vector>
 
@@ -44,6 +46,9 @@ private:
     int32_t last_class_ = NULL_CLASS;
     uint32_t last_material_ = EMPTY;
 };
+
+/// Colour of a material: its stored colour, else a fixed palette entry.
+std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 
 } // namespace sbrt
 

@@ -42,21 +42,22 @@ glm::dvec3 turn_about_vertical(glm::dvec3 p, glm::dvec3 axis, double degrees)
     return {axis.x + c * d.x - s * d.y, axis.y + s * d.x + c * d.y, p.z};
 }
 
-std::vector<Camera> orbit_cameras(const View &view, const Tracer &tracer, int rows,
+std::vector<Camera> orbit_cameras(const View &view, const Model &model,
+                                  const CoordinateFrame &frame, int rows,
                                   int cols, int frames, double angle)
 {
     if (frames < 1)
         fail("orbit: ", frames, " frames; at least one");
     if (view.kind == ViewKind::top)
         fail("orbit: a top view does not turn (view=perspective or orthographic)");
-    const std::vector<glm::dvec3> hull = framing_hull(tracer);
+    const std::vector<glm::dvec3> hull = framing_hull(model, frame);
     const glm::dvec3 target =
-        view.target ? tracer.exaggerate(*view.target) : tracer.centre();
+        view.target ? frame.exaggerate(*view.target) : frame.centre();
     auto turn = [&](int k) { return (k - 1) * angle / frames; };
     // the direction from the target to the camera in frame 1
     glm::dvec3 offset;
     if (view.position) {
-        offset = tracer.exaggerate(*view.position) - target;
+        offset = frame.exaggerate(*view.position) - target;
         if (!(glm::length(offset) > 0))
             fail("orbit: position= and target= are the same point");
     }
@@ -87,7 +88,7 @@ std::vector<Camera> orbit_cameras(const View &view, const Tracer &tracer, int ro
         }
         for (int k = 1; k <= frames; ++k) {
             const glm::dvec3 u = turn_about_vertical(unit, {0, 0, 0}, turn(k));
-            cameras.push_back(Camera::orthographic(orthographic_start(tracer, target, u),
+            cameras.push_back(Camera::orthographic(orthographic_start(frame, target, u),
                                                    target, height, rows, cols));
         }
         return cameras;
@@ -106,7 +107,7 @@ std::vector<Camera> orbit_cameras(const View &view, const Tracer &tracer, int ro
         first = target + unit * distance;
     }
     else {
-        first = tracer.exaggerate(*view.position);
+        first = frame.exaggerate(*view.position);
     }
     for (int k = 1; k <= frames; ++k)
         cameras.push_back(Camera::perspective(turn_about_vertical(first, target, turn(k)),
@@ -212,23 +213,23 @@ void along_line(const std::vector<glm::dvec3> &line, int frame, int frames,
     }
 }
 
-double surface_elevation(const Tracer &tracer, double x, double y)
+double surface_elevation(const Model &model, const CoordinateFrame &frame, double x,
+                         double y)
 {
-    const Model &model = tracer.model();
     const Frame &f = model.frame();
     const double col = std::floor((x - f.west) / f.ew_res());
     const double row = std::floor((f.north - y) / f.ns_res());
     if (col >= 0 && row >= 0 && col < f.cols && row < f.rows) {
         const uint64_t cell = model.cell_index(int(row), int(col));
         if (model.stack_size(cell))
-            return tracer
+            return frame
                 .from_local({0, 0, double(model.intervals()[model.stack_end(cell) - 1].top)})
                 .z;
     }
-    return tracer.top_elevation();
+    return frame.top_elevation();
 }
 
-ClipPlane swept_plane(const ClipPlane &plane, const Tracer &tracer, int frame, int frames)
+ClipPlane swept_plane(const ClipPlane &plane, const CoordinateFrame &box, int frame, int frames)
 {
     if (frames < 1 || frame < 1 || frame > frames)
         fail("sweep: frame ", frame, " of ", frames);
@@ -239,7 +240,7 @@ ClipPlane swept_plane(const ClipPlane &plane, const Tracer &tracer, int frame, i
     // the box's extent along the normal (real map coordinates)
     double low = HUGE_VAL, high = -HUGE_VAL;
     for (int k = 0; k < 8; ++k) {
-        const double t = glm::dot(tracer.unexaggerate(tracer.corner(k)), n);
+        const double t = glm::dot(box.unexaggerate(box.corner(k)), n);
         low = std::min(low, t);
         high = std::max(high, t);
     }

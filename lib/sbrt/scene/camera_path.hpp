@@ -35,7 +35,8 @@ glm::dvec3 turn_about_vertical(glm::dvec3 p, glm::dvec3 axis, double degrees);
 /// centre). Unless position=, distance= or ortho_height= say otherwise,
 /// every frame keeps the distance (or height) at which the model fits the
 /// image in all of them: the model turns, it does not zoom.
-std::vector<Camera> orbit_cameras(const View &view, const Tracer &tracer, int rows,
+std::vector<Camera> orbit_cameras(const View &view, const Model &model,
+                                  const CoordinateFrame &frame, int rows,
                                   int cols, int frames, double angle);
 
 /// \brief A keyframe of path=keys: camera position, target, vertical field
@@ -68,13 +69,14 @@ void along_line(const std::vector<glm::dvec3> &line, int frame, int frames,
 /// The elevation (real map units) of the model's top at (x, y): the top of
 /// the highest interval of that cell's stack; outside the grid or over an
 /// empty column, the top of the whole model.
-double surface_elevation(const Tracer &tracer, double x, double y);
+double surface_elevation(const Model &model, const CoordinateFrame &frame, double x,
+                         double y);
 
 /// `plane` moved along its normal for frame k (from 1) of `frames`: frame
 /// 1 cuts nothing of the model's box, each next frame cuts a further
 /// 1 / frames of its extent along the normal (the removed side is the one
 /// the normal points to).
-ClipPlane swept_plane(const ClipPlane &plane, const Tracer &tracer, int frame,
+ClipPlane swept_plane(const ClipPlane &plane, const CoordinateFrame &box, int frame,
                       int frames);
 
 } // namespace sbrt

@@ -11,8 +11,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "model/material_table.hpp"
 #include "util/error.hpp"
-#include "shading/shading.hpp"
 
 namespace sbrt {
 

@@ -110,9 +110,8 @@ glm::dvec3 framing_eye(const std::vector<glm::dvec3> &points, const ViewPlane &p
 
 } // namespace
 
-std::vector<glm::dvec3> framing_hull(const Tracer &tracer)
+std::vector<glm::dvec3> framing_hull(const Model &model, const CoordinateFrame &frame)
 {
-    const Model &model = tracer.model();
     const Frame &f = model.frame();
     const int blocks_x = std::min(8, f.cols), blocks_y = std::min(8, f.rows);
     std::vector<double> top(size_t(blocks_x * blocks_y), -HUGE_VAL);
@@ -138,12 +137,12 @@ std::vector<glm::dvec3> framing_hull(const Tracer &tracer)
                 const double x = double((bx + (k & 1)) * f.cols) / blocks_x;
                 const double y = double((by + (k >> 1 & 1)) * f.rows) / blocks_y;
                 points.push_back(
-                    tracer.exaggerate(tracer.from_local({x, y, k & 4 ? t : 0.0})));
+                    frame.exaggerate(frame.from_local({x, y, k & 4 ? t : 0.0})));
             }
         }
     if (points.empty()) // an empty model: its box
         for (int k = 0; k < 8; ++k)
-            points.push_back(tracer.corner(k));
+            points.push_back(frame.corner(k));
     return points;
 }
 
@@ -174,24 +173,26 @@ double framing_distance(const std::vector<glm::dvec3> &points, glm::dvec3 target
     return high;
 }
 
-glm::dvec3 orthographic_start(const Tracer &tracer, glm::dvec3 target, glm::dvec3 offset)
+glm::dvec3 orthographic_start(const CoordinateFrame &frame, glm::dvec3 target,
+                              glm::dvec3 offset)
 {
-    const double reach = tracer.radius() + glm::length(tracer.centre() - target);
-    return target + offset * (reach + tracer.radius());
+    const double reach = frame.radius() + glm::length(frame.centre() - target);
+    return target + offset * (reach + frame.radius());
 }
 
-Camera view_camera(const View &view, const Tracer &tracer, int rows, int cols)
+Camera view_camera(const View &view, const Model &model, const CoordinateFrame &frame,
+                   int rows, int cols)
 {
     if (view.kind == ViewKind::top)
         fail("view_camera: a top view is the 2D region's (Camera::top)");
     const double aspect = double(cols) / rows;
     const bool framed = !view.position;
     const std::vector<glm::dvec3> hull =
-        framed || !view.ortho_height ? framing_hull(tracer) : std::vector<glm::dvec3>();
-    glm::dvec3 target = view.target ? tracer.exaggerate(*view.target) : points_centre(hull);
+        framed || !view.ortho_height ? framing_hull(model, frame) : std::vector<glm::dvec3>();
+    glm::dvec3 target = view.target ? frame.exaggerate(*view.target) : points_centre(hull);
     glm::dvec3 offset; // unit, from the target to the camera
     if (view.position) {
-        offset = glm::normalize(tracer.exaggerate(*view.position) - target);
+        offset = glm::normalize(frame.exaggerate(*view.position) - target);
     }
     else {
         // around the target: azimuth is where the camera looks from
@@ -220,11 +221,11 @@ Camera view_camera(const View &view, const Tracer &tracer, int rows, int cols)
                 ? *view.ortho_height
                 : std::max({-e[2], e[3], -e[0] / aspect, e[1] / aspect}) * 2 / 0.95;
         // rays start outside the model whatever position= says
-        return Camera::orthographic(orthographic_start(tracer, target, offset), target,
+        return Camera::orthographic(orthographic_start(frame, target, offset), target,
                                     height, rows, cols);
     }
     if (!framed)
-        return Camera::perspective(tracer.exaggerate(*view.position), target, view.fov,
+        return Camera::perspective(frame.exaggerate(*view.position), target, view.fov,
                                    rows, cols);
     if (view.target || view.distance)
         return Camera::perspective(

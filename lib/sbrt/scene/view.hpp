@@ -12,7 +12,8 @@
 #include <vector>
 
 #include "scene/camera.hpp"
-#include "tracing/tracer.hpp"
+#include "frame/coordinate_frame.hpp"
+#include "model/model.hpp"
 
 namespace sbrt {
 
@@ -34,7 +35,7 @@ struct View {
 /// Corners of the boxes over up to 8 x 8 blocks of the grid, each from the
 /// model's bottom to the highest top in its block (exaggerated): a hull of
 /// the model, tighter than its box where the terrain is not flat.
-std::vector<glm::dvec3> framing_hull(const Tracer &tracer);
+std::vector<glm::dvec3> framing_hull(const Model &model, const CoordinateFrame &frame);
 
 /// Smallest distance along `offset` (unit, from `target` towards the
 /// camera) at which `points` lie inside 95 % of an image of `aspect`
@@ -45,20 +46,16 @@ double framing_distance(const std::vector<glm::dvec3> &points, glm::dvec3 target
 /// Where parallel rays towards `target`, coming from direction `offset`
 /// (unit, from the target towards the camera), start: outside the model's
 /// box whatever the target.
-glm::dvec3 orthographic_start(const Tracer &tracer, glm::dvec3 target, glm::dvec3 offset);
+glm::dvec3 orthographic_start(const CoordinateFrame &frame, glm::dvec3 target,
+                              glm::dvec3 offset);
 
-/// The camera of `view` (not ViewKind::top) for a rows x cols image. Unless
-/// position= is given, the model fills the image: without target= the
-/// camera looks at the centre of the model's image (not of its box), the
-/// distance (or an orthographic view's height) makes the hull reach 95 %
-/// of the image on its tighter side.
-/// Where parallel rays towards `target`, coming from direction `offset`
-/// (unit, from the target towards the camera), start: outside the model's
-/// box whatever the target.
-glm::dvec3 orthographic_start(const Tracer &tracer, glm::dvec3 target, glm::dvec3 offset);
-
-/// The camera of `view` (not ViewKind::top) for a rows x cols image.
-Camera view_camera(const View &view, const Tracer &tracer, int rows, int cols);
+/// The camera of `view` (not ViewKind::top) for a rows x cols image of
+/// `model` drawn in `frame`. Unless position= is given, the model fills the
+/// image: without target= the camera looks at the centre of the model's
+/// image (not of its box), the distance (or an orthographic view's height)
+/// makes the hull reach 95 % of the image on its tighter side.
+Camera view_camera(const View &view, const Model &model, const CoordinateFrame &frame,
+                   int rows, int cols);
 
 } // namespace sbrt
 

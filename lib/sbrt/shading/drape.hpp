@@ -49,7 +49,7 @@ public:
     /// the neighbour it faces.
     bool on_surface(const Hit &hit) const;
 
-    /// What the GPU's drape reads (tracing/gpu_layout.hpp, make_gpu_drape).
+    /// What the GPU's drape reads (gpu/gpu_layout.hpp, make_gpu_drape).
     const Frame &frame() const { return frame_; }
     /// Per cell (row from the north, column), the local z of its surface;
     /// < 0 where the cell is empty.

@@ -17,13 +17,13 @@ KernelNormals::KernelNormals(const Tracer &tracer, const Camera &camera, int k)
       parallel_(camera.parallel()), origin_(camera.origin()),
       forward_(camera.forward()), du_(camera.du()), dv_(camera.dv()),
       du2_(glm::dot(du_, du_)), dv2_(glm::dot(dv_, dv_)),
-      voxel_x_(tracer.voxel_size().x)
+      voxel_x_(tracer.frame().voxel_size().x)
 {
     if (k < 3 || k > 11 || k % 2 == 0)
         fail("kernel size ", k, " must be odd, from 3 to 11");
     if (camera.is_window())
         fail("kernel normals need the whole image, not a window of its rows");
-    const glm::dvec3 voxel = tracer.voxel_size();
+    const glm::dvec3 voxel = tracer.frame().voxel_size();
     const int h = k / 2;
     auto cell = [&](int a, int b, int c) {
         const glm::dvec3 off = glm::dvec3(a, b, c) * voxel;
@@ -43,7 +43,7 @@ double KernelNormals::view_depth(const Hit &hit) const
 {
     if (!hit.is_hit())
         return INFINITY;
-    return glm::dot(tracer_.exaggerate(hit.point) - origin_, forward_);
+    return glm::dot(tracer_.frame().exaggerate(hit.point) - origin_, forward_);
 }
 
 std::pair<int, int> KernelNormals::row_reach(const Hit *hits) const
@@ -56,7 +56,7 @@ std::pair<int, int> KernelNormals::row_reach(const Hit *hits) const
         const Hit &hit = hits[col];
         if (!hit.is_hit())
             continue;
-        const glm::dvec3 v = tracer_.exaggerate(hit.point) - origin_;
+        const glm::dvec3 v = tracer_.frame().exaggerate(hit.point) - origin_;
         const double p_dv = glm::dot(v, dv_), depth = glm::dot(v, forward_);
         for (const Cell &corner : corners_) {
             const double z = depth + corner.along_forward;

@@ -75,7 +75,7 @@ template <typename DepthAt>
 bool KernelNormals::normal(const Hit &hit, double depth, const DepthAt &depth_at,
                            glm::vec3 &out) const
 {
-    const glm::dvec3 v = tracer_.exaggerate(hit.point) - origin_;
+    const glm::dvec3 v = tracer_.frame().exaggerate(hit.point) - origin_;
     const double p_du = glm::dot(v, du_), p_dv = glm::dot(v, dv_);
     const double tolerance = 1e-6 * (std::fabs(depth) + voxel_x_);
     glm::dvec3 sum(0);

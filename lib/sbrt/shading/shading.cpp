@@ -24,21 +24,6 @@ glm::dvec3 Shading::light_from(double azimuth, double elevation)
             std::sin(el)};
 }
 
-std::array<uint8_t, 3> material_color(const Model &model, uint32_t material)
-{
-    const Material &m = model.materials()[material];
-    if (m.has_color)
-        return {m.red, m.green, m.blue};
-    // golden-angle hues: neighbouring classes get distinct colours
-    const double h = std::fmod(material * 137.508, 360.0) / 60.0;
-    const double x = 1 - std::fabs(std::fmod(h, 2.0) - 1);
-    const double rgb[6][3] = {{1, x, 0}, {x, 1, 0}, {0, 1, x},
-                              {0, x, 1}, {x, 0, 1}, {1, 0, x}};
-    const double *c = rgb[int(h) % 6];
-    return {uint8_t(60 + 180 * c[0]), uint8_t(60 + 180 * c[1]),
-            uint8_t(60 + 180 * c[2])};
-}
-
 namespace {
 
 /// lround for 0 <= c <= 255 (half away from zero), without a libm call
@@ -122,7 +107,7 @@ void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Came
     if (!band.depth.empty())
         band.depth[i] =
             hit.is_hit()
-                ? glm::length(hit.point - tracer.unexaggerate(camera.ray(row, col).origin))
+                ? glm::length(hit.point - tracer.frame().unexaggerate(camera.ray(row, col).origin))
                 : NAN;
 }
 
@@ -153,7 +138,7 @@ Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
                 image.material[i] = model.materials()[hit.material].id;
                 image.elevation[i] = hit.point.z;
                 image.depth[i] = glm::length(
-                    hit.point - tracer.unexaggerate(camera.ray(row, col).origin));
+                    hit.point - tracer.frame().unexaggerate(camera.ray(row, col).origin));
             }
             const auto rgb = shade_pixel(hit);
             std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + i * 3);

@@ -10,6 +10,7 @@
 #include <array>
 #include <vector>
 
+#include "model/material_table.hpp"
 #include "output/band.hpp"
 #include "tracing/hit_image.hpp"
 
@@ -42,8 +43,6 @@ struct Image {
     std::vector<double> depth;      ///< distance from the ray origin, NaN
 };
 
-/// Colour of a material: its stored colour, else a fixed palette entry.
-std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 
 /// \brief A Shading made ready for one model's pixels: each material's
 /// colour is looked up once, not per pixel. Holds a reference to `shading`.

@@ -108,11 +108,11 @@ double FirstHitBounds::tile_bound(const Tracer &tracer, int row0, int col0) cons
         const int row = k & 1 ? row1 : row0, col = k & 2 ? col1 : col0;
         const glm::dvec2 p = camera_.pixel_ndc(row, col);
         if (camera_.parallel())
-            beam.add(tracer.to_local(origin + du * p.x + dv * p.y),
-                     tracer.local_direction(forward));
+            beam.add(tracer.frame().to_local(origin + du * p.x + dv * p.y),
+                     tracer.frame().local_direction(forward));
         else
-            beam.add(tracer.to_local(origin),
-                     tracer.local_direction(forward + du * p.x + dv * p.y));
+            beam.add(tracer.frame().to_local(origin),
+                     tracer.frame().local_direction(forward + du * p.x + dv * p.y));
     }
     // best first: the frontier's nearest node bounds every cell below it
     const MinMaxPyramid &pyramid = tracer.pyramid();

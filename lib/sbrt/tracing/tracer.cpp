@@ -67,22 +67,27 @@ Tracer::Tracer(const Model &model, double zexag, std::vector<ClipPlane> planes)
 {
 }
 
-Tracer::Tracer(const Model &model, double zexag, Scene scene)
-    : model_(model), zexag_(zexag), scene_(std::move(scene))
+namespace {
+
+/// The highest top a ray can meet: the model's, or a borehole's log's.
+double highest_top_drawn(const Model &model, const Scene &scene)
 {
-    if (!(zexag > 0) || !std::isfinite(zexag))
-        fail("Tracer: vertical exaggeration ", zexag, " must be positive");
-    const Frame &f = model.frame();
-    for (uint64_t c = 0; c < f.cells(); ++c)
-        if (model.stack_size(c))
-            z_max_local_ = std::max(
-                z_max_local_, double(model.intervals()[model.stack_end(c) - 1].top));
-    for (const Borehole &b : scene_.boreholes)
+    double top = highest_top_local(model);
+    for (const Borehole &b : scene.boreholes)
         for (const std::vector<Interval> *stack : {&b.stack, &b.model_stack})
             if (!stack->empty())
-                z_max_local_ = std::max(z_max_local_, double(stack->back().top));
-    scale_ = glm::dvec3(1.0 / f.ew_res(), 1.0 / f.ns_res(),
-                        1.0 / (f.tb_res() * zexag));
+                top = std::max(top, double(stack->back().top));
+    return top;
+}
+
+} // namespace
+
+Tracer::Tracer(const Model &model, double zexag, Scene scene)
+    : model_(model), scene_(std::move(scene)),
+      frame_(model.frame(), zexag, highest_top_drawn(model, scene_))
+{
+    const Frame &f = model.frame();
+    const glm::dvec3 scale_ = frame_.scale();
     const std::vector<ClipPlane> &planes = scene_.planes;
     if (planes.size() > size_t(MAX_CLIP_PLANES))
         fail("Tracer: ", planes.size(), " clip planes, at most ", MAX_CLIP_PLANES);
@@ -96,7 +101,7 @@ Tracer::Tracer(const Model &model, double zexag, Scene scene)
             fail("clip plane: the normal must not be zero and all values finite");
         const glm::dvec3 base(f.west, f.south, f.bottom);
         planes_.push_back({n / scale_ / length,
-                           glm::dot(n, base - exaggerate(plane.point)) / length,
+                           glm::dot(n, base - frame_.exaggerate(plane.point)) / length,
                            n / length});
     }
     const Translucency &tr = scene_.translucency;
@@ -151,55 +156,6 @@ void Tracer::build_pyramid()
             }
         }
     });
-}
-
-glm::dvec3 Tracer::exaggerate(glm::dvec3 p) const
-{
-    const double b = model_.frame().bottom;
-    return {p.x, p.y, b + (p.z - b) * zexag_};
-}
-
-glm::dvec3 Tracer::unexaggerate(glm::dvec3 p) const
-{
-    const double b = model_.frame().bottom;
-    return {p.x, p.y, b + (p.z - b) / zexag_};
-}
-
-glm::dvec3 Tracer::to_local(glm::dvec3 p) const
-{
-    const Frame &f = model_.frame();
-    return (p - glm::dvec3(f.west, f.south, f.bottom)) * scale_;
-}
-
-glm::dvec3 Tracer::from_local(glm::dvec3 local) const
-{
-    const Frame &f = model_.frame();
-    return {f.west + local.x * f.ew_res(), f.south + local.y * f.ns_res(),
-            f.bottom + local.z * f.tb_res()};
-}
-
-double Tracer::top_elevation() const
-{
-    return model_.frame().bottom + z_max_local_ * model_.frame().tb_res();
-}
-
-glm::dvec3 Tracer::centre() const
-{
-    const Frame &f = model_.frame();
-    return exaggerate({(f.east + f.west) / 2, (f.north + f.south) / 2,
-                       (f.bottom + top_elevation()) / 2});
-}
-
-glm::dvec3 Tracer::corner(int k) const
-{
-    const Frame &f = model_.frame();
-    return exaggerate({k & 1 ? f.east : f.west, k & 2 ? f.north : f.south,
-                       k & 4 ? top_elevation() : f.bottom});
-}
-
-double Tracer::radius() const
-{
-    return glm::length(corner(7) - corner(0)) / 2;
 }
 
 bool Tracer::meet(uint32_t material, double t_enter, double t_exit, const Entry &entry,
@@ -347,7 +303,7 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
 {
     const Frame &f = model_.frame();
     hit = Hit();
-    Walk walk{ray, to_local(ray.origin), local_direction(ray.direction), hit};
+    Walk walk{ray, frame_.to_local(ray.origin), frame_.local_direction(ray.direction), hit};
     const glm::dvec3 o = walk.o;
     glm::dvec3 &d = walk.d;
     for (int a = 0; a < 3; ++a)
@@ -360,7 +316,7 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
     double t_near = -INF, t_far = INF;
     int near_axis = -1;
     if (!clip_to_box(o, d, walk.inv_d, glm::dvec3(box_low_, 0),
-                     glm::dvec3(box_high_, z_max_local_), t_near, t_far, near_axis))
+                     glm::dvec3(box_high_, frame_.top_local()), t_near, t_far, near_axis))
         return;
     Entry wall;
     if (near_axis >= 0)
@@ -389,7 +345,7 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
         t_near = start;
         wall = {Face::none, -ray.direction};
     }
-    if (!(t_near <= t_far) || z_max_local_ <= 0)
+    if (!(t_near <= t_far) || frame_.top_local() <= 0)
         return;
 
     // only a few overlays and no model: meet each overlay directly, no
@@ -400,7 +356,7 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
                        t_near, t_far, walk, events);
         if (cross_events(events, t_near, t_far, wall, nullptr, walk) &&
             walk.hit.is_hit())
-            walk.hit.point = from_local(o + walk.hit.t * d);
+            walk.hit.point = frame_.from_local(o + walk.hit.t * d);
         return;
     }
 
@@ -437,7 +393,7 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
         else if (cross_cell(model_.cell_index(f.rows - 1 - iy, ix), t_in, t_out, wall,
                             walk)) {
             if (walk.hit.is_hit())
-                walk.hit.point = from_local(o + walk.hit.t * d);
+                walk.hit.point = frame_.from_local(o + walk.hit.t * d);
             return;
         }
         cells.next();

@@ -12,6 +12,7 @@
 #include <limits>
 #include <vector>
 
+#include "frame/coordinate_frame.hpp"
 #include "scene/camera.hpp"
 #include "scene/minmax_pyramid.hpp"
 #include "model/model.hpp"
@@ -73,27 +74,9 @@ public:
     /// place, field by field, never copied whole from a temporary.
     void trace_into(const Ray &ray, double t_start, Hit &hit) const;
 
-    /// Exaggerated map coordinates of a real map point, and back.
-    glm::dvec3 exaggerate(glm::dvec3 p) const;
-    glm::dvec3 unexaggerate(glm::dvec3 p) const;
-    /// The local frame: x, y in cells from the west and south edges, z in
-    /// tb_res steps from the bottom (exaggerated map -> local, and back to
-    /// real map coordinates).
-    glm::dvec3 to_local(glm::dvec3 exaggerated) const;
-    glm::dvec3 local_direction(glm::dvec3 direction) const { return direction * scale_; }
-    glm::dvec3 from_local(glm::dvec3 local) const;
-    /// Centre and half-diagonal of the model's box (exaggerated).
-    glm::dvec3 centre() const;
-    double radius() const;
-    /// Corner k (0..7, bit 0 east, bit 1 north, bit 2 top) of the model's
-    /// box, exaggerated map coordinates.
-    glm::dvec3 corner(int k) const;
-    /// Top of the highest interval, map units.
-    double top_elevation() const;
-    /// Size of a voxel in exaggerated map units (ew, ns, tb * zexag).
-    glm::dvec3 voxel_size() const { return 1.0 / scale_; }
-    /// Top of the highest interval, local units (tb_res steps).
-    double top_local() const { return z_max_local_; }
+    /// The model's coordinate frame as drawn (the box up to the highest
+    /// top a ray can meet, boreholes' logs included).
+    const CoordinateFrame &frame() const { return frame_; }
     const Model &model() const { return model_; }
 
     /// A clip plane in the local frame: f(l) = n . l + c, kept where f <= 0;
@@ -104,7 +87,7 @@ public:
         glm::dvec3 shading_normal;
     };
     const std::vector<LocalPlane> &planes() const { return planes_; }
-    double zexag() const { return zexag_; }
+    double zexag() const { return frame_.zexag(); }
     const Scene &scene() const { return scene_; }
     /// Whether the scene holds more than the model's stacks and planes
     /// (boreholes or a fence; on the GPU, shaders/common/overlays.glsl
@@ -166,8 +149,8 @@ private:
     void build_pyramid();
 
     const Model &model_;
-    double zexag_;
     Scene scene_;
+    CoordinateFrame frame_;
     std::vector<LocalPlane> planes_;
     /// cells' lists of boreholes (index) and fence panels (index | PANEL)
     std::vector<uint32_t> overlay_offsets_, overlay_items_;
@@ -175,9 +158,7 @@ private:
     /// local x, y box the rays are clipped to: the grid, or only the cells
     /// with overlays where the model is not drawn
     glm::dvec2 box_low_{0}, box_high_{0};
-    double z_max_local_ = 0; ///< highest interval top, local units
     MinMaxPyramid pyramid_;
-    glm::dvec3 scale_;       ///< map -> local per axis (exaggerated map)
 };
 
 } // namespace sbrt

@@ -73,7 +73,7 @@ std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_bounds() const
 std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_boxes() const
 {
     std::vector<std::array<glm::dvec3, 2>> boxes;
-    const double low = corner(0).z, high = corner(7).z;
+    const double low = frame_.corner(0).z, high = frame_.corner(7).z;
     const double r = scene_.borehole_radius;
     for (const Borehole &b : scene_.boreholes)
         boxes.push_back({glm::dvec3(b.x - r, b.y - r, low), glm::dvec3(b.x + r, b.y + r, high)});

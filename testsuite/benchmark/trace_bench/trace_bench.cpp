@@ -247,7 +247,7 @@ void time_against_error(const Model &model, const Args &args, const Camera &came
                         double zexag, int repeat)
 {
     const Tracer tracer(model, zexag);
-    const double size = 2 * tracer.radius();
+    const double size = 2 * tracer.frame().radius();
     Shading face;
     auto render = [&](HitImage hits, const Shading &s) {
         return shade(tracer, camera, std::move(hits), s);
@@ -514,7 +514,7 @@ int main(int argc, char *argv[])
         const Model framed = streamed ? read_sbrt(argv[2]) : Model();
         const Tracer probe(streamed ? framed : model, zexag);
         const Camera camera = Camera::perspective(
-            probe.exaggerate(args.point("position")), probe.exaggerate(args.point("target")),
+            probe.frame().exaggerate(args.point("position")), probe.frame().exaggerate(args.point("target")),
             std::stod(args.get("fov", "25")), std::stoi(args.get("rows", "884")),
             std::stoi(args.get("cols", "1056")));
         if (mode == "frame")

@@ -1,0 +1,187 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   One render session shared by the command line, its animation
+ *            loop and the view server
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "render_session.hpp"
+
+#include <sstream>
+
+#include "frame_cameras.hpp"
+#include "material_colors.hpp"
+#include "model_reading.hpp"
+#include "prepared_scene.hpp"
+#include "request_error.hpp"
+#include "scene/camera_path.hpp"
+#include "scene_setup.hpp"
+#include "skipping_report.hpp"
+#include "texture_input.hpp"
+#include "tracing/scene_pruning.hpp"
+
+namespace {
+
+/// What the model as read depends on, in one string.
+std::string model_key(const RenderRequest &request, const struct Cell_head &region)
+{
+    std::ostringstream key;
+    key << std::hexfloat << request.input << '\n' << request.color << '\n' << request.rules;
+    if (sees_only_the_region(request)) // only the blocks under the region
+        key << '\n' << region.north << ' ' << region.south << ' ' << region.east << ' '
+            << region.west;
+    return key.str();
+}
+
+/// What the drape depends on.
+std::string drape_key(const RenderRequest &request)
+{
+    std::ostringstream key;
+    key << std::hexfloat << request.texture_blend;
+    for (const std::string &map : request.texture)
+        key << ',' << map;
+    return key.str();
+}
+
+/// What the prepared scene depends on, the camera's share included (the
+/// planes of section= and the split direction of -m face it), exact
+/// (hexadecimal floats). Camera, light and outputs are not in it: the
+/// shading is set for every frame.
+std::string scene_key(const RenderRequest &r, const sbrt::Camera &camera)
+{
+    std::ostringstream key;
+    key << std::hexfloat << r.zexag << '\n' << r.backend << ' ' << r.gpu_layout << ' '
+        << r.threads << ' ' << r.walk_every_cell << '\n';
+    for (const std::string &name : r.hide)
+        key << "hide " << name << '\n';
+    for (const auto &[name, alpha] : r.opacity)
+        key << "opacity " << name << ' ' << alpha << '\n';
+    key << "length " << r.opacity_length.value_or(-1) << '\n';
+    for (const sbrt::ClipPlane &p : clip_planes(r, camera))
+        key << "plane " << p.point.x << ' ' << p.point.y << ' ' << p.point.z << ' '
+            << p.normal.x << ' ' << p.normal.y << ' ' << p.normal.z << '\n';
+    key << "fence " << r.fence << "\nboreholes " << r.boreholes << ' ' << r.layer << ' '
+        << r.where << ' ' << r.borehole_radius.value_or(-1) << ' ' << r.boreholes_only
+        << ' ' << r.log_top << ' ' << r.log_bottom << ' ' << r.log_class << ' '
+        << int(r.log_reference) << ' ' << r.split_logs << '\n';
+    if (r.split_logs)
+        key << camera.du().x << ' ' << camera.du().y << '\n';
+    return key.str();
+}
+
+} // namespace
+
+void RenderSession::load(const RenderRequest &request, const struct Cell_head &region)
+{
+    const std::string key = model_key(request, region);
+    if (!model_ || key != model_key_) {
+        backend_.reset();
+        renderer_.reset();
+        prepared_model_.reset();
+        drape_.reset();
+        frame_.reset();
+        scene_key_.clear();
+        drape_key_.clear();
+        model_key_.clear();
+        model_ = std::make_unique<sbrt::Model>(read_model(request, region));
+        apply_color_option(request, *model_);
+        model_key_ = key;
+    }
+    if (!frame_ || frame_->zexag() != request.zexag)
+        frame_ = sbrt::CoordinateFrame::of(*model_, request.zexag);
+}
+
+std::vector<sbrt::Camera> RenderSession::cameras(const RenderRequest &request,
+                                                 const struct Cell_head &region) const
+{
+    std::vector<sbrt::Camera> cameras = frame_cameras(request, *model_, *frame_, region);
+    if (request.tile)
+        for (sbrt::Camera &camera : cameras)
+            camera = camera.window((*request.tile)[0], (*request.tile)[2],
+                                   (*request.tile)[1], (*request.tile)[3]);
+    return cameras;
+}
+
+void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &camera,
+                            bool one_view)
+{
+    // the drape of texture=
+    const std::string drape = drape_key(request);
+    if (drape != drape_key_) {
+        backend_.reset();
+        renderer_.reset();
+        drape_.reset();
+        drape_key_.clear();
+        if (!request.texture.empty())
+            drape_ = std::make_unique<sbrt::Drape>(*model_, read_texture(request.texture),
+                                                   request.texture_blend);
+        drape_key_ = drape;
+    }
+    const std::string key = scene_key(request, camera);
+    if (!renderer_ || key != scene_key_) {
+        backend_.reset();
+        renderer_.reset();
+        prepared_model_.reset();
+        scene_key_.clear();
+        // hidden strata, planes, boreholes, fence, translucency
+        PreparedScene prepared = prepare_scene(request, *model_, camera);
+        if (request.backend != context_key_) {
+            context_.reset(); // before another on the same display
+            context_key_.clear();
+            context_ = choose_gl_context(request);
+            context_key_ = request.backend;
+        }
+        // on a GPU what no ray of a single view reaches is not uploaded
+        // (the CPU never reads it anyway)
+        const sbrt::Scene &scene = prepared.scene;
+        if (one_view && context_ && scene.skip_empty_space && scene.draw_model) {
+            sbrt::Pruning pruning =
+                sbrt::prune_for_view(prepared.model, request.zexag, scene, camera);
+            report_pruning(pruning, scene.planes.size());
+            prepared.model = std::move(pruning.model);
+        }
+        request_ = std::make_unique<RenderRequest>(request);
+        const bool sweep = request.frames > 1 && request.path == sbrt::PathKind::sweep;
+        if (sweep) { // each frame's renderer moves the plane (sweep_to)
+            prepared_model_ = std::make_unique<sbrt::Model>(std::move(prepared.model));
+            prepared_scene_ = std::move(prepared.scene);
+        }
+        else {
+            build_renderer(std::move(prepared.model), std::move(prepared.scene));
+            report_pyramid(renderer_->tracer());
+        }
+        scene_key_ = key;
+    }
+    if (renderer_)
+        renderer_->set_shading(make_shading(request, drape_.get()));
+}
+
+void RenderSession::sweep_to(int k)
+{
+    if (!prepared_model_)
+        bad_request(_("Internal error: a sweep's frame without a sweep"));
+    sbrt::Scene swept = prepared_scene_;
+    // the sweep moves the first plane= (else section=) across the box of
+    // the model as prepared
+    const sbrt::CoordinateFrame box =
+        sbrt::CoordinateFrame::of(*prepared_model_, request_->zexag);
+    swept.planes.front() =
+        sbrt::swept_plane(prepared_scene_.planes.front(), box, k, request_->frames);
+    backend_.reset(); // it refers to the previous frame's renderer
+    renderer_.reset();
+    build_renderer(*prepared_model_, std::move(swept));
+}
+
+void RenderSession::build_renderer(sbrt::Model model, sbrt::Scene scene)
+{
+    renderer_ = std::make_unique<sbrt::Renderer>(
+        std::move(model), request_->zexag, std::move(scene),
+        make_shading(*request_, drape_.get()),
+        sbrt::RenderSettings{unsigned(request_->threads), true, 0});
+    backend_ = std::make_unique<Backend>(*request_, *renderer_, context_.get());
+}
+
+void RenderSession::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                           const sbrt::BandSink &sink)
+{
+    backend_->render(camera, outputs, sink);
+}

@@ -1,0 +1,79 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   One render session: the model, its frame, the drape, the
+ *            prepared scene, the shading and the backend, built from a typed
+ *            request and kept while later requests leave them as they are;
+ *            the command line, its animation loop and the view server all
+ *            render through it
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_RENDER_SESSION_HPP
+#define R3_SBRT_RENDER_SESSION_HPP
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backend.hpp"
+#include "frame/coordinate_frame.hpp"
+#include "render_options.hpp"
+#include "renderer.hpp"
+#include "shading/drape.hpp"
+
+/// \brief The pipeline of a render request, stage by stage: load (the
+/// model as read, its colours), frame (the cameras), prepare (hidden
+/// strata, planes, boreholes, fence, translucency; pruning for one GPU
+/// view), then render any number of cameras (trace, shade, write through a
+/// sink). Each stage is rebuilt only when what it depends on changed.
+/// Errors are sbrt::Error: the caller decides whether they end the run.
+class RenderSession {
+public:
+    RenderSession() = default;
+    RenderSession(const RenderSession &) = delete;
+    RenderSession &operator=(const RenderSession &) = delete;
+
+    /// Reads the model of `request` (a top view of one frame: only the
+    /// blocks under `region`), where its input, colours or area changed.
+    void load(const RenderRequest &request, const struct Cell_head &region);
+    /// The model as read and its frame at the request's exaggeration: what
+    /// cameras frame (the view stays put while strata are hidden or cut).
+    const sbrt::Model &model() const { return *model_; }
+    const sbrt::CoordinateFrame &frame() const { return *frame_; }
+    /// The cameras of the request's frames (one for a single view).
+    std::vector<sbrt::Camera> cameras(const RenderRequest &request,
+                                      const struct Cell_head &region) const;
+
+    /// Prepares the scene of `request` as `camera` sees it (sections and
+    /// split logs face it) where it changed; with `one_view` a GPU gets only
+    /// the stacks that rays of `camera` can reach.
+    void prepare(const RenderRequest &request, const sbrt::Camera &camera, bool one_view);
+    /// Frame k of a sweep (path=sweep): the first plane moved across the
+    /// prepared model's box.
+    void sweep_to(int k);
+    /// Traces, shades and hands `camera`'s image band by band to `sink`.
+    void render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
+                const sbrt::BandSink &sink);
+    /// The prepared model and scene.
+    const sbrt::Renderer &renderer() const { return *renderer_; }
+
+private:
+    void build_renderer(sbrt::Model model, sbrt::Scene scene);
+
+    std::string model_key_;
+    std::unique_ptr<sbrt::Model> model_;
+    std::optional<sbrt::CoordinateFrame> frame_;
+    std::string drape_key_;
+    std::unique_ptr<sbrt::Drape> drape_;
+    std::string context_key_;
+    std::unique_ptr<sbrt_gl::GlContext> context_;
+    // the prepared scene; the backend refers to the request and renderer
+    std::string scene_key_;
+    std::unique_ptr<RenderRequest> request_;
+    std::unique_ptr<sbrt::Model> prepared_model_; ///< kept for a sweep
+    sbrt::Scene prepared_scene_;
+    std::unique_ptr<sbrt::Renderer> renderer_;
+    std::unique_ptr<Backend> backend_;
+};
+
+#endif
