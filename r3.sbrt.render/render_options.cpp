@@ -252,12 +252,23 @@ RenderOptions define_render_options()
 
 namespace {
 
+/// A map name of option `key`: GRASS's look-ups copy names into buffers of
+/// GNAME_MAX bytes (a longer name crashed G_find_file2), so a longer one is
+/// refused here.
+void check_map_name(const char *key, const std::string &name)
+{
+    if (name.size() >= GNAME_MAX)
+        bad_request(_("%s=%s: a map name has at most %d characters"), key,
+                    shortened(name, 40).c_str(), GNAME_MAX - 1);
+}
+
 /// The request of the answers; throws sbrt::Error (bad_request).
 RenderRequest read_render_options(const RenderOptions &options)
 {
     const RenderOptions *o = &options;
     RenderRequest r;
     r.input = o->input->answer;
+    check_map_name("input", r.input);
     r.output = answer_or(o->output);
     r.material = answer_or(o->material);
     r.hit_elevation = answer_or(o->hit_elevation);
@@ -394,7 +405,9 @@ RenderRequest read_render_options(const RenderOptions &options)
             bad_request(_("opacity_length= must be positive"));
     }
     r.fence = answer_or(o->fence);
+    check_map_name("fence", r.fence);
     r.boreholes = answer_or(o->boreholes);
+    check_map_name("boreholes", r.boreholes);
     r.layer = answer_or(o->layer, "1");
     r.where = answer_or(o->where);
     if (o->borehole_radius->answer) {
@@ -410,6 +423,8 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.split_logs = o->split_logs->answer;
     for (char **a = o->texture->answers; a && *a; ++a)
         r.texture.emplace_back(*a);
+    for (const std::string &map : r.texture)
+        check_map_name("texture", map);
     if (r.texture.size() != 0 && r.texture.size() != 1 && r.texture.size() != 3)
         bad_request(_("texture= takes one map (with its colour table) or three "
                         "maps red,green,blue, not %zu"),
@@ -424,6 +439,7 @@ RenderRequest read_render_options(const RenderOptions &options)
     if (r.threads < 0)
         r.threads = std::max(1, int(std::thread::hardware_concurrency()) + r.threads);
     read_animation_options(*o, r);
+    check_map_name("path_map", r.path_map);
     if (r.view.position && r.view.target && *r.view.position == *r.view.target)
         bad_request(_("position= and target= are the same point: the "
                         "camera has no direction"));

@@ -17,8 +17,8 @@
 #include <glm/geometric.hpp>
 
 #include "image_memory.hpp"
-#include "option_answers.hpp"
 #include "render_session.hpp"
+#include "request_line.hpp"
 #include "request_error.hpp"
 #include "util/error.hpp"
 
@@ -29,11 +29,6 @@ namespace {
 constexpr size_t MAX_LINE = 1 << 16;
 /// The longest error reply (a message quotes values of the request).
 constexpr size_t MAX_REPLY = 2000;
-
-/// Options that name outputs of the command line: a view server's frame
-/// is its reply.
-const char *const OUTPUT_KEYS[] = {"output", "material", "hit_elevation", "depth", "png",
-                                   "strds", "video"};
 
 /// \brief The server's session and the replies it writes.
 class ViewServer {
@@ -119,59 +114,11 @@ void ViewServer::error(const std::string &message)
     std::fflush(out_);
 }
 
-/// The request of one line's words (the verb taken off), or an error.
-RenderRequest read_request(OptionAnswers &answers, const RenderOptions &options,
-                           std::vector<std::string> &words)
-{
-    for (const char *key : OUTPUT_KEYS)
-        for (const std::string &word : words)
-            if (word.compare(0, std::strlen(key) + 1, std::string(key) + "=") == 0)
-                bad_request(_("%s= names an output of the command line; the view "
-                              "server's frame is its reply"),
-                            key);
-    answers.answer(words);
-    if (!options.input->answer)
-        bad_request(_("the request names no input="));
-    ParsedRequest parsed = parse_render_request(options);
-    if (!parsed.request)
-        throw sbrt::Error(parsed.error);
-    // one frame of a view: what makes sequences and tiles, and rules from
-    // stdin (the requests' stream), is the command line's
-    if (parsed.request->frames != 1 || parsed.request->tile || parsed.request->rules == "-")
-        bad_request(_("frames=, tile= and rules=- are for the command line, not the "
-                      "view server"));
-    return std::move(*parsed.request);
-}
-
-/// Serves one request line (without its end of line); false at "quit".
-bool serve_line(ViewServer &server, OptionAnswers &answers, const RenderOptions &options,
-                const std::string &text)
-{
-    if (text.find('\0') != std::string::npos)
-        bad_request(_("the request holds a NUL byte; a request is one line of text"));
-    std::vector<std::string> words = split_words(text);
-    if (words.empty())
-        bad_request(_("empty request: render key=value..., classes input=NAME or quit"));
-    if (words[0] == "quit")
-        return false;
-    if (words[0] != "render" && words[0] != "classes")
-        bad_request(_("unknown request <%s>: render, classes or quit"),
-                    shortened(words[0], 100).c_str());
-    const std::string verb = words[0];
-    words.erase(words.begin());
-    const RenderRequest request = read_request(answers, options, words);
-    if (verb == "render")
-        server.render(request);
-    else
-        server.classes(request);
-    return true;
-}
-
 } // namespace
 
 void serve_views(const RenderOptions &options, FILE *in, FILE *out)
 {
-    OptionAnswers answers(options.input, options.plain_png);
+    RequestLineReader reader(options);
     ViewServer server(out);
     std::string text;
     for (;;) {
@@ -193,8 +140,13 @@ void serve_views(const RenderOptions &options, FILE *in, FILE *out)
         try {
             if (too_long)
                 bad_request(_("the request line is longer than %zu bytes"), MAX_LINE);
-            if (!serve_line(server, answers, options, text))
+            const RequestLine request = reader.read(text);
+            if (request.verb == RequestLine::Verb::quit)
                 break;
+            if (request.verb == RequestLine::Verb::render)
+                server.render(request.request);
+            else
+                server.classes(request.request);
         }
         catch (const std::bad_alloc &) {
             server.error(_("out of memory: ask for a smaller image (size=)"));

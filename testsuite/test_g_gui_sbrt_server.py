@@ -110,9 +110,9 @@ class TestViewServer(TestCase):
             self.assertEqual(len(s.rgb), 3)
 
     def test_bad_requests(self):
-        """A word the module does not know is answered and the server goes
-        on; a value the module refuses ends it with the module's message,
-        and the next request starts it again."""
+        """A word the module does not know, and a value it refuses, are
+        answered with the module's message and the server goes on
+        (test_r3_sbrt_render_requests.py checks that the process stays)."""
         refused = [
             ("nonsense=1", "unknown option <nonsense>"),
             ("view=sideways", "not one of"),
@@ -120,7 +120,7 @@ class TestViewServer(TestCase):
             ("azimuth=400", "azimuth=400: not within 0-360"),
             ("frames=3", "for the command line"),
             ("hide=1\nrender", "line break"),
-            ("fov=500", "fov=500"),  # the module's own error: the server ends
+            ("fov=500", "fov=500"),  # the module's own check: answered, serving on
         ]
         for word, message in refused:
             with self.subTest(word=word):

@@ -1,0 +1,61 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   A view server's request line read into a typed request
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "request_line.hpp"
+
+#include <cstring>
+
+#include "request_error.hpp"
+#include "util/error.hpp"
+
+namespace {
+
+/// Options that name outputs of the command line: a view server's frame
+/// is its reply.
+const char *const OUTPUT_KEYS[] = {"output", "material", "hit_elevation", "depth", "png",
+                                   "strds", "video"};
+
+} // namespace
+
+RequestLineReader::RequestLineReader(const RenderOptions &options)
+    : options_(options), answers_(options.input, options.plain_png)
+{
+}
+
+RequestLine RequestLineReader::read(const std::string &line)
+{
+    if (line.find('\0') != std::string::npos)
+        bad_request(_("the request holds a NUL byte; a request is one line of text"));
+    std::vector<std::string> words = split_words(line);
+    if (words.empty())
+        bad_request(_("empty request: render key=value..., classes input=NAME or quit"));
+    RequestLine out;
+    if (words[0] == "quit")
+        return out;
+    if (words[0] != "render" && words[0] != "classes")
+        bad_request(_("unknown request <%s>: render, classes or quit"),
+                    shortened(words[0], 100).c_str());
+    out.verb = words[0] == "render" ? RequestLine::Verb::render : RequestLine::Verb::classes;
+    words.erase(words.begin());
+    for (const char *key : OUTPUT_KEYS)
+        for (const std::string &word : words)
+            if (word.compare(0, std::strlen(key) + 1, std::string(key) + "=") == 0)
+                bad_request(_("%s= names an output of the command line; the view "
+                              "server's frame is its reply"),
+                            key);
+    answers_.answer(words);
+    if (!options_.input->answer)
+        bad_request(_("the request names no input="));
+    ParsedRequest parsed = parse_render_request(options_);
+    if (!parsed.request)
+        throw sbrt::Error(parsed.error);
+    // one frame of a view: what makes sequences and tiles, and rules from
+    // stdin (the requests' stream), is the command line's
+    if (parsed.request->frames != 1 || parsed.request->tile || parsed.request->rules == "-")
+        bad_request(_("frames=, tile= and rules=- are for the command line, not the "
+                      "view server"));
+    out.request = std::move(*parsed.request);
+    return out;
+}

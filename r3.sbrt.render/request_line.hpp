@@ -1,0 +1,41 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   A view server's request line read into a typed request: the
+ *            protocol's framing (one line of text, no NUL byte, a verb),
+ *            the words answered as the command line's options, and the
+ *            checks the command line makes; errors as sbrt::Error. Shared
+ *            by the view server and its fuzz target
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_REQUEST_LINE_HPP
+#define R3_SBRT_REQUEST_LINE_HPP
+
+#include <string>
+
+#include "option_answers.hpp"
+#include "render_options.hpp"
+
+/// \brief What a request line asks for.
+struct RequestLine {
+    enum class Verb { render, classes, quit } verb = Verb::quit;
+    RenderRequest request; ///< with render and classes
+};
+
+/// \brief Reads request lines against the module's options (their answers
+/// replaced line by line).
+class RequestLineReader {
+public:
+    explicit RequestLineReader(const RenderOptions &options);
+
+    /// The request of `line` (its end of line taken off); throws
+    /// sbrt::Error naming what is wrong: a NUL byte, an empty line, an
+    /// unknown verb, an unknown, repeated or refused option (outputs,
+    /// frames=, tile=, rules=-), or a value the command line refuses.
+    RequestLine read(const std::string &line);
+
+private:
+    const RenderOptions &options_;
+    OptionAnswers answers_;
+};
+
+#endif
