@@ -40,6 +40,24 @@ sbrt::Model horizons_to_sbrt(const std::vector<std::string> &horizons,
 /// SBRT -> 3D raster in the current 3D region, with colours and labels.
 void sbrt_to_voxels(const char *input, const char *output);
 
+/// Sets the current region, 2D and 3D (as g.region raster_3d= does), to
+/// the grid `frame` of SBRT `name`, in the mapset and in this process.
+void set_region_to(const char *name, const sbrt::Frame &frame);
+
+/// Whether two frames have the same grid (counts, and edges within 1e-6
+/// of a cell).
+bool same_grid(const sbrt::Frame &a, const sbrt::Frame &b);
+
+/// A warning, with both grids and the one-step way to set the region,
+/// where the region's 3D grid is not the SBRT's.
+void warn_if_other_grid(const char *name, const sbrt::Frame &model,
+                        const sbrt::Frame &region);
+
+/// Fatal error, before any work, unless `name` can name a new SBRT
+/// (`sbrt`) or 3D raster map: legal in GRASS, and short enough for its
+/// files (an SBRT's hidden sibling while it is written included).
+void check_output_name(const char *name, bool sbrt);
+
 /// Prints the metadata and Table 1 figures (plain or key=value).
 /// The papers' Table 1 figures in memory and the stacks file on disk.
 void print_report(const char *name, const sbrt::Model &model,

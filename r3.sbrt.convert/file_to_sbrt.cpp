@@ -12,6 +12,8 @@
 #include "builders/band_import.hpp"
 #include "builders/column_builder.hpp"
 #include "util/error.hpp"
+#include "builders/import_memory.hpp"
+#include "file_checks.hpp"
 #include "file_crs.hpp"
 #include "file_variable.hpp"
 #include "grass.hpp"
@@ -42,7 +44,17 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
                          sbrt::Classifier &classifier, bool override_crs,
                          size_t band_bytes)
 {
-    const FileVariable variable(file, name);
+    // a classic file's length first: the netCDF library reads what a
+    // truncated one lacks as zeros
+    check_classic_netcdf(file);
+    const size_t max_band = std::min(band_bytes, MAX_BAND_BYTES);
+    const double available = memory_available();
+    double needed = 0;
+    const FileVariable variable(
+        file, name, [&](const sbrt::ImportGrid &grid, const std::string &where) {
+            sbrt::check_import_fits(grid, max_band, available, where);
+            needed = sbrt::import_bytes_at_least(grid, max_band);
+        });
     if (!variable.is_integer() && !classifier.has_rules())
         G_fatal_error(_("Variable '%s' of <%s> holds %s values: give rules= to "
                         "say which value ranges make which class"),
@@ -53,11 +65,27 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
                             &z = variable.vertical();
     const size_t nx = x.size, ny = y.size, nz = z.size;
     G_message(_("Converting variable '%s' of <%s> (%zu x %zu x %zu voxels, "
-                "%s)..."),
-              name, file, nx, ny, nz, variable.type_name().c_str());
+                "%s; at least %.2f GB of memory, %.1f GB available)..."),
+              name, file, nx, ny, nz, variable.type_name().c_str(), needed / 1e9,
+              available / 1e9);
 
+    // labels before the long part: a warning now, not after the import
+    std::vector<sbrt::Material> legend;
+    if (classifier.has_rules())
+        legend = rule_legend(classifier);
+    else {
+        try {
+            legend = variable.flag_labels();
+        }
+        catch (const sbrt::Error &e) {
+            G_warning(_("Variable '%s' of <%s>: %s. The classes get no labels; "
+                        "give rules= with labels, or mend the attributes (e.g. "
+                        "ncatted -a flag_meanings,%s,o,c,\"...\")"),
+                      name, file, e.what(), name);
+        }
+    }
     sbrt::ColumnStackBuilder builder(frame);
-    const size_t band = variable.band_size(std::min(band_bytes, MAX_BAND_BYTES));
+    const size_t band = variable.band_size(max_band);
     // the next band is read (one thread) while this one is converted;
     // doubles keep every sample type aligned
     const size_t doubles = (band * nx * nz * variable.sample_bytes() + 7) / 8;
@@ -80,7 +108,7 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     sbrt::BandImport import(variable.band_grid(), classifier, builder);
     std::future<sbrt::BandStrides> pending = read(0, buffers[0]);
     for (size_t row0 = 0, b = 0; row0 < ny; row0 += band, b ^= 1) {
-        G_percent(row0, ny, 2);
+        G_percent(row0, ny, 1);
         const sbrt::BandStrides step = pending.get();
         if (row0 + band < ny)
             pending = read(row0 + band, buffers[b ^ 1]);
@@ -98,17 +126,10 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     if (import.unmatched())
         G_warning(_("%llu voxels matched no rule and became empty"),
                   (unsigned long long)import.unmatched());
-    sbrt::Model model = builder.finish(
-        classifier.has_rules() ? rule_legend(classifier) : variable.flag_labels());
+    sbrt::Model model = builder.finish(legend);
     if (model.stats().solid_intervals == 0)
         G_fatal_error(_("Variable '%s' of <%s> holds only missing values"), name,
                       file);
-    G_verbose_message(_("For -r, set the 3D region to the SBRT's: g.region "
-                        "n=%.15g s=%.15g e=%.15g w=%.15g t=%.15g b=%.15g "
-                        "rows=%d cols=%d tbres=%.15g"),
-                      frame.north, frame.south, frame.east, frame.west,
-                      frame.top, frame.bottom, frame.rows, frame.cols,
-                      frame.tb_res());
     return model;
 }
 

@@ -9,8 +9,8 @@
 #include <ogr_spatialref.h>
 
 #include <algorithm>
-#include <sstream>
 
+#include "builders/flag_legend.hpp"
 #include "util/error.hpp"
 
 void GdalDatasetCloser::operator()(GDALDataset *dataset) const
@@ -241,7 +241,8 @@ std::vector<VariableSummary> list_file_variables(const std::string &path)
     return out;
 }
 
-FileVariable::FileVariable(const std::string &path, const std::string &name)
+FileVariable::FileVariable(const std::string &path, const std::string &name,
+                           const SizeCheck &before_reading)
     : path_(path), name_(name), dataset_(open_multidim(path))
 {
     array_ = find_array(*dataset_, path, name);
@@ -308,6 +309,14 @@ FileVariable::FileVariable(const std::string &path, const std::string &name)
                        sbrt::role_name(sbrt::AxisRole(axis)),
                        " dimension; give its coordinate variable a CF 'axis' "
                        "attribute (X, Y or Z)");
+    if (before_reading) {
+        sbrt::ImportGrid size;
+        size.cols = dims[dim_of_axis_[0]]->GetSize();
+        size.rows = dims[dim_of_axis_[1]]->GetSize();
+        size.depths = dims[dim_of_axis_[2]]->GetSize();
+        size.sample_bytes = sbrt::sample_bytes(grid_.sample);
+        before_reading(size, where);
+    }
     for (int axis = 0; axis < 3; ++axis) {
         const GDALDimension &d = *dims[dim_of_axis_[axis]];
         const std::string what = where + ", dimension '" + d.GetName() + "'";
@@ -369,20 +378,8 @@ sbrt::Frame FileVariable::frame() const
 
 std::vector<sbrt::Material> FileVariable::flag_labels() const
 {
-    const std::vector<double> values = numeric_attribute(*array_, "flag_values");
-    std::istringstream meanings(string_attribute(*array_, "flag_meanings"));
-    std::vector<sbrt::Material> labels;
-    std::string meaning;
-    for (double v : values) {
-        if (!(meanings >> meaning))
-            break;
-        std::replace(meaning.begin(), meaning.end(), '_', ' ');
-        sbrt::Material m;
-        m.id = int32_t(v);
-        m.label = meaning;
-        labels.push_back(m);
-    }
-    return labels;
+    return sbrt::flag_legend(numeric_attribute(*array_, "flag_values"),
+                             string_attribute(*array_, "flag_meanings"));
 }
 
 std::shared_ptr<OGRSpatialReference> FileVariable::spatial_ref() const

@@ -8,12 +8,14 @@
 #ifndef R3_SBRT_FILE_VARIABLE_HPP
 #define R3_SBRT_FILE_VARIABLE_HPP
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "builders/band_import.hpp"
 #include "builders/grid_axes.hpp"
+#include "builders/import_memory.hpp"
 #include "builders/missing_values.hpp"
 #include "model/model.hpp"
 
@@ -45,7 +47,12 @@ std::vector<VariableSummary> list_file_variables(const std::string &path);
 /// what was wrong and what to do.
 class FileVariable {
 public:
-    FileVariable(const std::string &path, const std::string &name);
+    /// Calls `before_reading` (which may throw) with the variable's size
+    /// once its axes are known, before any value (coordinates included)
+    /// is read.
+    using SizeCheck = std::function<void(const sbrt::ImportGrid &, const std::string &)>;
+    FileVariable(const std::string &path, const std::string &name,
+                 const SizeCheck &before_reading = {});
     ~FileVariable();
     FileVariable(const FileVariable &) = delete;
     FileVariable &operator=(const FileVariable &) = delete;
@@ -61,7 +68,8 @@ public:
     const sbrt::MissingValues &missing() const { return grid_.missing; }
     /// Axes, missing values and sample type, as band decoding takes them.
     const sbrt::BandGrid &band_grid() const { return grid_; }
-    /// Labels by value from `flag_values` and `flag_meanings` ('_' -> ' ').
+    /// Labels by value from `flag_values` and `flag_meanings` ('_' -> ' ');
+    /// throws sbrt::Error when they do not pair (sbrt::flag_legend).
     std::vector<sbrt::Material> flag_labels() const;
     /// The file's CRS (grid mapping, or `crs`/`spatial_ref`/`epsg`
     /// attributes); nullptr when the file names none.

@@ -21,7 +21,7 @@ namespace {
 struct Options {
     Option *input, *sbrt, *file, *variable, *output, *horizons, *materials,
         *bottom, *rules, *memory;
-    Flag *reverse, *print, *shell, *list, *override_crs;
+    Flag *reverse, *print, *shell, *list, *override_crs, *set_region;
 };
 
 Options define_options()
@@ -112,6 +112,14 @@ Options define_options()
     o.reverse->description =
         _("Reverse: expand the SBRT sbrt= (or input=) into the 3D raster map "
           "output=");
+    o.set_region = G_define_flag();
+    o.set_region->key = 's';
+    o.set_region->label =
+        _("Set the current region (2D and 3D) to the SBRT's grid");
+    o.set_region->description =
+        _("As g.region raster_3d= does: the SBRT of sbrt= (or input=), or the "
+          "one output= makes; with -r before it expands");
+    o.set_region->guisection = _("Region");
     o.print = G_define_flag();
     o.print->key = 'p';
     o.print->description =
@@ -193,11 +201,15 @@ void run(const Options &o)
     // an existing SBRT: sbrt= (the dialogs' drop-down), or input= as before
     const char *sbrt = o.sbrt->answer ? o.sbrt->answer : input;
 
+    const bool set_region = o.set_region->answer;
     if (o.reverse->answer) {
         if (!sbrt || !output)
             G_fatal_error(_("-r needs sbrt= (an SBRT) and output= (a new 3D "
                             "raster map)"));
+        check_output_name(output, false);
         sbrt_grass::check_new_raster3d(output, overwrite);
+        if (set_region)
+            set_region_to(sbrt, sbrt_grass::read_sbrt_map(sbrt).frame());
         sbrt_to_voxels(sbrt, output);
         return;
     }
@@ -214,14 +226,21 @@ void run(const Options &o)
         return;
     }
     if (!output) {
-        if (!sbrt || !report)
-            G_fatal_error(_("Nothing to do: give output= to convert, or -p/-g "
-                            "with sbrt= to describe an SBRT"));
-        print_report(sbrt, sbrt_grass::read_sbrt_map(sbrt),
-                     sbrt::stacks_file_info(sbrt_grass::find_sbrt(sbrt)), o.shell->answer);
+        if (!sbrt || !(report || set_region))
+            G_fatal_error(_("Nothing to do: give output= to convert, -p/-g "
+                            "with sbrt= to describe an SBRT, or -s with sbrt= "
+                            "to set the region to it"));
+        const sbrt::Model model = sbrt_grass::read_sbrt_map(sbrt);
+        if (set_region)
+            set_region_to(sbrt, model.frame());
+        if (report)
+            print_report(sbrt, model,
+                         sbrt::stacks_file_info(sbrt_grass::find_sbrt(sbrt)),
+                         o.shell->answer);
         return;
     }
     // checked before the work, written after it
+    check_output_name(output, true);
     const std::string path = sbrt_grass::new_sbrt_path(output, overwrite);
     sbrt::Model model;
     std::string source;
@@ -252,6 +271,12 @@ void run(const Options &o)
         source = std::string("3D raster map ") + input;
     }
     sbrt_grass::write_sbrt_map(output, path, model, source);
+    if (set_region)
+        set_region_to(output, model.frame());
+    else if (o.file->answer)
+        G_verbose_message(_("For -r, set the current region to the SBRT in one "
+                            "step: r3.sbrt.convert -s sbrt=%s"),
+                          output);
     if (report)
         print_report(output, model, sbrt::stacks_file_info(path), o.shell->answer);
 }

@@ -15,6 +15,7 @@ void sbrt_to_voxels(const char *input, const char *output)
 {
     const sbrt::Model model = sbrt_grass::read_sbrt_map(input);
     const sbrt::Frame target = current_frame();
+    warn_if_other_grid(input, model.frame(), target);
     RASTER3D_Region region;
     Rast3d_get_window(&region);
 

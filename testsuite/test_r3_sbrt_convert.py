@@ -229,5 +229,107 @@ class TestConvertRulesAndErrors(TestCase):
         self.assertIn("damaged", message)
 
 
+def run_convert(*args, timeout=60):
+    """rc and stderr (one line) of r3.sbrt.convert; past `timeout` seconds
+    the test fails (a hang)."""
+    run = subprocess.run(["r3.sbrt.convert", *args], capture_output=True,
+                         text=True, timeout=timeout)
+    return run.returncode, " ".join(run.stderr.split())
+
+
+class TestRegionOfAnSbrt(TestCase, Raster3dCompare):
+    """Issue 28, item 8: the manual's g.region recipe left the 3D rows and
+    columns at 1 and -r then silently wrote a 1 x 1 x depths map."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.runModule("g.region", n=30, s=10, e=25, w=5, b=-4, t=8, res=2,
+                      res3=2, tbres=0.5)
+        cls.runModule("r3.mapcalc",
+                      expression="strata = if(depth() < row() + 3, 1, "
+                      "if(depth() < 18, 2, null()))")
+        cls.runModule("r3.sbrt.convert", input="strata", output="strata_s")
+        # a region of another grid, as the manual's old recipe left it
+        cls.runModule("g.region", n=1, s=0, e=1, w=0, b=0, t=1, res=1, res3=1,
+                      tbres=1)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+
+    def setUp(self):
+        self.runModule("g.region", n=1, s=0, e=1, w=0, b=0, t=1, res=1, res3=1,
+                       tbres=1)
+
+    def test_s_sets_the_2d_and_3d_region_in_one_step(self):
+        self.assertModule("r3.sbrt.convert", flags="s", sbrt="strata_s")
+        frame = gs.parse_command("r3.sbrt.convert", flags="g", sbrt="strata_s")
+        region = gs.region(region3d=True)
+        for key in ("north", "south", "east", "west", "top", "bottom"):
+            self.assertAlmostEqual(region[key[0]], float(frame[key]), places=9)
+        self.assertEqual((region["rows"], region["cols"]), (10, 10))
+        self.assertEqual((region["rows3"], region["cols3"], region["depths"]), (10, 10, 24))
+        self.assertAlmostEqual(region["nsres3"], 2)
+        self.assertAlmostEqual(region["tbres"], 0.5)
+        # -r in it: the map as it was, voxel for voxel
+        self.assertModule("r3.sbrt.convert", flags="r", sbrt="strata_s",
+                          output="strata_back")
+        self.assertEqual(self.count_differences("strata", "strata_back"), (2400, 0))
+
+    def test_r_with_s_expands_in_the_sbrts_grid(self):
+        self.assertModule("r3.sbrt.convert", flags="rs", sbrt="strata_s",
+                          output="strata_rs")
+        info = gs.parse_command("r3.info", flags="g", map="strata_rs")
+        self.assertEqual((int(info["rows"]), int(info["cols"]), int(info["depths"])),
+                         (10, 10, 24))
+
+    def test_r_in_another_grid_warns_with_the_way_to_set_it(self):
+        code, message = run_convert("-r", "sbrt=strata_s", "output=strata_other",
+                                    "--overwrite")
+        self.assertEqual(code, 0, message)
+        self.assertIn("is not the grid of SBRT <strata_s> (10 x 10 x 24", message)
+        self.assertIn("(1 rows x 1 columns x 1 depths", message)
+        self.assertIn("r3.sbrt.convert -s sbrt=strata_s", message)
+        # in the SBRT's own grid: no warning
+        self.runModule("r3.sbrt.convert", flags="s", sbrt="strata_s")
+        code, message = run_convert("-r", "sbrt=strata_s", "output=strata_same",
+                                    "--overwrite")
+        self.assertEqual(code, 0, message)
+        self.assertNotIn("WARNING", message)
+
+    def test_s_without_an_sbrt_is_refused(self):
+        self.assertModuleFail("r3.sbrt.convert", flags="s")
+
+
+class TestOutputNames(TestCase):
+    """Issue 28, item 9: a 300-character output name failed after the work
+    with "AtomicDirectory: ... File name too long"."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.runModule("g.region", n=5, s=0, e=5, w=0, b=0, t=4, res=1, res3=1, tbres=1)
+        cls.runModule("r3.mapcalc", expression="little = 1")
+        cls.runModule("r3.sbrt.convert", input="little", output="little_s")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+
+    def test_long_sbrt_name_is_refused_before_the_work(self):
+        code, message = run_convert("input=little", "output=" + "s" * 300)
+        self.assertNotEqual(code, 0)
+        self.assertIn("The SBRT name in output= has 300 characters; at most 239 are "
+                      "allowed", message)
+        self.assertNotIn("AtomicDirectory", message)
+        self.assertModule("r3.sbrt.convert", input="little", output="s" * 239)
+
+    def test_long_3d_raster_name_is_refused(self):
+        code, message = run_convert("-r", "sbrt=little_s", "output=" + "r" * 300)
+        self.assertNotEqual(code, 0)
+        self.assertIn("The 3D raster map name in output= has 300 characters; at most "
+                      "255", message)
+
 if __name__ == "__main__":
     test()

@@ -7,9 +7,12 @@ COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
 import random
+import resource
 import shutil
+import struct
 import subprocess
 import tempfile
+import time
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
@@ -58,10 +61,13 @@ def axis_values(start, step, n, descending, negate=False):
 
 def write_netcdf(path, values, order=("x", "y", "z"), descending=(),
                  depth_down=False, variable_type="short", extra="",
-                 coords_override=None):
+                 coords_override=None, kind="nc4",
+                 flags=("1s, 2s, 3s", "anthropogenic peat clay")):
     """A CDL file for ncgen: the variable lithok with dimensions in `order`;
     axes named in `descending` run high to low; `depth_down` stores the
-    vertical axis as depths (positive down)."""
+    vertical axis as depths (positive down); `kind` is ncgen's -k (nc4,
+    classic, 64-bit-offset, cdf5); `flags` the flag_values and
+    flag_meanings."""
     sizes = {"x": NX, "y": NY, "z": NZ}
     coords = {
         "x": axis_values(X0, DX, NX, "x" in descending),
@@ -98,8 +104,8 @@ variables:
   {variable_type} lithok({", ".join(order)}) ;
     lithok:_FillValue = {FILL}{"s" if variable_type == "short" else ""} ;
     lithok:long_name = "lithoclass" ;
-    lithok:flag_values = 1s, 2s, 3s ;
-    lithok:flag_meanings = "anthropogenic peat clay" ;
+    lithok:flag_values = {flags[0]} ;
+    lithok:flag_meanings = "{flags[1]}" ;
 {extra}
 data:
   x = {", ".join(str(c) for c in coords["x"])} ;
@@ -111,7 +117,7 @@ data:
     cdl_path = path + ".cdl"
     with open(cdl_path, "w") as f:
         f.write(cdl)
-    subprocess.run(["ncgen", "-k", "nc4", "-o", path, cdl_path], check=True)
+    subprocess.run(["ncgen", "-k", kind, "-o", path, cdl_path], check=True)
 
 
 def write_ascii3d(path, values):
@@ -271,8 +277,16 @@ class TestImportNetcdf(TestCase, Raster3dCompare):
         self.assertIn(f"{uncovered} voxels matched no rule", " ".join(run.stderr.split()))
 
 
-def error_of(*args):
-    run = subprocess.run(["r3.sbrt.convert", *args], capture_output=True, text=True)
+def error_of(*args, timeout=120, limit_memory=None):
+    """rc and stderr (one line) of r3.sbrt.convert; a run past `timeout`
+    seconds fails the test (a hang); `limit_memory` bytes of address space
+    (ulimit -v) where given."""
+    def limit():
+        if limit_memory:
+            resource.setrlimit(resource.RLIMIT_AS, (limit_memory, limit_memory))
+
+    run = subprocess.run(["r3.sbrt.convert", *args], capture_output=True, text=True,
+                         timeout=timeout, preexec_fn=limit)
     return run.returncode, " ".join(run.stderr.split())
 
 
@@ -381,6 +395,184 @@ short lithok(z, y, x) ; data: x = 1, 2 ; y = 1, 2 ; }""")
         shutil.rmtree(location, ignore_errors=True)
         self.assertEqual(run.returncode, 0, run.stderr)
 
+
+def classic_header_only(path, nx, ny, nz):
+    """A CDF-2 (64-bit offset) file, byte by byte as the netCDF format
+    specification lays it out, that declares lithok(x, y, z) short of
+    nx x ny x nz after the coordinates x, y, z but ends after these: the
+    lithoclasses were never written (a copy cut short)."""
+    def be32(v):
+        return struct.pack(">I", v)
+
+    def name(text):
+        b = text.encode()
+        return be32(len(b)) + b + b"\0" * (-len(b) % 4)
+
+    def header(begin):
+        h = b"CDF\x02" + be32(0)
+        h += be32(10) + be32(3)
+        h += name("x") + be32(nx) + name("y") + be32(ny) + name("z") + be32(nz)
+        h += be32(0) + be32(0)  # no global attributes
+        h += be32(11) + be32(4)
+        at = begin
+        for var, dims, nc_type, size in (
+            ("x", [0], 4, 4 * nx), ("y", [1], 4, 4 * ny), ("z", [2], 5, 4 * nz),
+            ("lithok", [0, 1, 2], 3, 2 * nx * ny * nz),
+        ):
+            h += name(var) + be32(len(dims)) + b"".join(be32(d) for d in dims)
+            h += be32(0) + be32(0) + be32(nc_type)
+            h += be32(min(size, 0xFFFFFFFF)) + struct.pack(">Q", at)
+            at += size
+        return h
+
+    body = header(len(header(0)))
+    body += b"".join(struct.pack(">i", X0 + DX * i) for i in range(nx))
+    body += b"".join(struct.pack(">i", Y0 + DY * j) for j in range(ny))
+    body += b"".join(struct.pack(">f", Z0 + DZ * k) for k in range(nz))
+    with open(path, "wb") as f:
+        f.write(body)
+    return len(body), len(header(0)) + 4 * (nx + ny + nz) + 2 * nx * ny * nz
+
+
+class TestImportHostileFiles(TestCase):
+    """Issue 28: files that declare more than they hold, labels that do not
+    pair; each refused (or warned about) at once, never imported wrong."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="sbrt_import_hostile_")
+        cls.values = geotop_like(5)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def path(self, name):
+        return os.path.join(self.tmp, name)
+
+    def test_truncated_classic_files_are_refused(self):
+        """CDF-1, CDF-2 and CDF-5 files cut short: the netCDF library reads
+        zeros for the missing part, which imported as a block of class 0.
+        (the GDAL here, 3.6, opens no CDF-5 file: that one is refused whole or cut, the
+        cut one by its length.)"""
+        for kind in ("classic", "64-bit-offset", "cdf5"):
+            whole = self.path(f"whole_{kind}.nc")
+            write_netcdf(whole, self.values, kind=kind)
+            if kind != "cdf5":
+                self.assertModule("r3.sbrt.convert", file=whole, variable="lithok",
+                                  output=f"whole_{kind.replace('-', '_')}")
+            size = os.path.getsize(whole)
+            with open(whole, "rb") as f:
+                data = f.read()
+            cut = self.path(f"cut_{kind}.nc")
+            with open(cut, "wb") as f:
+                f.write(data[: size * 2 // 3])
+            code, message = error_of(f"file={cut}", "variable=lithok", "output=cut",
+                                     timeout=10)
+            self.assertNotEqual(code, 0, kind)
+            self.assertIn(f"file is truncated: header declares {size} bytes, file "
+                          f"has {size * 2 // 3}", message)
+            self.assertIn("lithok", message)
+            self.assertFalse(os.path.exists(sbrt_dir("cut")), kind)
+
+    def test_classic_file_declaring_a_huge_grid_is_refused_at_once(self):
+        """30000 x 30000 x 313 declared, the coordinates written: refused by
+        the length the header declares, before GDAL reads a value."""
+        path = self.path("huge_classic.nc")
+        has, declares = classic_header_only(path, 30000, 30000, 313)
+        start = time.monotonic()
+        code, message = error_of(f"file={path}", "variable=lithok", "output=huge",
+                                 timeout=10)
+        self.assertLess(time.monotonic() - start, 5, message)
+        self.assertNotEqual(code, 0)
+        self.assertIn(f"file is truncated: header declares {declares} bytes, file "
+                      f"has {has}", message)
+        self.assertFalse(os.path.exists(sbrt_dir("huge")))
+
+    def test_netcdf4_grid_beyond_memory_fails_at_once_with_the_figure(self):
+        """A netCDF-4 file declaring 30000 x 30000 x 313 with no lithoclass
+        written (chunks never stored read as fill values) sat at 0 % for
+        45 s; with 4 GiB of address space (ulimit -v) the import needs more
+        than the process can have and says so before it reads."""
+        path = self.path("huge.nc")
+        n, nz = 30000, 313
+        cdl = f"""netcdf huge {{
+dimensions: x = {n} ; y = {n} ; z = {nz} ;
+variables:
+  int x(x) ; x:standard_name = "projection_x_coordinate" ;
+  int y(y) ; y:standard_name = "projection_y_coordinate" ;
+  float z(z) ; z:positive = "up" ;
+  short lithok(x, y, z) ; lithok:_FillValue = -127s ;
+    lithok:_ChunkSizes = 16, 16, {nz} ;
+data:
+  x = {", ".join(str(X0 + DX * i) for i in range(n))} ;
+  y = {", ".join(str(Y0 + DY * j) for j in range(n))} ;
+  z = {", ".join(repr(Z0 + DZ * k) for k in range(nz))} ;
+}}
+"""
+        with open(path + ".cdl", "w") as f:
+            f.write(cdl)
+        subprocess.run(["ncgen", "-k", "nc4", "-o", path, path + ".cdl"], check=True)
+        start = time.monotonic()
+        code, message = error_of(f"file={path}", "variable=lithok", "output=huge4",
+                                 timeout=10, limit_memory=4 << 30)
+        self.assertLess(time.monotonic() - start, 5, message)
+        self.assertNotEqual(code, 0)
+        self.assertIn("(30000 x 30000 x 313 voxels) needs at least 8.6 GB of memory",
+                      message)
+        self.assertIn("900000000 cells", message)
+        self.assertRegex(message, r"this machine has [0-9.]+ GB available")
+        self.assertFalse(os.path.exists(sbrt_dir("huge4")))
+
+    def test_flag_counts_that_do_not_pair_warn_and_label_nothing(self):
+        """three flag_values against eight flag_meanings were taken silently,
+        the first three meanings labelling classes 1-3."""
+        path = self.path("flags.nc")
+        write_netcdf(path, self.values,
+                     flags=("1s, 2s, 3s", "a_1 b_2 c_3 d_4 e_5 f_6 g_7 h_8"))
+        code, message = error_of(f"file={path}", "variable=lithok",
+                                 "output=flags", timeout=60)
+        self.assertEqual(code, 0, message)
+        self.assertIn("flag_values has 3 values and flag_meanings 8 words", message)
+        self.assertIn("no labels", message)
+        with open(os.path.join(sbrt_dir("flags"), "cats")) as f:
+            self.assertNotIn("a 1", f.read())
+
+    def test_long_output_name_is_refused_up_front(self):
+        """a 300-character name failed after the import with
+        "AtomicDirectory: ... File name too long"."""
+        path = self.path("ok.nc")
+        write_netcdf(path, self.values)
+        code, message = error_of(f"file={path}", "variable=lithok",
+                                 "output=" + "n" * 300, timeout=60)
+        self.assertNotEqual(code, 0)
+        self.assertIn("has 300 characters; at most 239 are allowed", message)
+        self.assertNotIn("AtomicDirectory", message)
+        self.assertNotIn("Converting", message)
+        # the longest name allowed goes in, and is found again
+        longest = "n" * 239
+        code, message = error_of(f"file={path}", "variable=lithok",
+                                 f"output={longest}", timeout=60)
+        self.assertEqual(code, 0, message)
+        self.assertTrue(os.path.isdir(sbrt_dir(longest)))
+
+    def test_s_sets_the_region_to_the_imported_sbrt(self):
+        """-s with output=: the region (2D and 3D) becomes the file's grid."""
+        self.use_temp_region()
+        try:
+            path = self.path("region.nc")
+            write_netcdf(path, self.values)
+            self.runModule("g.region", n=1, s=0, e=1, w=0, t=1, b=0, res=1,
+                           res3=1, tbres=1)
+            self.assertModule("r3.sbrt.convert", flags="s", file=path,
+                              variable="lithok", output="region_s")
+            region = gs.region(region3d=True)
+            self.assertEqual((region["rows3"], region["cols3"], region["depths"]),
+                             (NY, NX, NZ))
+            self.assertEqual((region["rows"], region["cols"]), (NY, NX))
+            self.assertAlmostEqual(region["b"], Z0 - DZ / 2)
+        finally:
+            self.del_temp_region()
 
 if __name__ == "__main__":
     test()
