@@ -167,20 +167,20 @@ class TestManageList(ManageFixture):
             os.makedirs(os.path.join(top, "sbrt", "secret"), exist_ok=True)
         self.addCleanup(shutil.rmtree, outside, ignore_errors=True)
         self.addCleanup(shutil.rmtree, not_a_mapset, ignore_errors=True)
+        # (no subTest: GRASS 8.2's gunittest drops subtests' failures)
         for mapset in (
             f"../{location}/{OTHER}",
             "../sbrt_manage_outside",
             f"{OTHER}/../{WORK}",
             "sbrt_manage_no_mapset",
         ):
-            with self.subTest(mapset=mapset):
-                run = self.manage("-l", "-m", mapset=mapset)
-                self.assertNotEqual(run.returncode, 0)
-                self.assertEqual(run.stdout, "")
-                self.assertIn(
-                    f"Mapset <{mapset}> does not exist in location <{location}>",
-                    run.messages,
-                )
+            run = self.manage("-l", "-m", mapset=mapset)
+            self.assertNotEqual(run.returncode, 0, mapset)
+            self.assertEqual(run.stdout, "", mapset)
+            self.assertIn(
+                f"Mapset <{mapset}> does not exist in location <{location}>",
+                run.messages,
+            )
         # nor as the mapset of a name to copy
         run = self.manage(copy="secret@sbrt_manage_no_mapset,secret")
         self.assertNotEqual(run.returncode, 0)
@@ -346,11 +346,10 @@ class TestManageCopyHostile(ManageFixture):
 
     def test_fifo_member_is_refused_without_waiting(self):
         for member in ("cats", "hist"):
-            with self.subTest(member=member):
-                self.setUp()
-                os.remove(self.path(OTHER, f"geo/{member}"))
-                os.mkfifo(self.path(OTHER, f"geo/{member}"))
-                self.copy_refused(member, "a FIFO")
+            self.setUp()
+            os.remove(self.path(OTHER, f"geo/{member}"))
+            os.mkfifo(self.path(OTHER, f"geo/{member}"))
+            self.copy_refused(member, "a FIFO (named pipe)")
 
     def test_subdirectory_is_refused(self):
         os.makedirs(self.path(OTHER, "geo/sub"))
