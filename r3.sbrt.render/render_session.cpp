@@ -147,7 +147,7 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
         }
         else {
             build_renderer(std::move(prepared.model), std::move(prepared.scene));
-            report_pyramid(renderer_->tracer());
+            report_pyramid(renderer_->tracer().pyramid(), renderer_->model());
         }
         scene_key_ = key;
     }

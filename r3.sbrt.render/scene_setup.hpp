@@ -12,7 +12,7 @@
 
 #include "scene/camera.hpp"
 #include "render_options.hpp"
-#include "tracing/tracer.hpp"
+#include "scene/scene.hpp"
 
 /// Material index of a class given by id or label in `option`; a fatal
 /// error lists the classes when none matches.

@@ -42,12 +42,10 @@ void report_pruning(const sbrt::Pruning &pruning, size_t planes)
         report_left_out(_("cut away by the planes"), pruning.cut_away);
 }
 
-void report_pyramid(const sbrt::Tracer &tracer)
+void report_pyramid(const sbrt::MinMaxPyramid &p, const sbrt::Model &m)
 {
-    const sbrt::MinMaxPyramid &p = tracer.pyramid();
     if (!p.levels())
         return; // skipping off, or only overlays drawn
-    const sbrt::Model &m = tracer.model();
     G_verbose_message(_("Empty-space skipping: %d-level min-max pyramid (%llu "
                         "bytes); %llu of %llu cells hold nothing to draw; %zu "
                         "intervals (%llu bytes) left to trace"),

@@ -16,7 +16,7 @@ void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidd
 /// `planes`, those cut away).
 void report_pruning(const sbrt::Pruning &pruning, size_t planes);
 
-/// The empty-space pyramid of the tracer that draws the scene.
-void report_pyramid(const sbrt::Tracer &tracer);
+/// The empty-space pyramid `p` over the model `m` that is drawn.
+void report_pyramid(const sbrt::MinMaxPyramid &p, const sbrt::Model &m);
 
 #endif
