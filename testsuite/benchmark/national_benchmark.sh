@@ -40,7 +40,7 @@ read -r g_s g_kb < <(t r3.sbrt.convert -g sbrt="$name")
 eval "$(r3.sbrt.convert -g sbrt="$name")"
 dir=$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)/$(g.gisenv get=MAPSET)/sbrt/$name
 stacks=$(stat -c %s "$dir/stacks")
-g.region n=$north s=$south e=$east w=$west t=$top b=$bottom rows=$rows cols=$cols tbres=$tbres
+r3.sbrt.convert -s sbrt="$name" # 2D and 3D: -r (EXPAND=1) expands in the model's grid
 read -r top_s top_kb < <(t r3.sbrt.render --o input="$name" view=top output="${name}_top" png="/tmp/${name}_top.png")
 read -r per_s per_kb < <(t r3.sbrt.render --o input="$name" size=1056,884 zexag=30 output="${name}_view" png="/tmp/${name}_view.png")
 y=$(echo "($north + $south) / 2" | bc -l)
