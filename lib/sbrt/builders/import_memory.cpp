@@ -58,8 +58,8 @@ void check_import_fits(const ImportGrid &grid, uint64_t band_bytes, double avail
         fail(what, " (", grid.cols, " x ", grid.rows, " x ", grid.depths,
              " voxels) needs at least ", gigabytes(needed), " of memory to import (",
              BYTES_PER_CELL, " bytes for each of its ", uint64_t(cells),
-             " cells and two bands of ", gigabytes(import_band_bytes(grid, band_bytes) / 2),
-             "), more with every interval past the first of a column; this machine "
+             " cells and two bands of ",
+             uint64_t(import_band_bytes(grid, band_bytes) / 2 / 1e6 + 0.5), " MB), more with every interval past the first of a column; this machine "
              "has ", gigabytes(available), " available. Import a part of it (e.g. "
              "gdalmdimtranslate -subset, ncks -d) or use a larger machine");
 }
