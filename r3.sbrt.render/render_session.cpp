@@ -74,12 +74,9 @@ void RenderSession::load(const RenderRequest &request, const struct Cell_head &r
 {
     const std::string key = model_key(request, region);
     if (!model_ || key != model_key_) {
-        backend_.reset();
-        renderer_.reset();
-        prepared_model_.reset();
+        drop_scene();
         drape_.reset();
         frame_.reset();
-        scene_key_.clear();
         drape_key_.clear();
         model_key_.clear();
         model_ = std::make_unique<sbrt::Model>(read_model(request, region));
@@ -107,8 +104,7 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
     // the drape of texture=
     const std::string drape = drape_key(request);
     if (drape != drape_key_) {
-        backend_.reset();
-        renderer_.reset();
+        drop_scene();
         drape_.reset();
         drape_key_.clear();
         if (!request.texture.empty())
@@ -118,10 +114,7 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
     }
     const std::string key = scene_key(request, camera);
     if (!renderer_ || key != scene_key_) {
-        backend_.reset();
-        renderer_.reset();
-        prepared_model_.reset();
-        scene_key_.clear();
+        drop_scene();
         // hidden strata, planes, boreholes, fence, translucency
         PreparedScene prepared = prepare_scene(request, *model_, camera);
         if (request.backend != context_key_) {
@@ -169,6 +162,14 @@ void RenderSession::sweep_to(int k)
     backend_.reset(); // it refers to the previous frame's renderer
     renderer_.reset();
     build_renderer(*prepared_model_, std::move(swept));
+}
+
+void RenderSession::drop_scene()
+{
+    backend_.reset(); // it refers to the renderer
+    renderer_.reset();
+    prepared_model_.reset();
+    scene_key_.clear();
 }
 
 void RenderSession::build_renderer(sbrt::Model model, sbrt::Scene scene)

@@ -58,6 +58,8 @@ public:
     const sbrt::Renderer &renderer() const { return *renderer_; }
 
 private:
+    /// Forgets the prepared scene, its renderer and backend.
+    void drop_scene();
     void build_renderer(sbrt::Model model, sbrt::Scene scene);
 
     std::string model_key_;

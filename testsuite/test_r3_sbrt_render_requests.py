@@ -32,31 +32,26 @@ class RawServer:
             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
         self.buffer = b""
 
-    def _read_line(self, deadline):
-        while b"\n" not in self.buffer:
+    def _fill(self, enough, deadline):
+        """Reads until enough(buffer) holds, or fails at the deadline."""
+        while not enough(self.buffer):
             left = deadline - time.monotonic()
             if left <= 0:
-                raise TimeoutError("no reply within %d s" % LIMIT)
-            ready, _, _ = select.select([self.process.stdout], [], [], left)
-            if ready:
-                chunk = os.read(self.process.stdout.fileno(), 1 << 16)
-                if not chunk:
-                    raise EOFError("the server closed its output")
-                self.buffer += chunk
-        line, self.buffer = self.buffer.split(b"\n", 1)
-        return line.decode(errors="replace")
-
-    def _read_bytes(self, count, deadline):
-        while len(self.buffer) < count:
-            left = deadline - time.monotonic()
-            if left <= 0:
-                raise TimeoutError("frame not complete within %d s" % LIMIT)
+                raise TimeoutError("no whole reply within %d s" % LIMIT)
             ready, _, _ = select.select([self.process.stdout], [], [], left)
             if ready:
                 chunk = os.read(self.process.stdout.fileno(), 1 << 20)
                 if not chunk:
                     raise EOFError("the server closed its output")
                 self.buffer += chunk
+
+    def _read_line(self, deadline):
+        self._fill(lambda buffer: b"\n" in buffer, deadline)
+        line, self.buffer = self.buffer.split(b"\n", 1)
+        return line.decode(errors="replace")
+
+    def _read_bytes(self, count, deadline):
+        self._fill(lambda buffer: len(buffer) >= count, deadline)
         data, self.buffer = self.buffer[:count], self.buffer[count:]
         return data
 
@@ -152,12 +147,12 @@ class TestHostileRequests(TestCase):
             (b"render input=req_model frames=3", "command line"),
             (b"flip input=req_model", "unknown request"),
         ]
+        # no subTest: GRASS 8.2's gunittest drops failures inside one
         for line, words in expected:
-            with self.subTest(line=line[:60]):
-                head = self.server.ask(line + b"\n")
-                self.assertTrue(head.startswith("error "), head)
-                self.assertIn(words, head)
-                self.assertIsNone(self.server.process.poll(), "the server exited")
+            head = self.server.ask(line + b"\n")
+            self.assertTrue(head.startswith("error "), "%r: %s" % (line[:60], head))
+            self.assertIn(words, head, "%r" % line[:60])
+            self.assertIsNone(self.server.process.poll(), "the server exited at %r" % line[:60])
         self.assertStillServing()
 
     def test_a_huge_token_is_not_echoed_whole(self):
