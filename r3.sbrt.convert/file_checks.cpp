@@ -7,7 +7,6 @@
  ****************************************************************************/
 #include "file_checks.hpp"
 
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -33,22 +32,6 @@ std::vector<uint8_t> prefix_of(const std::string &path, uint64_t bytes)
     in.read(reinterpret_cast<char *>(data.data()), std::streamsize(bytes));
     data.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
     return data;
-}
-
-/// The first number after `key` on a line of a /proc or /sys file, times
-/// `scale`; nothing when absent.
-std::optional<double> field_of(const char *file, const char *key, double scale)
-{
-    std::ifstream in(file);
-    std::string line;
-    const std::string k = key;
-    while (std::getline(in, line))
-        if (line.compare(0, k.size(), k) == 0) {
-            double v = 0;
-            if (std::sscanf(line.c_str() + k.size(), "%lf", &v) == 1)
-                return v * scale;
-        }
-    return std::nullopt;
 }
 
 } // namespace
@@ -83,26 +66,4 @@ void check_classic_netcdf(const std::string &path)
             sbrt::fail(what, ": its netCDF header goes on past ", MAX_HEADER_BYTES >> 20,
                        " MiB; no netCDF file this module reads has one that long");
     }
-}
-
-double memory_available()
-{
-    double available = 0;
-    if (auto kb = field_of("/proc/meminfo", "MemAvailable:", 1024))
-        available = *kb;
-    else if (sysconf(_SC_PHYS_PAGES) > 0 && sysconf(_SC_PAGE_SIZE) > 0)
-        available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-    auto least = [&](double v) {
-        v = std::max(v, 1.0);
-        available = available > 0 ? std::min(available, v) : v;
-    };
-    // ulimit -v: what is mapped already counts against it
-    struct rlimit limit;
-    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-        least(double(limit.rlim_cur) -
-              field_of("/proc/self/status", "VmSize:", 1024).value_or(0));
-    // a container's memory (cgroup v2); "max" reads as no number
-    if (auto max = field_of("/sys/fs/cgroup/memory.max", "", 1))
-        least(*max - field_of("/sys/fs/cgroup/memory.current", "", 1).value_or(0));
-    return available;
 }

@@ -15,10 +15,5 @@
 /// other files pass (GDAL reads and checks them).
 void check_classic_netcdf(const std::string &path);
 
-/// Bytes this process can still have: the least of MemAvailable (else
-/// physical memory), its address space limit (ulimit -v) less what it
-/// maps, and its cgroup's memory.max less memory.current; 0 when none is
-/// known.
-double memory_available();
 
 #endif

@@ -14,6 +14,7 @@
 #include "util/error.hpp"
 #include "builders/import_memory.hpp"
 #include "file_checks.hpp"
+#include "util/available_memory.hpp"
 #include "file_crs.hpp"
 #include "file_variable.hpp"
 #include "grass.hpp"
@@ -48,7 +49,7 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     // truncated one lacks as zeros
     check_classic_netcdf(file);
     const size_t max_band = std::min(band_bytes, MAX_BAND_BYTES);
-    const double available = memory_available();
+    const double available = sbrt::available_memory();
     double needed = 0;
     const FileVariable variable(
         file, name, [&](const sbrt::ImportGrid &grid, const std::string &where) {

@@ -5,13 +5,10 @@
  ****************************************************************************/
 #include "image_memory.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdio>
-#include <cstring>
 
 #include "tracing/tracer.hpp"
+#include "util/available_memory.hpp"
 #include "util/error.hpp"
 
 namespace sbrt {
@@ -38,22 +35,6 @@ double image_bytes(int rows, int cols, const ImageNeeds &needs)
         needs.kernel_normals ? pixels * (per_pixel + KERNEL_BYTES)
                              : 2.0 * std::min(rows, BAND_ROWS) * double(cols) * per_pixel;
     return streamed + pixels * needs.whole_image_bytes_per_pixel;
-}
-
-double available_memory()
-{
-    if (FILE *in = std::fopen("/proc/meminfo", "r")) {
-        char line[256];
-        unsigned long long kb = 0;
-        bool found = false;
-        while (!found && std::fgets(line, sizeof line, in))
-            found = std::sscanf(line, "MemAvailable: %llu kB", &kb) == 1;
-        std::fclose(in);
-        if (found)
-            return double(kb) * 1024;
-    }
-    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && page > 0 ? double(pages) * double(page) : 0;
 }
 
 void check_image_fits(int rows, int cols, const ImageNeeds &needs)

@@ -27,12 +27,8 @@ struct ImageNeeds {
 /// 32 bytes more); plus what the caller keeps of the whole image.
 double image_bytes(int rows, int cols, const ImageNeeds &needs);
 
-/// Bytes this machine can still give: MemAvailable of /proc/meminfo, else
-/// its physical memory; 0 where neither is known.
-double available_memory();
-
 /// Throws sbrt::Error, with both figures and what to do, unless an image of
-/// rows x cols fits in half of available_memory() (the model, the maps
+/// rows x cols fits in half of available_memory() (util/available_memory.hpp) (the model, the maps
 /// written, GRASS and the page cache need the rest).
 void check_image_fits(int rows, int cols, const ImageNeeds &needs);
 

@@ -1,0 +1,20 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The memory this process can still have, for the checks made
+ *            before a large allocation (an import's grid, an image)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_AVAILABLE_MEMORY_HPP
+#define SBRT_AVAILABLE_MEMORY_HPP
+
+namespace sbrt {
+
+/// Bytes this process can still have: the least of MemAvailable (else
+/// physical memory), its address space limit (ulimit -v) less what it
+/// maps, and its cgroup's memory.max less memory.current; 0 when none is
+/// known.
+double available_memory();
+
+} // namespace sbrt
+
+#endif
