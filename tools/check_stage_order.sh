@@ -11,7 +11,7 @@
 set -uo pipefail
 cd "$(dirname "$0")/../lib/sbrt"
 # lowest first; keep in step with README.md (Layout)
-order=(util model format builders output frame scene tracing shading gpu)
+order=(util model format builders measure output frame scene tracing shading gpu)
 rank() {
     local i
     for i in "${!order[@]}"; do
