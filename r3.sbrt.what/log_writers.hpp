@@ -1,0 +1,47 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.what
+ * PURPOSE:   Writing the logs of the queried points: plain (a borehole log
+ *            per point), json and csv (the same key names in both)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_WHAT_LOG_WRITERS_HPP
+#define R3_SBRT_WHAT_LOG_WRITERS_HPP
+
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "measure/column_log.hpp"
+#include "what_request.hpp"
+
+/// \brief A queried point and the log of its column; no log where the
+/// point lies outside the model.
+struct PointLog {
+    QueryPoint point;
+    std::optional<sbrt::ColumnLog> log;
+};
+
+/// What a point's column is: "outside" (the model), "empty" (a column
+/// without layers) or "ok"; json's and csv's `status`.
+const char *point_status(const PointLog &point);
+
+/// A number as json and csv give it: 15 significant digits, which keep
+/// every decimal the model's float32 heights and the map's coordinates
+/// hold without the binary noise of a 17-digit print (2.4, not
+/// 2.4000000000000004).
+std::string number_text(double value);
+
+/// The class id and label of material `material` of `model`.
+const sbrt::Material &material_of(const sbrt::Model &model, uint32_t material);
+
+/// A readable log per point: top to bottom, a line per layer (top,
+/// bottom, thickness, class, label) and per gap between layers.
+void write_plain_logs(FILE *out, const sbrt::Model &model, const std::vector<PointLog> &logs);
+/// A json list of points, each with its layers (gaps left out).
+void write_json_logs(FILE *out, const sbrt::Model &model, const std::vector<PointLog> &logs);
+/// A csv row per layer (gaps left out), one row for a point outside or an
+/// empty column; a header row first.
+void write_csv_logs(FILE *out, const sbrt::Model &model, const std::vector<PointLog> &logs);
+
+#endif

@@ -1,0 +1,121 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.what
+ * AUTHOR(S): r3.sbrt authors
+ * PURPOSE:   Logs the column of an SBRT under points, as r.what queries
+ *            rasters: every layer top to bottom with its class, label,
+ *            top, bottom and thickness at the model's heights (a virtual
+ *            borehole)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <vector>
+
+#include "log_writers.hpp"
+#include "query_points.hpp"
+#include "sbrt_choices.hpp"
+#include "sbrt_store.hpp"
+#include "util/error.hpp"
+#include "what_request.hpp"
+
+namespace {
+
+/// The SBRT, of which only the blocks under the points' bounding box are
+/// decompressed (all of it for points scattered over the model).
+sbrt::Model read_model_under(const std::string &name, const std::vector<QueryPoint> &points)
+{
+    sbrt::MapArea area{points[0].y, points[0].y, points[0].x, points[0].x};
+    for (const QueryPoint &p : points) {
+        area.north = std::max(area.north, p.y);
+        area.south = std::min(area.south, p.y);
+        area.east = std::max(area.east, p.x);
+        area.west = std::min(area.west, p.x);
+    }
+    sbrt::ReadOptions options;
+    sbrt::ReadReport report;
+    options.report = &report;
+    options.area = area;
+    sbrt::Model model = sbrt_grass::read_sbrt_map(name.c_str(), options);
+    if (report.blocks)
+        G_verbose_message(_("Read %llu of the %llu blocks of SBRT <%s>"),
+                          (unsigned long long)report.blocks_read,
+                          (unsigned long long)report.blocks, name.c_str());
+    return model;
+}
+
+/// Writes the logs to output= (standard output where it is empty or "-").
+void write_logs(const WhatRequest &request, const sbrt::Model &model,
+                const std::vector<PointLog> &logs)
+{
+    const bool to_stdout = request.output.empty() || request.output == "-";
+    FILE *out = to_stdout ? stdout : std::fopen(request.output.c_str(), "w");
+    if (!out)
+        sbrt::fail("Unable to open file <", request.output, "> for writing: ",
+                   std::strerror(errno));
+    if (request.format == LogFormat::json)
+        write_json_logs(out, model, logs);
+    else if (request.format == LogFormat::csv)
+        write_csv_logs(out, model, logs);
+    else
+        write_plain_logs(out, model, logs);
+    const bool failed = std::ferror(out) != 0;
+    if ((to_stdout ? std::fflush(out) : std::fclose(out)) != 0 || failed)
+        sbrt::fail("Unable to write the logs to ", to_stdout ? "standard output" : "file <",
+                   to_stdout ? "" : request.output, to_stdout ? "" : ">");
+}
+
+void run(const WhatRequest &request)
+{
+    const std::vector<QueryPoint> points = query_points(request);
+    const sbrt::Model model = read_model_under(request.input, points);
+    std::vector<PointLog> logs(points.size());
+    size_t outside = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+        logs[i].point = points[i];
+        if (const auto cell = sbrt::cell_of_point(model.frame(), points[i].x, points[i].y))
+            logs[i].log = sbrt::column_log(model, *cell);
+        else
+            ++outside;
+    }
+    if (outside)
+        G_verbose_message(_("%zu of %zu points lie outside SBRT <%s>"), outside,
+                          points.size(), request.input.c_str());
+    write_logs(request, model, logs);
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    G_gisinit(argv[0]);
+    GModule *module = G_define_module();
+    G_add_keyword(_("raster3d"));
+    G_add_keyword(_("querying"));
+    G_add_keyword(_("position"));
+    G_add_keyword(_("geology"));
+    G_add_keyword(_("borehole"));
+    G_add_keyword(_("SBRT"));
+    module->label = _("Logs the column of an SBRT under points (virtual boreholes).");
+    module->description =
+        _("Lists every layer of a stack-based terrain model (SBRT) under the "
+          "given points, top to bottom, with class, label, top, bottom and "
+          "thickness at the model's heights.");
+    const WhatOptions options = define_what_options();
+    sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
+    if (G_parser(argc, argv))
+        exit(EXIT_FAILURE);
+    const WhatRequest request = read_what_request(options);
+    try {
+        run(request);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error("%s", e.what());
+    }
+    catch (const std::bad_alloc &) {
+        G_fatal_error(_("Out of memory while reading SBRT <%s>"), request.input.c_str());
+    }
+    exit(EXIT_SUCCESS);
+}

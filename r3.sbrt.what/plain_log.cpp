@@ -1,0 +1,76 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.what
+ * PURPOSE:   format=plain: a log per point as a borehole log reads, top to
+ *            bottom, with the gaps (caves, air under overhangs) in place
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cmath>
+
+#include "log_writers.hpp"
+
+namespace {
+
+/// Decimals of the heights: 3, or as many as the voxel height has (up to
+/// 9), so that voxel boundaries print exactly.
+int height_decimals(const sbrt::Frame &frame)
+{
+    const double tb = frame.tb_res();
+    for (int d = 3; d < 9; ++d) {
+        const double scaled = tb * std::pow(10.0, d);
+        if (std::fabs(scaled - std::round(scaled)) < 1e-6)
+            return d;
+    }
+    return 9;
+}
+
+/// The point's first line: where it is and what its column holds.
+void write_heading(FILE *out, size_t index, const PointLog &p, int decimals)
+{
+    std::fprintf(out, "Point %zu at %s, %s", index + 1, number_text(p.point.x).c_str(),
+                 number_text(p.point.y).c_str());
+    if (p.point.cat >= 0)
+        std::fprintf(out, " (cat %d)", p.point.cat);
+    if (!p.log) {
+        std::fprintf(out, ": outside the model\n");
+        return;
+    }
+    std::fprintf(out, ", row %d, col %d", p.log->cell.row, p.log->cell.col);
+    if (p.log->is_empty()) {
+        std::fprintf(out, ": empty (no layers)\n");
+        return;
+    }
+    const size_t layers = p.log->layer_count();
+    const size_t gaps = p.log->entries.size() - layers;
+    std::fprintf(out, ": %zu layer%s", layers, layers == 1 ? "" : "s");
+    if (gaps)
+        std::fprintf(out, ", %zu gap%s", gaps, gaps == 1 ? "" : "s");
+    std::fprintf(out, " from %.*f down to %.*f\n", decimals, p.log->entries.front().top,
+                 decimals, p.log->entries.back().bottom);
+}
+
+} // namespace
+
+void write_plain_logs(FILE *out, const sbrt::Model &model, const std::vector<PointLog> &logs)
+{
+    const int decimals = height_decimals(model.frame());
+    const int width = decimals + 10;
+    for (size_t i = 0; i < logs.size(); ++i) {
+        if (i)
+            std::fputc('\n', out);
+        const PointLog &p = logs[i];
+        write_heading(out, i, p, decimals);
+        if (!p.log || p.log->is_empty())
+            continue;
+        std::fprintf(out, "%*s %*s %*s %6s  %s\n", width, "top", width, "bottom", width,
+                     "thickness", "class", "label");
+        for (const sbrt::LogEntry &e : p.log->entries) {
+            std::fprintf(out, "%*.*f %*.*f %*.*f ", width, decimals, e.top, width, decimals,
+                         e.bottom, width, decimals, e.thickness());
+            if (e.is_gap())
+                std::fprintf(out, "%6s  %s\n", "", "(gap)");
+            else
+                std::fprintf(out, "%6d  %s\n", material_of(model, e.material).id,
+                             material_of(model, e.material).label.c_str());
+        }
+    }
+}

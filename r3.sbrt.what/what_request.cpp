@@ -1,0 +1,78 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.what
+ * PURPOSE:   Options of r3.sbrt.what, named and related as r.what's and
+ *            v.what's (coordinates=, points=, layer=, where=, output=) and
+ *            format= as GRASS's newer modules offer it
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "what_request.hpp"
+
+#include <cstdlib>
+#include <cstring>
+
+WhatOptions define_what_options()
+{
+    WhatOptions o;
+    o.input = G_define_option();
+    o.input->key = "input";
+    o.input->type = TYPE_STRING;
+    o.input->required = YES;
+    o.input->key_desc = "name";
+    o.input->gisprompt = "old,sbrt,sbrt";
+    o.input->description = _("Name of the SBRT to query (from r3.sbrt.convert)");
+
+    o.coordinates = G_define_standard_option(G_OPT_M_COORDS);
+    o.coordinates->multiple = YES;
+    o.coordinates->description = _("Coordinates of the columns to log");
+    o.coordinates->guisection = _("Points");
+
+    o.points = G_define_standard_option(G_OPT_V_MAP);
+    o.points->key = "points";
+    o.points->required = NO;
+    o.points->label = _("Name of vector points map whose columns to log");
+    o.points->guisection = _("Points");
+    o.layer = G_define_standard_option(G_OPT_V_FIELD);
+    o.layer->guisection = _("Points");
+    o.where = G_define_standard_option(G_OPT_DB_WHERE);
+    o.where->guisection = _("Points");
+
+    o.format = G_define_option();
+    o.format->key = "format";
+    o.format->type = TYPE_STRING;
+    o.format->required = YES;
+    o.format->options = "plain,json,csv";
+    o.format->answer = const_cast<char *>("plain");
+    o.format->label = _("Output format");
+    o.format->descriptions = _("plain;A log per point, top to bottom (readable);"
+                               "json;A list of points, each with its intervals;"
+                               "csv;One row per interval (comma separated, with a header)");
+    o.format->guisection = _("Output");
+    o.output = G_define_standard_option(G_OPT_F_OUTPUT);
+    o.output->required = NO;
+    o.output->description = _("Name for output file (if omitted or \"-\" output to stdout)");
+    o.output->guisection = _("Output");
+
+    G_option_required(o.coordinates, o.points, NULL);
+    G_option_exclusive(o.coordinates, o.points, NULL);
+    G_option_requires(o.where, o.points, NULL);
+    return o;
+}
+
+WhatRequest read_what_request(const WhatOptions &o)
+{
+    WhatRequest r;
+    r.input = o.input->answer;
+    if (o.coordinates->answers)
+        for (int i = 0; o.coordinates->answers[i] && o.coordinates->answers[i + 1]; i += 2)
+            r.coordinates.push_back({std::strtod(o.coordinates->answers[i], nullptr),
+                                     std::strtod(o.coordinates->answers[i + 1], nullptr)});
+    r.points = o.points->answer ? o.points->answer : "";
+    r.layer = o.layer->answer ? o.layer->answer : "1";
+    r.where = o.where->answer ? o.where->answer : "";
+    const std::string format = o.format->answer;
+    r.format = format == "json" ? LogFormat::json
+               : format == "csv" ? LogFormat::csv
+                                 : LogFormat::plain;
+    r.output = o.output->answer ? o.output->answer : "";
+    return r;
+}

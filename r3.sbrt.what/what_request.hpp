@@ -1,0 +1,44 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.what
+ * PURPOSE:   The module's options and the request read from them
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_WHAT_REQUEST_HPP
+#define R3_SBRT_WHAT_REQUEST_HPP
+
+#include <string>
+#include <vector>
+
+#include "grass.hpp"
+
+/// \brief The options, as G_define_option made them.
+struct WhatOptions {
+    Option *input, *coordinates, *points, *layer, *where, *format, *output;
+};
+
+/// \brief How the logs are written.
+enum class LogFormat { plain, json, csv };
+
+/// \brief A point to query: map coordinates, and its category where it
+/// comes from points= (-1 otherwise).
+struct QueryPoint {
+    double x = 0, y = 0;
+    int cat = -1;
+};
+
+/// \brief What the user asked for.
+struct WhatRequest {
+    std::string input;
+    std::vector<QueryPoint> coordinates; ///< from coordinates=
+    std::string points;                  ///< a vector map, or empty
+    std::string layer, where;
+    LogFormat format = LogFormat::plain;
+    std::string output; ///< a file; empty or "-": standard output
+};
+
+WhatOptions define_what_options();
+/// The request of the parsed options (G_parser has checked the pairs of
+/// coordinates= and the relations between the options).
+WhatRequest read_what_request(const WhatOptions &options);
+
+#endif

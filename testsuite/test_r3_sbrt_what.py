@@ -1,0 +1,309 @@
+"""
+MODULE:    testsuite/test_r3_sbrt_what.py (r3.sbrt addon)
+PURPOSE:   r3.sbrt.what against GRASS's own tools: the log of every column
+           of a voxel model (caves, an overhang, empty columns, a lens) at
+           UTM coordinates equals the voxels that r3.to.rast slices and
+           r.what read there; json and csv parsed and compared; a horizon
+           model's continuous tops equal r.what on the horizons; vector
+           points with layer= and where=; bad input fails clearly
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import csv
+import io
+import json
+import os
+import subprocess
+import tempfile
+
+from grass.gunittest.case import TestCase
+from grass.gunittest.main import test
+import grass.script as gs
+
+# 8 x 6 cells of 10 m at UTM-size coordinates, 60 voxels of 0.5 m from -20 m
+W, N, RES = 500000.0, 5800060.0, 10.0
+COLS, ROWS, DEPTHS, BOTTOM, TB = 8, 6, 60, -20.0, 0.5
+
+# bottom up (depth() from 1): classes 1..3 under a sloping surface, a lens
+# of 4 in class 2 (row 5), a cave (row 3), an overhang (col 8: nothing in
+# the lowest 6 m) and empty columns (col 1, rows 1-2)
+VOXELS = (
+    "what3d = eval("
+    "surface = -2 + 0.5 * col() + row(), "
+    "b1 = -15 + 0.5 * col(), b2 = -8 + 0.25 * row(), "
+    "cls = 1 + (z() > b1) + (z() > b2), "
+    "lens = row() == 5 && depth() >= 15 && depth() <= 18, "
+    "cave = row() == 3 && depth() >= 25 && depth() <= 30, "
+    "overhang = col() == 8 && depth() <= 12, "
+    "hole = col() == 1 && row() <= 2, "
+    "if(z() > surface || cave || overhang || hole, null(), if(lens, 4, cls)))"
+)
+# labels with a comma and quotes: csv must quote them
+LABELS = {1: "Gneiss", 2: "Sand, fine", 3: 'Clay "K"', 4: "Peat"}
+
+KEYS = ["point", "x", "y", "cat", "status", "row", "col"]
+INTERVAL_KEYS = ["class", "label", "top", "bottom", "thickness"]
+
+
+def cell_centres():
+    """The centre of every cell, row by row from the north."""
+    return [
+        (W + (c + 0.5) * RES, N - (r + 0.5) * RES)
+        for r in range(ROWS)
+        for c in range(COLS)
+    ]
+
+
+def reference_log(values):
+    """Layers (class, top, bottom), top to bottom, of a column given as
+    its voxel values bottom up (None: null), read voxel by voxel: runs of
+    one class; nulls (caves, air) are no layer."""
+    layers = []
+    previous = None
+    for z in range(DEPTHS - 1, -1, -1):
+        value = values[z]
+        if value is not None and value == previous:
+            layers[-1][2] = BOTTOM + z * TB
+        elif value is not None:
+            layers.append([value, BOTTOM + (z + 1) * TB, BOTTOM + z * TB])
+        previous = value
+    return [tuple(layer) for layer in layers]
+
+
+def write_cats(name, labels):
+    """Labels of 3D raster `name` in GRASS's cats format (8.2 has no
+    module that writes a 3D raster's labels)."""
+    env = gs.gisenv()
+    path = os.path.join(
+        env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"], "grid3", name, "cats"
+    )
+    with open(path, "w") as f:
+        f.write(f"# {len(labels)} categories\nwhat\n\n0.00 0.00 0.00 0.00\n")
+        for k, label in labels.items():
+            f.write(f"{k}:{label}\n")
+
+
+def what(**options):
+    """r3.sbrt.what's return code, standard output and messages."""
+    args = ["r3.sbrt.what"] + [
+        f"{k}={','.join(map(str, v)) if isinstance(v, (list, tuple)) else v}"
+        for k, v in options.items()
+    ]
+    run = subprocess.run(args, capture_output=True, text=True)
+    # GRASS wraps its messages: one space between words
+    return run.returncode, run.stdout, " ".join(run.stderr.split())
+
+
+def flat(points):
+    return [v for p in points for v in p]
+
+
+class TestWhatVoxelModel(TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.runModule(
+            "g.region", n=N, s=N - ROWS * RES, w=W, e=W + COLS * RES,
+            b=BOTTOM, t=BOTTOM + DEPTHS * TB, res=RES, res3=RES, tbres=TB,
+        )
+        cls.runModule("r3.mapcalc", expression=VOXELS, overwrite=True)
+        write_cats("what3d", LABELS)
+        gs.run_command("r3.sbrt.convert", input="what3d", output="what3d", overwrite=True)
+        # GRASS's own reading of the voxels: a raster per level (sl_00001
+        # the lowest), r.what at every cell centre
+        cls.runModule("r3.to.rast", input="what3d", output="sl", overwrite=True)
+        levels = [f"sl_{z:05d}" for z in range(1, DEPTHS + 1)]
+        cls.voxels = []
+        text = gs.read_command(
+            "r.what", map=levels, coordinates=flat(cell_centres()), separator="|"
+        )
+        for line in text.splitlines():
+            fields = line.split("|")[3:]
+            cls.voxels.append([None if v == "*" else int(float(v)) for v in fields])
+        # points as vector points, with a table
+        rows = "\n".join(
+            f"{k}|{x}|{y}|{'odd' if k % 2 else 'even'}"
+            for k, (x, y) in enumerate(cell_centres()[:10], start=1)
+        )
+        gs.write_command(
+            "v.in.ascii", input="-", stdin=rows, output="what_pts", x=2, y=3, cat=1,
+            columns="cat integer, x double precision, y double precision, kind varchar(8)",
+            quiet=True, overwrite=True,
+        )
+        cls.runModule("v.mkgrid", map="what_areas", grid=[2, 2], overwrite=True)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.runModule("g.remove", flags="f", type="raster_3d", name="what3d")
+        cls.runModule("g.remove", flags="f", type="raster", pattern="sl_*")
+        cls.runModule("g.remove", flags="f", type="vector", name="what_pts,what_areas")
+        cls.runModule("r3.sbrt.manage", flags="f", remove="what3d")
+        cls.del_temp_region()
+
+    def json_logs(self, **options):
+        rc, out, err = what(input="what3d", format="json", **options)
+        self.assertEqual(rc, 0, err)
+        return json.loads(out)
+
+    def test_every_column_equals_the_voxels(self):
+        self.assertEqual(len(self.voxels), ROWS * COLS)
+        points = self.json_logs(coordinates=flat(cell_centres()))
+        self.assertEqual(len(points), ROWS * COLS)
+        statuses = {"ok": 0, "empty": 0}
+        for k, (point, values) in enumerate(zip(points, self.voxels)):
+            self.assertEqual(len(values), DEPTHS)
+            ref = reference_log(values)
+            self.assertEqual(list(point.keys()), KEYS + ["intervals"])
+            self.assertEqual(point["point"], k + 1)
+            self.assertEqual((point["row"], point["col"]), (k // COLS, k % COLS))
+            self.assertEqual(point["status"], "ok" if ref else "empty")
+            statuses[point["status"]] += 1
+            got = point["intervals"]
+            self.assertEqual(len(got), len(ref), f"point {k + 1}: {got} != {ref}")
+            for interval, (cls_, top, bottom) in zip(got, ref):
+                self.assertEqual(list(interval.keys()), INTERVAL_KEYS)
+                self.assertEqual(interval["class"], cls_, f"point {k + 1}")
+                self.assertEqual(interval["label"], LABELS[cls_])
+                self.assertAlmostEqual(interval["top"], top, places=9)
+                self.assertAlmostEqual(interval["bottom"], bottom, places=9)
+                self.assertAlmostEqual(interval["thickness"], top - bottom, places=9)
+        self.assertEqual(statuses["empty"], 2)
+
+    def test_plain_log_shows_gaps_and_empty_and_outside(self):
+        # row 3 (index 2) col 4: a cave; row 1 col 1: empty; far away: outside
+        cave = cell_centres()[2 * COLS + 3]
+        empty = cell_centres()[0]
+        rc, out, err = what(input="what3d", coordinates=flat([cave, empty, (0, 0)]))
+        self.assertEqual(rc, 0, err)
+        blocks = out.split("\n\n")
+        self.assertEqual(len(blocks), 3)
+        self.assertIn("row 2, col 3", blocks[0])
+        self.assertIn("(gap)", blocks[0])
+        self.assertIn("1 gap", blocks[0])
+        self.assertIn("empty (no layers)", blocks[1])
+        self.assertIn("outside the model", blocks[2])
+        # the gap runs from the bottom of the layer above it to the top of
+        # the layer below: voxels 25..30 (depth() from 1) are the cave
+        gap = [line for line in blocks[0].splitlines() if "(gap)" in line][0]
+        top, bottom, thickness = map(float, gap.split()[:3])
+        self.assertEqual((top, bottom), (BOTTOM + 30 * TB, BOTTOM + 24 * TB))
+        self.assertEqual(thickness, 3.0)
+        # the layers of the plain log are the json's, top to bottom
+        layers = [
+            line.split() for line in blocks[0].splitlines()[2:] if "(gap)" not in line
+        ]
+        ref = reference_log(self.voxels[2 * COLS + 3])
+        self.assertEqual([int(f[3]) for f in layers], [r[0] for r in ref])
+        self.assertEqual([float(f[0]) for f in layers], [r[1] for r in ref])
+
+    def test_csv_has_a_row_per_layer_with_the_json_keys(self):
+        coords = flat(cell_centres()[:16] + [(0, 0)])
+        rc, out, err = what(input="what3d", coordinates=coords, format="csv")
+        self.assertEqual(rc, 0, err)
+        rows = list(csv.DictReader(io.StringIO(out)))
+        self.assertEqual(list(rows[0].keys()), KEYS + INTERVAL_KEYS)
+        points = self.json_logs(coordinates=coords)
+        expected = []
+        for p in points:
+            head = [str(p["point"]), p["status"]]
+            if not p["intervals"]:
+                expected.append(head + ["", "", "", ""])
+            for i in p["intervals"]:
+                expected.append(head + [str(i["class"]), i["label"], i["top"], i["bottom"]])
+        got = [
+            [r["point"], r["status"], r["class"], r["label"],
+             float(r["top"]) if r["top"] else "", float(r["bottom"]) if r["bottom"] else ""]
+            for r in rows
+        ]
+        self.assertEqual(got, expected)
+        self.assertEqual(rows[-1]["status"], "outside")
+        self.assertEqual(rows[-1]["row"], "")
+        self.assertIn('"Sand, fine"', out)  # quoted: it holds a comma
+
+    def test_vector_points_with_where_and_output_file(self):
+        points = self.json_logs(points="what_pts", where="kind = 'odd'")
+        self.assertEqual([p["cat"] for p in points], [1, 3, 5, 7, 9])
+        by_coords = self.json_logs(coordinates=flat(cell_centres()[0:10:2]))
+        for a, b in zip(points, by_coords):
+            self.assertEqual(a["intervals"], b["intervals"])
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "logs.csv")
+            self.assertModule("r3.sbrt.what", input="what3d", points="what_pts",
+                              format="csv", output=path)
+            with open(path) as f:
+                rows = list(csv.DictReader(f))
+        self.assertEqual(sorted({int(r["cat"]) for r in rows}), list(range(1, 11)))
+
+    def test_bad_input_fails_clearly(self):
+        rc, _, err = what(input="what3d", points="what_areas")
+        self.assertNotEqual(rc, 0)
+        self.assertIn("needs a vector map of points", err)
+        rc, _, err = what(input="what3d", points="no_such_points")
+        self.assertNotEqual(rc, 0)
+        self.assertIn("<no_such_points> not found", err)
+        rc, _, err = what(input="no_such_sbrt", coordinates=[W, N])
+        self.assertNotEqual(rc, 0)
+        self.assertIn("<no_such_sbrt>", err)
+        rc, _, err = what(input="what3d", coordinates=[W + 1, N - 1, W + 2])
+        self.assertNotEqual(rc, 0)
+        self.assertIn("multiples of 2", err)
+        self.assertModuleFail("r3.sbrt.what", input="what3d")
+        self.assertModuleFail(
+            "r3.sbrt.what", input="what3d", coordinates=[W + 1, N - 1], points="what_pts"
+        )
+        rc, _, err = what(input="what3d", coordinates=[W + 1, N - 1], format="xml")
+        self.assertNotEqual(rc, 0)
+        self.assertIn("format", err)
+
+
+class TestWhatHorizonModel(TestCase):
+    """Continuous tops: the log of a horizon model gives the horizons'
+    heights, not voxel levels."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.runModule(
+            "g.region", n=N, s=N - ROWS * RES, w=W, e=W + COLS * RES,
+            b=BOTTOM, t=BOTTOM + DEPTHS * TB, res=RES, res3=RES, tbres=TB,
+        )
+        cls.runModule("r.mapcalc", expression="what_h1 = 5.3 + 0.37 * col() + 0.11 * row()",
+                      overwrite=True)
+        cls.runModule("r.mapcalc", expression="what_h2 = if(col() == 2, null(), "
+                      "-7.77 - 0.029 * col() * row())", overwrite=True)
+        gs.run_command(
+            "r3.sbrt.convert", horizons="what_h1,what_h2", materials=[21, 22],
+            bottom=-17.123, output="what_hz", overwrite=True,
+        )
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.runModule("g.remove", flags="f", type="raster", name="what_h1,what_h2")
+        cls.runModule("r3.sbrt.manage", flags="f", remove="what_hz")
+        cls.del_temp_region()
+
+    def test_tops_are_the_horizons(self):
+        centres = cell_centres()
+        text = gs.read_command(
+            "r.what", map="what_h1,what_h2", coordinates=flat(centres), separator="|"
+        )
+        rc, out, err = what(input="what_hz", coordinates=flat(centres), format="json")
+        self.assertEqual(rc, 0, err)
+        points = json.loads(out)
+        off_levels = 0
+        for line, point in zip(text.splitlines(), points):
+            h1, h2 = (None if v == "*" else float(v) for v in line.split("|")[3:])
+            ref = [(21, h1)] + ([(22, h2)] if h2 is not None else [])
+            got = point["intervals"]
+            self.assertEqual([i["class"] for i in got], [r[0] for r in ref])
+            bottoms = [r[1] for r in ref[1:]] + [-17.123]
+            for i, (_, top), bottom in zip(got, ref, bottoms):
+                # float32 local heights: a few micrometres over 30 m
+                self.assertAlmostEqual(i["top"], top, delta=1e-5)
+                self.assertAlmostEqual(i["bottom"], bottom, delta=1e-5)
+                off_levels += abs(i["top"] / TB - round(i["top"] / TB)) > 1e-3
+        self.assertEqual(len(points), ROWS * COLS)
+        self.assertGreater(off_levels, ROWS * COLS)
+
+
+if __name__ == "__main__":
+    test()
