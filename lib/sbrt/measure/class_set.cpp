@@ -63,12 +63,24 @@ std::string class_name(const Model &model, uint32_t material)
     return std::to_string(m.id) + (m.label.empty() ? "" : " (" + m.label + ")");
 }
 
+/// "id (label), ..." of `materials`, in the order of their class ids.
+static std::string names_by_id(const Model &model, std::vector<uint32_t> materials)
+{
+    std::sort(materials.begin(), materials.end(), [&](uint32_t a, uint32_t b) {
+        return model.materials()[a].id < model.materials()[b].id;
+    });
+    std::string out;
+    for (size_t i = 0; i < materials.size(); ++i)
+        out += (i ? ", " : "") + class_name(model, materials[i]);
+    return out;
+}
+
 std::string list_classes(const Model &model)
 {
-    std::string out;
+    std::vector<uint32_t> all;
     for (uint32_t i = 1; i < model.materials().size(); ++i)
-        out += (i > 1 ? ", " : "") + class_name(model, i);
-    return out.empty() ? "none (the model is empty)" : out;
+        all.push_back(i);
+    return all.empty() ? "none (the model is empty)" : names_by_id(model, all);
 }
 
 ClassSet ClassSet::named(const Model &model, const std::vector<std::string> &names)
@@ -97,10 +109,7 @@ ClassSet ClassSet::of_materials(const Model &model, const std::vector<uint32_t> 
 
 std::string ClassSet::describe(const Model &model) const
 {
-    std::string out;
-    for (size_t i = 0; i < materials_.size(); ++i)
-        out += (i ? ", " : "") + class_name(model, materials_[i]);
-    return out;
+    return names_by_id(model, materials_);
 }
 
 } // namespace sbrt

@@ -34,7 +34,7 @@ public:
     }
     /// Material indices, ascending.
     const std::vector<uint32_t> &materials() const { return materials_; }
-    /// "id (label), ..." of the set's classes, for messages and reports.
+    /// "id (label), ..." of the set's classes by id, for messages and reports.
     std::string describe(const Model &model) const;
 
 private:
@@ -47,7 +47,7 @@ private:
 uint32_t find_class(const Model &model, const std::string &name);
 /// "id (label)" of a material, "id" where it has no label.
 std::string class_name(const Model &model, uint32_t material);
-/// Every class of the model: "1 (Sand), 2 (Clay), ...".
+/// Every class of the model by id: "1 (Sand), 2 (Clay), ...".
 std::string list_classes(const Model &model);
 
 } // namespace sbrt

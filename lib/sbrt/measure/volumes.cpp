@@ -71,8 +71,14 @@ void add_rows(const Model &model, const Record *records, int first, int last,
 
 std::vector<ClassSet> every_class(const Model &model)
 {
-    std::vector<ClassSet> sets;
+    std::vector<uint32_t> materials;
     for (uint32_t m = 1; m < model.materials().size(); ++m)
+        materials.push_back(m);
+    std::sort(materials.begin(), materials.end(), [&](uint32_t a, uint32_t b) {
+        return model.materials()[a].id < model.materials()[b].id;
+    });
+    std::vector<ClassSet> sets;
+    for (uint32_t m : materials)
         sets.push_back(ClassSet::of_materials(model, {m}));
     return sets;
 }

@@ -46,7 +46,7 @@ private:
 VolumeTable measure_volumes(const Model &model, const std::vector<ClassSet> &sets,
                             const CellZones &zones, unsigned threads = 0);
 
-/// One set per class of the model, in material order (1, 2, ...).
+/// One set per class of the model, in the order of the class ids.
 std::vector<ClassSet> every_class(const Model &model);
 
 } // namespace sbrt
