@@ -1,0 +1,125 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.surface
+ * AUTHOR(S): r3.sbrt authors
+ * PURPOSE:   2D raster maps of a class set of an SBRT: elevation of its
+ *            top and base, its thickness, its number of layers and the
+ *            depth of its top below the model's surface, exact at the
+ *            model's heights
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstdlib>
+#include <new>
+
+#include "sbrt_choices.hpp"
+#include "surface.hpp"
+#include "util/error.hpp"
+
+namespace {
+
+struct Options {
+    Option *input, *classes, *top, *base, *thickness, *layers, *depth, *nprocs;
+};
+
+Option *define_output(const char *key, const char *description)
+{
+    Option *o = G_define_standard_option(G_OPT_R_OUTPUT);
+    o->key = key;
+    o->required = NO;
+    o->description = description;
+    o->guisection = _("Output");
+    return o;
+}
+
+Options define_options()
+{
+    Options o;
+    o.input = G_define_option();
+    o.input->key = "input";
+    o.input->type = TYPE_STRING;
+    o.input->key_desc = "name";
+    o.input->required = YES;
+    o.input->gisprompt = "old,sbrt,sbrt";
+    o.input->description = _("Name of the input SBRT");
+    o.classes = G_define_option();
+    o.classes->key = "classes";
+    o.classes->type = TYPE_STRING;
+    o.classes->key_desc = "class";
+    o.classes->multiple = YES;
+    o.classes->required = YES;
+    o.classes->label = _("Classes of the set: class ids or labels");
+    o.classes->description = _("Labels are compared without regard to case");
+
+    o.top = define_output("top", _("Elevation of the highest top of the set"));
+    o.base = define_output("base", _("Elevation of the lowest bottom of the set"));
+    o.thickness = define_output("thickness", _("Total thickness of the set in the column"));
+    o.layers = define_output("layers",
+                             _("Number of separate layers of the set (adjacent classes "
+                               "of the set are one layer)"));
+    o.depth = define_output("depth",
+                            _("Depth of the set's top below the model's surface (the "
+                              "column's highest solid top)"));
+    o.nprocs = G_define_standard_option(G_OPT_M_NPROCS);
+    o.nprocs->answer = const_cast<char *>("0");
+    o.nprocs->description = _("Number of threads (0: all cores)");
+    G_option_required(o.top, o.base, o.thickness, o.layers, o.depth, NULL);
+    return o;
+}
+
+SurfaceRequest read_options(const Options &o)
+{
+    SurfaceRequest r;
+    r.input = o.input->answer;
+    for (char **a = o.classes->answers; a && *a; ++a)
+        r.classes.emplace_back(*a);
+    const auto answer = [](const Option *opt) {
+        return std::string(opt->answer ? opt->answer : "");
+    };
+    r.top = answer(o.top);
+    r.base = answer(o.base);
+    r.thickness = answer(o.thickness);
+    r.layers = answer(o.layers);
+    r.depth = answer(o.depth);
+    const int threads = std::atoi(o.nprocs->answer);
+    if (threads < 0)
+        G_fatal_error(_("nprocs=%s: a number of threads, 0 for all cores"),
+                      o.nprocs->answer);
+    r.threads = unsigned(threads);
+    return r;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    G_gisinit(argv[0]);
+    GModule *module = G_define_module();
+    G_add_keyword(_("raster3d"));
+    G_add_keyword(_("geology"));
+    G_add_keyword(_("thickness"));
+    G_add_keyword(_("isopach"));
+    G_add_keyword(_("SBRT"));
+    module->label = _("Tops, bases, thickness, layers and depth of a class set of an SBRT "
+                      "as 2D raster maps.");
+    module->description =
+        _("Measures a set of classes of a stack-based terrain model (SBRT) in every "
+          "cell of the current region, exactly at the model's heights.");
+    const Options options = define_options();
+    sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
+    if (G_parser(argc, argv))
+        exit(EXIT_FAILURE);
+    const SurfaceRequest request = read_options(options);
+    try {
+        make_surfaces(request);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error("%s", e.what());
+    }
+    catch (const std::bad_alloc &) {
+        G_fatal_error(_("Out of memory while measuring <%s>: set a smaller region"),
+                      request.input.c_str());
+    }
+    catch (const std::exception &e) {
+        G_fatal_error(_("Measuring <%s> failed: %s"), request.input.c_str(), e.what());
+    }
+    exit(EXIT_SUCCESS);
+}

@@ -1,0 +1,75 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.surface
+ * PURPOSE:   The column loop: every region cell sampled at its centre in
+ *            the model's grid, rows measured in parallel a block at a
+ *            time and written in order
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <algorithm>
+#include <vector>
+
+#include "measure/centre_sampling.hpp"
+#include "measure/class_set.hpp"
+#include "measure/column_figures.hpp"
+#include "sbrt_store.hpp"
+#include "surface.hpp"
+#include "surface_maps.hpp"
+#include "util/parallel.hpp"
+
+namespace {
+
+/// Rows measured together before they are written.
+constexpr int BLOCK_ROWS = 64;
+
+/// The model, only its blocks under the region where the file allows.
+sbrt::Model read_model(const SurfaceRequest &request, const struct Cell_head &region)
+{
+    sbrt::ReadOptions options;
+    options.threads = request.threads;
+    options.area = sbrt::MapArea{region.north, region.south, region.east, region.west};
+    return sbrt_grass::read_sbrt_map(request.input.c_str(), options);
+}
+
+} // namespace
+
+void make_surfaces(const SurfaceRequest &request)
+{
+    struct Cell_head region;
+    G_get_window(&region);
+    const sbrt::Model model = read_model(request, region);
+    const sbrt::ClassSet set = sbrt::ClassSet::named(model, request.classes);
+    const std::string described = set.describe(model);
+    G_verbose_message(_("Classes of the set: %s"), described.c_str());
+    const sbrt::CentreSampling sampling = sbrt::sample_at_centres(
+        model.frame(),
+        {region.north, region.south, region.east, region.west, region.rows, region.cols});
+
+    SurfaceMaps maps(request, region.cols);
+    const size_t cols = size_t(region.cols);
+    std::vector<sbrt::MapFigures> figures(size_t(BLOCK_ROWS) * cols);
+    std::vector<unsigned char> present(size_t(BLOCK_ROWS) * cols);
+    for (int first = 0; first < region.rows; first += BLOCK_ROWS) {
+        G_percent(first, region.rows, 2);
+        const int rows = std::min(BLOCK_ROWS, region.rows - first);
+        sbrt::for_each_row(rows, request.threads, [&](int k) {
+            const int model_row = sampling.model_row[size_t(first + k)];
+            for (size_t c = 0; c < cols; ++c) {
+                const size_t at = size_t(k) * cols + c;
+                const int model_col = sampling.model_col[c];
+                present[at] = 0;
+                if (model_row < 0 || model_col < 0)
+                    continue;
+                const sbrt::ColumnFigures f =
+                    sbrt::column_figures(model, model.cell_index(model_row, model_col), set);
+                if (!f.present())
+                    continue;
+                present[at] = 1;
+                figures[at] = sbrt::map_figures(model.frame(), f);
+            }
+        });
+        for (int k = 0; k < rows; ++k)
+            maps.put_row(figures.data() + size_t(k) * cols, present.data() + size_t(k) * cols);
+    }
+    G_percent(1, 1, 1);
+    maps.close(request, described);
+}

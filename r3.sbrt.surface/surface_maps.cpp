@@ -1,0 +1,157 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.surface
+ * PURPOSE:   The output maps with title, units, history and colours (as
+ *            r.series writes its maps)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "surface_maps.hpp"
+
+namespace {
+
+/// Colour table `rules` over the map's range, from `low` where given.
+void write_colors(const std::string &name, const char *rules, bool from_zero, bool integer)
+{
+    const char *mapset = G_mapset();
+    DCELL min = 0, max = 1;
+    if (integer) {
+        struct Range range;
+        Rast_read_range(name.c_str(), mapset, &range);
+        CELL cmin, cmax;
+        Rast_get_range_min_max(&range, &cmin, &cmax);
+        if (!Rast_is_c_null_value(&cmin)) {
+            min = cmin;
+            max = cmax;
+        }
+    }
+    else {
+        struct FPRange range;
+        Rast_read_fp_range(name.c_str(), mapset, &range);
+        Rast_get_fp_range_min_max(&range, &min, &max);
+        if (Rast_is_d_null_value(&min)) {
+            min = 0;
+            max = 1;
+        }
+    }
+    if (from_zero)
+        min = 0;
+    if (!(max > min))
+        max = min + 1;
+    struct Colors colors;
+    Rast_init_colors(&colors);
+    Rast_make_fp_colors(&colors, rules, min, max);
+    Rast_write_colors(name.c_str(), mapset, &colors);
+    Rast_free_colors(&colors);
+}
+
+} // namespace
+
+SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, int cols)
+    : cols_(cols), dcells_(size_t(cols)), cells_(size_t(cols))
+{
+    const std::pair<Figure, const std::string *> asked[] = {
+        {Figure::top, &request.top},
+        {Figure::base, &request.base},
+        {Figure::thickness, &request.thickness},
+        {Figure::layers, &request.layers},
+        {Figure::depth, &request.depth}};
+    for (const auto &[figure, name] : asked)
+        if (!name->empty()) {
+            const int fd = Rast_open_new(name->c_str(),
+                                         figure == Figure::layers ? CELL_TYPE : DCELL_TYPE);
+            maps_.push_back({figure, *name, fd});
+        }
+    open_ = true;
+}
+
+SurfaceMaps::~SurfaceMaps()
+{
+    if (open_)
+        for (const Map &map : maps_)
+            Rast_unopen(map.fd);
+}
+
+double SurfaceMaps::value(Figure figure, const sbrt::MapFigures &f)
+{
+    switch (figure) {
+    case Figure::top:
+        return f.top;
+    case Figure::base:
+        return f.base;
+    case Figure::thickness:
+        return f.thickness;
+    case Figure::layers:
+        return f.layers;
+    case Figure::depth:
+        return f.depth;
+    }
+    return 0;
+}
+
+void SurfaceMaps::put_row(const sbrt::MapFigures *figures, const unsigned char *present)
+{
+    for (const Map &map : maps_) {
+        if (map.figure == Figure::layers) {
+            for (int c = 0; c < cols_; ++c)
+                if (present[c])
+                    cells_[size_t(c)] = CELL(figures[c].layers);
+                else
+                    Rast_set_c_null_value(&cells_[size_t(c)], 1);
+            Rast_put_c_row(map.fd, cells_.data());
+            continue;
+        }
+        for (int c = 0; c < cols_; ++c)
+            if (present[c])
+                dcells_[size_t(c)] = value(map.figure, figures[c]);
+            else
+                Rast_set_d_null_value(&dcells_[size_t(c)], 1);
+        Rast_put_d_row(map.fd, dcells_.data());
+    }
+}
+
+void SurfaceMaps::close(const SurfaceRequest &request, const std::string &set)
+{
+    for (const Map &map : maps_)
+        Rast_close(map.fd);
+    open_ = false;
+    for (const Map &map : maps_)
+        write_metadata(map, request, set);
+}
+
+void SurfaceMaps::write_metadata(const Map &map, const SurfaceRequest &request,
+                                 const std::string &set) const
+{
+    const char *what = "";
+    switch (map.figure) {
+    case Figure::top:
+        what = "Elevation of the top";
+        write_colors(map.name, "elevation", false, false);
+        break;
+    case Figure::base:
+        what = "Elevation of the base";
+        write_colors(map.name, "elevation", false, false);
+        break;
+    case Figure::thickness:
+        what = "Thickness";
+        write_colors(map.name, "viridis", true, false);
+        break;
+    case Figure::layers:
+        what = "Number of layers";
+        write_colors(map.name, "bcyr", false, true);
+        break;
+    case Figure::depth:
+        what = "Depth below the model's surface of the top";
+        write_colors(map.name, "blues", true, false);
+        break;
+    }
+    const std::string title = std::string(what) + " of " + set + " in SBRT " + request.input;
+    Rast_put_cell_title(map.name.c_str(), title.c_str());
+    Rast_write_units(map.name.c_str(), map.figure == Figure::layers
+                                           ? "layers"
+                                           : G_database_unit_name(TRUE));
+    struct History history;
+    Rast_short_history(map.name.c_str(), "raster", &history);
+    Rast_command_history(&history);
+    Rast_format_history(&history, HIST_DATSRC_1, "SBRT %s", request.input.c_str());
+    Rast_format_history(&history, HIST_DATSRC_2, "classes %s", set.c_str());
+    Rast_write_history(map.name.c_str(), &history);
+}

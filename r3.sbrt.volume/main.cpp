@@ -1,0 +1,127 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.volume
+ * AUTHOR(S): r3.sbrt authors
+ * PURPOSE:   Volumes of the classes (or a class set) of an SBRT in the
+ *            region or per area of a vector map, exact at the model's
+ *            heights, as a table, JSON or CSV
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+#include "sbrt_choices.hpp"
+#include "util/error.hpp"
+#include "volume.hpp"
+
+namespace {
+
+struct Options {
+    Option *input, *classes, *areas, *layer, *format, *output, *nprocs;
+};
+
+Options define_options()
+{
+    Options o;
+    o.input = G_define_option();
+    o.input->key = "input";
+    o.input->type = TYPE_STRING;
+    o.input->key_desc = "name";
+    o.input->required = YES;
+    o.input->gisprompt = "old,sbrt,sbrt";
+    o.input->description = _("Name of the input SBRT");
+    o.classes = G_define_option();
+    o.classes->key = "classes";
+    o.classes->type = TYPE_STRING;
+    o.classes->key_desc = "class";
+    o.classes->multiple = YES;
+    o.classes->required = NO;
+    o.classes->label = _("Classes of one set, measured together: class ids or labels");
+    o.classes->description = _("Default: every class, one row each");
+
+    o.areas = G_define_standard_option(G_OPT_V_INPUT);
+    o.areas->key = "areas";
+    o.areas->required = NO;
+    o.areas->label = _("Vector map of areas: volumes per area category");
+    o.areas->description = _("Cells whose centre lies inside an area count for its category");
+    o.areas->guisection = _("Areas");
+    o.layer = G_define_standard_option(G_OPT_V_FIELD);
+    o.layer->guisection = _("Areas");
+
+    o.format = G_define_option();
+    o.format->key = "format";
+    o.format->type = TYPE_STRING;
+    o.format->required = YES;
+    o.format->options = "plain,json,csv";
+    o.format->answer = const_cast<char *>("plain");
+    o.format->description = _("Output format");
+    o.format->descriptions = _("plain;Table for people;json;JSON;csv;Comma-separated values");
+    o.format->guisection = _("Output");
+    o.output = G_define_standard_option(G_OPT_F_OUTPUT);
+    o.output->required = NO;
+    o.output->description = _("Name of the output file (default: standard output)");
+    o.output->guisection = _("Output");
+    o.nprocs = G_define_standard_option(G_OPT_M_NPROCS);
+    o.nprocs->answer = const_cast<char *>("0");
+    o.nprocs->description = _("Number of threads (0: all cores)");
+    // no G_option_requires(layer, areas): pygrass and the GUI pass the
+    // default layer=1 with every call
+    return o;
+}
+
+VolumeRequest read_options(const Options &o)
+{
+    VolumeRequest r;
+    r.input = o.input->answer;
+    for (char **a = o.classes->answers; a && *a; ++a)
+        r.classes.emplace_back(*a);
+    r.areas = o.areas->answer ? o.areas->answer : "";
+    r.layer = o.layer->answer ? o.layer->answer : "1";
+    r.format = std::strcmp(o.format->answer, "json") == 0  ? ReportFormat::json
+               : std::strcmp(o.format->answer, "csv") == 0 ? ReportFormat::csv
+                                                           : ReportFormat::plain;
+    r.output = o.output->answer ? o.output->answer : "";
+    const int threads = std::atoi(o.nprocs->answer);
+    if (threads < 0)
+        G_fatal_error(_("nprocs=%s: a number of threads, 0 for all cores"),
+                      o.nprocs->answer);
+    r.threads = unsigned(threads);
+    return r;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    G_gisinit(argv[0]);
+    GModule *module = G_define_module();
+    G_add_keyword(_("raster3d"));
+    G_add_keyword(_("geology"));
+    G_add_keyword(_("volume"));
+    G_add_keyword(_("statistics"));
+    G_add_keyword(_("SBRT"));
+    module->label = _("Volumes of the classes of an SBRT in the region or per area.");
+    module->description =
+        _("Sums the thickness of each class (or of a set of classes) of a stack-based "
+          "terrain model (SBRT) times the cell area over the model's cells in the "
+          "region or in the areas of a vector map.");
+    const Options options = define_options();
+    sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
+    if (G_parser(argc, argv))
+        exit(EXIT_FAILURE);
+    const VolumeRequest request = read_options(options);
+    try {
+        report_volumes(request);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error("%s", e.what());
+    }
+    catch (const std::bad_alloc &) {
+        G_fatal_error(_("Out of memory while measuring <%s>: set a smaller region"),
+                      request.input.c_str());
+    }
+    catch (const std::exception &e) {
+        G_fatal_error(_("Measuring <%s> failed: %s"), request.input.c_str(), e.what());
+    }
+    exit(EXIT_SUCCESS);
+}

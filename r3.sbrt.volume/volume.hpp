@@ -1,0 +1,60 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.volume
+ * PURPOSE:   What the module is asked, the zones of an area map, and the
+ *            report in plain, JSON or CSV form
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_VOLUME_HPP
+#define R3_SBRT_VOLUME_HPP
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "grass.hpp"
+#include "measure/cell_zones.hpp"
+#include "measure/class_set.hpp"
+#include "measure/volumes.hpp"
+
+enum class ReportFormat { plain, json, csv };
+
+/// \brief Options read.
+struct VolumeRequest {
+    std::string input;
+    std::vector<std::string> classes; ///< empty: every class, one row each
+    std::string areas, layer;         ///< areas empty: the region
+    ReportFormat format = ReportFormat::plain;
+    std::string output; ///< empty or "-": standard output
+    unsigned threads = 0;
+};
+
+/// \brief The zones of the cells counted: the region's, or one per
+/// category of the area map (cells in the region whose centre lies in an
+/// area of that category).
+struct Zones {
+    sbrt::CellZones cells;
+    std::vector<int> categories; ///< per zone; empty for the region
+};
+
+/// The areas of vector map `name` (layer `layer`) as zones of the model's
+/// cells within `region`; throws sbrt::Error for a map without areas.
+Zones area_zones(const sbrt::Model &model, const std::string &name, const std::string &layer,
+                 const sbrt::CellZones &region);
+
+/// \brief What the report shows.
+struct VolumeReport {
+    std::string input;
+    std::string units;                 ///< map units, plural ("meters")
+    std::vector<sbrt::ClassSet> sets;  ///< a row each
+    std::vector<int> categories;       ///< zones' categories, empty: region
+    const sbrt::Model *model = nullptr;
+};
+
+/// Writes `table` to `out` in `format`.
+void write_report(FILE *out, ReportFormat format, const VolumeReport &report,
+                  const sbrt::VolumeTable &table);
+
+/// Reads the SBRT, measures and writes the report (throws sbrt::Error).
+void report_volumes(const VolumeRequest &request);
+
+#endif
