@@ -65,15 +65,17 @@ SetNames names_of(const sbrt::Model &model, const sbrt::ClassSet &set)
 void write_plain(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
 {
     const bool areas = !r.categories.empty();
-    std::fprintf(out, "%-8s %-40s %22s %12s\n", areas ? "area" : "", "classes",
-                 ("volume (cubic " + r.units + ")").c_str(), "cells");
+    const std::string volume = "volume (cubic " + r.units + ")";
+    if (areas)
+        std::fprintf(out, "%-8s ", "area");
+    std::fprintf(out, "%-40s %24s %10s\n", "classes", volume.c_str(), "cells");
     for (int z = 0; z < table.zones(); ++z)
         for (size_t s = 0; s < table.sets(); ++s) {
             const sbrt::Volume &v = table.at(z, s);
-            const std::string zone = areas ? std::to_string(r.categories[size_t(z)]) : "";
-            std::fprintf(out, "%-8s %-40s %22.3f %12llu\n", zone.c_str(),
-                         r.sets[s].describe(*r.model).c_str(), v.volume,
-                         (unsigned long long)v.cells);
+            if (areas)
+                std::fprintf(out, "%-8d ", r.categories[size_t(z)]);
+            std::fprintf(out, "%-40s %24.3f %10llu\n", r.sets[s].describe(*r.model).c_str(),
+                         v.volume, (unsigned long long)v.cells);
         }
 }
 
