@@ -18,8 +18,9 @@
 
 namespace {
 
-/// Rows measured together before they are written.
-constexpr int BLOCK_ROWS = 64;
+/// Rows measured together before they are written: 64, fewer in a region
+/// so wide that 64 rows would hold more than 2^20 cells (40 MiB of figures).
+int block_rows(int cols) { return std::max(1, std::min(64, (1 << 20) / std::max(1, cols))); }
 
 /// The model, only its blocks under the region where the file allows.
 sbrt::Model read_model(const SurfaceRequest &request, const struct Cell_head &region)
@@ -46,11 +47,12 @@ void make_surfaces(const SurfaceRequest &request)
 
     SurfaceMaps maps(request, region.cols);
     const size_t cols = size_t(region.cols);
-    std::vector<sbrt::MapFigures> figures(size_t(BLOCK_ROWS) * cols);
-    std::vector<unsigned char> present(size_t(BLOCK_ROWS) * cols);
-    for (int first = 0; first < region.rows; first += BLOCK_ROWS) {
+    const int block = block_rows(region.cols);
+    std::vector<sbrt::MapFigures> figures(size_t(block) * cols);
+    std::vector<unsigned char> present(size_t(block) * cols);
+    for (int first = 0; first < region.rows; first += block) {
         G_percent(first, region.rows, 2);
-        const int rows = std::min(BLOCK_ROWS, region.rows - first);
+        const int rows = std::min(block, region.rows - first);
         sbrt::for_each_row(rows, request.threads, [&](int k) {
             const int model_row = sampling.model_row[size_t(first + k)];
             for (size_t c = 0; c < cols; ++c) {
