@@ -1,17 +1,21 @@
-# r3.sbrt addon: builds lib/sbrt and lib/grass_sbrt (static), then the
-# modules, into ./dist. Not Dir.make: its "pre" target writes into the
+# r3.sbrt addon: builds the static libraries lib/sbrt, lib/grass_sbrt and
+# lib/sbrt_gl, then the modules, into ./dist. Not Dir.make: its "pre" target writes into the
 # system GISBASE on Debian and its subdirs loop swallows failures
 # (GRASS-NOTES.md 1.7).
 MODULE_TOPDIR ?= /usr/lib/grass82
 
-SUBDIRS = \
+# lib/sbrt and lib/sbrt_gl: GRASS-free, one rule for every consumer
+# (lib/static_lib.make); lib/grass_sbrt and the modules: GRASS make
+LIBDIRS = \
 	lib/sbrt \
 	lib/grass_sbrt \
-	lib/sbrt_gl \
+	lib/sbrt_gl
+MODULEDIRS = \
 	r3.sbrt.convert \
 	r3.sbrt.manage \
 	r3.sbrt.render \
 	g.gui.sbrt
+SUBDIRS = $(LIBDIRS) $(MODULEDIRS)
 
 # Plain "make" never installs into the system GISBASE: local builds land in
 # ./dist. g.extension passes BIN=, HTMLDIR=, ... and ARCH_DISTDIR= itself.
@@ -20,8 +24,14 @@ SUBMAKE_ARGS = ARCH_DISTDIR=$(CURDIR)/dist GISBASE=$(MODULE_TOPDIR) \
 	STRINGDIR=$(CURDIR)/dist/locale/scriptstrings
 endif
 
-default:
-	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) || exit 1; done
+# one target a folder, so that make -j builds the libraries side by side and
+# then the modules side by side; the C++ modules link the libraries
+default: $(SUBDIRS)
+
+$(SUBDIRS):
+	@$(MAKE) -C $@ MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS)
+
+$(filter r3.%,$(MODULEDIRS)): $(LIBDIRS)
 
 install:
 	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) install || exit 1; done
@@ -42,6 +52,8 @@ clean:
 	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) clean; done
 	$(MAKE) -C testsuite/unit clean
 	$(MAKE) -C testsuite/fuzz clean
+	$(MAKE) -C testsuite/benchmark/trace_bench clean
+	$(MAKE) -C testsuite/benchmark/geotop_like clean
 	rm -rf dist testreport
 
-.PHONY: default install setup demo test clean
+.PHONY: default install setup demo test clean $(SUBDIRS)

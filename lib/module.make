@@ -19,16 +19,18 @@ EXTRA_INC += $(VECT_INC)
 EXTRA_CFLAGS += $(VECT_CFLAGS)
 endif
 EXTRA_HEADERS = $(wildcard $(SBRT_DIR)/*.hpp $(SBRT_DIR)/*/*.hpp $(GRASS_SBRT_DIR)/*.hpp *.hpp)
-# the static libraries (recursive: OBJDIR comes from Grass.make); the GL
-# library (lib/sbrt_gl) comes before the core library it uses
-SBRT_STLIBS = $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/$(OBJDIR)/libsbrt.a
+# the static libraries: lib/sbrt and lib/sbrt_gl in their default folder
+# (../lib/static_lib.make, the same archives the unit tests link),
+# lib/grass_sbrt in GRASS's OBJ.* (recursive: OBJDIR comes from Grass.make);
+# the GL library (lib/sbrt_gl) comes before the core library it uses
+SBRT_STLIBS = $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/build/libsbrt.a
 ifdef SBRT_USES_GL
 include ../lib/gl_config.make
 SBRT_GL_DIR = ../lib/sbrt_gl
 EXTRA_INC += -I$(SBRT_GL_DIR)
 EXTRA_HEADERS += $(wildcard $(SBRT_GL_DIR)/*.hpp)
-SBRT_STLIBS = $(SBRT_GL_DIR)/$(OBJDIR)/libsbrt_gl.a \
-              $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/$(OBJDIR)/libsbrt.a
+SBRT_STLIBS = $(SBRT_GL_DIR)/build/libsbrt_gl.a \
+              $(GRASS_SBRT_DIR)/$(OBJDIR)/libgrass_sbrt.a $(SBRT_DIR)/build/libsbrt.a
 endif
 # a changed library relinks the module
 DEPENDENCIES += $(SBRT_STLIBS)
