@@ -2,8 +2,9 @@
 ############################################################################
 # MODULE:    tools/run_tests.sh (r3.sbrt addon)
 # PURPOSE:   Runs every test: the C++ unit tests of lib/sbrt (also under
-#            ASan+UBSan), the fuzz target of the SBRT reader (FUZZ_SECONDS,
-#            default 60), both modules under valgrind on a small model, and
+#            ASan+UBSan), the fuzz targets of the SBRT reader (FUZZ_SECONDS,
+#            default 60) and of the view server's request lines
+#            (REQUEST_SECONDS, default 30), the stage order of lib/sbrt, both modules under valgrind on a small model, and
 #            each gunittest file of testsuite/ in its own
 #            fresh mapset; ends with the line "N passed, N failed" (test
 #            cases, all kinds together)
@@ -57,6 +58,18 @@ else
     failed=$((failed + 1))
     grep -E "ERROR|==[0-9]+==|crash-|leak-|timeout-" "$log/fuzz.log" | head -20
     echo "fuzz (SBRT reader): failed (log $log/fuzz.log)"
+fi
+
+# 3a. the view server's request lines fuzzed for REQUEST_SECONDS (default
+# 30): one test
+if make -s -C testsuite/fuzz run-requests REQUEST_SECONDS="${REQUEST_SECONDS:-30}" \
+    >"$log/fuzz_requests.log" 2>&1; then
+    passed=$((passed + 1))
+    echo "fuzz (view server requests): passed, $(sed -n 's/^stat::number_of_executed_units: *//p' "$log/fuzz_requests.log") lines in ${REQUEST_SECONDS:-30} s"
+else
+    failed=$((failed + 1))
+    grep -E "ERROR|==[0-9]+==|crash-|leak-|timeout-|exited" "$log/fuzz_requests.log" | head -20
+    echo "fuzz (view server requests): failed (log $log/fuzz_requests.log)"
 fi
 
 # 3b. lib/sbrt's stages include only themselves and the stages below: one test
