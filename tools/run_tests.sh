@@ -4,9 +4,9 @@
 # PURPOSE:   Runs every test: the C++ unit tests of lib/sbrt (also under
 #            ASan+UBSan), the fuzz targets of the SBRT reader (FUZZ_SECONDS,
 #            default 60) and of the view server's request lines
-#            (REQUEST_SECONDS, default 30), the stage order of lib/sbrt, both modules under valgrind on a small model, and
-#            each gunittest file of testsuite/ in its own
-#            fresh mapset; ends with the line "N passed, N failed" (test
+#            (REQUEST_SECONDS, default 30), the stage order of lib/sbrt,
+#            both modules under valgrind on a small model, and each
+#            gunittest file of testsuite/ in its own fresh mapset; ends with the line "N passed, N failed" (test
 #            cases, all kinds together)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
