@@ -42,11 +42,11 @@ clustered=$(points 0.05)
 one="$(echo "$scattered" | cut -d, -f1-2)"
 echo "$scattered" | tr ',' '\n' | paste -d'|' - - |
     v.in.ascii --q --o input=- output=what_bench_points separator=pipe x=1 y=2
-read -r all_s all_kb < <(t r3.sbrt.what input="$name" coordinates="$scattered" format=csv output=/tmp/r3sbrt_what.csv)
+read -r all_s all_kb < <(t r3.sbrt.what --o input="$name" coordinates="$scattered" format=csv output=/tmp/r3sbrt_what.csv)
 layers=$(($(wc -l </tmp/r3sbrt_what.csv) - 1))
-read -r box_s box_kb < <(t r3.sbrt.what input="$name" coordinates="$clustered" format=csv output=/tmp/r3sbrt_what_box.csv)
-read -r one_s one_kb < <(t r3.sbrt.what input="$name" coordinates="$one" format=csv output=/tmp/r3sbrt_what_one.csv)
-read -r vec_s vec_kb < <(t r3.sbrt.what input="$name" points=what_bench_points format=csv output=/tmp/r3sbrt_what_vec.csv)
+read -r box_s box_kb < <(t r3.sbrt.what --o input="$name" coordinates="$clustered" format=csv output=/tmp/r3sbrt_what_box.csv)
+read -r one_s one_kb < <(t r3.sbrt.what --o input="$name" coordinates="$one" format=csv output=/tmp/r3sbrt_what_one.csv)
+read -r vec_s vec_kb < <(t r3.sbrt.what --o input="$name" points=what_bench_points format=csv output=/tmp/r3sbrt_what_vec.csv)
 # the same logs both ways (the vector points have categories)
 cmp -s <(cut -d, -f1-3,5- /tmp/r3sbrt_what.csv) <(cut -d, -f1-3,5- /tmp/r3sbrt_what_vec.csv) ||
     echo "what $name: WARNING: the vector points' logs differ from the coordinates'"
@@ -65,8 +65,8 @@ geotop_sbrt() {
     file=$data/geotop_like_${nx}x${ny}x${nz}.nc
     [ -s "$file" ] || { "$here/geotop_like/build/geotop_like" write "$file.part" "$nx" "$ny" "$nz" &&
                         mv "$file.part" "$file"; }
-    [ -d "$data/loc/PERMANENT/sbrt/$name" ] ||
-        in_grass PERMANENT r3.sbrt.convert --q --o -o file="$file" variable=lithok output="$name" >/dev/null 2>&1
+    compgen -G "$data/loc/*/sbrt/$name" >/dev/null ||
+        in_grass what_bench r3.sbrt.convert --q --o -o file="$file" variable=lithok output="$name" >/dev/null 2>&1
     echo "$name"
 }
 
@@ -79,5 +79,7 @@ for model in ${*:-C}; do
         in_grass PERMANENT bash -c ". '$SBRT_ROOT/tools/bench_model.sh' && bench_model $model '$SBRT_ROOT/tools'" >/dev/null 2>&1
         ;;
     esac
-    in_grass PERMANENT bash "$data/what_one.sh" "$name" 2>&1 | grep "^what \|ERROR"
+    # in a mapset of its own: models of PERMANENT are found through the
+    # search path, and other benchmarks may hold PERMANENT meanwhile
+    in_grass what_bench bash "$data/what_one.sh" "$name" 2>&1 | grep "^what \|ERROR"
 done
