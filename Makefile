@@ -10,11 +10,8 @@ LIBDIRS = \
 	lib/sbrt \
 	lib/grass_sbrt \
 	lib/sbrt_gl
-MODULEDIRS = \
-	r3.sbrt.convert \
-	r3.sbrt.manage \
-	r3.sbrt.render \
-	g.gui.sbrt
+# every r3.sbrt.* folder with a Makefile is a module (no list to keep)
+MODULEDIRS = $(patsubst %/Makefile,%,$(wildcard r3.sbrt.*/Makefile)) g.gui.sbrt
 SUBDIRS = $(LIBDIRS) $(MODULEDIRS)
 
 # Plain "make" never installs into the system GISBASE: local builds land in

@@ -53,6 +53,7 @@ ifeq ($(findstring n,$(firstword -$(MAKEFLAGS))),)
 $(shell mkdir -p $(OUT) && { echo '$(build_cmd)' | cmp -s - $(OUT)/flags || \
                              echo '$(build_cmd)' >$(OUT)/flags; })
 endif
+$(OUT)/flags: ;
 
 -include $(OBJECTS:.o=.d) $(EXTRA_OBJECTS:.o=.d)
 
