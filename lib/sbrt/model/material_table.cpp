@@ -5,7 +5,7 @@
  ****************************************************************************/
 #include "model/material_table.hpp"
 
-#include <cmath>
+#include "model/palette.hpp"
 
 #include "util/error.hpp"
 
@@ -40,19 +40,20 @@ MaterialTable::materials(const std::vector<Material> &legend) const
     return materials;
 }
 
-std::array<uint8_t, 3> material_color(const Model &model, uint32_t material)
+std::array<uint8_t, 3> material_color(const std::vector<Material> &materials,
+                                      uint32_t material)
 {
-    const Material &m = model.materials()[material];
+    const Material &m = materials[material];
     if (m.has_color)
         return {m.red, m.green, m.blue};
-    // golden-angle hues: neighbouring classes get distinct colours
-    const double h = std::fmod(material * 137.508, 360.0) / 60.0;
-    const double x = 1 - std::fabs(std::fmod(h, 2.0) - 1);
-    const double rgb[6][3] = {{1, x, 0}, {x, 1, 0}, {0, 1, x},
-                              {0, x, 1}, {x, 0, 1}, {1, 0, x}};
-    const double *c = rgb[int(h) % 6];
-    return {uint8_t(60 + 180 * c[0]), uint8_t(60 + 180 * c[1]),
-            uint8_t(60 + 180 * c[2])};
+    // material 1 takes the palette's first entry: a model of n <= 30
+    // classes gets n distinguishable colours
+    return palette_color(material == EMPTY ? 0 : material - 1);
+}
+
+std::array<uint8_t, 3> material_color(const Model &model, uint32_t material)
+{
+    return material_color(model.materials(), material);
 }
 
 } // namespace sbrt

@@ -47,7 +47,10 @@ private:
     uint32_t last_material_ = EMPTY;
 };
 
-/// Colour of a material: its stored colour, else a fixed palette entry.
+/// Colour of a material: its own colour, else entry material - 1 of the
+/// default palette (model/palette.hpp).
+std::array<uint8_t, 3> material_color(const std::vector<Material> &materials,
+                                      uint32_t material);
 std::array<uint8_t, 3> material_color(const Model &model, uint32_t material);
 
 } // namespace sbrt
