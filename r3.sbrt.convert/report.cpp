@@ -5,9 +5,12 @@
  ****************************************************************************/
 #include "convert.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 
 #include "grass.hpp"
+#include "model/material_table.hpp"
 
 void print_report(const char *name, const sbrt::Model &model,
                   const sbrt::StacksFileInfo &file, bool shell)
@@ -55,10 +58,18 @@ void print_report(const char *name, const sbrt::Model &model,
     fprintf(stdout, "Resolution:    ns %.10g  ew %.10g  tb %.10g\n",
             f.ns_res(), f.ew_res(), f.tb_res());
     fprintf(stdout, "Materials:     %zu\n", model.materials().size() - 1);
-    for (size_t i = 1; i < model.materials().size(); ++i) {
+    // by class id, with the colours a render draws (own or the palette's)
+    std::vector<uint32_t> order;
+    for (uint32_t i = 1; i < model.materials().size(); ++i)
+        order.push_back(i);
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return model.materials()[a].id < model.materials()[b].id;
+    });
+    for (const uint32_t i : order) {
         const sbrt::Material &m = model.materials()[i];
-        fprintf(stdout, "  %11d  %3d:%3d:%3d  %s\n", m.id, m.red, m.green,
-                m.blue, m.label.c_str());
+        const auto rgb = sbrt::material_color(model, i);
+        fprintf(stdout, "  %11d  %3d:%3d:%3d  %s\n", m.id, rgb[0], rgb[1], rgb[2],
+                m.label.c_str());
     }
     fprintf(stdout, "Memory (papers' Table 1):\n");
     fprintf(stdout, "  voxels:            %llu\n", (unsigned long long)s.voxels);

@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "legend.hpp"
 
+#include "model/material_table.hpp"
+
 namespace sbrt_grass {
 
 void read_raster3d_legend(const char *name, const char *mapset,
@@ -42,12 +44,10 @@ void make_colors(const std::vector<sbrt::Material> &materials,
 {
     Rast_init_colors(colors);
     for (size_t i = 1; i < materials.size(); ++i) {
-        const sbrt::Material &m = materials[i];
-        if (!m.has_color)
-            continue;
-        CELL id = m.id;
-        Rast_add_c_color_rule(&id, m.red, m.green, m.blue, &id, m.red,
-                              m.green, m.blue, colors);
+        const auto rgb = sbrt::material_color(materials, uint32_t(i));
+        CELL id = materials[i].id;
+        Rast_add_c_color_rule(&id, rgb[0], rgb[1], rgb[2], &id, rgb[0], rgb[1],
+                              rgb[2], colors);
     }
 }
 

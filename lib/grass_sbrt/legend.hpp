@@ -16,7 +16,8 @@ namespace sbrt_grass {
 /// Fills label and colour of `materials` from a 3D raster's cats and colr.
 void read_raster3d_legend(const char *name, const char *mapset,
                           std::vector<sbrt::Material> &materials);
-/// A colour table with one rule per coloured material (index 0 skipped).
+/// A colour table with one rule per material (index 0 skipped): its own
+/// colour, else the default palette's, as a render draws it.
 void make_colors(const std::vector<sbrt::Material> &materials,
                  struct Colors *colors);
 /// Category labels of the materials.

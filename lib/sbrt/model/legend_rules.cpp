@@ -1,0 +1,189 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Category rules and survey presets: parsing and applying
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "model/legend_rules.hpp"
+
+#include <fnmatch.h>
+
+#include <cerrno>
+#include <cstdlib>
+
+#include "util/error.hpp"
+
+namespace sbrt {
+
+namespace {
+
+std::string trim(const std::string &s)
+{
+    const auto first = s.find_first_not_of(" \t\r");
+    if (first == std::string::npos)
+        return "";
+    return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
+
+/// A whole decimal integer in int32 range, or false.
+bool parse_id(const std::string &text, int32_t &id)
+{
+    const std::string t = trim(text);
+    if (t.empty())
+        return false;
+    char *end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(t.c_str(), &end, 10);
+    if (errno || *end || v < INT32_MIN || v > INT32_MAX || v == NULL_CLASS)
+        return false;
+    id = int32_t(v);
+    return true;
+}
+
+/// "r:g:b", each 0-255, or false.
+bool parse_rgb(const std::string &text, ClassStyle &style)
+{
+    int channel[3];
+    size_t start = 0;
+    for (int k = 0; k < 3; ++k) {
+        const size_t colon = k < 2 ? text.find(':', start) : text.size();
+        if (colon == std::string::npos)
+            return false;
+        int32_t v;
+        if (!parse_id(text.substr(start, colon - start), v) || v < 0 || v > 255)
+            return false;
+        channel[k] = v;
+        start = colon + 1;
+    }
+    style.red = uint8_t(channel[0]);
+    style.green = uint8_t(channel[1]);
+    style.blue = uint8_t(channel[2]);
+    style.has_color = true;
+    return true;
+}
+
+} // namespace
+
+std::vector<ClassStyle> parse_category_rules(std::istream &in, const std::string &what)
+{
+    std::vector<ClassStyle> rules;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        const std::string t = trim(line);
+        if (t.empty() || t[0] == '#')
+            continue;
+        // id:label, or low:high:label where the second field is an id
+        ClassStyle s;
+        const auto colon = t.find(':');
+        if (colon == std::string::npos || !parse_id(t.substr(0, colon), s.low))
+            fail(what, " line ", number, ": expected id:label or low:high:label (", t, ")");
+        s.high = s.low;
+        std::string rest = t.substr(colon + 1);
+        const auto second = rest.find(':');
+        int32_t high;
+        if (second != std::string::npos && parse_id(rest.substr(0, second), high)) {
+            if (high < s.low)
+                fail(what, " line ", number, ": range ", s.low, ":", high, " runs backwards");
+            s.high = high;
+            rest = rest.substr(second + 1);
+        }
+        s.label = trim(rest);
+        s.has_label = true;
+        rules.push_back(s);
+    }
+    return rules;
+}
+
+SurveyPreset parse_preset(std::istream &in, const std::string &what)
+{
+    SurveyPreset p;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        const std::string t = trim(line);
+        if (t.empty() || t[0] == '#')
+            continue;
+        const auto space = t.find_first_of(" \t");
+        const std::string head = t.substr(0, space);
+        const std::string rest = space == std::string::npos ? "" : trim(t.substr(space));
+        if (head.size() > 1 && head.back() == ':') {
+            const std::string key = head.substr(0, head.size() - 1);
+            if (rest.empty())
+                fail(what, " line ", number, ": ", key, ": has no value");
+            if (key == "name")
+                p.name = rest;
+            else if (key == "title")
+                p.title = rest;
+            else if (key == "reference")
+                p.reference = rest;
+            else if (key == "variable")
+                p.variables.push_back(rest);
+            else if (key == "match") {
+                const auto gap = rest.find_first_of(" \t");
+                if (gap == std::string::npos)
+                    fail(what, " line ", number, ": expected match: ATTRIBUTE PATTERN");
+                p.matches.emplace_back(rest.substr(0, gap), trim(rest.substr(gap)));
+            }
+            else
+                fail(what, " line ", number, ": unknown key ", key,
+                     " (name, title, reference, variable, match)");
+            continue;
+        }
+        // id red:green:blue label
+        ClassStyle s;
+        const auto gap = rest.find_first_of(" \t");
+        const std::string color = rest.substr(0, gap);
+        if (!parse_id(head, s.low) || !parse_rgb(color, s))
+            fail(what, " line ", number, ": expected id red:green:blue label (", t, ")");
+        s.high = s.low;
+        s.label = gap == std::string::npos ? "" : trim(rest.substr(gap));
+        s.has_label = !s.label.empty();
+        p.classes.push_back(s);
+    }
+    if (p.name.empty() || p.reference.empty() || p.classes.empty())
+        fail(what, ": a preset needs name:, reference: (where its legend comes from) "
+                   "and at least one class line");
+    return p;
+}
+
+bool preset_matches(const SurveyPreset &preset, const std::string &variable,
+                    const std::vector<std::pair<std::string, std::string>> &attributes)
+{
+    bool named = false;
+    for (const std::string &v : preset.variables)
+        named = named || v == variable;
+    if (!named)
+        return false;
+    for (const auto &[key, pattern] : preset.matches)
+        for (const auto &[name, value] : attributes)
+            if (name == key && fnmatch(pattern.c_str(), trim(value).c_str(), FNM_CASEFOLD) == 0)
+                return true;
+    return false;
+}
+
+size_t apply_styles(std::vector<Material> &materials, const std::vector<ClassStyle> &styles,
+                    bool keep_own)
+{
+    size_t changed = 0;
+    for (size_t i = 1; i < materials.size(); ++i) {
+        Material &m = materials[i];
+        const Material before = m;
+        const bool own_label = !m.label.empty(), own_color = m.has_color;
+        for (const ClassStyle &s : styles) {
+            if (m.id < s.low || m.id > s.high)
+                continue;
+            if (s.has_label && !(keep_own && own_label))
+                m.label = s.label;
+            if (s.has_color && !(keep_own && own_color)) {
+                m.red = s.red;
+                m.green = s.green;
+                m.blue = s.blue;
+                m.has_color = true;
+            }
+        }
+        if (m.label != before.label || m.has_color != before.has_color ||
+            m.red != before.red || m.green != before.green || m.blue != before.blue)
+            ++changed;
+    }
+    return changed;
+}
+
+} // namespace sbrt
