@@ -8,7 +8,9 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdio>
+#include <fcntl.h>
 #include <sstream>
+#include <unistd.h>
 
 #include "format/atomic_dir.hpp"
 #include "format/byte_sink.hpp"
@@ -69,6 +71,43 @@ void decode_cats(const std::string &text, Model &model, const std::string &what)
     }
 }
 
+std::string encode_colors(const Model &model)
+{
+    std::ostringstream out;
+    const auto &materials = model.materials();
+    for (size_t i = 1; i < materials.size(); ++i)
+        if (materials[i].has_color)
+            out << materials[i].id << ' ' << int(materials[i].red) << ':'
+                << int(materials[i].green) << ':' << int(materials[i].blue) << '\n';
+    return out.str();
+}
+
+void decode_colors(const std::string &text, Model &model, const std::string &what)
+{
+    for (Material &m : model.materials())
+        m.has_color = false;
+    std::istringstream in(text);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (line.empty())
+            continue;
+        long id = 0;
+        int r = -1, g = -1, b = -1, used = 0;
+        if (std::sscanf(line.c_str(), "%ld %d:%d:%d%n", &id, &r, &g, &b, &used) != 4 ||
+            size_t(used) != line.size() || id < INT32_MIN || id > INT32_MAX || r < 0 ||
+            r > 255 || g < 0 || g > 255 || b < 0 || b > 255)
+            fail(what, " line ", number, ": expected id red:green:blue");
+        const int64_t m = model.find_material(int32_t(id));
+        if (m > 0) {
+            Material &material = model.materials()[size_t(m)];
+            material.red = uint8_t(r);
+            material.green = uint8_t(g);
+            material.blue = uint8_t(b);
+            material.has_color = true;
+        }
+    }
+}
+
 std::string encode_header(const Model &model)
 {
     const Frame &f = model.frame();
@@ -120,7 +159,33 @@ void write_sbrt(const std::string &directory, const Model &model,
     stacks.finish();
     out.write_file("header", encode_header(model));
     out.write_file("cats", encode_cats(model));
+    out.write_file("colors", encode_colors(model));
     out.write_file("hist", history);
+    out.commit();
+}
+
+void rewrite_legend(const std::string &directory, const Model &model,
+                    const std::string &history)
+{
+    const MemberDirectory dir(directory);
+    AtomicDirectory out(directory);
+    std::string hist;
+    for (const std::string &name : dir.member_names()) {
+        if (name == "cats" || name == "colors")
+            continue;
+        const FileDescriptor member = dir.open_regular(name); // no links, no FIFOs
+        if (name == "hist") {
+            const std::vector<uint8_t> bytes = read_all(member, dir.member_path(name));
+            hist.assign(bytes.begin(), bytes.end());
+            continue;
+        }
+        // the same inode: nothing ever writes into a member in place
+        if (linkat(dir.fd(), name.c_str(), AT_FDCWD, out.file_path(name).c_str(), 0) != 0)
+            out.copy_file(name, member, dir.member_path(name));
+    }
+    out.write_file("cats", encode_cats(model));
+    out.write_file("colors", encode_colors(model));
+    out.write_file("hist", hist + history);
     out.commit();
 }
 
@@ -137,6 +202,11 @@ Model read_sbrt(const std::string &directory, const ReadOptions &options)
         const std::string cats_path = dir.member_path("cats");
         const std::vector<uint8_t> bytes = read_all(*cats, cats_path);
         decode_cats(std::string(bytes.begin(), bytes.end()), model, cats_path);
+    }
+    if (const auto colors = dir.open_regular_if_present("colors")) {
+        const std::string colors_path = dir.member_path("colors");
+        const std::vector<uint8_t> bytes = read_all(*colors, colors_path);
+        decode_colors(std::string(bytes.begin(), bytes.end()), model, colors_path);
     }
     return model;
 }

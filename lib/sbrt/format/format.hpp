@@ -2,7 +2,7 @@
  * MODULE:    lib/sbrt (r3.sbrt addon)
  * PURPOSE:   On-disk form of an SBRT: a directory with `header` (text,
  *            key: value), `stacks` (binary, checksummed: format v2, v1
- *            still read), `cats`, `hist`
+ *            still read), `cats`, `colors`, `hist`
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_FORMAT_HPP
@@ -34,6 +34,13 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
 std::string encode_cats(const Model &model);
 void decode_cats(const std::string &text, Model &model, const std::string &what);
 
+/// Text `colors`: one "id red:green:blue" line per material with a colour
+/// of its own. Where an SBRT has this member it is the truth (classes not
+/// in it take the default palette); older SBRTs have only the colours in
+/// `stacks`.
+std::string encode_colors(const Model &model);
+void decode_colors(const std::string &text, Model &model, const std::string &what);
+
 /// Human-readable `header` (key: value), informational.
 std::string encode_header(const Model &model);
 
@@ -41,6 +48,13 @@ std::string encode_header(const Model &model);
 /// stacks in format v2, streamed block by block into the file.
 void write_sbrt(const std::string &directory, const Model &model,
                 const std::string &history, const StacksV2Options &options = {});
+/// Replaces the `cats` and `colors` of the SBRT directory with those of
+/// `model` (read from it, labels and colours changed) and appends
+/// `history` to its `hist`, atomically: the other members are hard-linked
+/// into the new directory (copied where the file system cannot link), so
+/// that a national model's stacks are not rewritten.
+void rewrite_legend(const std::string &directory, const Model &model,
+                    const std::string &history);
 /// Reads and validates an SBRT directory.
 Model read_sbrt(const std::string &directory, const ReadOptions &options = {});
 /// \brief What a `stacks` file is on disk.
