@@ -1,0 +1,172 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.support
+ * AUTHOR(S): r3.sbrt authors
+ * PURPOSE:   Sets the labels and colours of an SBRT's classes after import,
+ *            as r3.colors and r.category do for maps: GRASS colour tables,
+ *            colour rules, another map's table, category rules, survey
+ *            presets
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstdlib>
+#include <ctime>
+#include <string>
+
+#include "format/format.hpp"
+#include "grass.hpp"
+#include "legend_sources.hpp"
+#include "model/legend_rules.hpp"
+#include "model/survey_presets.hpp"
+#include "sbrt_choices.hpp"
+#include "sbrt_store.hpp"
+#include "util/error.hpp"
+
+namespace {
+
+struct Options {
+    Option *sbrt, *color, *rules, *raster, *raster_3d, *preset, *labels;
+    Flag *remove;
+};
+
+Options define_options()
+{
+    Options o;
+    o.sbrt = G_define_option();
+    o.sbrt->key = "sbrt";
+    o.sbrt->type = TYPE_STRING;
+    o.sbrt->key_desc = "name";
+    o.sbrt->required = YES;
+    o.sbrt->gisprompt = "old,sbrt,sbrt";
+    o.sbrt->description = _("SBRT of the current mapset whose labels and colours to set");
+
+    o.color = G_define_standard_option(G_OPT_M_COLR);
+    o.color->description =
+        _("GRASS colour table, stretched over the range of the class ids");
+    o.color->guisection = _("Colours");
+
+    o.rules = G_define_standard_option(G_OPT_F_INPUT);
+    o.rules->key = "rules";
+    o.rules->required = NO;
+    o.rules->label = _("File of colour rules ('-' for standard input)");
+    o.rules->description = _("As r3.colors rules=: lines 'class colour' (r:g:b or a name)");
+    o.rules->guisection = _("Colours");
+
+    o.raster = G_define_standard_option(G_OPT_R_INPUT);
+    o.raster->key = "raster";
+    o.raster->required = NO;
+    o.raster->description = _("Raster map whose colours and category labels to take");
+    o.raster->guisection = _("Colours");
+
+    o.raster_3d = G_define_standard_option(G_OPT_R3_INPUT);
+    o.raster_3d->key = "raster_3d";
+    o.raster_3d->required = NO;
+    o.raster_3d->description = _("3D raster map whose colours and category labels to take");
+    o.raster_3d->guisection = _("Colours");
+
+    o.preset = G_define_option();
+    o.preset->key = "preset";
+    o.preset->type = TYPE_STRING;
+    o.preset->required = NO;
+    o.preset->description = _("Survey preset: the published labels and colours of a survey");
+    static const std::string names = sbrt::preset_names();
+    o.preset->options = names.c_str();
+
+    o.labels = G_define_standard_option(G_OPT_F_INPUT);
+    o.labels->key = "labels";
+    o.labels->required = NO;
+    o.labels->label = _("File of category rules ('-' for standard input)");
+    o.labels->description =
+        _("As r.category rules=: lines 'class:label' or 'low:high:label'");
+    o.labels->guisection = _("Labels");
+
+    o.remove = G_define_flag();
+    o.remove->key = 'r';
+    o.remove->description =
+        _("Remove the classes' own colours (the default palette draws them)");
+    o.remove->guisection = _("Colours");
+
+    G_option_exclusive(o.color, o.rules, o.raster, o.raster_3d, o.preset, o.remove, NULL);
+    G_option_required(o.color, o.rules, o.raster, o.raster_3d, o.preset, o.labels,
+                      o.remove, NULL);
+    return o;
+}
+
+/// The directory of SBRT `name`, which must be in the current mapset.
+std::string own_sbrt(const char *name)
+{
+    const std::string dir = sbrt_grass::find_sbrt(name);
+    char bare[GNAME_MAX], mapset[GMAPSET_MAX];
+    const char *plain = G_name_is_fully_qualified(name, bare, mapset) ? bare : name;
+    if (!G_find_file2(sbrt_grass::ELEMENT, plain, G_mapset()) ||
+        (plain != name && std::string(mapset) != G_mapset()))
+        G_fatal_error(_("SBRT <%s> is not in the current mapset <%s>: only its own "
+                        "SBRTs can be changed; copy it here first (r3.sbrt.manage "
+                        "copy=%s,%s)"),
+                      name, G_mapset(), name, plain);
+    return dir;
+}
+
+std::string history_line()
+{
+    const time_t now = time(nullptr);
+    char date[64];
+    strftime(date, sizeof date, "%a %b %d %H:%M:%S %Y", localtime(&now));
+    return std::string("legend changed: ") + date + " by " + G_whoami() + ": " +
+           G_recreate_command() + "\n";
+}
+
+void run(const Options &o)
+{
+    const char *name = o.sbrt->answer;
+    const std::string dir = own_sbrt(name);
+    sbrt::Model model = sbrt_grass::read_sbrt_map(name);
+    std::vector<sbrt::Material> &materials = model.materials();
+    if (materials.size() < 2)
+        G_fatal_error(_("SBRT <%s> has no classes"), name);
+    if (o.color->answer)
+        colors_from_table(o.color->answer, materials);
+    else if (o.rules->answer)
+        colors_from_rules(o.rules->answer, materials);
+    else if (o.raster->answer || o.raster_3d->answer)
+        legend_from_map(o.raster->answer ? o.raster->answer : o.raster_3d->answer,
+                        o.raster_3d->answer != nullptr, materials);
+    else if (o.preset->answer) {
+        const sbrt::SurveyPreset &preset = sbrt::find_preset(o.preset->answer);
+        const size_t changed = sbrt::apply_styles(materials, preset.classes);
+        G_message(_("Preset %s (%s; from %s): %zu of %zu classes set"),
+                  preset.name.c_str(), preset.title.c_str(), preset.reference.c_str(),
+                  changed, materials.size() - 1);
+    }
+    else if (o.remove->answer)
+        for (sbrt::Material &m : materials)
+            m.has_color = false;
+    if (o.labels->answer)
+        labels_from_rules(o.labels->answer, materials);
+    sbrt::rewrite_legend(dir, model, history_line());
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    G_gisinit(argv[0]);
+    GModule *module = G_define_module();
+    G_add_keyword(_("raster3d"));
+    G_add_keyword(_("color table"));
+    G_add_keyword(_("categories"));
+    G_add_keyword(_("geology"));
+    G_add_keyword(_("SBRT"));
+    module->description =
+        _("Sets the labels and colours of the classes of a stack-based "
+          "representation of terrains (SBRT).");
+    const Options options = define_options();
+    sbrt_grass::offer_own_sbrts_in_dialog(options.sbrt, argc, argv);
+    if (G_parser(argc, argv))
+        exit(EXIT_FAILURE);
+    try {
+        run(options);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error("%s", e.what());
+    }
+    exit(EXIT_SUCCESS);
+}
