@@ -24,10 +24,16 @@ std::vector<sbrt::Material> rule_legend(const sbrt::Classifier &classifier);
 
 /// A 3D variable of a NetCDF/HDF5/Zarr file -> SBRT in the file's own grid
 /// (the CRS checked against the location's unless `override_crs`), read in
-/// bands of about `band_bytes`.
+/// bands of about `band_bytes`. `preset` (preset=): "auto" applies the
+/// survey preset the file identifies itself as, "none" none, else the
+/// preset of that name.
 sbrt::Model file_to_sbrt(const char *file, const char *variable,
                          sbrt::Classifier &classifier, bool override_crs,
-                         size_t band_bytes);
+                         size_t band_bytes, const char *preset);
+
+/// Applies the survey preset `name` to `model` with a message; classes keep
+/// the labels and colours they have (rules=, the file's flag_meanings).
+void apply_preset(const std::string &name, sbrt::Model &model);
 
 /// Lists the variables of a file (plain or key=value).
 void print_file_variables(const char *file, bool shell);

@@ -19,6 +19,8 @@
 #include "file_variable.hpp"
 #include "grass.hpp"
 #include "util/unfilled_allocator.hpp"
+#include "model/legend_rules.hpp"
+#include "model/survey_presets.hpp"
 
 namespace {
 
@@ -41,9 +43,19 @@ sbrt::Frame located_frame(const FileVariable &variable)
 
 } // namespace
 
+void apply_preset(const std::string &name, sbrt::Model &model)
+{
+    const sbrt::SurveyPreset &preset = sbrt::find_preset(name);
+    const size_t set = sbrt::apply_styles(model.materials(), preset.classes, true);
+    G_message(_("Preset %s applied (%s, labels and colours from %s): %zu of %zu "
+                "classes; change them with r3.sbrt.support"),
+              preset.name.c_str(), preset.title.c_str(), preset.reference.c_str(), set,
+              model.materials().size() - 1);
+}
+
 sbrt::Model file_to_sbrt(const char *file, const char *name,
                          sbrt::Classifier &classifier, bool override_crs,
-                         size_t band_bytes)
+                         size_t band_bytes, const char *preset)
 {
     // a classic file's length first: the netCDF library reads what a
     // truncated one lacks as zeros
@@ -84,6 +96,17 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
                         "ncatted -a flag_meanings,%s,o,c,\"...\")"),
                       name, file, e.what(), name);
         }
+    }
+    // the survey the file says it is (global title, institution, source)
+    std::string survey = preset;
+    if (survey == "auto") {
+        const sbrt::SurveyPreset *found =
+            sbrt::identify_preset(variable.base_name(), variable.global_attributes());
+        survey = found ? found->name : "none";
+        if (found)
+            G_message(_("File <%s> identifies itself as %s (variable '%s'): preset %s "
+                        "(preset=none turns this off)"),
+                      file, found->title.c_str(), name, found->name.c_str());
     }
     sbrt::ColumnStackBuilder builder(frame);
     const size_t band = variable.band_size(max_band);
@@ -131,6 +154,8 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     if (model.stats().solid_intervals == 0)
         G_fatal_error(_("Variable '%s' of <%s> holds only missing values"), name,
                       file);
+    if (survey != "none")
+        apply_preset(survey, model);
     return model;
 }
 

@@ -376,6 +376,27 @@ sbrt::Frame FileVariable::frame() const
     return f;
 }
 
+std::vector<std::pair<std::string, std::string>> FileVariable::global_attributes() const
+{
+    std::vector<std::pair<std::string, std::string>> out;
+    const auto root = dataset_->GetRootGroup();
+    if (!root)
+        return out;
+    for (const auto &a : root->GetAttributes())
+        if (a && a->GetDataType().GetClass() == GEDTC_STRING) {
+            const char *value = a->ReadAsString();
+            out.emplace_back(a->GetName(), value ? value : "");
+        }
+    return out;
+}
+
+std::string FileVariable::base_name() const
+{
+    const std::string full = array_->GetName();
+    const auto slash = full.find_last_of('/');
+    return slash == std::string::npos ? full : full.substr(slash + 1);
+}
+
 std::vector<sbrt::Material> FileVariable::flag_labels() const
 {
     return sbrt::flag_legend(numeric_attribute(*array_, "flag_values"),

@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "builders/band_import.hpp"
@@ -71,6 +72,11 @@ public:
     /// Labels by value from `flag_values` and `flag_meanings` ('_' -> ' ');
     /// throws sbrt::Error when they do not pair (sbrt::flag_legend).
     std::vector<sbrt::Material> flag_labels() const;
+    /// The file's global string attributes (title, institution, source,
+    /// ...): what a survey's file says about itself.
+    std::vector<std::pair<std::string, std::string>> global_attributes() const;
+    /// The variable's own name, without its group ("lithok").
+    std::string base_name() const;
     /// The file's CRS (grid mapping, or `crs`/`spatial_ref`/`epsg`
     /// attributes); nullptr when the file names none.
     std::shared_ptr<OGRSpatialReference> spatial_ref() const;

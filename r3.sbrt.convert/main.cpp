@@ -15,12 +15,13 @@
 #include "grass.hpp"
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
+#include "model/survey_presets.hpp"
 
 namespace {
 
 struct Options {
     Option *input, *sbrt, *file, *variable, *output, *horizons, *materials,
-        *bottom, *rules, *memory;
+        *bottom, *rules, *memory, *preset;
     Flag *reverse, *print, *shell, *list, *override_crs, *set_region;
 };
 
@@ -106,6 +107,18 @@ Options define_options()
     o.rules->description =
         _("Lines low:high:class[:label]; '*' is an open end; values no rule "
           "covers become empty");
+
+    o.preset = G_define_option();
+    o.preset->key = "preset";
+    o.preset->type = TYPE_STRING;
+    o.preset->required = NO;
+    o.preset->answer = const_cast<char *>("auto");
+    static const std::string presets = "auto,none," + sbrt::preset_names();
+    o.preset->options = presets.c_str();
+    o.preset->label = _("Survey preset: the published labels and colours of a survey");
+    o.preset->description =
+        _("auto: the one file= identifies itself as (e.g. GeoTOP); none: no preset");
+    o.preset->guisection = _("File");
 
     o.reverse = G_define_flag();
     o.reverse->key = 'r';
@@ -254,7 +267,8 @@ void run(const Options &o)
         if (megabytes < 1)
             G_fatal_error(_("memory=%s: give at least 1 (MB)"), o.memory->answer);
         model = file_to_sbrt(o.file->answer, o.variable->answer, classifier,
-                             o.override_crs->answer, size_t(megabytes) << 20);
+                             o.override_crs->answer, size_t(megabytes) << 20,
+                             o.preset->answer);
         source = std::string("file ") + o.file->answer + " variable " +
                  o.variable->answer;
     }
@@ -270,6 +284,9 @@ void run(const Options &o)
         model = voxels_to_sbrt(input, classifier);
         source = std::string("3D raster map ") + input;
     }
+    const std::string preset = o.preset->answer;
+    if (!o.file->answer && preset != "auto" && preset != "none")
+        apply_preset(preset, model);
     sbrt_grass::write_sbrt_map(output, path, model, source);
     if (set_region)
         set_region_to(output, model.frame());

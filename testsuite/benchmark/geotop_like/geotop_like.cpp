@@ -2,9 +2,14 @@
  * MODULE:    testsuite/benchmark/geotop_like (r3.sbrt addon)
  * PURPOSE:   Writes a deterministic GeoTOP-like NetCDF file of any size
  *            (lithoclass int16 'lithok' (x, y, z), z fastest, 100 m x 100 m
- *            x 0.5 m, _FillValue -127, EPSG:28992, deflate-compressed
- *            chunks), band by band of rows; or reads the variable once
- *            through the netCDF library (the import's baseline)
+ *            x 0.5 m, _FillValue -127, deflate-compressed chunks), band by
+ *            band of rows, with the layout of TNO's GeoTOP v01r6 files
+ *            (issue 31, item 7): their global title, institution and
+ *            source, Dutch long_names, no flag_values/flag_meanings,
+ *            epsg = "7415" (RD New + NAP) on the coordinate variables and
+ *            no grid_mapping, z with standard_name depth but positive up
+ *            (m relative to NAP); or reads the variable once through the
+ *            netCDF library (the import's baseline)
  * USAGE:     geotop_like write FILE NX NY NZ | geotop_like read FILE
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
@@ -23,6 +28,8 @@ namespace {
 constexpr short FILL = -127;
 constexpr int LAYERS = 30;   // layer boundaries per column, some merge
 constexpr size_t CHUNK = 16; // chunk of 16 x 16 whole columns
+// GeoTOP's lithoclasses (4 is not used)
+constexpr short LITHOCLASSES[9] = {0, 1, 2, 3, 5, 6, 7, 8, 9};
 
 void check(int status, const char *what)
 {
@@ -53,7 +60,7 @@ bool on_land(size_t i, size_t j, size_t nx, size_t ny)
 }
 
 /// The column (z from the bottom) of cell (i, j): layers of lithoclasses
-/// 1-9 whose boundaries undulate smoothly, fill above the ground level.
+/// 0-9 (no 4) whose boundaries undulate smoothly, fill above the ground level.
 void column(size_t i, size_t j, size_t nz, short *out)
 {
     const double x = double(i), y = double(j);
@@ -67,8 +74,8 @@ void column(size_t i, size_t j, size_t nz, short *out)
                          std::cos(y / (61 + 5 * layer) - layer);
         if (layer == LAYERS - 1 || top > ground)
             top = ground;
-        const short cls = short(1 + (layer * 7 + int(x / 400) + int(y / 300) +
-                                     int(3 * noise(i / 8, j / 8, layer))) % 9);
+        const short cls = LITHOCLASSES[(layer * 7 + int(x / 400) + int(y / 300) +
+                                        int(3 * noise(i / 8, j / 8, layer))) % 9];
         for (; z < nz && double(z) < top; ++z)
             out[z] = cls;
     }
@@ -78,7 +85,7 @@ void column(size_t i, size_t j, size_t nz, short *out)
 
 int write_file(const char *path, size_t nx, size_t ny, size_t nz)
 {
-    int nc, dx, dy, dz, vx, vy, vz, vl, vc;
+    int nc, dx, dy, dz, vx, vy, vz, vl;
     check(nc_create(path, NC_NETCDF4 | NC_CLOBBER, &nc), path);
     check(nc_def_dim(nc, "x", nx, &dx), "x");
     check(nc_def_dim(nc, "y", ny, &dy), "y");
@@ -86,7 +93,6 @@ int write_file(const char *path, size_t nx, size_t ny, size_t nz)
     check(nc_def_var(nc, "x", NC_INT, 1, &dx, &vx), "x");
     check(nc_def_var(nc, "y", NC_INT, 1, &dy, &vy), "y");
     check(nc_def_var(nc, "z", NC_FLOAT, 1, &dz, &vz), "z");
-    check(nc_def_var(nc, "crs", NC_INT, 0, nullptr, &vc), "crs");
     const int dims[3] = {dx, dy, dz};
     check(nc_def_var(nc, "lithok", NC_SHORT, 3, dims, &vl), "lithok");
     const size_t chunks[3] = {CHUNK, CHUNK, nz};
@@ -97,21 +103,26 @@ int write_file(const char *path, size_t nx, size_t ny, size_t nz)
     auto text = [&](int var, const char *key, const std::string &value) {
         check(nc_put_att_text(nc, var, key, value.size(), value.c_str()), key);
     };
+    // as GeoTOP v01r6 (issue 31): the CRS only as epsg on the coordinates
     text(vx, "standard_name", "projection_x_coordinate");
+    text(vx, "long_name", "x-coordinaat");
     text(vx, "units", "m");
+    text(vx, "epsg", "7415");
     text(vy, "standard_name", "projection_y_coordinate");
+    text(vy, "long_name", "y-coordinaat");
     text(vy, "units", "m");
+    text(vy, "epsg", "7415");
+    text(vz, "standard_name", "depth");
+    text(vz, "long_name", "diepte t.o.v. NAP");
     text(vz, "positive", "up");
     text(vz, "units", "m");
-    text(vc, "epsg_code", "EPSG:28992");
-    text(vl, "long_name", "lithoclass");
-    text(vl, "grid_mapping", "crs");
-    text(vl, "flag_meanings", "anthropogenic peat clay clayey_sand fine_sand "
-                              "medium_sand coarse_sand gravel shells");
-    const short flags[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
-    check(nc_put_att_short(nc, vl, "flag_values", NC_SHORT, 9, flags), "att");
+    text(vz, "epsg", "7415");
+    text(vl, "long_name", "meest waarschijnlijke lithoklasse");
     text(NC_GLOBAL, "Conventions", "CF-1.4");
-    text(NC_GLOBAL, "title", "GeoTOP-like synthetic lithoclass model (r3.sbrt benchmark)");
+    text(NC_GLOBAL, "title", "geotop v01r6 (100.0m * 100.0m * 0.5m");
+    text(NC_GLOBAL, "institution", "TNO / Geologische Dienst Nederland");
+    text(NC_GLOBAL, "source",
+         "Generated by nl.tno.dino.geo3dmodel.generator.GeoTOPVoxelModelGenerator");
     check(nc_enddef(nc), "enddef");
 
     std::vector<int> xs(nx), ys(ny);
