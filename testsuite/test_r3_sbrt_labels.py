@@ -64,8 +64,8 @@ class TestSbrtLabels(TestCase):
     def tearDownClass(cls):
         cls.del_temp_region()
         cls.runModule("g.remove", flags="f", type="raster_3d", name="lab_v")
-        cls.runModule("g.remove", flags="f", type="raster",
-                      name="lab_2d,gt_mat,gt_rgb,gt_rgb.red,gt_rgb.green,gt_rgb.blue")
+        cls.runModule("g.remove", flags="f", type="raster", name="lab_2d")
+        cls.runModule("g.remove", flags="f", type="raster", pattern="gt_*")
 
     def fresh(self, name="lab"):
         self.lab_region()
@@ -157,6 +157,14 @@ class TestSbrtLabels(TestCase):
         self.assertIn("2:clay (klei)", cats)
         colours = gs.read_command("r.colors.out", map="gt_mat")
         self.assertIn("2 0:146:0", colours)
+        # frames: each frame's class map the same
+        self.assertModule("r3.sbrt.render", input="gt", output="gt_fr",
+                          material="gt_fm", frames=2, size=[40, 30],
+                          backend="cpu", overwrite=True)
+        for frame in ("gt_fm_0001", "gt_fm_0002"):
+            cats = gs.read_command("r.category", map=frame, separator=":", cats="0-9")
+            self.assertIn("9:shells (schelpen)", cats)
+            self.assertIn("9 95:95:255", gs.read_command("r.colors.out", map=frame))
 
     def test_bad_input_is_refused_clearly(self):
         name = self.fresh()
