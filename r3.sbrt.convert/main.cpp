@@ -16,6 +16,7 @@
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "model/survey_presets.hpp"
+#include "module_errors.hpp"
 
 namespace {
 
@@ -184,6 +185,16 @@ sbrt::Classifier read_classifier(const char *rules)
     }
 }
 
+/// What the run converts, for its error messages: the SBRT made or read,
+/// else the source.
+std::string subject_of(const Options &o)
+{
+    for (const Option *option : {o.output, o.sbrt, o.input, o.file})
+        if (option->answer)
+            return option->answer;
+    return "SBRT";
+}
+
 std::vector<std::string> answers_of(const Option *opt)
 {
     std::vector<std::string> out;
@@ -320,11 +331,9 @@ int main(int argc, char *argv[])
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
     Rast3d_init_defaults();
-    try {
-        run(options);
-    }
-    catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
-    }
+    // a worker thread's exception is carried here (sbrt::for_each_row)
+    sbrt_grass::run_reporting_errors(
+        "converting", subject_of(options),
+        _("convert a smaller region or use a larger machine"), [&] { run(options); });
     exit(EXIT_SUCCESS);
 }

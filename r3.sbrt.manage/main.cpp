@@ -12,6 +12,7 @@
 #include "util/error.hpp"
 #include "manage.hpp"
 #include "sbrt_choices.hpp"
+#include "module_errors.hpp"
 
 namespace {
 
@@ -124,11 +125,7 @@ int main(int argc, char *argv[])
     sbrt_grass::offer_own_sbrts_in_dialog(options.remove, argc, argv);
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
-    try {
-        run(options);
-    }
-    catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
-    }
+    sbrt_grass::run_reporting_errors("managing", "SBRTs", _("free some memory"),
+                                     [&] { run(options); });
     exit(EXIT_SUCCESS);
 }

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
-#include <new>
 #include <optional>
 #include <vector>
 
@@ -21,6 +20,7 @@
 #include "sbrt_choices.hpp"
 #include "util/error.hpp"
 #include "view_server.hpp"
+#include "module_errors.hpp"
 
 namespace {
 
@@ -111,20 +111,10 @@ int main(int argc, char *argv[])
     if (!parsed.request)
         G_fatal_error("%s", parsed.error.c_str());
     const RenderRequest &request = *parsed.request;
-    try {
-        run(request);
-    }
-    catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
-    }
-    catch (const std::bad_alloc &) {
-        G_fatal_error(_("Out of memory while rendering <%s>: render a smaller image "
-                        "(size=; view=top: g.region rows= cols=) or fewer outputs"),
-                      request.input.c_str());
-    }
-    catch (const std::exception &e) {
-        // thrown on a worker thread and carried here (sbrt::for_each_row)
-        G_fatal_error(_("Rendering <%s> failed: %s"), request.input.c_str(), e.what());
-    }
+    // a worker thread's exception is carried here (sbrt::for_each_row)
+    sbrt_grass::run_reporting_errors(
+        "rendering", request.input,
+        _("render a smaller image (size=; view=top: g.region rows= cols=) or fewer outputs"),
+        [&] { run(request); });
     exit(EXIT_SUCCESS);
 }

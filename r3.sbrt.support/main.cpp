@@ -19,6 +19,7 @@
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "util/error.hpp"
+#include "module_errors.hpp"
 
 namespace {
 
@@ -162,11 +163,7 @@ int main(int argc, char *argv[])
     sbrt_grass::offer_own_sbrts_in_dialog(options.sbrt, argc, argv);
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
-    try {
-        run(options);
-    }
-    catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
-    }
+    sbrt_grass::run_reporting_errors("changing the legend of SBRT", options.sbrt->answer,
+                                     _("free some memory"), [&] { run(options); });
     exit(EXIT_SUCCESS);
 }

@@ -8,11 +8,11 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <cstdlib>
-#include <new>
 
 #include "sbrt_choices.hpp"
 #include "surface.hpp"
 #include "util/error.hpp"
+#include "module_errors.hpp"
 
 namespace {
 
@@ -108,18 +108,7 @@ int main(int argc, char *argv[])
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
     const SurfaceRequest request = read_options(options);
-    try {
-        make_surfaces(request);
-    }
-    catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
-    }
-    catch (const std::bad_alloc &) {
-        G_fatal_error(_("Out of memory while measuring <%s>: set a smaller region"),
-                      request.input.c_str());
-    }
-    catch (const std::exception &e) {
-        G_fatal_error(_("Measuring <%s> failed: %s"), request.input.c_str(), e.what());
-    }
+    sbrt_grass::run_reporting_errors("measuring", request.input, _("set a smaller region"),
+                                     [&] { make_surfaces(request); });
     exit(EXIT_SUCCESS);
 }

@@ -8,11 +8,11 @@
  ****************************************************************************/
 #include <cstdlib>
 #include <cstring>
-#include <new>
 
 #include "sbrt_choices.hpp"
 #include "util/error.hpp"
 #include "volume.hpp"
+#include "module_errors.hpp"
 
 namespace {
 
@@ -110,18 +110,7 @@ int main(int argc, char *argv[])
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
     const VolumeRequest request = read_options(options);
-    try {
-        report_volumes(request);
-    }
-    catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
-    }
-    catch (const std::bad_alloc &) {
-        G_fatal_error(_("Out of memory while measuring <%s>: set a smaller region"),
-                      request.input.c_str());
-    }
-    catch (const std::exception &e) {
-        G_fatal_error(_("Measuring <%s> failed: %s"), request.input.c_str(), e.what());
-    }
+    sbrt_grass::run_reporting_errors("measuring", request.input, _("set a smaller region"),
+                                     [&] { report_volumes(request); });
     exit(EXIT_SUCCESS);
 }

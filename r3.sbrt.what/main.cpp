@@ -11,7 +11,6 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <new>
 #include <vector>
 
 #include "log_writers.hpp"
@@ -20,6 +19,7 @@
 #include "sbrt_store.hpp"
 #include "util/error.hpp"
 #include "what_request.hpp"
+#include "module_errors.hpp"
 
 namespace {
 
@@ -108,14 +108,8 @@ int main(int argc, char *argv[])
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
     const WhatRequest request = read_what_request(options);
-    try {
-        run(request);
-    }
-    catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
-    }
-    catch (const std::bad_alloc &) {
-        G_fatal_error(_("Out of memory while reading SBRT <%s>"), request.input.c_str());
-    }
+    sbrt_grass::run_reporting_errors("reading SBRT", request.input,
+                                     _("ask for fewer points at a time"),
+                                     [&] { run(request); });
     exit(EXIT_SUCCESS);
 }

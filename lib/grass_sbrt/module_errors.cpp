@@ -1,0 +1,34 @@
+/****************************************************************************
+ * MODULE:    lib/grass_sbrt (r3.sbrt addon)
+ * PURPOSE:   The modules' errors as GRASS's fatal error
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "module_errors.hpp"
+
+#include <exception>
+#include <new>
+
+#include "grass.hpp"
+#include "util/error.hpp"
+
+namespace sbrt_grass {
+
+void run_reporting_errors(const char *doing, const std::string &subject,
+                          const char *memory_hint, const std::function<void()> &job)
+{
+    try {
+        job();
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error("%s", e.what());
+    }
+    catch (const std::bad_alloc &) {
+        G_fatal_error(_("Out of memory while %s <%s>: %s"), doing, subject.c_str(),
+                      memory_hint);
+    }
+    catch (const std::exception &e) {
+        G_fatal_error(_("Failed while %s <%s>: %s"), doing, subject.c_str(), e.what());
+    }
+}
+
+} // namespace sbrt_grass
