@@ -59,11 +59,6 @@ bool same_grid(const sbrt::Frame &a, const sbrt::Frame &b);
 void warn_if_other_grid(const char *name, const sbrt::Frame &model,
                         const sbrt::Frame &region);
 
-/// Fatal error, before any work, unless `name` can name a new SBRT
-/// (`sbrt`) or 3D raster map: legal in GRASS, and short enough for its
-/// files (an SBRT's hidden sibling while it is written included).
-void check_output_name(const char *name, bool sbrt);
-
 /// Prints the metadata and Table 1 figures (plain or key=value).
 /// The papers' Table 1 figures in memory and the stacks file on disk.
 void print_report(const char *name, const sbrt::Model &model,

@@ -16,6 +16,7 @@
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "model/survey_presets.hpp"
+#include "map_names.hpp"
 #include "module_errors.hpp"
 
 namespace {
@@ -230,7 +231,7 @@ void run(const Options &o)
         if (!sbrt || !output)
             G_fatal_error(_("-r needs sbrt= (an SBRT) and output= (a new 3D "
                             "raster map)"));
-        check_output_name(output, false);
+        sbrt_grass::check_new_name(output, false, "output");
         sbrt_grass::check_new_raster3d(output, overwrite);
         if (set_region)
             set_region_to(sbrt, sbrt_grass::read_sbrt_map(sbrt).frame());
@@ -264,7 +265,7 @@ void run(const Options &o)
         return;
     }
     // checked before the work, written after it
-    check_output_name(output, true);
+    sbrt_grass::check_new_name(output, true, "output");
     const std::string path = sbrt_grass::new_sbrt_path(output, overwrite);
     sbrt::Model model;
     std::string source;

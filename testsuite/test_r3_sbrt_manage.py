@@ -282,6 +282,17 @@ class TestManageCopy(ManageFixture):
             )
         self.assertEntries(WORK, ["cave", "geo"])
 
+    def test_copy_and_rename_to_a_too_long_name(self):
+        """Issue 28, item 9: a 300-character name is refused with the
+        limit, not with the file system's error."""
+        long_name = "n" * 300
+        for option in ("copy", "rename"):
+            run = self.manage(**{option: "geo," + long_name})
+            self.assertNotEqual(run.returncode, 0)
+            self.assertIn("at most 239", " ".join(run.messages.split()))
+            self.assertNotIn("AtomicDirectory", run.messages)
+        self.assertEntries(WORK, ["cave", "geo"])
+
     def test_several_pairs_copy_what_they_can(self):
         run = self.manage(copy="geo,g1,nothing,g2,cave,g3,deep,geo")
         self.assertEqual(run.returncode, 0, run.stderr)

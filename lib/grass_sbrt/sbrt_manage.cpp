@@ -16,6 +16,7 @@
 #include "format/member_dir.hpp"
 #include "util/error.hpp"
 #include "grass.hpp"
+#include "map_names.hpp"
 #include "sbrt_store.hpp"
 
 namespace sbrt_grass {
@@ -128,7 +129,7 @@ list_stored_sbrts(const std::vector<std::string> &mapsets)
 void copy_sbrt(const StoredSbrt &source, const std::string &target)
 {
     require_legal_name(source.name, "copy_sbrt");
-    require_legal_name(target, "copy_sbrt");
+    check_new_name(target.c_str(), true, "copy");
     // the source may be another user's: read as untrusted (issue 28), its
     // members relative to it, regular files only, never through a link
     const sbrt::MemberDirectory from(sbrt_directory(source.name, source.mapset));
@@ -154,7 +155,7 @@ void copy_sbrt(const StoredSbrt &source, const std::string &target)
 void rename_sbrt(const std::string &from, const std::string &to)
 {
     require_legal_name(from, "rename_sbrt");
-    require_legal_name(to, "rename_sbrt");
+    check_new_name(to.c_str(), true, "rename");
     const std::string old_path = sbrt_directory(from, G_mapset());
     if (!has_entry(old_path))
         fail("rename_sbrt: no SBRT at ", old_path);
