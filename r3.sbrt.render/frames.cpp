@@ -7,6 +7,8 @@
 #include "request_error.hpp"
 
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -152,8 +154,8 @@ void check_video(const RenderRequest &request)
         bad_request(_("video=%s: give a .mp4, .webm or .gif file"),
                       request.video.c_str());
     if (request.png.empty())
-        bad_request(_("video= is made of the frames' PNG files: give png= too "
-                        "(e.g. png=orbit_%%04d.png)"));
+        bad_request(_("video= is made of the frames' PNG files: give png= (e.g. "
+                      "png=orbit_%%04d.png), or render every frame in one run"));
     if (!on_path("ffmpeg"))
         bad_request(_("video=%s needs ffmpeg, which is not on the PATH: install "
                         "it (Debian: apt-get install ffmpeg), or leave video= out "
@@ -230,4 +232,29 @@ void assemble_video(const RenderRequest &request)
     if (std::rename(temp.c_str(), request.video.c_str()) != 0)
         bad_request(_("Cannot move the video into place as <%s>"),
                       request.video.c_str());
+}
+
+TemporaryFrames::TemporaryFrames(const RenderRequest &request) : frames_(request.frames)
+{
+    if (request.first_frame != 1 || request.last_frame != request.frames)
+        bad_request(_("video= without png= keeps its frames only for this run: "
+                      "render all %d frames (no range=), or give png= so that the "
+                      "runs of range= share their frames"),
+                    request.frames);
+    // a folder in the mapset's temporary directory (removed by GRASS too
+    // where a run is killed)
+    char *name = G_tempfile();
+    folder_ = name;
+    G_free(name);
+    if (mkdir(folder_.c_str(), 0700) != 0)
+        bad_request(_("Cannot make a folder for the video's frames <%s>: %s"),
+                    folder_.c_str(), std::strerror(errno));
+    png_ = folder_ + "/frame_%04d.png";
+}
+
+TemporaryFrames::~TemporaryFrames()
+{
+    for (int k = 1; k <= frames_; ++k)
+        std::remove(png_of_frame(png_, k).c_str());
+    rmdir(folder_.c_str());
 }

@@ -36,4 +36,21 @@ void register_frames(const RenderRequest &request);
 /// Assembles the PNG files of all frames into video= at fps= with ffmpeg.
 void assemble_video(const RenderRequest &request);
 
+/// \brief The frames of a video= given without png=: PNG files in a
+/// temporary folder of the mapset, removed with it when the run ends
+/// (made or not). All frames must be rendered in this run (no range=).
+class TemporaryFrames {
+public:
+    explicit TemporaryFrames(const RenderRequest &request);
+    ~TemporaryFrames();
+    TemporaryFrames(const TemporaryFrames &) = delete;
+    TemporaryFrames &operator=(const TemporaryFrames &) = delete;
+    /// png= for the frames: a pattern in the folder.
+    const std::string &png() const { return png_; }
+
+private:
+    std::string folder_, png_;
+    int frames_;
+};
+
 #endif

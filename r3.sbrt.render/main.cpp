@@ -41,8 +41,15 @@ void render_frame(const RenderRequest &request, RenderSession &session,
     maps.close(session.renderer().model());
 }
 
-void run(const RenderRequest &request)
+void run(const RenderRequest &asked)
 {
+    // video= alone: its frames in a temporary folder, removed after
+    RenderRequest request = asked;
+    std::optional<TemporaryFrames> video_frames;
+    if (!request.video.empty() && request.png.empty() && request.frames > 1) {
+        video_frames.emplace(request);
+        request.png = video_frames->png();
+    }
     check_png_pattern(request.png);
     check_video(request);
     struct Cell_head region;

@@ -176,6 +176,24 @@ class TestFrames(TestCase):
         self.assertIn("frame 3 is not rendered", said(run))
         self.assertFalse(os.path.exists(video))
 
+    def test_video_without_png(self):
+        """Issue 31, item 6: video= alone makes the video from frames in a
+        temporary folder, removed after."""
+        if not shutil.which("ffprobe"):
+            self.skipTest("no ffmpeg (tools/setup.sh installs it)")
+        video = os.path.join(self.dir, "alone.mp4")
+        env = gs.gisenv()
+        tmp = os.path.join(env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"], ".tmp")
+        before = set(os.listdir(tmp)) if os.path.isdir(tmp) else set()
+        self.render("output=va", "frames=4", f"video={video}", "fps=4")
+        count = subprocess.run(
+            ["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
+             "-show_entries", "stream=nb_read_frames", "-of", "csv=p=0", video],
+            capture_output=True, text=True, check=True).stdout.strip()
+        self.assertEqual(count, "4")
+        after = set(os.listdir(tmp)) if os.path.isdir(tmp) else set()
+        self.assertEqual(after - before, set(), "frames left behind")
+
     def test_keys_pass_through_every_keyframe(self):
         keys = [(-800, -800, 1500, 1000, 1250, 300, 40),
                 (1000, -1500, 1200, 1000, 1250, 300, 35),
@@ -287,7 +305,7 @@ class TestFrames(TestCase):
             (["frames=4", "view=top"], "top view does not turn"),
             (["frames=2", "png=/tmp/a_%d_%d.png"], "one %d"),
             (["frames=2", "png=/tmp/a.png", "video=/tmp/a.avi"], ".mp4, .webm or .gif"),
-            (["frames=2", "video=/tmp/a.mp4"], "give png="),
+            (["frames=4", "video=/tmp/a.mp4", "range=1-2"], "without png="),
             (["strds=x"], "give frames="),
         ):
             run = self.render("output=bad", *args, check=False)
