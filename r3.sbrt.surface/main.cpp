@@ -13,6 +13,7 @@
 #include "surface.hpp"
 #include "util/error.hpp"
 #include "module_errors.hpp"
+#include "module_options.hpp"
 
 namespace {
 
@@ -33,13 +34,7 @@ Option *define_output(const char *key, const char *description)
 Options define_options()
 {
     Options o;
-    o.input = G_define_option();
-    o.input->key = "input";
-    o.input->type = TYPE_STRING;
-    o.input->key_desc = "name";
-    o.input->required = YES;
-    o.input->gisprompt = "old,sbrt,sbrt";
-    o.input->description = _("Name of the input SBRT");
+    o.input = sbrt_grass::define_sbrt_input(_("Name of the input SBRT"));
     o.classes = G_define_option();
     o.classes->key = "classes";
     o.classes->type = TYPE_STRING;
@@ -58,9 +53,7 @@ Options define_options()
     o.depth = define_output("depth",
                             _("Depth of the set's top below the model's surface (the "
                               "column's highest solid top)"));
-    o.nprocs = G_define_standard_option(G_OPT_M_NPROCS);
-    o.nprocs->answer = const_cast<char *>("0");
-    o.nprocs->description = _("Number of threads (0: all cores)");
+    o.nprocs = sbrt_grass::define_nprocs();
     G_option_required(o.top, o.base, o.thickness, o.layers, o.depth, NULL);
     return o;
 }
@@ -79,11 +72,7 @@ SurfaceRequest read_options(const Options &o)
     r.thickness = answer(o.thickness);
     r.layers = answer(o.layers);
     r.depth = answer(o.depth);
-    const int threads = std::atoi(o.nprocs->answer);
-    if (threads < 0)
-        G_fatal_error(_("nprocs=%s: a number of threads, 0 for all cores"),
-                      o.nprocs->answer);
-    r.threads = unsigned(threads);
+    r.threads = sbrt_grass::read_nprocs(o.nprocs);
     return r;
 }
 

@@ -13,6 +13,7 @@
 #include "util/error.hpp"
 #include "volume.hpp"
 #include "module_errors.hpp"
+#include "module_options.hpp"
 
 namespace {
 
@@ -23,13 +24,7 @@ struct Options {
 Options define_options()
 {
     Options o;
-    o.input = G_define_option();
-    o.input->key = "input";
-    o.input->type = TYPE_STRING;
-    o.input->key_desc = "name";
-    o.input->required = YES;
-    o.input->gisprompt = "old,sbrt,sbrt";
-    o.input->description = _("Name of the input SBRT");
+    o.input = sbrt_grass::define_sbrt_input(_("Name of the input SBRT"));
     o.classes = G_define_option();
     o.classes->key = "classes";
     o.classes->type = TYPE_STRING;
@@ -61,9 +56,7 @@ Options define_options()
     o.output->required = NO;
     o.output->description = _("Name of the output file (default: standard output)");
     o.output->guisection = _("Output");
-    o.nprocs = G_define_standard_option(G_OPT_M_NPROCS);
-    o.nprocs->answer = const_cast<char *>("0");
-    o.nprocs->description = _("Number of threads (0: all cores)");
+    o.nprocs = sbrt_grass::define_nprocs();
     // no G_option_requires(layer, areas): pygrass and the GUI pass the
     // default layer=1 with every call
     return o;
@@ -81,11 +74,7 @@ VolumeRequest read_options(const Options &o)
                : std::strcmp(o.format->answer, "csv") == 0 ? ReportFormat::csv
                                                            : ReportFormat::plain;
     r.output = o.output->answer ? o.output->answer : "";
-    const int threads = std::atoi(o.nprocs->answer);
-    if (threads < 0)
-        G_fatal_error(_("nprocs=%s: a number of threads, 0 for all cores"),
-                      o.nprocs->answer);
-    r.threads = unsigned(threads);
+    r.threads = sbrt_grass::read_nprocs(o.nprocs);
     return r;
 }
 

@@ -6,6 +6,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "what_request.hpp"
+#include "module_options.hpp"
 
 #include <cstdlib>
 #include <cstring>
@@ -13,13 +14,8 @@
 WhatOptions define_what_options()
 {
     WhatOptions o;
-    o.input = G_define_option();
-    o.input->key = "input";
-    o.input->type = TYPE_STRING;
-    o.input->required = YES;
-    o.input->key_desc = "name";
-    o.input->gisprompt = "old,sbrt,sbrt";
-    o.input->description = _("Name of the SBRT to query (from r3.sbrt.convert)");
+    o.input =
+        sbrt_grass::define_sbrt_input(_("Name of the SBRT to query (from r3.sbrt.convert)"));
 
     o.coordinates = G_define_standard_option(G_OPT_M_COORDS);
     o.coordinates->multiple = YES;

@@ -1,0 +1,41 @@
+/****************************************************************************
+ * MODULE:    lib/grass_sbrt (r3.sbrt addon)
+ * PURPOSE:   Options the measuring modules share
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "module_options.hpp"
+
+#include <cstdlib>
+
+namespace sbrt_grass {
+
+Option *define_sbrt_input(const char *description)
+{
+    Option *o = G_define_option();
+    o->key = "input";
+    o->type = TYPE_STRING;
+    o->key_desc = "name";
+    o->required = YES;
+    o->gisprompt = "old,sbrt,sbrt";
+    o->description = description;
+    return o;
+}
+
+Option *define_nprocs()
+{
+    Option *o = G_define_standard_option(G_OPT_M_NPROCS);
+    o->answer = const_cast<char *>("0");
+    o->description = _("Number of threads (0: all cores)");
+    return o;
+}
+
+unsigned read_nprocs(const Option *nprocs)
+{
+    const int threads = std::atoi(nprocs->answer);
+    if (threads < 0)
+        G_fatal_error(_("nprocs=%s: a number of threads, 0 for all cores"),
+                      nprocs->answer);
+    return unsigned(threads);
+}
+
+} // namespace sbrt_grass

@@ -1,0 +1,24 @@
+/****************************************************************************
+ * MODULE:    lib/grass_sbrt (r3.sbrt addon)
+ * PURPOSE:   Options the measuring modules share: the SBRT read, and the
+ *            number of threads
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_MODULE_OPTIONS_HPP
+#define SBRT_MODULE_OPTIONS_HPP
+
+#include "grass.hpp"
+
+namespace sbrt_grass {
+
+/// input=: an existing SBRT (the dialogs offer them: offer_sbrts_in_dialog).
+Option *define_sbrt_input(const char *description);
+
+/// nprocs=: threads, 0 (the default) for all cores.
+Option *define_nprocs();
+/// Its answer; a fatal error for a negative number.
+unsigned read_nprocs(const Option *nprocs);
+
+} // namespace sbrt_grass
+
+#endif
