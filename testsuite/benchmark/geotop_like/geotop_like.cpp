@@ -8,9 +8,16 @@
  *            source, Dutch long_names, no flag_values/flag_meanings,
  *            epsg = "7415" (RD New + NAP) on the coordinate variables and
  *            no grid_mapping, z with standard_name depth but positive up
- *            (m relative to NAP); or reads the variable once through the
- *            netCDF library (the import's baseline)
- * USAGE:     geotop_like write FILE NX NY NZ | geotop_like read FILE
+ *            (m relative to NAP). With `properties` also GeoTOP's
+ *            per-voxel channels (issue 29): kans_1 ... kans_9, the
+ *            probability in percent of each lithoclass (integers summing to
+ *            100 in every valid voxel, 0 in class-0 voxels, kans_4 0
+ *            everywhere), onz_lk = round(100 H(p) / ln K) (K the classes
+ *            possible in the voxel's unit) and onz_ls (0..30), int16 with
+ *            _FillValue -127, on the same dims. Or reads the variables once
+ *            through the netCDF library (the import's baseline)
+ * USAGE:     geotop_like write FILE NX NY NZ [properties] |
+ *            geotop_like read FILE [VARIABLE...]
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <netcdf.h>
@@ -21,6 +28,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <algorithm>
 #include <vector>
 
 namespace {
@@ -60,8 +68,9 @@ bool on_land(size_t i, size_t j, size_t nx, size_t ny)
 }
 
 /// The column (z from the bottom) of cell (i, j): layers of lithoclasses
-/// 0-9 (no 4) whose boundaries undulate smoothly, fill above the ground level.
-void column(size_t i, size_t j, size_t nz, short *out)
+/// 0-9 (no 4) whose boundaries undulate smoothly, fill above the ground
+/// level; `layers` (where given) gets each voxel's layer.
+void column(size_t i, size_t j, size_t nz, short *out, short *layers = nullptr)
 {
     const double x = double(i), y = double(j);
     const double ground = nz * (0.82 + 0.08 * std::sin(x / 211) * std::cos(y / 173)) +
@@ -76,16 +85,99 @@ void column(size_t i, size_t j, size_t nz, short *out)
             top = ground;
         const short cls = LITHOCLASSES[(layer * 7 + int(x / 400) + int(y / 300) +
                                         int(3 * noise(i / 8, j / 8, layer))) % 9];
-        for (; z < nz && double(z) < top; ++z)
+        for (; z < nz && double(z) < top; ++z) {
             out[z] = cls;
+            if (layers)
+                layers[z] = short(layer);
+        }
     }
     for (; z < nz; ++z)
         out[z] = FILL;
 }
 
-int write_file(const char *path, size_t nx, size_t ny, size_t nz)
+constexpr int PROPERTIES = 11; // kans_1 ... kans_9, onz_lk, onz_ls
+const char *const PROPERTY_NAMES[PROPERTIES] = {
+    "kans_1", "kans_2", "kans_3", "kans_4", "kans_5", "kans_6",
+    "kans_7", "kans_8", "kans_9", "onz_lk", "onz_ls"};
+/// The lithoclasses possible in a unit (4 of the 8 with a probability).
+constexpr int POSSIBLE = 4;
+
+/// The eleven channels of one column, `props[p * nz + z]`: percentages from
+/// smooth weights of the classes possible in the voxel's layer (the class
+/// of lithok weighted most, so that it is not the most probable in some
+/// voxels only), rounded by largest remainders to sum to exactly 100.
+void property_column(size_t i, size_t j, size_t nz, const short *classes,
+                     const short *layers, short *props)
 {
-    int nc, dx, dy, dz, vx, vy, vz, vl;
+    static const short candidates[8] = {1, 2, 3, 5, 6, 7, 8, 9};
+    const double x = double(i), y = double(j);
+    for (size_t z = 0; z < nz; ++z) {
+        short *at[PROPERTIES];
+        for (int p = 0; p < PROPERTIES; ++p)
+            at[p] = props + size_t(p) * nz + z;
+        if (classes[z] == FILL) {
+            for (int p = 0; p < PROPERTIES; ++p)
+                *at[p] = FILL;
+            continue;
+        }
+        const int layer = layers[z];
+        *at[10] = short(std::lround(15 + 15 * std::sin(z / 9.0 + x / 97 + layer) *
+                                             std::cos(y / 83 - 0.3 * layer)));
+        if (classes[z] == 0) { // anthropogenic: no lithoclass probabilities
+            for (int p = 0; p < 10; ++p)
+                *at[p] = 0;
+            continue;
+        }
+        // the classes possible in this layer: lithok's and three others
+        int classes_of_unit[POSSIBLE];
+        double weight[POSSIBLE];
+        classes_of_unit[0] = classes[z];
+        for (int k = 1, c = layer; k < POSSIBLE; ++c) {
+            const short candidate = candidates[(c * 3 + k) % 8];
+            bool taken = false;
+            for (int m = 0; m < k; ++m)
+                taken |= classes_of_unit[m] == candidate;
+            if (!taken)
+                classes_of_unit[k++] = candidate;
+        }
+        double sum = 0;
+        for (int k = 0; k < POSSIBLE; ++k) {
+            const double wave = std::sin(z / (5.0 + 3 * k) + x / (53.0 + 11 * k) + k) *
+                                std::cos(y / (67.0 + 7 * k) - 2 * k);
+            weight[k] = k == 0 ? 1.8 + 1.0 * wave : std::max(0.0, 0.45 + 0.9 * wave);
+            sum += weight[k];
+        }
+        int percent[POSSIBLE], total = 0;
+        double remainder[POSSIBLE];
+        for (int k = 0; k < POSSIBLE; ++k) {
+            const double exact = 100 * weight[k] / sum;
+            percent[k] = int(exact);
+            remainder[k] = exact - percent[k];
+            total += percent[k];
+        }
+        for (; total < 100; ++total) { // largest remainders get the rest
+            int best = 0;
+            for (int k = 1; k < POSSIBLE; ++k)
+                if (remainder[k] > remainder[best])
+                    best = k;
+            ++percent[best];
+            remainder[best] = -1;
+        }
+        for (int p = 0; p < 9; ++p)
+            *at[p] = 0;
+        double entropy = 0;
+        for (int k = 0; k < POSSIBLE; ++k) {
+            *at[classes_of_unit[k] - 1] = short(percent[k]);
+            if (percent[k] > 0)
+                entropy -= percent[k] / 100.0 * std::log(percent[k] / 100.0);
+        }
+        *at[9] = short(std::lround(100 * entropy / std::log(double(POSSIBLE))));
+    }
+}
+
+int write_file(const char *path, size_t nx, size_t ny, size_t nz, bool properties)
+{
+    int nc, dx, dy, dz, vx, vy, vz, vl, vp[PROPERTIES];
     check(nc_create(path, NC_NETCDF4 | NC_CLOBBER, &nc), path);
     check(nc_def_dim(nc, "x", nx, &dx), "x");
     check(nc_def_dim(nc, "y", ny, &dy), "y");
@@ -94,15 +186,28 @@ int write_file(const char *path, size_t nx, size_t ny, size_t nz)
     check(nc_def_var(nc, "y", NC_INT, 1, &dy, &vy), "y");
     check(nc_def_var(nc, "z", NC_FLOAT, 1, &dz, &vz), "z");
     const int dims[3] = {dx, dy, dz};
-    check(nc_def_var(nc, "lithok", NC_SHORT, 3, dims, &vl), "lithok");
     const size_t chunks[3] = {CHUNK, CHUNK, nz};
-    check(nc_def_var_chunking(nc, vl, NC_CHUNKED, chunks), "chunking");
-    check(nc_def_var_deflate(nc, vl, 1, 1, 1), "deflate");
-    check(nc_def_var_fill(nc, vl, 0, &FILL), "fill");
-    check(nc_put_att_short(nc, vl, "missing_value", NC_SHORT, 1, &FILL), "att");
+    auto define = [&](const char *name, int *var) {
+        check(nc_def_var(nc, name, NC_SHORT, 3, dims, var), name);
+        check(nc_def_var_chunking(nc, *var, NC_CHUNKED, chunks), "chunking");
+        check(nc_def_var_deflate(nc, *var, 1, 1, 1), "deflate");
+        check(nc_def_var_fill(nc, *var, 0, &FILL), "fill");
+        check(nc_put_att_short(nc, *var, "missing_value", NC_SHORT, 1, &FILL), "att");
+    };
     auto text = [&](int var, const char *key, const std::string &value) {
         check(nc_put_att_text(nc, var, key, value.size(), value.c_str()), key);
     };
+    define("lithok", &vl);
+    for (int p = 0; properties && p < PROPERTIES; ++p) {
+        define(PROPERTY_NAMES[p], &vp[p]);
+        if (p < 9) {
+            text(vp[p], "long_name", "kans op lithoklasse " + std::to_string(p + 1));
+            text(vp[p], "units", "%");
+        }
+        else
+            text(vp[p], "long_name", p == 9 ? "onzekerheid lithoklasse"
+                                            : "onzekerheid stratigrafische eenheid");
+    }
     // as GeoTOP v01r6 (issue 31): the CRS only as epsg on the coordinates
     text(vx, "standard_name", "projection_x_coordinate");
     text(vx, "long_name", "x-coordinaat");
@@ -138,31 +243,48 @@ int write_file(const char *path, size_t nx, size_t ny, size_t nz)
     check(nc_put_var_float(nc, vz, zs.data()), "z");
 
     // bands of CHUNK rows of y: whole chunks per write
-    std::vector<short> band(nx * CHUNK * nz);
+    std::vector<short> band(nx * CHUNK * nz), layers(nz), props(PROPERTIES * nz);
+    std::vector<short> prop_bands(properties ? PROPERTIES * band.size() : 0);
     for (size_t j0 = 0; j0 < ny; j0 += CHUNK) {
         const size_t rows = std::min(CHUNK, ny - j0);
         for (size_t i = 0; i < nx; ++i)
             for (size_t j = 0; j < rows; ++j) {
-                short *out = band.data() + (i * rows + j) * nz;
+                const size_t at = (i * rows + j) * nz;
+                short *out = band.data() + at;
                 if (on_land(i, j0 + j, nx, ny))
-                    column(i, j0 + j, nz, out);
+                    column(i, j0 + j, nz, out, layers.data());
                 else
                     std::fill(out, out + nz, FILL);
+                if (!properties)
+                    continue;
+                property_column(i, j0 + j, nz, out, layers.data(), props.data());
+                for (int p = 0; p < PROPERTIES; ++p)
+                    std::copy(props.begin() + p * nz, props.begin() + (p + 1) * nz,
+                              prop_bands.begin() + p * band.size() + at);
             }
         const size_t start[3] = {0, j0, 0}, count[3] = {nx, rows, nz};
         check(nc_put_vara_short(nc, vl, start, count, band.data()), "write");
+        for (int p = 0; properties && p < PROPERTIES; ++p)
+            check(nc_put_vara_short(nc, vp[p], start, count,
+                                    prop_bands.data() + p * band.size()),
+                  "write");
     }
     check(nc_close(nc), "close");
     return 0;
 }
 
-int read_file(const char *path)
+/// Reads `variables` once, band by band, as the import does.
+int read_file(const char *path, const std::vector<std::string> &variables)
 {
     const auto t0 = std::chrono::steady_clock::now();
-    int nc, vl, dims[3];
+    int nc, dims[3];
     check(nc_open(path, NC_NOWRITE, &nc), path);
-    check(nc_inq_varid(nc, "lithok", &vl), "lithok");
-    check(nc_inq_vardimid(nc, vl, dims), "dims");
+    std::vector<int> vars;
+    for (const std::string &name : variables) {
+        vars.push_back(0);
+        check(nc_inq_varid(nc, name.c_str(), &vars.back()), name.c_str());
+    }
+    check(nc_inq_vardimid(nc, vars[0], dims), "dims");
     size_t n[3];
     for (int d = 0; d < 3; ++d)
         check(nc_inq_dimlen(nc, dims[d], &n[d]), "dim");
@@ -171,9 +293,11 @@ int read_file(const char *path)
     for (size_t j0 = 0; j0 < n[1]; j0 += CHUNK) {
         const size_t rows = std::min(CHUNK, n[1] - j0);
         const size_t start[3] = {0, j0, 0}, count[3] = {n[0], rows, n[2]};
-        check(nc_get_vara_short(nc, vl, start, count, band.data()), "read");
-        for (size_t k = 0; k < n[0] * rows * n[2]; ++k)
-            sum += uint16_t(band[k]);
+        for (int var : vars) {
+            check(nc_get_vara_short(nc, var, start, count, band.data()), "read");
+            for (size_t k = 0; k < n[0] * rows * n[2]; ++k)
+                sum += uint16_t(band[k]);
+        }
     }
     check(nc_close(nc), "close");
     const double s =
@@ -187,12 +311,18 @@ int read_file(const char *path)
 
 int main(int argc, char **argv)
 {
-    if (argc == 6 && std::string(argv[1]) == "write")
+    const bool properties = argc == 7 && std::string(argv[6]) == "properties";
+    if ((argc == 6 || properties) && std::string(argv[1]) == "write")
         return write_file(argv[2], std::strtoul(argv[3], nullptr, 10),
                           std::strtoul(argv[4], nullptr, 10),
-                          std::strtoul(argv[5], nullptr, 10));
-    if (argc == 3 && std::string(argv[1]) == "read")
-        return read_file(argv[2]);
-    std::fprintf(stderr, "usage: geotop_like write FILE NX NY NZ | geotop_like read FILE\n");
+                          std::strtoul(argv[5], nullptr, 10), properties);
+    if (argc >= 3 && std::string(argv[1]) == "read") {
+        std::vector<std::string> variables(argv + 3, argv + argc);
+        if (variables.empty())
+            variables.push_back("lithok");
+        return read_file(argv[2], variables);
+    }
+    std::fprintf(stderr, "usage: geotop_like write FILE NX NY NZ [properties] | "
+                         "geotop_like read FILE [VARIABLE...]\n");
     return 2;
 }
