@@ -108,7 +108,7 @@ void decode_colors(const std::string &text, Model &model, const std::string &wha
     }
 }
 
-std::string encode_header(const Model &model)
+std::string encode_header(const Model &model, size_t channels)
 {
     const Frame &f = model.frame();
     const Stats s = model.stats();
@@ -126,7 +126,10 @@ std::string encode_header(const Model &model)
                   f.west, f.top, f.bottom, f.rows, f.cols, f.depths,
                   model.materials().size() - 1,
                   (unsigned long long)s.intervals);
-    return text;
+    std::string header = text;
+    if (channels)
+        header += "channels:    " + std::to_string(channels) + "\n";
+    return header;
 }
 
 StacksFileInfo stacks_file_info(const std::string &directory)
@@ -150,14 +153,30 @@ std::vector<uint8_t> read_file_bytes(const std::string &path)
 }
 
 void write_sbrt(const std::string &directory, const Model &model,
-                const std::string &history, const StacksV2Options &options)
+                const std::string &history, const StacksV2Options &options,
+                const std::string &channels_file)
 {
     model.validate();
     AtomicDirectory out(directory);
+    StacksV2Options stacks_options = options;
+    size_t channels = 0;
+    if (!channels_file.empty()) {
+        // the channels must fit this model and its blocks before they move in
+        const auto file = std::make_shared<const MappedFile>(channels_file);
+        const PropertyChannels check(file, channels_file, model);
+        if (check.block_size() != options.block_size)
+            fail(channels_file, ": channels in blocks of ", check.block_size(),
+                 " cells for stacks in blocks of ", options.block_size);
+        channels = check.size();
+        stacks_options.optional_features |= V2_OPTIONAL_CHANNELS;
+        const std::string target = out.file_path("channels");
+        if (std::rename(channels_file.c_str(), target.c_str()) != 0)
+            out.copy_file("channels", open_regular_file(channels_file), channels_file);
+    }
     FileSink stacks(out.file_path("stacks"));
-    write_stacks_v2(stacks, model, options);
+    write_stacks_v2(stacks, model, stacks_options);
     stacks.finish();
-    out.write_file("header", encode_header(model));
+    out.write_file("header", encode_header(model, channels));
     out.write_file("cats", encode_cats(model));
     out.write_file("colors", encode_colors(model));
     out.write_file("hist", history);
@@ -187,6 +206,18 @@ void rewrite_legend(const std::string &directory, const Model &model,
     out.write_file("colors", encode_colors(model));
     out.write_file("hist", hist + history);
     out.commit();
+}
+
+std::shared_ptr<const PropertyChannels> read_channels(const std::string &directory,
+                                                      const Model &model)
+{
+    const MemberDirectory dir(directory);
+    const auto member = dir.open_regular_if_present("channels");
+    if (!member)
+        return nullptr;
+    const std::string path = dir.member_path("channels");
+    return std::make_shared<const PropertyChannels>(
+        std::make_shared<const MappedFile>(*member, path), path, model);
 }
 
 Model read_sbrt(const std::string &directory, const ReadOptions &options)

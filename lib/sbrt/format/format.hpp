@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "format/channels_file.hpp"
 #include "format/format_v1.hpp"
 #include "format/format_v2.hpp"
 #include "model/model.hpp"
@@ -42,12 +43,19 @@ std::string encode_colors(const Model &model);
 void decode_colors(const std::string &text, Model &model, const std::string &what);
 
 /// Human-readable `header` (key: value), informational.
-std::string encode_header(const Model &model);
+std::string encode_header(const Model &model, size_t channels = 0);
 
 /// Writes the SBRT directory atomically; `history` goes to `hist`; the
-/// stacks in format v2, streamed block by block into the file.
+/// stacks in format v2, streamed block by block into the file. Where
+/// `channels_file` is given, that finished channels file (written for this
+/// model with the stacks' block size) is moved in as member `channels`.
 void write_sbrt(const std::string &directory, const Model &model,
-                const std::string &history, const StacksV2Options &options = {});
+                const std::string &history, const StacksV2Options &options = {},
+                const std::string &channels_file = {});
+/// The property channels of the SBRT directory whose model (as read) is
+/// `model`; nullptr where it has none.
+std::shared_ptr<const PropertyChannels> read_channels(const std::string &directory,
+                                                      const Model &model);
 /// Replaces the `cats` and `colors` of the SBRT directory with those of
 /// `model` (read from it, labels and colours changed) and appends
 /// `history` to its `hist`, atomically: the other members are hard-linked

@@ -275,6 +275,7 @@ void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &
         fail("write_stacks_v2: block size ", options.block_size, " not in 1..",
              MAX_BLOCK_SIZE);
     HeaderV2 h;
+    h.optional = options.optional_features;
     h.frame = f;
     h.materials = uint32_t(model.materials().size());
     h.intervals = model.intervals().size();

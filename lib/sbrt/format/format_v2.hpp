@@ -31,6 +31,9 @@ constexpr uint32_t STACKS_V2_HEADER_SIZE = 152;
 /// none). A file with others needs a newer reader; unknown optional bits
 /// are ignored.
 constexpr uint32_t V2_KNOWN_REQUIRED_FEATURES = 0;
+/// Optional feature: the SBRT has a `channels` member (per-voxel property
+/// channels, issue 29); readers that do not know it read the classes.
+constexpr uint32_t V2_OPTIONAL_CHANNELS = 1u << 0;
 
 /// How tops are stored in a block.
 enum class TopEncoding : uint8_t {
@@ -43,6 +46,7 @@ struct StacksV2Options {
     int block_size = 64;
     int zstd_level = 3;
     unsigned threads = 0; ///< 0: all cores
+    uint32_t optional_features = 0; ///< V2_OPTIONAL_* bits
 };
 
 /// \brief The field widths a model needs (smallest exact ones).

@@ -1,0 +1,441 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The `channels` member: streamed writer, lazy checked reader
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "format/channels_file.hpp"
+
+#include <zstd.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "format/byte_io.hpp"
+#include "format/mapped_file.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
+
+namespace sbrt {
+
+namespace {
+
+constexpr uint8_t CHANNELS_MAGIC[8] = {0x89, 'S', 'B', 'C', 'H', '\r', '\n', 0x1a};
+constexpr uint8_t CODING_INTEGERS = 0, CODING_FLOAT_BITS = 1;
+constexpr size_t BLOCK_HEAD = 8; // coding, width, 0, base
+/// Integers a float32 holds exactly, and with them their differences.
+constexpr double EXACT_INTEGER = 16777216.0;
+
+uint32_t float_bits(float v)
+{
+    uint32_t bits;
+    std::memcpy(&bits, &v, 4);
+    return bits;
+}
+
+float bits_float(uint32_t bits)
+{
+    float v;
+    std::memcpy(&v, &bits, 4);
+    return v;
+}
+
+bool is_exact_integer(float v)
+{
+    return std::fabs(v) <= EXACT_INTEGER && std::nearbyint(v) == v;
+}
+
+/// A block's values (cells' spans one after another) as its raw payload.
+std::vector<uint8_t> encode_block(const std::vector<float> &values,
+                                  const std::vector<ColumnSpan> &spans)
+{
+    bool integers = true;
+    int64_t least = 0, most = 0;
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (!is_exact_integer(values[i])) {
+            integers = false;
+            break;
+        }
+        const int64_t v = int64_t(values[i]);
+        least = i ? std::min(least, v) : v;
+        most = i ? std::max(most, v) : v;
+    }
+    const uint64_t range = uint64_t(most - least);
+    const unsigned width = !integers ? 4 : range <= 0xff ? 1 : range <= 0xffff ? 2 : 4;
+    const size_t n = values.size();
+    std::vector<uint8_t> raw(BLOCK_HEAD + n * width);
+    raw[0] = integers ? CODING_INTEGERS : CODING_FLOAT_BITS;
+    raw[1] = uint8_t(width);
+    store_le(&raw[4], uint32_t(int32_t(integers ? least : 0)), 4);
+    const uint64_t mask = width == 4 ? 0xffffffffull : (1ull << (8 * width)) - 1;
+    uint8_t *planes = raw.data() + BLOCK_HEAD;
+    size_t i = 0;
+    for (const ColumnSpan &span : spans)
+        for (uint32_t k = 0, below = 0; k < span.size(); ++k, ++i) {
+            const uint32_t code = integers ? uint32_t(int64_t(values[i]) - least)
+                                           : float_bits(values[i]);
+            const uint32_t stored =
+                integers ? uint32_t((code - below) & mask) : code ^ below;
+            below = code;
+            for (unsigned b = 0; b < width; ++b)
+                planes[b * n + i] = uint8_t(stored >> (8 * b));
+        }
+    SBRT_CHECK_EQ(i, n, "channel block");
+    return raw;
+}
+
+/// The inverse of encode_block, on untrusted bytes.
+void decode_block(const uint8_t *raw, size_t size, const CellSlot *slots,
+                  size_t cells, size_t n, std::vector<float> &out,
+                  const std::string &what)
+{
+    if (size < BLOCK_HEAD)
+        fail(what, ": block of ", size, " bytes is shorter than its head");
+    const uint8_t coding = raw[0], width = raw[1];
+    if (coding > CODING_FLOAT_BITS || !(width == 1 || width == 2 || width == 4) ||
+        (coding == CODING_FLOAT_BITS && width != 4))
+        fail(what, ": block coding ", int(coding), " width ", int(width),
+             " is not one this reader knows (corrupt file?)");
+    if (size != BLOCK_HEAD + n * width)
+        fail(what, ": block holds ", size, " bytes where its cells' spans need ",
+             BLOCK_HEAD + n * width, " (the channels do not match the stacks)");
+    const int64_t base = int32_t(uint32_t(load_le(raw + 4, 4)));
+    const uint64_t mask = width == 4 ? 0xffffffffull : (1ull << (8 * width)) - 1;
+    const uint8_t *planes = raw + BLOCK_HEAD;
+    out.resize(n);
+    for (size_t c = 0; c < cells; ++c) {
+        uint32_t below = 0;
+        for (uint32_t k = 0, i = slots[c].at; k < slots[c].hi - slots[c].lo; ++k, ++i) {
+            uint32_t stored = 0;
+            for (unsigned b = 0; b < width; ++b)
+                stored |= uint32_t(planes[b * n + i]) << (8 * b);
+            const uint32_t code = coding == CODING_INTEGERS
+                                      ? uint32_t((below + stored) & mask)
+                                      : stored ^ below;
+            below = code;
+            out[i] = coding == CODING_INTEGERS ? float(base + int64_t(code))
+                                               : bits_float(code);
+        }
+    }
+}
+
+void write_string(ByteWriter &out, const std::string &s)
+{
+    out.u32(uint32_t(s.size()));
+    out.raw(s.data(), s.size());
+}
+
+std::string read_string(ByteReader &in, const std::string &what)
+{
+    const uint32_t n = in.u32();
+    if (n > 4096)
+        fail(what, ": a channel's text of ", n, " bytes (at most 4096)");
+    std::string s(n, '\0');
+    for (uint32_t i = 0; i < n; ++i)
+        s[i] = char(in.u8());
+    return s;
+}
+
+} // namespace
+
+// --------------------------------------------------------------- writer
+
+ChannelsWriter::ChannelsWriter(ByteSink &sink, int rows, int cols, int block_size,
+                               std::vector<ChannelInfo> channels, unsigned threads,
+                               int zstd_level)
+    : sink_(sink), rows_(rows), cols_(cols), block_size_(block_size),
+      block_cols_((cols + block_size - 1) / block_size), channels_(std::move(channels)),
+      threads_(threads), zstd_level_(zstd_level)
+{
+    if (rows < 1 || cols < 1 || block_size < 1 || channels_.empty())
+        fail("channels: a grid of ", rows, " x ", cols, " cells in blocks of ",
+             block_size, " with ", channels_.size(), " channels");
+    for (ChannelInfo &c : channels_) {
+        c.voxels = c.valid = c.bytes = 0;
+        c.min = c.max = 0;
+        c.integer = !c.has_fill || is_exact_integer(c.fill);
+    }
+    block_spans_.resize(size_t(block_cols_));
+    pending_.assign(channels_.size(), std::vector<std::vector<float>>(size_t(block_cols_)));
+    table_.resize(channels_.size());
+    std::vector<uint8_t> header(CHANNELS_HEADER_SIZE, 0);
+    sink_.append(header.data(), header.size()); // patched by finish()
+}
+
+void ChannelsWriter::add_row(const ColumnSpan *spans, const std::vector<const float *> &values)
+{
+    SBRT_CHECK_EQ(values.size(), channels_.size(), "ChannelsWriter::add_row");
+    if (row_ >= rows_)
+        fail("channels: more rows than the grid's ", rows_);
+    for (size_t ch = 0; ch < channels_.size(); ++ch) {
+        ChannelInfo &info = channels_[ch];
+        const float *v = values[ch];
+        for (int bc = 0; bc < block_cols_; ++bc) {
+            const int c0 = bc * block_size_, c1 = std::min(cols_, c0 + block_size_);
+            size_t n = 0;
+            for (int c = c0; c < c1; ++c)
+                n += spans[c].size();
+            std::vector<float> &out = pending_[ch][size_t(bc)];
+            out.insert(out.end(), v, v + n);
+            for (size_t i = 0; i < n; ++i) {
+                const float x = v[i];
+                if (!info.is_fill(x)) {
+                    info.min = info.valid ? std::min(info.min, double(x)) : double(x);
+                    info.max = info.valid ? std::max(info.max, double(x)) : double(x);
+                    ++info.valid;
+                }
+                info.integer = info.integer && is_exact_integer(x);
+            }
+            info.voxels += n;
+            v += n;
+        }
+    }
+    for (int bc = 0; bc < block_cols_; ++bc) {
+        const int c0 = bc * block_size_, c1 = std::min(cols_, c0 + block_size_);
+        block_spans_[size_t(bc)].insert(block_spans_[size_t(bc)].end(), spans + c0,
+                                        spans + c1);
+    }
+    ++row_;
+    if (row_ % block_size_ == 0 || row_ == rows_)
+        flush_block_row();
+}
+
+void ChannelsWriter::flush_block_row()
+{
+    const size_t jobs = channels_.size() * size_t(block_cols_);
+    std::vector<std::vector<uint8_t>> compressed(jobs);
+    std::vector<uint32_t> raw_sizes(jobs);
+    for_each_row(int(jobs), threads_, [&](int job) {
+        const size_t ch = size_t(job) / size_t(block_cols_),
+                     bc = size_t(job) % size_t(block_cols_);
+        const std::vector<uint8_t> raw = encode_block(pending_[ch][bc], block_spans_[bc]);
+        if (raw.size() > UINT32_MAX)
+            fail("channels: a block of ", raw.size(), " bytes (give a smaller block size)");
+        std::vector<uint8_t> &out = compressed[size_t(job)];
+        out.resize(ZSTD_compressBound(raw.size()));
+        const size_t n = ZSTD_compress(out.data(), out.size(), raw.data(), raw.size(),
+                                       zstd_level_);
+        if (ZSTD_isError(n))
+            fail("channels: zstd: ", ZSTD_getErrorName(n));
+        out.resize(n);
+        raw_sizes[size_t(job)] = uint32_t(raw.size());
+    });
+    for (size_t job = 0; job < jobs; ++job) {
+        const size_t ch = job / size_t(block_cols_);
+        const std::vector<uint8_t> &out = compressed[job];
+        table_[ch].push_back({sink_.size(), uint32_t(out.size()), raw_sizes[job],
+                              crc32_of(out.data(), out.size())});
+        channels_[ch].bytes += out.size() + 20;
+        sink_.append(out.data(), out.size());
+    }
+    for (auto &per_channel : pending_)
+        for (std::vector<float> &values : per_channel)
+            std::vector<float>().swap(values);
+    for (std::vector<ColumnSpan> &spans : block_spans_)
+        spans.clear();
+}
+
+void ChannelsWriter::finish()
+{
+    if (row_ != rows_)
+        fail("channels: ", row_, " rows of ", rows_, " came");
+    ByteWriter dir;
+    for (size_t ch = 0; ch < channels_.size(); ++ch) {
+        const ChannelInfo &c = channels_[ch];
+        write_string(dir, c.name);
+        write_string(dir, c.long_name);
+        write_string(dir, c.unit);
+        dir.f64(c.scale);
+        dir.f64(c.offset);
+        dir.u8(c.has_fill ? 1 : 0);
+        dir.f32(c.fill);
+        dir.u64(c.voxels);
+        dir.u64(c.valid);
+        dir.f64(c.min);
+        dir.f64(c.max);
+        dir.u8(c.integer ? 1 : 0);
+        dir.u64(c.bytes);
+        for (const BlockEntry &e : table_[ch]) {
+            dir.u64(e.offset);
+            dir.u32(e.compressed);
+            dir.u32(e.raw);
+            dir.u32(e.crc);
+        }
+    }
+    const uint64_t dir_at = sink_.size();
+    sink_.append(dir.bytes().data(), dir.size());
+    ByteWriter h;
+    h.raw(CHANNELS_MAGIC, sizeof CHANNELS_MAGIC);
+    h.u16(CHANNELS_MAJOR);
+    h.u16(CHANNELS_MINOR);
+    h.u32(CHANNELS_HEADER_SIZE);
+    h.u32(uint32_t(rows_));
+    h.u32(uint32_t(cols_));
+    h.u32(uint32_t(block_size_));
+    h.u32(uint32_t(channels_.size()));
+    h.u64(dir_at);
+    h.u64(sink_.size());
+    h.u32(crc32_of(dir.bytes().data(), dir.size()));
+    h.u32(0);
+    h.u32(0);
+    h.u32(crc32_of(h.bytes().data(), h.size()));
+    SBRT_CHECK_EQ(h.size(), size_t(CHANNELS_HEADER_SIZE), "channels header");
+    sink_.overwrite(0, h.bytes().data(), h.size());
+}
+
+// --------------------------------------------------------------- reader
+
+struct PropertyChannels::Block {
+    uint64_t offset = 0;
+    uint32_t compressed = 0, raw = 0, crc = 0;
+    std::once_flag once;
+    std::vector<float> values;
+};
+
+PropertyChannels::PropertyChannels(std::shared_ptr<const MappedFile> file, std::string what,
+                                   const Model &model)
+    : file_(std::move(file)), what_(std::move(what))
+{
+    const uint8_t *data = file_->data();
+    const size_t size = file_->size();
+    if (size < CHANNELS_HEADER_SIZE || std::memcmp(data, CHANNELS_MAGIC, 8) != 0)
+        fail(what_, ": not an SBRT channels file (bad magic number or truncated)");
+    ByteReader h(data, CHANNELS_HEADER_SIZE, what_);
+    h.seek(8);
+    const uint16_t major = h.u16();
+    h.u16(); // minor: later fields would come before the header checksum
+    if (major != CHANNELS_MAJOR)
+        fail(what_, ": channels format ", major, ".x needs a newer r3.sbrt");
+    const uint32_t header_size = h.u32();
+    if (header_size < CHANNELS_HEADER_SIZE || header_size > size)
+        fail(what_, ": header size ", header_size, " is wrong");
+    if (crc32_of(data, header_size - 4) != uint32_t(load_le(data + header_size - 4, 4)))
+        fail(what_, ": header checksum mismatch (corrupt file)");
+    rows_ = int(h.u32());
+    cols_ = int(h.u32());
+    block_size_ = int(h.u32());
+    const uint32_t count = h.u32();
+    const uint64_t dir_at = h.u64(), end = h.u64();
+    const uint32_t dir_crc = h.u32();
+    const Frame &f = model.frame();
+    if (rows_ != f.rows || cols_ != f.cols)
+        fail(what_, ": channels of ", rows_, " x ", cols_, " cells for a model of ",
+             f.rows, " x ", f.cols);
+    if (block_size_ < 1 || block_size_ > 4096 || count < 1 || count > 65536)
+        fail(what_, ": block size ", block_size_, ", ", count, " channels (corrupt file?)");
+    if (end != size || dir_at < header_size || dir_at > size)
+        fail(what_, ": file of ", size, " bytes says it ends at ", end,
+             " with its directory at ", dir_at, " (truncated or corrupt)");
+    if (crc32_of(data + dir_at, size - dir_at) != dir_crc)
+        fail(what_, ": directory checksum mismatch (corrupt file)");
+    block_cols_ = (cols_ + block_size_ - 1) / block_size_;
+    const int block_rows = (rows_ + block_size_ - 1) / block_size_;
+    blocks_ = size_t(block_rows) * size_t(block_cols_);
+    if (uint64_t(blocks_) * count * 20 > size - dir_at)
+        fail(what_, ": directory too short for ", count, " channels of ", blocks_,
+             " blocks");
+    blocks_data_ = std::make_unique<Block[]>(blocks_ * count);
+
+    ByteReader in(data + dir_at, size - dir_at, what_);
+    for (uint32_t ch = 0; ch < count; ++ch) {
+        ChannelInfo c;
+        c.name = read_string(in, what_);
+        c.long_name = read_string(in, what_);
+        c.unit = read_string(in, what_);
+        c.scale = in.f64();
+        c.offset = in.f64();
+        c.has_fill = in.u8() != 0;
+        c.fill = in.f32();
+        c.voxels = in.u64();
+        c.valid = in.u64();
+        c.min = in.f64();
+        c.max = in.f64();
+        c.integer = in.u8() != 0;
+        c.bytes = in.u64();
+        if (c.name.empty() || find(c.name) >= 0)
+            fail(what_, ": channel ", ch + 1, " has no name or a name taken before");
+        for (size_t b = 0; b < blocks_; ++b) {
+            Block &block = blocks_data_[ch * blocks_ + b];
+            block.offset = in.u64();
+            block.compressed = in.u32();
+            block.raw = in.u32();
+            block.crc = in.u32();
+            if (block.offset < header_size || block.offset > dir_at ||
+                block.compressed > dir_at - block.offset)
+                fail(what_, ": block ", b, " of channel ", c.name,
+                     " lies outside the file's blocks (corrupt file)");
+        }
+        channels_.push_back(std::move(c));
+    }
+
+    // where each cell's span lies in its block
+    slots_.resize(size_t(f.cells()));
+    block_values_.assign(blocks_, 0);
+    for (int row = 0; row < rows_; ++row)
+        for (int col = 0; col < cols_; ++col) {
+            const uint64_t cell = model.cell_index(row, col);
+            const ColumnSpan span = solid_span(model, cell);
+            uint32_t &filled = block_values_[block_of(cell)];
+            if (uint64_t(filled) + span.size() > UINT32_MAX)
+                fail(what_, ": a block of more than 2^32 values");
+            slots_[cell] = {span.lo, span.hi, filled};
+            filled += span.size();
+        }
+}
+
+PropertyChannels::~PropertyChannels() = default;
+
+int PropertyChannels::find(const std::string &name) const
+{
+    for (size_t i = 0; i < channels_.size(); ++i)
+        if (channels_[i].name == name)
+            return int(i);
+    return -1;
+}
+
+size_t PropertyChannels::block_of(uint64_t cell) const
+{
+    const size_t row = size_t(cell / uint64_t(cols_)), col = size_t(cell % uint64_t(cols_));
+    return (row / size_t(block_size_)) * size_t(block_cols_) + col / size_t(block_size_);
+}
+
+const std::vector<float> &PropertyChannels::block_values(size_t channel, size_t b) const
+{
+    Block &block = blocks_data_[channel * blocks_ + b];
+    std::call_once(block.once, [&] {
+        const std::string where = what_ + ", channel " + channels_[channel].name +
+                                  ", block " + std::to_string(b);
+        const uint8_t *src = file_->data() + block.offset;
+        if (crc32_of(src, block.compressed) != block.crc)
+            fail(where, ": checksum mismatch (corrupt file)");
+        const size_t expected = BLOCK_HEAD + size_t(block_values_[b]) * 4;
+        if (block.raw > expected)
+            fail(where, ": says it holds ", block.raw, " bytes, more than its cells can");
+        std::vector<uint8_t> raw(block.raw);
+        const size_t n = ZSTD_decompress(raw.data(), raw.size(), src, block.compressed);
+        if (ZSTD_isError(n) || n != raw.size())
+            fail(where, ": does not decompress to its stated size (corrupt file)");
+        // the block's cells, row by row, in the order they were written
+        const size_t brow = b / size_t(block_cols_), bcol = b % size_t(block_cols_);
+        std::vector<CellSlot> cells;
+        for (int r = int(brow) * block_size_; r < std::min(rows_, int(brow + 1) * block_size_); ++r)
+            for (int c = int(bcol) * block_size_; c < std::min(cols_, int(bcol + 1) * block_size_); ++c)
+                cells.push_back(slots_[uint64_t(r) * uint64_t(cols_) + uint64_t(c)]);
+        std::vector<float> values;
+        decode_block(raw.data(), raw.size(), cells.data(), cells.size(),
+                     block_values_[b], values, where);
+        block.values = std::move(values);
+        ++decoded_;
+    });
+    return block.values;
+}
+
+const float *PropertyChannels::column(size_t channel, uint64_t cell) const
+{
+    const CellSlot &s = slots_[cell];
+    if (s.hi == s.lo)
+        return nullptr;
+    return block_values(channel, block_of(cell)).data() + s.at;
+}
+
+} // namespace sbrt

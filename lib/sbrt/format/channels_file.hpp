@@ -1,0 +1,155 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The `channels` member of an SBRT (issue 29): per-voxel
+ *            property channels over each column's solid span, in blocks
+ *            of cells aligned with the stack blocks, each channel's block
+ *            zstd-compressed on its own (values as integers above the
+ *            block's least, or as float bits; differences down the column;
+ *            byte planes), written as a stream, decoded block by block on
+ *            first use
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_CHANNELS_FILE_HPP
+#define SBRT_CHANNELS_FILE_HPP
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "format/byte_sink.hpp"
+#include "model/model.hpp"
+#include "model/property_channel.hpp"
+
+namespace sbrt {
+
+class MappedFile;
+
+/// Version 1.0 of the `channels` member.
+constexpr uint16_t CHANNELS_MAJOR = 1;
+constexpr uint16_t CHANNELS_MINOR = 0;
+constexpr uint32_t CHANNELS_HEADER_SIZE = 64;
+
+/// Layout (little-endian):
+///   header: magic "\x89SBCH\r\n\x1a", u16 major 1, u16 minor, u32 header
+///   size, u32 rows cols block size (cells a side) channels, u64 offset of
+///   the directory, u64 end of file, u32 crc32 of the directory, u32 0 0,
+///   u32 crc32 of the header;
+///   blocks, by rows of blocks, then channel, then block column: one zstd
+///   frame each of: u8 coding (0: integers, 1: float32 bits), u8 width
+///   (bytes a value: 1, 2 or 4), u16 0, i32 base (the block's least
+///   integer; 0 for floats), then the values of its cells (row by row,
+///   each cell's span bottom up) as integers - base, or float bits, each
+///   the difference to (integers, modulo 2^(8 width); floats: XOR with)
+///   the value below it in the column, as byte planes (every value's
+///   byte 0, then every value's byte 1, ...);
+///   directory, per channel: name, long name, unit (u32 length + bytes),
+///   f64 scale offset, u8 has fill, f32 fill, u64 voxels valid, f64 min
+///   max, u8 integer, u64 bytes, then per block: u64 offset, u32
+///   compressed size, u32 uncompressed size, u32 crc32 of the compressed
+///   bytes.
+///
+/// \brief Writes a channels member as rows of cells arrive (north to
+/// south), holding one row of blocks uncompressed at a time.
+class ChannelsWriter {
+public:
+    ChannelsWriter(ByteSink &sink, int rows, int cols, int block_size,
+                   std::vector<ChannelInfo> channels, unsigned threads = 0,
+                   int zstd_level = 3);
+
+    /// The next row: `spans` per cell (cols of them), and per channel the
+    /// values of the row's spans one after another (bottom up).
+    void add_row(const ColumnSpan *spans, const std::vector<const float *> &values);
+    /// Writes the directory and the header (every row must have come).
+    void finish();
+    /// The channels with the figures of their values (after finish: bytes).
+    const std::vector<ChannelInfo> &channels() const { return channels_; }
+
+private:
+    void flush_block_row();
+
+    struct BlockEntry {
+        uint64_t offset = 0;
+        uint32_t compressed = 0, raw = 0, crc = 0;
+    };
+    ByteSink &sink_;
+    int rows_, cols_, block_size_, block_cols_;
+    std::vector<ChannelInfo> channels_;
+    unsigned threads_;
+    int zstd_level_;
+    int row_ = 0;
+    std::vector<std::vector<ColumnSpan>> block_spans_; ///< per block column
+    /// per channel, per block column: the values of the pending rows
+    std::vector<std::vector<std::vector<float>>> pending_;
+    std::vector<std::vector<BlockEntry>> table_; ///< per channel
+};
+
+/// \brief Where a cell's span lies in its block's decoded values.
+struct CellSlot {
+    uint32_t lo = 0, hi = 0; ///< the span
+    uint32_t at = 0;         ///< its first value in the block
+};
+
+/// \brief The channels of an SBRT, read from untrusted bytes: the header,
+/// directory and block table are checked when opened, a block when it is
+/// first needed (its checksum, sizes and codes against the model's spans).
+/// Blocks are decoded once, by whichever thread needs one first.
+class PropertyChannels {
+public:
+    /// `model` is the SBRT's model as read (spans are taken from it); a
+    /// model read for an area decodes only the blocks it has stacks in.
+    PropertyChannels(std::shared_ptr<const MappedFile> file, std::string what,
+                     const Model &model);
+    ~PropertyChannels();
+    PropertyChannels(const PropertyChannels &) = delete;
+    PropertyChannels &operator=(const PropertyChannels &) = delete;
+
+    size_t size() const { return channels_.size(); }
+    const ChannelInfo &info(size_t channel) const { return channels_[channel]; }
+    const std::vector<ChannelInfo> &infos() const { return channels_; }
+    /// Index of the channel called `name`, or -1.
+    int find(const std::string &name) const;
+    int block_size() const { return block_size_; }
+
+    ColumnSpan span(uint64_t cell) const
+    {
+        return {slots_[cell].lo, slots_[cell].hi};
+    }
+    /// The values of `cell`'s span, bottom up (span(cell).size() of them),
+    /// its block decoded where it is not yet; nullptr for an empty span.
+    /// Throws sbrt::Error for a corrupt block.
+    const float *column(size_t channel, uint64_t cell) const;
+    /// The value at voxel `level` (0 bottom) of `cell`; false outside its span.
+    bool value(size_t channel, uint64_t cell, uint32_t level, float &out) const
+    {
+        const CellSlot &s = slots_[cell];
+        if (level < s.lo || level >= s.hi)
+            return false;
+        out = column(channel, cell)[level - s.lo];
+        return true;
+    }
+    /// Blocks decoded so far (all channels) and in the file.
+    uint64_t blocks_decoded() const { return decoded_; }
+    uint64_t block_count() const { return uint64_t(blocks_) * channels_.size(); }
+
+private:
+    struct Block;
+    const std::vector<float> &block_values(size_t channel, size_t block) const;
+    size_t block_of(uint64_t cell) const;
+
+    std::shared_ptr<const MappedFile> file_;
+    std::string what_;
+    int rows_ = 0, cols_ = 0, block_size_ = 0, block_cols_ = 0;
+    size_t blocks_ = 0;
+    std::vector<ChannelInfo> channels_;
+    std::vector<CellSlot> slots_;
+    std::vector<uint32_t> block_values_; ///< values a block holds (all spans)
+    std::unique_ptr<Block[]> blocks_data_; ///< channel-major
+    mutable std::atomic<uint64_t> decoded_{0};
+};
+
+} // namespace sbrt
+
+#endif
