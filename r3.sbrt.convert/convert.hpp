@@ -27,9 +27,16 @@ std::vector<sbrt::Material> rule_legend(const sbrt::Classifier &classifier);
 /// bands of about `band_bytes`. `preset` (preset=): "auto" applies the
 /// survey preset the file identifies itself as, "none" none, else the
 /// preset of that name.
+/// `properties` (variables on the same grid) become property channels,
+/// streamed into the new file `channels_file` in the same pass.
 sbrt::Model file_to_sbrt(const char *file, const char *variable,
                          sbrt::Classifier &classifier, bool override_crs,
-                         size_t band_bytes, const char *preset);
+                         size_t band_bytes, const char *preset,
+                         const std::vector<std::string> &properties = {},
+                         const std::string &channels_file = {});
+
+/// The other 3D variables of `file` on the grid of `variable` (-a).
+std::vector<std::string> same_grid_variables(const char *file, const char *variable);
 
 /// Applies the survey preset `name` to `model` with a message; classes keep
 /// the labels and colours they have (rules=, the file's flag_meanings).
@@ -46,6 +53,11 @@ sbrt::Model horizons_to_sbrt(const std::vector<std::string> &horizons,
 /// SBRT -> 3D raster in the current 3D region, with colours and labels.
 void sbrt_to_voxels(const char *input, const char *output);
 
+/// One property channel of an SBRT -> 3D raster in the current 3D region:
+/// its values as stored (times scale plus offset where the source packed
+/// them), the fill and voxels outside the spans null.
+void channel_to_voxels(const char *input, const char *channel, const char *output);
+
 /// Sets the current region, 2D and 3D (as g.region raster_3d= does), to
 /// the grid `frame` of SBRT `name`, in the mapset and in this process.
 void set_region_to(const char *name, const sbrt::Frame &frame);
@@ -61,7 +73,9 @@ void warn_if_other_grid(const char *name, const sbrt::Frame &model,
 
 /// Prints the metadata and Table 1 figures (plain or key=value).
 /// The papers' Table 1 figures in memory and the stacks file on disk.
+/// With `channels`, the property channels after them.
 void print_report(const char *name, const sbrt::Model &model,
-                  const sbrt::StacksFileInfo &file, bool shell);
+                  const sbrt::StacksFileInfo &file, bool shell,
+                  const sbrt::PropertyChannels *channels = nullptr);
 
 #endif

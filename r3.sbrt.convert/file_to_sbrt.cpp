@@ -10,6 +10,7 @@
 #include <future>
 
 #include "builders/band_import.hpp"
+#include "builders/channel_bands.hpp"
 #include "builders/column_builder.hpp"
 #include "util/error.hpp"
 #include "builders/import_memory.hpp"
@@ -41,7 +42,88 @@ sbrt::Frame located_frame(const FileVariable &variable)
     return frame;
 }
 
+/// Whether two variables have the same cells (axes of the same size,
+/// direction and edges).
+bool same_axes(const FileVariable &a, const FileVariable &b)
+{
+    auto same = [](const sbrt::RegularAxis &p, const sbrt::RegularAxis &q) {
+        return p.size == q.size && p.ascending == q.ascending &&
+               p.low_edge == q.low_edge && p.high_edge == q.high_edge;
+    };
+    return same(a.easting(), b.easting()) && same(a.northing(), b.northing()) &&
+           same(a.vertical(), b.vertical());
+}
+
+/// The property variables, opened and checked against the classes' grid.
+std::vector<std::unique_ptr<FileVariable>>
+open_properties(const char *file, const FileVariable &classes,
+                const std::vector<std::string> &names)
+{
+    std::vector<std::unique_ptr<FileVariable>> out;
+    for (const std::string &name : names) {
+        if (name == classes.name())
+            G_fatal_error(_("properties=%s names the class variable itself"),
+                          name.c_str());
+        for (const auto &taken : out)
+            if (taken->name() == name)
+                G_fatal_error(_("properties= names '%s' twice"), name.c_str());
+        try {
+            out.push_back(std::make_unique<FileVariable>(file, name,
+                                                         FileVariable::SizeCheck{}, true));
+        }
+        catch (const sbrt::Error &e) {
+            G_fatal_error(_("Property %s"), e.what());
+        }
+        const FileVariable &p = *out.back();
+        if (!same_axes(p, classes))
+            G_fatal_error(_("Property '%s' of <%s> lies on other cells (%zu x %zu x %zu) "
+                            "than the classes '%s' (%zu x %zu x %zu): a property "
+                            "channel needs one value per voxel of the classes' grid"),
+                          name.c_str(), file, p.easting().size, p.northing().size,
+                          p.vertical().size, classes.name().c_str(),
+                          classes.easting().size, classes.northing().size,
+                          classes.vertical().size);
+    }
+    return out;
+}
+
+/// A channel's name and legend from its variable's CF attributes.
+sbrt::ChannelInfo channel_info(const FileVariable &v)
+{
+    sbrt::ChannelInfo c;
+    c.name = v.base_name();
+    c.long_name = v.long_name();
+    c.unit = v.units();
+    c.scale = v.scale();
+    c.offset = v.offset();
+    if (!v.missing().exact.empty()) {
+        c.has_fill = true;
+        c.fill = float(v.missing().exact[0]);
+    }
+    return c;
+}
+
 } // namespace
+
+std::vector<std::string> same_grid_variables(const char *file, const char *variable)
+{
+    const FileVariable classes(file, variable);
+    std::vector<std::string> names;
+    for (const VariableSummary &v : list_file_variables(file)) {
+        if (v.dimensions.size() < 3 || v.name == classes.name() ||
+            v.name == classes.base_name())
+            continue;
+        try {
+            const FileVariable other(file, v.name, {}, true);
+            if (same_axes(other, classes))
+                names.push_back(v.name);
+        }
+        catch (const sbrt::Error &) {
+            // not a 3D numeric variable on the classes' grid
+        }
+    }
+    return names;
+}
 
 void apply_preset(const std::string &name, sbrt::Model &model)
 {
@@ -55,12 +137,16 @@ void apply_preset(const std::string &name, sbrt::Model &model)
 
 sbrt::Model file_to_sbrt(const char *file, const char *name,
                          sbrt::Classifier &classifier, bool override_crs,
-                         size_t band_bytes, const char *preset)
+                         size_t band_bytes, const char *preset,
+                         const std::vector<std::string> &properties,
+                         const std::string &channels_file)
 {
     // a classic file's length first: the netCDF library reads what a
     // truncated one lacks as zeros
     check_classic_netcdf(file);
-    const size_t max_band = std::min(band_bytes, MAX_BAND_BYTES);
+    // every variable's band in the memory given
+    const size_t max_band =
+        std::min(band_bytes, MAX_BAND_BYTES) / (1 + properties.size());
     const double available = sbrt::available_memory();
     double needed = 0;
     const FileVariable variable(
@@ -73,6 +159,8 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
                         "say which value ranges make which class"),
                       name, file, variable.type_name().c_str());
     check_file_crs(variable, file, override_crs);
+    const std::vector<std::unique_ptr<FileVariable>> props =
+        open_properties(file, variable, properties);
     const sbrt::Frame frame = located_frame(variable);
     const sbrt::RegularAxis &x = variable.easting(), &y = variable.northing(),
                             &z = variable.vertical();
@@ -111,9 +199,37 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     sbrt::ColumnStackBuilder builder(frame);
     const size_t band = variable.band_size(max_band);
     // the next band is read (one thread) while this one is converted;
-    // doubles keep every sample type aligned
-    const size_t doubles = (band * nx * nz * variable.sample_bytes() + 7) / 8;
-    Buffer buffers[2] = {Buffer(doubles), Buffer(doubles)};
+    // doubles keep every sample type aligned; the classes' first, then
+    // each property's
+    std::vector<const FileVariable *> sources = {&variable};
+    for (const auto &p : props)
+        sources.push_back(p.get());
+    std::vector<Buffer> buffers[2];
+    for (std::vector<Buffer> &set : buffers)
+        for (const FileVariable *v : sources)
+            set.emplace_back((band * nx * nz * v->sample_bytes() + 7) / 8);
+    // the channels, streamed to a file of the mapset beside the import
+    std::unique_ptr<sbrt::FileSink> channel_sink;
+    std::unique_ptr<sbrt::ChannelsWriter> channel_writer;
+    std::unique_ptr<sbrt::ChannelBands> channel_bands;
+    std::vector<sbrt::ColumnSpan> spans;
+    if (!props.empty()) {
+        std::vector<sbrt::ChannelInfo> infos;
+        std::vector<sbrt::BandGrid> grids;
+        std::vector<std::string> names;
+        for (const auto &p : props) {
+            infos.push_back(channel_info(*p));
+            grids.push_back(p->band_grid());
+            names.push_back(p->name());
+        }
+        channel_sink = std::make_unique<sbrt::FileSink>(channels_file);
+        channel_writer = std::make_unique<sbrt::ChannelsWriter>(
+            *channel_sink, frame.rows, frame.cols, sbrt::StacksV2Options{}.block_size,
+            infos);
+        channel_bands = std::make_unique<sbrt::ChannelBands>(grids, names, *channel_writer);
+        G_message(_("With %zu property channels: %s%s"), props.size(),
+                  props[0]->name().c_str(), props.size() > 1 ? ", ..." : "");
+    }
     // a band's rows and the first northing index they read (the file's
     // northing may run south to north)
     struct Rows {
@@ -123,22 +239,37 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
         const size_t count = std::min(band, ny - row0);
         return Rows{count, y.ascending ? ny - row0 - count : row0};
     };
-    auto read = [&](size_t row0, Buffer &buffer) {
+    auto read = [&](size_t row0, std::vector<Buffer> &set) {
         const Rows rows = rows_of(row0);
-        return std::async(std::launch::async, [&variable, &buffer, rows] {
-            return variable.read_band(rows.first, rows.count, buffer.data());
+        return std::async(std::launch::async, [&sources, &set, rows] {
+            std::vector<sbrt::BandStrides> steps;
+            for (size_t v = 0; v < sources.size(); ++v)
+                steps.push_back(sources[v]->read_band(rows.first, rows.count,
+                                                      set[v].data()));
+            return steps;
         });
     };
     sbrt::BandImport import(variable.band_grid(), classifier, builder);
-    std::future<sbrt::BandStrides> pending = read(0, buffers[0]);
+    if (channel_bands)
+        import.record_spans(&spans);
+    std::future<std::vector<sbrt::BandStrides>> pending = read(0, buffers[0]);
     for (size_t row0 = 0, b = 0; row0 < ny; row0 += band, b ^= 1) {
         G_percent(row0, ny, 1);
-        const sbrt::BandStrides step = pending.get();
+        const std::vector<sbrt::BandStrides> steps = pending.get();
         if (row0 + band < ny)
             pending = read(row0 + band, buffers[b ^ 1]);
         const Rows rows = rows_of(row0);
         try {
-            import.add(buffers[b].data(), step, row0, rows.count, rows.first);
+            import.add(buffers[b][0].data(), steps[0], row0, rows.count, rows.first);
+            if (channel_bands) {
+                std::vector<const void *> bands;
+                for (size_t v = 1; v < sources.size(); ++v)
+                    bands.push_back(buffers[b][v].data());
+                channel_bands->add(spans, bands,
+                                   std::vector<sbrt::BandStrides>(steps.begin() + 1,
+                                                                  steps.end()),
+                                   row0, rows.count, rows.first);
+            }
         }
         catch (const sbrt::Error &e) {
             if (pending.valid())
@@ -147,6 +278,10 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
         }
     }
     G_percent(1, 1, 1);
+    if (channel_writer) {
+        channel_writer->finish();
+        channel_sink->finish();
+    }
     if (import.unmatched())
         G_warning(_("%llu voxels matched no rule and became empty"),
                   (unsigned long long)import.unmatched());

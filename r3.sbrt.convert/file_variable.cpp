@@ -242,7 +242,7 @@ std::vector<VariableSummary> list_file_variables(const std::string &path)
 }
 
 FileVariable::FileVariable(const std::string &path, const std::string &name,
-                           const SizeCheck &before_reading)
+                           const SizeCheck &before_reading, bool packed_allowed)
     : path_(path), name_(name), dataset_(open_multidim(path))
 {
     array_ = find_array(*dataset_, path, name);
@@ -252,9 +252,13 @@ FileVariable::FileVariable(const std::string &path, const std::string &name,
         GDALDataTypeIsComplex(type.GetNumericDataType()))
         sbrt::fail(where, " is not numeric (", type_name(), ")");
     bool has_scale = false, has_offset = false;
-    array_->GetScale(&has_scale);
-    array_->GetOffset(&has_offset);
-    if (has_scale || has_offset)
+    scale_ = array_->GetScale(&has_scale);
+    offset_ = array_->GetOffset(&has_offset);
+    if (!has_scale)
+        scale_ = 1;
+    if (!has_offset)
+        offset_ = 0;
+    if ((has_scale || has_offset) && !packed_allowed)
         sbrt::fail(where, " is packed (scale_factor/add_offset); unpack it "
                           "first, e.g. ncpdq -U");
 
@@ -395,6 +399,16 @@ std::string FileVariable::base_name() const
     const std::string full = array_->GetName();
     const auto slash = full.find_last_of('/');
     return slash == std::string::npos ? full : full.substr(slash + 1);
+}
+
+std::string FileVariable::long_name() const
+{
+    return string_attribute(*array_, "long_name");
+}
+
+std::string FileVariable::units() const
+{
+    return string_attribute(*array_, "units");
 }
 
 std::vector<sbrt::Material> FileVariable::flag_labels() const

@@ -52,8 +52,10 @@ public:
     /// once its axes are known, before any value (coordinates included)
     /// is read.
     using SizeCheck = std::function<void(const sbrt::ImportGrid &, const std::string &)>;
+    /// `packed_allowed`: a variable with scale_factor/add_offset is read
+    /// as stored (a property channel keeps them); else it is refused.
     FileVariable(const std::string &path, const std::string &name,
-                 const SizeCheck &before_reading = {});
+                 const SizeCheck &before_reading = {}, bool packed_allowed = false);
     ~FileVariable();
     FileVariable(const FileVariable &) = delete;
     FileVariable &operator=(const FileVariable &) = delete;
@@ -77,6 +79,12 @@ public:
     std::vector<std::pair<std::string, std::string>> global_attributes() const;
     /// The variable's own name, without its group ("lithok").
     std::string base_name() const;
+    /// CF attributes: long_name, units ("" where absent), scale_factor
+    /// and add_offset (1 and 0 where absent).
+    std::string long_name() const;
+    std::string units() const;
+    double scale() const { return scale_; }
+    double offset() const { return offset_; }
     /// The file's CRS (grid mapping, or `crs`/`spatial_ref`/`epsg`
     /// attributes); nullptr when the file names none.
     std::shared_ptr<OGRSpatialReference> spatial_ref() const;
@@ -100,6 +108,7 @@ private:
     std::shared_ptr<GDALMDArray> array_;
     size_t dim_of_axis_[3] = {0, 0, 0}; ///< array dimension of each axis
     sbrt::BandGrid grid_;
+    double scale_ = 1, offset_ = 0;
 };
 
 #endif

@@ -23,8 +23,8 @@ namespace {
 
 struct Options {
     Option *input, *sbrt, *file, *variable, *output, *horizons, *materials,
-        *bottom, *rules, *memory, *preset;
-    Flag *reverse, *print, *shell, *list, *override_crs, *set_region;
+        *bottom, *rules, *memory, *preset, *properties, *property;
+    Flag *reverse, *print, *shell, *list, *override_crs, *set_region, *all_properties;
 };
 
 Options define_options()
@@ -62,6 +62,34 @@ Options define_options()
     o.variable->description =
         _("3D variable of file= (easting, northing, vertical) to convert");
     o.variable->guisection = _("File");
+
+    o.properties = G_define_option();
+    o.properties->key = "properties";
+    o.properties->type = TYPE_STRING;
+    o.properties->key_desc = "name";
+    o.properties->multiple = YES;
+    o.properties->required = NO;
+    o.properties->label =
+        _("Variables of file= on the same grid to keep as property channels");
+    o.properties->description =
+        _("Per-voxel values beside the classes (e.g. probabilities kans_1,...,"
+          "onz_lk), kept exactly");
+    o.properties->guisection = _("File");
+
+    o.all_properties = G_define_flag();
+    o.all_properties->key = 'a';
+    o.all_properties->description =
+        _("Keep every other variable of file= on the classes' grid as a property "
+          "channel");
+    o.all_properties->guisection = _("File");
+
+    o.property = G_define_option();
+    o.property->key = "property";
+    o.property->type = TYPE_STRING;
+    o.property->key_desc = "name";
+    o.property->required = NO;
+    o.property->description =
+        _("With -r: the property channel to expand instead of the classes");
 
     o.memory = G_define_standard_option(G_OPT_MEMORYMB);
     o.memory->description =
@@ -159,6 +187,10 @@ Options define_options()
 
     G_option_exclusive(o.input, o.horizons, o.sbrt, o.file, NULL);
     G_option_requires(o.variable, o.file, NULL);
+    G_option_requires(o.properties, o.file, NULL);
+    G_option_requires(o.all_properties, o.file, NULL);
+    G_option_exclusive(o.properties, o.all_properties, NULL);
+    G_option_requires(o.property, o.reverse, NULL);
     G_option_requires(o.override_crs, o.file, NULL);
     G_option_excludes(o.sbrt, o.rules, NULL);
     G_option_requires(o.materials, o.horizons, NULL);
@@ -195,6 +227,20 @@ std::string subject_of(const Options &o)
             return option->answer;
     return "SBRT";
 }
+
+/// \brief A file of the mapset's temporary folder, removed where it is
+/// still there when the run ends.
+struct TemporaryFile {
+    std::string path;
+    TemporaryFile() = default;
+    TemporaryFile(const TemporaryFile &) = delete;
+    TemporaryFile &operator=(const TemporaryFile &) = delete;
+    ~TemporaryFile()
+    {
+        if (!path.empty())
+            std::remove(path.c_str());
+    }
+};
 
 std::vector<std::string> answers_of(const Option *opt)
 {
@@ -235,7 +281,10 @@ void run(const Options &o)
         sbrt_grass::check_new_raster3d(output, overwrite);
         if (set_region)
             set_region_to(sbrt, sbrt_grass::read_sbrt_map(sbrt).frame());
-        sbrt_to_voxels(sbrt, output);
+        if (o.property->answer)
+            channel_to_voxels(sbrt, o.property->answer, output);
+        else
+            sbrt_to_voxels(sbrt, output);
         return;
     }
     if (o.sbrt->answer && output)
@@ -261,7 +310,8 @@ void run(const Options &o)
         if (report)
             print_report(sbrt, model,
                          sbrt::stacks_file_info(sbrt_grass::find_sbrt(sbrt)),
-                         o.shell->answer);
+                         o.shell->answer,
+                         sbrt_grass::read_channels_map(sbrt, model).get());
         return;
     }
     // checked before the work, written after it
@@ -269,6 +319,7 @@ void run(const Options &o)
     const std::string path = sbrt_grass::new_sbrt_path(output, overwrite);
     sbrt::Model model;
     std::string source;
+    TemporaryFile channels_file; // the property channels, moved into the SBRT
     if (o.file->answer) {
         if (!o.variable->answer)
             G_fatal_error(_("Give variable= (one of those r3.sbrt.convert -p "
@@ -278,9 +329,18 @@ void run(const Options &o)
         const int megabytes = std::atoi(o.memory->answer);
         if (megabytes < 1)
             G_fatal_error(_("memory=%s: give at least 1 (MB)"), o.memory->answer);
+        const std::vector<std::string> properties =
+            o.all_properties->answer
+                ? same_grid_variables(o.file->answer, o.variable->answer)
+                : answers_of(o.properties);
+        if (o.all_properties->answer && properties.empty())
+            G_warning(_("-a: file <%s> has no other variable on the grid of '%s'"),
+                      o.file->answer, o.variable->answer);
+        if (!properties.empty())
+            channels_file.path = G_tempfile();
         model = file_to_sbrt(o.file->answer, o.variable->answer, classifier,
                              o.override_crs->answer, size_t(megabytes) << 20,
-                             o.preset->answer);
+                             o.preset->answer, properties, channels_file.path);
         source = std::string("file ") + o.file->answer + " variable " +
                  o.variable->answer;
     }
@@ -299,7 +359,7 @@ void run(const Options &o)
     const std::string preset = o.preset->answer;
     if (!o.file->answer && preset != "auto" && preset != "none")
         apply_preset(preset, model);
-    sbrt_grass::write_sbrt_map(output, path, model, source);
+    sbrt_grass::write_sbrt_map(output, path, model, source, channels_file.path);
     if (set_region)
         set_region_to(output, model.frame());
     else if (o.file->answer)
@@ -307,7 +367,8 @@ void run(const Options &o)
                             "step: r3.sbrt.convert -s sbrt=%s"),
                           output);
     if (report)
-        print_report(output, model, sbrt::stacks_file_info(path), o.shell->answer);
+        print_report(output, model, sbrt::stacks_file_info(path), o.shell->answer,
+                     sbrt_grass::read_channels_map(output, model).get());
 }
 
 } // namespace

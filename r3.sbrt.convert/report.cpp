@@ -12,8 +12,60 @@
 #include "grass.hpp"
 #include "model/material_table.hpp"
 
+namespace {
+
+/// The property channels: type, range, fills and bytes per value on disk
+/// (the compressed blocks and their table).
+void print_channels(const sbrt::PropertyChannels &channels, bool shell)
+{
+    uint64_t all_bytes = 0, voxels = 0;
+    for (const sbrt::ChannelInfo &c : channels.infos()) {
+        all_bytes += c.bytes;
+        voxels = std::max(voxels, c.voxels);
+    }
+    if (shell)
+        fprintf(stdout, "channels=%zu\nchannel_bytes=%llu\nchannel_bytes_per_voxel=%.4f\n",
+                channels.size(), (unsigned long long)all_bytes,
+                voxels ? double(all_bytes) / double(voxels) : 0.0);
+    else
+        fprintf(stdout, "Property channels: %zu (%.2f MiB, %.3f bytes per voxel of the "
+                        "spans for all)\n",
+                channels.size(), all_bytes / (1024.0 * 1024.0),
+                voxels ? double(all_bytes) / double(voxels) : 0.0);
+    for (const sbrt::ChannelInfo &c : channels.infos()) {
+        const double per_voxel = c.voxels ? double(c.bytes) / double(c.voxels) : 0;
+        if (shell) {
+            fprintf(stdout,
+                    "channel=%s|type=%s|min=%.9g|max=%.9g|voxels=%llu|valid=%llu|"
+                    "fill=%s|scale=%.17g|offset=%.17g|bytes=%llu|bytes_per_voxel=%.4f|"
+                    "unit=%s|long_name=%s\n",
+                    c.name.c_str(), sbrt::channel_type_name(c.type()), c.min, c.max,
+                    (unsigned long long)c.voxels, (unsigned long long)c.valid,
+                    c.has_fill ? std::to_string(c.fill).c_str() : "",
+                    c.scale, c.offset, (unsigned long long)c.bytes, per_voxel,
+                    c.unit.c_str(), c.long_name.c_str());
+            continue;
+        }
+        char fill[64] = "no fill";
+        if (c.has_fill)
+            std::snprintf(fill, sizeof fill, "fill %.9g", double(c.fill));
+        fprintf(stdout, "  %-12s %-4s %9.6g .. %-9.6g %s, %5.1f %% valid, %.3f bytes "
+                        "per voxel%s%s%s%s\n",
+                c.name.c_str(), sbrt::channel_type_name(c.type()), c.min, c.max, fill,
+                c.voxels ? 100.0 * double(c.valid) / double(c.voxels) : 0.0, per_voxel,
+                c.unit.empty() ? "" : ", unit ", c.unit.c_str(),
+                c.long_name.empty() ? "" : ": ", c.long_name.c_str());
+        if (c.scale != 1 || c.offset != 0)
+            fprintf(stdout, "  %-12s value = stored * %.9g + %.9g\n", "", c.scale,
+                    c.offset);
+    }
+}
+
+} // namespace
+
 void print_report(const char *name, const sbrt::Model &model,
-                  const sbrt::StacksFileInfo &file, bool shell)
+                  const sbrt::StacksFileInfo &file, bool shell,
+                  const sbrt::PropertyChannels *channels)
 {
     const sbrt::Frame &f = model.frame();
     const sbrt::Stats s = model.stats();
@@ -47,6 +99,8 @@ void print_report(const char *name, const sbrt::Model &model,
                 "file_compression=%.3f\n",
                 unsigned(file.major), unsigned(file.minor),
                 (unsigned long long)file.bytes, file_per_interval, file_compression);
+        if (channels)
+            print_channels(*channels, true);
         return;
     }
     fprintf(stdout, "SBRT:          %s\n", name);
@@ -87,4 +141,6 @@ void print_report(const char *name, const sbrt::Model &model,
     fprintf(stdout, "  stacks file:       %.2f MiB (%.2f bytes per interval)\n",
             file.bytes / mib, file_per_interval);
     fprintf(stdout, "  compression:       %.1f %%\n", file_compression);
+    if (channels)
+        print_channels(*channels, false);
 }

@@ -85,6 +85,20 @@ sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options)
     }
 }
 
+std::shared_ptr<const sbrt::PropertyChannels> read_channels_map(const char *name,
+                                                                const sbrt::Model &model)
+{
+    const std::string dir = find_sbrt(name);
+    try {
+        return sbrt::read_channels(dir, model);
+    }
+    catch (const sbrt::Error &e) {
+        fail_with(_("The property channels of SBRT <%s> are damaged: %s. Import "
+                    "the source file again with r3.sbrt.convert"),
+                  name, e.what());
+    }
+}
+
 std::string new_sbrt_path(const char *name, bool overwrite)
 {
     if (G_legal_filename(name) != 1)
@@ -100,7 +114,8 @@ std::string new_sbrt_path(const char *name, bool overwrite)
 }
 
 void write_sbrt_map(const char *name, const std::string &path,
-                    const sbrt::Model &model, const std::string &source)
+                    const sbrt::Model &model, const std::string &source,
+                    const std::string &channels_file)
 {
     const time_t now = time(nullptr);
     char date[64];
@@ -110,7 +125,7 @@ void write_sbrt_map(const char *name, const std::string &path,
     history += "source: " + source + "\n";
     history += std::string("command: ") + G_recreate_command() + "\n";
     try {
-        sbrt::write_sbrt(path, model, history);
+        sbrt::write_sbrt(path, model, history, {}, channels_file);
     }
     catch (const sbrt::Error &e) {
         G_fatal_error(_("Unable to write SBRT <%s>: %s"), name, e.what());

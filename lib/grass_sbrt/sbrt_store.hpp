@@ -7,6 +7,7 @@
 #ifndef SBRT_STORE_HPP
 #define SBRT_STORE_HPP
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,13 +31,18 @@ std::string find_sbrt(const char *name);
 /// or one with a member that is no regular file, throws sbrt::Error
 /// naming the map and what to do.
 sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options = {});
+/// The property channels of SBRT `name` whose model (as read) is `model`;
+/// nullptr where it has none. A damaged channels member is a fatal error.
+std::shared_ptr<const sbrt::PropertyChannels> read_channels_map(const char *name,
+                                                                const sbrt::Model &model);
 /// Checks the name and overwrite rules, then returns the directory of the
 /// new SBRT in the current mapset.
 std::string new_sbrt_path(const char *name, bool overwrite);
 /// Writes SBRT `name` atomically to `path` (from new_sbrt_path), with
 /// history.
 void write_sbrt_map(const char *name, const std::string &path,
-                    const sbrt::Model &model, const std::string &source);
+                    const sbrt::Model &model, const std::string &source,
+                    const std::string &channels_file = {});
 /// "name@mapset" of every SBRT in the search path, mapset by mapset.
 std::vector<std::string> list_sbrts();
 /// Fatal error if a 3D raster `name` exists in the current mapset and

@@ -36,28 +36,10 @@ size_t sample_bytes(SampleType type)
 void BandImport::add(const void *values, const BandStrides &step, size_t row0,
                      size_t rows, size_t first)
 {
-    auto as = [&](auto *type) {
+    with_sample_type(grid_.sample, [&](auto *type) {
         using T = std::remove_pointer_t<decltype(type)>;
         add_typed(static_cast<const T *>(values), step, row0, rows, first);
-    };
-    switch (grid_.sample) {
-    case SampleType::int8:
-        return as(static_cast<int8_t *>(nullptr));
-    case SampleType::uint8:
-        return as(static_cast<uint8_t *>(nullptr));
-    case SampleType::int16:
-        return as(static_cast<int16_t *>(nullptr));
-    case SampleType::uint16:
-        return as(static_cast<uint16_t *>(nullptr));
-    case SampleType::int32:
-        return as(static_cast<int32_t *>(nullptr));
-    case SampleType::uint32:
-        return as(static_cast<uint32_t *>(nullptr));
-    case SampleType::float32:
-        return as(static_cast<float *>(nullptr));
-    case SampleType::float64:
-        return as(static_cast<double *>(nullptr));
-    }
+    });
 }
 
 template <typename T>
@@ -72,6 +54,8 @@ void BandImport::add_typed(const T *values, const BandStrides &step, size_t row0
     std::vector<ColumnStackBuilder::ClassRun> runs;
     runs.reserve(nz);
     const ptrdiff_t dz = z.ascending ? ptrdiff_t(step.vertical) : -ptrdiff_t(step.vertical);
+    if (spans_)
+        spans_->clear();
     for (size_t row = row0; row < row0 + rows; ++row) {
         const size_t yi = (y.ascending ? ny - 1 - row : row) - first;
         for (size_t col = 0; col < nx; ++col) {
@@ -101,6 +85,21 @@ void BandImport::add_typed(const T *values, const BandStrides &step, size_t row0
                      " (from the bottom): ", e.what());
             }
             builder_.add_runs(runs.data(), runs.size());
+            if (spans_) {
+                // from the bottom of the lowest class run to the top of the highest
+                ColumnSpan span;
+                size_t last = runs.size();
+                while (last > 0 && runs[last - 1].id == NULL_CLASS)
+                    --last;
+                if (last > 0) {
+                    size_t first = 0;
+                    while (runs[first].id == NULL_CLASS)
+                        ++first;
+                    span.lo = first ? runs[first - 1].top : 0;
+                    span.hi = runs[last - 1].top;
+                }
+                spans_->push_back(span);
+            }
         }
     }
 }

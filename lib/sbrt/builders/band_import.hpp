@@ -10,11 +10,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "builders/classifier.hpp"
 #include "builders/column_builder.hpp"
 #include "builders/grid_axes.hpp"
 #include "builders/missing_values.hpp"
+#include "model/property_channel.hpp"
 
 namespace sbrt {
 
@@ -23,6 +25,31 @@ enum class SampleType { int8, uint8, int16, uint16, int32, uint32, float32, floa
 
 /// Bytes of one value of `type`.
 size_t sample_bytes(SampleType type);
+
+/// Calls f with a null pointer of the C++ type of `type` (int16_t * for
+/// int16, ...): code templated on the value type, chosen at run time.
+template <typename F>
+void with_sample_type(SampleType type, F &&f)
+{
+    switch (type) {
+    case SampleType::int8:
+        return f(static_cast<int8_t *>(nullptr));
+    case SampleType::uint8:
+        return f(static_cast<uint8_t *>(nullptr));
+    case SampleType::int16:
+        return f(static_cast<int16_t *>(nullptr));
+    case SampleType::uint16:
+        return f(static_cast<uint16_t *>(nullptr));
+    case SampleType::int32:
+        return f(static_cast<int32_t *>(nullptr));
+    case SampleType::uint32:
+        return f(static_cast<uint32_t *>(nullptr));
+    case SampleType::float32:
+        return f(static_cast<float *>(nullptr));
+    case SampleType::float64:
+        return f(static_cast<double *>(nullptr));
+    }
+}
 
 /// \brief Element strides of the easting, northing and vertical indices in
 /// a band (a band's first northing index is its own index 0).
@@ -56,6 +83,9 @@ public:
 
     /// Voxels with a value no rule covered (they became empty).
     uint64_t unmatched() const { return unmatched_; }
+    /// Where given, each add() leaves there the solid span of every cell it
+    /// added (row by row): the voxels property channels are kept for.
+    void record_spans(std::vector<ColumnSpan> *spans) { spans_ = spans; }
 
 private:
     template <typename T>
@@ -66,6 +96,7 @@ private:
     Classifier &classifier_;
     ColumnStackBuilder &builder_;
     uint64_t unmatched_ = 0;
+    std::vector<ColumnSpan> *spans_ = nullptr;
 };
 
 } // namespace sbrt

@@ -1,0 +1,81 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Property channels of a file import, band by band
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "builders/channel_bands.hpp"
+
+#include <cmath>
+#include <type_traits>
+
+#include "util/error.hpp"
+
+namespace sbrt {
+
+ChannelBands::ChannelBands(std::vector<BandGrid> grids, std::vector<std::string> names,
+                           ChannelsWriter &writer)
+    : grids_(std::move(grids)), names_(std::move(names)), writer_(writer),
+      row_values_(grids_.size())
+{
+    SBRT_CHECK_EQ(grids_.size(), writer.channels().size(), "ChannelBands");
+    SBRT_CHECK_EQ(names_.size(), grids_.size(), "ChannelBands");
+}
+
+template <typename T>
+void ChannelBands::gather(size_t channel, const T *values, const BandStrides &step,
+                          size_t row, size_t first, const ColumnSpan *spans,
+                          std::vector<float> &out) const
+{
+    const BandGrid &grid = grids_[channel];
+    const RegularAxis &x = grid.easting, &y = grid.northing, &z = grid.vertical;
+    const size_t nx = x.size, ny = y.size, nz = z.size;
+    const ptrdiff_t dz = z.ascending ? ptrdiff_t(step.vertical) : -ptrdiff_t(step.vertical);
+    const size_t yi = (y.ascending ? ny - 1 - row : row) - first;
+    out.clear();
+    for (size_t col = 0; col < nx; ++col) {
+        const ColumnSpan span = spans[col];
+        if (span.size() == 0)
+            continue;
+        const size_t xi = x.ascending ? col : nx - 1 - col;
+        const ptrdiff_t bottom = ptrdiff_t(yi * step.northing + xi * step.easting +
+                                           (z.ascending ? 0 : (nz - 1) * step.vertical));
+        for (uint32_t d = span.lo; d < span.hi; ++d) {
+            const T value = values[bottom + ptrdiff_t(d) * dz];
+            const float kept = float(value);
+            if constexpr (!(std::is_integral_v<T> && sizeof(T) <= 2))
+                if (double(kept) != double(value) && !std::isnan(double(value)))
+                    fail("channel '", names_[channel], "', row ", row + 1, ", column ",
+                         col + 1, ", depth ", d + 1, " (from the bottom): ",
+                         double(value),
+                         " is not held exactly in 32-bit floating point; channels "
+                         "keep values exactly: round or scale the variable first "
+                         "(e.g. with ncap2)");
+            out.push_back(kept);
+        }
+    }
+}
+
+void ChannelBands::add(const std::vector<ColumnSpan> &spans,
+                       const std::vector<const void *> &bands,
+                       const std::vector<BandStrides> &steps, size_t row0, size_t rows,
+                       size_t first)
+{
+    SBRT_CHECK_EQ(bands.size(), grids_.size(), "ChannelBands::add");
+    const size_t nx = grids_.empty() ? 0 : grids_[0].easting.size;
+    SBRT_CHECK_EQ(spans.size(), rows * nx, "ChannelBands::add spans");
+    std::vector<const float *> pointers(grids_.size());
+    for (size_t r = 0; r < rows; ++r) {
+        const ColumnSpan *row_spans = spans.data() + r * nx;
+        for (size_t ch = 0; ch < grids_.size(); ++ch) {
+            with_sample_type(grids_[ch].sample, [&](auto *type) {
+                using T = std::remove_pointer_t<decltype(type)>;
+                gather(ch, static_cast<const T *>(bands[ch]), steps[ch], row0 + r, first,
+                       row_spans, row_values_[ch]);
+            });
+            pointers[ch] = row_values_[ch].data();
+        }
+        writer_.add_row(row_spans, pointers);
+    }
+}
+
+} // namespace sbrt

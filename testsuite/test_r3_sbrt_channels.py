@@ -1,0 +1,268 @@
+"""
+MODULE:    testsuite/test_r3_sbrt_channels.py (r3.sbrt addon)
+PURPOSE:   Property channels (issue 29): r3.sbrt.convert file= properties=
+           keeps per-voxel variables beside the classes; -r property=
+           expands one back, equal voxel for voxel to the same values read
+           by GRASS's own r3.in.ascii (fills and voxels outside the
+           classes' columns null); -p/-g list them; -a takes every variable
+           on the classes' grid; bad properties are refused by name
+COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+"""
+import os
+import shutil
+import subprocess
+import tempfile
+
+from grass.gunittest.case import TestCase
+from grass.gunittest.main import test
+import grass.script as gs
+
+from geomodel_fixture import Raster3dCompare
+
+FILL = -127
+NX, NY, NZ = 14, 17, 40
+X0, Y0, Z0 = 120000, 480000, -49.75
+DX, DY, DZ = 100, 100, 0.5
+
+
+def lithok(i, j, k):
+    """Classes under a ground level, a cave, sea columns (all fill)."""
+    if (i * 7 + j * 3) % 23 == 0:
+        return FILL
+    ground = NZ - 1 - (i * 5 + j * 11) % 13
+    if k > ground or (10 <= k < 13 and (i + j) % 5 == 0):
+        return FILL
+    return 1 + (k // 8 + i // 4 + j // 5) % 9
+
+
+def kans(i, j, k):
+    """A percentage (short with a fill), set in caves too, missing in some
+    voxels with a class."""
+    if (lithok(i, j, k) == FILL and not (10 <= k < 13)) or (i + j + k) % 17 == 0:
+        return FILL
+    return (i * 13 + j * 7 + k * 3) % 101
+
+
+def porosity(i, j, k):
+    """Floats with fractions (exact in float32), negative ones included."""
+    return ((i * 31 + j * 17 + k * 5) % 97) / 8.0 - 3.0
+
+
+def packed(i, j, k):
+    """A short packed with scale_factor 0.01 and add_offset 5."""
+    return (i * 101 + j * 53 + k * 29) % 3000 - 1500
+
+
+PROPERTIES = {
+    "kans_5": ("short", kans, f'kans_5:_FillValue = {FILL}s ; kans_5:units = "%" ; '
+               'kans_5:long_name = "kans op lithoklasse 5" ;'),
+    "porosity": ("float", porosity, 'porosity:long_name = "porosity" ;'),
+    "kh": ("short", packed, 'kh:scale_factor = 0.01 ; kh:add_offset = 5.0 ; '
+           'kh:units = "m/d" ;'),
+}
+
+
+def write_netcdf(path, order=("x", "y", "z"), properties=PROPERTIES, extra_vars=""):
+    sizes = {"x": NX, "y": NY, "z": NZ}
+
+    def values(f):
+        out = []
+
+        def walk(level, at):
+            if level == 3:
+                out.append(repr(f(at["x"], at["y"], at["z"])))
+                return
+            for t in range(sizes[order[level]]):
+                at[order[level]] = t
+                walk(level + 1, at)
+
+        walk(0, {})
+        return ", ".join(out)
+
+    dims = ", ".join(order)
+    declarations = [f"short lithok({dims}) ; lithok:_FillValue = {FILL}s ;"]
+    data = [f"lithok = {values(lithok)} ;"]
+    for name, (kind, f, attributes) in properties.items():
+        declarations.append(f"{kind} {name}({dims}) ; {attributes}")
+        data.append(f"{name} = {values(f)} ;")
+    cdl = f"""netcdf channels {{
+dimensions:
+  x = {NX} ; y = {NY} ; z = {NZ} ; w = 3 ;
+variables:
+  int x(x) ; x:standard_name = "projection_x_coordinate" ; x:units = "m" ;
+  int y(y) ; y:standard_name = "projection_y_coordinate" ; y:units = "m" ;
+  float z(z) ; z:positive = "up" ; z:units = "m" ;
+  {" ".join(declarations)}
+  {extra_vars}
+data:
+  x = {", ".join(str(X0 + DX * t) for t in range(NX))} ;
+  y = {", ".join(str(Y0 + DY * t) for t in range(NY))} ;
+  z = {", ".join(repr(Z0 + DZ * t) for t in range(NZ))} ;
+  {" ".join(data)}
+}}
+"""
+    with open(path + ".cdl", "w") as f:
+        f.write(cdl)
+    subprocess.run(["ncgen", "-k", "nc4", "-o", path, path + ".cdl"], check=True)
+
+
+def span(i, j):
+    """The voxels of column (i, j) that keep channel values."""
+    solid = [k for k in range(NZ) if lithok(i, j, k) != FILL]
+    return (min(solid), max(solid) + 1) if solid else (0, 0)
+
+
+def write_reference(path, f, null_value=None, transform=lambda v: v):
+    """What -r property= must give: f inside the spans, null elsewhere and
+    where f is the fill."""
+    lines = [
+        f"north: {Y0 + DY * (NY - 1) + DY / 2}", f"south: {Y0 - DY / 2}",
+        f"east: {X0 + DX * (NX - 1) + DX / 2}", f"west: {X0 - DX / 2}",
+        f"top: {Z0 + DZ * (NZ - 1) + DZ / 2}", f"bottom: {Z0 - DZ / 2}",
+        f"rows: {NY}", f"cols: {NX}", f"levels: {NZ}",
+    ]
+    for k in range(NZ):
+        for j in reversed(range(NY)):
+            row = []
+            for i in range(NX):
+                lo, hi = span(i, j)
+                v = f(i, j, k)
+                row.append("*" if not lo <= k < hi or v == null_value
+                           else repr(transform(v)))
+            lines.append(" ".join(row))
+    with open(path, "w") as out:
+        out.write("\n".join(lines) + "\n")
+
+
+def error_of(*args):
+    run = subprocess.run(args, capture_output=True, text=True)
+    return run.returncode, " ".join(run.stderr.split())
+
+
+class TestChannels(TestCase, Raster3dCompare):
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.tmp = tempfile.mkdtemp(prefix="sbrt_channels_")
+        cls.file = os.path.join(cls.tmp, "channels.nc")
+        write_netcdf(cls.file)
+        cls.runModule("r3.sbrt.convert", file=cls.file, variable="lithok",
+                      properties="kans_5,porosity,kh", output="with_channels",
+                      memory=1, preset="none", flags="s")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.del_temp_region()
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def expanded_equals(self, sbrt, channel, f, **reference):
+        ascii3d = os.path.join(self.tmp, channel + ".txt")
+        write_reference(ascii3d, f, **reference)
+        self.runModule("r3.in.ascii", input=ascii3d, output="expected_" + channel,
+                       overwrite=True)
+        self.assertModule("r3.sbrt.convert", flags="r", sbrt=sbrt, property=channel,
+                          output="back_" + channel)
+        n, differing = self.count_differences("expected_" + channel, "back_" + channel)
+        self.assertEqual(n, NX * NY * NZ)
+        self.assertEqual(differing, 0, channel)
+
+    def test_each_channel_expands_to_the_source_values(self):
+        """Percentages with their fill (caves keep their values), floats,
+        and a packed channel as its meaning (stored * 0.01 + 5)."""
+        self.expanded_equals("with_channels", "kans_5", kans, null_value=FILL)
+        self.expanded_equals("with_channels", "porosity", porosity)
+        self.expanded_equals("with_channels", "kh", packed,
+                             transform=lambda v: v * 0.01 + 5.0)
+        info = gs.raster3d_info("back_kh")
+        self.assertEqual(info["datatype"], '"DCELL"')
+        self.assertEqual(gs.raster3d_info("back_kans_5")["datatype"], '"FCELL"')
+
+    def test_any_axis_order_gives_the_same_channels(self):
+        """z slowest: the same channels member, byte for byte."""
+        other = os.path.join(self.tmp, "zyx.nc")
+        write_netcdf(other, order=("z", "y", "x"))
+        self.assertModule("r3.sbrt.convert", file=other, variable="lithok",
+                          properties="kans_5,porosity,kh", output="zyx",
+                          preset="none")
+        env = gs.gisenv()
+        base = os.path.join(env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"], "sbrt")
+        with open(os.path.join(base, "zyx", "channels"), "rb") as a, open(
+                os.path.join(base, "with_channels", "channels"), "rb") as b:
+            self.assertEqual(a.read(), b.read())
+
+    def test_p_and_g_list_the_channels(self):
+        listing = gs.read_command("r3.sbrt.convert", flags="p", sbrt="with_channels")
+        self.assertIn("Property channels: 3", listing)
+        self.assertIn("kans_5", listing)
+        self.assertIn("kans op lithoklasse 5", listing)
+        self.assertIn("value = stored * 0.01 + 5", listing)
+        lines = gs.read_command("r3.sbrt.convert", flags="g",
+                                sbrt="with_channels").splitlines()
+        channels = {}
+        for line in lines:
+            if line.startswith("channel="):
+                fields = dict(f.split("=", 1) for f in line.split("|"))
+                channels[fields["channel"]] = fields
+        self.assertEqual(sorted(channels), ["kans_5", "kh", "porosity"])
+        self.assertEqual(channels["kans_5"]["type"], "i8")  # 0..100, fill -127
+        self.assertEqual(channels["kh"]["type"], "i16")
+        self.assertEqual(channels["porosity"]["type"], "f32")
+        self.assertEqual(float(channels["kans_5"]["max"]), 100)
+        self.assertEqual(channels["kans_5"]["unit"], "%")
+        voxels = sum(span(i, j)[1] - span(i, j)[0] for i in range(NX) for j in range(NY))
+        self.assertEqual(int(channels["porosity"]["voxels"]), voxels)
+        self.assertGreater(float(channels["kans_5"]["bytes_per_voxel"]), 0)
+        self.assertIn("channels=3", lines)
+
+    def test_a_takes_every_variable_on_the_grid(self):
+        other = os.path.join(self.tmp, "extra.nc")
+        write_netcdf(other, extra_vars="short flat(x, y) ; short other(w) ;")
+        self.assertModule("r3.sbrt.convert", file=other, variable="lithok",
+                          flags="a", output="all_channels", preset="none")
+        listing = gs.read_command("r3.sbrt.convert", flags="g", sbrt="all_channels")
+        names = sorted(line.split("|")[0][len("channel="):]
+                       for line in listing.splitlines() if line.startswith("channel="))
+        self.assertEqual(names, ["kans_5", "kh", "porosity"])
+
+    def test_classes_alone_still_have_no_channels(self):
+        self.assertModule("r3.sbrt.convert", file=self.file, variable="lithok",
+                          output="classes_only", preset="none")
+        self.assertNotIn("channel", gs.read_command("r3.sbrt.convert", flags="g",
+                                                    sbrt="classes_only"))
+        code, err = error_of("r3.sbrt.convert", "-r", "sbrt=classes_only",
+                             "property=kans_5", "output=none_back")
+        self.assertNotEqual(code, 0)
+        self.assertIn("has no property channels", err)
+
+    def test_bad_properties_are_refused_by_name(self):
+        code, err = error_of("r3.sbrt.convert", f"file={self.file}", "variable=lithok",
+                             "properties=kans_9", "output=bad")
+        self.assertNotEqual(code, 0)
+        self.assertIn("kans_9", err)
+        other = os.path.join(self.tmp, "other_grid.nc")
+        write_netcdf(other, properties={}, extra_vars="short small(x, y, w) ;")
+        code, err = error_of("r3.sbrt.convert", f"file={other}", "variable=lithok",
+                             "properties=small", "output=bad")
+        self.assertNotEqual(code, 0)
+        self.assertIn("small", err)
+        code, err = error_of("r3.sbrt.convert", f"file={self.file}", "variable=lithok",
+                             "properties=lithok", "output=bad")
+        self.assertIn("class variable itself", err)
+        code, err = error_of("r3.sbrt.convert", "-r", "sbrt=with_channels",
+                             "property=nothing", "output=bad_back")
+        self.assertNotEqual(code, 0)
+        self.assertIn("no property channel 'nothing'", err)
+        self.assertIn("kans_5, porosity, kh", err)
+        # a double that float32 would round
+        inexact = os.path.join(self.tmp, "inexact.nc")
+        write_netcdf(inexact, properties={
+            "fine": ("double", lambda i, j, k: 0.1 + i, 'fine:long_name = "fine" ;')})
+        code, err = error_of("r3.sbrt.convert", f"file={inexact}", "variable=lithok",
+                             "properties=fine", "output=bad")
+        self.assertNotEqual(code, 0)
+        self.assertIn("not held exactly", err)
+        self.assertNotIn("bad", gs.read_command("r3.sbrt.convert", flags="l"))
+
+
+if __name__ == "__main__":
+    test()
