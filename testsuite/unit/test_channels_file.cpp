@@ -298,7 +298,9 @@ TEST(ChannelsFile, HorizonModelsHaveNoSpans)
     f.depths = 10;
     Intervals iv;
     iv.push_back({1, 2.5f});
-    const Model m(f, {Material{}, Material{1}}, std::vector<uint32_t>{0, 1},
+    Material one;
+    one.id = 1;
+    const Model m(f, {Material{}, one}, std::vector<uint32_t>{0, 1},
                   IntervalArray(std::move(iv)));
     EXPECT_FALSE(has_voxel_tops(m));
     EXPECT_THROW(solid_span(m, 0), Error);

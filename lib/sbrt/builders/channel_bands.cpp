@@ -31,7 +31,11 @@ void ChannelBands::gather(size_t channel, const T *values, const BandStrides &st
     const size_t nx = x.size, ny = y.size, nz = z.size;
     const ptrdiff_t dz = z.ascending ? ptrdiff_t(step.vertical) : -ptrdiff_t(step.vertical);
     const size_t yi = (y.ascending ? ny - 1 - row : row) - first;
-    out.clear();
+    size_t n = 0;
+    for (size_t col = 0; col < nx; ++col)
+        n += spans[col].size();
+    out.resize(n);
+    float *to = out.data();
     for (size_t col = 0; col < nx; ++col) {
         const ColumnSpan span = spans[col];
         if (span.size() == 0)
@@ -50,7 +54,7 @@ void ChannelBands::gather(size_t channel, const T *values, const BandStrides &st
                          " is not held exactly in 32-bit floating point; channels "
                          "keep values exactly: round or scale the variable first "
                          "(e.g. with ncap2)");
-            out.push_back(kept);
+            *to++ = kept;
         }
     }
 }

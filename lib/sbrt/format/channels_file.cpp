@@ -42,46 +42,83 @@ float bits_float(uint32_t bits)
 
 bool is_exact_integer(float v)
 {
-    return std::fabs(v) <= EXACT_INTEGER && std::nearbyint(v) == v;
+    // |v| <= 2^24 (NaN fails the test), then a round trip through int32
+    return std::fabs(v) <= float(EXACT_INTEGER) && float(int32_t(v)) == v;
 }
 
-/// A block's values (cells' spans one after another) as its raw payload.
-std::vector<uint8_t> encode_block(const std::vector<float> &values,
-                                  const std::vector<ColumnSpan> &spans)
+/// \brief What one block's values are (merged into a channel's figures).
+struct BlockFigures {
+    uint64_t valid = 0;
+    double min = 0, max = 0;
+    bool integer = true;
+};
+
+/// Stores `count` codes of one column (bottom up) as differences to the
+/// code below into byte planes of `width` bytes at `at`.
+template <unsigned WIDTH, bool INTEGERS>
+void store_column(const float *values, size_t count, int64_t least, uint8_t *planes,
+                  size_t n, size_t at)
+{
+    uint32_t below = 0;
+    for (size_t k = 0; k < count; ++k) {
+        uint32_t code;
+        if constexpr (INTEGERS)
+            code = uint32_t(int64_t(values[k]) - least);
+        else
+            code = float_bits(values[k]);
+        const uint32_t stored = INTEGERS ? code - below : code ^ below;
+        below = code;
+        for (unsigned b = 0; b < WIDTH; ++b)
+            planes[b * n + at + k] = uint8_t(stored >> (8 * b));
+    }
+}
+
+/// A block's values (cells' spans one after another) as its raw payload;
+/// `figures` gets what they are.
+void encode_block(const std::vector<float> &values, const std::vector<ColumnSpan> &spans,
+                  const ChannelInfo &info, BlockFigures &figures, std::vector<uint8_t> &raw)
 {
     bool integers = true;
-    int64_t least = 0, most = 0;
+    float least = 0, most = 0;
+    double valid_min = 0, valid_max = 0;
+    uint64_t valid = 0;
     for (size_t i = 0; i < values.size(); ++i) {
-        if (!is_exact_integer(values[i])) {
-            integers = false;
-            break;
-        }
-        const int64_t v = int64_t(values[i]);
+        const float v = values[i];
+        integers = integers && is_exact_integer(v);
         least = i ? std::min(least, v) : v;
         most = i ? std::max(most, v) : v;
+        if (!info.is_fill(v)) {
+            valid_min = valid ? std::min(valid_min, double(v)) : double(v);
+            valid_max = valid ? std::max(valid_max, double(v)) : double(v);
+            ++valid;
+        }
     }
-    const uint64_t range = uint64_t(most - least);
+    figures = {valid, valid_min, valid_max, integers};
+    const uint64_t range = integers ? uint64_t(int64_t(most) - int64_t(least)) : 0;
     const unsigned width = !integers ? 4 : range <= 0xff ? 1 : range <= 0xffff ? 2 : 4;
     const size_t n = values.size();
-    std::vector<uint8_t> raw(BLOCK_HEAD + n * width);
+    raw.resize(BLOCK_HEAD + n * width);
+    std::fill(raw.begin(), raw.begin() + BLOCK_HEAD, 0);
     raw[0] = integers ? CODING_INTEGERS : CODING_FLOAT_BITS;
     raw[1] = uint8_t(width);
-    store_le(&raw[4], uint32_t(int32_t(integers ? least : 0)), 4);
-    const uint64_t mask = width == 4 ? 0xffffffffull : (1ull << (8 * width)) - 1;
+    const int64_t base = integers ? int64_t(least) : 0;
+    store_le(&raw[4], uint32_t(int32_t(base)), 4);
     uint8_t *planes = raw.data() + BLOCK_HEAD;
-    size_t i = 0;
-    for (const ColumnSpan &span : spans)
-        for (uint32_t k = 0, below = 0; k < span.size(); ++k, ++i) {
-            const uint32_t code = integers ? uint32_t(int64_t(values[i]) - least)
-                                           : float_bits(values[i]);
-            const uint32_t stored =
-                integers ? uint32_t((code - below) & mask) : code ^ below;
-            below = code;
-            for (unsigned b = 0; b < width; ++b)
-                planes[b * n + i] = uint8_t(stored >> (8 * b));
-        }
-    SBRT_CHECK_EQ(i, n, "channel block");
-    return raw;
+    size_t at = 0;
+    for (const ColumnSpan &span : spans) {
+        const float *column = values.data() + at;
+        const size_t count = span.size();
+        if (!integers)
+            store_column<4, false>(column, count, 0, planes, n, at);
+        else if (width == 1)
+            store_column<1, true>(column, count, base, planes, n, at);
+        else if (width == 2)
+            store_column<2, true>(column, count, base, planes, n, at);
+        else
+            store_column<4, true>(column, count, base, planes, n, at);
+        at += count;
+    }
+    SBRT_CHECK_EQ(at, n, "channel block");
 }
 
 /// The inverse of encode_block, on untrusted bytes.
@@ -168,7 +205,6 @@ void ChannelsWriter::add_row(const ColumnSpan *spans, const std::vector<const fl
     if (row_ >= rows_)
         fail("channels: more rows than the grid's ", rows_);
     for (size_t ch = 0; ch < channels_.size(); ++ch) {
-        ChannelInfo &info = channels_[ch];
         const float *v = values[ch];
         for (int bc = 0; bc < block_cols_; ++bc) {
             const int c0 = bc * block_size_, c1 = std::min(cols_, c0 + block_size_);
@@ -177,16 +213,7 @@ void ChannelsWriter::add_row(const ColumnSpan *spans, const std::vector<const fl
                 n += spans[c].size();
             std::vector<float> &out = pending_[ch][size_t(bc)];
             out.insert(out.end(), v, v + n);
-            for (size_t i = 0; i < n; ++i) {
-                const float x = v[i];
-                if (!info.is_fill(x)) {
-                    info.min = info.valid ? std::min(info.min, double(x)) : double(x);
-                    info.max = info.valid ? std::max(info.max, double(x)) : double(x);
-                    ++info.valid;
-                }
-                info.integer = info.integer && is_exact_integer(x);
-            }
-            info.voxels += n;
+            channels_[ch].voxels += n;
             v += n;
         }
     }
@@ -203,18 +230,27 @@ void ChannelsWriter::add_row(const ColumnSpan *spans, const std::vector<const fl
 void ChannelsWriter::flush_block_row()
 {
     const size_t jobs = channels_.size() * size_t(block_cols_);
-    std::vector<std::vector<uint8_t>> compressed(jobs);
+    // buffers kept from one row of blocks to the next: no fresh pages
+    std::vector<std::vector<uint8_t>> &compressed = compressed_;
+    compressed.resize(jobs);
+    raw_.resize(jobs);
     std::vector<uint32_t> raw_sizes(jobs);
+    std::vector<BlockFigures> figures(jobs);
     for_each_row(int(jobs), threads_, [&](int job) {
         const size_t ch = size_t(job) / size_t(block_cols_),
                      bc = size_t(job) % size_t(block_cols_);
-        const std::vector<uint8_t> raw = encode_block(pending_[ch][bc], block_spans_[bc]);
+        std::vector<uint8_t> &raw = raw_[size_t(job)];
+        encode_block(pending_[ch][bc], block_spans_[bc], channels_[ch], figures[size_t(job)],
+                     raw);
         if (raw.size() > UINT32_MAX)
             fail("channels: a block of ", raw.size(), " bytes (give a smaller block size)");
         std::vector<uint8_t> &out = compressed[size_t(job)];
         out.resize(ZSTD_compressBound(raw.size()));
-        const size_t n = ZSTD_compress(out.data(), out.size(), raw.data(), raw.size(),
-                                       zstd_level_);
+        // one context a thread, kept: no tables allocated per block
+        thread_local const std::unique_ptr<ZSTD_CCtx, size_t (*)(ZSTD_CCtx *)> context(
+            ZSTD_createCCtx(), ZSTD_freeCCtx);
+        const size_t n = ZSTD_compressCCtx(context.get(), out.data(), out.size(), raw.data(),
+                                           raw.size(), zstd_level_);
         if (ZSTD_isError(n))
             fail("channels: zstd: ", ZSTD_getErrorName(n));
         out.resize(n);
@@ -222,6 +258,14 @@ void ChannelsWriter::flush_block_row()
     });
     for (size_t job = 0; job < jobs; ++job) {
         const size_t ch = job / size_t(block_cols_);
+        ChannelInfo &info = channels_[ch];
+        const BlockFigures &f = figures[job];
+        if (f.valid) {
+            info.min = info.valid ? std::min(info.min, f.min) : f.min;
+            info.max = info.valid ? std::max(info.max, f.max) : f.max;
+            info.valid += f.valid;
+        }
+        info.integer = info.integer && f.integer;
         const std::vector<uint8_t> &out = compressed[job];
         table_[ch].push_back({sink_.size(), uint32_t(out.size()), raw_sizes[job],
                               crc32_of(out.data(), out.size())});
@@ -230,7 +274,7 @@ void ChannelsWriter::flush_block_row()
     }
     for (auto &per_channel : pending_)
         for (std::vector<float> &values : per_channel)
-            std::vector<float>().swap(values);
+            values.clear();
     for (std::vector<ColumnSpan> &spans : block_spans_)
         spans.clear();
 }

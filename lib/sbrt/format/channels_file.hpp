@@ -84,6 +84,8 @@ private:
     /// per channel, per block column: the values of the pending rows
     std::vector<std::vector<std::vector<float>>> pending_;
     std::vector<std::vector<BlockEntry>> table_; ///< per channel
+    /// per block of a row of blocks: its raw and compressed bytes
+    std::vector<std::vector<uint8_t>> raw_, compressed_;
 };
 
 /// \brief Where a cell's span lies in its block's decoded values.
