@@ -319,6 +319,7 @@ Image empty_image(const Camera &camera, const Outputs &outputs)
     image.material.assign(outputs.material ? pixels : 0, NULL_CLASS);
     image.elevation.assign(outputs.elevation ? pixels : 0, NAN);
     image.depth.assign(outputs.depth ? pixels : 0, NAN);
+    image.value.assign(outputs.value ? pixels : 0, NAN);
     return image;
 }
 
@@ -332,6 +333,8 @@ void gather_band(const Band &band, Image &image)
               image.elevation.begin() + ptrdiff_t(band.elevation.empty() ? 0 : at));
     std::copy(band.depth.begin(), band.depth.end(),
               image.depth.begin() + ptrdiff_t(band.depth.empty() ? 0 : at));
+    std::copy(band.value.begin(), band.value.end(),
+              image.value.begin() + ptrdiff_t(band.value.empty() ? 0 : at));
 }
 
 Image Renderer::render_image(const Camera &camera, const Outputs &outputs,

@@ -27,44 +27,9 @@ using namespace sbrt;
 
 namespace {
 
-/// A channel value for every voxel of the source, as the source holds it.
-using Source = std::vector<std::vector<float>>; // [channel][voxel]
-
-float source_value(const Source &s, const Frame &f, size_t ch, uint64_t cell,
-                   uint32_t level)
-{
-    return s[ch][size_t(level) * f.cells() + cell];
-}
-
-/// Writes the channels of `source` over `model`'s spans to `path`.
-std::vector<ChannelInfo> write_channels(const std::string &path, const Model &model,
-                                        const Source &source,
-                                        std::vector<ChannelInfo> infos, int block)
-{
-    const Frame &f = model.frame();
-    FileSink sink(path);
-    ChannelsWriter writer(sink, f.rows, f.cols, block, std::move(infos), 2);
-    std::vector<ColumnSpan> spans(size_t(f.cols));
-    std::vector<std::vector<float>> values(source.size());
-    for (int row = 0; row < f.rows; ++row) {
-        for (auto &v : values)
-            v.clear();
-        for (int col = 0; col < f.cols; ++col) {
-            const uint64_t cell = model.cell_index(row, col);
-            spans[size_t(col)] = solid_span(model, cell);
-            for (size_t ch = 0; ch < source.size(); ++ch)
-                for (uint32_t z = spans[size_t(col)].lo; z < spans[size_t(col)].hi; ++z)
-                    values[ch].push_back(source_value(source, f, ch, cell, z));
-        }
-        std::vector<const float *> pointers;
-        for (auto &v : values)
-            pointers.push_back(v.data());
-        writer.add_row(spans.data(), pointers);
-    }
-    writer.finish();
-    sink.finish();
-    return writer.channels();
-}
+using sbrt_test::Source;
+using sbrt_test::source_value;
+using sbrt_test::write_channels;
 
 struct Fixture {
     Model model;

@@ -6,11 +6,14 @@
 #ifndef SBRT_TEST_SUPPORT_HPP
 #define SBRT_TEST_SUPPORT_HPP
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "format/byte_sink.hpp"
+#include "format/channels_file.hpp"
 #include "tracing/cpu_tracing.hpp"
 #include "model/model.hpp"
 #include "scene/scene.hpp"
@@ -125,6 +128,102 @@ inline sbrt::Scene cut_and_translucent_scene(const sbrt::Model &m)
     scene.translucency.color.assign(m.materials().size(), glm::dvec3(0.2, 0.5, 0.9));
     scene.translucency.extinction[1] = sbrt::extinction_of(0.3, f.ew_res());
     return scene;
+}
+
+/// \brief The first solid voxel along a ray, found without the SBRT.
+struct VoxelHit {
+    bool hit = false;
+    int32_t id = sbrt::NULL_CLASS;
+    double t = INFINITY;
+    int x = -1, y = -1, z = -1; ///< the voxel: column, row from the south, level
+};
+
+/// 3D DDA over voxels in the voxel frame (x east, y north, z up, unit
+/// cells); returns the first non-null voxel. Independent of the SBRT.
+inline VoxelHit march(const sbrt_test::Voxels &v, glm::dvec3 o, glm::dvec3 d)
+{
+    const sbrt::Frame &f = v.frame;
+    const glm::dvec3 size(f.cols, f.rows, f.depths);
+    double t0 = 0, t1 = INFINITY;
+    for (int a = 0; a < 3; ++a) {
+        if (d[a] == 0) {
+            if (o[a] < 0 || o[a] > size[a])
+                return {};
+            continue;
+        }
+        double ta = -o[a] / d[a], tb = (size[a] - o[a]) / d[a];
+        if (ta > tb)
+            std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+    }
+    if (t0 > t1)
+        return {};
+    glm::ivec3 cell, step;
+    glm::dvec3 t_max, t_delta;
+    const glm::dvec3 p = o + t0 * d;
+    for (int a = 0; a < 3; ++a) {
+        cell[a] = std::clamp(int(std::floor(p[a])), 0, int(size[a]) - 1);
+        step[a] = d[a] > 0 ? 1 : -1;
+        t_max[a] = d[a] != 0 ? ((cell[a] + (d[a] > 0)) - o[a]) / d[a] : INFINITY;
+        t_delta[a] = d[a] != 0 ? std::fabs(1 / d[a]) : INFINITY;
+    }
+    double t = t0;
+    while (true) {
+        const int row = f.rows - 1 - cell.y;
+        const int32_t id =
+            v.classes[(size_t(cell.z) * f.rows + row) * f.cols + cell.x];
+        if (id != sbrt::NULL_CLASS)
+            return {true, id, t, cell.x, cell.y, cell.z};
+        const int a = t_max.x < t_max.y ? (t_max.x < t_max.z ? 0 : 2)
+                                        : (t_max.y < t_max.z ? 1 : 2);
+        if (t_max[a] > t1)
+            return {};
+        t = t_max[a];
+        t_max[a] += t_delta[a];
+        cell[a] += step[a];
+        if (cell[a] < 0 || cell[a] >= int(size[a]))
+            return {};
+    }
+}
+
+/// Channel values for every voxel of the source, as the source holds it.
+using Source = std::vector<std::vector<float>>; // [channel][voxel]
+
+inline float source_value(const Source &s, const sbrt::Frame &f, size_t ch, uint64_t cell,
+                   uint32_t level)
+{
+    return s[ch][size_t(level) * f.cells() + cell];
+}
+
+/// Writes the channels of `source` over `model`'s spans to `path`.
+inline std::vector<sbrt::ChannelInfo> write_channels(const std::string &path, const sbrt::Model &model,
+                                        const Source &source,
+                                        std::vector<sbrt::ChannelInfo> infos, int block)
+{
+    const sbrt::Frame &f = model.frame();
+    sbrt::FileSink sink(path);
+    sbrt::ChannelsWriter writer(sink, f.rows, f.cols, block, std::move(infos), 2);
+    std::vector<sbrt::ColumnSpan> spans(size_t(f.cols));
+    std::vector<std::vector<float>> values(source.size());
+    for (int row = 0; row < f.rows; ++row) {
+        for (auto &v : values)
+            v.clear();
+        for (int col = 0; col < f.cols; ++col) {
+            const uint64_t cell = model.cell_index(row, col);
+            spans[size_t(col)] = sbrt::solid_span(model, cell);
+            for (size_t ch = 0; ch < source.size(); ++ch)
+                for (uint32_t z = spans[size_t(col)].lo; z < spans[size_t(col)].hi; ++z)
+                    values[ch].push_back(source_value(source, f, ch, cell, z));
+        }
+        std::vector<const float *> pointers;
+        for (auto &v : values)
+            pointers.push_back(v.data());
+        writer.add_row(spans.data(), pointers);
+    }
+    writer.finish();
+    sink.finish();
+    return writer.channels();
 }
 
 inline std::string temp_dir(const std::string &tag)

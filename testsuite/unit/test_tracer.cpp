@@ -20,60 +20,8 @@ using namespace sbrt;
 
 namespace {
 
-struct VoxelHit {
-    bool hit = false;
-    int32_t id = NULL_CLASS;
-    double t = INFINITY;
-};
-
-/// 3D DDA over voxels in the voxel frame (x east, y north, z up, unit
-/// cells); returns the first non-null voxel. Independent of the SBRT.
-VoxelHit march(const sbrt_test::Voxels &v, glm::dvec3 o, glm::dvec3 d)
-{
-    const Frame &f = v.frame;
-    const glm::dvec3 size(f.cols, f.rows, f.depths);
-    double t0 = 0, t1 = INFINITY;
-    for (int a = 0; a < 3; ++a) {
-        if (d[a] == 0) {
-            if (o[a] < 0 || o[a] > size[a])
-                return {};
-            continue;
-        }
-        double ta = -o[a] / d[a], tb = (size[a] - o[a]) / d[a];
-        if (ta > tb)
-            std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
-    }
-    if (t0 > t1)
-        return {};
-    glm::ivec3 cell, step;
-    glm::dvec3 t_max, t_delta;
-    const glm::dvec3 p = o + t0 * d;
-    for (int a = 0; a < 3; ++a) {
-        cell[a] = std::clamp(int(std::floor(p[a])), 0, int(size[a]) - 1);
-        step[a] = d[a] > 0 ? 1 : -1;
-        t_max[a] = d[a] != 0 ? ((cell[a] + (d[a] > 0)) - o[a]) / d[a] : INFINITY;
-        t_delta[a] = d[a] != 0 ? std::fabs(1 / d[a]) : INFINITY;
-    }
-    double t = t0;
-    while (true) {
-        const int row = f.rows - 1 - cell.y;
-        const int32_t id =
-            v.classes[(size_t(cell.z) * f.rows + row) * f.cols + cell.x];
-        if (id != NULL_CLASS)
-            return {true, id, t};
-        const int a = t_max.x < t_max.y ? (t_max.x < t_max.z ? 0 : 2)
-                                        : (t_max.y < t_max.z ? 1 : 2);
-        if (t_max[a] > t1)
-            return {};
-        t = t_max[a];
-        t_max[a] += t_delta[a];
-        cell[a] += step[a];
-        if (cell[a] < 0 || cell[a] >= int(size[a]))
-            return {};
-    }
-}
+using sbrt_test::march;
+using sbrt_test::VoxelHit;
 
 } // namespace
 

@@ -18,6 +18,7 @@ struct Outputs {
     bool material = false;  ///< class id of the first opaque hit
     bool elevation = false; ///< z of the hit (real map units)
     bool depth = false;     ///< distance from the ray's origin
+    bool value = false;     ///< the shown property at the hit (issue 29)
 };
 
 /// \brief Rows [first_row, first_row + rows) of an image, row-major, row 0
@@ -28,6 +29,7 @@ struct Band {
     std::vector<int32_t> material; ///< class id, NULL_CLASS where missed
     std::vector<double> elevation; ///< NaN where missed
     std::vector<double> depth;     ///< NaN where missed
+    std::vector<double> value;     ///< NaN where missed or without a value
     size_t pixels() const { return size_t(rows) * size_t(cols); }
 };
 

@@ -19,6 +19,7 @@ void prepare_band(Band &band, int first_row, int rows, int cols, const Outputs &
     band.material.resize(outputs.material ? n : 0);
     band.elevation.resize(outputs.elevation ? n : 0);
     band.depth.resize(outputs.depth ? n : 0);
+    band.value.resize(outputs.value ? n : 0);
 }
 
 BandFlow::BandFlow(BandWriter &writer, int rows, int cols, int band_rows,

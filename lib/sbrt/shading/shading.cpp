@@ -13,6 +13,7 @@
 #include "shading/drape.hpp"
 #include "util/error.hpp"
 #include "shading/kernel_normals.hpp"
+#include "shading/property_paint.hpp"
 #include "util/parallel.hpp"
 
 namespace sbrt {
@@ -46,7 +47,7 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
         const auto rgb = material_color(model, uint32_t(m));
         base_.emplace_back(rgb[0], rgb[1], rgb[2]);
     }
-    if (shading.drape)
+    if (shading.drape || shading.property) // colours per hit, not per class
         return;
     for (uint32_t m = 0; m < base_.size(); ++m)
         for (int face = int(Face::west); face <= int(Face::top); ++face) {
@@ -79,7 +80,8 @@ std::array<uint8_t, 3> PixelShader::lit(const Hit &hit) const
     glm::dvec3 color(shading.background[0], shading.background[1],
                      shading.background[2]);
     if (hit.is_hit()) {
-        glm::dvec3 surface = base_[hit.material];
+        glm::dvec3 surface =
+            shading.property ? shading.property->color(hit) : base_[hit.material];
         if (shading.drape)
             surface = shading.drape->color(hit, surface);
         const double lambert =
@@ -104,6 +106,12 @@ void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Came
         band.material[i] = hit.is_hit() ? model.materials()[hit.material].id : NULL_CLASS;
     if (!band.elevation.empty())
         band.elevation[i] = hit.is_hit() ? hit.point.z : NAN;
+    if (!band.value.empty()) {
+        double v = NAN;
+        if (!shader.property() || !shader.property()->value(hit, v))
+            v = NAN;
+        band.value[i] = v;
+    }
     if (!band.depth.empty())
         band.depth[i] =
             hit.is_hit()
@@ -129,6 +137,7 @@ Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
     image.material.assign(pixels, NULL_CLASS);
     image.elevation.assign(pixels, NAN);
     image.depth.assign(pixels, NAN);
+    image.value.assign(shading.property ? pixels : 0, NAN);
     const PixelShader shade_pixel(model, shading);
     for_each_row(image.rows, threads, [&](int row) {
         for (int col = 0; col < image.cols; ++col) {
@@ -139,6 +148,9 @@ Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
                 image.elevation[i] = hit.point.z;
                 image.depth[i] = glm::length(
                     hit.point - tracer.frame().unexaggerate(camera.ray(row, col).origin));
+                double v;
+                if (shading.property && shading.property->value(hit, v))
+                    image.value[i] = v;
             }
             const auto rgb = shade_pixel(hit);
             std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + i * 3);

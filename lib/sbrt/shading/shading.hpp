@@ -29,6 +29,8 @@ struct Shading {
     int kernel = 5;      ///< kernel size k (odd, 3..11) of Normals::kernel
     double smooth = 0;   ///< Gaussian sigma of the normals, pixels (0: off)
     const class Drape *drape = nullptr; ///< an image on the terrain, or none
+    /// a property colouring the hits instead of their class, or none
+    const class PropertyPaint *property = nullptr;
 
     /// Direction from azimuth (degrees clockwise from north) and elevation.
     static glm::dvec3 light_from(double azimuth, double elevation);
@@ -41,6 +43,7 @@ struct Image {
     std::vector<int32_t> material;  ///< class id, NULL_CLASS where missed
     std::vector<double> elevation;  ///< z of the hit, NaN where missed
     std::vector<double> depth;      ///< distance from the ray origin, NaN
+    std::vector<double> value;      ///< the shown property, NaN (property only)
 };
 
 
@@ -53,6 +56,8 @@ public:
     /// A pixel's colour: the veil of the translucent strata plus, through
     /// them, the lit colour of the hit (or the background).
     std::array<uint8_t, 3> operator()(const Hit &hit) const;
+    /// The property the shading shows, or null.
+    const class PropertyPaint *property() const { return shading_.property; }
 
 private:
     std::array<uint8_t, 3> lit(const Hit &hit) const;

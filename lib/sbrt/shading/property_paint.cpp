@@ -1,0 +1,121 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Colouring hits by a property
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "shading/property_paint.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/error.hpp"
+
+namespace sbrt {
+
+namespace {
+
+/// The material of voxel `level` of a stack; EMPTY above it.
+uint32_t material_at(const Model &model, uint64_t cell, int64_t level)
+{
+    if (level < 0)
+        return EMPTY;
+    const StackRange range = model.stack(cell);
+    const IntervalArray &intervals = model.intervals();
+    for (uint64_t i = range.begin; i < range.end; ++i) {
+        const Interval iv = intervals[i];
+        if (double(level) < double(iv.top))
+            return iv.material;
+    }
+    return EMPTY;
+}
+
+} // namespace
+
+bool voxel_of_hit(const Model &model, const Hit &hit, HitVoxel &voxel)
+{
+    if (!hit.is_hit())
+        return false;
+    const Frame &f = model.frame();
+    const double u = (hit.point.x - f.west) / f.ew_res();
+    const double v = (f.north - hit.point.y) / f.ns_res(); // rows from the north
+    const double z = f.local_z(hit.point.z);
+    int64_t col = int64_t(std::floor(u)), row = int64_t(std::floor(v));
+    int64_t level = int64_t(std::floor(z));
+    switch (hit.face) { // a wall is the face of the cell the ray enters
+    case Face::west:
+        col = std::lround(u);
+        break;
+    case Face::east:
+        col = std::lround(u) - 1;
+        break;
+    case Face::north:
+        row = std::lround(v);
+        break;
+    case Face::south:
+        row = std::lround(v) - 1;
+        break;
+    case Face::top:
+        level = std::lround(z) - 1;
+        break;
+    case Face::bottom:
+        level = std::lround(z);
+        break;
+    default:
+        break;
+    }
+    if (row < 0 || row >= f.rows || col < 0 || col >= f.cols)
+        return false;
+    const uint64_t cell = model.cell_index(int(row), int(col));
+    // a height on an interval's end: the voxel of the hit's interval
+    if (material_at(model, cell, level) != hit.material) {
+        if (material_at(model, cell, level - 1) == hit.material)
+            --level;
+        else if (material_at(model, cell, level + 1) == hit.material)
+            ++level;
+        else
+            return false;
+    }
+    if (level < 0 || level >= f.depths)
+        return false;
+    voxel = {cell, uint32_t(level)};
+    return true;
+}
+
+PropertyPaint::PropertyPaint(const Model &model,
+                             std::shared_ptr<const PropertyChannels> channels,
+                             std::vector<size_t> summed, ColorRamp ramp,
+                             std::array<uint8_t, 3> no_value)
+    : model_(model), channels_(std::move(channels)), summed_(std::move(summed)),
+      ramp_(std::move(ramp)), no_value_(no_value[0], no_value[1], no_value[2])
+{
+    if (!channels_ || summed_.empty())
+        fail("a property view without channels");
+    for (size_t c : summed_)
+        if (c >= channels_->size())
+            fail("a property view of channel ", c, " of ", channels_->size());
+}
+
+bool PropertyPaint::value(const Hit &hit, double &out) const
+{
+    HitVoxel voxel;
+    if (!voxel_of_hit(model_, hit, voxel))
+        return false;
+    double sum = 0;
+    for (size_t c : summed_) {
+        float raw;
+        const ChannelInfo &info = channels_->info(c);
+        if (!channels_->value(c, voxel.cell, voxel.level, raw) || info.is_fill(raw))
+            return false;
+        sum += info.physical(raw);
+    }
+    out = sum;
+    return true;
+}
+
+glm::dvec3 PropertyPaint::color(const Hit &hit) const
+{
+    double v;
+    return value(hit, v) ? ramp_.at(v) : no_value_;
+}
+
+} // namespace sbrt

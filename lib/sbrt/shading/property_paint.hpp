@@ -1,0 +1,64 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Colouring hits by a property (issue 29): the value of a
+ *            channel, or the sum of several, at the voxel a ray hits,
+ *            through a colour ramp
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_PROPERTY_PAINT_HPP
+#define SBRT_PROPERTY_PAINT_HPP
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "format/channels_file.hpp"
+#include "shading/color_ramp.hpp"
+#include "tracing/tracer.hpp"
+
+namespace sbrt {
+
+/// \brief The voxel of a model a hit lies on.
+struct HitVoxel {
+    uint64_t cell = 0;
+    uint32_t level = 0;
+};
+
+/// The voxel of `model` (as read: the one the channels belong to) that
+/// `hit` lies on: the cell whose face or inside it is (a wall between two
+/// cells belongs to the cell the ray enters), the level of the hit's
+/// interval at the hit's height (a top face is its voxel below, a bottom
+/// face its voxel above). False where the hit is no hit of the model.
+bool voxel_of_hit(const Model &model, const Hit &hit, HitVoxel &voxel);
+
+/// \brief A property shown on the model's hits.
+class PropertyPaint {
+public:
+    /// `model` as read (before strata are hidden), its `channels`, the
+    /// channels to add (their values as meant: stored * scale + offset),
+    /// the ramp, and the colour of hits without a value (outside the
+    /// channels' spans or a fill in any of them).
+    PropertyPaint(const Model &model, std::shared_ptr<const PropertyChannels> channels,
+                  std::vector<size_t> summed, ColorRamp ramp,
+                  std::array<uint8_t, 3> no_value = {190, 190, 190});
+
+    /// The property at `hit`; false where it has none.
+    bool value(const Hit &hit, double &out) const;
+    /// The surface colour of `hit` (0..255) before lighting.
+    glm::dvec3 color(const Hit &hit) const;
+
+    const ColorRamp &ramp() const { return ramp_; }
+    const PropertyChannels &channels() const { return *channels_; }
+    const std::vector<size_t> &summed() const { return summed_; }
+
+private:
+    const Model &model_;
+    std::shared_ptr<const PropertyChannels> channels_;
+    std::vector<size_t> summed_;
+    ColorRamp ramp_;
+    glm::dvec3 no_value_;
+};
+
+} // namespace sbrt
+
+#endif

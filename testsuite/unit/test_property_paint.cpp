@@ -1,0 +1,208 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   Rendering by property (issue 29): the value the CPU path
+ *            shows at a hit equals the source value of the first solid
+ *            voxel an independent voxel walk finds, for random rays, with
+ *            strata hidden and summed channels; the colour is the ramp's,
+ *            lit as a class colour would be
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cmath>
+#include <random>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "format/mapped_file.hpp"
+#include "scene/hidden_materials.hpp"
+#include "shading/property_paint.hpp"
+#include "test_support.hpp"
+#include "util/error.hpp"
+
+using namespace sbrt;
+
+namespace {
+
+constexpr float FILL = -127;
+
+struct PropertyFixture {
+    sbrt_test::Voxels voxels;
+    Model model;
+    sbrt_test::Source source;
+    std::shared_ptr<const PropertyChannels> channels;
+};
+
+/// Unit cells (map frame = voxel frame), two channels: a percentage with
+/// fills, and a second one to add to it.
+PropertyFixture fixture(unsigned seed, const std::string &dir)
+{
+    PropertyFixture fx;
+    fx.voxels = sbrt_test::random_voxels(seed, 9 + seed % 5, 7 + seed % 4, 12 + seed % 9, 6);
+    Frame &f = fx.voxels.frame;
+    f.west = 0;
+    f.east = f.cols;
+    f.south = 0;
+    f.north = f.rows;
+    f.bottom = 0;
+    f.top = f.depths;
+    fx.model = sbrt_test::build_model(fx.voxels);
+    std::mt19937 rng(seed);
+    fx.source.assign(2, std::vector<float>(f.voxels()));
+    for (size_t i = 0; i < f.voxels(); ++i) {
+        fx.source[0][i] = rng() % 13 == 0 ? FILL : float(rng() % 101);
+        fx.source[1][i] = float(rng() % 50);
+    }
+    ChannelInfo a, b;
+    a.name = "kans_5";
+    a.has_fill = true;
+    a.fill = FILL;
+    b.name = "kans_6";
+    b.scale = 2; // meant: stored * 2
+    const std::string path = dir + "/channels" + std::to_string(seed);
+    sbrt_test::write_channels(path, fx.model, fx.source, {a, b}, 4);
+    fx.channels = std::make_shared<const PropertyChannels>(
+        std::make_shared<const MappedFile>(path), path, fx.model);
+    return fx;
+}
+
+ColorRamp grey_ramp() { return ColorRamp::through({{0, 0, 0}, {250, 250, 250}}, 0, 250); }
+
+/// Source value of the voxel (column x, row from the south y, level z).
+float at(const PropertyFixture &fx, size_t channel, int x, int y, int z)
+{
+    const Frame &f = fx.voxels.frame;
+    const size_t cell = size_t(f.rows - 1 - y) * size_t(f.cols) + size_t(x);
+    return fx.source[channel][size_t(z) * f.cells() + cell];
+}
+
+} // namespace
+
+TEST(PropertyPaint, ValueAtHitIsTheFirstSolidVoxelsValue)
+{
+    const std::string dir = sbrt_test::temp_dir("property_paint");
+    int rays = 0, agree = 0, valued = 0;
+    for (unsigned seed = 1; seed <= 8; ++seed) {
+        const PropertyFixture fx = fixture(seed, dir);
+        const Tracer tracer(fx.model, 1.0);
+        const PropertyPaint single(fx.model, fx.channels, {0}, grey_ramp());
+        const PropertyPaint sum(fx.model, fx.channels, {0, 1}, grey_ramp());
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> u(-1, 1);
+        const Frame &f = fx.voxels.frame;
+        for (int k = 0; k < 2000; ++k) {
+            const glm::dvec3 target(f.cols * (0.5 + 0.5 * u(rng)), f.rows * (0.5 + 0.5 * u(rng)),
+                                    f.depths * (0.5 + 0.5 * u(rng)));
+            const glm::dvec3 dir_ = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
+            const glm::dvec3 origin = target - dir_ * 60.0;
+            const Hit hit = tracer.trace({origin, dir_});
+            const sbrt_test::VoxelHit want = sbrt_test::march(fx.voxels, origin, dir_);
+            if (!want.hit)
+                continue;
+            ++rays;
+            const float a = at(fx, 0, want.x, want.y, want.z);
+            const float b = at(fx, 1, want.x, want.y, want.z);
+            double got_single = NAN, got_sum = NAN;
+            const bool has_single = single.value(hit, got_single);
+            const bool has_sum = sum.value(hit, got_sum);
+            const bool same = a == FILL ? !has_single && !has_sum
+                                        : has_single && got_single == a && has_sum &&
+                                              got_sum == a + 2.0 * b;
+            agree += same;
+            valued += a != FILL;
+        }
+    }
+    EXPECT_GT(valued, rays / 2);
+    // disagreement only where a ray passes exactly through an edge
+    EXPECT_GE(agree, rays - rays / 1000) << agree << " of " << rays;
+}
+
+TEST(PropertyPaint, HiddenStrataShowTheValuesBehindThem)
+{
+    const std::string dir = sbrt_test::temp_dir("property_hidden");
+    int rays = 0, agree = 0;
+    for (unsigned seed = 3; seed <= 6; ++seed) {
+        PropertyFixture fx = fixture(seed, dir);
+        // material 1 and 2 hidden: the tracer sees the prepared model, the
+        // channels stay with the model as read
+        const Model prepared = hide_materials(fx.model, {1, 2});
+        const Tracer tracer(prepared, 1.0);
+        const PropertyPaint paint(fx.model, fx.channels, {0}, grey_ramp());
+        sbrt_test::Voxels shown = fx.voxels;
+        const int32_t hidden_a = fx.model.materials()[1].id, hidden_b = fx.model.materials()[2].id;
+        for (int32_t &id : shown.classes)
+            if (id == hidden_a || id == hidden_b)
+                id = NULL_CLASS;
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> u(-1, 1);
+        const Frame &f = fx.voxels.frame;
+        for (int k = 0; k < 1500; ++k) {
+            const glm::dvec3 target(f.cols * (0.5 + 0.5 * u(rng)), f.rows * (0.5 + 0.5 * u(rng)),
+                                    f.depths * (0.5 + 0.5 * u(rng)));
+            const glm::dvec3 d = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
+            const Hit hit = tracer.trace({target - d * 60.0, d});
+            const sbrt_test::VoxelHit want = sbrt_test::march(shown, target - d * 60.0, d);
+            if (!want.hit)
+                continue;
+            ++rays;
+            const float a = at(fx, 0, want.x, want.y, want.z);
+            double got = NAN;
+            const bool has = paint.value(hit, got);
+            agree += a == FILL ? !has : has && got == a;
+        }
+    }
+    EXPECT_GT(rays, 1000);
+    EXPECT_GE(agree, rays - rays / 1000) << agree << " of " << rays;
+}
+
+TEST(PropertyPaint, TopViewColoursAreTheRampsLit)
+{
+    const std::string dir = sbrt_test::temp_dir("property_top");
+    const PropertyFixture fx = fixture(5, dir);
+    const Tracer tracer(fx.model, 1.0);
+    const PropertyPaint paint(fx.model, fx.channels, {0}, grey_ramp());
+    Shading shading;
+    shading.property = &paint;
+    const Frame &f = fx.voxels.frame;
+    const Camera camera = sbrt_test::top_camera(f, f.top + 10);
+    const Image image = shade(tracer, camera, trace_image(tracer, camera, 2), shading, 2);
+    ASSERT_EQ(image.value.size(), size_t(f.rows) * size_t(f.cols));
+    const double light = shading.ambient + (1 - shading.ambient) *
+                                               glm::dot(shading.light, glm::dvec3(0, 0, 1));
+    int checked = 0;
+    for (int row = 0; row < f.rows; ++row)
+        for (int col = 0; col < f.cols; ++col) {
+            const size_t i = size_t(row) * size_t(f.cols) + size_t(col);
+            // the topmost solid voxel of the column
+            int top = -1;
+            for (int z = f.depths - 1; z >= 0 && top < 0; --z)
+                if (fx.voxels.classes[(size_t(z) * f.rows + row) * f.cols + col] != NULL_CLASS)
+                    top = z;
+            if (top < 0) {
+                EXPECT_TRUE(std::isnan(image.value[i]));
+                continue;
+            }
+            const float v = at(fx, 0, col, f.rows - 1 - row, top);
+            if (v == FILL) {
+                EXPECT_TRUE(std::isnan(image.value[i]));
+                EXPECT_EQ(image.rgb[i * 3], uint8_t(std::lround(190 * light)));
+                continue;
+            }
+            EXPECT_EQ(image.value[i], v);
+            EXPECT_EQ(image.rgb[i * 3], uint8_t(std::lround(v * light))) << v;
+            ++checked;
+        }
+    EXPECT_GT(checked, f.rows * f.cols / 2);
+}
+
+TEST(ColorRamp, InterpolatesBetweenRulesAndClampsOutside)
+{
+    const ColorRamp ramp({{{0, {0, 0, 0}}, {10, {100, 200, 50}}},
+                          {{10, {0, 0, 255}}, {20, {255, 255, 255}}}});
+    EXPECT_EQ(ramp.rgb_at(-5), (std::array<uint8_t, 3>{0, 0, 0}));
+    EXPECT_EQ(ramp.rgb_at(5), (std::array<uint8_t, 3>{50, 100, 25}));
+    EXPECT_EQ(ramp.rgb_at(15), (std::array<uint8_t, 3>{128, 128, 255}));
+    EXPECT_EQ(ramp.rgb_at(25), (std::array<uint8_t, 3>{255, 255, 255}));
+    EXPECT_EQ(ramp.low(), 0);
+    EXPECT_EQ(ramp.high(), 20);
+    EXPECT_THROW(ColorRamp(std::vector<ColorRamp::Rule>{}), Error);
+}
