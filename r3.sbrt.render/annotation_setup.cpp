@@ -41,7 +41,8 @@ std::optional<glm::dvec2> north_on_image(const sbrt::CoordinateFrame &frame,
 PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model &model,
                                 const sbrt::CoordinateFrame &frame,
                                 const sbrt::Camera &camera,
-                                const struct Cell_head &region)
+                                const struct Cell_head &region,
+                                const sbrt::PropertyPaint *property)
 {
     PngAnnotations a;
     // a tile's PNG is plain: tiles mosaic to the whole image
@@ -49,10 +50,28 @@ PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model 
         return a;
     const std::string input = request.input;
     a.title = input.substr(0, input.find('@'));
-    for (size_t i = 1; i < model.materials().size(); ++i) {
-        const sbrt::Material &m = model.materials()[i];
-        a.classes.push_back({m.id, m.label, sbrt::material_color(model, uint32_t(i))});
+    if (property) { // a colour bar of the property instead of the classes
+        ColorBar bar;
+        bar.name = request.property_title();
+        const std::vector<size_t> &summed = property->summed();
+        const sbrt::ChannelInfo &first = property->channels().info(summed[0]);
+        if (summed.size() == 1)
+            bar.long_name = first.long_name;
+        else
+            bar.long_name = "sum of " + std::to_string(summed.size()) + " channels";
+        bar.unit = first.unit;
+        const sbrt::ColorRamp &ramp = property->ramp();
+        bar.low = ramp.low();
+        bar.high = ramp.high();
+        for (int k = 0; k < 256; ++k)
+            bar.colors.push_back(ramp.rgb_at(bar.low + (bar.high - bar.low) * k / 255.0));
+        a.bar = bar;
     }
+    else
+        for (size_t i = 1; i < model.materials().size(); ++i) {
+            const sbrt::Material &m = model.materials()[i];
+            a.classes.push_back({m.id, m.label, sbrt::material_color(model, uint32_t(i))});
+        }
     a.north = north_on_image(frame, camera);
     if (request.view.kind != sbrt::ViewKind::top) {
         a.zexag = request.zexag;

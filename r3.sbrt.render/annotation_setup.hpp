@@ -11,6 +11,7 @@
 #include "png_annotations.hpp"
 #include "render_options.hpp"
 #include "frame/coordinate_frame.hpp"
+#include "shading/property_paint.hpp"
 
 /// The legend (every class of the prepared model; the PNG keeps those the
 /// image shows), the north arrow where north points on the image, the
@@ -19,6 +20,7 @@
 PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model &model,
                                 const sbrt::CoordinateFrame &frame,
                                 const sbrt::Camera &camera,
-                                const struct Cell_head &region);
+                                const struct Cell_head &region,
+                                const sbrt::PropertyPaint *property = nullptr);
 
 #endif

@@ -124,6 +124,10 @@ Backend::Backend(const RenderRequest &request, const sbrt::Renderer &renderer,
 void Backend::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
                      const sbrt::BandSink &sink)
 {
+    if (context_ && !tried_gpu_ && renderer_.shading().property) {
+        tried_gpu_ = true; // the GPU has no property channels yet
+        G_verbose_message(_("property= is traced on the CPU"));
+    }
     if (context_ && !tried_gpu_) {
         tried_gpu_ = true;
         try {

@@ -119,7 +119,7 @@ RenderRequest frame_request(const RenderRequest &request, int frame)
     if (request.frames == 1)
         return request;
     RenderRequest r = request;
-    for (std::string *name : {&r.output, &r.material, &r.hit_elevation, &r.depth})
+    for (std::string *name : {&r.output, &r.material, &r.hit_elevation, &r.depth, &r.value})
         if (!name->empty())
             *name = numbered(*name, frame);
     if (!r.png.empty())
@@ -135,7 +135,8 @@ void check_png_pattern(const std::string &png)
 
 bool frame_finished(const RenderRequest &frame)
 {
-    std::vector<std::string> maps = {frame.material, frame.hit_elevation, frame.depth};
+    std::vector<std::string> maps = {frame.material, frame.hit_elevation, frame.depth,
+                                     frame.value};
     if (!frame.output.empty())
         for (const char *suffix : {"", ".red", ".green", ".blue"})
             maps.push_back(frame.output + suffix);

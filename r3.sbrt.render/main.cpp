@@ -36,9 +36,9 @@ void render_frame(const RenderRequest &request, RenderSession &session,
         window = tile_window(window, *request.tile);
     ImageMaps maps(request, window,
                    make_annotations(request, session.renderer().model(), session.frame(),
-                                    camera, region));
+                                    camera, region, session.property()));
     session.render(camera, maps.outputs(), [&](const sbrt::Band &band) { maps.write(band); });
-    maps.close(session.renderer().model());
+    maps.close(session.renderer().model(), session.property());
 }
 
 void run(const RenderRequest &asked)

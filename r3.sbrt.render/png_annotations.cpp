@@ -196,7 +196,15 @@ struct Panel {
             more = this->shown.size() - size_t(lines - 2);
             this->shown.resize(size_t(lines - 2));
         }
-        double w = std::max({text_width(cr, zexag),
+        if (a.bar) { // title, long name, unit, then the bar and its ends
+        bar_lines = 3;
+        bar_height = std::max(0.0, std::min(220 * l.scale, rows - bottom_height -
+                                                               (bar_lines + 2) * l.line -
+                                                               3 * l.pad));
+        if (bar_height < 2 * l.line)
+            bar_height = 0;
+    }
+    double w = std::max({text_width(cr, zexag),
                              text_width(cr, "0 - " + scale_text), scale_length,
                              l.arrow + 2 * l.font});
         for (const LegendClass *c : this->shown)
@@ -205,13 +213,37 @@ struct Panel {
             w = std::max(w, text_width(cr, more_text()));
         cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                                CAIRO_FONT_WEIGHT_BOLD);
-        if (!this->shown.empty())
+        if (!this->shown.empty() || a.bar)
             w = std::max(w, text_width(cr, a.title));
+        if (a.bar) {
+            cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                                   CAIRO_FONT_WEIGHT_NORMAL);
+            w = std::max({w, text_width(cr, bar_heading(*a.bar)), text_width(cr, bar_unit(*a.bar)),
+                          2 * l.font + l.pad + text_width(cr, value_text(a.bar->high)),
+                          2 * l.font + l.pad + text_width(cr, value_text(a.bar->low)),
+                          l.font + l.pad + text_width(cr, "no value")});
+        }
         cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                                CAIRO_FONT_WEIGHT_NORMAL);
         width = int(std::ceil(w + 2 * l.pad));
     }
     std::string more_text() const { return "+ " + std::to_string(more) + " more"; }
+    static std::string bar_heading(const ColorBar &b)
+    {
+        return b.long_name.empty() ? b.name : b.long_name + " (" + b.name + ")";
+    }
+    static std::string bar_unit(const ColorBar &b)
+    {
+        return b.unit.empty() ? "" : "[" + b.unit + "]";
+    }
+    static std::string value_text(double v)
+    {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4g", v);
+        return text;
+    }
+    int bar_lines = 0;
+    double bar_height = 0;
 
     std::vector<const LegendClass *> shown;
     size_t more = 0;
@@ -219,6 +251,62 @@ struct Panel {
     double scale_length = 0, bottom_height = 0;
     int width = 0;
 };
+
+/// A property's legend below the title at baseline `y`: its name and unit,
+/// a vertical bar (high at the top) with its ends' values, and the colour
+/// of hits without a value.
+void draw_color_bar(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Panel &p,
+                    double x, double y)
+{
+    const ColorBar &b = *a.bar;
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                           CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_move_to(cr, x, y);
+    cairo_show_text(cr, a.title.c_str());
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                           CAIRO_FONT_WEIGHT_NORMAL);
+    y += l.line;
+    cairo_move_to(cr, x, y);
+    cairo_show_text(cr, Panel::bar_heading(b).c_str());
+    if (!b.unit.empty()) {
+        y += l.line;
+        cairo_move_to(cr, x, y);
+        cairo_show_text(cr, Panel::bar_unit(b).c_str());
+    }
+    if (p.bar_height <= 0 || b.colors.empty())
+        return;
+    const double top = std::round(y + l.pad), width = std::round(1.5 * l.font);
+    const int height = int(p.bar_height);
+    for (int r = 0; r < height; ++r) { // row r from the top: high to low
+        const double f = height > 1 ? 1 - double(r) / (height - 1) : 0;
+        const auto &c = b.colors[size_t(std::lround(f * double(b.colors.size() - 1)))];
+        cairo_set_source_rgb(cr, c[0] / 255.0, c[1] / 255.0, c[2] / 255.0);
+        cairo_rectangle(cr, std::round(x), top + r, width, 1);
+        cairo_fill(cr);
+    }
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_set_line_width(cr, 1);
+    cairo_rectangle(cr, std::round(x) + 0.5, top + 0.5, width - 1, height - 1);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_move_to(cr, x + width + l.pad, top + 0.8 * l.font);
+    cairo_show_text(cr, Panel::value_text(b.high).c_str());
+    cairo_move_to(cr, x + width + l.pad, top + height);
+    cairo_show_text(cr, Panel::value_text(b.low).c_str());
+    // no value
+    const double swatch = std::round(l.font), row = top + height + l.line;
+    cairo_rectangle(cr, std::round(x) + 0.5, std::round(row - 0.9 * l.font) + 0.5, swatch,
+                    swatch);
+    cairo_set_source_rgb(cr, b.no_value[0] / 255.0, b.no_value[1] / 255.0,
+                         b.no_value[2] / 255.0);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_move_to(cr, x + l.font + l.pad, row);
+    cairo_show_text(cr, "no value");
+}
 
 void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Panel &p,
                 int rows)
@@ -262,6 +350,8 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
         cairo_move_to(cr, x, y);
         cairo_show_text(cr, p.more_text().c_str());
     }
+    if (a.bar)
+        draw_color_bar(cr, l, a, p, x, y);
 
     // from the bottom up: scale bar, exaggeration, north arrow
     double bottom = rows - l.pad;

@@ -27,17 +27,27 @@ struct LegendClass {
     std::array<uint8_t, 3> color;
 };
 
+/// \brief The legend of a property view: a colour bar.
+struct ColorBar {
+    std::string name, long_name, unit; ///< of the property shown
+    double low = 0, high = 1;          ///< the bar's ends
+    /// colours from low to high, evenly spaced (the bar's pixels sample it)
+    std::vector<std::array<uint8_t, 3>> colors;
+    std::array<uint8_t, 3> no_value{190, 190, 190};
+};
+
 /// \brief What the PNG is annotated with; all empty: a plain image.
 struct PngAnnotations {
     std::string title;                 ///< heads the legend (the SBRT's name)
     std::vector<LegendClass> classes;  ///< those the image can show, in order
+    std::optional<ColorBar> bar;       ///< a property view's legend, instead
     std::optional<glm::dvec2> north;   ///< image direction (x right, y down)
     std::optional<double> zexag;       ///< shown for 3D views
     std::optional<double> metres_per_pixel; ///< top views: a scale bar
     bool scale_in_metres = true; ///< false: map units of an XY location
     bool empty() const
     {
-        return classes.empty() && !north && !zexag && !metres_per_pixel;
+        return classes.empty() && !bar && !north && !zexag && !metres_per_pixel;
     }
 };
 

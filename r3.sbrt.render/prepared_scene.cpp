@@ -53,7 +53,8 @@ PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
     return prepared;
 }
 
-sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drape)
+sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drape,
+                           const sbrt::PropertyPaint *property)
 {
     sbrt::Shading shading;
     shading.light = sbrt::Shading::light_from(request.light_azimuth,
@@ -64,5 +65,6 @@ sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drap
     shading.kernel = request.kernel;
     shading.smooth = request.smooth;
     shading.drape = drape;
+    shading.property = property;
     return shading;
 }

@@ -11,6 +11,7 @@
 
 #include "scene/camera.hpp"
 #include "shading/drape.hpp"
+#include "shading/property_paint.hpp"
 #include "model/model.hpp"
 #include "render_options.hpp"
 #include "scene/scene.hpp"
@@ -28,6 +29,8 @@ PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
                             const sbrt::Camera &camera);
 
 /// The shading of the request; `drape` (or null) outlives it.
-sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drape);
+/// `property` (or null) too.
+sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drape,
+                           const sbrt::PropertyPaint *property = nullptr);
 
 #endif

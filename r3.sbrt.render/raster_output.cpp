@@ -79,6 +79,8 @@ ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &windo
         elevation_.push_back(open(request.hit_elevation, DCELL_TYPE));
     if (!request.depth.empty())
         depth_.push_back(open(request.depth, DCELL_TYPE));
+    if (!request.value.empty())
+        value_.push_back(open(request.value, DCELL_TYPE));
     if (!request.png.empty())
         png_ = std::make_unique<AnnotatedPng>(request.png, window.rows, cols_,
                                               std::move(annotations));
@@ -92,7 +94,8 @@ ImageMaps::Map ImageMaps::open(const std::string &name, RASTER_MAP_TYPE type)
 sbrt::Outputs ImageMaps::outputs() const
 {
     const bool legend = png_ && png_->needs_classes();
-    return {!material_.empty() || legend, !elevation_.empty(), !depth_.empty()};
+    return {!material_.empty() || legend, !elevation_.empty(), !depth_.empty(),
+            !value_.empty()};
 }
 
 void ImageMaps::write(const sbrt::Band &band)
@@ -119,7 +122,8 @@ void ImageMaps::write(const sbrt::Band &band)
             Rast_put_c_row(material_[0].fd, cells_.data());
         }
         for (const auto &[maps, values] : {std::pair{&elevation_, &band.elevation},
-                                          std::pair{&depth_, &band.depth}}) {
+                                          std::pair{&depth_, &band.depth},
+                                          std::pair{&value_, &band.value}}) {
             if (maps->empty())
                 continue;
             const double *v = values->data() + row;
@@ -136,7 +140,7 @@ void ImageMaps::write(const sbrt::Band &band)
         png_->write(band);
 }
 
-void ImageMaps::close(const sbrt::Model &model)
+void ImageMaps::close(const sbrt::Model &model, const sbrt::PropertyPaint *property)
 {
     if (composite_) {
         if (!composite_->close())
@@ -175,4 +179,24 @@ void ImageMaps::close(const sbrt::Model &model)
             Rast_close(map.fd);
             write_history(map.name, request_);
         }
+    for (const Map &map : value_) {
+        Rast_close(map.fd);
+        write_history(map.name, request_);
+        if (!property)
+            continue;
+        // the colours of the image, the channel's unit and name
+        struct Colors colors;
+        Rast_init_colors(&colors);
+        for (const sbrt::ColorRamp::Rule &rule : property->ramp().rules())
+            Rast_add_d_color_rule(&rule.low.value, rule.low.rgb[0], rule.low.rgb[1],
+                                  rule.low.rgb[2], &rule.high.value, rule.high.rgb[0],
+                                  rule.high.rgb[1], rule.high.rgb[2], &colors);
+        Rast_write_colors(map.name.c_str(), G_mapset(), &colors);
+        Rast_free_colors(&colors);
+        const sbrt::ChannelInfo &first = property->channels().info(property->summed()[0]);
+        if (!first.unit.empty())
+            Rast_write_units(map.name.c_str(), first.unit.c_str());
+        const std::string title = "property " + request_.property_title();
+        Rast_put_cell_title(map.name.c_str(), title.c_str());
+    }
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "output/band.hpp"
+#include "shading/property_paint.hpp"
 #include "model/model.hpp"
 #include "png_annotations.hpp"
 #include "render_options.hpp"
@@ -44,7 +45,7 @@ public:
     void write(const sbrt::Band &band);
     /// Closes the maps with their colours, categories (classes of `model`)
     /// and history; moves the PNG into place.
-    void close(const sbrt::Model &model);
+    void close(const sbrt::Model &model, const sbrt::PropertyPaint *property = nullptr);
 
 private:
     struct Map {
@@ -58,7 +59,7 @@ private:
     int cols_;
     std::unique_ptr<RgbComposite> composite_;
     std::vector<Map> rgb_;
-    std::vector<Map> material_, elevation_, depth_; ///< empty or one map
+    std::vector<Map> material_, elevation_, depth_, value_; ///< empty or one map
     std::vector<CELL> cells_;
     std::vector<DCELL> dcells_;
     std::unique_ptr<AnnotatedPng> png_;

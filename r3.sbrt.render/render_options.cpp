@@ -216,6 +216,21 @@ RenderOptions define_render_options()
                               _("Drape"), "1");
     o->texture_blend->options = "0-1";
 
+    o->property = define("property", TYPE_STRING,
+                         _("Channels joined by + are added, e.g. kans_5+kans_6+kans_7 "
+                           "(the probability of a group of classes)"),
+                         _("Property"));
+    o->property->label = _("Property channel to colour the model by (see r3.sbrt.convert -p)");
+    o->property->key_desc = "name[+name...]";
+    o->property_color = define("property_color", TYPE_STRING,
+                               _("GRASS colour table (e.g. viridis, magma, bcyr) or a "
+                                 "rules file (value red:green:blue lines, % allowed)"),
+                               _("Property"), "viridis");
+    o->property_color->key_desc = "table|file";
+    o->value = define_map_output(
+        "value", _("Raster map of the property at the first hit (with property=)"));
+    o->value->guisection = _("Property");
+
     o->backend = define_choice(
         "backend", _("Renderer"), _("Settings"), "auto", "auto,egl,osmesa,cpu",
         _("auto;GPU through EGL, else OSMesa, else (or where the only "
@@ -240,7 +255,7 @@ RenderOptions define_render_options()
 
     define_animation_options(options);
 
-    G_option_required(o->output, o->png, NULL);
+    G_option_required(o->output, o->png, o->value, NULL);
     G_option_requires(o->strds, o->output, NULL);
     G_option_exclusive(o->color, o->rules, NULL);
     G_option_requires(o->boreholes_only, o->boreholes, NULL);
@@ -273,6 +288,24 @@ RenderRequest read_render_options(const RenderOptions &options)
     r.material = answer_or(o->material);
     r.hit_elevation = answer_or(o->hit_elevation);
     r.depth = answer_or(o->depth);
+    r.value = answer_or(o->value);
+    const std::string property = answer_or(o->property);
+    for (size_t from = 0; !property.empty() && from <= property.size();) {
+        const size_t plus = std::min(property.find('+', from), property.size());
+        const std::string name = property.substr(from, plus - from);
+        from = plus + 1;
+        if (name.empty())
+            bad_request(_("property=%s: give channel names joined by +, e.g. "
+                          "kans_5+kans_6"),
+                        answer_or(o->property).c_str());
+        r.property.push_back(name);
+    }
+    r.property_color = answer_or(o->property_color);
+    if (r.property_color.empty())
+        r.property_color = "viridis";
+    if (!r.value.empty() && r.property.empty())
+        bad_request(_("value=%s needs property= (the channel whose value it holds)"),
+                    r.value.c_str());
     r.png = answer_or(o->png);
     r.annotate = !o->plain_png->answer;
     sbrt::View &v = r.view;

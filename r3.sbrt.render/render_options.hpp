@@ -23,6 +23,9 @@
 /// \brief Everything the user asked for, validated, map units.
 struct RenderRequest {
     std::string input, output, material, hit_elevation, depth, png;
+    std::string value;                       ///< value=: the property at the hit
+    std::vector<std::string> property;       ///< channels to show, summed
+    std::string property_color = "viridis";  ///< colour table or rules file
     bool annotate = true;  ///< the PNG's legend, north arrow, scale bar (not -n)
     std::optional<std::array<int, 4>> tile; ///< row, col, rows, cols of the image
     int width = 640, height = 480; ///< size=: perspective and orthographic
@@ -62,6 +65,15 @@ struct RenderRequest {
     std::string strds, video;                ///< outputs of the whole sequence
     double fps = 12;
     bool overwrite = false;                  ///< --overwrite: redo finished frames
+
+    /// property= as given ("kans_5+kans_6").
+    std::string property_title() const
+    {
+        std::string title;
+        for (const std::string &name : property)
+            title += (title.empty() ? "" : "+") + name;
+        return title;
+    }
 };
 
 /// \brief The parser's options and flags of the module.
@@ -77,6 +89,7 @@ struct RenderOptions {
         *log_class, *log_reference;
     Flag *boreholes_only, *split_logs;
     Option *texture, *texture_blend;
+    Option *property, *property_color, *value;
     Option *backend, *gpu_layout, *nprocs;
     Option *frames, *path, *angle, *path_map, *height, *keys, *range, *strds, *video,
         *fps;

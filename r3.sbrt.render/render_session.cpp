@@ -12,6 +12,8 @@
 #include "material_colors.hpp"
 #include "model_reading.hpp"
 #include "prepared_scene.hpp"
+#include "property_colors.hpp"
+#include "sbrt_store.hpp"
 #include "request_error.hpp"
 #include "scene/camera_path.hpp"
 #include "scene_setup.hpp"
@@ -30,6 +32,12 @@ std::string model_key(const RenderRequest &request, const struct Cell_head &regi
         key << '\n' << region.north << ' ' << region.south << ' ' << region.east << ' '
             << region.west;
     return key.str();
+}
+
+/// What the property view depends on (the model's key comes first).
+std::string property_key(const RenderRequest &request)
+{
+    return request.property_title() + '\n' + request.property_color;
 }
 
 /// What the drape depends on.
@@ -76,8 +84,11 @@ void RenderSession::load(const RenderRequest &request, const struct Cell_head &r
     if (!model_ || key != model_key_) {
         drop_scene();
         drape_.reset();
+        property_.reset();
+        channels_.reset();
         frame_.reset();
         drape_key_.clear();
+        property_key_.clear();
         model_key_.clear();
         model_ = std::make_unique<sbrt::Model>(read_model(request, region));
         apply_color_option(request, *model_);
@@ -112,6 +123,22 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
                                                    request.texture_blend);
         drape_key_ = drape;
     }
+    // the property of property=, over the model as read
+    const std::string property = property_key(request);
+    if (property != property_key_) {
+        property_.reset();
+        property_key_.clear();
+        if (!request.property.empty()) {
+            if (!channels_)
+                channels_ = sbrt_grass::read_channels_map(request.input.c_str(), *model_);
+            const std::vector<size_t> summed = property_channels(request, channels_.get());
+            const auto [low, high] = property_range(*channels_, summed);
+            property_ = std::make_unique<sbrt::PropertyPaint>(
+                *model_, channels_, summed,
+                property_ramp(request.property_color, low, high));
+        }
+        property_key_ = property;
+    }
     const std::string key = scene_key(request, camera);
     if (!renderer_ || key != scene_key_) {
         drop_scene();
@@ -145,7 +172,7 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
         scene_key_ = key;
     }
     if (renderer_)
-        renderer_->set_shading(make_shading(request, drape_.get()));
+        renderer_->set_shading(make_shading(request, drape_.get(), property_.get()));
 }
 
 void RenderSession::sweep_to(int k)
@@ -176,7 +203,7 @@ void RenderSession::build_renderer(sbrt::Model model, sbrt::Scene scene)
 {
     renderer_ = std::make_unique<sbrt::Renderer>(
         std::move(model), request_->zexag, std::move(scene),
-        make_shading(*request_, drape_.get()),
+        make_shading(*request_, drape_.get(), property_.get()),
         sbrt::RenderSettings{unsigned(request_->threads), true, 0});
     backend_ = std::make_unique<Backend>(*request_, *renderer_, context_.get());
 }

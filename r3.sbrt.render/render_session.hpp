@@ -20,6 +20,7 @@
 #include "render_options.hpp"
 #include "renderer.hpp"
 #include "shading/drape.hpp"
+#include "shading/property_paint.hpp"
 
 /// \brief The pipeline of a render request, stage by stage: load (the
 /// model as read, its colours), frame (the cameras), prepare (hidden
@@ -56,6 +57,8 @@ public:
                 const sbrt::BandSink &sink);
     /// The prepared model and scene.
     const sbrt::Renderer &renderer() const { return *renderer_; }
+    /// The property shown (property=), or null.
+    const sbrt::PropertyPaint *property() const { return property_.get(); }
 
 private:
     /// Forgets the prepared scene, its renderer and backend.
@@ -67,6 +70,9 @@ private:
     std::optional<sbrt::CoordinateFrame> frame_;
     std::string drape_key_;
     std::unique_ptr<sbrt::Drape> drape_;
+    std::shared_ptr<const sbrt::PropertyChannels> channels_; ///< of the model as read
+    std::string property_key_;
+    std::unique_ptr<sbrt::PropertyPaint> property_;
     std::string context_key_;
     std::unique_ptr<sbrt_gl::GlContext> context_;
     // the prepared scene; the backend refers to the request and renderer

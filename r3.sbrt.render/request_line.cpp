@@ -14,7 +14,7 @@ namespace {
 
 /// Options that name outputs of the command line: a view server's frame
 /// is its reply.
-const char *const OUTPUT_KEYS[] = {"output", "material", "hit_elevation", "depth", "png",
+const char *const OUTPUT_KEYS[] = {"output", "material", "hit_elevation", "depth", "value", "png",
                                    "strds", "video"};
 
 } // namespace

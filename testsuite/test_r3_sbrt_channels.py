@@ -234,6 +234,83 @@ class TestChannels(TestCase, Raster3dCompare):
         self.assertNotEqual(code, 0)
         self.assertIn("has no property channels", err)
 
+    def test_top_view_shows_the_topmost_voxels_value(self):
+        """property= value= on a top view: every cell's value is the channel's
+        at the column's topmost solid voxel (null where that is the fill or
+        the column is empty); the packed channel as meant."""
+        self.runModule("r3.sbrt.convert", flags="s", sbrt="with_channels")
+        self.assertModule("r3.sbrt.render", input="with_channels", view="top",
+                          property="kans_5", value="top_kans", material="top_class",
+                          png=os.path.join(self.tmp, "top.png"))
+        rows = gs.read_command("r.out.ascii", input="top_kans", flags="h",
+                               null_value="*").split("\n")
+        compared = nulls = 0
+        for r in range(NY):
+            cells = rows[r].split()
+            j = NY - 1 - r
+            for i in range(NX):
+                solid = [k for k in range(NZ) if lithok(i, j, k) != FILL]
+                want = "*" if not solid or kans(i, j, max(solid)) == FILL \
+                    else str(kans(i, j, max(solid)))
+                self.assertEqual(cells[i], want, (i, j))
+                compared += 1
+                nulls += want == "*"
+        self.assertEqual(compared, NX * NY)
+        self.assertGreater(nulls, 0)
+        self.assertLess(nulls, compared / 2)
+        # the packed channel as meant, the PNG with its colour bar
+        self.assertModule("r3.sbrt.render", input="with_channels", view="top",
+                          property="kh", value="top_kh")
+        stats = gs.parse_command("r.univar", map="top_kh", flags="g")
+        self.assertAlmostEqual(float(stats["min"]), min(
+            packed(i, j, max(k for k in range(NZ) if lithok(i, j, k) != FILL)) * 0.01 + 5
+            for i in range(NX) for j in range(NY)
+            if any(lithok(i, j, k) != FILL for k in range(NZ))), places=9)
+        self.assertEqual(gs.read_command("r.info", map="top_kans", flags="e")
+                         .count("units"), 1)
+        with open(os.path.join(self.tmp, "top.png"), "rb") as f:
+            header = f.read(24)
+        width = int.from_bytes(header[16:20], "big")
+        self.assertGreater(width, NX)  # the image and its legend panel
+
+    def test_perspective_property_view_and_sum(self):
+        self.assertModule("r3.sbrt.render", input="with_channels", zexag=5,
+                          size=(160, 120), property="porosity", property_color="magma",
+                          value="persp_value", material="persp_class", output="persp")
+        self.runModule("g.region", raster="persp_class")
+        # where a class is hit, a value (porosity has no fill); nowhere else
+        self.runModule("r.mapcalc", overwrite=True,
+                       expression="persp_check = isnull(persp_class) != isnull(persp_value)")
+        self.assertEqual(float(gs.parse_command("r.univar", map="persp_check",
+                                                flags="g")["sum"]), 0)
+        self.assertGreater(int(gs.parse_command("r.univar", map="persp_value",
+                                                flags="g")["n"]), 1000)
+        rules = os.path.join(self.tmp, "rules.txt")
+        with open(rules, "w") as f:
+            f.write("0% 0:0:255\n100% 255:0:0\n")
+        self.assertModule("r3.sbrt.render", input="with_channels", zexag=5,
+                          size=(160, 120), property="kans_5", property_color=rules,
+                          value="rules_value", output="rules_view")
+
+    def test_bad_property_views_are_refused_by_name(self):
+        cases = [
+            (["input=with_channels", "property=nothing"], "no property channel 'nothing'"),
+            (["input=with_channels", "property=kans_5+porosity"], "different units"),
+            (["input=with_channels", "property=kans_5+kans_5"], "twice"),
+            (["input=with_channels", "property=kans_5+"], "joined by +"),
+            (["input=with_channels", "value=v_only"], "needs property="),
+            (["input=with_channels", "property=kans_5", "property_color=no_such_table"],
+             "neither a GRASS colour table"),
+            (["input=classes_for_render", "property=kans_5"], "has no property channels"),
+        ]
+        self.runModule("r3.sbrt.convert", file=self.file, variable="lithok",
+                       output="classes_for_render", preset="none")
+        for args, expected in cases:
+            code, err = error_of("r3.sbrt.render", "output=bad_view", "size=40,30", *args)
+            self.assertNotEqual(code, 0, args)
+            self.assertIn(expected, err, args)
+        self.assertFalse(gs.find_file("bad_view.red", element="cell")["name"])
+
     def test_bad_properties_are_refused_by_name(self):
         code, err = error_of("r3.sbrt.convert", f"file={self.file}", "variable=lithok",
                              "properties=kans_9", "output=bad")
