@@ -227,6 +227,12 @@ RenderOptions define_render_options()
                                  "rules file (value red:green:blue lines, % allowed)"),
                                _("Property"), "viridis");
     o->property_color->key_desc = "table|file";
+    o->select = define("select", TYPE_STRING,
+                       _("Channels (joined by +), an operator (>=, >, <=, <, ==, !=) and a "
+                         "number, e.g. kans_5+kans_6+kans_7>=60: a probability shell"),
+                       _("Property"));
+    o->select->label = _("Draw only the voxels whose property meets this condition");
+    o->select->key_desc = "condition";
     o->value = define_map_output(
         "value", _("Raster map of the property at the first hit (with property=)"));
     o->value->guisection = _("Property");
@@ -301,6 +307,7 @@ RenderRequest read_render_options(const RenderOptions &options)
         r.property.push_back(name);
     }
     r.property_color = answer_or(o->property_color);
+    r.select = answer_or(o->select);
     if (r.property_color.empty())
         r.property_color = "viridis";
     if (!r.value.empty() && r.property.empty())

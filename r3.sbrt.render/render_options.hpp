@@ -26,6 +26,7 @@ struct RenderRequest {
     std::string value;                       ///< value=: the property at the hit
     std::vector<std::string> property;       ///< channels to show, summed
     std::string property_color = "viridis";  ///< colour table or rules file
+    std::string select;                      ///< select=: a condition on channels
     bool annotate = true;  ///< the PNG's legend, north arrow, scale bar (not -n)
     std::optional<std::array<int, 4>> tile; ///< row, col, rows, cols of the image
     int width = 640, height = 480; ///< size=: perspective and orthographic
@@ -89,7 +90,7 @@ struct RenderOptions {
         *log_class, *log_reference;
     Flag *boreholes_only, *split_logs;
     Option *texture, *texture_blend;
-    Option *property, *property_color, *value;
+    Option *property, *property_color, *value, *select;
     Option *backend, *gpu_layout, *nprocs;
     Option *frames, *path, *angle, *path_map, *height, *keys, *range, *strds, *video,
         *fps;

@@ -19,6 +19,7 @@
 #include "scene_setup.hpp"
 #include "skipping_report.hpp"
 #include "texture_input.hpp"
+#include "builders/voxel_selection.hpp"
 #include "tracing/scene_pruning.hpp"
 
 namespace {
@@ -67,6 +68,7 @@ std::string scene_key(const RenderRequest &r, const sbrt::Camera &camera)
     for (const sbrt::ClipPlane &p : clip_planes(r, camera))
         key << "plane " << p.point.x << ' ' << p.point.y << ' ' << p.point.z << ' '
             << p.normal.x << ' ' << p.normal.y << ' ' << p.normal.z << '\n';
+    key << "select " << r.select << '\n';
     key << "fence " << r.fence << "\nboreholes " << r.boreholes << ' ' << r.layer << ' '
         << r.where << ' ' << r.borehole_radius.value_or(-1) << ' ' << r.boreholes_only
         << ' ' << r.log_top << ' ' << r.log_bottom << ' ' << r.log_class << ' '
@@ -85,6 +87,8 @@ void RenderSession::load(const RenderRequest &request, const struct Cell_head &r
         drop_scene();
         drape_.reset();
         property_.reset();
+        selected_.reset();
+        selection_key_.clear();
         channels_.reset();
         frame_.reset();
         drape_key_.clear();
@@ -129,9 +133,7 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
         property_.reset();
         property_key_.clear();
         if (!request.property.empty()) {
-            if (!channels_)
-                channels_ = sbrt_grass::read_channels_map(request.input.c_str(), *model_);
-            const std::vector<size_t> summed = property_channels(request, channels_.get());
+            const std::vector<size_t> summed = property_channels(request, channels(request));
             const auto [low, high] = property_range(*channels_, summed);
             property_ = std::make_unique<sbrt::PropertyPaint>(
                 *model_, channels_, summed,
@@ -139,11 +141,35 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
         }
         property_key_ = property;
     }
+    // select=: only the voxels meeting the condition are solid
+    if (request.select != selection_key_) {
+        drop_scene();
+        selected_.reset();
+        selection_key_.clear();
+        if (!request.select.empty()) {
+            const sbrt::PropertyChannels &all = *channels(request);
+            sbrt::Selection selection;
+            try {
+                selection = sbrt::parse_selection(request.select, all);
+            }
+            catch (const sbrt::Error &e) {
+                bad_request(_("select=%s: %s"), request.select.c_str(), e.what());
+            }
+            selected_ = std::make_unique<sbrt::Model>(
+                sbrt::select_voxels(*model_, all, selection, unsigned(request.threads)));
+            const sbrt::Stats s = selected_->stats();
+            G_verbose_message(_("select=%s: %llu solid intervals of %llu"),
+                              request.select.c_str(), (unsigned long long)s.solid_intervals,
+                              (unsigned long long)model_->stats().solid_intervals);
+        }
+        selection_key_ = request.select;
+    }
     const std::string key = scene_key(request, camera);
     if (!renderer_ || key != scene_key_) {
         drop_scene();
         // hidden strata, planes, boreholes, fence, translucency
-        PreparedScene prepared = prepare_scene(request, *model_, camera);
+        PreparedScene prepared =
+            prepare_scene(request, selected_ ? *selected_ : *model_, camera);
         if (request.backend != context_key_) {
             context_.reset(); // before another on the same display
             context_key_.clear();
@@ -173,6 +199,18 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
     }
     if (renderer_)
         renderer_->set_shading(make_shading(request, drape_.get(), property_.get()));
+}
+
+const sbrt::PropertyChannels *RenderSession::channels(const RenderRequest &request)
+{
+    if (!channels_)
+        channels_ = sbrt_grass::read_channels_map(request.input.c_str(), *model_);
+    if (!channels_)
+        bad_request(_("SBRT <%s> has no property channels: property= and select= need an "
+                      "SBRT imported with properties= (r3.sbrt.convert file=... "
+                      "properties=...)"),
+                    request.input.c_str());
+    return channels_.get();
 }
 
 void RenderSession::sweep_to(int k)

@@ -71,6 +71,11 @@ private:
     std::string drape_key_;
     std::unique_ptr<sbrt::Drape> drape_;
     std::shared_ptr<const sbrt::PropertyChannels> channels_; ///< of the model as read
+    /// select=: the model with only the voxels meeting the condition
+    std::string selection_key_;
+    std::unique_ptr<sbrt::Model> selected_;
+    /// The channels of the model as read (read once; bad_request without).
+    const sbrt::PropertyChannels *channels(const RenderRequest &request);
     std::string property_key_;
     std::unique_ptr<sbrt::PropertyPaint> property_;
     std::string context_key_;

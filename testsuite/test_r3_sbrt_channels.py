@@ -273,6 +273,32 @@ class TestChannels(TestCase, Raster3dCompare):
         width = int.from_bytes(header[16:20], "big")
         self.assertGreater(width, NX)  # the image and its legend panel
 
+    def test_select_keeps_the_voxels_meeting_the_condition(self):
+        """select= on a top view: each cell shows the class (and value) of the
+        topmost voxel whose kans_5 is at least 60 (fills never meet it)."""
+        self.runModule("r3.sbrt.convert", flags="s", sbrt="with_channels")
+        self.assertModule("r3.sbrt.render", input="with_channels", view="top",
+                          select="kans_5>=60", material="shell_class", property="kans_5",
+                          value="shell_value")
+        classes = gs.read_command("r.out.ascii", input="shell_class", flags="h",
+                                  null_value="*").split("\n")
+        values = gs.read_command("r.out.ascii", input="shell_value", flags="h",
+                                 null_value="*").split("\n")
+        shown = 0
+        for r in range(NY):
+            j = NY - 1 - r
+            got_classes, got_values = classes[r].split(), values[r].split()
+            for i in range(NX):
+                meeting = [k for k in range(NZ) if lithok(i, j, k) != FILL
+                           and kans(i, j, k) != FILL and kans(i, j, k) >= 60]
+                top = max(meeting) if meeting else None
+                self.assertEqual(got_classes[i],
+                                 "*" if top is None else str(lithok(i, j, top)), (i, j))
+                self.assertEqual(got_values[i],
+                                 "*" if top is None else str(kans(i, j, top)), (i, j))
+                shown += top is not None
+        self.assertGreater(shown, NX * NY // 4)
+
     def test_perspective_property_view_and_sum(self):
         self.assertModule("r3.sbrt.render", input="with_channels", zexag=5,
                           size=(160, 120), property="porosity", property_color="magma",
@@ -302,6 +328,10 @@ class TestChannels(TestCase, Raster3dCompare):
             (["input=with_channels", "property=kans_5", "property_color=no_such_table"],
              "neither a GRASS colour table"),
             (["input=classes_for_render", "property=kans_5"], "has no property channels"),
+            (["input=classes_for_render", "select=kans_5>=60"], "has no property channels"),
+            (["input=with_channels", "select=kans_5"], "no condition"),
+            (["input=with_channels", "select=kans_9>=1"], "no property channel 'kans_9'"),
+            (["input=with_channels", "select=kans_5>=lots"], "not a number"),
         ]
         self.runModule("r3.sbrt.convert", file=self.file, variable="lithok",
                        output="classes_for_render", preset="none")

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "format/mapped_file.hpp"
+#include "builders/voxel_selection.hpp"
 #include "scene/hidden_materials.hpp"
 #include "shading/property_paint.hpp"
 #include "test_support.hpp"
@@ -205,4 +206,69 @@ TEST(ColorRamp, InterpolatesBetweenRulesAndClampsOutside)
     EXPECT_EQ(ramp.low(), 0);
     EXPECT_EQ(ramp.high(), 20);
     EXPECT_THROW(ColorRamp(std::vector<ColorRamp::Rule>{}), Error);
+}
+
+TEST(VoxelSelection, KeepsExactlyTheVoxelsMeetingTheCondition)
+{
+    const std::string dir = sbrt_test::temp_dir("selection");
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        const PropertyFixture fx = fixture(seed, dir);
+        // >= over a sum; < where a fill (-127) would meet it
+        const bool at_least = seed % 2 == 0;
+        const Selection s = parse_selection(at_least ? "kans_5 + kans_6 >= 90"
+                                                     : "kans_5+kans_6<60",
+                                            *fx.channels);
+        ASSERT_EQ(s.channels.size(), 2u);
+        const Model selected = select_voxels(fx.model, *fx.channels, s, 2);
+        selected.validate();
+        const Frame &f = fx.voxels.frame;
+        uint64_t kept = 0, voxels = 0;
+        for (int row = 0; row < f.rows; ++row)
+            for (int col = 0; col < f.cols; ++col) {
+                const uint64_t cell = selected.cell_index(row, col);
+                const std::vector<Interval> stack = selected.stack_intervals(cell);
+                size_t i = 0;
+                for (int z = 0; z < f.depths; ++z) {
+                    while (i < stack.size() && stack[i].top <= float(z))
+                        ++i;
+                    const int32_t got =
+                        i < stack.size() ? selected.materials()[stack[i].material].id : NULL_CLASS;
+                    const size_t v = (size_t(z) * f.rows + row) * f.cols + col;
+                    const int32_t id = fx.voxels.classes[v];
+                    const float a = fx.source[0][v], b = fx.source[1][v];
+                    const double sum = a + 2.0 * b;
+                    const bool meets =
+                        id != NULL_CLASS && a != FILL && (at_least ? sum >= 90 : sum < 60);
+                    ASSERT_EQ(got, meets ? id : NULL_CLASS)
+                        << "seed " << seed << " row " << row << " col " << col << " z " << z;
+                    kept += meets;
+                    voxels += id != NULL_CLASS;
+                }
+            }
+        EXPECT_GT(kept, 0u);
+        EXPECT_LT(kept, voxels);
+    }
+}
+
+TEST(VoxelSelection, BadConditionsAreRefusedByName)
+{
+    const std::string dir = sbrt_test::temp_dir("selection_bad");
+    const PropertyFixture fx = fixture(2, dir);
+    auto message = [&](const std::string &text) {
+        try {
+            parse_selection(text, *fx.channels);
+        }
+        catch (const Error &e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(message("kans_5").find("no condition"), std::string::npos);
+    EXPECT_NE(message(">= 60").find("names no channel"), std::string::npos);
+    EXPECT_NE(message("kans_9 >= 60").find("no property channel 'kans_9'"), std::string::npos);
+    EXPECT_NE(message("kans_9 >= 60").find("kans_5, kans_6"), std::string::npos);
+    EXPECT_NE(message("kans_5 >= sixty").find("not a number"), std::string::npos);
+    EXPECT_EQ(message("kans_5<7"), "accepted");
+    EXPECT_EQ(parse_selection("kans_5<7", *fx.channels).comparison, Comparison::less);
+    EXPECT_EQ(parse_selection("kans_6!=7", *fx.channels).comparison, Comparison::not_equal);
 }
