@@ -6,6 +6,7 @@
 #include "annotation_setup.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include <glm/geometric.hpp>
 
@@ -42,7 +43,8 @@ PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model 
                                 const sbrt::CoordinateFrame &frame,
                                 const sbrt::Camera &camera,
                                 const struct Cell_head &region,
-                                const sbrt::PropertyPaint *property)
+                                const sbrt::PropertyPaint *property,
+                                const sbrt::UncertaintyFade *fade)
 {
     PngAnnotations a;
     // a tile's PNG is plain: tiles mosaic to the whole image
@@ -72,6 +74,12 @@ PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model 
             const sbrt::Material &m = model.materials()[i];
             a.classes.push_back({m.id, m.label, sbrt::material_color(model, uint32_t(i))});
         }
+    if (fade) {
+        char text[256];
+        std::snprintf(text, sizeof text, "greyer: more uncertain (%s %g to %g)",
+                      request.fade.c_str(), fade->low(), fade->high());
+        a.caption = text;
+    }
     a.north = north_on_image(frame, camera);
     if (request.view.kind != sbrt::ViewKind::top) {
         a.zexag = request.zexag;

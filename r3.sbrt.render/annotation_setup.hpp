@@ -21,6 +21,7 @@ PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model 
                                 const sbrt::CoordinateFrame &frame,
                                 const sbrt::Camera &camera,
                                 const struct Cell_head &region,
-                                const sbrt::PropertyPaint *property = nullptr);
+                                const sbrt::PropertyPaint *property = nullptr,
+                                const sbrt::UncertaintyFade *fade = nullptr);
 
 #endif

@@ -124,9 +124,9 @@ Backend::Backend(const RenderRequest &request, const sbrt::Renderer &renderer,
 void Backend::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
                      const sbrt::BandSink &sink)
 {
-    if (context_ && !tried_gpu_ && renderer_.shading().property) {
+    if (context_ && !tried_gpu_ && (renderer_.shading().property || renderer_.shading().fade)) {
         tried_gpu_ = true; // the GPU has no property channels yet
-        G_verbose_message(_("property= is traced on the CPU"));
+        G_verbose_message(_("property= and fade= are traced on the CPU"));
     }
     if (context_ && !tried_gpu_) {
         tried_gpu_ = true;

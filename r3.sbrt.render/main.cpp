@@ -36,7 +36,7 @@ void render_frame(const RenderRequest &request, RenderSession &session,
         window = tile_window(window, *request.tile);
     ImageMaps maps(request, window,
                    make_annotations(request, session.renderer().model(), session.frame(),
-                                    camera, region, session.property()));
+                                    camera, region, session.property(), session.fade()));
     session.render(camera, maps.outputs(), [&](const sbrt::Band &band) { maps.write(band); });
     maps.close(session.renderer().model(), session.property());
 }

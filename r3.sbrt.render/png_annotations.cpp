@@ -211,6 +211,7 @@ struct Panel {
             w = std::max(w, l.font + l.pad + text_width(cr, legend_text(*c)));
         if (more)
             w = std::max(w, text_width(cr, more_text()));
+        w = std::max(w, text_width(cr, a.caption));
         cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                                CAIRO_FONT_WEIGHT_BOLD);
         if (!this->shown.empty() || a.bar)
@@ -352,6 +353,12 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
     }
     if (a.bar)
         draw_color_bar(cr, l, a, p, x, y);
+    else if (!a.caption.empty()) {
+        y += l.line;
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_move_to(cr, x, y);
+        cairo_show_text(cr, a.caption.c_str());
+    }
 
     // from the bottom up: scale bar, exaggeration, north arrow
     double bottom = rows - l.pad;

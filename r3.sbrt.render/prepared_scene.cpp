@@ -54,7 +54,8 @@ PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
 }
 
 sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drape,
-                           const sbrt::PropertyPaint *property)
+                           const sbrt::PropertyPaint *property,
+                           const sbrt::UncertaintyFade *fade)
 {
     sbrt::Shading shading;
     shading.light = sbrt::Shading::light_from(request.light_azimuth,
@@ -66,5 +67,6 @@ sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drap
     shading.smooth = request.smooth;
     shading.drape = drape;
     shading.property = property;
+    shading.fade = fade;
     return shading;
 }

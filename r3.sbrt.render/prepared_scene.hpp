@@ -31,6 +31,7 @@ PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
 /// The shading of the request; `drape` (or null) outlives it.
 /// `property` (or null) too.
 sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drape,
-                           const sbrt::PropertyPaint *property = nullptr);
+                           const sbrt::PropertyPaint *property = nullptr,
+                           const sbrt::UncertaintyFade *fade = nullptr);
 
 #endif

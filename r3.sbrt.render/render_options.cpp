@@ -233,6 +233,17 @@ RenderOptions define_render_options()
                        _("Property"));
     o->select->label = _("Draw only the voxels whose property meets this condition");
     o->select->key_desc = "condition";
+    o->fade = define("fade", TYPE_STRING,
+                     _("e.g. onz_lk: 0 keeps the colour, the channel's highest value (100 "
+                       "for %) turns it grey"),
+                     _("Property"));
+    o->fade->label = _("Uncertainty channel that greys the colours");
+    o->fade->key_desc = "name";
+    o->fade_range = define("fade_range", TYPE_DOUBLE,
+                           _("Uncertainty of full colour and of grey (default: 0 and the "
+                             "channel's highest value)"),
+                           _("Property"));
+    o->fade_range->key_desc = "low,high";
     o->value = define_map_output(
         "value", _("Raster map of the property at the first hit (with property=)"));
     o->value->guisection = _("Property");
@@ -308,6 +319,16 @@ RenderRequest read_render_options(const RenderOptions &options)
     }
     r.property_color = answer_or(o->property_color);
     r.select = answer_or(o->select);
+    r.fade = answer_or(o->fade);
+    if (o->fade_range->answers) {
+        const std::vector<double> range = read_numbers(o->fade_range);
+        if (range.size() != 2 || !(range[1] > range[0]))
+            bad_request(_("fade_range= takes two numbers low,high with high above low, "
+                          "e.g. fade_range=0,100"));
+        r.fade_range = std::array<double, 2>{range[0], range[1]};
+    }
+    if (r.fade_range && r.fade.empty())
+        bad_request(_("fade_range= needs fade= (the uncertainty channel)"));
     if (r.property_color.empty())
         r.property_color = "viridis";
     if (!r.value.empty() && r.property.empty())

@@ -27,6 +27,8 @@ struct RenderRequest {
     std::vector<std::string> property;       ///< channels to show, summed
     std::string property_color = "viridis";  ///< colour table or rules file
     std::string select;                      ///< select=: a condition on channels
+    std::string fade;                        ///< fade=: an uncertainty channel
+    std::optional<std::array<double, 2>> fade_range; ///< its values of no and full grey
     bool annotate = true;  ///< the PNG's legend, north arrow, scale bar (not -n)
     std::optional<std::array<int, 4>> tile; ///< row, col, rows, cols of the image
     int width = 640, height = 480; ///< size=: perspective and orthographic
@@ -90,7 +92,7 @@ struct RenderOptions {
         *log_class, *log_reference;
     Flag *boreholes_only, *split_logs;
     Option *texture, *texture_blend;
-    Option *property, *property_color, *value, *select;
+    Option *property, *property_color, *value, *select, *fade, *fade_range;
     Option *backend, *gpu_layout, *nprocs;
     Option *frames, *path, *angle, *path_map, *height, *keys, *range, *strds, *video,
         *fps;

@@ -38,7 +38,12 @@ std::string model_key(const RenderRequest &request, const struct Cell_head &regi
 /// What the property view depends on (the model's key comes first).
 std::string property_key(const RenderRequest &request)
 {
-    return request.property_title() + '\n' + request.property_color;
+    std::ostringstream key;
+    key << std::hexfloat << request.property_title() << '\n' << request.property_color
+        << '\n' << request.fade;
+    if (request.fade_range)
+        key << ' ' << (*request.fade_range)[0] << ' ' << (*request.fade_range)[1];
+    return key.str();
 }
 
 /// What the drape depends on.
@@ -87,6 +92,7 @@ void RenderSession::load(const RenderRequest &request, const struct Cell_head &r
         drop_scene();
         drape_.reset();
         property_.reset();
+        fade_.reset();
         selected_.reset();
         selection_key_.clear();
         channels_.reset();
@@ -131,7 +137,25 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
     const std::string property = property_key(request);
     if (property != property_key_) {
         property_.reset();
+        fade_.reset();
         property_key_.clear();
+        if (!request.fade.empty()) {
+            const sbrt::PropertyChannels &all = *channels(request);
+            RenderRequest asked = request;
+            asked.property = {request.fade};
+            const std::vector<size_t> channel = property_channels(asked, &all);
+            const sbrt::ChannelInfo &info = all.info(channel[0]);
+            double low = 0, high = info.unit == "%" ? 100 : info.physical(float(info.max));
+            if (request.fade_range) {
+                low = (*request.fade_range)[0];
+                high = (*request.fade_range)[1];
+            }
+            if (!(high > low))
+                bad_request(_("fade=%s: its values go up to %g only; give fade_range=low,high"),
+                            request.fade.c_str(), high);
+            fade_ = std::make_unique<sbrt::UncertaintyFade>(*model_, channels_, channel[0],
+                                                            low, high);
+        }
         if (!request.property.empty()) {
             const std::vector<size_t> summed = property_channels(request, channels(request));
             const auto [low, high] = property_range(*channels_, summed);
@@ -198,7 +222,8 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
         scene_key_ = key;
     }
     if (renderer_)
-        renderer_->set_shading(make_shading(request, drape_.get(), property_.get()));
+        renderer_->set_shading(
+            make_shading(request, drape_.get(), property_.get(), fade_.get()));
 }
 
 const sbrt::PropertyChannels *RenderSession::channels(const RenderRequest &request)
@@ -241,7 +266,7 @@ void RenderSession::build_renderer(sbrt::Model model, sbrt::Scene scene)
 {
     renderer_ = std::make_unique<sbrt::Renderer>(
         std::move(model), request_->zexag, std::move(scene),
-        make_shading(*request_, drape_.get(), property_.get()),
+        make_shading(*request_, drape_.get(), property_.get(), fade_.get()),
         sbrt::RenderSettings{unsigned(request_->threads), true, 0});
     backend_ = std::make_unique<Backend>(*request_, *renderer_, context_.get());
 }

@@ -59,6 +59,8 @@ public:
     const sbrt::Renderer &renderer() const { return *renderer_; }
     /// The property shown (property=), or null.
     const sbrt::PropertyPaint *property() const { return property_.get(); }
+    /// The uncertainty fade (fade=), or null.
+    const sbrt::UncertaintyFade *fade() const { return fade_.get(); }
 
 private:
     /// Forgets the prepared scene, its renderer and backend.
@@ -78,6 +80,7 @@ private:
     const sbrt::PropertyChannels *channels(const RenderRequest &request);
     std::string property_key_;
     std::unique_ptr<sbrt::PropertyPaint> property_;
+    std::unique_ptr<sbrt::UncertaintyFade> fade_;
     std::string context_key_;
     std::unique_ptr<sbrt_gl::GlContext> context_;
     // the prepared scene; the backend refers to the request and renderer

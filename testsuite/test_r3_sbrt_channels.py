@@ -299,6 +299,37 @@ class TestChannels(TestCase, Raster3dCompare):
                 shown += top is not None
         self.assertGreater(shown, NX * NY // 4)
 
+    def test_fade_greys_the_uncertain_voxels(self):
+        """fade=kans_5 on a top view: cells whose topmost voxel has 100 are
+        grey, those with 0 keep the colour of the view without fade."""
+        self.runModule("r3.sbrt.convert", flags="s", sbrt="with_channels")
+        self.assertModule("r3.sbrt.render", input="with_channels", view="top",
+                          fade="kans_5", fade_range=(0, 100), output="faded")
+        self.assertModule("r3.sbrt.render", input="with_channels", view="top",
+                          output="plain")
+        bands = {}
+        for name in ("faded", "plain"):
+            bands[name] = [[row.split() for row in gs.read_command(
+                "r.out.ascii", input=f"{name}.{c}", flags="h").split("\n") if row]
+                for c in ("red", "green", "blue")]
+        checked = 0
+        for r in range(NY):
+            j = NY - 1 - r
+            for i in range(NX):
+                solid = [k for k in range(NZ) if lithok(i, j, k) != FILL]
+                if not solid:
+                    continue
+                u = kans(i, j, max(solid))
+                faded = [bands["faded"][c][r][i] for c in range(3)]
+                plain = [bands["plain"][c][r][i] for c in range(3)]
+                if u == 0 or u == FILL:
+                    self.assertEqual(faded, plain, (i, j, u))
+                    checked += 1
+                elif u == 100:
+                    self.assertEqual(len(set(faded)), 1, (i, j, faded))
+                    checked += 1
+        self.assertGreater(checked, 10)
+
     def test_perspective_property_view_and_sum(self):
         self.assertModule("r3.sbrt.render", input="with_channels", zexag=5,
                           size=(160, 120), property="porosity", property_color="magma",
@@ -330,6 +361,9 @@ class TestChannels(TestCase, Raster3dCompare):
             (["input=classes_for_render", "property=kans_5"], "has no property channels"),
             (["input=classes_for_render", "select=kans_5>=60"], "has no property channels"),
             (["input=with_channels", "select=kans_5"], "no condition"),
+            (["input=with_channels", "fade=kans_7"], "no property channel 'kans_7'"),
+            (["input=with_channels", "fade_range=0,100"], "needs fade="),
+            (["input=with_channels", "fade=kans_5", "fade_range=9,1"], "high above low"),
             (["input=with_channels", "select=kans_9>=1"], "no property channel 'kans_9'"),
             (["input=with_channels", "select=kans_5>=lots"], "not a number"),
         ]

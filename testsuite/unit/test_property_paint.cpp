@@ -272,3 +272,41 @@ TEST(VoxelSelection, BadConditionsAreRefusedByName)
     EXPECT_EQ(parse_selection("kans_5<7", *fx.channels).comparison, Comparison::less);
     EXPECT_EQ(parse_selection("kans_6!=7", *fx.channels).comparison, Comparison::not_equal);
 }
+
+TEST(UncertaintyFade, TopViewGreysByTheVoxelsUncertainty)
+{
+    const std::string dir = sbrt_test::temp_dir("fade");
+    const PropertyFixture fx = fixture(7, dir);
+    const Tracer tracer(fx.model, 1.0);
+    const UncertaintyFade fade(fx.model, fx.channels, 0, 0, 100);
+    Shading shading;
+    shading.fade = &fade;
+    const Frame &f = fx.voxels.frame;
+    const Camera camera = sbrt_test::top_camera(f, f.top + 10);
+    const Image image = shade(tracer, camera, trace_image(tracer, camera, 2), shading, 2);
+    int faded = 0;
+    for (int row = 0; row < f.rows; ++row)
+        for (int col = 0; col < f.cols; ++col) {
+            int top = -1;
+            for (int z = f.depths - 1; z >= 0 && top < 0; --z)
+                if (fx.voxels.classes[(size_t(z) * f.rows + row) * f.cols + col] != NULL_CLASS)
+                    top = z;
+            if (top < 0)
+                continue;
+            const size_t i = size_t(row) * size_t(f.cols) + size_t(col);
+            const int32_t id = fx.voxels.classes[(size_t(top) * f.rows + row) * f.cols + col];
+            const auto rgb = material_color(fx.model, uint32_t(fx.model.find_material(id)));
+            glm::dvec3 want(rgb[0], rgb[1], rgb[2]);
+            const float u = at(fx, 0, col, f.rows - 1 - row, top);
+            if (u != FILL) {
+                const double grey = 0.2126 * want.x + 0.7152 * want.y + 0.0722 * want.z;
+                want += std::clamp(u / 100.0, 0.0, 1.0) * (glm::dvec3(grey) - want);
+                faded += u > 0;
+            }
+            for (int k = 0; k < 3; ++k)
+                EXPECT_EQ(image.rgb[i * 3 + size_t(k)], uint8_t(std::lround(want[k])))
+                    << row << " " << col << " u " << u;
+        }
+    EXPECT_GT(faded, f.rows * f.cols / 3);
+    EXPECT_THROW(UncertaintyFade(fx.model, fx.channels, 0, 5, 5), Error);
+}

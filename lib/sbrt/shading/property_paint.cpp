@@ -95,21 +95,55 @@ PropertyPaint::PropertyPaint(const Model &model,
             fail("a property view of channel ", c, " of ", channels_->size());
 }
 
-bool PropertyPaint::value(const Hit &hit, double &out) const
+bool property_at_hit(const Model &model, const PropertyChannels &channels,
+                     const std::vector<size_t> &summed, const Hit &hit, double &out)
 {
     HitVoxel voxel;
-    if (!voxel_of_hit(model_, hit, voxel))
+    if (!voxel_of_hit(model, hit, voxel))
         return false;
     double sum = 0;
-    for (size_t c : summed_) {
+    for (size_t c : summed) {
         float raw;
-        const ChannelInfo &info = channels_->info(c);
-        if (!channels_->value(c, voxel.cell, voxel.level, raw) || info.is_fill(raw))
+        const ChannelInfo &info = channels.info(c);
+        if (!channels.value(c, voxel.cell, voxel.level, raw) || info.is_fill(raw))
             return false;
         sum += info.physical(raw);
     }
     out = sum;
     return true;
+}
+
+bool PropertyPaint::value(const Hit &hit, double &out) const
+{
+    return property_at_hit(model_, *channels_, summed_, hit, out);
+}
+
+UncertaintyFade::UncertaintyFade(const Model &model,
+                                 std::shared_ptr<const PropertyChannels> channels,
+                                 size_t channel, double low, double high)
+    : model_(model), channels_(std::move(channels)), channel_{channel}, low_(low),
+      high_(high)
+{
+    if (!channels_ || channel >= channels_->size())
+        fail("an uncertainty fade without its channel");
+    if (!(high > low))
+        fail("an uncertainty fade from ", low, " to ", high, ": the high end must be "
+             "above the low one");
+}
+
+double UncertaintyFade::share(double value) const
+{
+    return std::clamp((value - low_) / (high_ - low_), 0.0, 1.0);
+}
+
+glm::dvec3 UncertaintyFade::apply(const Hit &hit, glm::dvec3 color) const
+{
+    double v;
+    if (!property_at_hit(model_, *channels_, channel_, hit, v))
+        return color;
+    // Rec. 709 luminance: the grey the colour fades to
+    const double grey = 0.2126 * color.x + 0.7152 * color.y + 0.0722 * color.z;
+    return color + share(v) * (glm::dvec3(grey) - color);
 }
 
 glm::dvec3 PropertyPaint::color(const Hit &hit) const

@@ -31,6 +31,33 @@ struct HitVoxel {
 /// face its voxel above). False where the hit is no hit of the model.
 bool voxel_of_hit(const Model &model, const Hit &hit, HitVoxel &voxel);
 
+/// The sum of `summed` channels (as meant) at the voxel of `hit`; false
+/// where the hit has no voxel, lies outside the spans or meets a fill.
+bool property_at_hit(const Model &model, const PropertyChannels &channels,
+                     const std::vector<size_t> &summed, const Hit &hit, double &out);
+
+/// \brief Class colours faded by an uncertainty channel: a voxel whose
+/// value is `low` or less keeps its colour, one at `high` or more is grey
+/// (the colour's own luminance), linearly between.
+class UncertaintyFade {
+public:
+    UncertaintyFade(const Model &model, std::shared_ptr<const PropertyChannels> channels,
+                    size_t channel, double low, double high);
+    /// `color` (0..255) of `hit` faded by the uncertainty at its voxel
+    /// (unchanged where it has none).
+    glm::dvec3 apply(const Hit &hit, glm::dvec3 color) const;
+    /// The share of grey, 0..1, of an uncertainty value.
+    double share(double value) const;
+    double low() const { return low_; }
+    double high() const { return high_; }
+
+private:
+    const Model &model_;
+    std::shared_ptr<const PropertyChannels> channels_;
+    std::vector<size_t> channel_;
+    double low_, high_;
+};
+
 /// \brief A property shown on the model's hits.
 class PropertyPaint {
 public:

@@ -47,7 +47,7 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
         const auto rgb = material_color(model, uint32_t(m));
         base_.emplace_back(rgb[0], rgb[1], rgb[2]);
     }
-    if (shading.drape || shading.property) // colours per hit, not per class
+    if (shading.drape || shading.property || shading.fade) // colours per hit
         return;
     for (uint32_t m = 0; m < base_.size(); ++m)
         for (int face = int(Face::west); face <= int(Face::top); ++face) {
@@ -84,6 +84,8 @@ std::array<uint8_t, 3> PixelShader::lit(const Hit &hit) const
             shading.property ? shading.property->color(hit) : base_[hit.material];
         if (shading.drape)
             surface = shading.drape->color(hit, surface);
+        if (shading.fade)
+            surface = shading.fade->apply(hit, surface);
         const double lambert =
             std::max(0.0, glm::dot(shading.light, glm::dvec3(hit.normal)));
         color = surface * (shading.ambient + (1 - shading.ambient) * lambert);

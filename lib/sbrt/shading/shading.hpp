@@ -31,6 +31,8 @@ struct Shading {
     const class Drape *drape = nullptr; ///< an image on the terrain, or none
     /// a property colouring the hits instead of their class, or none
     const class PropertyPaint *property = nullptr;
+    /// an uncertainty greying the colours, or none
+    const class UncertaintyFade *fade = nullptr;
 
     /// Direction from azimuth (degrees clockwise from north) and elevation.
     static glm::dvec3 light_from(double azimuth, double elevation);
