@@ -19,6 +19,12 @@ sbrt::Frame current_frame();
 /// 3D raster (current 3D region) -> SBRT.
 sbrt::Model voxels_to_sbrt(const char *input, sbrt::Classifier &classifier);
 
+/// 3D raster maps `properties` (current 3D region) as the property
+/// channels of `model` (made from class map `input`), written into the new
+/// file `channels_file`.
+void raster3d_channels(const std::vector<std::string> &properties, const char *input,
+                       const sbrt::Model &model, const std::string &channels_file);
+
 /// The rules' classes with their labels, as a legend.
 std::vector<sbrt::Material> rule_legend(const sbrt::Classifier &classifier);
 

@@ -70,18 +70,19 @@ Options define_options()
     o.properties->multiple = YES;
     o.properties->required = NO;
     o.properties->label =
-        _("Variables of file= on the same grid to keep as property channels");
+        _("Property channels: variables of file= on the same grid, or 3D raster "
+          "maps beside input=");
     o.properties->description =
         _("Per-voxel values beside the classes (e.g. probabilities kans_1,...,"
-          "onz_lk), kept exactly");
-    o.properties->guisection = _("File");
+          "onz_lk), kept exactly; 3D raster maps are read in the current 3D region");
+    o.properties->guisection = _("Properties");
 
     o.all_properties = G_define_flag();
     o.all_properties->key = 'a';
     o.all_properties->description =
         _("Keep every other variable of file= on the classes' grid as a property "
           "channel");
-    o.all_properties->guisection = _("File");
+    o.all_properties->guisection = _("Properties");
 
     o.property = G_define_option();
     o.property->key = "property";
@@ -187,7 +188,7 @@ Options define_options()
 
     G_option_exclusive(o.input, o.horizons, o.sbrt, o.file, NULL);
     G_option_requires(o.variable, o.file, NULL);
-    G_option_requires(o.properties, o.file, NULL);
+    G_option_requires(o.properties, o.file, o.input, NULL);
     G_option_requires(o.all_properties, o.file, NULL);
     G_option_exclusive(o.properties, o.all_properties, NULL);
     G_option_requires(o.property, o.reverse, NULL);
@@ -355,6 +356,12 @@ void run(const Options &o)
         sbrt::Classifier classifier = read_classifier(o.rules->answer);
         model = voxels_to_sbrt(input, classifier);
         source = std::string("3D raster map ") + input;
+        const std::vector<std::string> properties = answers_of(o.properties);
+        if (!properties.empty()) {
+            channels_file.path = G_tempfile();
+            raster3d_channels(properties, input, model, channels_file.path);
+            source += " with properties " + std::string(o.properties->answer);
+        }
     }
     const std::string preset = o.preset->answer;
     if (!o.file->answer && preset != "auto" && preset != "none")
