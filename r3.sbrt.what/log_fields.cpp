@@ -22,6 +22,11 @@ std::string number_text(double value)
     return text;
 }
 
+std::string value_text(double value, const char *none)
+{
+    return std::isnan(value) ? std::string(none) : number_text(value);
+}
+
 const sbrt::Material &material_of(const sbrt::Model &model, uint32_t material)
 {
     return model.materials()[material];

@@ -13,13 +13,23 @@
 #include <vector>
 
 #include "measure/column_log.hpp"
+#include "measure/column_voxels.hpp"
 #include "what_request.hpp"
 
 /// \brief A queried point and the log of its column; no log where the
-/// point lies outside the model.
+/// point lies outside the model. Where the model has property channels,
+/// the column's voxels with their values, top down.
 struct PointLog {
     QueryPoint point;
     std::optional<sbrt::ColumnLog> log;
+    std::vector<sbrt::VoxelValues> voxels;
+};
+
+/// \brief What the writers show: the model, and the channels whose
+/// values the points' voxels hold (none for a model without channels).
+struct LogSource {
+    const sbrt::Model &model;
+    std::vector<sbrt::ChannelInfo> channels;
 };
 
 /// What a point's column is: "outside" (the model), "empty" (a column
@@ -35,13 +45,20 @@ std::string number_text(double value);
 /// The class id and label of material `material` of `model`.
 const sbrt::Material &material_of(const sbrt::Model &model, uint32_t material);
 
+/// A channel value as json and csv give it ("null" / "" for none).
+std::string value_text(double value, const char *none);
+
 /// A readable log per point: top to bottom, a line per layer (top,
-/// bottom, thickness, class, label) and per gap between layers.
-void write_plain_logs(FILE *out, const sbrt::Model &model, const std::vector<PointLog> &logs);
-/// A json list of points, each with its layers (gaps left out).
-void write_json_logs(FILE *out, const sbrt::Model &model, const std::vector<PointLog> &logs);
+/// bottom, thickness, class, label) and per gap between layers; then,
+/// with channels, a line per voxel (top, bottom, class, each channel).
+void write_plain_logs(FILE *out, const LogSource &source, const std::vector<PointLog> &logs);
+/// A json list of points, each with its layers (gaps left out) and, with
+/// channels, its voxels ("voxels": top, bottom, level, class, "values").
+void write_json_logs(FILE *out, const LogSource &source, const std::vector<PointLog> &logs);
 /// A csv row per layer (gaps left out), one row for a point outside or an
-/// empty column; a header row first.
-void write_csv_logs(FILE *out, const sbrt::Model &model, const std::vector<PointLog> &logs);
+/// empty column; a header row first. With channels, the columns "level"
+/// and one per channel follow, empty on layer rows, and a row per voxel
+/// (level set, thickness the voxel's) follows each point's layers.
+void write_csv_logs(FILE *out, const LogSource &source, const std::vector<PointLog> &logs);
 
 #endif

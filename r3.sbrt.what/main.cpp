@@ -47,7 +47,7 @@ sbrt::Model read_model_under(const std::string &name, const std::vector<QueryPoi
 }
 
 /// Writes the logs to output= (standard output where it is empty or "-").
-void write_logs(const WhatRequest &request, const sbrt::Model &model,
+void write_logs(const WhatRequest &request, const LogSource &source,
                 const std::vector<PointLog> &logs)
 {
     const bool to_stdout = request.output.empty() || request.output == "-";
@@ -56,11 +56,11 @@ void write_logs(const WhatRequest &request, const sbrt::Model &model,
         sbrt::fail("Unable to open file <", request.output, "> for writing: ",
                    std::strerror(errno));
     if (request.format == LogFormat::json)
-        write_json_logs(out, model, logs);
+        write_json_logs(out, source, logs);
     else if (request.format == LogFormat::csv)
-        write_csv_logs(out, model, logs);
+        write_csv_logs(out, source, logs);
     else
-        write_plain_logs(out, model, logs);
+        write_plain_logs(out, source, logs);
     const bool failed = std::ferror(out) != 0;
     if ((to_stdout ? std::fflush(out) : std::fclose(out)) != 0 || failed)
         sbrt::fail("Unable to write the logs to ", to_stdout ? "standard output" : "file <",
@@ -71,19 +71,28 @@ void run(const WhatRequest &request)
 {
     const std::vector<QueryPoint> points = query_points(request);
     const sbrt::Model model = read_model_under(request.input, points);
+    // the property channels, where the model has them: only the blocks
+    // under the points are decoded
+    const auto channels = sbrt_grass::read_channels_map(request.input.c_str(), model);
+    LogSource source{model, {}};
+    if (channels)
+        source.channels = channels->infos();
     std::vector<PointLog> logs(points.size());
     size_t outside = 0;
     for (size_t i = 0; i < points.size(); ++i) {
         logs[i].point = points[i];
-        if (const auto cell = sbrt::cell_of_point(model.frame(), points[i].x, points[i].y))
+        if (const auto cell = sbrt::cell_of_point(model.frame(), points[i].x, points[i].y)) {
             logs[i].log = sbrt::column_log(model, *cell);
+            if (channels)
+                logs[i].voxels = sbrt::column_voxels(model, *channels, *cell);
+        }
         else
             ++outside;
     }
     if (outside)
         G_verbose_message(_("%zu of %zu points lie outside SBRT <%s>"), outside,
                           points.size(), request.input.c_str());
-    write_logs(request, model, logs);
+    write_logs(request, source, logs);
 }
 
 } // namespace
@@ -102,7 +111,8 @@ int main(int argc, char *argv[])
     module->description =
         _("Lists every layer of a stack-based terrain model (SBRT) under the "
           "given points, top to bottom, with class, label, top, bottom and "
-          "thickness at the model's heights.");
+          "thickness at the model's heights, and the property channels voxel "
+          "by voxel where the model has them.");
     const WhatOptions options = define_what_options();
     sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
     if (G_parser(argc, argv))

@@ -4,6 +4,7 @@
  *            bottom, with the gaps (caves, air under overhangs) in place
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <algorithm>
 #include <cmath>
 
 #include "log_writers.hpp"
@@ -48,10 +49,39 @@ void write_heading(FILE *out, size_t index, const PointLog &p, int decimals)
                  decimals, p.log->entries.back().bottom);
 }
 
+/// The point's voxels, top down: heights, class ("-" in a cave) and each
+/// channel's value ("*" for none, as r.what prints no data), in columns
+/// as wide as the channels' names.
+void write_voxel_table(FILE *out, const LogSource &source, const PointLog &p, int decimals)
+{
+    const int width = decimals + 10;
+    std::fprintf(out, "Voxels with their property channels, top down:\n%*s %*s %6s",
+                 width, "top", width, "bottom", "class");
+    std::vector<int> widths;
+    for (const sbrt::ChannelInfo &c : source.channels) {
+        widths.push_back(std::max(8, int(c.name.size())));
+        std::fprintf(out, " %*s", widths.back(), c.name.c_str());
+    }
+    std::fputc('\n', out);
+    for (const sbrt::VoxelValues &v : p.voxels) {
+        std::fprintf(out, "%*.*f %*.*f ", width, decimals, v.top, width, decimals, v.bottom);
+        if (v.material == sbrt::EMPTY)
+            std::fprintf(out, "%6s", "-");
+        else
+            std::fprintf(out, "%6d", material_of(source.model, v.material).id);
+        for (size_t c = 0; c < v.values.size(); ++c)
+            std::fprintf(out, " %*s", widths[c],
+                         std::isnan(v.values[c]) ? "*"
+                                                 : number_text(v.values[c]).c_str());
+        std::fputc('\n', out);
+    }
+}
+
 } // namespace
 
-void write_plain_logs(FILE *out, const sbrt::Model &model, const std::vector<PointLog> &logs)
+void write_plain_logs(FILE *out, const LogSource &source, const std::vector<PointLog> &logs)
 {
+    const sbrt::Model &model = source.model;
     const int decimals = height_decimals(model.frame());
     const int width = decimals + 10;
     for (size_t i = 0; i < logs.size(); ++i) {
@@ -72,5 +102,7 @@ void write_plain_logs(FILE *out, const sbrt::Model &model, const std::vector<Poi
                 std::fprintf(out, "%6d  %s\n", material_of(model, e.material).id,
                              material_of(model, e.material).label.c_str());
         }
+        if (!p.voxels.empty())
+            write_voxel_table(out, source, p, decimals);
     }
 }

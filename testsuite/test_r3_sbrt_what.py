@@ -219,6 +219,66 @@ class TestWhatVoxelModel(TestCase):
         self.assertEqual(rows[-1]["row"], "")
         self.assertIn('"Sand, fine"', out)  # quoted: it holds a comma
 
+    def test_channels_voxel_by_voxel(self):
+        """With property channels (3D raster maps beside the classes), every
+        voxel of a column's solid span, top down, with its class (null in a
+        cave) and each channel's value (null where the map is) equal to
+        what r3.to.rast and r.what read; csv has the same voxel rows, plain
+        a voxel table."""
+        prop = ("whatp = float(if(depth() % 13 == 0, null(), "
+                "(row() * 7 + col() * 3 + depth()) % 50 - 10))")
+        self.runModule("r3.mapcalc", expression=prop, overwrite=True)
+        self.runModule("r3.support", map="whatp", unit="%", title="P(peat)")
+        self.assertModule("r3.sbrt.convert", input="what3d", properties="whatp",
+                          output="what3dp")
+        self.runModule("r3.to.rast", input="whatp", output="pp", overwrite=True)
+        levels = [f"pp_{z:05d}" for z in range(1, DEPTHS + 1)]
+        text = gs.read_command("r.what", map=levels, coordinates=flat(cell_centres()),
+                               separator="|")
+        props = [[None if v == "*" else float(v) for v in line.split("|")[3:]]
+                 for line in text.splitlines()]
+        rc, out, err = what(input="what3dp", format="json",
+                            coordinates=flat(cell_centres()))
+        self.assertEqual(rc, 0, err)
+        points = json.loads(out)
+        checked = 0
+        for k, (point, classes, values) in enumerate(zip(points, self.voxels, props)):
+            solid = [z for z in range(DEPTHS) if classes[z] is not None]
+            span = range(max(solid), min(solid) - 1, -1) if solid else []
+            self.assertEqual([v["level"] for v in point["voxels"]], list(span),
+                             f"point {k + 1}")
+            for voxel in point["voxels"]:
+                z = voxel["level"]
+                self.assertEqual(voxel["class"], classes[z])
+                self.assertEqual(voxel["values"]["whatp"], values[z], (k, z))
+                self.assertAlmostEqual(voxel["bottom"], BOTTOM + z * TB, places=9)
+                self.assertAlmostEqual(voxel["top"], BOTTOM + (z + 1) * TB, places=9)
+                checked += 1
+        self.assertGreater(checked, 500)
+        # the cave of row 3 has values, no class
+        cave = points[2 * COLS + 3]["voxels"]
+        self.assertIn(None, [v["class"] for v in cave])
+        # csv: the layer rows as before, then a row per voxel
+        one = flat(cell_centres()[2 * COLS + 3:2 * COLS + 4])
+        rc, out, err = what(input="what3dp", format="csv", coordinates=one)
+        rows = list(csv.DictReader(io.StringIO(out)))
+        self.assertEqual(list(rows[0].keys()), KEYS + INTERVAL_KEYS + ["level", "whatp"])
+        voxel_rows = [r for r in rows if r["level"]]
+        self.assertEqual([int(r["level"]) for r in voxel_rows],
+                         [v["level"] for v in cave])
+        self.assertEqual([float(r["whatp"]) if r["whatp"] else None for r in voxel_rows],
+                         [v["values"]["whatp"] for v in cave])
+        self.assertEqual(len(rows) - len(voxel_rows),
+                         len(reference_log(self.voxels[2 * COLS + 3])))
+        # plain: a voxel table with the channel's name, * for no value
+        rc, out, err = what(input="what3dp", coordinates=one)
+        self.assertIn("Voxels with their property channels", out)
+        table = out.split("Voxels with their property channels, top down:\n")[1]
+        lines = table.splitlines()
+        self.assertEqual(lines[0].split(), ["top", "bottom", "class", "whatp"])
+        self.assertEqual(len(lines) - 1, len(cave))
+        self.runModule("r3.sbrt.manage", flags="f", remove="what3dp")
+
     def test_vector_points_with_where_and_output_file(self):
         points = self.json_logs(points="what_pts", where="kind = 'odd'")
         self.assertEqual([p["cat"] for p in points], [1, 3, 5, 7, 9])
