@@ -21,12 +21,20 @@ class RenderThread(threading.Thread):
         self._deliver = deliver
         self._wake = threading.Condition()
         self._pending = None
+        self._pick = None
         self._stop = False
 
     def request(self, words, tag):
         """Replaces any request not yet started."""
         with self._wake:
             self._pending = (list(words), tag)
+            self._wake.notify()
+
+    def pick(self, words, row, col, answer):
+        """Asks what pixel (row, col) of the view of `words` hits, before
+        the next frame; `answer(pick, error)` gets it (on this thread)."""
+        with self._wake:
+            self._pick = (list(words), row, col, answer)
             self._wake.notify()
 
     def stop(self):
@@ -39,15 +47,28 @@ class RenderThread(threading.Thread):
     def run(self):
         while True:
             with self._wake:
-                while self._pending is None and not self._stop:
+                while self._pending is None and self._pick is None and not self._stop:
                     self._wake.wait()
                 if self._stop:
                     return
-                words, tag = self._pending
-                self._pending = None
+                pick, self._pick = self._pick, None
+                if pick is None:
+                    words, tag = self._pending
+                    self._pending = None
+            if pick is not None:
+                self._answer_pick(*pick)
+                continue
             try:
                 self._deliver(tag, self._server.render(words), None)
             except ServerError as error:
                 self._deliver(tag, None, str(error))
             except Exception as error:  # the thread must go on: say what broke
                 self._deliver(tag, None, "%s: %s" % (type(error).__name__, error))
+
+    def _answer_pick(self, words, row, col, answer):
+        try:
+            answer(self._server.pick(words, row, col), None)
+        except ServerError as error:
+            answer(None, str(error))
+        except Exception as error:  # the thread must go on: say what broke
+            answer(None, "%s: %s" % (type(error).__name__, error))

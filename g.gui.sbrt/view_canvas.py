@@ -12,7 +12,8 @@ import wx
 class ViewCanvas(wx.Window):
     """Shows frames (scaled up while reduced) and reports the mouse to
     `owner`: on_drag(mode, dx, dy), on_zoom(steps), on_still(),
-    on_resize(); mode is "orbit", "pan" or "section"."""
+    on_click(x, y) (a left click that moved nothing), on_resize(); mode
+    is "orbit", "pan" or "section"."""
 
     def __init__(self, parent, owner, size):
         super().__init__(parent, size=size, style=wx.BORDER_NONE | wx.WANTS_CHARS)
@@ -22,6 +23,7 @@ class ViewCanvas(wx.Window):
         self._bitmap = None
         self._mode = None
         self._last = None
+        self._moved = False
         self.legend = []  # (rgb, text) of the strata shown
         self.show_legend = True
         self.Bind(wx.EVT_PAINT, self._on_paint)
@@ -97,6 +99,7 @@ class ViewCanvas(wx.Window):
         else:
             self._mode = "orbit"
         self._last = event.GetPosition()
+        self._moved = False
         if not self.HasCapture():
             self.CaptureMouse()
         self.SetFocus()
@@ -108,14 +111,20 @@ class ViewCanvas(wx.Window):
         dx, dy = position.x - self._last.x, position.y - self._last.y
         self._last = position
         if dx or dy:
+            self._moved = True
             self._owner.on_drag(self._mode, dx, dy)
 
     def _on_up(self, event):
         if self.HasCapture():
             self.ReleaseMouse()
         if self._mode is not None:
+            clicked = self._mode == "orbit" and not self._moved
             self._mode = None
-            self._owner.on_still()
+            if clicked:
+                position = event.GetPosition()
+                self._owner.on_click(position.x, position.y)
+            else:
+                self._owner.on_still()
 
     def _on_capture_lost(self, event):
         self._mode = None

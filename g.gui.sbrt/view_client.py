@@ -20,6 +20,10 @@ Frame = collections.namedtuple(
     "Frame", "width height ms azimuth elevation distance target rgb words"
 )
 Stratum = collections.namedtuple("Stratum", "id rgb label")
+# a property channel: its name, unit, long name and range (as meant)
+Channel = collections.namedtuple("Channel", "name unit long_name low high")
+# what a pixel of a view hits: map coordinates, class id, shown property
+Pick = collections.namedtuple("Pick", "x y z class_id value")
 Extent = collections.namedtuple("Extent", "north south east west bottom top")
 
 
@@ -108,6 +112,12 @@ class ViewServer:
 
     def strata(self, sbrt):
         """The extent and strata (id, colour, label) of SBRT `sbrt`."""
+        extent, strata, _channels = self.model(sbrt)
+        return extent, strata
+
+    def model(self, sbrt):
+        """The extent, strata (id, colour, label) and property channels of
+        SBRT `sbrt`."""
         head = self._ask("classes", ["input=" + sbrt])
         extent = Extent(*[float(v) for v in head[1:7]])
         count = int(self._line()[1])
@@ -121,7 +131,25 @@ class ViewServer:
             strata.append(
                 Stratum(int(fields[0]), tuple(int(v) for v in fields[1:4]), label)
             )
-        return extent, strata
+        count = int(self._line()[1])
+        channels = []
+        for _number in range(count):
+            line = self._process.stdout.readline()
+            if not line:
+                raise self._stopped()
+            low, high, text = line.decode(errors="replace").rstrip("\n").split(" ", 2)
+            name, unit, long_name = (text.split("|", 2) + ["", ""])[:3]
+            channels.append(Channel(name, unit, long_name, float(low), float(high)))
+        return extent, strata, channels
+
+    def pick(self, words, row, col):
+        """What pixel (row, col) of the view of options `words` hits: a
+        Pick, or None where it hits nothing."""
+        head = self._ask("pick", [str(row), str(col)] + list(words))
+        if head[1] == "none":
+            return None
+        x, y, z = (float(v) for v in head[1:4])
+        return Pick(x, y, z, int(head[4]), float(head[5]))
 
     def close(self):
         if self._process and self._process.poll() is None:

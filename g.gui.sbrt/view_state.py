@@ -45,6 +45,14 @@ class ViewState:
         self.texture = ""
         self.drape = False
         self.backend = "auto"
+        # property channels: the property (a channel or a sum a+b), shown
+        # as colours or not, its selection threshold (only voxels with the
+        # property >= it are solid), the uncertainty channel that greys
+        # the colours
+        self.property = ""
+        self.color_by_property = True
+        self.threshold = None
+        self.fade = ""
 
     # the camera ---------------------------------------------------------
     def adopt_camera(self, frame):
@@ -160,6 +168,12 @@ class ViewState:
                     words.append("log_reference=depth")
         if self.drape and self.texture:
             words.append("texture=" + self.texture)
+        if self.property and self.color_by_property:
+            words.append("property=" + self.property)
+        if self.property and self.threshold is not None:
+            words.append("select=%s>=%s" % (self.property, number(self.threshold)))
+        if self.fade:
+            words.append("fade=" + self.fade)
         if self.backend != "auto":
             words.append("backend=" + self.backend)
         return words

@@ -18,6 +18,7 @@ from grass.exceptions import CalledModuleError
 
 from gui_core.gselect import ColumnSelect, Select
 
+from column_profile import ProfileError, read_column, show_profile
 from render_thread import RenderThread
 from strata_panel import StrataPanel
 from view_canvas import ViewCanvas
@@ -46,7 +47,7 @@ class ViewerFrame(wx.Frame):
                  log_path=None):
         super().__init__(None, title="g.gui.sbrt: " + sbrt)
         self.log = EventLog(log_path)
-        extent, strata = server.strata(sbrt)
+        extent, strata, self.channels = server.model(sbrt)
         self.state = ViewState(sbrt, extent, strata)
         self.state.boreholes, self.state.texture = boreholes, texture
         self.state.drape = bool(texture)
@@ -157,6 +158,9 @@ class ViewerFrame(wx.Frame):
         radius.Add(self.borehole_radius)
         wells.Add(radius)
 
+        if self.channels:
+            self._make_property_controls(parent, sizer)
+
         drape = self._box(parent, sizer, _("Drape"))
         self.texture = Select(parent, type="raster", size=(280, -1))
         self.texture.SetValue(self.state.texture)
@@ -181,6 +185,106 @@ class ViewerFrame(wx.Frame):
         self.drape.Bind(wx.EVT_CHECKBOX, self._on_drape)
         if self.state.boreholes:
             self._fill_columns()
+
+    def _make_property_controls(self, parent, sizer):
+        """Colour by a property channel (or a sum, typed a+b), keep only the
+        voxels where it reaches a threshold (live), fade the colours by an
+        uncertainty channel; a click shows the column's profile."""
+        box = self._box(parent, sizer, _("Properties"))
+        names = [c.name for c in self.channels]
+        box.Add(wx.StaticText(parent, label=_("Property (a channel, or a sum a+b):")))
+        self.property = wx.ComboBox(parent, choices=[""] + names, size=(280, -1))
+        box.Add(self.property, flag=wx.EXPAND)
+        self.color_by = wx.CheckBox(parent, label=_("Colour by the property"))
+        self.color_by.SetValue(True)
+        box.Add(self.color_by)
+        self.select_on = wx.CheckBox(parent, label=_("Only the voxels where it is at least:"))
+        box.Add(self.select_on)
+        self.threshold = wx.Slider(parent, value=50, minValue=0, maxValue=100,
+                                   style=wx.SL_HORIZONTAL | wx.SL_VALUE_LABEL)
+        box.Add(self.threshold, flag=wx.EXPAND)
+        box.Add(wx.StaticText(parent, label=_("Fade the colours by uncertainty:")))
+        self.fade = wx.Choice(parent, choices=[_("(none)")] + names)
+        self.fade.SetSelection(0)
+        box.Add(self.fade, flag=wx.EXPAND)
+        box.Add(wx.StaticText(parent, label=_("Click the model: the column's profile")))
+        self.property.Bind(wx.EVT_TEXT, self._on_property)
+        self.color_by.Bind(wx.EVT_CHECKBOX, self._on_property)
+        self.select_on.Bind(wx.EVT_CHECKBOX, self._on_property)
+        self.threshold.Bind(wx.EVT_SLIDER, self._on_property)
+        self.fade.Bind(wx.EVT_CHOICE, self._on_property)
+
+    def property_range(self, expression):
+        """The range of a property: the sum of its channels' ranges, at
+        most 0..100 where all are in %; None for an unknown channel."""
+        by_name = {c.name: c for c in self.channels}
+        parts = [p.strip() for p in expression.split("+")]
+        if not all(p in by_name for p in parts):
+            return None
+        low = sum(by_name[p].low for p in parts)
+        high = sum(by_name[p].high for p in parts)
+        if all(by_name[p].unit == "%" for p in parts):
+            low, high = max(0.0, low), min(100.0, high)
+        return low, max(high, low)
+
+    def _on_property(self, event):
+        expression = self.property.GetValue().strip()
+        limits = self.property_range(expression) if expression else None
+        self.state.property = expression if limits else ""
+        self.state.color_by_property = self.color_by.GetValue()
+        if limits and event.GetEventObject() is self.property:
+            self.threshold.SetRange(int(limits[0]), max(int(limits[0]) + 1,
+                                                        int(round(limits[1]))))
+        self.state.threshold = (float(self.threshold.GetValue())
+                                if limits and self.select_on.GetValue() else None)
+        choice = self.fade.GetSelection()
+        self.state.fade = self.channels[choice - 1].name if choice > 0 else ""
+        self.log.write("property", property=self.state.property,
+                       threshold=self.state.threshold, fade=self.state.fade)
+        if isinstance(event.GetEventObject(), wx.Slider):
+            self._moving()
+        else:
+            self.request_frame(True)
+
+    def on_click(self, x, y):
+        """A click on the view: what lies under that pixel, then the
+        profile of its column (r3.sbrt.what on a thread)."""
+        self.on_still()
+        width, height = self.canvas.GetClientSize()
+        words = self.state.words(width, height)
+        self.SetStatusText(_("Looking under the pointer..."), 0)
+        self.thread.pick(words, y, x, lambda pick, error: wx.CallAfter(
+            self._on_pick, pick, error))
+
+    def _on_pick(self, pick, error):
+        if self._closing:
+            return
+        if error or pick is None:
+            self.SetStatusText(error or _("Nothing under the pointer"), 0)
+            return
+        self.log.write("pick", x=pick.x, y=pick.y, z=pick.z, class_id=pick.class_id)
+        self.SetStatusText(_("Column at %.2f, %.2f (class %d at %.2f)")
+                           % (pick.x, pick.y, pick.class_id, pick.z), 0)
+
+        def work():
+            try:
+                column, failure = read_column(self.state.sbrt, pick.x, pick.y), None
+            except ProfileError as error:
+                column, failure = None, str(error)
+            wx.CallAfter(self._show_profile, column, failure)
+
+        threading.Thread(target=work, daemon=True).start()
+
+    def _show_profile(self, column, failure):
+        if self._closing:
+            return
+        if failure:
+            wx.MessageBox(failure, _("Column profile failed"), wx.OK | wx.ICON_ERROR, self)
+            return
+        self.profile = show_profile(self, column, self.state.strata, self.channels,
+                                    self.state.sbrt)
+        self.log.write("profile", x=column["x"], y=column["y"],
+                       voxels=len(column.get("voxels", [])))
 
     # requests -----------------------------------------------------------
     def request_frame(self, full):

@@ -226,11 +226,16 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
             make_shading(request, drape_.get(), property_.get(), fade_.get()));
 }
 
-const sbrt::PropertyChannels *RenderSession::channels(const RenderRequest &request)
+const sbrt::PropertyChannels *RenderSession::stored_channels(const RenderRequest &request)
 {
     if (!channels_)
         channels_ = sbrt_grass::read_channels_map(request.input.c_str(), *model_);
-    if (!channels_)
+    return channels_.get();
+}
+
+const sbrt::PropertyChannels *RenderSession::channels(const RenderRequest &request)
+{
+    if (!stored_channels(request))
         bad_request(_("SBRT <%s> has no property channels: property= and select= need an "
                       "SBRT imported with properties= (r3.sbrt.convert file=... "
                       "properties=...)"),

@@ -61,6 +61,9 @@ public:
     const sbrt::PropertyPaint *property() const { return property_.get(); }
     /// The uncertainty fade (fade=), or null.
     const sbrt::UncertaintyFade *fade() const { return fade_.get(); }
+    /// The property channels of the loaded model (read once), or null for
+    /// a model without them.
+    const sbrt::PropertyChannels *stored_channels(const RenderRequest &request);
 
 private:
     /// Forgets the prepared scene, its renderer and backend.

@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "request_line.hpp"
 
+#include <cstdlib>
 #include <cstring>
 
 #include "request_error.hpp"
@@ -30,15 +31,35 @@ RequestLine RequestLineReader::read(const std::string &line)
         bad_request(_("the request holds a NUL byte; a request is one line of text"));
     std::vector<std::string> words = split_words(line);
     if (words.empty())
-        bad_request(_("empty request: render key=value..., classes input=NAME or quit"));
+        bad_request(_("empty request: render key=value..., classes input=NAME, "
+                      "pick ROW COL key=value... or quit"));
     RequestLine out;
     if (words[0] == "quit")
         return out;
-    if (words[0] != "render" && words[0] != "classes")
-        bad_request(_("unknown request <%s>: render, classes or quit"),
+    if (words[0] != "render" && words[0] != "classes" && words[0] != "pick")
+        bad_request(_("unknown request <%s>: render, classes, pick or quit"),
                     shortened(words[0], 100).c_str());
-    out.verb = words[0] == "render" ? RequestLine::Verb::render : RequestLine::Verb::classes;
+    out.verb = words[0] == "render"    ? RequestLine::Verb::render
+               : words[0] == "classes" ? RequestLine::Verb::classes
+                                       : RequestLine::Verb::pick;
     words.erase(words.begin());
+    if (out.verb == RequestLine::Verb::pick) {
+        // the pixel: two whole numbers before the options
+        auto pixel = [&](const char *what) {
+            if (words.empty())
+                bad_request(_("pick: give the pixel's row and column, then the view's "
+                              "options"));
+            char *end = nullptr;
+            const long v = std::strtol(words[0].c_str(), &end, 10);
+            if (words[0].empty() || *end || v < 0 || v > 1000000)
+                bad_request(_("pick: %s <%s> is not a pixel index"), what,
+                            shortened(words[0], 100).c_str());
+            words.erase(words.begin());
+            return int(v);
+        };
+        out.pick_row = pixel("row");
+        out.pick_col = pixel("column");
+    }
     for (const char *key : OUTPUT_KEYS)
         for (const std::string &word : words)
             if (word.compare(0, std::strlen(key) + 1, std::string(key) + "=") == 0)

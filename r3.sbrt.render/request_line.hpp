@@ -17,8 +17,9 @@
 
 /// \brief What a request line asks for.
 struct RequestLine {
-    enum class Verb { render, classes, quit } verb = Verb::quit;
-    RenderRequest request; ///< with render and classes
+    enum class Verb { render, classes, pick, quit } verb = Verb::quit;
+    RenderRequest request; ///< with render, classes and pick
+    int pick_row = 0, pick_col = 0; ///< with pick: the pixel of the view
 };
 
 /// \brief Reads request lines against the module's options (their answers
@@ -31,6 +32,8 @@ public:
     /// sbrt::Error naming what is wrong: a NUL byte, an empty line, an
     /// unknown verb, an unknown, repeated or refused option (outputs,
     /// frames=, tile=, rules=-), or a value the command line refuses.
+    /// "pick ROW COL key=value..." asks what the view's pixel (ROW, COL)
+    /// hits.
     RequestLine read(const std::string &line);
 
 private:

@@ -6,6 +6,7 @@
 #include "view_server.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -17,6 +18,7 @@
 #include <glm/geometric.hpp>
 
 #include "image_memory.hpp"
+#include "model/material_table.hpp"
 #include "render_session.hpp"
 #include "request_line.hpp"
 #include "request_error.hpp"
@@ -37,6 +39,7 @@ public:
 
     void render(const RenderRequest &request);
     void classes(const RenderRequest &request);
+    void pick(const RenderRequest &request, int row, int col);
     void error(const std::string &message);
 
 private:
@@ -97,11 +100,66 @@ void ViewServer::classes(const RenderRequest &request)
     std::fprintf(out_, "model %.17g %.17g %.17g %.17g %.17g %.17g\n", f.north, f.south,
                  f.east, f.west, f.bottom, f.top);
     std::fprintf(out_, "classes %zu\n", model.materials().size());
-    for (const sbrt::Material &m : model.materials()) {
+    // the colours a render draws (the palette's where a class has none)
+    for (uint32_t i = 0; i < model.materials().size(); ++i) {
+        const sbrt::Material &m = model.materials()[i];
         std::string label = m.label;
         std::replace(label.begin(), label.end(), '\n', ' ');
-        std::fprintf(out_, "%d %d %d %d %s\n", m.id, m.red, m.green, m.blue, label.c_str());
+        const std::array<uint8_t, 3> rgb = sbrt::material_color(model, i);
+        std::fprintf(out_, "%d %d %d %d %s\n", m.id, rgb[0], rgb[1], rgb[2], label.c_str());
     }
+    // the property channels: least and greatest value as meant, then
+    // name|unit|long name
+    const sbrt::PropertyChannels *channels = session_.stored_channels(whole);
+    const size_t count = channels ? channels->size() : 0;
+    std::fprintf(out_, "channels %zu\n", count);
+    for (size_t c = 0; c < count; ++c) {
+        const sbrt::ChannelInfo &info = channels->info(c);
+        std::string text = info.name + "|" + info.unit + "|" + info.long_name;
+        std::replace(text.begin(), text.end(), '\n', ' ');
+        const double a = info.physical(float(info.min)), b = info.physical(float(info.max));
+        std::fprintf(out_, "%.9g %.9g %s\n", std::min(a, b), std::max(a, b), text.c_str());
+    }
+    std::fflush(out_);
+}
+
+void ViewServer::pick(const RenderRequest &request, int row, int col)
+{
+    struct Cell_head region;
+    G_get_window(&region);
+    session_.load(request, region);
+    const sbrt::Camera camera = session_.cameras(request, region).front();
+    if (row >= camera.rows() || col >= camera.cols())
+        bad_request(_("pick: pixel (%d, %d) is outside the %d x %d view"), row, col,
+                    camera.cols(), camera.rows());
+    // that pixel alone, with the very ray it has in the whole view
+    const sbrt::Camera pixel = camera.window(row, 1, col, 1);
+    session_.prepare(request, pixel, false);
+    sbrt::Outputs outputs;
+    outputs.material = outputs.elevation = outputs.depth = true;
+    outputs.value = !request.property.empty();
+    int32_t material = sbrt::NULL_CLASS;
+    double depth = NAN, value = NAN;
+    session_.render(pixel, outputs, [&](const sbrt::Band &band) {
+        material = band.material[0];
+        depth = band.depth[0];
+        if (!band.value.empty())
+            value = band.value[0];
+    });
+    if (material == sbrt::NULL_CLASS || !std::isfinite(depth)) {
+        std::fprintf(out_, "hit none\n");
+        std::fflush(out_);
+        return;
+    }
+    // the hit in map coordinates: along the ray, unexaggerated
+    const sbrt::CoordinateFrame &frame = session_.frame();
+    const sbrt::Ray ray = camera.ray(row, col);
+    const glm::dvec3 origin = frame.unexaggerate(ray.origin);
+    const glm::dvec3 along = glm::normalize(frame.unexaggerate(ray.origin + ray.direction) -
+                                            origin);
+    const glm::dvec3 hit = origin + along * depth;
+    std::fprintf(out_, "hit %.17g %.17g %.17g %d %.17g\n", hit.x, hit.y, hit.z, material,
+                 value);
     std::fflush(out_);
 }
 
@@ -145,6 +203,8 @@ void serve_views(const RenderOptions &options, FILE *in, FILE *out)
                 break;
             if (request.verb == RequestLine::Verb::render)
                 server.render(request.request);
+            else if (request.verb == RequestLine::Verb::pick)
+                server.pick(request.request, request.pick_row, request.pick_col);
             else
                 server.classes(request.request);
         }

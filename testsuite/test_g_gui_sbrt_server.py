@@ -7,7 +7,10 @@ PURPOSE:   The view server of g.gui.sbrt (r3.sbrt.render --serve) through
            sides (the prepared scene kept or rebuilt as it must); errors
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
+import json
+import os
 import subprocess
+import tempfile
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
@@ -15,6 +18,12 @@ from grass.gunittest.main import test
 from geomodel_fixture import set_up_t_model
 from viewer_fixture import read_rgb_maps
 from view_client import ServerError, ViewServer
+from column_profile import profile_figure, read_column
+import grass.script as gs
+
+# a model with a property channel: classes up to a ground level (r3.mapcalc
+# counts row(), col() and depth() from 1, depth 1 at the bottom), P in %
+GROUND = "(6 + (row() * 3 + col() * 2) % 5)"
 
 
 class TestViewServer(TestCase):
@@ -130,6 +139,124 @@ class TestViewServer(TestCase):
             self.server.render(["input=no_such_sbrt"])
         frame = self.server.render(["input=geo", "size=40,30"])
         self.assertEqual(len(frame.rgb), 40 * 30 * 3)
+
+
+
+class TestViewServerChannels(TestCase):
+    """The channels the viewer offers, what a click hits (pick) and the
+    column profile it then draws."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.set_model_region()
+        cls.runModule("r3.mapcalc", overwrite=True,
+                      expression=f"vlith = if(depth() > {GROUND}, null(), "
+                                 "1 + (depth() / 3 + col() / 4) % 3)")
+        cls.runModule("r3.mapcalc", overwrite=True,
+                      expression="vprob = float((row() * 13 + col() * 7 + depth() * 3) % 101)")
+        cls.runModule("r3.support", map="vprob", unit="%", title="P(sand)")
+        subprocess.run(["r3.sbrt.convert", "input=vlith", "properties=vprob",
+                        "output=vlith", "--overwrite", "--quiet"], check=True)
+        cls.server = ViewServer()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.server.close()
+        cls.runModule("r3.sbrt.manage", flags="f", remove="vlith")
+        cls.del_temp_region()
+
+    @classmethod
+    def set_model_region(cls):
+        cls.runModule("g.region", n=1000, s=0, e=1200, w=0, t=24, b=0, res=100, res3=100,
+                      tbres=2)
+
+    def test_model_lists_the_channels(self):
+        extent, strata, channels = self.server.model("vlith")
+        self.assertEqual([s.id for s in strata if s.id > 0], [1, 2, 3])
+        self.assertEqual(len(channels), 1)
+        listing = gs.read_command("r3.sbrt.convert", flags="g", sbrt="vlith")
+        fields = dict(f.split("=", 1) for f in listing.splitlines()[-1].split("|"))
+        self.assertEqual(channels[0].name, "vprob")
+        self.assertEqual(channels[0].unit, "%")
+        self.assertEqual(channels[0].long_name, "P(sand)")
+        self.assertEqual((channels[0].low, channels[0].high),
+                         (float(fields["min"]), float(fields["max"])))
+
+    def test_top_view_pick_is_the_cell_and_its_top_voxel(self):
+        """A top view's pixel (row, col) is cell (row, col): the pick is its
+        centre at the column's top, with the top layer's class and the
+        channel's value at the top voxel (r3.sbrt.what's log)."""
+        words = ["input=vlith", "view=top", "property=vprob"]
+        for row, col in ((0, 0), (3, 7), (9, 11), (5, 2)):
+            pick = self.server.pick(words, row, col)
+            self.assertAlmostEqual(pick.x, 50 + 100 * col, places=6)
+            self.assertAlmostEqual(pick.y, 950 - 100 * row, places=6)
+            column = read_column("vlith", pick.x, pick.y)
+            self.assertAlmostEqual(pick.z, column["intervals"][0]["top"], places=6)
+            self.assertEqual(pick.class_id, column["intervals"][0]["class"])
+            self.assertEqual(pick.value, column["voxels"][0]["values"]["vprob"])
+        with self.assertRaisesRegex(ServerError, "outside the 12 x 10 view"):
+            self.server.pick(words, 10, 0)
+        with self.assertRaisesRegex(ServerError, "not a pixel index"):
+            self.server.pick(words, -1, 0)
+
+    def test_perspective_pick_lies_on_its_column(self):
+        """A perspective click: the hit lies within its column's layers, on
+        the layer of its class (a face between layers belongs to either)."""
+        words = ["input=vlith", "size=160,120", "zexag=20", "azimuth=200",
+                 "elevation=35"]
+        hits = 0
+        for row, col in ((60, 80), (50, 60), (70, 100), (40, 90)):
+            pick = self.server.pick(words, row, col)
+            if pick is None:
+                continue
+            hits += 1
+            column = read_column("vlith", pick.x, pick.y)
+            layers = [i for i in column["intervals"]
+                      if i["bottom"] - 1e-6 <= pick.z <= i["top"] + 1e-6]
+            self.assertIn(pick.class_id, [i["class"] for i in layers], (row, col, pick))
+        self.assertGreaterEqual(hits, 3)
+        # a pixel of the sky
+        self.assertIsNone(self.server.pick(words, 0, 0))
+
+    def test_property_frames_are_the_command_lines(self):
+        """What the viewer's property controls ask for: colour by a channel,
+        a selection threshold, a fade; each frame as the command line's."""
+        for extra, name in ((["property=vprob"], "vp_a"),
+                            (["property=vprob", "select=vprob>=60"], "vp_b"),
+                            (["fade=vprob", "fade_range=0,100"], "vp_c")):
+            words = ["input=vlith", "size=90,70", "zexag=20"] + extra
+            frame = self.server.render(words)
+            subprocess.run(["r3.sbrt.render"] + words + ["output=" + name, "--overwrite",
+                                                         "--quiet"], check=True)
+            self.runModule("g.region", raster=name + ".red")
+            cols, rows, rgb = read_rgb_maps(name)
+            self.set_model_region()
+            self.assertEqual(bytes(rgb), bytes(frame.rgb), name)
+
+    def test_profile_draws_every_voxel(self):
+        """The profile's channel line is the column's values voxel by voxel
+        (a step: top and bottom of each), its class strip the layers."""
+        _extent, strata, channels = self.server.model("vlith")
+        column = read_column("vlith", 750, 350)
+        figure = profile_figure(column, strata, channels, "vlith")
+        strip, panel = figure.axes
+        self.assertEqual(len(strip.patches), len(column["intervals"]))
+        line = panel.get_lines()[0]
+        self.assertEqual(line.get_label(), "vprob")
+        expected = []
+        for voxel in column["voxels"]:
+            expected += [voxel["values"]["vprob"]] * 2
+        self.assertEqual(list(line.get_xdata()), expected)
+        self.assertEqual(panel.get_xlabel(), "%")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "profile.png")
+            figure.savefig(path)
+            self.assertGreater(os.path.getsize(path), 5000)
+        out = os.environ.get("SBRT_PROFILE_PNG")
+        if out:  # for a person to look at
+            figure.savefig(out)
 
 
 if __name__ == "__main__":

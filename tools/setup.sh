@@ -17,6 +17,7 @@ packages=(
     valgrind                         # memcheck of the modules
     libpng-dev                       # the PNG file of a render
     python3-pil                      # tests read the PNG back with a real decoder
+    python3-matplotlib               # g.gui.sbrt's column profile
     netcdf-bin                       # ncgen writes the NetCDF files of the import tests
     libcairo2-dev fonts-dejavu-core  # the PNG's annotations: legend, north arrow, scale bar
     ffmpeg                           # video= of an animation (and ffprobe in its test)
