@@ -8,6 +8,7 @@ COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 
 import json
+import re
 import subprocess
 
 from matplotlib.figure import Figure
@@ -46,6 +47,24 @@ def channel_panels(channels):
     return panels
 
 
+def probability_classes(members, strata):
+    """The class id of each channel of a panel where the panel holds the
+    probabilities of classes, in %, named NAME_ID after the classes (as
+    GeoTOP's kans_1 ... kans_9): then they are drawn stacked in the
+    classes' colours, as DINOloket's column view does; else None."""
+    ids = {s.id for s in strata}
+    classes = []
+    for channel in members:
+        match = re.search(r"_(\d+)$", channel.name)
+        if channel.unit != "%" or not match:
+            return None
+        classes.append(int(match.group(1)))
+    # a class the model never has (GeoTOP's unused lithoclass 4) may have
+    # its channel; most must be the model's classes
+    known = sum(1 for c in classes if c in ids)
+    return classes if len(classes) > 1 and 2 * known > len(classes) else None
+
+
 def voxel_steps(voxels, name):
     """A channel down the column as a step line: (values, heights), two
     points a voxel (its top and bottom), None where it has no value."""
@@ -74,11 +93,15 @@ def profile_figure(column, strata, channels, title=""):
         strip.add_patch(Rectangle((0, interval["bottom"]), 1, interval["thickness"],
                                   facecolor=colours.get(interval["class"], (0.6, 0.6, 0.6)),
                                   edgecolor="black", linewidth=0.4))
-        # the class id and label on the layer, where it is tall enough
-        label = ("%d %s" % (interval["class"], labels.get(interval["class"], ""))).strip()
-        strip.text(0.5, (interval["top"] + interval["bottom"]) / 2, label, fontsize=7,
-                   ha="center", va="center", clip_on=True,
-                   bbox={"facecolor": "white", "alpha": 0.6, "linewidth": 0, "pad": 1})
+        # the class id (and label, where the layer is tall enough) on it
+        share = interval["thickness"] / max(1e-9, intervals[0]["top"] - intervals[-1]["bottom"])
+        if share >= 0.015:
+            label = str(interval["class"])
+            if share >= 0.05 and labels.get(interval["class"]):
+                label += " " + labels[interval["class"]][:14]
+            strip.text(0.5, (interval["top"] + interval["bottom"]) / 2, label, fontsize=7,
+                       ha="center", va="center", clip_on=True,
+                       bbox={"facecolor": "white", "alpha": 0.6, "linewidth": 0, "pad": 1})
     strip.set_xlim(0, 1)
     strip.set_xticks([])
     strip.set_ylabel("elevation (map units)")
@@ -88,17 +111,41 @@ def profile_figure(column, strata, channels, title=""):
         margin = 0.02 * max(top - bottom, 1e-9)
         strip.set_ylim(bottom - margin, top + margin)
     for ax, (unit, members) in zip(axes[1:], panels):
-        for channel in members:
-            values, heights = voxel_steps(column["voxels"], channel.name)
-            ax.plot([float("nan") if v is None else v for v in values], heights,
-                    label=channel.name, linewidth=1.2)
+        classes = probability_classes(members, strata)
+        if classes:
+            draw_stacked(ax, column["voxels"], members, classes, colours)
+        else:
+            for channel in members:
+                values, heights = voxel_steps(column["voxels"], channel.name)
+                ax.plot([float("nan") if v is None else v for v in values], heights,
+                        label=channel.name, linewidth=1.2)
         ax.set_xlabel(unit or "value")
         ax.grid(True, linewidth=0.3)
-        ax.legend(fontsize=7, loc="best")
-    where = "x %s, y %s" % (column["x"], column["y"])
+        if classes:  # below the panel: the stack fills it
+            ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=3)
+        else:
+            ax.legend(fontsize=7, loc="best")
+    where = "x %.2f, y %.2f" % (column["x"], column["y"])
     figure.suptitle(("%s: " % title if title else "") + where, fontsize=10)
     figure.tight_layout()
     return figure
+
+
+def draw_stacked(ax, voxels, members, classes, colours):
+    """Probabilities of classes stacked left to right, voxel by voxel, in
+    the classes' colours (0 to 100 % where they sum to 100)."""
+    heights = []
+    for voxel in voxels:
+        heights += [voxel["top"], voxel["bottom"]]
+    left = [0.0] * len(heights)
+    for channel, class_id in zip(members, classes):
+        values, _heights = voxel_steps(voxels, channel.name)
+        right = [a + (v or 0.0) for a, v in zip(left, values)]
+        if any(v for v in values):
+            ax.fill_betweenx(heights, left, right, color=colours.get(class_id, (0.6,) * 3),
+                             linewidth=0, label=channel.name)
+        left = right
+    ax.set_xlim(0, max(100.0, max(left, default=0)))
 
 
 def show_profile(parent, column, strata, channels, title):

@@ -120,6 +120,9 @@ class ViewerFrame(wx.Frame):
         self.legend.SetValue(True)
         view.Add(self.legend)
 
+        if self.channels:  # survey models: what they carry beside the classes
+            self._make_property_controls(parent, sizer)
+
         strata = self._box(parent, sizer, _("Strata"))
         self.strata = StrataPanel(parent, self.state, self.on_scene)
         self.strata.SetMinSize((300, min(360, 60 + 22 * len(self.state.strata))))
@@ -157,9 +160,6 @@ class ViewerFrame(wx.Frame):
         self.borehole_radius = wx.SpinCtrlDouble(parent, min=0, max=1e6, initial=0, inc=5)
         radius.Add(self.borehole_radius)
         wells.Add(radius)
-
-        if self.channels:
-            self._make_property_controls(parent, sizer)
 
         drape = self._box(parent, sizer, _("Drape"))
         self.texture = Select(parent, type="raster", size=(280, -1))
@@ -241,6 +241,7 @@ class ViewerFrame(wx.Frame):
         self.state.fade = self.channels[choice - 1].name if choice > 0 else ""
         self.log.write("property", property=self.state.property,
                        threshold=self.state.threshold, fade=self.state.fade)
+        self._update_legend()
         if isinstance(event.GetEventObject(), wx.Slider):
             self._moving()
         else:
@@ -378,9 +379,29 @@ class ViewerFrame(wx.Frame):
                            rect=list(self.strata.checkbox_rect(row)))
         toolbar = self.GetToolBar()
         self.log.write("widget", name="toolbar", rect=rect(toolbar))
+        if self.channels:
+            for name in ("property", "color_by", "select_on", "threshold", "fade"):
+                self.log.write("widget", name=name, rect=rect(getattr(self, name)))
 
     # controls -----------------------------------------------------------
     def _update_legend(self):
+        limits = (self.property_range(self.state.property)
+                  if self.state.property and self.state.color_by_property else None)
+        if limits:
+            # the property's colour bar: r3.sbrt.render's default ramp
+            # (viridis) over the property's range, highest first
+            from matplotlib import colormaps
+
+            ramp = colormaps["viridis"]
+            unit = self.channels[[c.name for c in self.channels].index(
+                self.state.property.split("+")[0].strip())].unit
+            self.canvas.legend = [
+                (tuple(int(round(255 * c)) for c in ramp(share)[:3]),
+                 "%s %g %s" % (self.state.property if share == 1.0 else "",
+                               limits[0] + share * (limits[1] - limits[0]), unit))
+                for share in (1.0, 0.75, 0.5, 0.25, 0.0)]
+            self.canvas.Refresh(eraseBackground=False)
+            return
         self.canvas.legend = [
             (s.rgb, ("%d %s" % (s.id, s.label)).strip())
             for s in self.state.strata

@@ -112,6 +112,59 @@ class TestViewState(TestCase):
         state.drape = True
         self.assertEqual(word(state.words(10, 10), "texture"), "ortho")
 
+    def test_property_words(self):
+        """Colour by a property, its selection threshold, a fade: each its
+        own option; the selection names the property (a sum too)."""
+        state = make_state()
+        words = state.words(10, 10)
+        for key in ("property", "select", "fade"):
+            self.assertIsNone(word(words, key))
+        state.property = "kans_5+kans_6"
+        self.assertEqual(word(state.words(10, 10), "property"), "kans_5+kans_6")
+        self.assertIsNone(word(state.words(10, 10), "select"))
+        state.threshold = 60.0
+        self.assertEqual(word(state.words(10, 10), "select"), "kans_5+kans_6>=60")
+        state.color_by_property = False  # class colours, a probability shell
+        words = state.words(10, 10)
+        self.assertIsNone(word(words, "property"))
+        self.assertEqual(word(words, "select"), "kans_5+kans_6>=60")
+        state.fade = "onz_lk"
+        self.assertEqual(word(state.words(10, 10), "fade"), "onz_lk")
+        state.property = ""
+        words = state.words(10, 10)
+        self.assertIsNone(word(words, "select"))
+        self.assertEqual(word(words, "fade"), "onz_lk")
+
+    def test_profile_stacks_class_probabilities(self):
+        """Channels NAME_ID in % of the model's classes are stacked in the
+        classes' colours, voxel by voxel; other channels are lines."""
+        from column_profile import probability_classes, profile_figure
+        from view_client import Channel, Stratum
+
+        strata = [Stratum(1, (255, 0, 0), "clay"), Stratum(2, (0, 0, 255), "sand")]
+        kans = [Channel("kans_1", "%", "", 0, 100), Channel("kans_2", "%", "", 0, 100)]
+        other = [Channel("onz_lk", "", "", 0, 100)]
+        self.assertEqual(probability_classes(kans, strata), [1, 2])
+        self.assertIsNone(probability_classes(other, strata))
+        self.assertIsNone(probability_classes(kans[:1], strata))
+        voxels = [{"level": 1, "top": 2.0, "bottom": 1.0, "class": 2,
+                   "values": {"kans_1": 30.0, "kans_2": 70.0, "onz_lk": 40.0}},
+                  {"level": 0, "top": 1.0, "bottom": 0.0, "class": 1,
+                   "values": {"kans_1": 90.0, "kans_2": 10.0, "onz_lk": None}}]
+        column = {"x": 1.0, "y": 2.0, "voxels": voxels, "intervals": [
+            {"class": 2, "top": 2.0, "bottom": 1.0, "thickness": 1.0},
+            {"class": 1, "top": 1.0, "bottom": 0.0, "thickness": 1.0}]}
+        figure = profile_figure(column, strata, kans + other)
+        strip, stacked, lines = figure.axes
+        fills = stacked.collections
+        self.assertEqual([f.get_label() for f in fills], ["kans_1", "kans_2"])
+        self.assertEqual(tuple(fills[0].get_facecolor()[0][:3]), (1.0, 0.0, 0.0))
+        # kans_2 spans from kans_1's value to 100 at each voxel
+        xs = sorted({round(float(x), 6) for x in fills[1].get_paths()[0].vertices[:, 0]})
+        self.assertEqual(xs, [30.0, 90.0, 100.0])
+        line = lines.get_lines()[0]
+        self.assertEqual([str(v) for v in line.get_xdata()], ["40.0", "40.0", "nan", "nan"])
+
     def test_command_line_is_the_words(self):
         state = make_state()
         state.sbrt = "model@other mapset"
