@@ -87,6 +87,16 @@ class ViewServer:
             raise ServerError(head[len("error ") :])
         return head.split()
 
+    def _lines(self, count):
+        """The next `count` lines of a reply, as text."""
+        lines = []
+        for _number in range(count):
+            line = self._process.stdout.readline()
+            if not line:
+                raise self._stopped()
+            lines.append(line.decode(errors="replace").rstrip("\n"))
+        return lines
+
     def _read(self, count):
         data = self._process.stdout.read(count)
         if len(data) != count:
@@ -120,24 +130,16 @@ class ViewServer:
         SBRT `sbrt`."""
         head = self._ask("classes", ["input=" + sbrt])
         extent = Extent(*[float(v) for v in head[1:7]])
-        count = int(self._line()[1])
         strata = []
-        for _number in range(count):
-            line = self._process.stdout.readline()
-            if not line:
-                raise self._stopped()
-            fields = line.decode(errors="replace").rstrip("\n").split(" ", 4)
+        for text in self._lines(int(self._line()[1])):
+            fields = text.split(" ", 4)
             label = fields[4] if len(fields) > 4 else ""
             strata.append(
                 Stratum(int(fields[0]), tuple(int(v) for v in fields[1:4]), label)
             )
-        count = int(self._line()[1])
         channels = []
-        for _number in range(count):
-            line = self._process.stdout.readline()
-            if not line:
-                raise self._stopped()
-            low, high, text = line.decode(errors="replace").rstrip("\n").split(" ", 2)
+        for line in self._lines(int(self._line()[1])):
+            low, high, text = line.split(" ", 2)
             name, unit, long_name = (text.split("|", 2) + ["", ""])[:3]
             channels.append(Channel(name, unit, long_name, float(low), float(high)))
         return extent, strata, channels

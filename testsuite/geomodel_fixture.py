@@ -16,6 +16,13 @@ MAKE_GEOMODEL = os.path.join(HERE, "..", "tools", "make_geomodel.sh")
 T_DEPTHS = 64
 
 
+def error_of(*args):
+    """A module run's return code and its messages, one space between words
+    (GRASS wraps them at 80 columns)."""
+    run = subprocess.run(args, capture_output=True, text=True)
+    return run.returncode, " ".join(run.stderr.split())
+
+
 def set_up_t_model(case):
     """In a gunittest TestCase's setUpClass: maps geo (3D raster and SBRT),
     sl_00001.. (slices), top_class; the region saved as geo_region."""

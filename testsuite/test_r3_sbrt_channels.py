@@ -17,7 +17,7 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-from geomodel_fixture import Raster3dCompare
+from geomodel_fixture import Raster3dCompare, error_of
 
 FILL = -127
 NX, NY, NZ = 14, 17, 40
@@ -132,11 +132,6 @@ def write_reference(path, f, null_value=None, transform=lambda v: v):
             lines.append(" ".join(row))
     with open(path, "w") as out:
         out.write("\n".join(lines) + "\n")
-
-
-def error_of(*args):
-    run = subprocess.run(args, capture_output=True, text=True)
-    return run.returncode, " ".join(run.stderr.split())
 
 
 class TestChannels(TestCase, Raster3dCompare):

@@ -9,22 +9,16 @@ PURPOSE:   Property channels from 3D raster maps (issue 29, item 2):
            are refused by name
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
-import subprocess
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-from geomodel_fixture import Raster3dCompare
+from geomodel_fixture import Raster3dCompare, error_of
 
 # r3.mapcalc's row(), col() and depth() count from 1, depth 1 at the bottom
 GROUND = "(5 + (row() * 3 + col() * 2) % 7)"
 CAVE = "(depth() == 4 && (row() + col()) % 3 == 0)"
-
-
-def error_of(*args):
-    run = subprocess.run(args, capture_output=True, text=True)
-    return run.returncode, " ".join(run.stderr.split())
 
 
 class TestRasterChannels(TestCase, Raster3dCompare):
