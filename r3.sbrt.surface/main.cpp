@@ -18,7 +18,8 @@
 namespace {
 
 struct Options {
-    Option *input, *classes, *top, *base, *thickness, *layers, *depth, *nprocs;
+    Option *input, *classes, *top, *base, *thickness, *layers, *depth, *probability,
+        *expected_thickness, *nprocs;
 };
 
 Option *define_output(const char *key, const char *description)
@@ -40,7 +41,7 @@ Options define_options()
     o.classes->type = TYPE_STRING;
     o.classes->key_desc = "class";
     o.classes->multiple = YES;
-    o.classes->required = YES;
+    o.classes->required = NO;
     o.classes->label = _("Classes of the set: class ids or labels");
     o.classes->description = _("Labels are compared without regard to case");
 
@@ -53,8 +54,30 @@ Options define_options()
     o.depth = define_output("depth",
                             _("Depth of the set's top below the model's surface (the "
                               "column's highest solid top)"));
+    o.probability = G_define_option();
+    o.probability->key = "probability";
+    o.probability->type = TYPE_STRING;
+    o.probability->key_desc = "channel[+channel...]";
+    o.probability->required = NO;
+    o.probability->label = _("Probability channel (in %), or a sum of them, e.g. "
+                             "kans_5+kans_6+kans_7");
+    o.probability->description = _("Property channels of the SBRT (r3.sbrt.convert "
+                                   "properties=)");
+    o.probability->guisection = _("Probability");
+    o.expected_thickness = define_output(
+        "expected_thickness", _("Expected thickness: the sum over the column's voxels of "
+                                "probability / 100 times the voxel height"));
+    o.expected_thickness->guisection = _("Probability");
     o.nprocs = sbrt_grass::define_nprocs();
-    G_option_required(o.top, o.base, o.thickness, o.layers, o.depth, NULL);
+    G_option_required(o.top, o.base, o.thickness, o.layers, o.depth, o.expected_thickness,
+                      NULL);
+    G_option_requires(o.expected_thickness, o.probability, NULL);
+    G_option_requires(o.probability, o.expected_thickness, NULL);
+    G_option_requires(o.top, o.classes, NULL);
+    G_option_requires(o.base, o.classes, NULL);
+    G_option_requires(o.thickness, o.classes, NULL);
+    G_option_requires(o.layers, o.classes, NULL);
+    G_option_requires(o.depth, o.classes, NULL);
     return o;
 }
 
@@ -72,6 +95,8 @@ SurfaceRequest read_options(const Options &o)
     r.thickness = answer(o.thickness);
     r.layers = answer(o.layers);
     r.depth = answer(o.depth);
+    r.probability = answer(o.probability);
+    r.expected_thickness = answer(o.expected_thickness);
     r.threads = sbrt_grass::read_nprocs(o.nprocs);
     return r;
 }
@@ -86,6 +111,7 @@ int main(int argc, char *argv[])
     G_add_keyword(_("geology"));
     G_add_keyword(_("thickness"));
     G_add_keyword(_("isopach"));
+    G_add_keyword(_("probability"));
     G_add_keyword(_("SBRT"));
     module->label = _("Tops, bases, thickness, layers and depth of a class set of an SBRT "
                       "as 2D raster maps.");

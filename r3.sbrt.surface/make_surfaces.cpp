@@ -6,14 +6,18 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <vector>
 
 #include "measure/centre_sampling.hpp"
 #include "measure/class_set.hpp"
 #include "measure/column_figures.hpp"
+#include "measure/expected_thickness.hpp"
 #include "sbrt_store.hpp"
 #include "surface.hpp"
 #include "surface_maps.hpp"
+#include "util/error.hpp"
 #include "util/parallel.hpp"
 
 namespace {
@@ -38,9 +42,24 @@ void make_surfaces(const SurfaceRequest &request)
     struct Cell_head region;
     G_get_window(&region);
     const sbrt::Model model = read_model(request, region);
-    const sbrt::ClassSet set = sbrt::ClassSet::named(model, request.classes);
-    const std::string described = set.describe(model);
-    G_verbose_message(_("Classes of the set: %s"), described.c_str());
+    const bool by_classes = !request.classes.empty();
+    const sbrt::ClassSet set =
+        by_classes ? sbrt::ClassSet::named(model, request.classes) : sbrt::ClassSet();
+    const std::string described = by_classes ? set.describe(model) : "";
+    if (by_classes)
+        G_verbose_message(_("Classes of the set: %s"), described.c_str());
+    // expected_thickness=: the probability's channels (only their blocks
+    // under the region are decoded)
+    std::shared_ptr<const sbrt::PropertyChannels> channels;
+    std::vector<size_t> summed;
+    if (!request.expected_thickness.empty()) {
+        channels = sbrt_grass::read_channels_map(request.input.c_str(), model);
+        if (!channels)
+            sbrt::fail("SBRT <", request.input, "> has no property channels: "
+                       "expected_thickness= needs probabilities per voxel (import with "
+                       "r3.sbrt.convert properties=)");
+        summed = sbrt::probability_channels(*channels, request.probability);
+    }
     const sbrt::CentreSampling sampling = sbrt::sample_at_centres(
         model.frame(),
         {region.north, region.south, region.east, region.west, region.rows, region.cols});
@@ -50,6 +69,8 @@ void make_surfaces(const SurfaceRequest &request)
     const int block = block_rows(region.cols);
     std::vector<sbrt::MapFigures> figures(size_t(block) * cols);
     std::vector<unsigned char> present(size_t(block) * cols);
+    std::vector<double> expected(channels ? size_t(block) * cols : 0);
+    const double voxel_height = model.frame().tb_res();
     for (int first = 0; first < region.rows; first += block) {
         G_percent(first, region.rows, 2);
         const int rows = std::min(block, region.rows - first);
@@ -59,10 +80,18 @@ void make_surfaces(const SurfaceRequest &request)
                 const size_t at = size_t(k) * cols + c;
                 const int model_col = sampling.model_col[c];
                 present[at] = 0;
+                if (channels)
+                    expected[at] = NAN;
                 if (model_row < 0 || model_col < 0)
                     continue;
+                const uint64_t cell = model.cell_index(model_row, model_col);
+                if (channels)
+                    expected[at] = sbrt::expected_thickness(*channels, summed, cell,
+                                                            voxel_height);
+                if (!by_classes)
+                    continue;
                 const sbrt::ColumnFigures f =
-                    sbrt::column_figures(model, model.cell_index(model_row, model_col), set);
+                    sbrt::column_figures(model, cell, set);
                 if (!f.present())
                     continue;
                 present[at] = 1;
@@ -70,7 +99,8 @@ void make_surfaces(const SurfaceRequest &request)
             }
         });
         for (int k = 0; k < rows; ++k)
-            maps.put_row(figures.data() + size_t(k) * cols, present.data() + size_t(k) * cols);
+            maps.put_row(figures.data() + size_t(k) * cols, present.data() + size_t(k) * cols,
+                         channels ? expected.data() + size_t(k) * cols : nullptr);
     }
     G_percent(1, 1, 1);
     maps.close(request, described);

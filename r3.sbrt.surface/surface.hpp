@@ -17,6 +17,8 @@ struct SurfaceRequest {
     std::string input;
     std::vector<std::string> classes;
     std::string top, base, thickness, layers, depth;
+    /// expected_thickness= of probability= (channels in %, summed)
+    std::string probability, expected_thickness;
     unsigned threads = 0; ///< 0: all cores
 };
 

@@ -6,6 +6,8 @@
  ****************************************************************************/
 #include "surface_maps.hpp"
 
+#include <cmath>
+
 namespace {
 
 /// Colour table `rules` over the map's range, from `low` where given.
@@ -53,7 +55,8 @@ SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, int cols)
         {Figure::base, &request.base},
         {Figure::thickness, &request.thickness},
         {Figure::layers, &request.layers},
-        {Figure::depth, &request.depth}};
+        {Figure::depth, &request.depth},
+        {Figure::expected, &request.expected_thickness}};
     for (const auto &[figure, name] : asked)
         if (!name->empty()) {
             const int fd = Rast_open_new(name->c_str(),
@@ -83,13 +86,25 @@ double SurfaceMaps::value(Figure figure, const sbrt::MapFigures &f)
         return f.layers;
     case Figure::depth:
         return f.depth;
+    case Figure::expected:
+        break; // not a figure of the class set
     }
     return 0;
 }
 
-void SurfaceMaps::put_row(const sbrt::MapFigures *figures, const unsigned char *present)
+void SurfaceMaps::put_row(const sbrt::MapFigures *figures, const unsigned char *present,
+                          const double *expected)
 {
     for (const Map &map : maps_) {
+        if (map.figure == Figure::expected) {
+            for (int c = 0; c < cols_; ++c)
+                if (std::isnan(expected[c]))
+                    Rast_set_d_null_value(&dcells_[size_t(c)], 1);
+                else
+                    dcells_[size_t(c)] = expected[c];
+            Rast_put_d_row(map.fd, dcells_.data());
+            continue;
+        }
         if (map.figure == Figure::layers) {
             for (int c = 0; c < cols_; ++c)
                 if (present[c])
@@ -142,8 +157,15 @@ void SurfaceMaps::write_metadata(const Map &map, const SurfaceRequest &request,
         what = "Depth below the model's surface of the top";
         write_colors(map.name, "blues", true, false);
         break;
+    case Figure::expected:
+        what = "Expected thickness";
+        write_colors(map.name, "viridis", true, false);
+        break;
     }
-    const std::string title = std::string(what) + " of " + set + " in SBRT " + request.input;
+    const std::string of = map.figure == Figure::expected
+                               ? "probability " + request.probability
+                               : set;
+    const std::string title = std::string(what) + " of " + of + " in SBRT " + request.input;
     Rast_put_cell_title(map.name.c_str(), title.c_str());
     Rast_write_units(map.name.c_str(), map.figure == Figure::layers
                                            ? "layers"
@@ -152,6 +174,7 @@ void SurfaceMaps::write_metadata(const Map &map, const SurfaceRequest &request,
     Rast_short_history(map.name.c_str(), "raster", &history);
     Rast_command_history(&history);
     Rast_format_history(&history, HIST_DATSRC_1, "SBRT %s", request.input.c_str());
-    Rast_format_history(&history, HIST_DATSRC_2, "classes %s", set.c_str());
+    Rast_format_history(&history, HIST_DATSRC_2, "%s%s",
+                        map.figure == Figure::expected ? "" : "classes ", of.c_str());
     Rast_write_history(map.name.c_str(), &history);
 }

@@ -24,14 +24,16 @@ public:
     /// Closes maps left open (an error on the way): they are not kept.
     ~SurfaceMaps();
 
-    /// The next row: figures of each cell, null where !present[col].
-    void put_row(const sbrt::MapFigures *figures, const unsigned char *present);
+    /// The next row: figures of each cell, null where !present[col]; the
+    /// expected thickness of each (NaN: null), where it is asked for.
+    void put_row(const sbrt::MapFigures *figures, const unsigned char *present,
+                 const double *expected);
     /// Closes the maps and writes their metadata; `set` describes the class
     /// set ("1 (Sand), 2 (Clay)").
     void close(const SurfaceRequest &request, const std::string &set);
 
 private:
-    enum class Figure { top, base, thickness, layers, depth };
+    enum class Figure { top, base, thickness, layers, depth, expected };
     struct Map {
         Figure figure;
         std::string name;

@@ -129,6 +129,61 @@ class TestSurfaceAgainstGrassRoute(TestCase):
         self.assertGreater(int(stats["null_cells"]), 9)
         self.assertGreaterEqual(int(stats["max"]), 2)
 
+    def test_expected_thickness_equals_the_grass_route(self):
+        """probability= expected_thickness=: the sum over each column's
+        voxels of (p1 + p2) / 100 times the voxel height, voxels with a
+        null in either adding nothing, caves counted, air not; as r3.mapcalc,
+        r3.to.rast and r.series sum compute it voxel by voxel; null in the
+        empty columns."""
+        air = ("(!(col() >= 27 && row() >= 17) && "
+               "z() > 10 + col() * 0.8 - row() * 0.5)")
+        gs.mapcalc3d(f"p1 = float(if({air} || (row() * col() + depth()) % 13 == 0, null(), "
+                     "(row() * 7 + col() * 3 + depth()) % 41))")
+        gs.mapcalc3d(f"p2 = float(if({air}, null(), (row() + col() * 5 + depth() * 2) % 37))")
+        gs.mapcalc3d("tmp = float(depth())")  # a channel in another unit
+        for name in ("p1", "p2"):
+            gs.run_command("r3.support", map=name, unit="%")
+        gs.run_command("r3.sbrt.convert", input="geo", properties="p1,p2,tmp",
+                       output="geo_prob", quiet=True)
+        gs.mapcalc3d("pe = if(isnull(p1) || isnull(p2), 0, (p1 + p2) / 100.0 * %g)" % TBRES)
+        gs.run_command("r3.to.rast", input="pe", output="sl_pe", quiet=True)
+        # the span ends at the column's highest solid top (surface): a cave
+        # right below the air is no part of it
+        levels = sorted(gs.list_strings("raster", pattern="sl_pe_*"))
+        terms = " + ".join("if(%g < surface, %s, 0)" % (REGION["b"] + (k + 0.5) * TBRES,
+                                                         name.split("@")[0])
+                           for k, name in enumerate(levels))
+        gs.mapcalc("ref_expected = if(isnull(surface), null(), %s)" % terms)
+        self.assertModule("r3.sbrt.surface", input="geo_prob", probability="p1 + p2",
+                          expected_thickness="e_thick")
+        self.assertRastersNoDifference("e_thick", "ref_expected", precision=1e-9)
+        stats = gs.parse_command("r.univar", map="e_thick", flags="g")
+        self.assertEqual(int(stats["null_cells"]), 9)  # the hole
+        self.assertGreater(float(stats["min"]), 0)
+        info = gs.parse_command("r.info", map="e_thick", flags="g")
+        self.assertIn("probability p1 + p2", gs.read_command("r.info", map="e_thick"))
+        self.assertEqual(info["datatype"], "DCELL")
+        # with classes= the other maps come in the same run
+        self.assertModule("r3.sbrt.surface", input="geo_prob", classes="Sand,3",
+                          thickness="e_set", probability="p1", expected_thickness="e_p1")
+        self.assertRastersNoDifference("e_set", "ref_thickness", precision=0)
+        # refused by name: another unit, an unknown channel, a model
+        # without channels, expected_thickness= without probability=, and
+        # thickness= without classes=
+        for options, message in (
+                (dict(input="geo_prob", probability="p1+tmp"), "'tmp' is in"),
+                (dict(input="geo_prob", probability="p9"), "no channel 'p9'; the SBRT has: p1, p2, tmp"),
+                (dict(input="geo_sbrt", probability="p1"), "has no property channels"),
+                (dict(input="geo_prob", probability="p1+p1"), "named twice")):
+            run = gs.Popen(["r3.sbrt.surface", "expected_thickness=bad"] +
+                           ["%s=%s" % kv for kv in options.items()],
+                           stderr=gs.PIPE, text=True)
+            err = " ".join(run.communicate()[1].split())
+            self.assertNotEqual(run.returncode, 0)
+            self.assertIn(message, err)
+        self.assertModuleFail("r3.sbrt.surface", input="geo_prob", expected_thickness="bad")
+        self.assertModuleFail("r3.sbrt.surface", input="geo_prob", thickness="bad")
+
     def test_metadata_history_and_types(self):
         self.assertModule("r3.sbrt.surface", input="geo_sbrt", classes="sand,peat",
                           thickness="m_thick", layers="m_layers")

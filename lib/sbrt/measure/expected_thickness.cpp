@@ -1,0 +1,74 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The expected thickness of a column from probability channels
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "measure/expected_thickness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "util/error.hpp"
+
+namespace sbrt {
+
+std::vector<size_t> probability_channels(const PropertyChannels &channels,
+                                         const std::string &probability)
+{
+    std::vector<size_t> out;
+    std::stringstream parts(probability);
+    std::string name;
+    while (std::getline(parts, name, '+')) {
+        name.erase(0, name.find_first_not_of(" \t"));
+        name.erase(name.find_last_not_of(" \t") + 1);
+        const int index = channels.find(name);
+        if (index < 0) {
+            std::string names;
+            for (const ChannelInfo &c : channels.infos())
+                names += (names.empty() ? "" : ", ") + c.name;
+            fail("probability=", probability, ": no channel '", name, "'; the SBRT has: ",
+                 names);
+        }
+        if (std::find(out.begin(), out.end(), size_t(index)) != out.end())
+            fail("probability=", probability, ": channel '", name, "' is named twice");
+        const ChannelInfo &info = channels.info(size_t(index));
+        if (info.unit != "%")
+            fail("probability=", probability, ": channel '", name, "' is in '", info.unit,
+                 "', not a probability in %");
+        out.push_back(size_t(index));
+    }
+    if (out.empty())
+        fail("probability= names no channel");
+    return out;
+}
+
+double expected_thickness(const PropertyChannels &channels, const std::vector<size_t> &summed,
+                          uint64_t cell, double voxel_height)
+{
+    const ColumnSpan span = channels.span(cell);
+    if (span.size() == 0)
+        return NAN;
+    std::vector<const float *> columns;
+    for (const size_t c : summed)
+        columns.push_back(channels.column(c, cell));
+    double percent = 0; // the sum of p over the voxels with a value
+    bool any = false;
+    for (uint32_t v = 0; v < span.size(); ++v) {
+        double p = 0;
+        bool has = true;
+        for (size_t k = 0; k < summed.size() && has; ++k) {
+            const ChannelInfo &info = channels.info(summed[k]);
+            const float raw = columns[k][v];
+            has = !info.is_fill(raw);
+            p += info.physical(raw);
+        }
+        if (has) {
+            percent += p;
+            any = true;
+        }
+    }
+    return any ? percent / 100.0 * voxel_height : NAN;
+}
+
+} // namespace sbrt

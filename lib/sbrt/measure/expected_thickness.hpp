@@ -1,0 +1,34 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The expected thickness of a column (issue 30, item 2): the sum
+ *            over its voxels of the probability (in %, a channel or a sum
+ *            of several) times the voxel height, as TNO's cumulative
+ *            thicknesses are estimated from GeoTOP's kans_* channels
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_EXPECTED_THICKNESS_HPP
+#define SBRT_EXPECTED_THICKNESS_HPP
+
+#include <string>
+#include <vector>
+
+#include "format/channels_file.hpp"
+
+namespace sbrt {
+
+/// The channels a probability names ("kans_5+kans_6+kans_7", spaces
+/// allowed), each once and each in %; throws sbrt::Error naming an unknown
+/// channel (with the model's), one given twice, or one in another unit.
+std::vector<size_t> probability_channels(const PropertyChannels &channels,
+                                         const std::string &probability);
+
+/// Sum over the voxels of `cell`'s solid span of p / 100 * `voxel_height`,
+/// p the sum of the `summed` channels as meant (stored * scale + offset);
+/// a voxel where any of them holds its fill adds nothing. NaN where no
+/// voxel of the column has a value (an empty column, fills only).
+double expected_thickness(const PropertyChannels &channels, const std::vector<size_t> &summed,
+                          uint64_t cell, double voxel_height);
+
+} // namespace sbrt
+
+#endif
