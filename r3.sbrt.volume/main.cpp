@@ -18,7 +18,7 @@
 namespace {
 
 struct Options {
-    Option *input, *classes, *areas, *layer, *format, *output, *nprocs;
+    Option *input, *classes, *probability, *areas, *layer, *format, *output, *nprocs;
 };
 
 Options define_options()
@@ -33,6 +33,17 @@ Options define_options()
     o.classes->required = NO;
     o.classes->label = _("Classes of one set, measured together: class ids or labels");
     o.classes->description = _("Default: every class, one row each");
+
+    o.probability = G_define_option();
+    o.probability->key = "probability";
+    o.probability->type = TYPE_STRING;
+    o.probability->key_desc = "channel[+channel...]";
+    o.probability->required = NO;
+    o.probability->label = _("Probability channel (in %), or a sum of them: its expected "
+                             "volume too");
+    o.probability->description =
+        _("e.g. kans_5+kans_6+kans_7 beside classes=5,6,7: the expected volume of sand "
+          "beside the volume where it is the most likely class");
 
     o.areas = G_define_standard_option(G_OPT_V_INPUT);
     o.areas->key = "areas";
@@ -69,6 +80,7 @@ VolumeRequest read_options(const Options &o)
     for (char **a = o.classes->answers; a && *a; ++a)
         r.classes.emplace_back(*a);
     r.areas = o.areas->answer ? o.areas->answer : "";
+    r.probability = o.probability->answer ? o.probability->answer : "";
     r.layer = o.layer->answer ? o.layer->answer : "1";
     r.format = std::strcmp(o.format->answer, "json") == 0  ? ReportFormat::json
                : std::strcmp(o.format->answer, "csv") == 0 ? ReportFormat::csv

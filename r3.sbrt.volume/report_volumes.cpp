@@ -77,6 +77,18 @@ void report_volumes(const VolumeRequest &request)
 
     const sbrt::VolumeTable table =
         sbrt::measure_volumes(model, report.sets, zones.cells, request.threads);
+    if (!request.probability.empty()) {
+        const auto channels = sbrt_grass::read_channels_map(request.input.c_str(), model);
+        if (!channels)
+            sbrt::fail("SBRT <", request.input, "> has no property channels: probability= "
+                       "needs probabilities per voxel (import with r3.sbrt.convert "
+                       "properties=)");
+        const std::vector<size_t> summed =
+            sbrt::probability_channels(*channels, request.probability);
+        report.probability = request.probability;
+        report.expected = sbrt::expected_volumes(model, *channels, summed,
+                                                 zones.cells.cell_zones(), zones.cells.zones());
+    }
     write_report(out.get(), request.format, report, table);
     out.close(request.output);
 }

@@ -14,6 +14,7 @@
 #include "grass.hpp"
 #include "measure/cell_zones.hpp"
 #include "measure/class_set.hpp"
+#include "measure/expected_thickness.hpp"
 #include "measure/volumes.hpp"
 
 enum class ReportFormat { plain, json, csv };
@@ -22,6 +23,7 @@ enum class ReportFormat { plain, json, csv };
 struct VolumeRequest {
     std::string input;
     std::vector<std::string> classes; ///< empty: every class, one row each
+    std::string probability;          ///< channels in % (a+b): expected volumes
     std::string areas, layer;         ///< areas empty: the region
     ReportFormat format = ReportFormat::plain;
     std::string output; ///< empty or "-": standard output
@@ -48,6 +50,8 @@ struct VolumeReport {
     std::vector<sbrt::ClassSet> sets;  ///< a row each
     std::vector<int> categories;       ///< zones' categories, empty: region
     const sbrt::Model *model = nullptr;
+    std::string probability;                    ///< probability=, or empty
+    std::vector<sbrt::ExpectedVolume> expected; ///< its volume per zone
 };
 
 /// Writes `table` to `out` in `format`.

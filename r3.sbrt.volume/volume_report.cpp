@@ -76,6 +76,14 @@ void write_plain(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &tabl
                 std::fprintf(out, "%-8d ", r.categories[size_t(z)]);
             std::fprintf(out, "%-40s %24.3f %10llu\n", r.sets[s].describe(*r.model).c_str(),
                          v.volume, (unsigned long long)v.cells);
+            if (s + 1 == table.sets() && !r.probability.empty()) {
+                const sbrt::ExpectedVolume &e = r.expected[size_t(z)];
+                if (areas)
+                    std::fprintf(out, "%-8d ", r.categories[size_t(z)]);
+                std::fprintf(out, "%-40s %24.3f %10llu\n",
+                             ("expected: " + r.probability).c_str(), e.volume,
+                             (unsigned long long)e.cells);
+            }
         }
 }
 
@@ -102,13 +110,28 @@ void write_json(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table
                          ids.c_str(), labels.c_str(), v.volume, (unsigned long long)v.cells);
             separator = ",\n";
         }
-    std::fprintf(out, "\n  ]\n}\n");
+    std::fprintf(out, "\n  ]");
+    if (!r.probability.empty()) {
+        std::fprintf(out, ",\n  \"probability\": %s,\n  \"expected\": [",
+                     json_string(r.probability).c_str());
+        for (size_t z = 0; z < r.expected.size(); ++z) {
+            std::fprintf(out, "%s\n    {", z ? "," : "");
+            if (!r.categories.empty())
+                std::fprintf(out, "\"area\": %d, ", r.categories[z]);
+            std::fprintf(out, "\"volume\": %.17g, \"cells\": %llu}", r.expected[z].volume,
+                         (unsigned long long)r.expected[z].cells);
+        }
+        std::fprintf(out, "\n  ]");
+    }
+    std::fprintf(out, "\n}\n");
 }
 
 void write_csv(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
 {
     const bool areas = !r.categories.empty();
-    std::fprintf(out, "%sclasses,labels,volume,cells\n", areas ? "area," : "");
+    const bool expected = !r.probability.empty();
+    std::fprintf(out, "%sclasses,labels,volume,cells%s\n", areas ? "area," : "",
+                 expected ? ",probability" : "");
     for (int z = 0; z < table.zones(); ++z)
         for (size_t s = 0; s < table.sets(); ++s) {
             const sbrt::Volume &v = table.at(z, s);
@@ -120,8 +143,16 @@ void write_csv(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
             }
             if (areas)
                 std::fprintf(out, "%d,", r.categories[size_t(z)]);
-            std::fprintf(out, "%s,%s,%.17g,%llu\n", ids.c_str(), csv_field(labels).c_str(),
-                         v.volume, (unsigned long long)v.cells);
+            std::fprintf(out, "%s,%s,%.17g,%llu%s\n", ids.c_str(), csv_field(labels).c_str(),
+                         v.volume, (unsigned long long)v.cells, expected ? "," : "");
+            if (s + 1 == table.sets() && expected) {
+                // the zone's expected volume: no classes, the probability named
+                if (areas)
+                    std::fprintf(out, "%d,", r.categories[size_t(z)]);
+                std::fprintf(out, ",,%.17g,%llu,%s\n", r.expected[size_t(z)].volume,
+                             (unsigned long long)r.expected[size_t(z)].cells,
+                             csv_field(r.probability).c_str());
+            }
         }
 }
 

@@ -103,6 +103,18 @@ class TestSurfaceAgainstGrassRoute(TestCase):
         gs.mapcalc("ref_thickness = if(count > 0, count * %g, null())" % TBRES)
         gs.mapcalc("ref_layers = if(count > 0, starts, null())")
         gs.mapcalc("ref_depth = if(count > 0, surface - ref_top, null())")
+        # probabilities in % (p1, p2) beside the classes, null in the air
+        # and in some voxels inside the columns; a channel in another unit
+        air = ("(!(col() >= 27 && row() >= 17) && "
+               "z() > 10 + col() * 0.8 - row() * 0.5)")
+        gs.mapcalc3d(f"p1 = float(if({air} || (row() * col() + depth()) % 13 == 0, null(), "
+                     "(row() * 7 + col() * 3 + depth()) % 41))")
+        gs.mapcalc3d(f"p2 = float(if({air}, null(), (row() + col() * 5 + depth() * 2) % 37))")
+        gs.mapcalc3d("tmp = float(depth())")
+        for name in ("p1", "p2"):
+            gs.run_command("r3.support", map=name, unit="%")
+        gs.run_command("r3.sbrt.convert", input="geo", properties="p1,p2,tmp",
+                       output="geo_prob", quiet=True)
 
     @classmethod
     def series(cls, name, method, output):
@@ -135,16 +147,6 @@ class TestSurfaceAgainstGrassRoute(TestCase):
         null in either adding nothing, caves counted, air not; as r3.mapcalc,
         r3.to.rast and r.series sum compute it voxel by voxel; null in the
         empty columns."""
-        air = ("(!(col() >= 27 && row() >= 17) && "
-               "z() > 10 + col() * 0.8 - row() * 0.5)")
-        gs.mapcalc3d(f"p1 = float(if({air} || (row() * col() + depth()) % 13 == 0, null(), "
-                     "(row() * 7 + col() * 3 + depth()) % 41))")
-        gs.mapcalc3d(f"p2 = float(if({air}, null(), (row() + col() * 5 + depth() * 2) % 37))")
-        gs.mapcalc3d("tmp = float(depth())")  # a channel in another unit
-        for name in ("p1", "p2"):
-            gs.run_command("r3.support", map=name, unit="%")
-        gs.run_command("r3.sbrt.convert", input="geo", properties="p1,p2,tmp",
-                       output="geo_prob", quiet=True)
         gs.mapcalc3d("pe = if(isnull(p1) || isnull(p2), 0, (p1 + p2) / 100.0 * %g)" % TBRES)
         gs.run_command("r3.to.rast", input="pe", output="sl_pe", quiet=True)
         # the span ends at the column's highest solid top (surface): a cave
@@ -183,6 +185,37 @@ class TestSurfaceAgainstGrassRoute(TestCase):
             self.assertIn(message, err)
         self.assertModuleFail("r3.sbrt.surface", input="geo_prob", expected_thickness="bad")
         self.assertModuleFail("r3.sbrt.surface", input="geo_prob", thickness="bad")
+
+    def test_expected_volume_is_the_expected_thickness_times_the_area(self):
+        """probability= in r3.sbrt.volume: per zone, the sum of the expected
+        thickness map (r3.sbrt.surface, itself against the GRASS route)
+        times the cell area, and the cells where it is above 0; beside the
+        set's own volume, in json, csv and plain."""
+        self.assertModule("r3.sbrt.surface", input="geo_prob", probability="p1+p2",
+                          expected_thickness="v_thick")
+        stats = gs.parse_command("r.univar", map="v_thick", flags="g")
+        gs.mapcalc("v_positive = if(v_thick > 0, 1, null())")
+        positive = int(gs.parse_command("r.univar", map="v_positive", flags="g")["n"])
+        report = json.loads(gs.read_command("r3.sbrt.volume", input="geo_prob",
+                                            classes="Sand,3", probability="p1+p2",
+                                            format="json"))
+        self.assertEqual(report["probability"], "p1+p2")
+        self.assertEqual(len(report["expected"]), 1)
+        self.assertAlmostEqual(report["expected"][0]["volume"],
+                               float(stats["sum"]) * 100.0, delta=1e-6)
+        self.assertEqual(report["expected"][0]["cells"], positive)
+        self.assertEqual(len(report["volumes"]), 1)  # the set's own row stays
+        rows = gs.read_command("r3.sbrt.volume", input="geo_prob", classes="Sand,3",
+                               probability="p1+p2", format="csv").splitlines()
+        self.assertEqual(rows[0], "classes,labels,volume,cells,probability")
+        self.assertTrue(rows[2].startswith(",,"), rows)
+        self.assertTrue(rows[2].endswith(",p1+p2"), rows)
+        self.assertAlmostEqual(float(rows[2].split(",")[2]), float(stats["sum"]) * 100.0,
+                               delta=1e-6)
+        plain = gs.read_command("r3.sbrt.volume", input="geo_prob", probability="p1+p2")
+        self.assertIn("expected: p1+p2", plain)
+        self.assertModuleFail("r3.sbrt.volume", input="geo_sbrt", probability="p1")
+        self.assertModuleFail("r3.sbrt.volume", input="geo_prob", probability="tmp")
 
     def test_metadata_history_and_types(self):
         self.assertModule("r3.sbrt.surface", input="geo_sbrt", classes="sand,peat",

@@ -71,4 +71,26 @@ double expected_thickness(const PropertyChannels &channels, const std::vector<si
     return any ? percent / 100.0 * voxel_height : NAN;
 }
 
+std::vector<ExpectedVolume> expected_volumes(const Model &model,
+                                             const PropertyChannels &channels,
+                                             const std::vector<size_t> &summed,
+                                             const std::vector<int32_t> &cell_zones, int zones)
+{
+    const Frame &frame = model.frame();
+    const double area = frame.ew_res() * frame.ns_res();
+    std::vector<ExpectedVolume> out(size_t(std::max(0, zones)));
+    for (uint64_t cell = 0; cell < cell_zones.size(); ++cell) {
+        const int32_t zone = cell_zones[cell];
+        if (zone < 0 || zone >= zones)
+            continue;
+        const double e = expected_thickness(channels, summed, cell, frame.tb_res());
+        if (std::isnan(e))
+            continue;
+        out[size_t(zone)].volume += e * area;
+        if (e > 0)
+            ++out[size_t(zone)].cells;
+    }
+    return out;
+}
+
 } // namespace sbrt

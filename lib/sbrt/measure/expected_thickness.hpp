@@ -29,6 +29,21 @@ std::vector<size_t> probability_channels(const PropertyChannels &channels,
 double expected_thickness(const PropertyChannels &channels, const std::vector<size_t> &summed,
                           uint64_t cell, double voxel_height);
 
+/// \brief The expected volume of a probability in one zone.
+struct ExpectedVolume {
+    double volume = 0;  ///< cubic map units: expected thicknesses times cell areas
+    uint64_t cells = 0; ///< counted cells where it is above 0
+};
+
+/// The expected volume of the `summed` channels (a probability in %) in
+/// each zone of `zones`: the sum over the zone's cells of their expected
+/// thickness times the cell's area; cells in a fixed order (the figures
+/// do not depend on threads).
+std::vector<ExpectedVolume> expected_volumes(const Model &model,
+                                             const PropertyChannels &channels,
+                                             const std::vector<size_t> &summed,
+                                             const std::vector<int32_t> &cell_zones, int zones);
+
 } // namespace sbrt
 
 #endif
