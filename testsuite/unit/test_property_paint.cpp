@@ -7,6 +7,7 @@
  *            lit as a class colour would be
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -206,6 +207,72 @@ TEST(ColorRamp, InterpolatesBetweenRulesAndClampsOutside)
     EXPECT_EQ(ramp.low(), 0);
     EXPECT_EQ(ramp.high(), 20);
     EXPECT_THROW(ColorRamp(std::vector<ColorRamp::Rule>{}), Error);
+}
+
+/// The colour GRASS's rules give `value` read rule by rule (in the ramp's
+/// order: by start, ties as given): the last rule that holds it, else the
+/// end of the nearest rule below (the first rule's start below them all).
+glm::dvec3 reference_color(const std::vector<ColorRamp::Rule> &rules, double value)
+{
+    auto color = [](const ColorRamp::Stop &s) { return glm::dvec3(s.rgb[0], s.rgb[1], s.rgb[2]); };
+    const ColorRamp::Rule *first = &rules.front();
+    for (const ColorRamp::Rule &r : rules)
+        if (r.low.value < first->low.value)
+            first = &r;
+    if (!(value > first->low.value))
+        return color(first->low);
+    const ColorRamp::Rule *holding = nullptr, *below = first;
+    for (const ColorRamp::Rule &r : rules) {
+        if (value >= r.low.value && value <= r.high.value &&
+            (!holding || r.low.value >= holding->low.value))
+            holding = &r;
+        if (r.high.value <= value && r.high.value >= below->high.value)
+            below = &r;
+    }
+    if (!holding)
+        return color(below->high);
+    const double span = holding->high.value - holding->low.value;
+    const double f = span > 0 ? (value - holding->low.value) / span : 0;
+    return color(holding->low) + f * (color(holding->high) - color(holding->low));
+}
+
+TEST(ColorRamp, BisectionGivesEachValueItsRulesColour)
+{
+    // rules in order as GRASS's tables are (touching), with gaps between
+    // some, a zero-width rule, and given out of order: at() bisects them
+    std::mt19937 random(29);
+    std::uniform_int_distribution<int> byte(0, 255);
+    auto stop = [&](double v) {
+        return ColorRamp::Stop{v, {uint8_t(byte(random)), uint8_t(byte(random)),
+                                   uint8_t(byte(random))}};
+    };
+    std::vector<ColorRamp::Rule> rules;
+    double at = -3;
+    for (int i = 0; i < 200; ++i) {
+        const bool gap = i % 11 == 3 || i % 37 == 5; // a gap now and then
+        const double width = i % 37 == 5 ? 0 : 0.25 + (i % 7) * 0.5; // one of no width
+        rules.push_back({stop(at), stop(at + width)});
+        at += width + (gap ? 1.5 : 0);
+    }
+    // the same rules overlapping where one is made longer: read one by one
+    std::vector<ColorRamp::Rule> overlapping = rules;
+    overlapping[50].high = stop(overlapping[53].low.value + 0.1);
+    for (const auto &[given, disjoint] : {std::pair{rules, true}, std::pair{overlapping, false}}) {
+        std::vector<ColorRamp::Rule> shuffled = given;
+        std::shuffle(shuffled.begin(), shuffled.end(), random);
+        const ColorRamp ramp(shuffled);
+        ASSERT_EQ(ramp.disjoint(), disjoint);
+        std::uniform_real_distribution<double> anywhere(-10, at + 10);
+        std::vector<double> values = {-3, at, at + 1, NAN};
+        for (const ColorRamp::Rule &r : given)
+            values.insert(values.end(), {r.low.value, r.high.value, r.high.value + 0.75});
+        for (int i = 0; i < 20000; ++i)
+            values.push_back(anywhere(random));
+        for (const double v : values) {
+            const glm::dvec3 got = ramp.at(v), want = reference_color(ramp.rules(), v);
+            ASSERT_EQ(got, want) << "value " << v << (disjoint ? "" : " (overlapping)");
+        }
+    }
 }
 
 TEST(VoxelSelection, KeepsExactlyTheVoxelsMeetingTheCondition)

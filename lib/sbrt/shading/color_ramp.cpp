@@ -25,6 +25,9 @@ ColorRamp::ColorRamp(std::vector<Rule> rules) : rules_(std::move(rules))
     std::stable_sort(rules_.begin(), rules_.end(), [](const Rule &a, const Rule &b) {
         return a.low.value < b.low.value;
     });
+    disjoint_ = true;
+    for (size_t i = 0; i + 1 < rules_.size(); ++i)
+        disjoint_ = disjoint_ && rules_[i].high.value <= rules_[i + 1].low.value;
 }
 
 ColorRamp ColorRamp::through(const std::vector<std::array<uint8_t, 3>> &stops, double low,
@@ -56,6 +59,19 @@ glm::dvec3 ColorRamp::at(double value) const
     auto color = [](const Stop &s) { return glm::dvec3(s.rgb[0], s.rgb[1], s.rgb[2]); };
     if (!(value > rules_.front().low.value)) // below, at the first, or NaN
         return color(rules_.front().low);
+    if (disjoint_) {
+        // the last rule starting at or below the value: it holds the value,
+        // or the value lies after it, before the next one (or above all)
+        const auto next = std::upper_bound(
+            rules_.begin(), rules_.end(), value,
+            [](double v, const Rule &r) { return v < r.low.value; });
+        const Rule &r = *(next - 1);
+        if (value > r.high.value)
+            return color(r.high);
+        const double span = r.high.value - r.low.value;
+        const double f = span > 0 ? (value - r.low.value) / span : 0;
+        return color(r.low) + f * (color(r.high) - color(r.low));
+    }
     // the last rule that starts at or below the value and holds it
     for (size_t i = rules_.size(); i-- > 0;) {
         const Rule &r = rules_[i];

@@ -44,9 +44,14 @@ public:
     double low() const;
     double high() const;
     const std::vector<Rule> &rules() const { return rules_; }
+    /// Whether each rule ends at or below the next one's start.
+    bool disjoint() const { return disjoint_; }
 
 private:
     std::vector<Rule> rules_; ///< by low value
+    /// Whether each rule ends at or below the next one's start (GRASS's
+    /// tables, rules files in order): at() then finds its rule by bisection
+    bool disjoint_ = false;
 };
 
 } // namespace sbrt
