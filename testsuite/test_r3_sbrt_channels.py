@@ -294,6 +294,30 @@ class TestChannels(TestCase, Raster3dCompare):
                 shown += top is not None
         self.assertGreater(shown, NX * NY // 4)
 
+    def test_select_is_traced_on_the_gpu_as_on_the_cpu(self):
+        """select= makes a model of the voxels meeting the condition, which
+        the GPU traces as any other (llvmpipe here): its class map equals
+        the CPU's in a perspective view."""
+        self.runModule("r3.sbrt.convert", flags="s", sbrt="with_channels")
+        maps = {}
+        for backend in ("egl", "cpu"):
+            run = subprocess.run(
+                ["r3.sbrt.render", "input=with_channels", "size=96,72", "zexag=40",
+                 "azimuth=210", "elevation=40", "select=kans_5>=40",
+                 f"output=sel_{backend}", f"material=sel_{backend}_m",
+                 f"backend={backend}", "--verbose", "--overwrite"],
+                capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertIn(f"Backend: {backend}", run.stderr)
+            self.runModule("g.region", raster=f"sel_{backend}_m")
+            maps[backend] = gs.read_command("r.out.ascii", input=f"sel_{backend}_m",
+                                            flags="h", null_value="*").split()
+        gpu, cpu = maps["egl"], maps["cpu"]
+        self.assertEqual(len(gpu), 96 * 72)
+        self.assertGreater(sum(1 for v in cpu if v != "*"), 96 * 72 // 20)
+        differing = sum(1 for a, b in zip(gpu, cpu) if a != b)
+        self.assertLessEqual(differing, 96 * 72 // 500 + 1)
+
     def test_fade_greys_the_uncertain_voxels(self):
         """fade=kans_5 on a top view: cells whose topmost voxel has 100 are
         grey, those with 0 keep the colour of the view without fade."""
