@@ -62,8 +62,11 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
     G_verbose_message(_("GL_RENDERER: %s"), gpu.gpu().gl_renderer().c_str());
     const sbrt_gl::GpuFrameReport r =
         gpu.render(camera, outputs, sink, unsigned(request.threads));
-    G_verbose_message(r.shaded_on_gpu
-                          ? _("Shading: on the GPU")
+    const sbrt::Shading &shading = gpu.renderer().shading();
+    G_verbose_message(r.shaded_on_gpu ? _("Shading: on the GPU")
+                      : shading.property || shading.fade
+                          ? _("Shading: on the CPU at the GPU's hits (property "
+                              "channels stay on the host)")
                           : _("Shading: on the CPU (kernel normals of an image "
                               "whose hits do not fit the GPU)"));
     if (first)
@@ -124,10 +127,6 @@ Backend::Backend(const RenderRequest &request, const sbrt::Renderer &renderer,
 void Backend::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
                      const sbrt::BandSink &sink)
 {
-    if (context_ && !tried_gpu_ && (renderer_.shading().property || renderer_.shading().fade)) {
-        tried_gpu_ = true; // the GPU has no property channels yet
-        G_verbose_message(_("property= and fade= are traced on the CPU"));
-    }
     if (context_ && !tried_gpu_) {
         tried_gpu_ = true;
         try {

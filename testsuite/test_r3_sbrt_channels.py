@@ -294,29 +294,51 @@ class TestChannels(TestCase, Raster3dCompare):
                 shown += top is not None
         self.assertGreater(shown, NX * NY // 4)
 
-    def test_select_is_traced_on_the_gpu_as_on_the_cpu(self):
-        """select= makes a model of the voxels meeting the condition, which
-        the GPU traces as any other (llvmpipe here): its class map equals
-        the CPU's in a perspective view."""
+    def test_property_views_on_the_gpu_equal_the_cpu(self):
+        """On the GPU (egl, llvmpipe here): select= makes a model of the voxels
+        meeting the condition, traced as any other and shaded there;
+        property= and fade= are traced there and coloured on the host at the
+        GPU's hits. Each view's class map, value= map and colours equal the
+        CPU's (within 1/500 of the pixels; a colour level apart)."""
         self.runModule("r3.sbrt.convert", flags="s", sbrt="with_channels")
-        maps = {}
-        for backend in ("egl", "cpu"):
-            run = subprocess.run(
-                ["r3.sbrt.render", "input=with_channels", "size=96,72", "zexag=40",
-                 "azimuth=210", "elevation=40", "select=kans_5>=40",
-                 f"output=sel_{backend}", f"material=sel_{backend}_m",
-                 f"backend={backend}", "--verbose", "--overwrite"],
-                capture_output=True, text=True)
-            self.assertEqual(run.returncode, 0, run.stderr)
-            self.assertIn(f"Backend: {backend}", run.stderr)
-            self.runModule("g.region", raster=f"sel_{backend}_m")
-            maps[backend] = gs.read_command("r.out.ascii", input=f"sel_{backend}_m",
-                                            flags="h", null_value="*").split()
-        gpu, cpu = maps["egl"], maps["cpu"]
-        self.assertEqual(len(gpu), 96 * 72)
-        self.assertGreater(sum(1 for v in cpu if v != "*"), 96 * 72 // 20)
-        differing = sum(1 for a, b in zip(gpu, cpu) if a != b)
-        self.assertLessEqual(differing, 96 * 72 // 500 + 1)
+        size = (96, 72)
+        view = ["input=with_channels", "size=%d,%d" % size, "zexag=40", "azimuth=210",
+                "elevation=40", "--verbose", "--overwrite"]
+        scenes = (("sel", ["select=kans_5>=40"], "Shading: on the GPU"),
+                  ("prop", ["property=kans_5",
+                            "value=prop_{backend}_v"], "at the GPU's hits"),
+                  ("fade", ["fade=kans_5", "fade_range=0,100"], "at the GPU's hits"))
+        pixels = size[0] * size[1]
+        for name, options, shading in scenes:
+            maps = {}
+            for backend in ("egl", "cpu"):
+                run = subprocess.run(
+                    ["r3.sbrt.render", f"output={name}_{backend}",
+                     f"material={name}_{backend}_m", f"backend={backend}"] + view +
+                    [o.format(backend=backend) for o in options],
+                    capture_output=True, text=True)
+                self.assertEqual(run.returncode, 0, run.stderr)
+                self.assertIn(f"Backend: {backend}", run.stderr)
+                if backend == "egl":
+                    self.assertIn(shading, " ".join(run.stderr.split()), name)
+                self.runModule("g.region", raster=f"{name}_{backend}_m")
+                read = {}
+                for suffix in ("_m", ".red", ".green", ".blue") + (
+                        ("_v",) if name == "prop" else ()):
+                    read[suffix] = gs.read_command(
+                        "r.out.ascii", input=f"{name}_{backend}{suffix}", flags="h",
+                        null_value="*").split()
+                maps[backend] = read
+            gpu, cpu = maps["egl"], maps["cpu"]
+            self.assertEqual(len(gpu["_m"]), pixels)
+            self.assertGreater(sum(1 for v in cpu["_m"] if v != "*"), pixels // 20, name)
+            for suffix in gpu:
+                if suffix.startswith("."):
+                    differing = sum(1 for a, b in zip(gpu[suffix], cpu[suffix])
+                                    if abs(int(a) - int(b)) > 1)
+                else:
+                    differing = sum(1 for a, b in zip(gpu[suffix], cpu[suffix]) if a != b)
+                self.assertLessEqual(differing, pixels // 500 + 1, name + suffix)
 
     def test_fade_greys_the_uncertain_voxels(self):
         """fade=kans_5 on a top view: cells whose topmost voxel has 100 are

@@ -15,9 +15,22 @@ GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &rendere
 {
 }
 
+namespace {
+
+/// Colours per voxel (property channels: property=, fade=) are found on the
+/// host at the GPU's hits: the GPU holds no channels.
+bool shaded_on_host(const sbrt::Shading &shading)
+{
+    return shading.property || shading.fade;
+}
+
+} // namespace
+
 bool GpuRenderer::shades_on_gpu(const sbrt::Camera &camera) const
 {
     const sbrt::Shading &shading = renderer_.shading();
+    if (shaded_on_host(shading))
+        return false;
     if (shading.normals == sbrt::Normals::face)
         return true;
     // kernel normals: where the image's hits fit and no pixel comes from the CPU
@@ -33,9 +46,11 @@ GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outpu
     GpuRowTracer rows(gpu_, camera, cpu_threads);
     // where kernel normals cannot be found on the GPU the renderer finds
     // them from the GPU's hits (it never asks the GPU to shade then)
-    rows.shade_on_gpu(&renderer_.shading());
+    const bool on_host = shaded_on_host(renderer_.shading());
+    rows.shade_on_gpu(on_host ? nullptr : &renderer_.shading());
     report.shaded_on_gpu =
-        renderer_.shading().normals == sbrt::Normals::face || rows.shades_kernel_normals();
+        !on_host &&
+        (renderer_.shading().normals == sbrt::Normals::face || rows.shades_kernel_normals());
     report.render = renderer_.render(camera, outputs, sink, &rows);
     report.gpu = gpu_.stats();
     return report;

@@ -18,7 +18,8 @@ struct GpuFrameReport {
     sbrt::RenderReport render; ///< the pipeline's bands and times
     GpuStats gpu;              ///< dispatches, read-back, rays over the budget
     /// Whether the GPU shaded (face normals, or kernel normals where the
-    /// image's hits fit it), else the CPU did from the GPU's hits.
+    /// image's hits fit it), else the CPU did from the GPU's hits (always
+    /// for colours from property channels, which stay on the host).
     bool shaded_on_gpu = false;
 };
 

@@ -67,14 +67,15 @@ bool voxel_of_hit(const Model &model, const Hit &hit, HitVoxel &voxel)
         return false;
     const uint64_t cell = model.cell_index(int(row), int(col));
     // a height on an interval's end (a voxel boundary, where the height is
-    // whole) may lie on either voxel: the one of the hit's interval. A top
+    // whole, or within float's reach of it for a GPU's hits) may lie on
+    // either voxel: the one of the hit's interval. A top
     // or bottom face names its voxel, and a cell wall at a height inside a
     // voxel is that voxel's: no stack to walk for most hits. Other faces
     // (planes, boreholes, curtains) are checked against the stack.
     const bool wall = hit.face == Face::west || hit.face == Face::east ||
                       hit.face == Face::south || hit.face == Face::north;
     const bool named = hit.face == Face::top || hit.face == Face::bottom ||
-                       (wall && z != std::floor(z));
+                       (wall && std::abs(z - std::round(z)) > 1e-4);
     if (!named && material_at(model, cell, level) != hit.material) {
         if (material_at(model, cell, level - 1) == hit.material)
             --level;
