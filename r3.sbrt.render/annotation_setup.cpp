@@ -74,12 +74,17 @@ PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model 
             const sbrt::Material &m = model.materials()[i];
             a.classes.push_back({m.id, m.label, sbrt::material_color(model, uint32_t(i))});
         }
+    // what select= and fade= did to the colours, below the legend
+    std::string caption;
+    if (!request.select.empty())
+        caption = "only voxels where " + request.select;
     if (fade) {
         char text[256];
         std::snprintf(text, sizeof text, "greyer: more uncertain (%s %g to %g)",
                       request.fade.c_str(), fade->low(), fade->high());
-        a.caption = text;
+        caption += (caption.empty() ? "" : "; ") + std::string(text);
     }
+    a.caption = caption;
     a.north = north_on_image(frame, camera);
     if (request.view.kind != sbrt::ViewKind::top) {
         a.zexag = request.zexag;

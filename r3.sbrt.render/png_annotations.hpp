@@ -41,7 +41,7 @@ struct PngAnnotations {
     std::string title;                 ///< heads the legend (the SBRT's name)
     std::vector<LegendClass> classes;  ///< those the image can show, in order
     std::optional<ColorBar> bar;       ///< a property view's legend, instead
-    std::string caption;               ///< a line below the legend (fade=)
+    std::string caption;               ///< a line below the legend (select=, fade=)
     std::optional<glm::dvec2> north;   ///< image direction (x right, y down)
     std::optional<double> zexag;       ///< shown for 3D views
     std::optional<double> metres_per_pixel; ///< top views: a scale bar
