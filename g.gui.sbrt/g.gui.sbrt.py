@@ -48,6 +48,14 @@
 # % description: A map with a colour table (on and off in the viewer)
 # %end
 # %option
+# % key: property
+# % type: string
+# % required: no
+# % key_desc: channel[+channel...]
+# % label: Property channel (or a sum) to colour the model by at start
+# % description: e.g. kans_5+kans_6+kans_7 (an SBRT with property channels)
+# %end
+# %option
 # % key: backend
 # % type: string
 # % required: no
@@ -97,6 +105,7 @@ def main():
             texture=options["texture"],
             backend=options["backend"],
             log_path=os.environ.get(LOG_VARIABLE),
+            property=options["property"],
         )
     except ServerError as error:
         server.close()

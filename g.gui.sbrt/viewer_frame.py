@@ -20,6 +20,7 @@ from gui_core.gselect import ColumnSelect, Select
 
 from column_profile import ProfileError, read_column, show_profile
 from render_thread import RenderThread
+from view_client import ServerError
 from strata_panel import StrataPanel
 from view_canvas import ViewCanvas
 from view_dialogs import RecordOrbitDialog, SaveViewDialog
@@ -44,7 +45,7 @@ class EventLog:
 
 class ViewerFrame(wx.Frame):
     def __init__(self, server, sbrt, size, boreholes="", texture="", backend="auto",
-                 log_path=None):
+                 log_path=None, property=""):
         super().__init__(None, title="g.gui.sbrt: " + sbrt)
         self.log = EventLog(log_path)
         extent, strata, self.channels = server.model(sbrt)
@@ -76,6 +77,8 @@ class ViewerFrame(wx.Frame):
         self.SetSizerAndFit(sizer)
         self.CreateStatusBar(2)
         self.SetStatusWidths([-1, 260])
+        if property:
+            self._start_with_property(property)  # before any frame is asked for
 
         self.refine = wx.Timer(self)
         self.Bind(wx.EVT_TIMER, lambda event: self.request_frame(True), self.refine)
@@ -86,6 +89,20 @@ class ViewerFrame(wx.Frame):
         self.thread.start()
         self._update_legend()
         self.request_frame(True)
+
+    def _start_with_property(self, expression):
+        """property= of the command line: coloured by it from the first
+        frame; refused where the model has no such channels."""
+        if not self.channels or not self.property_range(expression):
+            names = ", ".join(c.name for c in self.channels) or _("none")
+            raise ServerError(_("property=%s: not a channel of <%s> nor a sum of its "
+                                "channels (channels: %s)") % (expression, self.state.sbrt,
+                                                               names))
+        self.property.ChangeValue(expression)
+        self.state.property = expression
+        limits = self.property_range(expression)
+        self.threshold.SetRange(int(limits[0]), max(int(limits[0]) + 1,
+                                                    int(round(limits[1]))))
 
     # the layout ---------------------------------------------------------
     def _make_toolbar(self):

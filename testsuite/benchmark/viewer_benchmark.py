@@ -26,10 +26,11 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "g.gui.sbrt"))
 from view_client import ViewServer  # noqa: E402
 
 
-def renderer_alone(sbrt, width, height):
+def renderer_alone(sbrt, width, height, extra=()):
     server = ViewServer()
+    extra = list(extra)
     start = time.perf_counter()
-    server.render(["input=" + sbrt, "size=%d,%d" % (width, height)])
+    server.render(["input=" + sbrt, "size=%d,%d" % (width, height)] + extra)
     first = (time.perf_counter() - start) * 1000
     for label, size in (("full", (width, height)),
                         ("reduced", (width // 2, height // 2))):
@@ -39,29 +40,36 @@ def renderer_alone(sbrt, width, height):
             # the viewer's light turns with the camera
             frame = server.render(["input=" + sbrt, "size=%d,%d" % size,
                                    "azimuth=%d" % (k * 10),
-                                   "light=%d,45" % ((k * 10 + 45) % 360)])
+                                   "light=%d,45" % ((k * 10 + 45) % 360)] + extra)
             times.append((time.perf_counter() - start) * 1000)
             served.append(frame.ms)
         median = statistics.median(times)
         print("renderer %-7s %4d x %-4d: median %.1f ms a frame (server %.1f ms, "
               "pipe and client the rest), %.1f frames/s" %
               (label, size[0], size[1], median, statistics.median(served), 1000 / median))
+    # a stratum of the model (the demo models' 13, else the first)
+    ids = [s.id for s in server.strata(sbrt)[1] if s.id != -2147483648]
+    hidden = 13 if 13 in ids else ids[0]
     start = time.perf_counter()
-    server.render(["input=" + sbrt, "size=%d,%d" % (width, height), "hide=13"])
-    print("renderer scene change (hide=13, prepared again) + frame: %.1f ms"
-          % ((time.perf_counter() - start) * 1000))
+    server.render(["input=" + sbrt, "size=%d,%d" % (width, height),
+                   "hide=%d" % hidden] + extra)
+    print("renderer scene change (hide=%d, prepared again) + frame: %.1f ms"
+          % (hidden, (time.perf_counter() - start) * 1000))
     print("renderer first frame (process start, model read, scene): %.1f ms" % first)
     server.close()
 
 
-def viewer(sbrt, width, height):
+def viewer(sbrt, width, height, extra=()):
     work = tempfile.mkdtemp(prefix="viewer_bench_")
     log = os.path.join(work, "viewer.log")
     xvfb = subprocess.Popen(["Xvfb", "-displayfd", "1", "-screen", "0", "1600x1000x24", "-noreset"],
                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
     display = ":" + xvfb.stdout.readline().decode().strip()
     env = dict(os.environ, DISPLAY=display, GRASS_SBRT_VIEWER_LOG=log, NO_AT_BRIDGE="1")
-    gui = subprocess.Popen(["g.gui.sbrt", "input=" + sbrt, "size=%d,%d" % (width, height)],
+    # of the extra words, the viewer takes property= (it colours by it)
+    options = [w for w in extra if w.startswith("property=")]
+    gui = subprocess.Popen(["g.gui.sbrt", "input=" + sbrt, "size=%d,%d" % (width, height)]
+                           + options,
                            cwd=work, env=env, stderr=subprocess.DEVNULL)
 
     def events():
@@ -108,11 +116,15 @@ def viewer(sbrt, width, height):
 
 
 def main():
+    """SBRT [WIDTH HEIGHT [r3.sbrt.render options...]]: the options (e.g.
+    property=kans_5+kans_6+kans_7 zexag=20) go with every frame."""
     sbrt = sys.argv[1]
     width, height = (int(sys.argv[2]), int(sys.argv[3])) if len(sys.argv) > 3 else (800, 600)
-    print("g.gui.sbrt on <%s>, %d x %d, %d cores" % (sbrt, width, height, os.cpu_count()))
-    renderer_alone(sbrt, width, height)
-    viewer(sbrt, width, height)
+    extra = sys.argv[4:]
+    print("g.gui.sbrt on <%s>, %d x %d, %d cores%s" % (
+        sbrt, width, height, os.cpu_count(), (" with " + " ".join(extra)) if extra else ""))
+    renderer_alone(sbrt, width, height, extra)
+    viewer(sbrt, width, height, extra)
 
 
 if __name__ == "__main__":
