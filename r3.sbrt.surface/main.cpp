@@ -54,16 +54,8 @@ Options define_options()
     o.depth = define_output("depth",
                             _("Depth of the set's top below the model's surface (the "
                               "column's highest solid top)"));
-    o.probability = G_define_option();
-    o.probability->key = "probability";
-    o.probability->type = TYPE_STRING;
-    o.probability->key_desc = "channel[+channel...]";
-    o.probability->required = NO;
-    o.probability->label = _("Probability channel (in %), or a sum of them, e.g. "
-                             "kans_5+kans_6+kans_7");
-    o.probability->description = _("Property channels of the SBRT (r3.sbrt.convert "
-                                   "properties=)");
-    o.probability->guisection = _("Probability");
+    o.probability = sbrt_grass::define_probability(
+        _("Probability whose expected thickness to map (expected_thickness=)"));
     o.expected_thickness = define_output(
         "expected_thickness", _("Expected thickness: the sum over the column's voxels of "
                                 "probability / 100 times the voxel height"));

@@ -34,16 +34,9 @@ Options define_options()
     o.classes->label = _("Classes of one set, measured together: class ids or labels");
     o.classes->description = _("Default: every class, one row each");
 
-    o.probability = G_define_option();
-    o.probability->key = "probability";
-    o.probability->type = TYPE_STRING;
-    o.probability->key_desc = "channel[+channel...]";
-    o.probability->required = NO;
-    o.probability->label = _("Probability channel (in %), or a sum of them: its expected "
-                             "volume too");
-    o.probability->description =
-        _("e.g. kans_5+kans_6+kans_7 beside classes=5,6,7: the expected volume of sand "
-          "beside the volume where it is the most likely class");
+    o.probability = sbrt_grass::define_probability(
+        _("Probability whose expected volume to report too (e.g. beside classes=5,6,7, "
+          "the volume where sand is the most likely class)"));
 
     o.areas = G_define_standard_option(G_OPT_V_INPUT);
     o.areas->key = "areas";

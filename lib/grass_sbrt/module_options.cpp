@@ -21,6 +21,20 @@ Option *define_sbrt_input(const char *description)
     return o;
 }
 
+Option *define_probability(const char *label)
+{
+    Option *o = G_define_option();
+    o->key = "probability";
+    o->type = TYPE_STRING;
+    o->key_desc = "channel[+channel...]";
+    o->required = NO;
+    o->label = label;
+    o->description = _("Property channels of the SBRT in %, one or a sum, e.g. "
+                       "kans_5+kans_6+kans_7 (r3.sbrt.convert properties=)");
+    o->guisection = _("Probability");
+    return o;
+}
+
 Option *define_nprocs()
 {
     Option *o = G_define_standard_option(G_OPT_M_NPROCS);

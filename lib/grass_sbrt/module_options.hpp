@@ -1,7 +1,7 @@
 /****************************************************************************
  * MODULE:    lib/grass_sbrt (r3.sbrt addon)
- * PURPOSE:   Options the measuring modules share: the SBRT read, and the
- *            number of threads
+ * PURPOSE:   Options the measuring modules share: the SBRT read, the
+ *            probability channels summed, and the number of threads
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_MODULE_OPTIONS_HPP
@@ -13,6 +13,10 @@ namespace sbrt_grass {
 
 /// input=: an existing SBRT (the dialogs offer them: offer_sbrts_in_dialog).
 Option *define_sbrt_input(const char *description);
+
+/// probability=: property channels in %, one or a sum (kans_5+kans_6+
+/// kans_7); `label` says what the module makes of it.
+Option *define_probability(const char *label);
 
 /// nprocs=: threads, 0 (the default) for all cores.
 Option *define_nprocs();
