@@ -278,9 +278,11 @@ class ViewerFrame(wx.Frame):
         if self._closing:
             return
         if error or pick is None:
+            self.log.write("pick", hit=False, error=error)
             self.SetStatusText(error or _("Nothing under the pointer"), 0)
             return
-        self.log.write("pick", x=pick.x, y=pick.y, z=pick.z, class_id=pick.class_id)
+        self.log.write("pick", hit=True, x=pick.x, y=pick.y, z=pick.z,
+                       class_id=pick.class_id)
         self.SetStatusText(_("Column at %.2f, %.2f (class %d at %.2f)")
                            % (pick.x, pick.y, pick.class_id, pick.z), 0)
 
@@ -394,11 +396,11 @@ class ViewerFrame(wx.Frame):
         for row, stratum in enumerate(self.state.strata):
             self.log.write("widget", name="stratum %d" % stratum.id,
                            rect=list(self.strata.checkbox_rect(row)))
-        toolbar = self.GetToolBar()
-        self.log.write("widget", name="toolbar", rect=rect(toolbar))
         if self.channels:
             for name in ("property", "color_by", "select_on", "threshold", "fade"):
                 self.log.write("widget", name=name, rect=rect(getattr(self, name)))
+        toolbar = self.GetToolBar()  # the last widget logged
+        self.log.write("widget", name="toolbar", rect=rect(toolbar))
 
     # controls -----------------------------------------------------------
     def _update_legend(self):
