@@ -57,14 +57,8 @@ void channel_to_voxels(const char *input, const char *channel, const char *outpu
     if (!info.unit.empty())
         Rast3d_set_unit(map, info.unit.c_str());
 
-    sbrt::GridWindow window;
-    window.north = target.north;
-    window.south = target.south;
-    window.east = target.east;
-    window.west = target.west;
-    window.rows = target.rows;
-    window.cols = target.cols;
-    const sbrt::CentreSampling at = sbrt::sample_at_centres(f, window);
+    const sbrt::CentreSampling at = sbrt::sample_at_centres(
+        f, {target.north, target.south, target.east, target.west, target.rows, target.cols});
     G_message(_("Expanding property channel '%s' of SBRT <%s> into 3D raster map "
                 "<%s>..."),
               channel, input, output);

@@ -62,9 +62,8 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
     G_verbose_message(_("GL_RENDERER: %s"), gpu.gpu().gl_renderer().c_str());
     const sbrt_gl::GpuFrameReport r =
         gpu.render(camera, outputs, sink, unsigned(request.threads));
-    const sbrt::Shading &shading = gpu.renderer().shading();
     G_verbose_message(r.shaded_on_gpu ? _("Shading: on the GPU")
-                      : shading.property || shading.fade
+                      : sbrt_gl::shaded_on_host(gpu.renderer().shading())
                           ? _("Shading: on the CPU at the GPU's hits (property "
                               "channels stay on the host)")
                           : _("Shading: on the CPU (kernel normals of an image "

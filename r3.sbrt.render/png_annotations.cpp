@@ -253,13 +253,10 @@ struct Panel {
     int width = 0;
 };
 
-/// A property's legend below the title at baseline `y`: its name and unit,
-/// a vertical bar (high at the top) with its ends' values, and the colour
-/// of hits without a value.
-void draw_color_bar(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Panel &p,
-                    double x, double y)
+/// The legend's title (the model's name) in bold at baseline `y`; the
+/// font is normal again after it.
+void draw_title(cairo_t *cr, const PngAnnotations &a, double x, double y)
 {
-    const ColorBar &b = *a.bar;
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                            CAIRO_FONT_WEIGHT_BOLD);
     cairo_set_source_rgb(cr, 0, 0, 0);
@@ -267,6 +264,16 @@ void draw_color_bar(cairo_t *cr, const Layout &l, const PngAnnotations &a, const
     cairo_show_text(cr, a.title.c_str());
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                            CAIRO_FONT_WEIGHT_NORMAL);
+}
+
+/// A property's legend below the title at baseline `y`: its name and unit,
+/// a vertical bar (high at the top) with its ends' values, and the colour
+/// of hits without a value.
+void draw_color_bar(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Panel &p,
+                    double x, double y)
+{
+    const ColorBar &b = *a.bar;
+    draw_title(cr, a, x, y);
     y += l.line;
     cairo_move_to(cr, x, y);
     cairo_show_text(cr, Panel::bar_heading(b).c_str());
@@ -324,15 +331,8 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
     // legend from the top; baselines 0.3 font above a line's bottom
     const double x = l.pad;
     double y = l.pad + l.line - 0.3 * l.font;
-    if (!p.shown.empty()) {
-        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                               CAIRO_FONT_WEIGHT_BOLD);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        cairo_move_to(cr, x, y);
-        cairo_show_text(cr, a.title.c_str());
-        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                               CAIRO_FONT_WEIGHT_NORMAL);
-    }
+    if (!p.shown.empty())
+        draw_title(cr, a, x, y);
     for (const LegendClass *c : p.shown) {
         y += l.line;
         const double swatch = std::round(l.font);

@@ -15,16 +15,10 @@ GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &rendere
 {
 }
 
-namespace {
-
-/// Colours per voxel (property channels: property=, fade=) are found on the
-/// host at the GPU's hits: the GPU holds no channels.
 bool shaded_on_host(const sbrt::Shading &shading)
 {
     return shading.property || shading.fade;
 }
-
-} // namespace
 
 bool GpuRenderer::shades_on_gpu(const sbrt::Camera &camera) const
 {

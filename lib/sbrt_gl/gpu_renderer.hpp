@@ -23,6 +23,11 @@ struct GpuFrameReport {
     bool shaded_on_gpu = false;
 };
 
+/// Whether `shading` colours by voxel (property channels: property=,
+/// fade=): the host shades then, at the GPU's hits, for the GPU holds no
+/// channels.
+bool shaded_on_host(const sbrt::Shading &shading);
+
 /// \brief The prepared scene of `renderer` (model after hiding and
 /// pruning, planes, pyramid; its shading, read at every frame) with the
 /// model uploaded to the GPU of `context` once, at construction. Each
