@@ -56,19 +56,18 @@ class RenderThread(threading.Thread):
                     words, tag = self._pending
                     self._pending = None
             if pick is not None:
-                self._answer_pick(*pick)
-                continue
-            try:
-                self._deliver(tag, self._server.render(words), None)
-            except ServerError as error:
-                self._deliver(tag, None, str(error))
-            except Exception as error:  # the thread must go on: say what broke
-                self._deliver(tag, None, "%s: %s" % (type(error).__name__, error))
+                words, row, col, answer = pick
+                answer(*self._ask(self._server.pick, words, row, col))
+            else:
+                self._deliver(tag, *self._ask(self._server.render, words))
 
-    def _answer_pick(self, words, row, col, answer):
+    @staticmethod
+    def _ask(request, *args):
+        """(the answer of request(*args), None), or (None, what went wrong):
+        the thread goes on whatever broke."""
         try:
-            answer(self._server.pick(words, row, col), None)
+            return request(*args), None
         except ServerError as error:
-            answer(None, str(error))
-        except Exception as error:  # the thread must go on: say what broke
-            answer(None, "%s: %s" % (type(error).__name__, error))
+            return None, str(error)
+        except Exception as error:
+            return None, "%s: %s" % (type(error).__name__, error)

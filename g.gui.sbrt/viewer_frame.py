@@ -100,9 +100,7 @@ class ViewerFrame(wx.Frame):
                                                                names))
         self.property.ChangeValue(expression)
         self.state.property = expression
-        limits = self.property_range(expression)
-        self.threshold.SetRange(int(limits[0]), max(int(limits[0]) + 1,
-                                                    int(round(limits[1]))))
+        self._fit_threshold(self.property_range(expression))
 
     # the layout ---------------------------------------------------------
     def _make_toolbar(self):
@@ -244,14 +242,17 @@ class ViewerFrame(wx.Frame):
             low, high = max(0.0, low), min(100.0, high)
         return low, max(high, low)
 
+    def _fit_threshold(self, limits):
+        """The threshold slider over a property's range (whole numbers)."""
+        self.threshold.SetRange(int(limits[0]), max(int(limits[0]) + 1, int(round(limits[1]))))
+
     def _on_property(self, event):
         expression = self.property.GetValue().strip()
         limits = self.property_range(expression) if expression else None
         self.state.property = expression if limits else ""
         self.state.color_by_property = self.color_by.GetValue()
         if limits and event.GetEventObject() is self.property:
-            self.threshold.SetRange(int(limits[0]), max(int(limits[0]) + 1,
-                                                        int(round(limits[1]))))
+            self._fit_threshold(limits)
         self.state.threshold = (float(self.threshold.GetValue())
                                 if limits and self.select_on.GetValue() else None)
         choice = self.fade.GetSelection()

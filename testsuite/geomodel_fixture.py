@@ -3,7 +3,8 @@ MODULE:    testsuite/geomodel_fixture.py (r3.sbrt addon)
 PURPOSE:   The set-up the tests share: the synthetic T model as a 3D
            raster and an SBRT, its slices, the class of its topmost
            non-null voxel per cell (an independent r3.to.rast + r.mapcalc),
-           and 3D rasters compared voxel by voxel
+           a small model with a probability channel, and 3D rasters
+           compared voxel by voxel
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
@@ -35,6 +36,29 @@ def set_up_t_model(case):
     for z in range(1, T_DEPTHS + 1):
         expr = f"if(isnull(sl_{z:05d}), {expr}, sl_{z:05d})"
     case.runModule("r.mapcalc", expression=f"top_class = int({expr})")
+
+
+# 12 x 10 cells of 100 m, 12 levels of 2 m
+CHANNEL_REGION = dict(n=1000, s=0, e=1200, w=0, t=24, b=0, res=100, res3=100, tbres=2)
+
+
+def set_up_channel_model(case, classes, probability):
+    """In a setUpClass, in CHANNEL_REGION: the 3D raster `classes` (classes
+    1-3 up to a ground level 12 to 20 m high; r3.mapcalc counts row(),
+    col() and depth() from 1, depth 1 at the bottom), the 3D raster
+    `probability` (FCELL in %, titled P(sand)) and the SBRT `classes` with
+    `probability` as its channel."""
+    case.runModule("g.region", **CHANNEL_REGION)
+    ground = "(6 + (row() * 3 + col() * 2) % 5)"
+    case.runModule("r3.mapcalc", overwrite=True,
+                   expression=f"{classes} = if(depth() > {ground}, null(), "
+                              "1 + (depth() / 3 + col() / 4) % 3)")
+    case.runModule("r3.mapcalc", overwrite=True,
+                   expression=f"{probability} = "
+                              "float((row() * 13 + col() * 7 + depth() * 3) % 101)")
+    case.runModule("r3.support", map=probability, unit="%", title="P(sand)")
+    subprocess.run(["r3.sbrt.convert", f"input={classes}", f"properties={probability}",
+                    f"output={classes}", "--overwrite", "--quiet"], check=True)
 
 
 def image_region(case, cols, rows):

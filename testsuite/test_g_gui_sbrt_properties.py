@@ -6,11 +6,11 @@ PURPOSE:   g.gui.sbrt on a model with property channels, driven as a person
            screen), a click on the model opens its column's profile
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
-import subprocess
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 
+from geomodel_fixture import set_up_channel_model
 from viewer_fixture import ViewerSession
 
 SIZE = (480, 480)
@@ -20,17 +20,7 @@ class TestViewerProperties(TestCase, ViewerSession):
     @classmethod
     def setUpClass(cls):
         cls.use_temp_region()
-        cls.runModule("g.region", n=1000, s=0, e=1200, w=0, t=24, b=0, res=100, res3=100,
-                      tbres=2)
-        ground = "(6 + (row() * 3 + col() * 2) % 5)"
-        cls.runModule("r3.mapcalc", overwrite=True,
-                      expression=f"plith = if(depth() > {ground}, null(), "
-                                 "1 + (depth() / 3 + col() / 4) % 3)")
-        cls.runModule("r3.mapcalc", overwrite=True,
-                      expression="pprob = float((row() * 13 + col() * 7 + depth() * 3) % 101)")
-        cls.runModule("r3.support", map="pprob", unit="%", title="P(sand)")
-        subprocess.run(["r3.sbrt.convert", "input=plith", "properties=pprob",
-                        "output=plith", "--overwrite", "--quiet"], check=True)
+        set_up_channel_model(cls, "plith", "pprob")
         cls.start_viewer(["input=plith", "size=%d,%d" % SIZE, "property=pprob"])
 
     @classmethod

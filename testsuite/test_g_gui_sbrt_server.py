@@ -7,7 +7,6 @@ PURPOSE:   The view server of g.gui.sbrt (r3.sbrt.render --serve) through
            sides (the prepared scene kept or rebuilt as it must); errors
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
-import json
 import os
 import subprocess
 import tempfile
@@ -15,15 +14,11 @@ import tempfile
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 
-from geomodel_fixture import set_up_t_model
+from geomodel_fixture import CHANNEL_REGION, set_up_channel_model, set_up_t_model
 from viewer_fixture import read_rgb_maps
 from view_client import ServerError, ViewServer
 from column_profile import profile_figure, read_column
 import grass.script as gs
-
-# a model with a property channel: classes up to a ground level (r3.mapcalc
-# counts row(), col() and depth() from 1, depth 1 at the bottom), P in %
-GROUND = "(6 + (row() * 3 + col() * 2) % 5)"
 
 
 class TestViewServer(TestCase):
@@ -149,15 +144,7 @@ class TestViewServerChannels(TestCase):
     @classmethod
     def setUpClass(cls):
         cls.use_temp_region()
-        cls.set_model_region()
-        cls.runModule("r3.mapcalc", overwrite=True,
-                      expression=f"vlith = if(depth() > {GROUND}, null(), "
-                                 "1 + (depth() / 3 + col() / 4) % 3)")
-        cls.runModule("r3.mapcalc", overwrite=True,
-                      expression="vprob = float((row() * 13 + col() * 7 + depth() * 3) % 101)")
-        cls.runModule("r3.support", map="vprob", unit="%", title="P(sand)")
-        subprocess.run(["r3.sbrt.convert", "input=vlith", "properties=vprob",
-                        "output=vlith", "--overwrite", "--quiet"], check=True)
+        set_up_channel_model(cls, "vlith", "vprob")
         cls.server = ViewServer()
 
     @classmethod
@@ -165,11 +152,6 @@ class TestViewServerChannels(TestCase):
         cls.server.close()
         cls.runModule("r3.sbrt.manage", flags="f", remove="vlith")
         cls.del_temp_region()
-
-    @classmethod
-    def set_model_region(cls):
-        cls.runModule("g.region", n=1000, s=0, e=1200, w=0, t=24, b=0, res=100, res3=100,
-                      tbres=2)
 
     def test_model_lists_the_channels(self):
         extent, strata, channels = self.server.model("vlith")
@@ -232,7 +214,7 @@ class TestViewServerChannels(TestCase):
                                                          "--quiet"], check=True)
             self.runModule("g.region", raster=name + ".red")
             cols, rows, rgb = read_rgb_maps(name)
-            self.set_model_region()
+            self.runModule("g.region", **CHANNEL_REGION)
             self.assertEqual(bytes(rgb), bytes(frame.rgb), name)
 
     def test_profile_draws_every_voxel(self):
