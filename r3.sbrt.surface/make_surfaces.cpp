@@ -7,7 +7,6 @@
  ****************************************************************************/
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <vector>
 
 #include "measure/centre_sampling.hpp"
@@ -17,7 +16,6 @@
 #include "sbrt_store.hpp"
 #include "surface.hpp"
 #include "surface_maps.hpp"
-#include "util/error.hpp"
 #include "util/parallel.hpp"
 
 namespace {
@@ -50,16 +48,12 @@ void make_surfaces(const SurfaceRequest &request)
         G_verbose_message(_("Classes of the set: %s"), described.c_str());
     // expected_thickness=: the probability's channels (only their blocks
     // under the region are decoded)
-    std::shared_ptr<const sbrt::PropertyChannels> channels;
-    std::vector<size_t> summed;
-    if (!request.expected_thickness.empty()) {
-        channels = sbrt_grass::read_channels_map(request.input.c_str(), model);
-        if (!channels)
-            sbrt::fail("SBRT <", request.input, "> has no property channels: "
-                       "expected_thickness= needs probabilities per voxel (import with "
-                       "r3.sbrt.convert properties=)");
-        summed = sbrt::probability_channels(*channels, request.probability);
-    }
+    sbrt_grass::ProbabilityChannels probability;
+    if (!request.expected_thickness.empty())
+        probability = sbrt_grass::read_probability_channels(
+            request.input.c_str(), model, request.probability, "expected_thickness=");
+    const sbrt::PropertyChannels *channels = probability.channels.get();
+    const std::vector<size_t> &summed = probability.summed;
     const sbrt::CentreSampling sampling = sbrt::sample_at_centres(
         model.frame(),
         {region.north, region.south, region.east, region.west, region.rows, region.cols});

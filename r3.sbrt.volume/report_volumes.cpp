@@ -78,15 +78,10 @@ void report_volumes(const VolumeRequest &request)
     const sbrt::VolumeTable table =
         sbrt::measure_volumes(model, report.sets, zones.cells, request.threads);
     if (!request.probability.empty()) {
-        const auto channels = sbrt_grass::read_channels_map(request.input.c_str(), model);
-        if (!channels)
-            sbrt::fail("SBRT <", request.input, "> has no property channels: probability= "
-                       "needs probabilities per voxel (import with r3.sbrt.convert "
-                       "properties=)");
-        const std::vector<size_t> summed =
-            sbrt::probability_channels(*channels, request.probability);
+        const sbrt_grass::ProbabilityChannels p = sbrt_grass::read_probability_channels(
+            request.input.c_str(), model, request.probability, "probability=");
         report.probability = request.probability;
-        report.expected = sbrt::expected_volumes(model, *channels, summed,
+        report.expected = sbrt::expected_volumes(model, *p.channels, p.summed,
                                                  zones.cells.cell_zones(), zones.cells.zones());
     }
     write_report(out.get(), request.format, report, table);

@@ -13,6 +13,7 @@
 
 #include "util/error.hpp"
 #include "format/format.hpp"
+#include "measure/expected_thickness.hpp"
 #include "grass.hpp"
 #include "sbrt_manage.hpp"
 
@@ -97,6 +98,20 @@ std::shared_ptr<const sbrt::PropertyChannels> read_channels_map(const char *name
                     "the source file again with r3.sbrt.convert"),
                   name, e.what());
     }
+}
+
+ProbabilityChannels read_probability_channels(const char *name, const sbrt::Model &model,
+                                              const std::string &probability,
+                                              const char *option)
+{
+    ProbabilityChannels out;
+    out.channels = read_channels_map(name, model);
+    if (!out.channels)
+        sbrt::fail("SBRT <", name, "> has no property channels: ", option,
+                   " needs probabilities per voxel (import with r3.sbrt.convert "
+                   "properties=)");
+    out.summed = sbrt::probability_channels(*out.channels, probability);
+    return out;
 }
 
 std::string new_sbrt_path(const char *name, bool overwrite)

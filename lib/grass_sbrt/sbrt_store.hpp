@@ -35,6 +35,18 @@ sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options = {
 /// nullptr where it has none. A damaged channels member is a fatal error.
 std::shared_ptr<const sbrt::PropertyChannels> read_channels_map(const char *name,
                                                                 const sbrt::Model &model);
+/// \brief The channels of an SBRT and those a probability= sums.
+struct ProbabilityChannels {
+    std::shared_ptr<const sbrt::PropertyChannels> channels;
+    std::vector<size_t> summed;
+};
+/// The channels of SBRT `name` (model as read: `model`) that `probability`
+/// sums (sbrt::probability_channels); throws sbrt::Error where the SBRT has
+/// no channels, saying that `option` needs them, or where `probability`
+/// names them wrongly.
+ProbabilityChannels read_probability_channels(const char *name, const sbrt::Model &model,
+                                              const std::string &probability,
+                                              const char *option);
 /// Checks the name and overwrite rules, then returns the directory of the
 /// new SBRT in the current mapset.
 std::string new_sbrt_path(const char *name, bool overwrite);
