@@ -423,7 +423,8 @@ std::shared_ptr<OGRSpatialReference> FileVariable::spatial_ref() const
     if (auto srs = array_->GetSpatialRef())
         return std::make_shared<OGRSpatialReference>(*srs);
     // a grid mapping variable GDAL did not take, or attributes of the
-    // variable, of a variable named crs or spatial_ref, or of the file
+    // variable, of a variable named crs or spatial_ref, of its coordinate
+    // variables, or of the file
     const auto root = dataset_->GetRootGroup();
     const std::string mapping = string_attribute(*array_, "grid_mapping");
     for (const std::string &holder : {mapping, std::string("crs"),
@@ -434,6 +435,12 @@ std::shared_ptr<OGRSpatialReference> FileVariable::spatial_ref() const
                     return srs;
     if (auto srs = srs_from_attributes(*array_))
         return srs;
+    // GeoTOP writes `epsg = "7415"` on its coordinate variables x, y, z
+    const auto dims = array_->GetDimensions();
+    for (const size_t axis : dim_of_axis_)
+        if (const auto coords = dims[axis]->GetIndexingVariable())
+            if (auto srs = srs_from_attributes(*coords))
+                return srs;
     return srs_from_attributes(*root);
 }
 

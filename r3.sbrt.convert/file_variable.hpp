@@ -86,7 +86,9 @@ public:
     double scale() const { return scale_; }
     double offset() const { return offset_; }
     /// The file's CRS (grid mapping, or `crs`/`spatial_ref`/`epsg`
-    /// attributes); nullptr when the file names none.
+    /// attributes of the variable, a crs variable, the coordinate
+    /// variables or the file); nullptr when the file names none. May be a
+    /// compound CRS (GeoTOP's EPSG:7415, RD New + NAP height).
     std::shared_ptr<OGRSpatialReference> spatial_ref() const;
 
     /// Northing index count per read that keeps a band near `max_bytes`,

@@ -8,6 +8,7 @@ PURPOSE:   The set-up the tests share: the synthetic T model as a 3D
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
+import shutil
 import subprocess
 
 import grass.script as gs
@@ -21,6 +22,30 @@ def error_of(*args):
     """A module run's return code and its messages, one space between words
     (GRASS wraps them at 80 columns)."""
     run = subprocess.run(args, capture_output=True, text=True)
+    return run.returncode, " ".join(run.stderr.split())
+
+
+def run_in_new_location(crs, args):
+    """Runs a module (a list of words) in PERMANENT of a new location of
+    `crs` (e.g. "EPSG:28992") beside the current one, removed after; gives
+    the return code and the messages as error_of does."""
+    env = gs.gisenv()
+    name = "crs_" + crs.replace(":", "_").lower() + f"_{os.getpid()}"
+    location = os.path.join(env["GISDBASE"], name)
+    shutil.rmtree(location, ignore_errors=True)
+    subprocess.run(["grass", "-c", crs, location, "-e"], check=True,
+                   capture_output=True)
+    gisrc = os.path.join(location, "gisrc")
+    with open(gisrc, "w") as f:
+        f.write(f"GISDBASE: {env['GISDBASE']}\nLOCATION_NAME: {name}\n"
+                "MAPSET: PERMANENT\n")
+    env = dict(os.environ, GISRC=gisrc)
+    for region in ("WIND_OVERRIDE", "GRASS_REGION"):  # the test's own region
+        env.pop(region, None)
+    try:
+        run = subprocess.run(args, capture_output=True, text=True, env=env)
+    finally:
+        shutil.rmtree(location, ignore_errors=True)
     return run.returncode, " ".join(run.stderr.split())
 
 

@@ -18,7 +18,7 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-from geomodel_fixture import Raster3dCompare
+from geomodel_fixture import Raster3dCompare, run_in_new_location
 
 FILL = -127
 NX, NY, NZ = 30, 60, 100  # 24 kB of doubles a row: memory=1 reads 43 rows
@@ -379,21 +379,10 @@ short lithok(z, y, x) ; data: x = 1, 2 ; y = 1, 2 ; }""")
         self.assertModule("r3.sbrt.convert", flags="o", file=path,
                           variable="lithok", output="rd_forced")
         # in a location of the file's CRS it goes in without -o
-        env = gs.gisenv()
-        location = os.path.join(env["GISDBASE"], "rd_new_test")
-        shutil.rmtree(location, ignore_errors=True)
-        subprocess.run(["grass", "-c", RD_NEW, location, "-e"], check=True,
-                       capture_output=True)
-        gisrc = os.path.join(self.tmp, "gisrc")
-        with open(gisrc, "w") as f:
-            f.write(f"GISDBASE: {env['GISDBASE']}\nLOCATION_NAME: rd_new_test\n"
-                    "MAPSET: PERMANENT\n")
-        run = subprocess.run(
-            ["r3.sbrt.convert", f"file={path}", "variable=lithok", "output=rd"],
-            capture_output=True, text=True, env=dict(os.environ, GISRC=gisrc),
-        )
-        shutil.rmtree(location, ignore_errors=True)
-        self.assertEqual(run.returncode, 0, run.stderr)
+        code, message = run_in_new_location(
+            RD_NEW, ["r3.sbrt.convert", f"file={path}", "variable=lithok",
+                     "output=rd"])
+        self.assertEqual(code, 0, message)
 
 
 def classic_header_only(path, nx, ny, nz):

@@ -15,6 +15,8 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
+from geomodel_fixture import error_of, run_in_new_location
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 GEOTOP_LIKE = os.path.join(HERE, "benchmark", "geotop_like")
 
@@ -133,21 +135,40 @@ class TestSbrtLabels(TestCase):
         self.assertEqual(rows[1000][1], "")  # not a lithoclass
 
     def test_geotop_like_file_imports_with_names_and_colours(self):
-        err = gs.read_command("r3.sbrt.convert", file=self.geotop, variable="lithok",
-                              output="gt", overwrite=True, stderr=subprocess.STDOUT)
+        # -o: the file is in EPSG:7415, the test location is XY
+        err = gs.read_command("r3.sbrt.convert", flags="o", file=self.geotop,
+                              variable="lithok", output="gt", overwrite=True,
+                              stderr=subprocess.STDOUT)
         self.assertIn("preset geotop_lithoclass", " ".join(err.split()))
         rows, order = parse_p("gt")
         self.assertEqual(order, [0, 1, 2, 3, 5, 6, 7, 8, 9])
         self.assertEqual(rows[2], ((0, 146, 0), "clay (klei)"))
         self.assertTrue(rows[1][1].startswith("organic, peat"))
-        gs.run_command("r3.sbrt.convert", file=self.geotop, variable="lithok",
-                       output="gt_none", preset="none", overwrite=True, quiet=True)
+        gs.run_command("r3.sbrt.convert", flags="o", file=self.geotop,
+                       variable="lithok", output="gt_none", preset="none",
+                       overwrite=True, quiet=True)
         rows, _ = parse_p("gt_none")
         self.assertEqual(rows[2][1], "")
 
+    def test_geotop_crs_is_read_from_its_coordinates(self):
+        """GeoTOP names its CRS only by epsg = "7415" (RD New + NAP height)
+        on x, y and z: compared by its horizontal part, EPSG:28992."""
+        convert = ["r3.sbrt.convert", f"file={self.geotop}", "variable=lithok",
+                   "output=gt_crs", "--overwrite"]
+        code, message = error_of(*convert)
+        self.assertNotEqual(code, 0)
+        self.assertIn("EPSG:7415", message)
+        self.assertIn("horizontally Amersfoort / RD New (EPSG:28992)", message)
+        self.assertIn("-o", message)
+        code, message = run_in_new_location("EPSG:28992", convert)
+        self.assertEqual(code, 0, message)
+        code, message = run_in_new_location("EPSG:32631", convert)
+        self.assertNotEqual(code, 0)
+        self.assertIn("WGS 84 / UTM zone 31N", message)
+
     def test_material_map_carries_labels_and_colours(self):
-        gs.run_command("r3.sbrt.convert", file=self.geotop, variable="lithok",
-                       output="gt", overwrite=True, quiet=True)
+        gs.run_command("r3.sbrt.convert", flags="o", file=self.geotop,
+                       variable="lithok", output="gt", overwrite=True, quiet=True)
         gs.run_command("r3.sbrt.convert", flags="s", sbrt="gt", quiet=True)
         self.assertModule("r3.sbrt.render", input="gt", output="gt_rgb",
                           material="gt_mat", view="top", backend="cpu",
