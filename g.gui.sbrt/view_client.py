@@ -24,7 +24,9 @@ Stratum = collections.namedtuple("Stratum", "id rgb label")
 Channel = collections.namedtuple("Channel", "name unit long_name low high")
 # what a pixel of a view hits: map coordinates, class id, shown property
 Pick = collections.namedtuple("Pick", "x y z class_id value")
-Extent = collections.namedtuple("Extent", "north south east west bottom top")
+# zexag: the exaggeration r3.sbrt.render fits to the model (no zexag= given)
+Extent = collections.namedtuple("Extent", "north south east west bottom top zexag",
+                                defaults=(1.0,))
 
 
 class ViewServer:
@@ -129,7 +131,7 @@ class ViewServer:
         """The extent, strata (id, colour, label) and property channels of
         SBRT `sbrt`."""
         head = self._ask("classes", ["input=" + sbrt])
-        extent = Extent(*[float(v) for v in head[1:7]])
+        extent = Extent(*[float(v) for v in head[1:8]])
         strata = []
         for text in self._lines(int(self._line()[1])):
             fields = text.split(" ", 4)

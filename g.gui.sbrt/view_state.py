@@ -24,6 +24,25 @@ def number(value):
     return "%.10g" % value
 
 
+class ZexagScale:
+    """A logarithmic slider's positions 0..STEPS as exaggerations 1..`top`,
+    two significant digits (the fitted one of a national model is in the
+    thousands, a thick one's 1)."""
+
+    STEPS = 200
+
+    def __init__(self, top):
+        self.top = max(top, 1.0 + 1e-9)
+
+    def value(self, position):
+        z = self.top ** (min(max(position, 0), self.STEPS) / self.STEPS)
+        return float("%.2g" % z)
+
+    def position(self, zexag):
+        share = math.log(max(zexag, 1.0)) / math.log(self.top)
+        return int(round(min(share, 1.0) * self.STEPS))
+
+
 class ViewState:
     """The view of one SBRT; `extent` and `strata` come from the server."""
 
@@ -34,7 +53,7 @@ class ViewState:
         self.azimuth, self.elevation, self.fov = 225.0, 30.0, 40.0
         self.distance = None  # None: framed by r3.sbrt.render
         self.target = None  # (x, y, z), real map units
-        self.zexag = 1.0
+        self.zexag = extent.zexag  # fitted to the model by r3.sbrt.render
         self.hidden = set()  # class ids
         self.opacity = {}  # class id: share of light absorbed (< 1)
         self.section = None  # (direction in degrees from east, offset -1..1)
@@ -141,8 +160,7 @@ class ViewState:
         light = (self.azimuth + LIGHT_FROM_CAMERA) % 360.0
         if light != 315.0:  # r3.sbrt.render's default
             words.append("light=%s,%s" % (number(light), number(LIGHT_ELEVATION)))
-        if self.zexag != 1:
-            words.append("zexag=" + number(self.zexag))
+        words.append("zexag=" + number(self.zexag))  # the command says it
         if self.hidden:
             words.append("hide=" + ",".join(str(i) for i in sorted(self.hidden)))
         translucent = sorted(i for i in self.opacity if i not in self.hidden)

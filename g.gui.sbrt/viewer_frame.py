@@ -24,7 +24,7 @@ from view_client import ServerError
 from strata_panel import StrataPanel
 from view_canvas import ViewCanvas
 from view_dialogs import RecordOrbitDialog, SaveViewDialog
-from view_state import ViewState
+from view_state import ViewState, ZexagScale, number
 
 REDUCTION = 2  # while the camera moves: 1/REDUCTION of the size each way
 REFINE_MS = 40  # the full frame once the mouse rests this long
@@ -127,10 +127,14 @@ class ViewerFrame(wx.Frame):
     def _make_controls(self, parent):
         sizer = wx.BoxSizer(wx.VERTICAL)
         view = self._box(parent, sizer, _("View"))
-        self.zexag_label = wx.StaticText(parent, label=_("Vertical exaggeration: 1.0"))
+        self.zexag_label = wx.StaticText(parent)
         view.Add(self.zexag_label)
-        self.zexag = wx.Slider(parent, value=10, minValue=10, maxValue=200)
+        # logarithmic, 1 to ten times the fitted exaggeration (at least 20)
+        self.zexag_scale = ZexagScale(max(20.0, 10 * self.state.zexag))
+        self.zexag = wx.Slider(parent, value=self.zexag_scale.position(self.state.zexag),
+                               minValue=0, maxValue=ZexagScale.STEPS)
         view.Add(self.zexag, flag=wx.EXPAND)
+        self._show_zexag()
         self.legend = wx.CheckBox(parent, label=_("Legend"))
         self.legend.SetValue(True)
         view.Add(self.legend)
@@ -434,11 +438,14 @@ class ViewerFrame(wx.Frame):
         self.canvas.Refresh(eraseBackground=False)
 
     def _on_zexag(self, event):
-        self.state.zexag = self.zexag.GetValue() / 10.0
+        self.state.zexag = self.zexag_scale.value(self.zexag.GetValue())
         # the model grows about its bottom: framed again, from the same side
         self.state.distance = self.state.target = None
-        self.zexag_label.SetLabel(_("Vertical exaggeration: %.1f") % self.state.zexag)
+        self._show_zexag()
         self._moving()
+
+    def _show_zexag(self):
+        self.zexag_label.SetLabel(_("Vertical exaggeration: %s") % number(self.state.zexag))
 
     def _on_section(self, event):
         if self.section_on.GetValue():

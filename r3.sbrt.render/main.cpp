@@ -41,6 +41,17 @@ void render_frame(const RenderRequest &request, RenderSession &session,
     maps.close(session.renderer().model(), session.property());
 }
 
+/// Says which exaggeration a render without zexag= got, and why.
+void report_fitted_exaggeration(const sbrt::Model &model, double zexag)
+{
+    const sbrt::Frame &f = model.frame();
+    const double thickness = sbrt::highest_top_local(model) * f.tb_res();
+    const char *units = G_database_unit_name(TRUE);
+    G_message(_("Vertical exaggeration %g, fitted to the model's extent (%g x %g %s) "
+                "and thickness (%g %s); zexag= sets another"),
+              zexag, f.east - f.west, f.north - f.south, units, thickness, units);
+}
+
 void run(const RenderRequest &asked)
 {
     // video= alone: its frames in a temporary folder, removed after
@@ -58,6 +69,8 @@ void run(const RenderRequest &asked)
     // then trace, shade and write band by band, frame by frame
     RenderSession session;
     session.load(request, region);
+    if (request.zexag_fitted && request.view.kind != sbrt::ViewKind::top)
+        report_fitted_exaggeration(session.model(), request.zexag);
     const std::vector<sbrt::Camera> cameras = session.cameras(request, region);
     session.prepare(request, cameras.front(), request.frames == 1);
     const bool sweep = request.frames > 1 && request.path == sbrt::PathKind::sweep;

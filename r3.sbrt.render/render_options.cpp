@@ -97,8 +97,9 @@ RenderOptions define_render_options()
                                "(default: frames the model)"),
                              _("Camera"));
     o->zexag = define("zexag", TYPE_DOUBLE,
-                      _("Vertical exaggeration (about the model's bottom)"),
-                      _("Camera"), "1");
+                      _("Vertical exaggeration (about the model's bottom; default: "
+                        "fitted to the model's extent and thickness)"),
+                      _("Camera"));
 
     o->light = define("light", TYPE_DOUBLE,
                       _("Light direction: azimuth,elevation in degrees"),
@@ -387,8 +388,11 @@ RenderRequest read_render_options(const RenderOptions &options)
         if (!(*v.ortho_height > 0))
             bad_request(_("ortho_height= must be positive"));
     }
-    r.zexag = read_double(o->zexag);
-    if (!(r.zexag > 0))
+    if (o->zexag->answer) {
+        r.zexag = read_double(o->zexag);
+        r.zexag_fitted = false;
+    }
+    if (!r.zexag_fitted && !(r.zexag > 0))
         bad_request(_("zexag=%g: the vertical exaggeration must be positive"),
                       r.zexag);
     const std::vector<double> light = read_numbers(o->light);

@@ -34,6 +34,7 @@ struct RenderRequest {
     int width = 640, height = 480; ///< size=: perspective and orthographic
     sbrt::View view;   ///< the camera as asked for (map units, degrees)
     double zexag = 1;
+    bool zexag_fitted = true; ///< no zexag=: RenderSession::load fits it to the model
     double light_azimuth = 315, light_elevation = 45, ambient = 0.35;
     std::array<uint8_t, 3> background{255, 255, 255};
     sbrt::Normals normals = sbrt::Normals::face;

@@ -20,6 +20,7 @@
 #include "skipping_report.hpp"
 #include "texture_input.hpp"
 #include "builders/voxel_selection.hpp"
+#include "frame/fitting_exaggeration.hpp"
 #include "tracing/scene_pruning.hpp"
 
 namespace {
@@ -85,7 +86,7 @@ std::string scene_key(const RenderRequest &r, const sbrt::Camera &camera)
 
 } // namespace
 
-void RenderSession::load(const RenderRequest &request, const struct Cell_head &region)
+void RenderSession::load(RenderRequest &request, const struct Cell_head &region)
 {
     const std::string key = model_key(request, region);
     if (!model_ || key != model_key_) {
@@ -104,6 +105,8 @@ void RenderSession::load(const RenderRequest &request, const struct Cell_head &r
         apply_color_option(request, *model_);
         model_key_ = key;
     }
+    if (request.zexag_fitted)
+        request.zexag = sbrt::fitting_exaggeration(*model_);
     if (!frame_ || frame_->zexag() != request.zexag)
         frame_ = sbrt::CoordinateFrame::of(*model_, request.zexag);
 }

@@ -35,8 +35,9 @@ public:
     RenderSession &operator=(const RenderSession &) = delete;
 
     /// Reads the model of `request` (a top view of one frame: only the
-    /// blocks under `region`), where its input, colours or area changed.
-    void load(const RenderRequest &request, const struct Cell_head &region);
+    /// blocks under `region`), where its input, colours or area changed;
+    /// a request without zexag= gets the model's fitting exaggeration.
+    void load(RenderRequest &request, const struct Cell_head &region);
     /// The model as read and its frame at the request's exaggeration: what
     /// cameras frame (the view stays put while strata are hidden or cut).
     const sbrt::Model &model() const { return *model_; }

@@ -37,9 +37,9 @@ class ViewServer {
 public:
     explicit ViewServer(FILE *out) : out_(out) {}
 
-    void render(const RenderRequest &request);
+    void render(RenderRequest request);
     void classes(const RenderRequest &request);
-    void pick(const RenderRequest &request, int row, int col);
+    void pick(RenderRequest request, int row, int col);
     void error(const std::string &message);
 
 private:
@@ -47,7 +47,7 @@ private:
     RenderSession session_;
 };
 
-void ViewServer::render(const RenderRequest &request)
+void ViewServer::render(RenderRequest request)
 {
     const auto start = std::chrono::steady_clock::now();
     struct Cell_head region;
@@ -97,8 +97,9 @@ void ViewServer::classes(const RenderRequest &request)
     session_.load(whole, region);
     const sbrt::Model &model = session_.model();
     const sbrt::Frame &f = model.frame();
-    std::fprintf(out_, "model %.17g %.17g %.17g %.17g %.17g %.17g\n", f.north, f.south,
-                 f.east, f.west, f.bottom, f.top);
+    // the extent, and the exaggeration a request without zexag= gets
+    std::fprintf(out_, "model %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", f.north,
+                 f.south, f.east, f.west, f.bottom, f.top, whole.zexag);
     std::fprintf(out_, "classes %zu\n", model.materials().size());
     // the colours a render draws (the palette's where a class has none)
     for (uint32_t i = 0; i < model.materials().size(); ++i) {
@@ -123,7 +124,7 @@ void ViewServer::classes(const RenderRequest &request)
     std::fflush(out_);
 }
 
-void ViewServer::pick(const RenderRequest &request, int row, int col)
+void ViewServer::pick(RenderRequest request, int row, int col)
 {
     struct Cell_head region;
     G_get_window(&region);

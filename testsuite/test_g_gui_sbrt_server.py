@@ -8,6 +8,7 @@ PURPOSE:   The view server of g.gui.sbrt (r3.sbrt.render --serve) through
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
+import re
 import subprocess
 import tempfile
 
@@ -110,6 +111,14 @@ class TestViewServer(TestCase):
         self.assertLess(extent.bottom, extent.top)
         ids = [s.id for s in strata]
         self.assertIn(3, ids)
+        # the exaggeration the command line fits to the model and says
+        run = subprocess.run(["r3.sbrt.render", "input=geo", "size=40,30",
+                              "output=vs_z", "--overwrite"],
+                             capture_output=True, text=True, check=True)
+        said = re.search(r"Vertical exaggeration (\S+), fitted",
+                         " ".join(run.stderr.split()))
+        self.assertIsNotNone(said, run.stderr)
+        self.assertEqual(float(said.group(1)), extent.zexag)
         for s in strata:
             self.assertEqual(len(s.rgb), 3)
 

@@ -13,7 +13,7 @@ from grass.gunittest.main import test
 
 import viewer_fixture  # noqa: F401 (g.gui.sbrt's files on the path)
 from view_client import Extent, Stratum
-from view_state import NO_CLASS, ViewState
+from view_state import NO_CLASS, ViewState, ZexagScale
 
 
 def make_state():
@@ -57,6 +57,24 @@ class TestViewState(TestCase):
         state.zexag = 2.0
         state.pan(0, 50, 500)  # up, unexaggerated
         self.assertAlmostEqual(state.target[2], -20 + 50 * per_pixel / 2, places=6)
+
+    def test_exaggeration_is_the_fitted_one_and_always_said(self):
+        extent = Extent(north=2000, south=0, east=1000, west=0, bottom=-100, top=50,
+                        zexag=4.0)
+        state = ViewState("model", extent, [])
+        self.assertEqual(state.zexag, 4.0)
+        self.assertEqual(word(state.words(80, 60), "zexag"), "4")
+        state.zexag = 1.0  # the command must still say it: 1 is not the default
+        self.assertEqual(word(state.words(80, 60), "zexag"), "1")
+
+    def test_exaggeration_slider_is_logarithmic(self):
+        scale = ZexagScale(1500.0)
+        self.assertEqual(scale.value(0), 1.0)
+        self.assertEqual(scale.value(ZexagScale.STEPS), 1500.0)
+        self.assertEqual(scale.value(ZexagScale.STEPS // 2), 39.0)  # sqrt(1500)
+        for zexag in (1.0, 4.0, 50.0, 150.0, 1500.0):
+            back = scale.value(scale.position(zexag))
+            self.assertLess(abs(math.log(back / zexag)), 0.02, (zexag, back))
 
     def test_zoom(self):
         state = make_state()
