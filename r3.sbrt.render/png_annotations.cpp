@@ -17,10 +17,11 @@
 
 namespace {
 
-/// Sizes in pixels, grown with the image from those of a 480-row one.
+/// Sizes in pixels, grown with the image from those of a 480-row one
+/// (never smaller: a 12-pixel font is the least that reads).
 struct Layout {
     explicit Layout(int rows)
-        : scale(std::clamp(rows / 480.0, 0.6, 4.0)), font(12 * scale),
+        : scale(std::clamp(rows / 480.0, 1.0, 4.0)), font(12 * scale),
           line(1.5 * font), pad(8 * scale), arrow(34 * scale),
           bar(6 * scale)
     {
@@ -188,6 +189,10 @@ struct Panel {
         if (!scale_text.empty())
             bottom += l.line + l.bar + l.pad;
         bottom_height = bottom;
+        // every class and the title, or the colour bar at its full height
+        needed_rows = int(std::ceil(bottom_height + 2 * l.pad +
+                                    (a.bar ? 5 * l.line + 220 * l.scale + l.pad
+                                           : double(this->shown.size() + 1) * l.line)));
         // the title, the classes that fit, a line saying how many more
         const int lines = int(std::floor((rows - bottom_height - 2 * l.pad) / l.line));
         if (lines < 2 || this->shown.empty())
@@ -251,6 +256,7 @@ struct Panel {
     std::string zexag, scale_text;
     double scale_length = 0, bottom_height = 0;
     int width = 0;
+    int needed_rows = 0; ///< the panel's height with nothing left out
 };
 
 /// The legend's title (the model's name) in bold at baseline `y`; the
@@ -380,17 +386,22 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
 } // namespace
 
 AnnotatedPng::AnnotatedPng(const std::string &path, int rows, int cols,
-                           PngAnnotations annotations)
-    : path_(path), rows_(rows), cols_(cols), annotations_(std::move(annotations)),
-      seen_(annotations_.classes.size(), false)
+                           PngAnnotations annotations, int enlarge)
+    : path_(path), rows_(rows * enlarge), cols_(cols * enlarge), enlarge_(enlarge),
+      annotations_(std::move(annotations)), seen_(annotations_.classes.size(), false)
 {
+    if (enlarge < 1)
+        throw sbrt::Error("a PNG's enlargement must be a whole number of at least 1");
+    if (annotations_.metres_per_pixel)
+        *annotations_.metres_per_pixel /= enlarge;
     if (!annotated()) {
-        png_.emplace(path, rows, cols);
+        png_.emplace(path, rows_, cols_);
+        row_.resize(size_t(cols_) * 3);
         return;
     }
     // fail now, not after the render, where the file cannot be written
     sbrt::PngFile(path, 1, 1);
-    image_.resize(size_t(rows) * size_t(cols) * 3);
+    image_.resize(size_t(rows_) * size_t(cols_) * 3);
     for (size_t i = 0; i < annotations_.classes.size(); ++i)
         class_index_.emplace(annotations_.classes[i].id, i);
 }
@@ -412,15 +423,34 @@ void AnnotatedPng::count_classes(const sbrt::Band &band)
     }
 }
 
+void AnnotatedPng::write_enlarged(const sbrt::Band &band)
+{
+    const int band_cols = cols_ / enlarge_;
+    for (int r = 0; r < band.rows; ++r) {
+        const uint8_t *in = band.rgb.data() + size_t(r) * size_t(band_cols) * 3;
+        uint8_t *out = png_ ? row_.data()
+                            : image_.data() + size_t(band.first_row + r) * size_t(enlarge_) *
+                                                  size_t(cols_) * 3;
+        for (int c = 0; c < band_cols; ++c)
+            for (int k = 0; k < enlarge_; ++k)
+                std::copy_n(in + size_t(c) * 3, 3, out + (size_t(c) * enlarge_ + k) * 3);
+        for (int k = 0; k < enlarge_; ++k) {
+            if (png_)
+                png_->write_rows(row_.data(), 1);
+            else if (k > 0)
+                std::copy_n(out, size_t(cols_) * 3, out + size_t(k) * size_t(cols_) * 3);
+        }
+    }
+}
+
 void AnnotatedPng::write(const sbrt::Band &band)
 {
-    if (png_) {
+    if (png_ && enlarge_ == 1) {
         png_->write_rows(band.rgb.data(), band.rows);
         return;
     }
     count_classes(band);
-    std::copy(band.rgb.begin(), band.rgb.end(),
-              image_.begin() + long(size_t(band.first_row) * size_t(cols_) * 3));
+    write_enlarged(band);
 }
 
 void AnnotatedPng::finish()
@@ -429,7 +459,6 @@ void AnnotatedPng::finish()
         png_->finish();
         return;
     }
-    const Layout l(rows_);
     std::vector<const LegendClass *> shown;
     for (size_t i = 0; i < seen_.size(); ++i)
         if (seen_[i])
@@ -437,18 +466,25 @@ void AnnotatedPng::finish()
     // by class id, as a legend is read (materials are numbered as met)
     std::stable_sort(shown.begin(), shown.end(),
                      [](const LegendClass *a, const LegendClass *b) { return a->id < b->id; });
-    const Panel panel(Canvas(1, 1).cr(), l, annotations_, std::move(shown), cols_, rows_);
-    Canvas canvas(panel.width, rows_);
-    draw_panel(canvas.cr(), l, annotations_, panel, rows_);
-    std::vector<uint8_t> side(size_t(panel.width) * size_t(rows_) * 3);
-    canvas.store(side.data(), rows_, panel.width);
+    // as high as the image, or as the panel needs where the image is lower
+    const Layout l(rows_);
+    const int rows =
+        std::max(rows_, Panel(Canvas(1, 1).cr(), l, annotations_, shown, cols_, rows_).needed_rows);
+    const Panel panel(Canvas(1, 1).cr(), l, annotations_, std::move(shown), cols_, rows);
+    Canvas canvas(panel.width, rows);
+    draw_panel(canvas.cr(), l, annotations_, panel, rows);
+    std::vector<uint8_t> side(size_t(panel.width) * size_t(rows) * 3);
+    canvas.store(side.data(), rows, panel.width);
 
     const int width = cols_ + panel.width;
-    sbrt::PngFile png(path_, rows_, width);
-    std::vector<uint8_t> row(size_t(width) * 3);
+    sbrt::PngFile png(path_, rows, width);
+    std::vector<uint8_t> row(size_t(width) * 3, 255);
     const size_t image_row = size_t(cols_) * 3, side_row = size_t(panel.width) * 3;
-    for (int r = 0; r < rows_; ++r) {
-        std::copy_n(image_.data() + size_t(r) * image_row, image_row, row.data());
+    for (int r = 0; r < rows; ++r) {
+        if (r < rows_)
+            std::copy_n(image_.data() + size_t(r) * image_row, image_row, row.data());
+        else
+            std::fill_n(row.data(), image_row, uint8_t(255));
         std::copy_n(side.data() + size_t(r) * side_row, side_row, row.data() + image_row);
         png.write_rows(row.data(), 1);
     }

@@ -52,16 +52,19 @@ struct PngAnnotations {
     }
 };
 
-/// \brief The PNG of an image. Plain, its rows stream into the file as
+/// \brief The PNG of an image, each pixel drawn `enlarge` x `enlarge`
+/// (a top view of few cells). Plain, its rows stream into the file as
 /// they come. Annotated, the file is the image with a panel on its right:
 /// the legend of the classes the image shows (known once every band has
 /// been seen, so the image is held: 3 bytes a pixel), below it the north
 /// arrow, the vertical exaggeration and the scale bar; written by
-/// finish(). Bands must carry their class ids when needs_classes().
+/// finish(). Text is never smaller than a 480-row image's: where the image
+/// is lower than the panel needs, the file is as high as the panel, white
+/// below the image. Bands must carry their class ids when needs_classes().
 class AnnotatedPng {
 public:
     AnnotatedPng(const std::string &path, int rows, int cols,
-                 PngAnnotations annotations);
+                 PngAnnotations annotations, int enlarge = 1);
 
     void write(const sbrt::Band &band);
     void finish();
@@ -71,11 +74,15 @@ public:
 private:
     void count_classes(const sbrt::Band &band);
 
+    /// The band's rows, each pixel `enlarge_` times, `enlarge_` times.
+    void write_enlarged(const sbrt::Band &band);
+
     std::string path_;
-    int rows_, cols_;
+    int rows_, cols_, enlarge_;
     PngAnnotations annotations_;
     std::optional<sbrt::PngFile> png_; ///< plain: open from the start
-    std::vector<uint8_t> image_;       ///< annotated: the whole image
+    std::vector<uint8_t> row_;         ///< plain: one enlarged row
+    std::vector<uint8_t> image_;       ///< annotated: the whole image, enlarged
     std::unordered_map<int32_t, size_t> class_index_;
     std::vector<bool> seen_; ///< per annotations_.classes
 };

@@ -55,6 +55,16 @@ struct Cell_head tile_window(struct Cell_head window, const std::array<int, 4> &
     return window;
 }
 
+int png_enlargement(const RenderRequest &request, int rows, int cols)
+{
+    if (request.view.kind != sbrt::ViewKind::top)
+        return 1; // size= is the image
+    if (request.size_given)
+        return std::max(1, std::min(request.width / cols, request.height / rows));
+    const int longer = std::max(rows, cols);
+    return std::max(1, (MIN_TOP_VIEW_PNG_SIDE + longer - 1) / longer);
+}
+
 ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &window,
                      PngAnnotations annotations)
     : request_(request), cols_(window.cols), cells_(size_t(window.cols)),
@@ -83,7 +93,8 @@ ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &windo
         value_.push_back(open(request.value, DCELL_TYPE));
     if (!request.png.empty())
         png_ = std::make_unique<AnnotatedPng>(request.png, window.rows, cols_,
-                                              std::move(annotations));
+                                              std::move(annotations),
+                                              png_enlargement(request, window.rows, cols_));
 }
 
 ImageMaps::Map ImageMaps::open(const std::string &name, RASTER_MAP_TYPE type)

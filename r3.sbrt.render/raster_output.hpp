@@ -28,6 +28,14 @@ struct Cell_head image_window(const struct Cell_head &region, int rows, int cols
 /// `window`: the tiles' maps patch together.
 struct Cell_head tile_window(struct Cell_head window, const std::array<int, 4> &tile);
 
+/// The longer side a top view's PNG is enlarged to at least, without size=.
+constexpr int MIN_TOP_VIEW_PNG_SIDE = 640;
+
+/// How many pixels a side each pixel of the image (rows x cols) takes in
+/// the PNG: 1 but for a top view, whose cells are enlarged by whole pixels
+/// to fit size=, or without it to MIN_TOP_VIEW_PNG_SIDE on the longer side.
+int png_enlargement(const RenderRequest &request, int rows, int cols);
+
 /// \brief <output> (the image with exact colours), <output>.red/.green/.blue
 /// and the optional maps of the request, open for writing in `window`
 /// (rows x cols of the image), and the PNG. Maps appear only when close()

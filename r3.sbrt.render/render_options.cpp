@@ -58,8 +58,10 @@ RenderOptions define_render_options()
           "top;Straight down, one pixel per cell of the current region "
           "(georeferenced outputs)"));
     o->size = define("size", TYPE_INTEGER,
-                     _("Image size in pixels of perspective and orthographic "
-                       "views (default: 640,480; view=top: the region's)"),
+                     _("Image size in pixels (default: 640,480; view=top: the "
+                       "maps have the region's cells, the PNG enlarges them by "
+                       "whole pixels to fit this size, by default to 640 on "
+                       "its longer side)"),
                      _("Camera"));
     o->size->key_desc = "width,height";
     o->tile = define("tile", TYPE_INTEGER,
@@ -349,12 +351,9 @@ RenderRequest read_render_options(const RenderOptions &options)
             size[0] > 65536 || size[1] > 65536)
             bad_request(_("size= takes the image's width,height in pixels "
                             "(1 to 65536 each), e.g. size=1056,884"));
-        if (v.kind == sbrt::ViewKind::top)
-            G_warning(_("size= is ignored with view=top: a top view has one "
-                        "pixel per cell of the current region (set it with "
-                        "g.region)"));
         r.width = int(size[0]);
         r.height = int(size[1]);
+        r.size_given = true;
     }
     if (o->tile->answers) {
         const std::vector<double> t = read_numbers(o->tile);

@@ -32,6 +32,7 @@ struct RenderRequest {
     bool annotate = true;  ///< the PNG's legend, north arrow, scale bar (not -n)
     std::optional<std::array<int, 4>> tile; ///< row, col, rows, cols of the image
     int width = 640, height = 480; ///< size=: perspective and orthographic
+    bool size_given = false;       ///< size= was given (a top view's PNG fits it)
     sbrt::View view;   ///< the camera as asked for (map units, degrees)
     double zexag = 1;
     bool zexag_fitted = true; ///< no zexag=: RenderSession::load fits it to the model

@@ -121,11 +121,11 @@ class TestGrassNative(TestCase):
         self.assertModule("r3.sbrt.render", input="geo", output="sz", overwrite=True)
         info = gs.raster_info("sz.red")
         self.assertEqual((int(info["rows"]), int(info["cols"])), (480, 640))
-        # a top view keeps the region's cells, with a warning if size= is given
+        # a top view's maps keep the region's cells (size= is its PNG's)
         run = subprocess.run(["r3.sbrt.render", "input=geo", "output=sz", "view=top",
                               "size=90,50", "--overwrite"], capture_output=True, text=True)
         self.assertEqual(run.returncode, 0, msg=run.stderr)
-        self.assertIn("size= is ignored with view=top", run.stderr)
+        self.assertNotIn("WARNING", run.stderr)
         info = gs.raster_info("sz.red")
         self.assertEqual((int(info["rows"]), int(info["cols"])),
                          (int(before["rows"]), int(before["cols"])))
@@ -186,14 +186,17 @@ class TestGrassNative(TestCase):
                                                   input="an_m").split()}
         self.assertGreater(len(seen), 3)
         with Image.open(png) as image:
-            self.assertEqual(image.height, 240)
+            # as high as the image, or as the legend needs at a readable size
+            self.assertGreaterEqual(image.height, 240)
             self.assertGreater(image.width, 320 + 40, msg="no panel")
             pixels = list(image.getdata())
             width = image.width
-        # the image part is the maps, pixel for pixel
-        left = [p for i, p in enumerate(pixels) if i % width < 320]
+        # the image part is the maps, pixel for pixel, white below them
+        left = [p for i, p in enumerate(pixels[:240 * width]) if i % width < 320]
         for k, band in enumerate(("red", "green", "blue")):
             self.assertEqual([p[k] for p in left], rgb_of(f"an.{band}"), msg=band)
+        below = {p for i, p in enumerate(pixels[240 * width:]) if i % width < 320}
+        self.assertLessEqual(below, {(255, 255, 255)})
         panel = [p for i, p in enumerate(pixels) if i % width >= 320]
         count = {}
         for p in panel:
@@ -219,10 +222,11 @@ class TestGrassNative(TestCase):
         self.assertModule("r3.sbrt.render", input="geo", output="tp", view="top",
                           png=png)
         with Image.open(png) as image:
-            self.assertEqual(image.height, 250)
-            panel = image.crop((200, 0, image.width, 250)).convert("L")
+            # each cell 3 x 3 pixels: at least 640 on the longer side
+            self.assertEqual(image.height, 750)
+            panel = image.crop((600, 0, image.width, 750)).convert("L")
             w = panel.width
-            rows = [list(panel.getdata())[r * w:(r + 1) * w] for r in range(250)]
+            rows = [list(panel.getdata())[r * w:(r + 1) * w] for r in range(750)]
         # the bar: a row in the panel's lower third with black and white
         # parts, each at least 5 pixels long
         def runs(row):
@@ -232,13 +236,49 @@ class TestGrassNative(TestCase):
                     out.append((row[start] < 128, i - start))
                     start = i
             return out
-        bars = [r for r in rows[170:] if sum(1 for dark, n in runs(r) if dark and n >= 5) >= 2]
+        bars = [r for r in rows[500:] if sum(1 for dark, n in runs(r) if dark and n >= 5) >= 2]
         self.assertTrue(bars, msg="no scale bar")
-        # -n: the image alone, the region's size
+        # -n: the image alone, enlarged the same
         self.assertModule("r3.sbrt.render", input="geo", output="tp", view="top",
                           png=png, flags="n", overwrite=True)
         with Image.open(png) as image:
-            self.assertEqual(image.size, (200, 250))
+            self.assertEqual(image.size, (600, 750))
+
+    def test_png_of_a_small_top_view_is_enlarged_and_readable(self):
+        """A top view of few cells (GeoTOP's 100 m cells over a few km):
+        each cell k x k pixels in the PNG, k whole, to 640 on the longer
+        side or to fit size=; the panel's legend, arrow and scale bar at a
+        readable size, the PNG as high as they need."""
+        from PIL import Image
+
+        self.runModule("g.region", rows=12, cols=16)
+        png = gs.tempfile() + ".png"
+        for size, k in ((None, 40), ((200, 100), 8), ((10, 10), 1)):
+            extra = {"size": size} if size else {}
+            self.assertModule("r3.sbrt.render", input="geo", output="ts", view="top",
+                              png=png, overwrite=True, **extra)
+            info = gs.raster_info("ts.red")
+            self.assertEqual((int(info["rows"]), int(info["cols"])), (12, 16))
+            maps = [rgb_of(f"ts.{band}") for band in ("red", "green", "blue")]
+            with Image.open(png) as image:
+                image = image.convert("RGB")
+                self.assertGreaterEqual(image.height, 12 * k)
+                self.assertGreater(image.width, 16 * k + 60, msg="no panel")
+                # every pixel of the image part is its cell's colour
+                for y in range(12 * k):
+                    for x in range(16 * k):
+                        cell = (y // k) * 16 + x // k
+                        self.assertEqual(image.getpixel((x, y)),
+                                         tuple(m[cell] for m in maps), msg=(size, x, y))
+                panel = image.crop((16 * k, 0, image.width, image.height)).convert("L")
+                # text at a readable size: the legend's first line (the
+                # bold title) at least 8 pixels high
+                dark_rows = [r for r in range(min(40, panel.height))
+                             if any(panel.getpixel((c, r)) < 100
+                                    for c in range(panel.width))]
+                self.assertGreaterEqual(len(dark_rows), 8, msg=size)
+                # the scale bar and its text are inside the file
+                self.assertGreater(image.height, 150, msg=size)
 
 
 if __name__ == "__main__":
