@@ -17,7 +17,9 @@ KernelNormals::KernelNormals(const Tracer &tracer, const Camera &camera, int k)
       parallel_(camera.parallel()), origin_(camera.origin()),
       forward_(camera.forward()), du_(camera.du()), dv_(camera.dv()),
       du2_(glm::dot(du_, du_)), dv2_(glm::dot(dv_, dv_)),
-      voxel_x_(tracer.frame().voxel_size().x)
+      on_surface_(0.05 * std::min({tracer.frame().voxel_size().x,
+                                   tracer.frame().voxel_size().y,
+                                   tracer.frame().voxel_size().z}))
 {
     if (k < 3 || k > 11 || k % 2 == 0)
         fail("kernel size ", k, " must be odd, from 3 to 11");
@@ -73,8 +75,9 @@ std::pair<int, int> KernelNormals::row_reach(const Hit *hits) const
     if (y_low > y_high)
         return {0, 0};
     // row = floor((1 - y) / 2 * rows), a row of margin for the rounding
-    const double first = std::floor((1 - y_high) / 2 * rows_) - 1;
-    const double last = std::floor((1 - y_low) / 2 * rows_) + 2;
+    // and one for the slope of the depth (seen_depth's rows above, below)
+    const double first = std::floor((1 - y_high) / 2 * rows_) - 2;
+    const double last = std::floor((1 - y_low) / 2 * rows_) + 3;
     return {int(std::clamp(first, 0.0, double(rows_))),
             int(std::clamp(last, 0.0, double(rows_)))};
 }

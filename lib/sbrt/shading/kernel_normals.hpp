@@ -22,11 +22,18 @@ namespace sbrt {
 /// \brief The hybrid image-space kernel of one camera.
 ///
 /// A k x k x k grid of voxel-sized cells is centred on the hit point. A cell
-/// centre is empty when it lies in front of the surface seen at the pixel it
-/// projects to (or that pixel sees nothing), occupied when it lies behind
-/// it; centres on the surface or outside the image do not count. The normal
-/// is the normalised sum of the unit vectors towards the empty centres. The
-/// face normal stays where the kernel finds no empty centre.
+/// centre is empty when it lies in front of the surface seen where it
+/// projects (or that pixel sees nothing), occupied when it lies behind it;
+/// centres on the surface (within a twentieth of a voxel) or outside the
+/// image do not count. The surface's depth where a centre projects is its
+/// pixel's, moved along the depth's slope to the centre's point within the
+/// pixel (the slope of the smoother side across and down: a step's edge is
+/// not a slope; of the reciprocal depth in perspective, which is affine
+/// over the image on a plane), so that the centres on a flat top's own level count
+/// neither way, as they should, instead of by where in their pixels they
+/// fall (a blotchy top). The normal is the normalised sum of the unit
+/// vectors towards the empty centres. The face normal stays where the
+/// kernel finds no empty centre.
 class KernelNormals {
 public:
     /// `k` odd, 3..11; `camera` the whole image (not a window of it).
@@ -56,9 +63,14 @@ public:
     };
     /// The k^3 - 1 cells around the centre (what the GPU's pass reads).
     const std::vector<Cell> &cells() const { return cells_; }
-    /// The voxel size along x (exaggerated map units) that the depth
-    /// tolerance adds to the depth.
-    double tolerance_voxel() const { return voxel_x_; }
+    /// The depth tolerance's part that does not grow with the depth: a
+    /// twentieth of the voxel's least side (exaggerated map units).
+    double tolerance_voxel() const { return on_surface_; }
+
+    /// The depth of the surface seen at pixel (r, c), at (fx, fy) pixels
+    /// from its centre (x right, y down, -0.5..0.5).
+    template <typename DepthAt>
+    double seen_depth(const DepthAt &depth_at, int r, int c, double fx, double fy) const;
 
 private:
 
@@ -66,7 +78,7 @@ private:
     int rows_, cols_;
     bool parallel_;
     glm::dvec3 origin_, forward_, du_, dv_;
-    double du2_, dv2_, voxel_x_;
+    double du2_, dv2_, on_surface_;
     std::vector<Cell> cells_;
     Cell corners_[8]; ///< the extreme cells: their images bound every cell's
 };
@@ -77,7 +89,7 @@ bool KernelNormals::normal(const Hit &hit, double depth, const DepthAt &depth_at
 {
     const glm::dvec3 v = tracer_.frame().exaggerate(hit.point) - origin_;
     const double p_du = glm::dot(v, du_), p_dv = glm::dot(v, dv_);
-    const double tolerance = 1e-6 * (std::fabs(depth) + voxel_x_);
+    const double tolerance = 1e-6 * std::fabs(depth) + on_surface_;
     glm::dvec3 sum(0);
     for (const Cell &cell : cells_) {
         const double z = depth + cell.along_forward;
@@ -89,11 +101,12 @@ bool KernelNormals::normal(const Hit &hit, double depth, const DepthAt &depth_at
             x /= z;
             y /= z;
         }
-        const double c = std::floor((x + 1) / 2 * cols_);
-        const double r = std::floor((1 - y) / 2 * rows_);
+        const double at_c = (x + 1) / 2 * cols_, at_r = (1 - y) / 2 * rows_;
+        const double c = std::floor(at_c), r = std::floor(at_r);
         if (c < 0 || c >= cols_ || r < 0 || r >= rows_)
             continue;
-        if (z < depth_at(int(r), int(c)) - tolerance)
+        if (z < seen_depth(depth_at, int(r), int(c), at_c - c - 0.5, at_r - r - 0.5) -
+                    tolerance)
             sum += cell.unit; // in front of the surface: empty
     }
     const double length = glm::length(sum);
@@ -101,6 +114,40 @@ bool KernelNormals::normal(const Hit &hit, double depth, const DepthAt &depth_at
         return false;
     out = sum / length;
     return true;
+}
+
+template <typename DepthAt>
+double KernelNormals::seen_depth(const DepthAt &depth_at, int r, int c, double fx,
+                                 double fy) const
+{
+    const double d = depth_at(r, c);
+    if (!std::isfinite(d))
+        return d; // a miss: anything is in front of it
+    // per pixel towards a neighbour at depth n: on a plane the depth of
+    // parallel rays moves by n - d, the reciprocal of a perspective one's
+    // by a share (d - n) / n of 1 / d (written as differences of depths,
+    // which a GPU's floats keep)
+    const auto step = [&](double n) { return parallel_ ? n - d : (d - n) / n; };
+    // the one-sided step of smaller size, towards +; none across a miss,
+    // none at a crease or spike (steps of opposite signs)
+    const auto slope = [&](double before, double after) {
+        const bool has_back = std::isfinite(before), has_ahead = std::isfinite(after);
+        const double back = has_back ? -step(before) : 0;
+        const double ahead = has_ahead ? step(after) : 0;
+        if (!has_back || !has_ahead)
+            return has_back ? back : ahead;
+        if (back * ahead <= 0)
+            return 0.0;
+        return std::fabs(back) < std::fabs(ahead) ? back : ahead;
+    };
+    const double across = slope(c > 0 ? depth_at(r, c - 1) : INFINITY,
+                                c + 1 < cols_ ? depth_at(r, c + 1) : INFINITY);
+    const double down = slope(r > 0 ? depth_at(r - 1, c) : INFINITY,
+                              r + 1 < rows_ ? depth_at(r + 1, c) : INFINITY);
+    const double moved = fx * across + fy * down;
+    if (parallel_)
+        return d + moved;
+    return 1 + moved > 0 ? d / (1 + moved) : INFINITY;
 }
 
 /// \brief Separable Gaussian weights of smoothing with `sigma` pixels:
