@@ -24,9 +24,10 @@ Stratum = collections.namedtuple("Stratum", "id rgb label")
 Channel = collections.namedtuple("Channel", "name unit long_name low high")
 # what a pixel of a view hits: map coordinates, class id, shown property
 Pick = collections.namedtuple("Pick", "x y z class_id value")
-# zexag: the exaggeration r3.sbrt.render fits to the model (no zexag= given)
-Extent = collections.namedtuple("Extent", "north south east west bottom top zexag",
-                                defaults=(1.0,))
+# zexag: the exaggeration r3.sbrt.render fits to the model (no zexag= given);
+# voxels: every top on a voxel boundary (stairs that kernel normals smooth)
+Extent = collections.namedtuple("Extent", "north south east west bottom top zexag voxels",
+                                defaults=(1.0, False))
 
 
 class ViewServer:
@@ -131,7 +132,7 @@ class ViewServer:
         """The extent, strata (id, colour, label) and property channels of
         SBRT `sbrt`."""
         head = self._ask("classes", ["input=" + sbrt])
-        extent = Extent(*[float(v) for v in head[1:8]])
+        extent = Extent(*[float(v) for v in head[1:8]], voxels=head[8:9] == ["1"])
         strata = []
         for text in self._lines(int(self._line()[1])):
             fields = text.split(" ", 4)

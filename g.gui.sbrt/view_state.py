@@ -49,11 +49,15 @@ class ViewState:
     def __init__(self, sbrt, extent, strata):
         self.sbrt = sbrt
         self.extent = extent
-        self.strata = [s for s in strata if s.id != NO_CLASS]
+        # by class id, as -p and the PNG legend list them
+        self.strata = sorted((s for s in strata if s.id != NO_CLASS), key=lambda s: s.id)
         self.azimuth, self.elevation, self.fov = 225.0, 30.0, 40.0
         self.distance = None  # None: framed by r3.sbrt.render
         self.target = None  # (x, y, z), real map units
         self.zexag = extent.zexag  # fitted to the model by r3.sbrt.render
+        # kernel normals: smooth light on a voxel model's stairs (frames
+        # while something moves keep face normals: a kernel costs more)
+        self.smooth_shading = extent.voxels
         self.hidden = set()  # class ids
         self.opacity = {}  # class id: share of light absorbed (< 1)
         self.section = None  # (direction in degrees from east, offset -1..1)
@@ -144,8 +148,9 @@ class ViewState:
             self.section = (direction, min(0.98, max(-0.98, offset + share)))
 
     # the options --------------------------------------------------------
-    def words(self, width, height):
-        """r3.sbrt.render's options of this view in a width x height image."""
+    def words(self, width, height, moving=False):
+        """r3.sbrt.render's options of this view in a width x height image
+        (`moving`: a reduced frame while the user moves something)."""
         words = [
             "input=" + self.sbrt,
             "size=%d,%d" % (width, height),
@@ -161,6 +166,8 @@ class ViewState:
         if light != 315.0:  # r3.sbrt.render's default
             words.append("light=%s,%s" % (number(light), number(LIGHT_ELEVATION)))
         words.append("zexag=" + number(self.zexag))  # the command says it
+        if self.smooth_shading and not moving:
+            words.append("normals=kernel")
         if self.hidden:
             words.append("hide=" + ",".join(str(i) for i in sorted(self.hidden)))
         translucent = sorted(i for i in self.opacity if i not in self.hidden)

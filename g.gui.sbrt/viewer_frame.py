@@ -135,6 +135,12 @@ class ViewerFrame(wx.Frame):
                                minValue=0, maxValue=ZexagScale.STEPS)
         view.Add(self.zexag, flag=wx.EXPAND)
         self._show_zexag()
+        self.smooth = wx.CheckBox(parent, label=_("Smooth shading (kernel normals)"))
+        self.smooth.SetValue(self.state.smooth_shading)
+        self.smooth.SetToolTip(_("Light voxel stairs as the slopes they make (on by "
+                                 "default for voxel models; frames while moving "
+                                 "use face normals)"))
+        view.Add(self.smooth)
         self.legend = wx.CheckBox(parent, label=_("Legend"))
         self.legend.SetValue(True)
         view.Add(self.legend)
@@ -191,6 +197,7 @@ class ViewerFrame(wx.Frame):
         parent.SetMinSize((320, -1))
 
         self.zexag.Bind(wx.EVT_SLIDER, self._on_zexag)
+        self.smooth.Bind(wx.EVT_CHECKBOX, self._on_smooth)
         self.legend.Bind(wx.EVT_CHECKBOX, self._on_legend)
         self.section_on.Bind(wx.EVT_CHECKBOX, self._on_section)
         self.section_direction.Bind(wx.EVT_SLIDER, self._on_section)
@@ -319,7 +326,7 @@ class ViewerFrame(wx.Frame):
         if not full:
             width, height = max(1, width // REDUCTION), max(1, height // REDUCTION)
         self._sent += 1
-        words = self.state.words(width, height)
+        words = self.state.words(width, height, moving=not full)
         self.thread.request(words, (self._sent, full))
         self.command.SetValue(self.state.command(*self.canvas.GetClientSize()))
 
@@ -395,6 +402,7 @@ class ViewerFrame(wx.Frame):
         self.log.write("widget", name="canvas", rect=rect(self.canvas))
         self.log.write("widget", name="legend", rect=rect(self.legend))
         self.log.write("widget", name="zexag", rect=rect(self.zexag))
+        self.log.write("widget", name="smooth", rect=rect(self.smooth))
         self.log.write("widget", name="section", rect=rect(self.section_on))
         self.log.write("widget", name="strata", rect=rect(self.strata.list))
         self.log.write("widget", name="controls", rect=rect(self.side))
@@ -443,6 +451,10 @@ class ViewerFrame(wx.Frame):
         self.state.distance = self.state.target = None
         self._show_zexag()
         self._moving()
+
+    def _on_smooth(self, event):
+        self.state.smooth_shading = self.smooth.GetValue()
+        self.request_frame(True)
 
     def _show_zexag(self):
         self.zexag_label.SetLabel(_("Vertical exaggeration: %s") % number(self.state.zexag))

@@ -17,6 +17,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "format/format_v2.hpp"
 #include "image_memory.hpp"
 #include "model/material_table.hpp"
 #include "render_session.hpp"
@@ -97,9 +98,12 @@ void ViewServer::classes(const RenderRequest &request)
     session_.load(whole, region);
     const sbrt::Model &model = session_.model();
     const sbrt::Frame &f = model.frame();
-    // the extent, and the exaggeration a request without zexag= gets
-    std::fprintf(out_, "model %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", f.north,
-                 f.south, f.east, f.west, f.bottom, f.top, whole.zexag);
+    // the extent, the exaggeration a request without zexag= gets, and
+    // whether every top lies on a voxel boundary (a voxel model: stairs
+    // that kernel normals smooth)
+    const bool voxels = sbrt::widths_for(model).tops == sbrt::TopEncoding::VoxelBoundaries;
+    std::fprintf(out_, "model %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d\n", f.north,
+                 f.south, f.east, f.west, f.bottom, f.top, whole.zexag, int(voxels));
     std::fprintf(out_, "classes %zu\n", model.materials().size());
     // the colours a render draws (the palette's where a class has none)
     for (uint32_t i = 0; i < model.materials().size(); ++i) {
@@ -126,6 +130,10 @@ void ViewServer::classes(const RenderRequest &request)
 
 void ViewServer::pick(RenderRequest request, int row, int col)
 {
+    // what the pixel hits, not how it is lit: kernel normals need the whole
+    // image, and the pick traces one pixel of it
+    request.normals = sbrt::Normals::face;
+    request.smooth = 0;
     struct Cell_head region;
     G_get_window(&region);
     session_.load(request, region);

@@ -119,6 +119,7 @@ class TestViewServer(TestCase):
                          " ".join(run.stderr.split()))
         self.assertIsNotNone(said, run.stderr)
         self.assertEqual(float(said.group(1)), extent.zexag)
+        self.assertTrue(extent.voxels)  # a 3D raster's tops are voxel boundaries
         for s in strata:
             self.assertEqual(len(s.rgb), 3)
 
@@ -210,6 +211,9 @@ class TestViewServerChannels(TestCase):
         self.assertGreaterEqual(hits, 3)
         # a pixel of the sky
         self.assertIsNone(self.server.pick(words, 0, 0))
+        # the viewer's smooth shading: the same hit (lighting is not picked)
+        smooth = self.server.pick(words + ["normals=kernel", "smooth=1"], 60, 80)
+        self.assertEqual(smooth[:4], self.server.pick(words, 60, 80)[:4])  # value: nan
 
     def test_property_frames_are_the_command_lines(self):
         """What the viewer's property controls ask for: colour by a channel,

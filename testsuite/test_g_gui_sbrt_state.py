@@ -67,6 +67,17 @@ class TestViewState(TestCase):
         state.zexag = 1.0  # the command must still say it: 1 is not the default
         self.assertEqual(word(state.words(80, 60), "zexag"), "1")
 
+    def test_voxel_models_are_shaded_smooth_when_still(self):
+        voxels = Extent(north=2000, south=0, east=1000, west=0, bottom=-100, top=50,
+                        zexag=4.0, voxels=True)
+        state = ViewState("model", voxels, [])
+        self.assertEqual(word(state.words(80, 60), "normals"), "kernel")
+        self.assertIsNone(word(state.words(40, 30, moving=True), "normals"))
+        state.smooth_shading = False
+        self.assertIsNone(word(state.words(80, 60), "normals"))
+        horizons = voxels._replace(voxels=False)
+        self.assertIsNone(word(ViewState("model", horizons, []).words(80, 60), "normals"))
+
     def test_exaggeration_slider_is_logarithmic(self):
         scale = ZexagScale(1500.0)
         self.assertEqual(scale.value(0), 1.0)
