@@ -76,19 +76,27 @@ struct Placement {
     double cell = 25, tb = 4, bottom = -300;
 };
 
+/// The frame of rows x cols cells x depths levels placed at `at`.
+inline Frame placed_frame(int rows, int cols, int depths, Placement at = {})
+{
+    Frame f;
+    f.rows = rows;
+    f.cols = cols;
+    f.depths = depths;
+    f.west = at.west;
+    f.east = at.west + cols * at.cell;
+    f.south = at.south;
+    f.north = at.south + rows * at.cell;
+    f.bottom = at.bottom;
+    f.top = at.bottom + depths * at.tb;
+    return f;
+}
+
 /// A layered model with folds, a cave and a hole through it.
 inline Model geology(int rows, int cols, int depths, Placement at = {})
 {
     Voxels v;
-    v.frame.rows = rows;
-    v.frame.cols = cols;
-    v.frame.depths = depths;
-    v.frame.west = at.west;
-    v.frame.east = at.west + cols * at.cell;
-    v.frame.south = at.south;
-    v.frame.north = at.south + rows * at.cell;
-    v.frame.bottom = at.bottom;
-    v.frame.top = at.bottom + depths * at.tb;
+    v.frame = placed_frame(rows, cols, depths, at);
     v.classes.assign(v.frame.voxels(), NULL_CLASS);
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c) {

@@ -486,15 +486,7 @@ namespace {
 Voxels counted_columns(uint64_t &runs)
 {
     Voxels v;
-    v.frame.rows = 30;
-    v.frame.cols = 41;
-    v.frame.depths = 20;
-    v.frame.west = 612000.5;
-    v.frame.east = v.frame.west + 41 * 25.0;
-    v.frame.south = 4312000.25;
-    v.frame.north = v.frame.south + 30 * 25.0;
-    v.frame.bottom = -300;
-    v.frame.top = -300 + 20 * 4.0;
+    v.frame = placed_frame(30, 41, 20); // 25 m cells, 4 m levels from -300
     v.classes.assign(v.frame.voxels(), NULL_CLASS);
     runs = 0;
     const int cells = 30 * 41;

@@ -13,6 +13,7 @@
 
 #include "scene/view.hpp"
 #include "shading/kernel_normals.hpp"
+#include "gpu_compare.hpp"
 #include "test_support.hpp"
 #include "tracing/cpu_tracing.hpp"
 
@@ -25,15 +26,7 @@ namespace {
 Model flat_topped_box()
 {
     sbrt_test::Voxels v;
-    v.frame.rows = 40;
-    v.frame.cols = 50;
-    v.frame.depths = 20;
-    v.frame.west = 150000;
-    v.frame.east = v.frame.west + 50 * 100.0;
-    v.frame.south = 400000;
-    v.frame.north = v.frame.south + 40 * 100.0;
-    v.frame.bottom = -10;
-    v.frame.top = 0;
+    v.frame = sbrt_test::placed_frame(40, 50, 20, {150000, 400000, 100, 0.5, -10});
     v.classes.assign(v.frame.voxels(), NULL_CLASS);
     for (int z = 0; z < 20; ++z)
         for (int r = 0; r < 40; ++r)
