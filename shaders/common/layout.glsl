@@ -235,5 +235,6 @@ float smoothing_weight(int d)
 #endif
 
 const uint FACE_NONE = 0u, FACE_WEST = 1u, FACE_EAST = 2u, FACE_SOUTH = 3u,
-           FACE_NORTH = 4u, FACE_BOTTOM = 5u, FACE_TOP = 6u, FACE_PLANE = 7u;
+           FACE_NORTH = 4u, FACE_BOTTOM = 5u, FACE_TOP = 6u, FACE_PLANE = 7u,
+           FACE_CYLINDER = 8u, FACE_FENCE = 9u, FACE_SPLIT = 10u;
 const uint CODE_OVER_BUDGET = 1u << 24;

@@ -40,7 +40,6 @@ layout(std430, binding = 11) readonly buffer CellOverlays { uint cell_overlays[]
 #endif
 
 const uint PANEL = 0xffffffffu;
-const uint FACE_CYLINDER = 8u, FACE_FENCE = 9u, FACE_SPLIT = 10u;
 
 // the ray of this invocation: local (hi + t d) + lo; work done so far
 // against the loop budget (llvmpipe), and where it ends

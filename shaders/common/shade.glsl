@@ -104,7 +104,12 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
         if (on_drape_surface(point, (code >> 16) & 0xfu) && drape_sample(point, texture_rgb))
             surface += drape.x * (texture_rgb - surface);
 #endif
-        float lambert = max(0.0, dot(light.xyz, n));
+        // a cut (section, plane, fence curtain) shows its classes as the
+        // legend does, whatever the light: a section seen head-on is not
+        // in shadow
+        uint face = (code >> 16) & 0xfu;
+        float lambert = face == FACE_PLANE || face == FACE_FENCE
+            ? 1.0 : max(0.0, dot(light.xyz, n));
         color = surface * (light.w + (1.0 - light.w) * lambert);
     }
     color = 255.0 * veil_t.rgb + veil_t.a * color;

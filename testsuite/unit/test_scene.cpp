@@ -12,6 +12,10 @@
 #include "tracing/cpu_tracing.hpp"
 #include "util/error.hpp"
 #include "scene/hidden_materials.hpp"
+#include "scene/view.hpp"
+#include "shading/shading.hpp"
+#include "model/material_table.hpp"
+#include "gpu_compare.hpp"
 #include "test_support.hpp"
 
 using namespace sbrt;
@@ -119,4 +123,38 @@ TEST(ClipPlanes, RemovedSideIsWhereTheNormalPoints)
     EXPECT_THROW(Tracer(m, 1.0, {{mid, {0, 0, 0}}}), Error);
     EXPECT_THROW(Tracer(m, 1.0, std::vector<ClipPlane>(MAX_CLIP_PLANES + 1, {mid, {1, 0, 0}})),
                  Error);
+}
+
+TEST(ClipPlanes, ASectionSeenHeadOnShowsItsClassesAsTheLegend)
+{
+    // a south-facing cut seen from the south with the default light (from
+    // the north-west, behind it): the cut is drawn in the classes' own
+    // colours, not in shadow; the model's other faces stay lit
+    const Model m = sbrt_test::geology(30, 40, 20);
+    const Frame &f = m.frame();
+    const glm::dvec3 mid((f.west + f.east) / 2, (f.south + f.north) / 2, f.bottom);
+    const Tracer tracer(m, 2.0, {{mid, {0, -1, 0}}});
+    View view;
+    view.azimuth = 180;
+    view.elevation = 10;
+    const Camera camera = view_camera(view, tracer.model(), tracer.frame(), 120, 160);
+    Shading shading;
+    shading.light = Shading::light_from(315, 45);
+    const PixelShader shader(m, shading);
+    const HitImage hits = trace_image(tracer, camera, 1);
+    int cut = 0, lit_faces = 0;
+    for (const Hit &hit : hits) {
+        if (!hit.is_hit())
+            continue;
+        const auto rgb = shader(hit);
+        const auto legend = material_color(m, hit.material);
+        if (hit.face == Face::plane) {
+            ++cut;
+            EXPECT_EQ(rgb, legend);
+        }
+        else if (rgb != legend)
+            ++lit_faces;
+    }
+    EXPECT_GT(cut, 120 * 160 / 20);
+    EXPECT_GT(lit_faces, 0);
 }

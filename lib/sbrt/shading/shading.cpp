@@ -86,8 +86,13 @@ std::array<uint8_t, 3> PixelShader::lit(const Hit &hit) const
             surface = shading.drape->color(hit, surface);
         if (shading.fade)
             surface = shading.fade->apply(hit, surface);
+        // a cut (section, plane, fence curtain) shows its classes as the
+        // legend does, whatever the light: a section seen head-on is not
+        // in shadow
         const double lambert =
-            std::max(0.0, glm::dot(shading.light, glm::dvec3(hit.normal)));
+            hit.face == Face::plane || hit.face == Face::fence
+                ? 1.0
+                : std::max(0.0, glm::dot(shading.light, glm::dvec3(hit.normal)));
         color = surface * (shading.ambient + (1 - shading.ambient) * lambert);
     }
     color = 255.0 * glm::dvec3(hit.veil) + double(hit.transmittance) * color;
