@@ -41,15 +41,17 @@ void render_frame(const RenderRequest &request, RenderSession &session,
     maps.close(session.renderer().model(), session.property());
 }
 
-/// Says which exaggeration a render without zexag= got, and why.
-void report_fitted_exaggeration(const sbrt::Model &model, double zexag)
+/// Says which exaggeration a render without zexag= got (the frame's), and
+/// from what: the frame's extent, and its box's height from the bottom to
+/// the highest top.
+void report_fitted_exaggeration(const sbrt::CoordinateFrame &frame)
 {
-    const sbrt::Frame &f = model.frame();
-    const double thickness = sbrt::highest_top_local(model) * f.tb_res();
+    const sbrt::Frame &f = frame.grid();
     const char *units = G_database_unit_name(TRUE);
     G_message(_("Vertical exaggeration %g, fitted to the model's extent (%g x %g %s) "
                 "and thickness (%g %s); zexag= sets another"),
-              zexag, f.east - f.west, f.north - f.south, units, thickness, units);
+              frame.zexag(), f.east - f.west, f.north - f.south, units,
+              frame.top_elevation() - f.bottom, units);
 }
 
 void run(const RenderRequest &asked)
@@ -70,7 +72,7 @@ void run(const RenderRequest &asked)
     RenderSession session;
     session.load(request, region);
     if (request.zexag_fitted && request.view.kind != sbrt::ViewKind::top)
-        report_fitted_exaggeration(session.model(), request.zexag);
+        report_fitted_exaggeration(session.frame());
     const std::vector<sbrt::Camera> cameras = session.cameras(request, region);
     session.prepare(request, cameras.front(), request.frames == 1);
     const bool sweep = request.frames > 1 && request.path == sbrt::PathKind::sweep;

@@ -103,10 +103,11 @@ void RenderSession::load(RenderRequest &request, const struct Cell_head &region)
         model_key_.clear();
         model_ = std::make_unique<sbrt::Model>(read_model(request, region));
         apply_color_option(request, *model_);
+        fitted_zexag_ = sbrt::fitting_exaggeration(*model_); // once a model
         model_key_ = key;
     }
     if (request.zexag_fitted)
-        request.zexag = sbrt::fitting_exaggeration(*model_);
+        request.zexag = fitted_zexag_;
     if (!frame_ || frame_->zexag() != request.zexag)
         frame_ = sbrt::CoordinateFrame::of(*model_, request.zexag);
 }

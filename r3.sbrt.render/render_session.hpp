@@ -73,6 +73,7 @@ private:
 
     std::string model_key_;
     std::unique_ptr<sbrt::Model> model_;
+    double fitted_zexag_ = 1; ///< of model_: what a request without zexag= gets
     std::optional<sbrt::CoordinateFrame> frame_;
     std::string drape_key_;
     std::unique_ptr<sbrt::Drape> drape_;

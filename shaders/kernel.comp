@@ -74,13 +74,10 @@ void main()
     kernel_across[i] = vec4(sum, 0.0);
 }
 #else
-// KernelNormals::normal: the unit vectors towards the kernel's cells that
-// lie in front of the surface seen where they project; false (the face
-// normal stays) where none does
 // KernelNormals::seen_depth: the depth seen at pixel (r, c), at (fx, fy)
-// pixels from its centre along the smoother side's slope
-// (per pixel towards a neighbour at depth n: n - d for parallel rays, the
-// share (d - n) / n of 1 / d for perspective ones)
+// pixels from its centre along the smoother side's slope (per pixel
+// towards a neighbour at depth n: n - d for parallel rays, the share
+// (d - n) / n of 1 / d for perspective ones)
 float depth_step(float d, float n)
 {
     return kernel_eye.w != 0.0 ? n - d : (d - n) / n;
@@ -114,6 +111,9 @@ float seen_depth(int r, int c, float fx, float fy)
     return 1.0 + moved > 0.0 ? d / (1.0 + moved) : INF;
 }
 
+// KernelNormals::normal: the unit vectors towards the kernel's cells that
+// lie in front of the surface seen where they project; false (the face
+// normal stays) where none does
 bool kernel_normal(vec3 point, float depth, out vec3 n)
 {
     uint cols = grid.z, rows = grid.w;

@@ -218,7 +218,8 @@ layout(std430, binding = 6) buffer KernelAcross { vec4 kernel_across[]; };
 layout(std140, binding = 2) uniform Kernel {
     vec4 kernel_eye;     // xyz: the camera's origin from the model's corner
                          // (exaggerated map units); w: 1 = parallel rays
-    vec4 kernel_forward; // xyz: unit view axis; w: the tolerance's part that does not grow with the depth
+    vec4 kernel_forward; // xyz: unit view axis; w: the depth tolerance's
+                         // part that does not grow with the depth
     vec4 kernel_du;      // xyz: du; w: du . du
     vec4 kernel_dv;      // xyz: dv; w: dv . dv
     vec4 kernel_voxel;   // xyz: exaggerated map units per local unit

@@ -89,7 +89,7 @@ static_assert(sizeof(GpuShade) == 240 && offsetof(GpuShade, plane_normals) == 64
 /// normals' passes (shaders/kernel.comp).
 struct GpuKernel {
     float eye[4];     ///< camera origin from the model's corner; w: 1 parallel
-    float forward[4]; ///< w: KernelNormals::tolerance_voxel (on the surface within it)
+    float forward[4]; ///< w: KernelNormals::tolerance_voxel
     float du[4];      ///< w: du . du
     float dv[4];      ///< w: dv . dv
     float voxel[4];   ///< exaggerated map units per local unit

@@ -27,11 +27,11 @@ namespace sbrt {
 /// centres on the surface (within a twentieth of a voxel) or outside the
 /// image do not count. The surface's depth where a centre projects is its
 /// pixel's, moved along the depth's slope to the centre's point within the
-/// pixel (the slope of the smoother side across and down: a step's edge is
-/// not a slope; of the reciprocal depth in perspective, which is affine
-/// over the image on a plane), so that the centres on a flat top's own level count
-/// neither way, as they should, instead of by where in their pixels they
-/// fall (a blotchy top). The normal is the normalised sum of the unit
+/// pixel: the slope of the smoother side across and down (a step's edge is
+/// not a slope, nor is a crease), of the reciprocal depth in perspective
+/// (affine over the image on a plane). So the centres on a flat top's own
+/// level count neither way, as they should, instead of by where in their
+/// pixels they fall (a blotchy top). The normal is the normalised sum of the unit
 /// vectors towards the empty centres. The face normal stays where the
 /// kernel finds no empty centre.
 class KernelNormals {
