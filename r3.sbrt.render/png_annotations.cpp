@@ -410,16 +410,20 @@ void AnnotatedPng::count_classes(const sbrt::Band &band)
 {
     if (!needs_classes())
         return;
-    if (band.material.size() != band.pixels())
+    if (band.material.empty())
         throw sbrt::Error("the PNG's legend needs the class of each pixel");
     int32_t last = sbrt::NULL_CLASS;
-    for (const int32_t id : band.material) {
-        if (id == last || id == sbrt::NULL_CLASS)
-            continue;
-        last = id;
-        const auto found = class_index_.find(id);
-        if (found != class_index_.end())
-            seen_[found->second] = true;
+    for (int r = 0; r < band.rows; ++r) {
+        const int32_t *row = band.material.row(r);
+        for (int c = 0; c < band.cols; ++c) {
+            const int32_t id = row[c];
+            if (id == last || id == sbrt::NULL_CLASS)
+                continue;
+            last = id;
+            const auto found = class_index_.find(id);
+            if (found != class_index_.end())
+                seen_[found->second] = true;
+        }
     }
 }
 
@@ -427,7 +431,7 @@ void AnnotatedPng::write_enlarged(const sbrt::Band &band)
 {
     const int band_cols = cols_ / enlarge_;
     for (int r = 0; r < band.rows; ++r) {
-        const uint8_t *in = band.rgb.data() + size_t(r) * size_t(band_cols) * 3;
+        const uint8_t *in = band.rgb.row(r);
         uint8_t *out = png_ ? row_.data()
                             : image_.data() + size_t(band.first_row + r) * size_t(enlarge_) *
                                                   size_t(cols_) * 3;
@@ -446,7 +450,8 @@ void AnnotatedPng::write_enlarged(const sbrt::Band &band)
 void AnnotatedPng::write(const sbrt::Band &band)
 {
     if (png_ && enlarge_ == 1) {
-        png_->write_rows(band.rgb.data(), band.rows);
+        for (int r = 0; r < band.rows; ++r)
+            png_->write_rows(band.rgb.row(r), 1);
         return;
     }
     count_classes(band);

@@ -113,17 +113,17 @@ void ImageMaps::write(const sbrt::Band &band)
 {
     const size_t cols = size_t(cols_);
     for (int r = 0; r < band.rows; ++r) {
-        const size_t row = size_t(r) * cols;
+        const uint8_t *rgb_row = band.rgb.row(r);
         if (composite_)
-            composite_->write_row(band.rgb.data() + row * 3);
+            composite_->write_row(rgb_row);
         for (size_t k = 0; k < rgb_.size(); ++k) {
-            const uint8_t *rgb = band.rgb.data() + row * 3 + k;
+            const uint8_t *rgb = rgb_row + k;
             for (size_t c = 0; c < cols; ++c)
                 cells_[c] = rgb[c * 3];
             Rast_put_c_row(rgb_[k].fd, cells_.data());
         }
         if (!material_.empty()) {
-            const int32_t *material = band.material.data() + row;
+            const int32_t *material = band.material.row(r);
             for (size_t c = 0; c < cols; ++c) {
                 if (material[c] == sbrt::NULL_CLASS)
                     Rast_set_c_null_value(&cells_[c], 1);
@@ -137,7 +137,7 @@ void ImageMaps::write(const sbrt::Band &band)
                                           std::pair{&value_, &band.value}}) {
             if (maps->empty())
                 continue;
-            const double *v = values->data() + row;
+            const double *v = values->row(r);
             for (size_t c = 0; c < cols; ++c) {
                 if (std::isnan(v[c]))
                     Rast_set_d_null_value(&dcells_[c], 1);

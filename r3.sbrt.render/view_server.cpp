@@ -64,8 +64,9 @@ void ViewServer::render(RenderRequest request)
     session_.prepare(request, camera, false);
     std::vector<uint8_t> rgb(size_t(rows) * size_t(cols) * 3);
     session_.render(camera, sbrt::Outputs{}, [&](const sbrt::Band &band) {
-        std::copy(band.rgb.begin(), band.rgb.end(),
-                  rgb.begin() + long(band.first_row) * cols * 3);
+        for (int r = 0; r < band.rows; ++r)
+            std::copy_n(band.rgb.row(r), size_t(cols) * 3,
+                        rgb.begin() + long(band.first_row + r) * cols * 3);
     });
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -150,10 +151,10 @@ void ViewServer::pick(RenderRequest request, int row, int col)
     int32_t material = sbrt::NULL_CLASS;
     double depth = NAN, value = NAN;
     session_.render(pixel, outputs, [&](const sbrt::Band &band) {
-        material = band.material[0];
-        depth = band.depth[0];
+        material = band.material.row(0)[0];
+        depth = band.depth.row(0)[0];
         if (!band.value.empty())
-            value = band.value[0];
+            value = band.value.row(0)[0];
     });
     if (material == sbrt::NULL_CLASS || !std::isfinite(depth)) {
         std::fprintf(out_, "hit none\n");

@@ -185,7 +185,8 @@ vec3 smoothed_normal(uvec2 pixel, uint i)
     return length_of_sum > 0.0 ? sum / length_of_sum : kernel_normals[i].xyz;
 }
 
-void main()
+// The kernel normal and outputs of this invocation's pixel
+void shade_pixel()
 {
     // this dispatch covers the band of image rows from kernel_counts.y on
     uvec2 pixel;
@@ -195,7 +196,7 @@ void main()
     uint index = gl_GlobalInvocationID.y * grid.z + pixel.x;
     PixelHit hit = image_hits[i];
     if ((hit.code & CODE_OVER_BUDGET) != 0u) {
-        words[index * outputs.x] = 0u;
+        flag_over_budget(index);
         return;
     }
     vec3 start;
@@ -204,6 +205,16 @@ void main()
         n = kernel_counts.w > 0u ? smoothed_normal(pixel, i) : hit_kernel_normal(hit, i, d);
     write_pixel(index, hit.point, hit.code, n, hit.veil,
                 length((hit.point - start) * real_unit.xyz));
+}
+
+void main()
+{
+    // every invocation reaches the barrier (raycast.comp's main)
+    group_rgb[gl_LocalInvocationIndex] = 0u;
+    shade_pixel();
+    memoryBarrierShared();
+    barrier();
+    pack_group_rgb(min(kernel_counts.z, grid.w - kernel_counts.y), grid.z);
 }
 #endif
 #endif

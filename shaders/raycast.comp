@@ -67,7 +67,7 @@ bool passes(vec2 range, float z_a, float z_b)
 void finish(uint index, vec3 point, uint code, float t)
 {
     if ((code & CODE_OVER_BUDGET) != 0u) {
-        words[index * outputs.x] = 0u;
+        flag_over_budget(index);
         return;
     }
     write_pixel(index, point, code, hit_normal(code, ray_d),
@@ -107,7 +107,8 @@ bool climb(uint level, int ix, int iy, vec3 hi, vec3 lo, vec3 d, float z_in,
     return true;
 }
 
-void main()
+// The first hit of this invocation's pixel, written by finish()
+void trace_pixel()
 {
     // this dispatch covers the band of image rows from options.z on
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -403,4 +404,19 @@ void main()
     break;
     }
     finish(index, vec3(0.0), 0u, 0.0);
+}
+
+void main()
+{
+#ifdef SBRT_SHADE
+    // every invocation reaches the barrier: the work group's colours are
+    // packed into the band's rows once all are shaded
+    group_rgb[gl_LocalInvocationIndex] = 0u;
+    trace_pixel();
+    memoryBarrierShared();
+    barrier();
+    pack_group_rgb(min(options.w, grid.w - options.z), grid.z);
+#else
+    trace_pixel();
+#endif
 }

@@ -232,13 +232,13 @@ void render_bands(RowTracer &source, KernelBands *kernel, const RowShader &shade
 {
     HitImage band_hits; // made when a band is first traced on this side
     bool shaded_by_tracer = false;
-    BandWriter writer(sink);
+    BandWriter writer(sink, RowTracer::SINK_BANDS);
     for (int first = 0; first < rows; first += report.band_rows) {
         const int count = std::min(report.band_rows, rows - first);
         Band band = writer.take();
         const auto start = std::chrono::steady_clock::now();
-        prepare_band(band, first, count, cols, outputs);
         if (kernel) {
+            prepare_band(band, first, count, cols, outputs);
             kernel->prepare(first, first + count);
             for_each_row(first, first + count, threads,
                          [&](int row) { shade(kernel->hits(row), row, band); });
@@ -247,6 +247,7 @@ void render_bands(RowTracer &source, KernelBands *kernel, const RowShader &shade
             shaded_by_tracer = true; // no hits on this side
         }
         else {
+            prepare_band(band, first, count, cols, outputs);
             if (band_hits.empty())
                 band_hits = HitImage(size_t(report.band_rows) * cols);
             source.trace_rows(first, count, band_hits.data());
@@ -290,6 +291,8 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     report.band_rows = std::min(image_rows, settings_.band_rows > 0 ? settings_.band_rows
                                             : preferred > 0        ? preferred
                                                                    : std::max(16, 4 * int(threads)));
+    if (rows)
+        report.band_rows = std::max(1, std::min(report.band_rows, rows->max_band_rows(cols, outputs)));
     std::optional<CpuRowTracer> cpu;
     if (!rows) {
         cpu.emplace(*tracer_, camera, threads, settings_.first_pass);
@@ -323,18 +326,30 @@ Image empty_image(const Camera &camera, const Outputs &outputs)
     return image;
 }
 
+namespace {
+
+/// The rows of `plane` into `image`'s vector from the band's first pixel,
+/// `per_pixel` elements a pixel.
+template <typename T, typename Vector>
+void gather_plane(const Band &band, const BandPlane<T> &plane, size_t per_pixel, Vector &image)
+{
+    if (plane.empty())
+        return;
+    const size_t row_elements = size_t(band.cols) * per_pixel;
+    for (int r = 0; r < band.rows; ++r)
+        std::copy_n(plane.row(r), row_elements,
+                    image.begin() + ptrdiff_t(size_t(band.first_row + r) * row_elements));
+}
+
+} // namespace
+
 void gather_band(const Band &band, Image &image)
 {
-    const size_t at = size_t(band.first_row) * band.cols;
-    std::copy(band.rgb.begin(), band.rgb.end(), image.rgb.begin() + ptrdiff_t(at) * 3);
-    std::copy(band.material.begin(), band.material.end(),
-              image.material.begin() + ptrdiff_t(band.material.empty() ? 0 : at));
-    std::copy(band.elevation.begin(), band.elevation.end(),
-              image.elevation.begin() + ptrdiff_t(band.elevation.empty() ? 0 : at));
-    std::copy(band.depth.begin(), band.depth.end(),
-              image.depth.begin() + ptrdiff_t(band.depth.empty() ? 0 : at));
-    std::copy(band.value.begin(), band.value.end(),
-              image.value.begin() + ptrdiff_t(band.value.empty() ? 0 : at));
+    gather_plane(band, band.rgb, 3, image.rgb);
+    gather_plane(band, band.material, 1, image.material);
+    gather_plane(band, band.elevation, 1, image.elevation);
+    gather_plane(band, band.depth, 1, image.depth);
+    gather_plane(band, band.value, 1, image.value);
 }
 
 Image Renderer::render_image(const Camera &camera, const Outputs &outputs,

@@ -1,6 +1,6 @@
 /****************************************************************************
  * MODULE:    lib/sbrt_gl (r3.sbrt addon)
- * PURPOSE:   The OpenGL 4.3+ core entry points the renderer uses, loaded
+ * PURPOSE:   The OpenGL 4.4+ core entry points the renderer uses, loaded
  *            through the context's getProcAddress (EGL or OSMesa): no
  *            link-time GL library, no global function pointers
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
@@ -53,7 +53,19 @@ namespace sbrt_gl {
     X(PFNGLTEXSTORAGE2DPROC, TexStorage2D)                                    \
     X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                                  \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                  \
-    X(PFNGLFINISHPROC, Finish)
+    X(PFNGLFINISHPROC, Finish)                                                \
+    X(PFNGLFLUSHPROC, Flush)                                                  \
+    X(PFNGLBUFFERSTORAGEPROC, BufferStorage)                                  \
+    X(PFNGLMAPBUFFERRANGEPROC, MapBufferRange)                                \
+    X(PFNGLUNMAPBUFFERPROC, UnmapBuffer)                                      \
+    X(PFNGLFENCESYNCPROC, FenceSync)                                          \
+    X(PFNGLCLIENTWAITSYNCPROC, ClientWaitSync)                                \
+    X(PFNGLDELETESYNCPROC, DeleteSync)                                        \
+    X(PFNGLGENQUERIESPROC, GenQueries)                                        \
+    X(PFNGLDELETEQUERIESPROC, DeleteQueries)                                  \
+    X(PFNGLBEGINQUERYPROC, BeginQuery)                                        \
+    X(PFNGLENDQUERYPROC, EndQuery)                                            \
+    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
 
 /// \brief Entry points of one context; call as gl.GetString(...).
 struct GlApi {

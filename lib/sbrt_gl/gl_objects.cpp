@@ -56,6 +56,95 @@ void GlBuffer::download(void *data, size_t bytes) const
     check_gl(*gl_, "reading a buffer back");
 }
 
+MappedBuffer::MappedBuffer(const GlApi &gl, size_t bytes) : gl_(&gl), bytes_(bytes)
+{
+    const GLbitfield access =
+        GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    gl.GenBuffers(1, &name_);
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, name_);
+    const GLsizeiptr size = GLsizeiptr(bytes ? bytes : 16);
+    gl.BufferStorage(GL_SHADER_STORAGE_BUFFER, size, nullptr, access | GL_CLIENT_STORAGE_BIT);
+    if (gl.GetError() == GL_NO_ERROR)
+        host_ = static_cast<uint8_t *>(
+            gl.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, size, access));
+    const GLenum error = gl.GetError();
+    if (!host_ || error != GL_NO_ERROR) {
+        gl.DeleteBuffers(1, &name_);
+        sbrt::fail("OpenGL: cannot map a buffer of ", bytes, " bytes into host memory (error 0x",
+                   std::hex, error, ")");
+    }
+}
+
+MappedBuffer::~MappedBuffer()
+{
+    if (!name_)
+        return;
+    gl_->BindBuffer(GL_SHADER_STORAGE_BUFFER, name_);
+    gl_->UnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+    gl_->DeleteBuffers(1, &name_);
+}
+
+void MappedBuffer::bind(GLuint index) const
+{
+    gl_->BindBufferBase(GL_SHADER_STORAGE_BUFFER, index, name_);
+}
+
+GlFence::GlFence(const GlApi &gl)
+    : gl_(&gl), sync_(gl.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0))
+{
+    if (!sync_)
+        sbrt::fail("OpenGL: glFenceSync failed (error 0x", std::hex, gl.GetError(), ")");
+    gl.Flush();
+}
+
+GlFence::~GlFence()
+{
+    if (sync_)
+        gl_->DeleteSync(sync_);
+}
+
+void GlFence::wait() const
+{
+    // a second at a time: a large band on a software renderer takes long
+    const GLuint64 second = 1000000000;
+    for (;;) {
+        const GLenum status = gl_->ClientWaitSync(sync_, GL_SYNC_FLUSH_COMMANDS_BIT, second);
+        if (status == GL_ALREADY_SIGNALED || status == GL_CONDITION_SATISFIED)
+            return;
+        if (status != GL_TIMEOUT_EXPIRED)
+            sbrt::fail("OpenGL: waiting for the GPU failed (glClientWaitSync error 0x",
+                       std::hex, gl_->GetError(), ")");
+    }
+}
+
+GlTimeQuery::GlTimeQuery(const GlApi &gl) : gl_(&gl)
+{
+    gl.GenQueries(1, &name_);
+}
+
+GlTimeQuery::~GlTimeQuery()
+{
+    if (name_)
+        gl_->DeleteQueries(1, &name_);
+}
+
+void GlTimeQuery::begin() const
+{
+    gl_->BeginQuery(GL_TIME_ELAPSED, name_);
+}
+
+void GlTimeQuery::end() const
+{
+    gl_->EndQuery(GL_TIME_ELAPSED);
+}
+
+double GlTimeQuery::ms() const
+{
+    GLuint64 ns = 0;
+    gl_->GetQueryObjectui64v(name_, GL_QUERY_RESULT, &ns);
+    return double(ns) / 1e6;
+}
+
 GlUintTexture::GlUintTexture(const GlApi &gl, int cols, int rows,
                              const uint32_t *texels, int channels)
     : gl_(&gl)

@@ -45,6 +45,82 @@ private:
     size_t bytes_;
 };
 
+/// \brief A storage buffer of `bytes` bytes mapped into host memory for
+/// its whole life (glBufferStorage, MAP_PERSISTENT | MAP_COHERENT, read
+/// and write, client storage: the GPU writes where the host reads). What
+/// the GPU writes is there for the host once a fence after the writes
+/// (and a GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT barrier) is signalled.
+class MappedBuffer {
+public:
+    MappedBuffer(const GlApi &gl, size_t bytes);
+    ~MappedBuffer();
+    MappedBuffer(MappedBuffer &&other) noexcept
+        : gl_(other.gl_), name_(std::exchange(other.name_, 0)), bytes_(other.bytes_),
+          host_(std::exchange(other.host_, nullptr))
+    {
+    }
+    MappedBuffer(const MappedBuffer &) = delete;
+    MappedBuffer &operator=(const MappedBuffer &) = delete;
+    MappedBuffer &operator=(MappedBuffer &&) = delete;
+
+    void bind(GLuint index) const; ///< as a storage buffer
+    uint8_t *host() const { return host_; }
+    size_t bytes() const { return bytes_; }
+
+private:
+    const GlApi *gl_;
+    GLuint name_ = 0;
+    size_t bytes_;
+    uint8_t *host_ = nullptr;
+};
+
+/// \brief A fence after the commands queued so far (glFenceSync, flushed
+/// so that the GPU starts on them).
+class GlFence {
+public:
+    explicit GlFence(const GlApi &gl);
+    ~GlFence();
+    GlFence(GlFence &&other) noexcept
+        : gl_(other.gl_), sync_(std::exchange(other.sync_, nullptr))
+    {
+    }
+    GlFence(const GlFence &) = delete;
+    GlFence &operator=(const GlFence &) = delete;
+    GlFence &operator=(GlFence &&) = delete;
+
+    /// Returns once the GPU has done the commands before the fence;
+    /// throws sbrt::Error where the wait fails (a lost context).
+    void wait() const;
+
+private:
+    const GlApi *gl_;
+    GLsync sync_ = nullptr;
+};
+
+/// \brief A GL_TIME_ELAPSED query: the GPU time of the commands between
+/// begin() and end() (one such query at a time).
+class GlTimeQuery {
+public:
+    explicit GlTimeQuery(const GlApi &gl);
+    ~GlTimeQuery();
+    GlTimeQuery(GlTimeQuery &&other) noexcept
+        : gl_(other.gl_), name_(std::exchange(other.name_, 0))
+    {
+    }
+    GlTimeQuery(const GlTimeQuery &) = delete;
+    GlTimeQuery &operator=(const GlTimeQuery &) = delete;
+    GlTimeQuery &operator=(GlTimeQuery &&) = delete;
+
+    void begin() const;
+    void end() const;
+    /// Milliseconds (waits for the result).
+    double ms() const;
+
+private:
+    const GlApi *gl_;
+    GLuint name_ = 0;
+};
+
 /// \brief An immutable 2D texture of one or two 32-bit unsigned integers
 /// per texel (GL_R32UI or GL_RG32UI, one level, nearest texel), read by
 /// texelFetch from a usampler2D; bind() puts it on a texture unit.

@@ -82,10 +82,10 @@ void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int
                                   const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                                   sbrt::Band &band, unsigned cpu_threads)
 {
-    const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
+    sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
+    const sbrt::GpuBandLayout layout = band_layout(camera, row_count, outputs, shade);
     GlComputeProgram &program = shading_program(shading, true);
     const int cols = camera.cols();
-    const size_t words_per_pixel = shaded_words(cols, row_count, shade);
     sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
     view_.upload(&view, sizeof view);
     program.use();
@@ -99,14 +99,15 @@ void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int
         kernel_normals_->bind(3);
         kernel_across_->bind(6);
     }
-    dispatch_bands(cols, first_row, row_count, *pixels_, words_per_pixel * 4, words_.data(),
-                   "the kernel normals' shading pass", [&](int first, int count) {
-                       kernel_.counts[1] = uint32_t(first);
-                       kernel_.counts[2] = uint32_t(count);
-                       kernel_block_->upload(&kernel_, sizeof kernel_);
+    shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
+               [&](int first, int count) {
+                   kernel_.counts[1] = uint32_t(first);
+                   kernel_.counts[2] = uint32_t(count);
+                   kernel_block_->upload(&kernel_, sizeof kernel_);
+                   timer_.time(int(Pass::kernel_shade), [&] {
+                       gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
                    });
-    unpack_words(camera, first_row, row_count, shading, outputs, words_per_pixel, band,
-                 cpu_threads);
+               });
 }
 
 } // namespace sbrt_gl

@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "gpu_renderer.hpp"
 
+#include <chrono>
+
 #include "gpu_row_tracer.hpp"
 
 namespace sbrt_gl {
@@ -36,7 +38,7 @@ GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outpu
                                    const sbrt::BandSink &sink, unsigned cpu_threads)
 {
     GpuFrameReport report;
-    gpu_.reset_stats();
+    gpu_.begin_frame();
     GpuRowTracer rows(gpu_, camera, cpu_threads);
     // where kernel normals cannot be found on the GPU the renderer finds
     // them from the GPU's hits (it never asks the GPU to shade then)
@@ -46,7 +48,12 @@ GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outpu
         !on_host &&
         (renderer_.shading().normals == sbrt::Normals::face || rows.shades_kernel_normals());
     report.render = renderer_.render(camera, outputs, sink, &rows);
+    const auto done = std::chrono::steady_clock::now();
+    if (report.shaded_on_gpu && gpu_.last_band_done() <= done)
+        report.host_after_ms =
+            std::chrono::duration<double, std::milli>(done - gpu_.last_band_done()).count();
     report.gpu = gpu_.stats();
+    report.gpu.pass_ms = gpu_.take_pass_ms();
     return report;
 }
 

@@ -21,6 +21,10 @@ struct GpuFrameReport {
     /// image's hits fit it), else the CPU did from the GPU's hits (always
     /// for colours from property channels, which stay on the host).
     bool shaded_on_gpu = false;
+    /// Shaded on the GPU: the host's time from when the GPU was done with
+    /// the last band to the end of the frame (the sink's last band
+    /// included), ms.
+    double host_after_ms = 0;
 };
 
 /// Whether `shading` colours by voxel (property channels: property=,

@@ -67,6 +67,11 @@ int GpuRowTracer::preferred_band_rows(int cols) const
     return std::max(1, (1 << 20) / std::max(cols, 1));
 }
 
+int GpuRowTracer::max_band_rows(int cols, const sbrt::Outputs &outputs) const
+{
+    return gpu_.max_band_rows(cols, outputs);
+}
+
 bool GpuRowTracer::shade_rows(int first, int count, const sbrt::Outputs &outputs,
                               sbrt::Band &band)
 {

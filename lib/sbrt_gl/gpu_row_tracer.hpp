@@ -43,6 +43,8 @@ public:
     bool shades_kernel_normals() const override;
     /// Bands of a million pixels or more: enough rays to fill a GPU.
     int preferred_band_rows(int cols) const override;
+    /// What one mapped band holds (GpuTracer::max_band_rows).
+    int max_band_rows(int cols, const sbrt::Outputs &outputs) const override;
     bool shade_rows(int first, int count, const sbrt::Outputs &outputs,
                     sbrt::Band &band) override;
 

@@ -18,15 +18,16 @@ namespace sbrt_gl {
 
 namespace {
 
-/// GL 4.3 core at least (compute shaders, SSBOs); the largest SSBO binding.
+/// GL 4.4 core at least (compute shaders, SSBOs, persistently mapped
+/// buffers); the largest SSBO binding.
 size_t check_version(const GlApi &gl, const std::string &context)
 {
     GLint major = 0, minor = 0;
     gl.GetIntegerv(GL_MAJOR_VERSION, &major);
     gl.GetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major * 10 + minor < 43)
+    if (major * 10 + minor < 44)
         sbrt::fail(context, ": OpenGL ", major, ".", minor,
-                   " is below 4.3 (compute shaders and storage buffers)");
+                   " is below 4.4 (compute shaders, storage buffers, mapped buffers)");
     GLint64 block = 0;
     gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
     return size_t(std::max<GLint64>(block, 0));
@@ -67,7 +68,8 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
       memory_(sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl_))),
       materials_(material_buffer(gl_, tracer)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
-      pyramid_(pyramid_buffer(gl_, tracer, max_block_bytes_))
+      pyramid_(pyramid_buffer(gl_, tracer, max_block_bytes_)),
+      bands_(gl_, max_block_bytes_), timer_(gl_)
 {
     const sbrt::Model &model = tracer.model();
     if (layout == sbrt::GpuLayout::ssbo) {
@@ -126,6 +128,28 @@ void GpuTracer::reset_stats()
     const double upload_ms = stats_.upload_ms;
     stats_ = GpuStats();
     stats_.upload_ms = upload_ms;
+    timer_.take_ms(0); // the queries of what went before
+}
+
+void GpuTracer::begin_frame()
+{
+    reset_stats();
+    bands_.begin_frame();
+}
+
+std::vector<double> GpuTracer::take_pass_ms()
+{
+    if (!timer_.enabled())
+        return {};
+    return timer_.take_ms(int(Pass::first_pass) + 1);
+}
+
+const char *pass_name(int k)
+{
+    static const char *const names[] = {"records",        "shade",         "kernel_depth",
+                                        "kernel_normals", "kernel_across", "kernel_shade",
+                                        "first_pass"};
+    return k >= 0 && k < int(std::size(names)) ? names[k] : "?";
 }
 
 sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
@@ -188,7 +212,9 @@ void GpuTracer::dispatch_bands(int cols, int first_row, int row_count, GlBuffer 
         const int count = std::min(band_rows, first_row + row_count - first);
         set_band(first, count);
         auto start = Clock::now();
-        gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
+        timer_.time(int(Pass::records), [&] {
+            gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
+        });
         gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         gl_.Finish();
         check_gl(gl_, what);
@@ -316,76 +342,101 @@ void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, in
     if (!program)
         program.emplace(gl_, pass_sources(pass, layout_, tracer_), &cache_);
     program->use();
-    gl_.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+    timer_.time(int(pass), [&] {
+        gl_.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+    });
     gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-size_t GpuTracer::shaded_words(int cols, int rows, const sbrt::GpuShade &shade)
+int GpuTracer::max_band_rows(int cols, const sbrt::Outputs &outputs) const
 {
-    const size_t words_per_pixel = shade.outputs[0];
-    ensure_band_buffer(gl_, pixels_, rows, size_t(cols) * words_per_pixel * 4,
-                       max_block_bytes_);
-    words_.resize(size_t(rows) * size_t(cols) * words_per_pixel);
-    return words_per_pixel;
+    const size_t row_bytes = sbrt::gpu_band_layout(1, cols, outputs).bytes();
+    return int(std::clamp<size_t>(max_block_bytes_ / std::max<size_t>(row_bytes, 1), 1,
+                                  size_t(INT32_MAX)));
+}
+
+sbrt::GpuBandLayout GpuTracer::band_layout(const sbrt::Camera &camera, int count,
+                                           const sbrt::Outputs &outputs, sbrt::GpuShade &shade)
+{
+    const std::optional<sbrt::GpuBandLayout> layout =
+        bands_.layout(count, camera.cols(), outputs);
+    if (!layout)
+        sbrt::fail("a band of ", count, " rows of ", camera.cols(),
+                   " pixels does not fit this GPU's largest storage buffer (",
+                   max_block_bytes_, " bytes): fewer rows a band");
+    sbrt::set_band_planes(shade, *layout);
+    return *layout;
 }
 
 void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_count,
                            const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                            sbrt::Band &band, unsigned cpu_threads)
 {
-    const sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
+    sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
+    const sbrt::GpuBandLayout layout = band_layout(camera, row_count, outputs, shade);
     GlComputeProgram &program = shading_program(shading, false);
-    const int cols = camera.cols();
-    const size_t words_per_pixel = shaded_words(cols, row_count, shade);
     sbrt::GpuView view = traced_view(camera, loop_budget_);
     program.use();
     bind_model();
     bind_shading(shade, shading);
-    dispatch(camera, view, first_row, row_count, *pixels_, words_per_pixel * 4,
-             words_.data());
-    unpack_words(camera, first_row, row_count, shading, outputs, words_per_pixel, band,
-                 cpu_threads);
+    const int cols = camera.cols();
+    shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
+               [&](int first, int count) {
+                   view.options[2] = uint32_t(first);
+                   view.options[3] = uint32_t(count);
+                   view_.upload(&view, sizeof view); // stays bound to index 0
+                   timer_.time(int(Pass::shade), [&] {
+                       gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
+                   });
+               });
 }
 
-void GpuTracer::unpack_words(const sbrt::Camera &camera, int first_row, int row_count,
-                             const sbrt::Shading &shading, const sbrt::Outputs &outputs,
-                             size_t words_per_pixel, sbrt::Band &band, unsigned cpu_threads)
+void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_count,
+                           const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,
+                           sbrt::Band &band, unsigned cpu_threads,
+                           const std::function<void(int, int)> &dispatch)
 {
-    // the words into the band; rays over the budget traced and shaded here
-    // (with their face normals)
-    const int cols = camera.cols();
+    bands_.reset_gpu_ms();
+    uint8_t *host = bands_.band(first_row, row_count, camera.rows(), dispatch);
+    stats_.trace_ms += bands_.gpu_ms();
+    ++stats_.bands;
+    // the band views the mapped memory as the GPU wrote it
+    const size_t cols = size_t(layout.cols);
+    uint32_t *words = reinterpret_cast<uint32_t *>(host);
+    band.first_row = first_row;
+    band.rows = row_count;
+    band.cols = layout.cols;
+    band.rgb = sbrt::BandPlane<uint8_t>(host, layout.rgb_stride_words * 4);
+    band.material = layout.material_at ? sbrt::BandPlane<int32_t>(
+                                             reinterpret_cast<int32_t *>(words + layout.material_at), cols)
+                                       : sbrt::BandPlane<int32_t>();
+    const auto doubles = [&](size_t at) {
+        return at ? sbrt::BandPlane<double>(reinterpret_cast<double *>(words + at), cols)
+                  : sbrt::BandPlane<double>();
+    };
+    band.elevation = doubles(layout.elevation_at);
+    band.depth = doubles(layout.depth_at);
+    band.value = sbrt::BandPlane<double>();
+    stats_.host_bytes += band.pixels() * band.bytes_per_pixel() + 4;
+
+    // the rays over the loop budget, traced and shaded here
+    const uint32_t over = words[layout.over_budget_at];
+    if (over == 0)
+        return;
     const auto start = Clock::now();
-    std::vector<size_t> over_per_row(size_t(row_count), 0);
+    const uint32_t *pixels = words + layout.over_budget_at + 1;
     const sbrt::PixelShader shader(tracer_.model(), shading);
-    sbrt::for_each_row(first_row, first_row + row_count, cpu_threads, [&](int row) {
-        for (int col = 0; col < cols; ++col) {
-            const size_t i = size_t(row - band.first_row) * cols + col;
-            const uint32_t *w = words_.data() + size_t(row - first_row) * cols * words_per_pixel +
-                                size_t(col) * words_per_pixel;
-            if ((w[0] >> 24) == 0) {
-                const sbrt::Hit hit = tracer_.trace(camera.ray(row, col));
-                sbrt::shade_into_band(tracer_, shader, camera, hit, row, col, band);
-                ++over_per_row[size_t(row - first_row)];
-                continue;
-            }
-            for (int k = 0; k < 3; ++k)
-                band.rgb[i * 3 + size_t(k)] = uint8_t(w[0] >> (8 * k));
-            size_t next = 1;
-            auto as_float = [](uint32_t bits) {
-                float f;
-                std::memcpy(&f, &bits, 4);
-                return double(f);
-            };
-            if (outputs.material)
-                band.material[i] = int32_t(w[next++]);
-            if (outputs.elevation)
-                band.elevation[i] = as_float(w[next++]);
-            if (outputs.depth)
-                band.depth[i] = as_float(w[next++]);
+    const int chunks = int((over + 255) / 256);
+    sbrt::for_each_row(0, chunks, cpu_threads, [&](int chunk) {
+        const uint32_t end = std::min<uint32_t>(over, uint32_t(chunk + 1) * 256);
+        for (uint32_t k = uint32_t(chunk) * 256; k < end; ++k) {
+            const int row = first_row + int(pixels[k] / cols), col = int(pixels[k] % cols);
+            const sbrt::Hit hit = tracer_.trace(camera.ray(row, col));
+            sbrt::shade_into_band(tracer_, shader, camera, hit, row, col, band);
         }
     });
-    for (size_t n : over_per_row)
-        stats_.over_budget += n;
+    stats_.over_budget += over;
+    stats_.host_bytes += size_t(over) * (4 + band.bytes_per_pixel());
     stats_.readback_ms += ms_since(start);
 }
 

@@ -18,6 +18,7 @@
 
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
+#include "mapped_bands.hpp"
 #include "gpu/gpu_layout.hpp"
 #include "tracing/cpu_tracing.hpp"
 #include "gpu/gpu_memory_layout.hpp"
@@ -34,10 +35,21 @@ enum class Pass : int;
 struct GpuStats {
     double upload_ms = 0;   ///< shader compile and model upload
     double trace_ms = 0;    ///< dispatches until the GPU is done
-    double readback_ms = 0; ///< hit records back and decoded
+    double readback_ms = 0; ///< hit records back and decoded; shaded
+                            ///< bands' rays over the budget traced here
     size_t over_budget = 0; ///< rays traced again on the CPU
     int bands = 0;
+    /// Bytes of the shaded bands the host read or wrote: the outputs
+    /// handed to the sink, the counts of rays over the budget and what
+    /// the host wrote for those rays.
+    size_t host_bytes = 0;
+    /// GPU time of each pass (GL_TIME_ELAPSED; with GpuTracer::time_passes),
+    /// indexed by Pass (gpu_internal.hpp): see pass_name.
+    std::vector<double> pass_ms;
 };
+
+/// The name of pass `k` of GpuStats::pass_ms.
+const char *pass_name(int k);
 
 class GpuTracer {
 public:
@@ -63,12 +75,25 @@ public:
 
     /// Rows [first, first + count) of `camera`'s image traced and shaded on
     /// the GPU (face normals, a drape or none: make_gpu_shade; the drape
-    /// goes up once, with its first band): only the band's
-    /// outputs come back, RGB and those of `outputs`; rays over the loop
-    /// budget are traced and shaded again on the host. Adds to stats().
+    /// goes up once, with its first band) into a mapped buffer (MappedBands)
+    /// that `band` then views: RGB and the outputs of `outputs`, nothing
+    /// else; rays over the loop budget are traced and shaded again on the
+    /// host. The next band is dispatched before this one is waited for.
+    /// Adds to stats().
     void shade_rows(const sbrt::Camera &camera, int first, int count,
                     const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                     sbrt::Band &band, unsigned cpu_threads = 0);
+    /// The most rows `cols` wide of `outputs` that one shaded band holds.
+    int max_band_rows(int cols, const sbrt::Outputs &outputs) const;
+    /// A new frame: bands dispatched ahead for the last one are dropped.
+    void begin_frame();
+    /// GL time queries around every pass (GpuStats::pass_ms), or none.
+    void time_passes(bool on) { timer_.enable(on); }
+    /// The GPU time of each pass since the frame began (waits for the
+    /// queries; empty where not timed).
+    std::vector<double> take_pass_ms();
+    /// When the GPU was found done with the last band shaded.
+    std::chrono::steady_clock::time_point last_band_done() const { return bands_.last_done(); }
     /// Whether kernel normals of `camera`'s image can be found on the GPU:
     /// the hit records of the whole image fit one storage buffer (and the
     /// camera is not a window of a larger image), and the GPU writes them
@@ -149,9 +174,6 @@ private:
     /// The shading program for `shading` (with its drape; the kernel
     /// normals' pass or the ray casting one), compiled when first needed.
     GlComputeProgram &shading_program(const sbrt::Shading &shading, bool kernel);
-    /// Room for `rows` rows `cols` wide of the words of `shade`'s outputs,
-    /// on the GPU and here; returns the words per pixel.
-    size_t shaded_words(int cols, int rows, const sbrt::GpuShade &shade);
     /// Compiles `program` for `pass` (gpu_internal.hpp) when first needed
     /// and runs it over width x height invocations (pixels of the whole
     /// image, or the first pass's tiles), its buffers bound; a barrier
@@ -160,11 +182,17 @@ private:
     /// Uploads `shade` and binds it, the looks and the drape (the looks and
     /// the drape uploaded when first needed).
     void bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading);
-    /// The shaded words of rows [first, first + count) into `band`; the
-    /// rays over the loop budget traced and shaded on the host.
-    void unpack_words(const sbrt::Camera &camera, int first, int count,
-                      const sbrt::Shading &shading, const sbrt::Outputs &outputs,
-                      size_t words_per_pixel, sbrt::Band &band, unsigned cpu_threads);
+    /// Rows [first, first + count) shaded by the bound program into a
+    /// mapped band that `band` views: `dispatch(first, count)` queues one
+    /// band's dispatch; the rays over the loop budget traced and shaded on
+    /// the host.
+    void shade_band(const sbrt::Camera &camera, int first, int count,
+                    const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,
+                    sbrt::Band &band, unsigned cpu_threads,
+                    const std::function<void(int, int)> &dispatch);
+    /// The frame's band layout for `count` rows of `outputs` into `shade`.
+    sbrt::GpuBandLayout band_layout(const sbrt::Camera &camera, int count,
+                                    const sbrt::Outputs &outputs, sbrt::GpuShade &shade);
 
     std::chrono::steady_clock::time_point created_; ///< times the upload
     const sbrt::Tracer &tracer_;
@@ -201,11 +229,12 @@ private:
     std::optional<GlBuffer> tile_starts_;
     sbrt::GpuView first_pass_view_{};
     sbrt::GpuKernel kernel_{};
-    std::optional<GlBuffer> looks_, shade_, pixels_;
+    std::optional<GlBuffer> looks_, shade_;
+    MappedBands bands_; ///< where shaded bands land
+    PassTimer timer_;
     /// the drape's surface and texture (binding 7), and whose they are
     std::optional<GlBuffer> drape_;
     const sbrt::Drape *drape_on_gpu_ = nullptr;
-    std::vector<uint32_t> words_;
     GpuStats stats_;
     uint32_t loop_budget_ = sbrt::GPU_LOOP_BUDGET;
 };

@@ -152,11 +152,15 @@ layout(std430, binding = 3) readonly buffer Materials { vec4 materials[]; };
 #endif // SBRT_KERNEL
 
 #ifdef SBRT_SHADE
-// Shaded on the GPU: per pixel of the band, row-major from its top row,
-// Shade.outputs.x words: RGBA8 (alpha 0: over the loop budget, traced again
-// on the host), then those of Shade.outputs.y: the class id, the elevation
-// and the depth (float bits; NaN where the ray meets nothing).
-layout(std430, binding = 2) writeonly buffer Pixels { uint words[]; };
+// Shaded on the GPU: the band's outputs, the bytes the host hands on
+// (sbrt::GpuBandLayout): RGB8 rows packed into words, each row from a
+// whole word (Shade.outputs.x words apart); then, where Shade.outputs.y
+// asks for them, the class ids, the elevations and the depths (doubles as
+// two words, NaN where the ray meets nothing) from the words
+// Shade.band_planes.xyz; at Shade.band_planes.w the count of rays over the loop
+// budget, then their pixels, traced again on the host. The buffer is
+// mapped into host memory: these words are what the host reads.
+layout(std430, binding = 2) buffer Pixels { uint words[]; };
 
 // What shading needs besides the view; mirrored by sbrt::GpuShade.
 layout(std140, binding = 1) uniform Shade {
@@ -167,8 +171,10 @@ layout(std140, binding = 1) uniform Shade {
                            // w: elevation of local z = 0
     vec4 elevation_step;   // x: elevation per local z unit
     vec4 plane_normals[8]; // xyz: shading normal of each clip plane
-    uvec4 outputs;         // x: words per pixel; y: 1 class id, 2 elevation,
-                           // 4 depth
+    uvec4 outputs;         // x: words from an RGB row to the next; y: 1
+                           // class id, 2 elevation, 4 depth
+    uvec4 band_planes;     // where the class ids, elevations, depths and
+                           // rays over the budget start (words)
     vec4 drape;            // SBRT_DRAPE: x: blend; y, z: the texture's
                            // cols and rows
     vec4 drape_map;        // the texture's (column, row) of local (x, y):

@@ -295,7 +295,7 @@ void trace_overlays(float t_near, float t_far, uint wall)
         vec3 n;
         uint next = ov_next(0u, overlay_count.x, t_near, t_far, last_start, last, start, stop, n);
         if (ov_work > ov_limit) {
-            words[ov_index * outputs.x] = 0u; // over the budget: the host's
+            flag_over_budget(ov_index); // over the budget: the host's
             return;
         }
         if (next == OV_NONE)

@@ -86,13 +86,49 @@ vec3 hit_normal(uint code, vec3 ray_d)
                 face == FACE_BOTTOM ? -1.0 : face == FACE_TOP ? 1.0 : 0.0);
 }
 
+// This work group's colours (r | g << 8 | b << 16), one per invocation,
+// packed into the band's RGB rows once all are shaded (pack_group_rgb)
+shared uint group_rgb[64];
+
+// The bits of the double of `f` (low word, high word), exactly, without
+// fp64 in the shader: the host's sinks take doubles as they are
+uvec2 double_bits(float f)
+{
+    uint bits = floatBitsToUint(f);
+    uint sign = bits & 0x80000000u, e = (bits >> 23) & 0xffu, m = bits & 0x7fffffu;
+    if (e == 0xffu) // infinity or NaN (its payload kept)
+        return uvec2(m << 29, sign | 0x7ff00000u | (m >> 3));
+    if (e == 0u) {
+        if (m == 0u)
+            return uvec2(0u, sign);
+        // subnormal, m 2^-149: normalised, 1.f 2^(msb - 149)
+        int msb = findMSB(m);
+        m = (m << uint(23 - msb)) & 0x7fffffu;
+        return uvec2(m << 29, sign | (uint(msb + 874) << 20) | (m >> 3));
+    }
+    return uvec2(m << 29, sign | ((e + 896u) << 20) | (m >> 3));
+}
+
+void write_double(uint at, float f)
+{
+    uvec2 bits = double_bits(f);
+    words[at] = bits.x;
+    words[at + 1u] = bits.y;
+}
+
+// Pixel `index` of the band is over the loop budget: the host traces it
+void flag_over_budget(uint index)
+{
+    uint n = atomicAdd(words[band_planes.w], 1u);
+    words[band_planes.w + 1u + n] = index;
+}
+
 // The outputs of pixel `index` of the band: the colour of the hit (local
 // point, code) lit along normal n, seen through the veil (rgb) and
 // transmittance (a) of the translucent strata in front; the class id,
 // elevation and distance (`depth`, real map units) asked for.
 void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float depth)
 {
-    uint base = index * outputs.x;
     uint material = code & 0xffffu;
     vec3 color = background.rgb;
     if (material != 0u) {
@@ -114,14 +150,37 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
     }
     color = 255.0 * veil_t.rgb + veil_t.a * color;
     uvec3 c = uvec3(floor(clamp(color, 0.0, 255.0) + 0.5));
-    words[base] = c.r | c.g << 8 | c.b << 16 | 255u << 24;
-    uint k = base + 1u;
-    const uint NAN_BITS = 0x7fc00000u;
+    group_rgb[gl_LocalInvocationIndex] = c.r | c.g << 8 | c.b << 16;
+    float missing = uintBitsToFloat(0x7fc00000u); // NaN
     if ((outputs.y & 1u) != 0u)
-        words[k++] = material != 0u ? looks[material].y : 0x80000000u;
+        words[band_planes.x + index] = material != 0u ? looks[material].y : 0x80000000u;
     if ((outputs.y & 2u) != 0u)
-        words[k++] = material != 0u
-            ? floatBitsToUint(real_unit.w + point.z * elevation_step.x) : NAN_BITS;
+        write_double(band_planes.y + 2u * index,
+                     material != 0u ? real_unit.w + point.z * elevation_step.x : missing);
     if ((outputs.y & 4u) != 0u)
-        words[k++] = material != 0u ? floatBitsToUint(depth) : NAN_BITS;
+        write_double(band_planes.z + 2u * index, material != 0u ? depth : missing);
+}
+
+// After a barrier, in uniform control flow: the work group's colours into
+// its words of the band's RGB rows. Its 8 x 8 pixels start at column
+// 8 gx, byte 24 gx of a row: a whole word, so each word of a row has one
+// work group; invocation (x, y) writes word x of its row of the group.
+// `band_rows`: the rows of this dispatch; `image_cols`: the row's pixels.
+void pack_group_rgb(uint band_rows, uint image_cols)
+{
+    uvec2 group = gl_WorkGroupID.xy, local = gl_LocalInvocationID.xy;
+    uint row = group.y * 8u + local.y, first_col = group.x * 8u;
+    if (row >= band_rows || first_col >= image_cols)
+        return;
+    uint pixels = min(8u, image_cols - first_col);
+    if (local.x >= (3u * pixels + 3u) / 4u)
+        return;
+    uint word = 0u;
+    for (uint b = 0u; b < 4u; ++b) {
+        uint byte_index = 4u * local.x + b, p = byte_index / 3u;
+        if (p < pixels)
+            word |= ((group_rgb[local.y * 8u + p] >> (8u * (byte_index % 3u))) & 255u)
+                    << (8u * b);
+    }
+    words[row * outputs.x + 6u * group.x + local.x] = word;
 }

@@ -33,7 +33,7 @@ void write_rows(BandFlow &flow, int rows, int cols, unsigned threads, int failin
             if (row == failing_row)
                 fail("row ", row, " failed");
             for (int c = 0; c < cols; ++c)
-                band.rgb[(size_t(row - band.first_row) * size_t(cols) + size_t(c)) * 3] =
+                band.rgb.row(row - band.first_row)[size_t(c) * 3] =
                     uint8_t(row);
             flow.row_done(row);
         }
@@ -60,7 +60,7 @@ TEST(BandFlow, BandsReachTheSinkInOrderWholeAndOnce)
             for (int r = 0; r < band.rows; ++r)
                 for (int c = 0; c < cols; ++c)
                     rows_right = rows_right &&
-                                 band.rgb[(size_t(r) * cols + size_t(c)) * 3] ==
+                                 band.rgb.row(r)[size_t(c) * 3] ==
                                      uint8_t(band.first_row + r);
             next_row += band.rows;
             ++bands;

@@ -201,10 +201,11 @@ TEST(Renderer, OnlyTheOutputsAskedForAreStored)
     renderer.render(camera, {false, true, false}, [&](const Band &band) {
         EXPECT_EQ(band.first_row, next_row); // in order, none missing
         next_row += band.rows;
-        EXPECT_EQ(band.rgb.size(), band.pixels() * 3);
-        EXPECT_EQ(band.material.size(), 0u);
-        EXPECT_EQ(band.elevation.size(), band.pixels());
-        EXPECT_EQ(band.depth.size(), 0u);
+        EXPECT_FALSE(band.rgb.empty());
+        EXPECT_EQ(band.rgb.stride(), size_t(band.cols) * 3);
+        EXPECT_TRUE(band.material.empty());
+        EXPECT_EQ(band.elevation.stride(), size_t(band.cols));
+        EXPECT_TRUE(band.depth.empty());
         ++bands;
     });
     EXPECT_EQ(next_row, camera.rows());

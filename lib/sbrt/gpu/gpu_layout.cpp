@@ -119,7 +119,6 @@ GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
     shade.outputs[1] = (outputs.material ? GPU_OUT_CLASS : 0) |
                        (outputs.elevation ? GPU_OUT_ELEVATION : 0) |
                        (outputs.depth ? GPU_OUT_DEPTH : 0);
-    shade.outputs[0] = 1 + outputs.material + outputs.elevation + outputs.depth;
     if (const Drape *drape = shading.drape) {
         // the texture's pixel centres (Texture::sample) from local x, y
         const Texture &t = drape->texture();
@@ -134,6 +133,47 @@ GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
         shade.drape_map[3] = float((t.north - f.south) * per_y - 0.5);
     }
     return shade;
+}
+
+GpuBandLayout gpu_band_layout(int rows, int cols, const Outputs &outputs)
+{
+    GpuBandLayout l;
+    l.rows = rows;
+    l.cols = cols;
+    const size_t pixels = size_t(rows) * size_t(cols);
+    l.rgb_stride_words = (size_t(cols) * 3 + 3) / 4;
+    size_t at = l.rgb_stride_words * size_t(rows);
+    at += at & 1; // doubles on 8 bytes
+    if (outputs.material) {
+        l.material_at = at;
+        at += pixels + (pixels & 1);
+    }
+    if (outputs.elevation) {
+        l.elevation_at = at;
+        at += 2 * pixels;
+    }
+    if (outputs.depth) {
+        l.depth_at = at;
+        at += 2 * pixels;
+    }
+    l.over_budget_at = at;
+    l.words = at + 1 + pixels;
+    return l;
+}
+
+void set_band_planes(GpuShade &shade, const GpuBandLayout &layout)
+{
+    const auto word = [](size_t w) {
+        if (w > UINT32_MAX)
+            fail("a band of ", w, " words is beyond the GPU's 32-bit indices");
+        return uint32_t(w);
+    };
+    shade.outputs[0] = word(layout.rgb_stride_words);
+    shade.planes[0] = word(layout.material_at);
+    shade.planes[1] = word(layout.elevation_at);
+    shade.planes[2] = word(layout.depth_at);
+    shade.planes[3] = word(layout.over_budget_at);
+    word(layout.words);
 }
 
 GpuKernel make_gpu_kernel(const Tracer &tracer, const Camera &camera,

@@ -73,17 +73,42 @@ struct GpuShade {
     float real_unit[4];      ///< real map length per local unit; w: elevation at z 0
     float elevation_step[4]; ///< x: elevation per local z unit
     float plane_normals[MAX_CLIP_PLANES][4];
-    uint32_t outputs[4];     ///< words per pixel; 1 class, 2 elevation, 4 depth
+    /// words from an RGB row to the next; 1 class, 2 elevation, 4 depth
+    uint32_t outputs[4];
+    /// where the band's planes start in its buffer, in words
+    /// (GpuBandLayout): class ids, elevations, depths, rays over the budget
+    uint32_t planes[4];
     /// The drape (SBRT_DRAPE): x: blend; y, z: the texture's cols and rows
     float drape[4];
     /// The texture's column and row (pixel centres at whole numbers) of a
     /// local point: u = x * lx + y, v = z * ly + w
     float drape_map[4];
 };
-static_assert(sizeof(GpuShade) == 240 && offsetof(GpuShade, plane_normals) == 64 &&
-                  offsetof(GpuShade, outputs) == 192 && offsetof(GpuShade, drape) == 208 &&
-                  offsetof(GpuShade, drape_map) == 224,
+static_assert(sizeof(GpuShade) == 256 && offsetof(GpuShade, plane_normals) == 64 &&
+                  offsetof(GpuShade, outputs) == 192 && offsetof(GpuShade, planes) == 208 &&
+                  offsetof(GpuShade, drape) == 224 && offsetof(GpuShade, drape_map) == 240,
               "std140 Shade block");
+
+/// \brief Where the shading pass writes a band of `rows` x `cols` pixels
+/// in its buffer (`buffer Pixels`, 32-bit words), the bytes the caller
+/// asked for and no others: RGB8 rows, each starting on a whole word (a
+/// work group packs its pixels' bytes into words); then, where asked
+/// for, the class ids (int32), the elevations and the depths (double,
+/// NaN where missed: the sinks' own type); then the rays over the loop
+/// budget (a count, then their pixels' indices), which the host traces.
+struct GpuBandLayout {
+    int rows = 0, cols = 0;
+    size_t rgb_stride_words = 0; ///< words from an RGB row to the next
+    /// word offsets of the planes; 0 where not asked for
+    size_t material_at = 0, elevation_at = 0, depth_at = 0;
+    size_t over_budget_at = 0; ///< the count, then up to rows x cols indices
+    size_t words = 0;          ///< the whole buffer
+    size_t bytes() const { return words * 4; }
+};
+GpuBandLayout gpu_band_layout(int rows, int cols, const Outputs &outputs);
+
+/// The Shade block's outputs and planes for a band laid out as `layout`.
+void set_band_planes(GpuShade &shade, const GpuBandLayout &layout);
 
 /// `uniform Kernel` (std140): the camera in the terms of the kernel
 /// normals' passes (shaders/kernel.comp).

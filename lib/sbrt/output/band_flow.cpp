@@ -9,17 +9,31 @@
 
 namespace sbrt {
 
+namespace {
+
+/// `vector` sized for `n` elements (its memory kept from the band's last
+/// use), viewed `stride` elements a row; empty where n is 0.
+template <typename T, typename Vector>
+BandPlane<T> plane_of(Vector &vector, size_t n, size_t stride)
+{
+    vector.resize(n);
+    return n ? BandPlane<T>(vector.data(), stride) : BandPlane<T>();
+}
+
+} // namespace
+
 void prepare_band(Band &band, int first_row, int rows, int cols, const Outputs &outputs)
 {
     band.first_row = first_row;
     band.rows = rows;
     band.cols = cols;
-    const size_t n = band.pixels();
-    band.rgb.resize(n * 3);
-    band.material.resize(outputs.material ? n : 0);
-    band.elevation.resize(outputs.elevation ? n : 0);
-    band.depth.resize(outputs.depth ? n : 0);
-    band.value.resize(outputs.value ? n : 0);
+    const size_t n = band.pixels(), c = size_t(cols);
+    Band::Store &store = band.store;
+    band.rgb = plane_of<uint8_t>(store.rgb, n * 3, c * 3);
+    band.material = plane_of<int32_t>(store.material, outputs.material ? n : 0, c);
+    band.elevation = plane_of<double>(store.elevation, outputs.elevation ? n : 0, c);
+    band.depth = plane_of<double>(store.depth, outputs.depth ? n : 0, c);
+    band.value = plane_of<double>(store.value, outputs.value ? n : 0, c);
 }
 
 BandFlow::BandFlow(BandWriter &writer, int rows, int cols, int band_rows,

@@ -106,21 +106,21 @@ void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Came
                      const Hit &hit, int row, int col, Band &band)
 {
     const Model &model = tracer.model();
-    const size_t i = size_t(row - band.first_row) * size_t(band.cols) + size_t(col);
+    const int r = row - band.first_row;
     const auto rgb = shader(hit);
-    std::copy(rgb.begin(), rgb.end(), band.rgb.begin() + ptrdiff_t(i) * 3);
+    std::copy(rgb.begin(), rgb.end(), band.rgb.row(r) + size_t(col) * 3);
     if (!band.material.empty())
-        band.material[i] = hit.is_hit() ? model.materials()[hit.material].id : NULL_CLASS;
+        band.material.row(r)[col] = hit.is_hit() ? model.materials()[hit.material].id : NULL_CLASS;
     if (!band.elevation.empty())
-        band.elevation[i] = hit.is_hit() ? hit.point.z : NAN;
+        band.elevation.row(r)[col] = hit.is_hit() ? hit.point.z : NAN;
     if (!band.value.empty()) {
         double v = NAN;
         if (!shader.property() || !shader.property()->value(hit, v))
             v = NAN;
-        band.value[i] = v;
+        band.value.row(r)[col] = v;
     }
     if (!band.depth.empty())
-        band.depth[i] =
+        band.depth.row(r)[col] =
             hit.is_hit()
                 ? glm::length(hit.point - tracer.frame().unexaggerate(camera.ray(row, col).origin))
                 : NAN;

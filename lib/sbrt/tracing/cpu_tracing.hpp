@@ -56,8 +56,20 @@ public:
     /// Rows per band this tracer works best with for an image `cols`
     /// wide; 0: the renderer's choice.
     virtual int preferred_band_rows(int /*cols*/) const { return 0; }
+    /// The most rows a band `cols` wide of `outputs` may have (what
+    /// shade_rows holds at once); the renderer's band_rows never exceed it.
+    virtual int max_band_rows(int /*cols*/, const Outputs & /*outputs*/) const
+    {
+        return INT32_MAX;
+    }
+    /// Bands the renderer's sink holds at most besides the one being
+    /// filled: a tracer that shades into memory of its own (a GPU's mapped
+    /// buffers) has that many more bands' room.
+    static constexpr size_t SINK_BANDS = 2;
     /// Where the tracer shades too (a GPU): the band's outputs of those
-    /// rows (band sized for them); false where it does not.
+    /// rows, into the band's own store (prepare_band) or memory the band
+    /// then views (its planes set); false where it does not, the band
+    /// left as it was.
     virtual bool shade_rows(int /*first*/, int /*count*/, const Outputs & /*outputs*/,
                             Band & /*band*/)
     {

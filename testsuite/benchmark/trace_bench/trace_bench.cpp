@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <memory>
@@ -307,8 +308,9 @@ void frame(const std::string &dir, const Args &args, const Camera &camera, doubl
     });
     size_t checksum = 0;
     const auto sink = [&](const Band &band) {
-        for (size_t i = 0; i < band.rgb.size(); i += 61)
-            checksum += band.rgb[i];
+        for (int r = 0; r < band.rows; ++r)
+            for (size_t i = 0; i < size_t(band.cols) * 3; i += 61)
+                checksum += band.rgb.row(r)[i];
     };
     const Tracer &tracer = renderer->tracer();
     std::vector<std::function<void()>> runs{[&] { renderer->render(camera, {}, sink); }};
@@ -350,6 +352,51 @@ Scene boreholes(const Model &model, const Args &args)
     return scene;
 }
 
+/// Where the time of a GPU frame goes, face normals, best of `repeat`
+/// frames with GL time queries: each pass's GPU time, the host's time after
+/// the GPU was done with the last band (against one memcpy of the output
+/// bytes), and the bytes the host touched per pixel.
+void print_gpu_frame_parts(sbrt_gl::GpuRenderer &on_gpu, Renderer &renderer,
+                           const Camera &camera, const BandSink &sink, unsigned threads,
+                           int repeat, const std::string &label)
+{
+    sbrt_gl::GpuTracer &gpu = const_cast<sbrt_gl::GpuTracer &>(on_gpu.gpu());
+    Shading face = renderer.shading();
+    face.normals = Normals::face;
+    renderer.set_shading(face);
+    gpu.time_passes(true);
+    sbrt_gl::GpuFrameReport best;
+    best.host_after_ms = INFINITY;
+    std::vector<double> pass_ms;
+    for (int k = 0; k < repeat; ++k) {
+        sbrt_gl::GpuFrameReport r = on_gpu.render(camera, {}, sink, threads);
+        if (r.host_after_ms < best.host_after_ms)
+            best = r;
+        pass_ms.resize(r.gpu.pass_ms.size(), INFINITY);
+        for (size_t p = 0; p < r.gpu.pass_ms.size(); ++p)
+            pass_ms[p] = std::min(pass_ms[p], r.gpu.pass_ms[p]);
+    }
+    gpu.time_passes(false);
+    // one memcpy of the bytes the frame hands on
+    const size_t pixels = size_t(camera.rows()) * size_t(camera.cols());
+    std::vector<uint8_t> from(pixels * 3, 1), to(pixels * 3);
+    const double memcpy_ms = best_ms(repeat, [&] {
+        std::memcpy(to.data(), from.data(), from.size());
+        from[to[pixels] % from.size()] += 1;
+    });
+    std::string passes;
+    for (size_t p = 0; p < pass_ms.size(); ++p)
+        if (pass_ms[p] > 0)
+            passes += std::string(" gl_") + sbrt_gl::pass_name(int(p)) + "_ms=" +
+                      std::to_string(pass_ms[p]);
+    std::printf("gpu_parts label=%s cols=%d rows=%d bands=%d%s host_after_ms=%.3f "
+                "memcpy_ms=%.3f host/memcpy=%.2f host_bytes_per_pixel=%.3f "
+                "asked_bytes_per_pixel=3 over_budget=%zu\n",
+                label.c_str(), camera.cols(), camera.rows(), best.gpu.bands, passes.c_str(),
+                best.host_after_ms, memcpy_ms, best.host_after_ms / memcpy_ms,
+                double(best.gpu.host_bytes) / double(pixels), best.gpu.over_budget);
+}
+
 /// The streamed frame on the GPU (gpu=egl|osmesa): the model uploaded
 /// once, every frame traced, shaded (face normals, then kernel normals, not
 /// with boreholes=) and its RGB bands read back into host memory, warm,
@@ -374,8 +421,9 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
     const double upload_ms = gpu.stats().upload_ms;
     size_t checksum = 0;
     const auto sink = [&](const Band &band) {
-        for (size_t i = 0; i < band.rgb.size(); i += 61)
-            checksum += band.rgb[i];
+        for (int r = 0; r < band.rows; ++r)
+            for (size_t i = 0; i < size_t(band.cols) * 3; i += 61)
+                checksum += band.rgb.row(r)[i];
     };
     Shading face = renderer.shading(), kernel = face;
     kernel.normals = Normals::kernel;
@@ -397,6 +445,7 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
     std::vector<double> ms = best_ms_in_turns(repeat, runs);
     ms.resize(3, NAN);
     const double rays = double(camera.rows()) * camera.cols();
+    print_gpu_frame_parts(on_gpu, renderer, camera, sink, threads, repeat, label);
     std::printf("gpu_frame label=%s boreholes=%zu renderer=\"%s\" cols=%d rows=%d upload_ms=%.1f "
                 "frame_ms=%.2f dispatch_ms=%.2f mrays=%.0f frames_per_s=%.1f "
                 "cpu_frame_ms=%.1f cpu_threads=%u gpu/cpu=%.1f kernel_frame_ms=%.2f "

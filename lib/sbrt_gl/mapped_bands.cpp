@@ -1,0 +1,119 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   The mapped, fenced band buffers of the GPU's frames
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "mapped_bands.hpp"
+
+#include <cstring>
+
+#include "gpu_internal.hpp"
+#include "util/error.hpp"
+
+namespace sbrt_gl {
+
+MappedBands::MappedBands(const GlApi &gl, size_t max_bytes) : gl_(gl), max_bytes_(max_bytes) {}
+
+void MappedBands::begin_frame()
+{
+    drop_queued();
+    layout_.reset();
+}
+
+void MappedBands::drop_queued()
+{
+    // their slots come next again: skipping one would hand the GPU the
+    // slot of a band the sink may still read
+    if (!queued_.empty())
+        next_slot_ = queued_.front().slot;
+    queued_.clear();
+}
+
+std::optional<sbrt::GpuBandLayout> MappedBands::layout(int rows, int cols,
+                                                       const sbrt::Outputs &outputs)
+{
+    if (layout_) {
+        const sbrt::GpuBandLayout same = sbrt::gpu_band_layout(layout_->rows, cols, outputs);
+        if (layout_->rows >= rows && same.words == layout_->words &&
+            same.material_at == layout_->material_at && same.depth_at == layout_->depth_at &&
+            same.elevation_at == layout_->elevation_at)
+            return layout_;
+        drop_queued(); // another layout after all
+    }
+    const sbrt::GpuBandLayout wanted = sbrt::gpu_band_layout(rows, cols, outputs);
+    if (wanted.bytes() > max_bytes_)
+        return std::nullopt;
+    if (slots_.empty() || slots_.front().bytes() < wanted.bytes()) {
+        drop_queued();
+        slots_.clear();
+        for (int k = 0; k < SLOTS; ++k)
+            slots_.emplace_back(gl_, wanted.bytes());
+    }
+    layout_ = wanted;
+    return layout_;
+}
+
+void MappedBands::queue(int first, int count, const std::function<void(int, int)> &dispatch)
+{
+    const int slot = next_slot_;
+    next_slot_ = (next_slot_ + 1) % SLOTS;
+    const MappedBuffer &buffer = slots_[size_t(slot)];
+    // no ray over the budget yet: the host writes the count, which the
+    // GPU sees in the commands queued after (a coherent mapping)
+    const uint32_t zero = 0;
+    std::memcpy(buffer.host() + layout_->over_budget_at * 4, &zero, 4);
+    buffer.bind(2);
+    dispatch(first, count);
+    gl_.MemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    check_gl(gl_, "the shading dispatch");
+    queued_.push_back({first, count, slot, GlFence(gl_)});
+}
+
+uint8_t *MappedBands::band(int first, int count, int image_rows,
+                           const std::function<void(int, int)> &dispatch)
+{
+    if (!layout_ || count > layout_->rows)
+        sbrt::fail("MappedBands::band: ", count, " rows without a layout that holds them");
+    const auto start = Clock::now();
+    if (queued_.empty() || queued_.front().first != first || queued_.front().count != count) {
+        drop_queued(); // not the band that was dispatched ahead
+        queue(first, count, dispatch);
+    }
+    const int next = first + count;
+    if (next < image_rows && queued_.size() == 1)
+        queue(next, std::min(count, image_rows - next), dispatch);
+    const Queued &band = queued_.front();
+    band.fence.wait();
+    last_done_ = Clock::now();
+    gpu_ms_ += ms_since(start);
+    uint8_t *host = slots_[size_t(band.slot)].host();
+    queued_.pop_front();
+    return host;
+}
+
+void PassTimer::time(int pass, const std::function<void()> &commands)
+{
+    if (!on_) {
+        commands();
+        return;
+    }
+    if (passes_.size() == pool_.size())
+        pool_.emplace_back(gl_);
+    const GlTimeQuery &query = pool_[passes_.size()];
+    query.begin();
+    commands();
+    query.end();
+    passes_.push_back(pass);
+}
+
+std::vector<double> PassTimer::take_ms(int passes)
+{
+    std::vector<double> ms(size_t(passes), 0.0);
+    for (size_t k = 0; k < passes_.size(); ++k)
+        if (passes_[k] >= 0 && passes_[k] < passes)
+            ms[size_t(passes_[k])] += pool_[k].ms();
+    passes_.clear();
+    return ms;
+}
+
+} // namespace sbrt_gl
