@@ -9,10 +9,13 @@
 #define SBRT_RENDERER_HPP
 
 #include <memory>
+#include <mutex>
+#include <vector>
 
 #include "output/band.hpp"
 #include "tracing/cpu_tracing.hpp"
 #include "shading/shading.hpp"
+#include "util/worker_pool.hpp"
 
 namespace sbrt {
 
@@ -32,6 +35,12 @@ struct RenderReport {
     double ms = 0;       ///< prepare, trace, shade and emit, the sink included
     double trace_ms = 0; ///< tracing and shading the bands (this thread)
     double sink_ms = 0;  ///< the sink's time (its own thread, overlapping)
+    /// The CPU tracer's rows (face normals): per worker, the time spent
+    /// tracing and shading rows; the rest of trace_ms it waited (for a
+    /// band buffer the sink held: band_wait_ms, all workers together) or
+    /// took rows.
+    std::vector<double> worker_busy_ms;
+    double band_wait_ms = 0;
 };
 
 /// \brief A prepared scene (the model after hiding and pruning, its
@@ -71,6 +80,12 @@ private:
     std::unique_ptr<const Tracer> tracer_;
     Shading shading_;
     RenderSettings settings_;
+    /// kept from frame to frame (made by the first render that needs
+    /// them): the CPU tracer's threads and the band buffers, their memory
+    /// warm; renders take turns on them
+    mutable std::mutex frame_mutex_;
+    mutable std::unique_ptr<WorkerPool> pool_;
+    mutable std::vector<Band> spare_bands_;
 };
 
 /// An image of `camera`'s size for `outputs` (misses: NULL_CLASS, NaN).

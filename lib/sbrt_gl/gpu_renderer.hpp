@@ -59,6 +59,7 @@ public:
     /// shading as it is now.
     bool shades_on_gpu(const sbrt::Camera &camera) const;
     const GpuTracer &gpu() const { return gpu_; }
+    GpuTracer &gpu() { return gpu_; }
     const sbrt::Renderer &renderer() const { return renderer_; }
 
 private:

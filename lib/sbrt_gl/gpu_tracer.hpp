@@ -111,6 +111,9 @@ public:
     /// The loop budget of this GL: llvmpipe's (GPU_LOOP_BUDGET), none on
     /// a GPU.
     uint32_t loop_budget() const { return loop_budget_; }
+    /// Another loop budget for the shaded bands (tests: rays over it come
+    /// back to the host).
+    void set_loop_budget(uint32_t budget) { loop_budget_ = budget; }
     /// The shading program (compiled by the first shade_rows; the one with
     /// the drape where there was one), or 0.
     GLuint shade_program() const

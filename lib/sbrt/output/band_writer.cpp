@@ -12,9 +12,25 @@
 
 namespace sbrt {
 
-BandWriter::BandWriter(const BandSink &sink, size_t buffers)
-    : sink_(sink), unallocated_(buffers), thread_([this] { run(); })
+BandWriter::BandWriter(const BandSink &sink, size_t buffers, std::vector<Band> spare)
+    : sink_(sink), unallocated_(buffers)
 {
+    while (!spare.empty() && free_.size() < buffers) {
+        free_.push_back(std::move(spare.back()));
+        spare.pop_back();
+    }
+    unallocated_ -= free_.size();
+    thread_ = std::thread([this] { run(); });
+}
+
+std::vector<Band> BandWriter::release_bands()
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<Band> bands;
+    for (Band &band : free_)
+        bands.push_back(std::move(band));
+    free_.clear();
+    return bands;
 }
 
 BandWriter::~BandWriter()
@@ -81,9 +97,16 @@ void BandWriter::rethrow_locked()
 Band BandWriter::take()
 {
     std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [&] {
+    const auto ready = [&] {
         return error_ || cancelled_ || !free_.empty() || unallocated_ > 0;
-    });
+    };
+    if (!ready()) {
+        const auto start = std::chrono::steady_clock::now();
+        changed_.wait(lock, ready);
+        take_wait_ms_ += std::chrono::duration<double, std::milli>(
+                             std::chrono::steady_clock::now() - start)
+                             .count();
+    }
     rethrow_locked();
     if (cancelled_)
         throw Cancelled();

@@ -14,6 +14,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 #include "output/band.hpp"
 #include "util/error.hpp"
@@ -28,7 +29,10 @@ namespace sbrt {
 /// submit() or finish() on the renderer's side (any of its threads).
 class BandWriter {
 public:
-    explicit BandWriter(const BandSink &sink, size_t buffers = 2);
+    /// `buffers` bands circulate: `spare` ones (of an earlier frame, their
+    /// memory warm) first, then new ones.
+    explicit BandWriter(const BandSink &sink, size_t buffers = 2,
+                        std::vector<Band> spare = {});
     ~BandWriter(); ///< waits for the sink's thread (after finish: at once)
     BandWriter(const BandWriter &) = delete;
     BandWriter &operator=(const BandWriter &) = delete;
@@ -48,6 +52,11 @@ public:
     struct Cancelled : Error {
         Cancelled() : Error("band writer: cancelled (a renderer thread failed)") {}
     };
+    /// After finish(): the band buffers, for the next frame's writer.
+    std::vector<Band> release_bands();
+    /// Time the renderer's threads waited in take() for a buffer the
+    /// sink still held (ms, all threads together).
+    double take_wait_ms() const { return take_wait_ms_; }
     /// Time the sink took so far (ms; read after finish()).
     double sink_ms() const { return sink_ms_; }
 
@@ -64,7 +73,7 @@ private:
     size_t unallocated_;
     bool closing_ = false, busy_ = false, cancelled_ = false;
     int next_row_ = 0; ///< the first row of the band the sink takes next
-    double sink_ms_ = 0;
+    double sink_ms_ = 0, take_wait_ms_ = 0;
     std::exception_ptr error_;
     std::thread thread_;
 };

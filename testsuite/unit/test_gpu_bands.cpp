@@ -1,0 +1,193 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   The GPU's shaded bands where the host reads them (issue 32):
+ *            the band layout (RGB rows on whole words, the planes asked
+ *            for and no others), the mapped bands equal to the CPU's image
+ *            for image widths that are not a multiple of 4 and bands of
+ *            any height, rays over the loop budget traced on the host, the
+ *            bytes the host touches per pixel
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cmath>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "gpu/gpu_layout.hpp"
+#include "gpu_compare.hpp"
+#include "gpu_renderer.hpp"
+#include "renderer.hpp"
+#include "test_support.hpp"
+
+using namespace sbrt;
+using namespace sbrt_test;
+
+namespace {
+
+TEST(GpuBandLayout, RgbRowsStartOnWholeWordsAndOnlyTheOutputsAskedForFollow)
+{
+    for (int cols : {1, 2, 3, 4, 5, 61, 1056}) {
+        const GpuBandLayout rgb = gpu_band_layout(7, cols, Outputs{});
+        EXPECT_EQ(rgb.rgb_stride_words * 4, (size_t(cols) * 3 + 3) / 4 * 4) << cols;
+        EXPECT_GE(rgb.rgb_stride_words * 4, size_t(cols) * 3) << cols;
+        EXPECT_EQ(rgb.material_at, 0u);
+        EXPECT_EQ(rgb.elevation_at, 0u);
+        EXPECT_EQ(rgb.depth_at, 0u);
+        // the count of rays over the budget and room for every pixel
+        EXPECT_EQ(rgb.words, rgb.over_budget_at + 1 + 7 * size_t(cols));
+        EXPECT_GE(rgb.over_budget_at, rgb.rgb_stride_words * 7);
+
+        const GpuBandLayout all = gpu_band_layout(7, cols, Outputs{true, true, true});
+        const size_t pixels = 7 * size_t(cols);
+        EXPECT_GE(all.material_at, all.rgb_stride_words * 7);
+        EXPECT_GE(all.elevation_at, all.material_at + pixels);
+        EXPECT_GE(all.depth_at, all.elevation_at + 2 * pixels);
+        EXPECT_GE(all.over_budget_at, all.depth_at + 2 * pixels);
+        // doubles on 8 bytes
+        EXPECT_EQ(all.elevation_at % 2, 0u) << cols;
+        EXPECT_EQ(all.depth_at % 2, 0u) << cols;
+    }
+    GpuShade shade{};
+    const GpuBandLayout l = gpu_band_layout(3, 5, Outputs{true, false, true});
+    set_band_planes(shade, l);
+    EXPECT_EQ(shade.outputs[0], l.rgb_stride_words);
+    EXPECT_EQ(shade.planes[0], l.material_at);
+    EXPECT_EQ(shade.planes[1], 0u);
+    EXPECT_EQ(shade.planes[2], l.depth_at);
+    EXPECT_EQ(shade.planes[3], l.over_budget_at);
+}
+
+/// Every pixel of `got` against `want`: classes equal, colours within a
+/// level, elevations and depths within `tolerance` (NaN alike).
+void expect_images_agree(const Image &want, const Image &got, double tolerance,
+                         const std::string &what)
+{
+    ASSERT_EQ(got.rgb.size(), want.rgb.size()) << what;
+    size_t classes = 0, colours = 0, far = 0;
+    for (size_t i = 0; i < want.material.size(); ++i) {
+        classes += got.material[i] != want.material[i];
+        for (int k = 0; k < 3; ++k)
+            colours += std::abs(int(got.rgb[i * 3 + k]) - int(want.rgb[i * 3 + k])) > 1;
+        const bool missed = want.material[i] == NULL_CLASS;
+        if (got.material[i] != want.material[i])
+            continue;
+        if (missed)
+            far += !(std::isnan(got.elevation[i]) && std::isnan(got.depth[i]));
+        else
+            far += !(std::fabs(got.elevation[i] - want.elevation[i]) <= tolerance &&
+                     std::fabs(got.depth[i] - want.depth[i]) <= tolerance);
+    }
+    const size_t n = want.material.size();
+    EXPECT_LE(classes, n / 500 + 1) << what;
+    EXPECT_LE(colours, n / 200 + 3 * classes) << what;
+    EXPECT_EQ(far, 0u) << what;
+}
+
+class GpuBands : public ::testing::TestWithParam<const char *> {
+protected:
+    void SetUp() override
+    {
+        context_ = make_context(GetParam());
+        if (!context_)
+            GTEST_FAIL();
+    }
+    std::unique_ptr<sbrt_gl::GlContext> context_;
+};
+
+INSTANTIATE_TEST_SUITE_P(Backends, GpuBands,
+                         ::testing::Values("egl"
+#ifdef SBRT_HAVE_OSMESA
+                                           ,
+                                           "osmesa"
+#endif
+                                           ));
+
+TEST_P(GpuBands, MappedBandsOfAnyWidthAndHeightAreTheCpusImage)
+{
+    const Model m = geology(30, 44, 24);
+    Shading lit;
+    lit.light = Shading::light_from(300, 35);
+    lit.background = {10, 20, 30};
+    const Outputs all{true, true, true};
+    for (int band_rows : {1, 5, 16, 0}) {
+        const Renderer renderer(m, 2.0, Scene{}, lit, {2, true, band_rows});
+        const Tracer &t = renderer.tracer();
+        sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+        const double tolerance = 2e-5 * 2 * t.frame().radius();
+        for (int cols : {37, 38, 39, 40}) {
+            const glm::dvec3 c = t.frame().centre();
+            const Camera camera = Camera::perspective(
+                c + 2.2 * t.frame().radius() * glm::dvec3(0.6, -0.7, 0.5), c, 40, 29, cols);
+            const std::string what =
+                "cols " + std::to_string(cols) + ", band rows " + std::to_string(band_rows);
+            Image got = empty_image(camera, all);
+            size_t strides_checked = 0;
+            const sbrt_gl::GpuFrameReport r = on_gpu.render(
+                camera, all,
+                [&](const Band &band) {
+                    // the band views the GPU's words: RGB rows on whole words
+                    EXPECT_EQ(band.rgb.stride(), (size_t(cols) * 3 + 3) / 4 * 4) << what;
+                    EXPECT_EQ(band.material.stride(), size_t(cols)) << what;
+                    ++strides_checked;
+                    gather_band(band, got);
+                },
+                2);
+            EXPECT_TRUE(r.shaded_on_gpu) << what;
+            EXPECT_GT(strides_checked, 0u);
+            expect_images_agree(renderer.render_image(camera, all), got, tolerance, what);
+            // the host read what was asked for: 3 + 4 + 8 + 8 bytes a pixel
+            // and a count of rays over the budget a band
+            const size_t pixels = size_t(cols) * 29;
+            EXPECT_EQ(r.gpu.host_bytes, pixels * 23 + 4 * size_t(r.gpu.bands)) << what;
+        }
+    }
+}
+
+TEST_P(GpuBands, ShadedRaysOverTheLoopBudgetAreTracedAndShadedOnTheHost)
+{
+    const Model m = geology(40, 50, 20);
+    const Renderer renderer(m, 1.0, Scene{}, Shading{}, {2, true, 8});
+    const Tracer &t = renderer.tracer();
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    on_gpu.gpu().set_loop_budget(4); // many rays give up on the GPU
+    const glm::dvec3 c = t.frame().centre();
+    const Camera camera =
+        Camera::perspective(c + glm::dvec3(-0.4, -0.5, 0.3) * 2.0 * t.frame().radius(), c, 40,
+                            43, 61);
+    const Outputs all{true, true, true};
+    const Image want = renderer.render_image(camera, all);
+    Image got = empty_image(camera, all);
+    const sbrt_gl::GpuFrameReport r =
+        on_gpu.render(camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
+    const size_t pixels = size_t(camera.rows()) * size_t(camera.cols());
+    EXPECT_GT(r.gpu.over_budget, pixels / 20);
+    expect_images_agree(want, got, 2e-5 * 2 * t.frame().radius(), "budget of 4");
+}
+
+TEST_P(GpuBands, AnRgbFrameHandsTheHostThreeBytesAPixel)
+{
+    const Model m = geology(30, 44, 24);
+    const Renderer renderer(m, 2.0, Scene{}, Shading{}, {2, true, 0});
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    const Tracer &t = renderer.tracer();
+    const glm::dvec3 c = t.frame().centre();
+    const Camera camera =
+        Camera::perspective(c + 2.2 * t.frame().radius() * glm::dvec3(0.6, -0.7, 0.5), c, 40,
+                            57, 83);
+    size_t bands = 0;
+    const sbrt_gl::GpuFrameReport r = on_gpu.render(
+        camera, {},
+        [&](const Band &band) {
+            ++bands;
+            EXPECT_TRUE(band.material.empty());
+            EXPECT_TRUE(band.elevation.empty());
+            EXPECT_TRUE(band.depth.empty());
+            EXPECT_EQ(band.bytes_per_pixel(), 3u);
+        },
+        2);
+    EXPECT_EQ(bands, size_t(r.gpu.bands));
+    EXPECT_EQ(r.gpu.host_bytes, size_t(83 * 57) * 3 + 4 * bands);
+    EXPECT_EQ(r.gpu.over_budget, 0u);
+}
+
+} // namespace
