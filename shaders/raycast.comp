@@ -110,8 +110,13 @@ bool climb(uint level, int ix, int iy, vec3 hi, vec3 lo, vec3 d, float z_in,
 // The first hit of this invocation's pixel, written by finish()
 void trace_pixel()
 {
-    // this dispatch covers the band of image rows from options.z on
+    // this dispatch covers the band of image rows from options.z on (its
+    // listed tiles in the boreholes' pass)
+#ifdef SBRT_SHADE
+    uvec2 pixel = work_group_tile() * 8u + gl_LocalInvocationID.xy;
+#else
     uvec2 pixel = gl_GlobalInvocationID.xy;
+#endif
     uint image_cols = grid.z, image_rows = grid.w, row = pixel.y + options.z;
     if (pixel.x >= image_cols || row >= image_rows || pixel.y >= options.w)
         return;

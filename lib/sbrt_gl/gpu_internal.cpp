@@ -63,12 +63,17 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
     const sbrt::Model &model = tracer.model();
     const unsigned count_bytes = model.index().count_bytes();
     // the normals pass reads a face's normal as shading does
-    const bool shade =
-        pass == Pass::shade || pass == Pass::kernel_shade || pass == Pass::kernel_normals;
+    const bool shade = pass == Pass::shade || pass == Pass::shade_boreholes ||
+                       pass == Pass::kernel_shade || pass == Pass::kernel_normals;
     // overlays are shaded where they are met (a hit record lacks their
-    // surfaces' normals)
-    const sbrt::GpuOverlayMode overlays =
+    // surfaces' normals); boreholes with the model in a pass of their own
+    // over the tiles they may cover: every other ray walks the model alone
+    sbrt::GpuOverlayMode overlays =
         pass == Pass::shade ? sbrt::gpu_overlay_mode(tracer) : sbrt::GpuOverlayMode::none;
+    if (overlays == sbrt::GpuOverlayMode::with_model)
+        overlays = sbrt::GpuOverlayMode::none;
+    if (pass == Pass::shade_boreholes)
+        overlays = sbrt::GpuOverlayMode::with_model;
     const bool kernel = pass == Pass::kernel_depth || pass == Pass::kernel_normals ||
                         pass == Pass::kernel_across || pass == Pass::kernel_shade;
     return {"#version 450\n",
@@ -80,6 +85,7 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             shade ? "#define SBRT_SHADE 1\n" : "",
             drape && shade ? "#define SBRT_DRAPE 1\n" : "",
             kernel ? "#define SBRT_KERNEL 1\n" : "",
+            pass == Pass::shade_boreholes ? "#define SBRT_TILE_LIST 1\n" : "",
             overlays == sbrt::GpuOverlayMode::alone        ? "#define SBRT_OVERLAYS 1\n"
             : overlays == sbrt::GpuOverlayMode::with_model ? "#define SBRT_BOREHOLES 1\n"
                                                            : "",

@@ -39,7 +39,11 @@ enum class Pass : int {
     kernel_normals, ///< kernel.comp: the kernel normals (SBRT_KERNEL_NORMALS)
     kernel_across,  ///< kernel.comp: their sums along the rows (smoothing)
     kernel_shade, ///< kernel.comp: kernel normals and the shaded outputs
-    first_pass    ///< first_pass.comp: the tiles' first-hit bounds
+    first_pass,   ///< first_pass.comp: the tiles' first-hit bounds
+    /// raycast.comp: the shaded outputs of the model and its boreholes
+    /// over the listed tiles (SBRT_BOREHOLES, SBRT_TILE_LIST); the shade
+    /// pass draws the model alone then
+    shade_boreholes
 };
 
 /// The sources of `pass` for `layout`, the form the tracer's model is held

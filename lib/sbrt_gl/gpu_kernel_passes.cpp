@@ -84,7 +84,7 @@ void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int
 {
     sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     const sbrt::GpuBandLayout layout = band_layout(camera, row_count, outputs, shade);
-    GlComputeProgram &program = shading_program(shading, true);
+    GlComputeProgram &program = shading_program(shading, Pass::kernel_shade);
     const int cols = camera.cols();
     sbrt::GpuView view = sbrt::make_gpu_view(tracer_, camera, loop_budget_);
     view_.upload(&view, sizeof view);

@@ -13,6 +13,7 @@
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 #include "gpu_internal.hpp"
+#include "gpu/gpu_overlays.hpp"
 
 namespace sbrt_gl {
 
@@ -141,14 +142,14 @@ std::vector<double> GpuTracer::take_pass_ms()
 {
     if (!timer_.enabled())
         return {};
-    return timer_.take_ms(int(Pass::first_pass) + 1);
+    return timer_.take_ms(int(Pass::shade_boreholes) + 1);
 }
 
 const char *pass_name(int k)
 {
     static const char *const names[] = {"records",        "shade",         "kernel_depth",
                                         "kernel_normals", "kernel_across", "kernel_shade",
-                                        "first_pass"};
+                                        "first_pass",     "shade_boreholes"};
     return k >= 0 && k < int(std::size(names)) ? names[k] : "?";
 }
 
@@ -270,18 +271,16 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
     stats_.readback_ms += ms_since(start);
 }
 
-GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, bool kernel)
+GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, Pass pass)
 {
     const bool draped = shading.drape != nullptr;
     std::optional<GlComputeProgram> &program =
-        kernel ? (draped ? kernel_drape_program_ : kernel_program_)
-               : (draped ? drape_program_ : shade_program_);
+        pass == Pass::kernel_shade      ? (draped ? kernel_drape_program_ : kernel_program_)
+        : pass == Pass::shade_boreholes ? (draped ? boreholes_drape_program_ : boreholes_program_)
+                                        : (draped ? drape_program_ : shade_program_);
     if (!program) {
         const auto start = Clock::now();
-        program.emplace(gl_,
-                        pass_sources(kernel ? Pass::kernel_shade : Pass::shade, layout_, tracer_,
-                                     draped),
-                        &cache_);
+        program.emplace(gl_, pass_sources(pass, layout_, tracer_, draped), &cache_);
         stats_.upload_ms += ms_since(start);
     }
     return *program;
@@ -370,13 +369,19 @@ sbrt::GpuBandLayout GpuTracer::band_layout(const sbrt::Camera &camera, int count
 
 void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_count,
                            const sbrt::Shading &shading, const sbrt::Outputs &outputs,
-                           sbrt::Band &band, unsigned cpu_threads)
+                           sbrt::Band &band, unsigned cpu_threads,
+                           const std::optional<std::vector<sbrt::PixelRect>> &borehole_pixels)
 {
     sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     const sbrt::GpuBandLayout layout = band_layout(camera, row_count, outputs, shade);
-    GlComputeProgram &program = shading_program(shading, false);
+    GlComputeProgram &program = shading_program(shading, Pass::shade);
+    // boreholes with the model: the model alone everywhere, then the model
+    // and the boreholes again over the tiles where a ray may meet one (no
+    // other ray pays for them)
+    const bool boreholes = sbrt::gpu_overlay_mode(tracer_) == sbrt::GpuOverlayMode::with_model;
+    GlComputeProgram *borehole_program =
+        boreholes ? &shading_program(shading, Pass::shade_boreholes) : nullptr;
     sbrt::GpuView view = traced_view(camera, loop_budget_);
-    program.use();
     bind_model();
     bind_shading(shade, shading);
     const int cols = camera.cols();
@@ -385,8 +390,32 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    view.options[2] = uint32_t(first);
                    view.options[3] = uint32_t(count);
                    view_.upload(&view, sizeof view); // stays bound to index 0
-                   timer_.time(int(Pass::shade), [&] {
-                       gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
+                   const std::vector<uint32_t> tiles =
+                       boreholes ? sbrt::overlay_tiles(borehole_pixels, first, count, cols)
+                                 : std::vector<uint32_t>();
+                   const size_t all_tiles =
+                       size_t((cols + 7) / 8) * size_t((count + 7) / 8);
+                   if (boreholes) {
+                       stats_.borehole_tiles += tiles.size();
+                       stats_.tiles += all_tiles;
+                   }
+                   if (tiles.size() < all_tiles) {
+                       program.use();
+                       timer_.time(int(Pass::shade), [&] {
+                           gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8),
+                                               1);
+                       });
+                   }
+                   if (tiles.empty())
+                       return;
+                   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+                   // a buffer of its own for each band: GL keeps the one a
+                   // queued dispatch reads until that is done
+                   tiles_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, tiles.size() * 4, tiles.data());
+                   tiles_->bind(12);
+                   borehole_program->use();
+                   timer_.time(int(Pass::shade_boreholes), [&] {
+                       gl_.DispatchCompute(GLuint(tiles.size()), 1, 1);
                    });
                });
 }

@@ -43,6 +43,9 @@ struct GpuStats {
     /// handed to the sink, the counts of rays over the budget and what
     /// the host wrote for those rays.
     size_t host_bytes = 0;
+    /// Boreholes with the model: the 8 x 8 tiles the boreholes' pass
+    /// shaded again, of all the tiles of the bands.
+    size_t borehole_tiles = 0, tiles = 0;
     /// GPU time of each pass (GL_TIME_ELAPSED; with GpuTracer::time_passes),
     /// indexed by Pass (gpu_internal.hpp): see pass_name.
     std::vector<double> pass_ms;
@@ -80,9 +83,14 @@ public:
     /// else; rays over the loop budget are traced and shaded again on the
     /// host. The next band is dispatched before this one is waited for.
     /// Adds to stats().
+    /// Boreholes drawn with the model are shaded in a second pass over the
+    /// 8 x 8 tiles holding `borehole_pixels` (cpu_pixels_of; nullopt:
+    /// every pixel), the model alone in the first.
     void shade_rows(const sbrt::Camera &camera, int first, int count,
                     const sbrt::Shading &shading, const sbrt::Outputs &outputs,
-                    sbrt::Band &band, unsigned cpu_threads = 0);
+                    sbrt::Band &band, unsigned cpu_threads = 0,
+                    const std::optional<std::vector<sbrt::PixelRect>> &borehole_pixels =
+                        std::nullopt);
     /// The most rows `cols` wide of `outputs` that one shaded band holds.
     int max_band_rows(int cols, const sbrt::Outputs &outputs) const;
     /// A new frame: bands dispatched ahead for the last one are dropped.
@@ -174,9 +182,10 @@ private:
     void dispatch_bands(int cols, int first, int count, GlBuffer &buffer,
                         size_t bytes_per_pixel, void *out, const char *what,
                         const std::function<void(int, int)> &set_band);
-    /// The shading program for `shading` (with its drape; the kernel
-    /// normals' pass or the ray casting one), compiled when first needed.
-    GlComputeProgram &shading_program(const sbrt::Shading &shading, bool kernel);
+    /// The shading program of `pass` (shade, shade_boreholes or
+    /// kernel_shade) for `shading` (with its drape), compiled when first
+    /// needed.
+    GlComputeProgram &shading_program(const sbrt::Shading &shading, Pass pass);
     /// Compiles `program` for `pass` (gpu_internal.hpp) when first needed
     /// and runs it over width x height invocations (pixels of the whole
     /// image, or the first pass's tiles), its buffers bound; a barrier
@@ -216,6 +225,10 @@ private:
     /// shading on the GPU: its program, the materials' looks, the Shade
     /// block, the band's output words
     std::optional<GlComputeProgram> shade_program_, drape_program_;
+    /// the boreholes' pass over listed tiles (with a drape or without),
+    /// and the tiles of the band last dispatched (binding 12)
+    std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_;
+    std::optional<GlBuffer> tiles_;
     /// boreholes and curtains drawn by the shading program (bindings 9,
     /// 10 and, with the model, each cell's boreholes: 11)
     std::optional<GlBuffer> overlays_, logs_, cell_overlays_;

@@ -162,6 +162,20 @@ layout(std430, binding = 3) readonly buffer Materials { vec4 materials[]; };
 // mapped into host memory: these words are what the host reads.
 layout(std430, binding = 2) buffer Pixels { uint words[]; };
 
+#ifdef SBRT_TILE_LIST
+// The boreholes' pass (SBRT_BOREHOLES): one work group a listed tile of
+// 8 x 8 pixels of the band, x | y << 16 (sbrt::overlay_tiles); the model
+// alone was shaded everywhere before.
+layout(std430, binding = 12) readonly buffer Tiles { uint tiles[]; };
+uvec2 work_group_tile()
+{
+    uint tile = tiles[gl_WorkGroupID.x];
+    return uvec2(tile & 0xffffu, tile >> 16);
+}
+#else
+uvec2 work_group_tile() { return gl_WorkGroupID.xy; }
+#endif
+
 // What shading needs besides the view; mirrored by sbrt::GpuShade.
 layout(std140, binding = 1) uniform Shade {
     vec4 light;            // xyz: towards the light (exaggerated map space,

@@ -168,7 +168,7 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
 // `band_rows`: the rows of this dispatch; `image_cols`: the row's pixels.
 void pack_group_rgb(uint band_rows, uint image_cols)
 {
-    uvec2 group = gl_WorkGroupID.xy, local = gl_LocalInvocationID.xy;
+    uvec2 group = work_group_tile(), local = gl_LocalInvocationID.xy;
     uint row = group.y * 8u + local.y, first_col = group.x * 8u;
     if (row >= band_rows || first_col >= image_cols)
         return;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "gpu/gpu_layout.hpp"
@@ -188,6 +189,56 @@ TEST_P(GpuBands, AnRgbFrameHandsTheHostThreeBytesAPixel)
     EXPECT_EQ(bands, size_t(r.gpu.bands));
     EXPECT_EQ(r.gpu.host_bytes, size_t(83 * 57) * 3 + 4 * bands);
     EXPECT_EQ(r.gpu.over_budget, 0u);
+}
+
+} // namespace
+
+namespace {
+
+TEST(OverlayTiles, TheTilesOfTheRectanglesWithinTheBand)
+{
+    // a band of rows [16, 40) of an image 50 wide: 7 x 3 tiles
+    const std::vector<PixelRect> rects = {{{10, 20, 3, 9}}, {{38, 60, 49, 49}}, {{0, 5, 0, 49}}};
+    const std::vector<uint32_t> tiles = overlay_tiles(rects, 16, 24, 50);
+    // rows 16-20 (tile row 0) columns 3-9 (tile columns 0, 1); rows 38-39
+    // (tile row 2) column 49 (tile column 6); the third ends above the band
+    EXPECT_EQ(tiles, (std::vector<uint32_t>{0u, 1u, 6u | 2u << 16}));
+    // nullopt: every tile, row by row
+    const std::vector<uint32_t> all = overlay_tiles(std::nullopt, 0, 9, 17);
+    ASSERT_EQ(all.size(), 6u);
+    EXPECT_EQ(all.back(), 2u | 1u << 16);
+    EXPECT_TRUE(overlay_tiles(std::vector<PixelRect>(), 0, 9, 17).empty());
+}
+
+TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)
+{
+    const Model m = geology(40, 56, 30);
+    const Frame &f = m.frame();
+    Scene scene;
+    for (const auto &[row, col] : {std::pair{10, 12}, std::pair{25, 40}}) {
+        Borehole b;
+        b.x = f.west + (col + 0.5) * f.ew_res();
+        b.y = f.north - (row + 0.5) * f.ns_res();
+        b.stack = b.model_stack = m.stack_intervals(m.cell_index(row, col));
+        scene.boreholes.push_back(std::move(b));
+    }
+    scene.borehole_radius = 1.5 * f.ew_res();
+    const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 16});
+    const Tracer &t = renderer.tracer();
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    const Camera camera = Camera::perspective(
+        t.frame().centre() + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)),
+        t.frame().centre(), 40, 83, 61);
+    const Outputs all{true, true, true};
+    Image got = empty_image(camera, all);
+    const sbrt_gl::GpuFrameReport r =
+        on_gpu.render(camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
+    expect_images_agree(renderer.render_image(camera, all), got, 2e-5 * 2 * t.frame().radius(),
+                        "two boreholes");
+    // bands of 16 rows: 2 tile rows each, 1 for the last 3 rows; 8 tile columns
+    EXPECT_EQ(r.gpu.tiles, size_t(8 * (5 * 2 + 1)));
+    EXPECT_GT(r.gpu.borehole_tiles, 0u);
+    EXPECT_LT(r.gpu.borehole_tiles, r.gpu.tiles / 3);
 }
 
 } // namespace

@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "gpu/gpu_overlays.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <tuple>
 
@@ -37,6 +38,35 @@ GpuOverlayMode gpu_overlay_mode(const Tracer &tracer)
     if (!tracer.has_overlays())
         return GpuOverlayMode::none;
     return scene.fence.empty() ? GpuOverlayMode::with_model : GpuOverlayMode::on_cpu;
+}
+
+std::vector<uint32_t> overlay_tiles(const std::optional<std::vector<PixelRect>> &rects,
+                                    int first_row, int rows, int cols)
+{
+    const int side = 8;
+    const int tile_cols = (cols + side - 1) / side, tile_rows = (rows + side - 1) / side;
+    if (tile_cols > 0xffff || tile_rows > 0xffff)
+        fail("overlay_tiles: ", tile_cols, " x ", tile_rows, " tiles, more than 65535 a side");
+    std::vector<uint8_t> marked(size_t(tile_cols) * size_t(tile_rows), rects ? 0 : 1);
+    if (rects)
+        for (const PixelRect &r : *rects) {
+            // rows [r[0], r[1]] and columns [r[2], r[3]] within the band
+            const int r0 = std::max(r[0], first_row) - first_row;
+            const int r1 = std::min(r[1], first_row + rows - 1) - first_row;
+            const int c0 = std::max(r[2], 0), c1 = std::min(r[3], cols - 1);
+            if (r0 > r1 || c0 > c1)
+                continue;
+            for (int ty = r0 / side; ty <= r1 / side; ++ty)
+                std::fill_n(marked.begin() + ptrdiff_t(size_t(ty) * size_t(tile_cols) +
+                                                       size_t(c0 / side)),
+                            c1 / side - c0 / side + 1, uint8_t(1));
+        }
+    std::vector<uint32_t> tiles;
+    for (int ty = 0; ty < tile_rows; ++ty)
+        for (int tx = 0; tx < tile_cols; ++tx)
+            if (marked[size_t(ty) * size_t(tile_cols) + size_t(tx)])
+                tiles.push_back(uint32_t(tx) | uint32_t(ty) << 16);
+    return tiles;
 }
 
 GpuOverlays make_gpu_overlays(const Tracer &tracer)

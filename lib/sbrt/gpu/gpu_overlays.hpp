@@ -12,7 +12,10 @@
 #include <cstdint>
 #include <vector>
 
+#include <optional>
+
 #include "model/interval_array.hpp"
+#include "tracing/cpu_tracing.hpp"
 #include "tracing/tracer.hpp"
 
 namespace sbrt {
@@ -54,6 +57,15 @@ inline bool shaded_on_gpu(GpuOverlayMode mode)
 {
     return mode == GpuOverlayMode::alone || mode == GpuOverlayMode::with_model;
 }
+
+/// The 8 x 8 pixel tiles (work groups) of rows [first_row, first_row +
+/// rows) of an image `cols` wide that hold a pixel of `rects` (whole
+/// image rows and columns, inclusive), band-local, as x | y << 16, row by
+/// row: the work groups of the boreholes' pass (SBRT_TILE_LIST); every
+/// tile of the band where `rects` is nullopt (a borehole reaches behind
+/// the camera).
+std::vector<uint32_t> overlay_tiles(const std::optional<std::vector<PixelRect>> &rects,
+                                    int first_row, int rows, int cols);
 
 /// The overlays of the tracer's scene on the GPU: the Overlays buffer's
 /// words (head, then the overlays), the logs (intervals, local tops) and,
