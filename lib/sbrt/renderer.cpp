@@ -193,12 +193,12 @@ double ms_since(std::chrono::steady_clock::time_point start)
 /// taken in order by any thread, and a band goes to the sink when its last
 /// row is done (no thread waits for the others at a band's end).
 void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs &outputs,
-                 const BandSink &sink, WorkerPool &pool, std::vector<Band> &spare_bands,
-                 int rows, int cols, RenderReport &report)
+                 const BandSink &sink, WorkerPool &pool, BandWriter &writer, int rows,
+                 int cols, RenderReport &report)
 {
     const unsigned threads = pool.size();
-    BandWriter writer(sink, std::max<size_t>(3, 2 * threads / size_t(report.band_rows) + 2),
-                      std::move(spare_bands));
+    const BandFrame frame(writer, sink,
+                          std::max<size_t>(3, 2 * threads / size_t(report.band_rows) + 2));
     BandFlow flow(writer, rows, cols, report.band_rows, outputs);
     std::vector<double> busy(threads, 0.0);
     const auto start = std::chrono::steady_clock::now();
@@ -229,18 +229,17 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
     report.band_wait_ms = writer.take_wait_ms();
     report.worker_busy_ms = std::move(busy);
     report.most_rows_held = int(threads); // a row of hits per thread
-    spare_bands = writer.release_bands();
 }
 
 /// Band by band: kernel normals (over their window of rows, when given),
 /// or another RowTracer (a GPU), which may shade its bands itself.
 void render_bands(RowTracer &source, KernelBands *kernel, const RowShader &shade,
                   const Outputs &outputs, const BandSink &sink, unsigned threads,
-                  std::vector<Band> &spare_bands, int rows, int cols, RenderReport &report)
+                  BandWriter &writer, int rows, int cols, RenderReport &report)
 {
     HitImage band_hits; // made when a band is first traced on this side
     bool shaded_by_tracer = false;
-    BandWriter writer(sink, RowTracer::SINK_BANDS, std::move(spare_bands));
+    const BandFrame frame(writer, sink, RowTracer::SINK_BANDS);
     for (int first = 0; first < rows; first += report.band_rows) {
         const int count = std::min(report.band_rows, rows - first);
         Band band = writer.take();
@@ -270,7 +269,6 @@ void render_bands(RowTracer &source, KernelBands *kernel, const RowShader &shade
     writer.finish();
     report.sink_ms = writer.sink_ms();
     report.band_wait_ms = writer.take_wait_ms();
-    spare_bands = writer.release_bands();
     report.most_rows_held = kernel             ? kernel->most_rows()
                             : shaded_by_tracer ? 0
                                                : report.band_rows;
@@ -314,15 +312,16 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     if (shading_.normals == Normals::kernel && !(rows && rows->shades_kernel_normals()))
         kernel.emplace(*tracer_, camera, shading_, source, threads);
     const std::lock_guard<std::mutex> frame(frame_mutex_);
+    if (!writer_)
+        writer_ = std::make_unique<BandWriter>();
     if (cpu && !kernel) {
         if (!pool_ || pool_->size() != threads)
             pool_ = std::make_unique<WorkerPool>(threads);
-        render_rows(*cpu, shade, outputs, sink, *pool_, spare_bands_, camera.rows(), cols,
-                    report);
+        render_rows(*cpu, shade, outputs, sink, *pool_, *writer_, camera.rows(), cols, report);
     }
     else {
         render_bands(source, kernel ? &*kernel : nullptr, shade, outputs, sink, threads,
-                     spare_bands_, camera.rows(), cols, report);
+                     *writer_, camera.rows(), cols, report);
     }
     report.ms = ms_since(start);
     return report;

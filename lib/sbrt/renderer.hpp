@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "output/band.hpp"
+#include "output/band_writer.hpp"
 #include "tracing/cpu_tracing.hpp"
 #include "shading/shading.hpp"
 #include "util/worker_pool.hpp"
@@ -81,11 +82,11 @@ private:
     Shading shading_;
     RenderSettings settings_;
     /// kept from frame to frame (made by the first render that needs
-    /// them): the CPU tracer's threads and the band buffers, their memory
-    /// warm; renders take turns on them
+    /// them): the CPU tracer's threads, the sink's thread and the band
+    /// buffers, their memory warm; renders take turns on them
     mutable std::mutex frame_mutex_;
     mutable std::unique_ptr<WorkerPool> pool_;
-    mutable std::vector<Band> spare_bands_;
+    mutable std::unique_ptr<BandWriter> writer_;
 };
 
 /// An image of `camera`'s size for `outputs` (misses: NULL_CLASS, NaN).

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <string>
 #include <random>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -130,4 +131,51 @@ TEST(BandFlow, AFailingRowOrSinkEndsTheRenderWithItsError)
         EXPECT_NE(std::string(e.what()).find("disk full"), std::string::npos) << e.what();
     }
     EXPECT_LE(taken, 5);
+}
+
+TEST(BandFlow, OneWriterServesFrameAfterFrameWithItsBuffersWarm)
+{
+    BandWriter writer;
+    std::vector<const uint8_t *> first_frame, second_frame;
+    const BandSink first = [&](const Band &band) { first_frame.push_back(band.rgb.row(0)); };
+    const BandSink second = [&](const Band &band) { second_frame.push_back(band.rgb.row(0)); };
+    for (const BandSink *sink : {&first, &second}) {
+        const BandFrame frame(writer, *sink, 2);
+        for (int b = 0; b < 6; ++b) {
+            Band band = writer.take();
+            prepare_band(band, b * 4, 4, 8, Outputs{});
+            writer.submit(std::move(band));
+        }
+        writer.finish();
+    }
+    ASSERT_EQ(first_frame.size(), 6u);
+    ASSERT_EQ(second_frame.size(), 6u);
+    // no new memory in the second frame: its bands are the first's buffers
+    const std::set<const uint8_t *> kept(first_frame.begin(), first_frame.end());
+    EXPECT_LE(kept.size(), 2u);
+    for (const uint8_t *p : second_frame)
+        EXPECT_TRUE(kept.count(p));
+
+    // a frame given up halfway: the sink is not called after it ends, and
+    // the next frame runs as usual
+    int late_calls = 0, calls = 0;
+    {
+        const BandSink counted = [&](const Band &) { ++late_calls; };
+        const BandFrame frame(writer, counted, 2);
+        Band band = writer.take();
+        prepare_band(band, 4, 4, 8, Outputs{}); // row 0's band never comes
+        writer.submit(std::move(band));
+        writer.cancel();
+        EXPECT_THROW(writer.take(), BandWriter::Cancelled);
+    }
+    EXPECT_EQ(late_calls, 0);
+    const BandSink count = [&](const Band &) { ++calls; };
+    const BandFrame frame(writer, count, 2);
+    for (int b = 0; b < 3; ++b) {
+        Band band = writer.take();
+        prepare_band(band, b * 4, 4, 8, Outputs{});
+        writer.submit(std::move(band));
+    }
+    writer.finish();
+    EXPECT_EQ(calls, 3);
 }

@@ -12,25 +12,11 @@
 
 namespace sbrt {
 
-BandWriter::BandWriter(const BandSink &sink, size_t buffers, std::vector<Band> spare)
-    : sink_(sink), unallocated_(buffers)
-{
-    while (!spare.empty() && free_.size() < buffers) {
-        free_.push_back(std::move(spare.back()));
-        spare.pop_back();
-    }
-    unallocated_ -= free_.size();
-    thread_ = std::thread([this] { run(); });
-}
+BandWriter::BandWriter() : thread_([this] { run(); }) {}
 
-std::vector<Band> BandWriter::release_bands()
+BandWriter::BandWriter(const BandSink &sink, size_t buffers) : BandWriter()
 {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<Band> bands;
-    for (Band &band : free_)
-        bands.push_back(std::move(band));
-    free_.clear();
-    return bands;
+    start(sink, buffers);
 }
 
 BandWriter::~BandWriter()
@@ -41,6 +27,31 @@ BandWriter::~BandWriter()
     }
     changed_.notify_all();
     thread_.join();
+}
+
+void BandWriter::start(const BandSink &sink, size_t buffers)
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    sink_ = &sink;
+    buffers_ = std::max<size_t>(buffers, 1);
+    out_ = 0;
+    next_row_ = 0;
+    cancelled_ = false;
+    error_ = nullptr;
+    sink_ms_ = take_wait_ms_ = 0;
+    for (Band &band : queued_)
+        free_.push_back(std::move(band));
+    queued_.clear();
+}
+
+void BandWriter::end_frame()
+{
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (Band &band : queued_)
+        free_.push_back(std::move(band));
+    queued_.clear();
+    changed_.wait(lock, [&] { return !busy_; });
+    sink_ = nullptr;
 }
 
 std::deque<Band>::iterator BandWriter::next_band()
@@ -61,24 +72,28 @@ void BandWriter::run()
         queued_.erase(next);
         next_row_ += band.rows;
         busy_ = true;
-        if (!error_) {
+        if (!error_ && sink_) {
+            const BandSink &sink = *sink_;
             lock.unlock();
             const auto start = std::chrono::steady_clock::now();
+            std::exception_ptr error;
             try {
-                sink_(band);
+                sink(band);
             }
             catch (...) {
-                lock.lock();
-                error_ = std::current_exception();
-                lock.unlock();
+                error = std::current_exception();
             }
             lock.lock();
+            if (error && !error_)
+                error_ = error;
             sink_ms_ += std::chrono::duration<double, std::milli>(
                             std::chrono::steady_clock::now() - start)
                             .count();
         }
         busy_ = false;
         free_.push_back(std::move(band));
+        if (out_ > 0)
+            --out_;
         changed_.notify_all();
     }
 }
@@ -86,9 +101,11 @@ void BandWriter::run()
 void BandWriter::rethrow_locked()
 {
     if (error_) {
-        // the sink takes no more bands; every later call rethrows
+        // the sink takes no more bands of this frame; every later call
+        // rethrows
+        for (Band &band : queued_)
+            free_.push_back(std::move(band));
         queued_.clear();
-        closing_ = true;
         changed_.notify_all();
         std::rethrow_exception(error_);
     }
@@ -97,9 +114,7 @@ void BandWriter::rethrow_locked()
 Band BandWriter::take()
 {
     std::unique_lock<std::mutex> lock(mutex_);
-    const auto ready = [&] {
-        return error_ || cancelled_ || !free_.empty() || unallocated_ > 0;
-    };
+    const auto ready = [&] { return error_ || cancelled_ || out_ < buffers_; };
     if (!ready()) {
         const auto start = std::chrono::steady_clock::now();
         changed_.wait(lock, ready);
@@ -110,12 +125,12 @@ Band BandWriter::take()
     rethrow_locked();
     if (cancelled_)
         throw Cancelled();
+    ++out_;
     if (!free_.empty()) {
         Band band = std::move(free_.front());
         free_.pop_front();
         return band;
     }
-    --unallocated_;
     return Band();
 }
 
