@@ -302,10 +302,8 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
     if (rows)
         report.band_rows = std::max(1, std::min(report.band_rows, rows->max_band_rows(cols, outputs)));
     std::optional<CpuRowTracer> cpu;
-    if (!rows) {
+    if (!rows)
         cpu.emplace(*tracer_, camera, threads, settings_.first_pass);
-        report.first_pass = cpu->first_pass();
-    }
     RowTracer &source = rows ? *rows : *cpu;
     const RowShader shade{*tracer_, PixelShader(*model_, shading_), camera};
     std::optional<KernelBands> kernel;
@@ -323,6 +321,8 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
         render_bands(source, kernel ? &*kernel : nullptr, shade, outputs, sink, threads,
                      *writer_, camera.rows(), cols, report);
     }
+    if (cpu)
+        report.first_pass = cpu->first_pass(); // found as the rows were traced
     report.ms = ms_since(start);
     return report;
 }

@@ -78,20 +78,24 @@ CpuRowTracer::CpuRowTracer(const Tracer &tracer, const Camera &camera,
       tracer_(tracer),
       camera_(camera), threads_(threads)
 {
-    // no pyramid (skipping off, the model not drawn): every bound is 0
-    const auto start = std::chrono::steady_clock::now();
+    // no pyramid (skipping off, the model not drawn): every bound is 0;
+    // else each tile row's bounds are found by the first thread that
+    // traces one of its rows
     if (first_pass)
-        bounds_.emplace(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET, threads);
+        bounds_.emplace(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET,
+                        FirstHitBounds::Lazy{});
     else
         bounds_.emplace(camera);
-    report_ = {bounds_->tiles(), bounds_->empty_tiles(),
-               std::chrono::duration<double, std::milli>(
-                   std::chrono::steady_clock::now() - start)
-                   .count()};
+}
+
+FirstPassReport CpuRowTracer::first_pass() const
+{
+    return {bounds_->tiles(), bounds_->empty_tiles(), bounds_->lazy_ms()};
 }
 
 void CpuRowTracer::trace_row(int row, Hit *out) const
 {
+    bounds_->ensure_row(row);
     const int cols = camera_.cols();
     const auto trace = [&](int col) {
         if (bounds_->meets_nothing(row, col)) {
@@ -125,9 +129,9 @@ HitImage trace_image(const Tracer &tracer, const Camera &camera, unsigned thread
 {
     HitImage hits(size_t(camera.rows()) * camera.cols());
     CpuRowTracer rows(tracer, camera, threads, first_pass);
+    rows.trace_rows(0, camera.rows(), hits.data());
     if (report)
         *report = rows.first_pass();
-    rows.trace_rows(0, camera.rows(), hits.data());
     return hits;
 }
 

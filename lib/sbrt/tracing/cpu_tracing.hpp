@@ -27,7 +27,7 @@ constexpr int FIRST_PASS_TILE = 8, FIRST_PASS_BUDGET = 32;
 /// nothing (not walked at all), its time.
 struct FirstPassReport {
     size_t tiles = 0, empty_tiles = 0;
-    double ms = 0;
+    double ms = 0; ///< finding the bounds, all threads' time together
 };
 
 /// A rectangle of an image's pixels: first row, last row, first column,
@@ -91,7 +91,9 @@ public:
     void trace_rows(int first, int count, Hit *out) override;
     /// The hits of one row (thread-safe).
     void trace_row(int row, Hit *out) const;
-    const FirstPassReport &first_pass() const { return report_; }
+    /// The first pass's tiles so far (its bounds are found as rows are
+    /// traced; ms: the threads' time finding them, all together).
+    FirstPassReport first_pass() const;
 
 private:
     /// Where the tracer draws only overlays: pixel rectangles (first row,
@@ -101,7 +103,6 @@ private:
     const Tracer &tracer_;
     const Camera &camera_;
     unsigned threads_;
-    FirstPassReport report_;
     std::optional<FirstHitBounds> bounds_;
 };
 
