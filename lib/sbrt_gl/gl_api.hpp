@@ -44,6 +44,8 @@ namespace sbrt_gl {
     X(PFNGLBUFFERDATAPROC, BufferData)                                        \
     X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                \
     X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                            \
+    X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                  \
+    X(PFNGLCOPYBUFFERSUBDATAPROC, CopyBufferSubData)                          \
     X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                              \
     X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                                  \
     X(PFNGLGENTEXTURESPROC, GenTextures)                                      \

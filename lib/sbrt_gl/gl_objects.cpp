@@ -47,6 +47,24 @@ void GlBuffer::upload(const void *data, size_t bytes)
     gl_->BufferData(target_, GLsizeiptr(bytes), data, GL_DYNAMIC_DRAW);
 }
 
+void GlBuffer::write(size_t offset, const void *data, size_t bytes)
+{
+    if (offset + bytes > bytes_)
+        sbrt::fail("GlBuffer::write: ", bytes, " bytes at ", offset, " into a buffer of ", bytes_);
+    gl_->BindBuffer(target_, name_);
+    gl_->BufferSubData(target_, GLintptr(offset), GLsizeiptr(bytes), data);
+}
+
+void GlBuffer::download(size_t offset, void *data, size_t bytes) const
+{
+    if (offset + bytes > bytes_)
+        sbrt::fail("GlBuffer::download: ", bytes, " bytes at ", offset, " from a buffer of ",
+                   bytes_);
+    gl_->BindBuffer(target_, name_);
+    gl_->GetBufferSubData(target_, GLintptr(offset), GLsizeiptr(bytes), data);
+    check_gl(*gl_, "reading a buffer back");
+}
+
 void GlBuffer::download(void *data, size_t bytes) const
 {
     if (bytes > bytes_)

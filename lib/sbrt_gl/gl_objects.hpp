@@ -34,8 +34,13 @@ public:
 
     void bind(GLuint index) const;
     void upload(const void *data, size_t bytes);
+    /// Writes `bytes` bytes at byte `offset` (glBufferSubData).
+    void write(size_t offset, const void *data, size_t bytes);
     /// Reads the first `bytes` bytes back.
     void download(void *data, size_t bytes) const;
+    /// Reads `bytes` bytes from byte `offset` back.
+    void download(size_t offset, void *data, size_t bytes) const;
+    GLuint name() const { return name_; }
     size_t bytes() const { return bytes_; }
 
 private:
@@ -65,6 +70,7 @@ public:
 
     void bind(GLuint index) const; ///< as a storage buffer
     uint8_t *host() const { return host_; }
+    GLuint name() const { return name_; }
     size_t bytes() const { return bytes_; }
 
 private:

@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "mapped_bands.hpp"
 
+#include <cstdlib>
 #include <cstring>
 
 #include "gpu_internal.hpp"
@@ -12,7 +13,11 @@
 
 namespace sbrt_gl {
 
-MappedBands::MappedBands(const GlApi &gl, size_t max_bytes) : gl_(gl), max_bytes_(max_bytes) {}
+MappedBands::MappedBands(const GlApi &gl, size_t max_bytes) : gl_(gl), max_bytes_(max_bytes)
+{
+    const char *bands = std::getenv("SBRT_GPU_BANDS");
+    staged_ = bands && std::strcmp(bands, "staged") == 0;
+}
 
 void MappedBands::begin_frame()
 {
@@ -46,8 +51,12 @@ std::optional<sbrt::GpuBandLayout> MappedBands::layout(int rows, int cols,
     if (slots_.empty() || slots_.front().bytes() < wanted.bytes()) {
         drop_queued();
         slots_.clear();
-        for (int k = 0; k < SLOTS; ++k)
+        device_slots_.clear();
+        for (int k = 0; k < SLOTS; ++k) {
             slots_.emplace_back(gl_, wanted.bytes());
+            if (staged_)
+                device_slots_.emplace_back(gl_, GL_SHADER_STORAGE_BUFFER, wanted.bytes());
+        }
     }
     layout_ = wanted;
     return layout_;
@@ -61,9 +70,24 @@ void MappedBands::queue(int first, int count, const std::function<void(int, int)
     // no ray over the budget yet: the host writes the count, which the
     // GPU sees in the commands queued after (a coherent mapping)
     const uint32_t zero = 0;
-    std::memcpy(buffer.host() + layout_->over_budget_at * 4, &zero, 4);
-    buffer.bind(2);
-    dispatch(first, count);
+    const size_t count_at = layout_->over_budget_at * 4;
+    if (staged_) {
+        GlBuffer &device = device_slots_[size_t(slot)];
+        device.write(count_at, &zero, 4);
+        device.bind(2);
+        dispatch(first, count);
+        // the outputs and the count into the mapped buffer, on the GPU
+        gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        gl_.BindBuffer(GL_COPY_READ_BUFFER, device.name());
+        gl_.BindBuffer(GL_COPY_WRITE_BUFFER, buffer.name());
+        gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
+                              GLsizeiptr(count_at + 4));
+    }
+    else {
+        std::memcpy(buffer.host() + count_at, &zero, 4);
+        buffer.bind(2);
+        dispatch(first, count);
+    }
     gl_.MemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
     check_gl(gl_, "the shading dispatch");
     queued_.push_back({first, count, slot, GlFence(gl_)});
@@ -87,6 +111,15 @@ uint8_t *MappedBands::band(int first, int count, int image_rows,
     last_done_ = Clock::now();
     gpu_ms_ += ms_since(start);
     uint8_t *host = slots_[size_t(band.slot)].host();
+    if (staged_) {
+        // the rays over the budget (rare: a software renderer) read back
+        uint32_t over = 0;
+        std::memcpy(&over, host + layout_->over_budget_at * 4, 4);
+        if (over > 0)
+            device_slots_[size_t(band.slot)].download((layout_->over_budget_at + 1) * 4,
+                                                     host + (layout_->over_budget_at + 1) * 4,
+                                                     size_t(over) * 4);
+    }
     queued_.pop_front();
     return host;
 }

@@ -20,7 +20,10 @@
 
 namespace sbrt_gl {
 
-/// \brief The shaded bands of one frame at a time. Band k of a frame lies
+/// \brief The shaded bands of one frame at a time. The shading pass writes
+/// straight into the mapped buffers; with SBRT_GPU_BANDS=staged (a
+/// measurement) it writes into GPU memory and a copy on the GPU brings the
+/// band into the mapped buffer before its fence. Band k of a frame lies
 /// in slot k % SLOTS: the renderer's sink holds at most SINK_BANDS bands
 /// (sbrt::RowTracer::SINK_BANDS), one more is being handed over, and one
 /// more is dispatched ahead, so no slot is written while the host reads
@@ -68,6 +71,8 @@ private:
     size_t max_bytes_;
     std::optional<sbrt::GpuBandLayout> layout_; ///< the frame's
     std::vector<MappedBuffer> slots_;
+    bool staged_ = false;
+    std::vector<GlBuffer> device_slots_; ///< staged: where the GPU writes
     std::deque<Queued> queued_;
     int next_slot_ = 0;
     std::chrono::steady_clock::time_point last_done_{};
