@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 ############################################################################
 # MODULE:    testsuite/benchmark/device_bundle.sh (r3.sbrt addon)
-# PURPOSE:   Readies the GPU figures of issues 15 and 19 for the device
+# PURPOSE:   Readies the GPU figures of issues 15, 19 and 32 for the device
 #            machine (an NVIDIA GPU, 16 cores, no GRASS, no network): puts
-#            into .device/ trace_bench (GRASS-free), the shared libraries
+#            into .device/ trace_bench and the unit tests (GRASS-free;
+#            BASE_BENCH=path adds another build's trace_bench as
+#            trace_bench_base, measured in the same run), the shared libraries
 #            it needs beyond the C/C++ runtime, the SBRTs of the sizes
 #            given (gzipped) and device_run.sh, and Debian's glvnd
 #            packages into .gl/; both folders are ignored by git
 #            (.git/info/exclude). Prints the command for the device tool
 #            (carry .device and .gl).
-# USAGE:     make && testsuite/benchmark/device_bundle.sh [SIZES] (A B C)
+# USAGE:     make && [BASE_BENCH=path] testsuite/benchmark/device_bundle.sh [SIZES] (A B C)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
@@ -25,7 +27,12 @@ for folder in .device .gl; do
 done
 rm -rf .device && mkdir -p .device/lib .device/sbrt .gl
 make -s -C testsuite/benchmark/trace_bench >/dev/null
-cp testsuite/benchmark/trace_bench/build/trace_bench testsuite/benchmark/device_run.sh .device/
+make -s -C testsuite/unit build/sbrt_unit_tests >/dev/null
+cp testsuite/benchmark/trace_bench/build/trace_bench testsuite/unit/build/sbrt_unit_tests \
+    testsuite/benchmark/device_run.sh .device/
+# another build's trace_bench for figures of both in one run (BASE_BENCH=path)
+[ -n "${BASE_BENCH:-}" ] && cp "$BASE_BENCH" .device/trace_bench_base
+strip --strip-debug .device/trace_bench* .device/sbrt_unit_tests
 # what the binary links beyond the C/C++ runtime and GL (the debs bring GL)
 ldd .device/trace_bench | awk '/=> \// { print $3 }' |
     grep -vE '/(libc|libm|libstdc\+\+|libgcc_s|ld-linux[^/]*|libEGL|libGL[^/]*|libOpenGL|libGLdispatch|libdl|libpthread)\.so' |

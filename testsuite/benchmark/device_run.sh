@@ -2,16 +2,23 @@
 ############################################################################
 # MODULE:    testsuite/benchmark/device_run.sh (r3.sbrt addon)
 # PURPOSE:   On the device machine (see device_bundle.sh): the GPU figures
-#            of issues 15 and 19 and the CPU's scaling, printed:
+#            of issues 15, 19 and 32 and the CPU's scaling, printed:
 #            - per model and view (the peers' oblique, the worst view,
-#              grazing), 1056 x 884: the GPU's whole frame (traced, shaded,
-#              RGB back in host memory) against its dispatch and against
-#              the same machine's CPU frame on all cores; kernel normals
-#              against face normals on the GPU;
-#            - 800 x 600 frames per second (the viewer's renderer alone);
-#            - model B, the peers' view with 100 boreholes drawn with the
-#              model (GPU against CPU);
-#            - model B, the peers' view on the CPU on 1, 2, 4, 8, 16 cores.
+#              grazing), 1056 x 884 and 800 x 600: the GPU's whole frame
+#              (traced, shaded, RGB in host memory) against its dispatch and
+#              the same machine's CPU frame on all cores; kernel normals;
+#              where its time goes (gpu_parts: GL time of each pass, the
+#              host's time after the GPU's last band against a memcpy of the
+#              RGB, the bytes the host touched per pixel);
+#            - model B at 4224 x 3536, the bands also written into GPU
+#              memory and copied (SBRT_GPU_BANDS=staged);
+#            - model B with 100 boreholes drawn with the model;
+#            - the CPU on 1, 2, 4, 8, 16 cores (taskset), B at 1056 x 884
+#              and 2112 x 1768, C at 1056 x 884, with each worker's busy
+#              share (frame_parts);
+#            - with trace_bench_base in the bundle (another build, e.g. the
+#              last main), the same figures of that build, in the same run;
+#            - with sbrt_unit_tests in the bundle, the GL unit tests on EGL.
 #            Runs here too (llvmpipe), which checks the script.
 # USAGE:     bash .device/device_run.sh [SIZES] (A B C)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
@@ -20,37 +27,75 @@ set -euo pipefail
 bundle=$(cd "$(dirname "$0")" && pwd)
 export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 export SBRT_PROGRAM_CACHE=off # every run compiles: figures of a first run
-bench=$bundle/trace_bench
 data=$(mktemp -d /tmp/sbrt_device.XXXXXX)
+trap 'rm -rf "$data"' EXIT
 sizes=${*:-A B C}
 views=(
     "best position=4375,5000,2500 target=1000,1250,320 fov=25 zexag=2"
     "worst position=2600,1250,640 target=1000,1250,560 fov=40 zexag=2"
     "grazing position=-1500,-1000,700 target=1000,1250,550 fov=40 zexag=2"
 )
+best=${views[0]#best }
 cores=$(nproc)
+builds=(new)
+[ -x "$bundle/trace_bench_base" ] && builds+=(base)
+bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
+
+# 1. the GL unit tests on this GPU (EGL; the OSMesa ones need libOSMesa)
+if [ -x "$bundle/sbrt_unit_tests" ]; then
+    "$bundle/sbrt_unit_tests" \
+        --gtest_filter='*egl*:*GpuBands*/0:*OverlayTiles*:*GpuBandLayout*:Renderer*:BandFlow*:WorkerPool*' 2>&1 |
+        grep -E "^\[  (PASSED|FAILED) |Failure|^\[ stress" | sed "s/^/device unit /" || true
+fi
+
 for size in $sizes; do
     tar -C "$data" -xzf "$bundle/sbrt/geo_$size.tar.gz"
-    for view in "${views[@]}"; do
-        set -- $view
-        name=$1
-        shift
-        "$bench" gpu_frame "$data/geo_$size" "$@" label="$size/$name" repeat=5 \
-            threads="$cores" | sed "s/^/device size=$size view=$name /"
-        "$bench" gpu_frame "$data/geo_$size" "$@" label="$size/$name" repeat=5 \
-            threads="$cores" cols=800 rows=600 | sed "s/^/device size=$size view=$name /"
+done
+
+# 2. GPU frames per model and view, each build
+for build in "${builds[@]}"; do
+    bench=$(bench_of "$build")
+    for size in $sizes; do
+        for view in "${views[@]}"; do
+            set -- $view
+            name=$1
+            shift
+            for px in "cols=1056 rows=884" "cols=800 rows=600"; do
+                "$bench" gpu_frame "$data/geo_$size" "$@" $px label="$size/$name" repeat=5 \
+                    threads="$cores" | sed "s/^/device build=$build size=$size view=$name /"
+            done
+        done
     done
 done
-# the CPU's scaling, model B where it was bundled; 100 boreholes drawn
-# with the model on the GPU
-if [ -f "$bundle/sbrt/geo_B.tar.gz" ]; then
-    [ -d "$data/geo_B" ] || tar -C "$data" -xzf "$bundle/sbrt/geo_B.tar.gz"
-    "$bench" gpu_frame "$data/geo_B" ${views[0]#best } label=B/boreholes repeat=5 \
-        threads="$cores" boreholes=100 radius=20 | sed "s/^/device size=B view=best /"
-    for n in 1 2 4 8 16; do
-        [ "$n" -le "$cores" ] || break
-        taskset -c "0-$((n - 1))" "$bench" frame "$data/geo_B" ${views[0]#best } \
-            threads="$n" repeat=5 reference=0 | sed "s/^/device scaling cores=$n /"
+
+# 3. model B: a large frame, the staged bands, 100 boreholes
+if [ -d "$data/geo_B" ]; then
+    for build in "${builds[@]}"; do
+        bench=$(bench_of "$build")
+        "$bench" gpu_frame "$data/geo_B" $best cols=4224 rows=3536 label=B/large repeat=5 \
+            threads="$cores" | sed "s/^/device build=$build size=B view=best /"
+        "$bench" gpu_frame "$data/geo_B" $best label=B/boreholes repeat=5 \
+            threads="$cores" boreholes=100 radius=20 | sed "s/^/device build=$build size=B view=best /"
+    done
+    for px in "cols=1056 rows=884" "cols=4224 rows=3536"; do
+        SBRT_GPU_BANDS=staged "$bundle/trace_bench" gpu_frame "$data/geo_B" $best $px \
+            label=B/staged repeat=5 threads="$cores" | sed "s/^/device build=new-staged size=B view=best /"
     done
 fi
-rm -rf "$data"
+
+# 4. the CPU's scaling, each build
+for build in "${builds[@]}"; do
+    bench=$(bench_of "$build")
+    for case in "B cols=1056 rows=884" "B cols=2112 rows=1768" "C cols=1056 rows=884"; do
+        set -- $case
+        size=$1
+        shift
+        [ -d "$data/geo_$size" ] || continue
+        for n in 1 2 4 8 16; do
+            [ "$n" -le "$cores" ] || break
+            taskset -c "0-$((n - 1))" "$bench" frame "$data/geo_$size" $best "$@" \
+                threads="$n" repeat=5 reference=0 label="$size/$1" |
+                sed "s/^/device build=$build scaling cores=$n /"
+        done
+    done
+done
