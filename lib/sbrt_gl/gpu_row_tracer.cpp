@@ -86,13 +86,10 @@ bool GpuRowTracer::shade_rows(int first, int count, const sbrt::Outputs &outputs
         gpu_.shade_kernel_rows(camera_, first, count, *shading_, outputs, band, threads_);
         return true;
     }
-    const sbrt::Tracer &tracer = gpu_.tracer();
-    if (sbrt::gpu_overlay_mode(tracer) == sbrt::GpuOverlayMode::with_model) {
-        // the boreholes' pass draws them over the tiles of their pixels
-        gpu_.shade_rows(camera_, first, count, *shading_, outputs, band, threads_, cpu_rects_);
-        return true;
-    }
     gpu_.shade_rows(camera_, first, count, *shading_, outputs, band, threads_);
+    const sbrt::Tracer &tracer = gpu_.tracer();
+    if (sbrt::gpu_overlay_mode(tracer) == sbrt::GpuOverlayMode::with_model)
+        return true; // the boreholes' pass drew them
     const sbrt::PixelShader shader(tracer.model(), *shading_);
     for_cpu_pixels(first, count, [&](int row, int col) {
         sbrt::Hit hit;

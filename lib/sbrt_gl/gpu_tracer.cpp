@@ -42,10 +42,10 @@ int max_texture_side(const GlApi &gl)
     return std::max(side, 1);
 }
 
-/// The empty-space pyramid (binding 4).
-GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::Tracer &tracer, size_t limit)
+/// An empty-space pyramid (binding 4).
+GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::MinMaxPyramid &pyramid, size_t limit)
 {
-    const std::vector<uint32_t> words = sbrt::make_gpu_pyramid(tracer.pyramid());
+    const std::vector<uint32_t> words = sbrt::make_gpu_pyramid(pyramid);
     return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER,
                     checked_bytes(words.size() * sizeof(uint32_t), limit,
                                   "empty-space pyramid"),
@@ -69,9 +69,11 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
       memory_(sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl_))),
       materials_(material_buffer(gl_, tracer)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
-      pyramid_(pyramid_buffer(gl_, tracer, max_block_bytes_)),
+      pyramid_(pyramid_buffer(gl_, tracer.pyramid(), max_block_bytes_)),
       bands_(gl_, max_block_bytes_), timer_(gl_)
 {
+    if (&tracer.model_pyramid() != &tracer.pyramid())
+        model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
     const sbrt::Model &model = tracer.model();
     if (layout == sbrt::GpuLayout::ssbo) {
         // the model's own compact arrays go up as they are: counts and
@@ -369,8 +371,7 @@ sbrt::GpuBandLayout GpuTracer::band_layout(const sbrt::Camera &camera, int count
 
 void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_count,
                            const sbrt::Shading &shading, const sbrt::Outputs &outputs,
-                           sbrt::Band &band, unsigned cpu_threads,
-                           const std::optional<std::vector<sbrt::PixelRect>> &borehole_pixels)
+                           sbrt::Band &band, unsigned cpu_threads)
 {
     sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     const sbrt::GpuBandLayout layout = band_layout(camera, row_count, outputs, shade);
@@ -379,6 +380,8 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     // and the boreholes again over the tiles where a ray may meet one (no
     // other ray pays for them)
     const bool boreholes = sbrt::gpu_overlay_mode(tracer_) == sbrt::GpuOverlayMode::with_model;
+    const std::vector<std::array<glm::dvec3, 2>> boxes =
+        boreholes ? tracer_.overlay_boxes() : std::vector<std::array<glm::dvec3, 2>>();
     GlComputeProgram *borehole_program =
         boreholes ? &shading_program(shading, Pass::shade_boreholes) : nullptr;
     sbrt::GpuView view = traced_view(camera, loop_budget_);
@@ -391,7 +394,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    view.options[3] = uint32_t(count);
                    view_.upload(&view, sizeof view); // stays bound to index 0
                    const std::vector<uint32_t> tiles =
-                       boreholes ? sbrt::overlay_tiles(borehole_pixels, first, count, cols)
+                       boreholes ? sbrt::overlay_tiles(boxes, camera, first, count)
                                  : std::vector<uint32_t>();
                    const size_t all_tiles =
                        size_t((cols + 7) / 8) * size_t((count + 7) / 8);
@@ -400,11 +403,15 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                        stats_.tiles += all_tiles;
                    }
                    if (tiles.size() < all_tiles) {
+                       // the model alone: skipping as if there were no boreholes
+                       if (boreholes && model_pyramid_)
+                           model_pyramid_->bind(4);
                        program.use();
                        timer_.time(int(Pass::shade), [&] {
                            gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8),
                                                1);
                        });
+                       pyramid_.bind(4);
                    }
                    if (tiles.empty())
                        return;

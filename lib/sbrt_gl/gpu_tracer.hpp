@@ -84,13 +84,11 @@ public:
     /// host. The next band is dispatched before this one is waited for.
     /// Adds to stats().
     /// Boreholes drawn with the model are shaded in a second pass over the
-    /// 8 x 8 tiles holding `borehole_pixels` (cpu_pixels_of; nullopt:
-    /// every pixel), the model alone in the first.
+    /// 8 x 8 tiles their pixels lie in (overlay_tiles), the model alone in
+    /// the first, skipping with the model's own pyramid.
     void shade_rows(const sbrt::Camera &camera, int first, int count,
                     const sbrt::Shading &shading, const sbrt::Outputs &outputs,
-                    sbrt::Band &band, unsigned cpu_threads = 0,
-                    const std::optional<std::vector<sbrt::PixelRect>> &borehole_pixels =
-                        std::nullopt);
+                    sbrt::Band &band, unsigned cpu_threads = 0);
     /// The most rows `cols` wide of `outputs` that one shaded band holds.
     int max_band_rows(int cols, const sbrt::Outputs &outputs) const;
     /// A new frame: bands dispatched ahead for the last one are dropped.
@@ -220,6 +218,8 @@ private:
     std::optional<GlUintTexture> index_texture_, interval_texture_;
     GlBuffer materials_, view_;
     GlBuffer pyramid_; ///< empty-space skipping (levels() 0: off)
+    /// the model's alone, where boreholes drawn with it fill theirs
+    std::optional<GlBuffer> model_pyramid_;
     std::optional<GlBuffer> band_; ///< the hit records of a band of rows
     std::vector<sbrt::GpuPixelHit> records_;
     /// shading on the GPU: its program, the materials' looks, the Shade

@@ -9,12 +9,15 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "gpu/gpu_layout.hpp"
+#include "gpu/gpu_overlays.hpp"
+#include "tracing/cpu_tracing.hpp"
 #include "gpu_compare.hpp"
 #include "gpu_renderer.hpp"
 #include "renderer.hpp"
@@ -195,19 +198,52 @@ TEST_P(GpuBands, AnRgbFrameHandsTheHostThreeBytesAPixel)
 
 namespace {
 
-TEST(OverlayTiles, TheTilesOfTheRectanglesWithinTheBand)
+TEST(OverlayTiles, EveryPixelWhoseRayMeetsABoxLiesInATileOfIt)
 {
-    // a band of rows [16, 40) of an image 50 wide: 7 x 3 tiles
-    const std::vector<PixelRect> rects = {{{10, 20, 3, 9}}, {{38, 60, 49, 49}}, {{0, 5, 0, 49}}};
-    const std::vector<uint32_t> tiles = overlay_tiles(rects, 16, 24, 50);
-    // rows 16-20 (tile row 0) columns 3-9 (tile columns 0, 1); rows 38-39
-    // (tile row 2) column 49 (tile column 6); the third ends above the band
-    EXPECT_EQ(tiles, (std::vector<uint32_t>{0u, 1u, 6u | 2u << 16}));
-    // nullopt: every tile, row by row
-    const std::vector<uint32_t> all = overlay_tiles(std::nullopt, 0, 9, 17);
-    ASSERT_EQ(all.size(), 6u);
-    EXPECT_EQ(all.back(), 2u | 1u << 16);
-    EXPECT_TRUE(overlay_tiles(std::vector<PixelRect>(), 0, 9, 17).empty());
+    // a thin tall box seen obliquely: its tiles are far fewer than those
+    // of its bounding rectangle, and hold every pixel whose ray meets it
+    const std::array<glm::dvec3, 2> box = {glm::dvec3(10, 10, 0), glm::dvec3(11, 11, 80)};
+    const Camera camera = Camera::perspective({70, -40, 90}, {30, 20, 0}, 60, 240, 320);
+    const std::vector<uint32_t> tiles = overlay_tiles({box}, camera, 0, camera.rows());
+    const int tile_cols = (camera.cols() + 7) / 8, tile_rows = (camera.rows() + 7) / 8;
+    std::vector<uint8_t> listed(size_t(tile_cols * tile_rows), 0);
+    for (uint32_t t : tiles)
+        listed[size_t((t >> 16) * tile_cols + (t & 0xffff))] = 1;
+    size_t hit_pixels = 0, missed = 0;
+    for (int r = 0; r < camera.rows(); ++r)
+        for (int c = 0; c < camera.cols(); ++c) {
+            const Ray ray = camera.ray(r, c);
+            // slab test of the ray against the box
+            double t0 = 0, t1 = INFINITY;
+            for (int a = 0; a < 3; ++a) {
+                const double lo = (box[0][a] - ray.origin[a]) / ray.direction[a];
+                const double hi = (box[1][a] - ray.origin[a]) / ray.direction[a];
+                t0 = std::max(t0, std::min(lo, hi));
+                t1 = std::min(t1, std::max(lo, hi));
+            }
+            if (t0 > t1)
+                continue;
+            ++hit_pixels;
+            missed += !listed[size_t((r / 8) * tile_cols + c / 8)];
+        }
+    EXPECT_GT(hit_pixels, 50u);
+    EXPECT_EQ(missed, 0u);
+    // the tiles of the box's bounding rectangle (pixel_rects_of)
+    const auto rects = pixel_rects_of({box}, camera);
+    ASSERT_TRUE(rects && rects->size() == 1);
+    const PixelRect &rect = rects->front();
+    const size_t rect_tiles = size_t((rect[1] / 8 - rect[0] / 8 + 1) * (rect[3] / 8 - rect[2] / 8 + 1));
+    EXPECT_LT(tiles.size(), rect_tiles / 2) << "of " << rect_tiles;
+    std::printf("[ tiles ] %zu of the rectangle's %zu\n", tiles.size(), rect_tiles);
+    // a band's own tiles: rows from its first
+    const std::vector<uint32_t> band = overlay_tiles({box}, camera, 40, 160);
+    EXPECT_FALSE(band.empty());
+    for (uint32_t t : band)
+        EXPECT_TRUE(listed[size_t(((t >> 16) + 5) * tile_cols + (t & 0xffff))]);
+    // a box around the camera: every tile
+    const std::array<glm::dvec3, 2> around = {glm::dvec3(60, -50, 80), glm::dvec3(80, -30, 100)};
+    EXPECT_EQ(overlay_tiles({around}, camera, 0, 16).size(), size_t(tile_cols * 2));
+    EXPECT_TRUE(overlay_tiles({}, camera, 0, 16).empty());
 }
 
 TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)

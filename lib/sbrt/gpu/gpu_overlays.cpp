@@ -6,8 +6,11 @@
 #include "gpu/gpu_overlays.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <tuple>
+
+#include <glm/vec2.hpp>
 
 #include "util/error.hpp"
 
@@ -40,27 +43,111 @@ GpuOverlayMode gpu_overlay_mode(const Tracer &tracer)
     return scene.fence.empty() ? GpuOverlayMode::with_model : GpuOverlayMode::on_cpu;
 }
 
-std::vector<uint32_t> overlay_tiles(const std::optional<std::vector<PixelRect>> &rects,
-                                    int first_row, int rows, int cols)
+namespace {
+
+using Point = glm::dvec2;
+
+double cross(const Point &o, const Point &a, const Point &b)
 {
-    const int side = 8;
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+/// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
+std::vector<Point> convex_hull(std::vector<Point> points)
+{
+    std::sort(points.begin(), points.end(),
+              [](const Point &a, const Point &b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    if (points.size() < 3)
+        return points;
+    std::vector<Point> hull(2 * points.size());
+    size_t k = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+        while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0)
+            --k;
+        hull[k++] = points[i];
+    }
+    for (size_t i = points.size() - 1, lower = k + 1; i > 0; --i) {
+        while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0)
+            --k;
+        hull[k++] = points[i - 1];
+    }
+    hull.resize(k - 1);
+    return hull;
+}
+
+/// Whether the rectangle [x0, x1] x [y0, y1] and the convex polygon `hull`
+/// (counter-clockwise, within the rectangle's bounds on both axes as far
+/// as the caller checked) overlap: no edge of the hull separates them.
+bool overlaps(const std::vector<Point> &hull, double x0, double x1, double y0, double y1)
+{
+    for (size_t i = 0; i < hull.size() && hull.size() >= 3; ++i) {
+        const Point &a = hull[i], &b = hull[(i + 1) % hull.size()];
+        // the rectangle wholly to the right of edge a -> b: outside
+        bool outside = true;
+        for (const Point c : {Point(x0, y0), Point(x1, y0), Point(x0, y1), Point(x1, y1)})
+            outside = outside && cross(a, b, c) < 0;
+        if (outside)
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+std::vector<uint32_t> overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
+                                    const Camera &camera, int first_row, int rows)
+{
+    const int side = 8, cols = camera.cols();
     const int tile_cols = (cols + side - 1) / side, tile_rows = (rows + side - 1) / side;
     if (tile_cols > 0xffff || tile_rows > 0xffff)
         fail("overlay_tiles: ", tile_cols, " x ", tile_rows, " tiles, more than 65535 a side");
-    std::vector<uint8_t> marked(size_t(tile_cols) * size_t(tile_rows), rects ? 0 : 1);
-    if (rects)
-        for (const PixelRect &r : *rects) {
-            // rows [r[0], r[1]] and columns [r[2], r[3]] within the band
-            const int r0 = std::max(r[0], first_row) - first_row;
-            const int r1 = std::min(r[1], first_row + rows - 1) - first_row;
-            const int c0 = std::max(r[2], 0), c1 = std::min(r[3], cols - 1);
-            if (r0 > r1 || c0 > c1)
+    std::vector<uint8_t> marked(size_t(tile_cols) * size_t(tile_rows), 0);
+    for (const auto &box : boxes) {
+        // the corners in pixel coordinates of the band (pixel centres whole)
+        std::vector<Point> corners;
+        int behind = 0;
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 p(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z);
+            double x, y;
+            if (!camera.project(p, x, y)) {
+                ++behind;
                 continue;
-            for (int ty = r0 / side; ty <= r1 / side; ++ty)
-                std::fill_n(marked.begin() + ptrdiff_t(size_t(ty) * size_t(tile_cols) +
-                                                       size_t(c0 / side)),
-                            c1 / side - c0 / side + 1, uint8_t(1));
+            }
+            corners.emplace_back((x + 1) / 2 * cols - 0.5,
+                                 (1 - y) / 2 * camera.rows() - 0.5 - first_row);
         }
+        if (behind == 8)
+            continue; // wholly behind a perspective camera: no ray goes there
+        if (behind > 0) { // the camera is among them: any pixel may
+            std::fill(marked.begin(), marked.end(), uint8_t(1));
+            break;
+        }
+        const std::vector<Point> hull = convex_hull(corners);
+        double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+        for (const Point &p : hull) {
+            x0 = std::min(x0, p.x);
+            x1 = std::max(x1, p.x);
+            y0 = std::min(y0, p.y);
+            y1 = std::max(y1, p.y);
+        }
+        // the tiles of its bounds (one pixel of margin), clamped before the
+        // conversion to int (a box far outside projects far outside any int)
+        const auto tile = [&](double v, int tiles) {
+            return int(std::clamp(std::floor(v / side), -1.0, double(tiles)));
+        };
+        const int tx0 = std::max(0, tile(x0 - 1, tile_cols)),
+                  tx1 = std::min(tile_cols - 1, tile(x1 + 1, tile_cols));
+        const int ty0 = std::max(0, tile(y0 - 1, tile_rows)),
+                  ty1 = std::min(tile_rows - 1, tile(y1 + 1, tile_rows));
+        for (int ty = ty0; ty <= ty1; ++ty)
+            for (int tx = tx0; tx <= tx1; ++tx) {
+                uint8_t &m = marked[size_t(ty) * size_t(tile_cols) + size_t(tx)];
+                // the tile's pixel centres, one pixel wider
+                if (!m && overlaps(hull, tx * side - 1.0, tx * side + side, ty * side - 1.0,
+                                   ty * side + side))
+                    m = 1;
+            }
+    }
     std::vector<uint32_t> tiles;
     for (int ty = 0; ty < tile_rows; ++ty)
         for (int tx = 0; tx < tile_cols; ++tx)

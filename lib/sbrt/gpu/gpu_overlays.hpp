@@ -12,10 +12,12 @@
 #include <cstdint>
 #include <vector>
 
-#include <optional>
+#include <array>
+
+#include <glm/vec3.hpp>
 
 #include "model/interval_array.hpp"
-#include "tracing/cpu_tracing.hpp"
+#include "scene/camera.hpp"
 #include "tracing/tracer.hpp"
 
 namespace sbrt {
@@ -59,13 +61,13 @@ inline bool shaded_on_gpu(GpuOverlayMode mode)
 }
 
 /// The 8 x 8 pixel tiles (work groups) of rows [first_row, first_row +
-/// rows) of an image `cols` wide that hold a pixel of `rects` (whole
-/// image rows and columns, inclusive), band-local, as x | y << 16, row by
-/// row: the work groups of the boreholes' pass (SBRT_TILE_LIST); every
-/// tile of the band where `rects` is nullopt (a borehole reaches behind
-/// the camera).
-std::vector<uint32_t> overlay_tiles(const std::optional<std::vector<PixelRect>> &rects,
-                                    int first_row, int rows, int cols);
+/// rows) of `camera`'s image whose pixels' rays may meet one of `boxes`
+/// (Tracer::overlay_boxes), band-local, as x | y << 16, row by row: those
+/// the convex hull of a box's projected corners, one pixel wider, reaches
+/// (the work groups of the boreholes' pass, SBRT_TILE_LIST); every tile of
+/// the band where a box lies partly behind the camera.
+std::vector<uint32_t> overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
+                                    const Camera &camera, int first_row, int rows);
 
 /// The overlays of the tracer's scene on the GPU: the Overlays buffer's
 /// words (head, then the overlays), the logs (intervals, local tops) and,

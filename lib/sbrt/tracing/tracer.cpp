@@ -120,6 +120,22 @@ void Tracer::build_pyramid()
     if (!scene_.skip_empty_space || !scene_.draw_model)
         return;
     const Frame &f = model_.frame();
+    // a column that lies wholly on the removed side of a clip plane holds
+    // nothing
+    const auto clip = [&](int x, int y, ZRange &range) {
+        for (const LocalPlane &plane : planes_) {
+            bool removed = true;
+            for (int k = 0; k < 8 && removed; ++k) {
+                const glm::dvec3 l(x + (k & 1), y + ((k >> 1) & 1),
+                                   k & 4 ? range.high : range.low);
+                removed = glm::dot(plane.n, l) + plane.c > 0;
+            }
+            if (removed) {
+                range = ZRange();
+                return;
+            }
+        }
+    };
     pyramid_ = MinMaxPyramid(model_, [&](int x, int y, ZRange &range) {
         const uint64_t cell = model_.cell_index(f.rows - 1 - y, x);
         if (!overlay_items_.empty() &&
@@ -140,22 +156,14 @@ void Tracer::build_pyramid()
             range = {0, top};
             return;
         }
-        if (range.empty())
-            return;
-        // a column that lies wholly on the removed side of a clip plane
-        for (const LocalPlane &plane : planes_) {
-            bool removed = true;
-            for (int k = 0; k < 8 && removed; ++k) {
-                const glm::dvec3 l(x + (k & 1), y + ((k >> 1) & 1),
-                                   k & 4 ? range.high : range.low);
-                removed = glm::dot(plane.n, l) + plane.c > 0;
-            }
-            if (removed) {
-                range = ZRange();
-                return;
-            }
-        }
+        if (!range.empty())
+            clip(x, y, range);
     });
+    if (!overlay_items_.empty())
+        model_pyramid_ = MinMaxPyramid(model_, [&](int x, int y, ZRange &range) {
+            if (!range.empty())
+                clip(x, y, range);
+        });
 }
 
 bool Tracer::meet(uint32_t material, double t_enter, double t_exit, const Entry &entry,

@@ -110,6 +110,14 @@ public:
     /// The empty-space pyramid over what is drawn (no levels when skipping
     /// is off or the model is not drawn).
     const MinMaxPyramid &pyramid() const { return pyramid_; }
+    /// The pyramid of the model alone (clip planes applied, no overlays):
+    /// pyramid() where no overlay is drawn with the model. The GPU's
+    /// model pass skips with it where a pass of their own draws the
+    /// boreholes (their cells, full from the bottom, would stop it).
+    const MinMaxPyramid &model_pyramid() const
+    {
+        return model_pyramid_.levels() > 0 ? model_pyramid_ : pyramid_;
+    }
 
 private:
     struct Walk;
@@ -159,6 +167,7 @@ private:
     /// with overlays where the model is not drawn
     glm::dvec2 box_low_{0}, box_high_{0};
     MinMaxPyramid pyramid_;
+    MinMaxPyramid model_pyramid_; ///< with overlays drawn with the model only
 };
 
 } // namespace sbrt
