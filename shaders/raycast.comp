@@ -66,6 +66,9 @@ bool passes(vec2 range, float z_a, float z_b)
 // back to the host: over the loop budget
 void finish(uint index, vec3 point, uint code, float t)
 {
+#ifdef SBRT_HIT_T
+    hit_ts[index] = (code & 0xffffu) != 0u && (code & CODE_OVER_BUDGET) == 0u ? t : 1.0 / 0.0;
+#endif
     if ((code & CODE_OVER_BUDGET) != 0u) {
         flag_over_budget(index);
         return;
@@ -107,6 +110,52 @@ bool climb(uint level, int ix, int iy, vec3 hi, vec3 lo, vec3 d, float z_in,
     return true;
 }
 
+#ifdef SBRT_TILE_LIST
+// Whether the model's pass found the opaque hit of pixel `index` before
+// its ray (local: (hi + t d) + lo) enters any box of its tile's boreholes:
+// then nothing of them shows there (a margin for float rounding)
+bool model_hit_first(uint index, vec3 hi, vec3 lo, vec3 d)
+{
+    uint tile = gl_WorkGroupID.x, first = tiles[tiles[1] + tile], last = tiles[tiles[1] + tile + 1u];
+    float t_model = hit_ts[index];
+    if (first == last || isinf(t_model))
+        return false; // no box lists (the camera among them), or no hit
+    float t_entry = 1.0 / 0.0;
+    for (uint k = first; k < last; ++k) {
+        uint at = tiles[3] + 6u * tiles[tiles[2] + k];
+        float t0 = -1.0 / 0.0, t1 = 1.0 / 0.0;
+        for (int a = 0; a < 3; ++a) {
+            float low = uintBitsToFloat(tiles[at + uint(a)]);
+            float high = uintBitsToFloat(tiles[at + 3u + uint(a)]);
+            if (d[a] == 0.0) {
+                float o = hi[a] + lo[a];
+                if (o < low || o > high)
+                    t0 = 1.0 / 0.0;
+                continue;
+            }
+            float ta = from_origin(low, hi[a], lo[a]) / d[a];
+            float tb = from_origin(high, hi[a], lo[a]) / d[a];
+            t0 = max(t0, min(ta, tb));
+            t1 = min(t1, max(ta, tb));
+        }
+        if (t0 <= t1)
+            t_entry = min(t_entry, t0);
+    }
+    return t_model + 1e-4 * abs(t_model) + 1e-3 < t_entry;
+}
+
+// The colour the model's pass packed for pixel (col, row) of the band
+uint band_rgb(uint row, uint col)
+{
+    uint rgb = 0u, base = row * outputs.x;
+    for (uint k = 0u; k < 3u; ++k) {
+        uint b = col * 3u + k;
+        rgb |= ((words[base + b / 4u] >> (8u * (b % 4u))) & 255u) << (8u * k);
+    }
+    return rgb;
+}
+#endif
+
 // The first hit of this invocation's pixel, written by finish()
 void trace_pixel()
 {
@@ -133,6 +182,13 @@ void trace_pixel()
     vec3 hi = origin_hi.xyz, lo = origin_lo.xyz + offset;
     vec3 d = forward.xyz + x * du.xyz + y * dv.xyz;
     float t_min = spread_u.w;
+#ifdef SBRT_TILE_LIST
+    if (model_hit_first(index, hi, lo, d)) {
+        // what the model's pass wrote stays: its colour to the packing
+        group_rgb[gl_LocalInvocationIndex] = band_rgb(pixel.y, pixel.x);
+        return;
+    }
+#endif
     ray_d = d;
     t_eye = t_min;
     finish(index, vec3(0.0), 0u, 0.0);

@@ -70,6 +70,8 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
     // over the tiles they may cover: every other ray walks the model alone
     sbrt::GpuOverlayMode overlays =
         pass == Pass::shade ? sbrt::gpu_overlay_mode(tracer) : sbrt::GpuOverlayMode::none;
+    // ...where it keeps each pixel's t of its hit for the boreholes' pass
+    const bool hit_t = overlays == sbrt::GpuOverlayMode::with_model;
     if (overlays == sbrt::GpuOverlayMode::with_model)
         overlays = sbrt::GpuOverlayMode::none;
     if (pass == Pass::shade_boreholes)
@@ -86,6 +88,7 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             drape && shade ? "#define SBRT_DRAPE 1\n" : "",
             kernel ? "#define SBRT_KERNEL 1\n" : "",
             pass == Pass::shade_boreholes ? "#define SBRT_TILE_LIST 1\n" : "",
+            hit_t ? "#define SBRT_HIT_T 1\n" : "",
             overlays == sbrt::GpuOverlayMode::alone        ? "#define SBRT_OVERLAYS 1\n"
             : overlays == sbrt::GpuOverlayMode::with_model ? "#define SBRT_BOREHOLES 1\n"
                                                            : "",

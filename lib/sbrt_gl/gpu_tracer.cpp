@@ -70,7 +70,7 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
       materials_(material_buffer(gl_, tracer)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
       pyramid_(pyramid_buffer(gl_, tracer.pyramid(), max_block_bytes_)),
-      bands_(gl_, max_block_bytes_), timer_(gl_)
+      bands_(gl_, max_block_bytes_, !is_software_renderer(gl_renderer())), timer_(gl_)
 {
     if (&tracer.model_pyramid() != &tracer.pyramid())
         model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
@@ -388,21 +388,29 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     bind_model();
     bind_shading(shade, shading);
     const int cols = camera.cols();
+    if (boreholes) {
+        // each pixel's t of its hit in the model's pass, for the boreholes'
+        const size_t bytes = size_t(layout.rows) * size_t(cols) * sizeof(float);
+        if (!hit_ts_ || hit_ts_->bytes() < bytes)
+            hit_ts_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                            checked_bytes(bytes, max_block_bytes_, "hits' distances"));
+        hit_ts_->bind(13);
+    }
     shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
                [&](int first, int count) {
                    view.options[2] = uint32_t(first);
                    view.options[3] = uint32_t(count);
                    view_.upload(&view, sizeof view); // stays bound to index 0
-                   const std::vector<uint32_t> tiles =
+                   const sbrt::OverlayTiles tiles =
                        boreholes ? sbrt::overlay_tiles(boxes, camera, first, count)
-                                 : std::vector<uint32_t>();
+                                 : sbrt::OverlayTiles();
                    const size_t all_tiles =
                        size_t((cols + 7) / 8) * size_t((count + 7) / 8);
                    if (boreholes) {
-                       stats_.borehole_tiles += tiles.size();
+                       stats_.borehole_tiles += tiles.tiles.size();
                        stats_.tiles += all_tiles;
                    }
-                   if (tiles.size() < all_tiles) {
+                   if (tiles.tiles.size() < all_tiles || !boreholes) {
                        // the model alone: skipping as if there were no boreholes
                        if (boreholes && model_pyramid_)
                            model_pyramid_->bind(4);
@@ -413,16 +421,21 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                        });
                        pyramid_.bind(4);
                    }
-                   if (tiles.empty())
+                   if (tiles.tiles.empty())
                        return;
                    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
                    // a buffer of its own for each band: GL keeps the one a
                    // queued dispatch reads until that is done
-                   tiles_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, tiles.size() * 4, tiles.data());
+                   const std::vector<uint32_t> words =
+                       sbrt::make_gpu_tile_list(tiles, tracer_, boxes);
+                   tiles_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                                  checked_bytes(words.size() * 4, max_block_bytes_,
+                                                "boreholes' tiles"),
+                                  words.data());
                    tiles_->bind(12);
                    borehole_program->use();
                    timer_.time(int(Pass::shade_boreholes), [&] {
-                       gl_.DispatchCompute(GLuint(tiles.size()), 1, 1);
+                       gl_.DispatchCompute(GLuint(tiles.tiles.size()), 1, 1);
                    });
                });
 }

@@ -229,6 +229,7 @@ private:
     /// and the tiles of the band last dispatched (binding 12)
     std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_;
     std::optional<GlBuffer> tiles_;
+    std::optional<GlBuffer> hit_ts_; ///< the model pass's t per pixel (binding 13)
     /// boreholes and curtains drawn by the shading program (bindings 9,
     /// 10 and, with the model, each cell's boreholes: 11)
     std::optional<GlBuffer> overlays_, logs_, cell_overlays_;

@@ -13,10 +13,16 @@
 
 namespace sbrt_gl {
 
-MappedBands::MappedBands(const GlApi &gl, size_t max_bytes) : gl_(gl), max_bytes_(max_bytes)
+MappedBands::MappedBands(const GlApi &gl, size_t max_bytes, bool staged)
+    : gl_(gl), max_bytes_(max_bytes), staged_(staged)
 {
-    const char *bands = std::getenv("SBRT_GPU_BANDS");
-    staged_ = bands && std::strcmp(bands, "staged") == 0;
+    // a measurement's choice over the GPU's
+    if (const char *bands = std::getenv("SBRT_GPU_BANDS")) {
+        if (std::strcmp(bands, "staged") == 0)
+            staged_ = true;
+        else if (std::strcmp(bands, "direct") == 0)
+            staged_ = false;
+    }
 }
 
 void MappedBands::begin_frame()

@@ -164,16 +164,23 @@ layout(std430, binding = 2) buffer Pixels { uint words[]; };
 
 #ifdef SBRT_TILE_LIST
 // The boreholes' pass (SBRT_BOREHOLES): one work group a listed tile of
-// 8 x 8 pixels of the band, x | y << 16 (sbrt::overlay_tiles); the model
-// alone was shaded everywhere before.
+// 8 x 8 pixels of the band (sbrt::make_gpu_tile_list): the count of tiles
+// and where the box lists' offsets, the box indices and the boxes start;
+// each tile x | y << 16; its boxes; each box's local low and high corner.
+// The model alone was shaded everywhere before.
 layout(std430, binding = 12) readonly buffer Tiles { uint tiles[]; };
 uvec2 work_group_tile()
 {
-    uint tile = tiles[gl_WorkGroupID.x];
+    uint tile = tiles[4u + gl_WorkGroupID.x];
     return uvec2(tile & 0xffffu, tile >> 16);
 }
 #else
 uvec2 work_group_tile() { return gl_WorkGroupID.xy; }
+#endif
+#if defined(SBRT_HIT_T) || defined(SBRT_TILE_LIST)
+// The model's pass with boreholes drawn in a pass of their own: each
+// pixel's t of its opaque hit, 1/0 where it has none (binding 13)
+layout(std430, binding = 13) buffer HitTs { float hit_ts[]; };
 #endif
 
 // What shading needs besides the view; mirrored by sbrt::GpuShade.

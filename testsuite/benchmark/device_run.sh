@@ -10,17 +10,21 @@
 #              where its time goes (gpu_parts: GL time of each pass, the
 #              host's time after the GPU's last band against a memcpy of the
 #              RGB, the bytes the host touched per pixel);
-#            - model B at 4224 x 3536, the bands also written into GPU
-#              memory and copied (SBRT_GPU_BANDS=staged);
+#            - model B at 4224 x 3536 and 1056 x 884, the bands written
+#              by the shader across PCIe (SBRT_GPU_BANDS=direct) against
+#              the default (staged: GPU memory, then the copy engine);
 #            - model B with 100 boreholes drawn with the model;
 #            - the CPU on 1, 2, 4, 8, 16 cores (taskset), B at 1056 x 884
 #              and 2112 x 1768, C at 1056 x 884, with each worker's busy
 #              share (frame_parts);
+#            - the machine's own limit: B's single-thread frame alone and
+#              with one such process on every core at once (contention);
 #            - with trace_bench_base in the bundle (another build, e.g. the
 #              last main), the same figures of that build, in the same run;
 #            - with sbrt_unit_tests in the bundle, the GL unit tests on EGL.
 #            Runs here too (llvmpipe), which checks the script.
-# USAGE:     bash .device/device_run.sh [SIZES] (A B C)
+# USAGE:     [SECTIONS="unit gpu large boreholes scaling contention"]
+#            bash .device/device_run.sh [SIZES] (A B C)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
@@ -40,9 +44,11 @@ cores=$(nproc)
 builds=(new)
 [ -x "$bundle/trace_bench_base" ] && builds+=(base)
 bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
+sections=" ${SECTIONS:-unit gpu large boreholes scaling contention} "
+run() { [[ "$sections" == *" $1 "* ]]; }
 
 # 1. the GL unit tests on this GPU (EGL; the OSMesa ones need libOSMesa)
-if [ -x "$bundle/sbrt_unit_tests" ]; then
+if run unit && [ -x "$bundle/sbrt_unit_tests" ]; then
     "$bundle/sbrt_unit_tests" \
         --gtest_filter='*egl*:*GpuBands*/0:*OverlayTiles*:*GpuBandLayout*:Renderer*:BandFlow*:WorkerPool*' 2>&1 |
         grep -E "^\[  (PASSED|FAILED) |Failure|^\[ stress" | sed "s/^/device unit /" || true
@@ -54,6 +60,7 @@ done
 
 # 2. GPU frames per model and view, each build
 for build in "${builds[@]}"; do
+    run gpu || break
     bench=$(bench_of "$build")
     for size in $sizes; do
         for view in "${views[@]}"; do
@@ -68,23 +75,27 @@ for build in "${builds[@]}"; do
     done
 done
 
-# 3. model B: a large frame, the staged bands, 100 boreholes
+# 3. model B: a large frame (the bands written by the shader across PCIe
+# too), 100 boreholes
 if [ -d "$data/geo_B" ]; then
     for build in "${builds[@]}"; do
         bench=$(bench_of "$build")
-        "$bench" gpu_frame "$data/geo_B" $best cols=4224 rows=3536 label=B/large repeat=5 \
-            threads="$cores" | sed "s/^/device build=$build size=B view=best /"
-        "$bench" gpu_frame "$data/geo_B" $best label=B/boreholes repeat=5 \
+        run large && "$bench" gpu_frame "$data/geo_B" $best cols=4224 rows=3536 label=B/large \
+            repeat=5 threads="$cores" | sed "s/^/device build=$build size=B view=best /"
+        run boreholes && "$bench" gpu_frame "$data/geo_B" $best label=B/boreholes repeat=5 \
             threads="$cores" boreholes=100 radius=20 | sed "s/^/device build=$build size=B view=best /"
     done
-    for px in "cols=1056 rows=884" "cols=4224 rows=3536"; do
-        SBRT_GPU_BANDS=staged "$bundle/trace_bench" gpu_frame "$data/geo_B" $best $px \
-            label=B/staged repeat=5 threads="$cores" | sed "s/^/device build=new-staged size=B view=best /"
-    done
+    if run large; then
+        for px in "cols=1056 rows=884" "cols=4224 rows=3536"; do
+            SBRT_GPU_BANDS=direct "$bundle/trace_bench" gpu_frame "$data/geo_B" $best $px \
+                label=B/direct repeat=5 threads="$cores" | sed "s/^/device build=new-direct size=B view=best /"
+        done
+    fi
 fi
 
 # 4. the CPU's scaling, each build
 for build in "${builds[@]}"; do
+    run scaling || break
     bench=$(bench_of "$build")
     for case in "B cols=1056 rows=884" "B cols=2112 rows=1768" "C cols=1056 rows=884"; do
         set -- $case
@@ -99,3 +110,16 @@ for build in "${builds[@]}"; do
         done
     done
 done
+
+# 5. the machine's limit: B's single-thread frame alone, then on every core
+# at once in as many processes (nothing shared but the machine)
+if run contention && [ -d "$data/geo_B" ]; then
+    taskset -c 0 "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 \
+        reference=0 label=B/alone | grep "^frame " | sed "s/^/device contention processes=1 /"
+    for ((k = 0; k < cores; ++k)); do
+        taskset -c "$k" "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 \
+            reference=0 label="B/core$k" >"$data/contention_$k.txt" &
+    done
+    wait
+    cat "$data"/contention_*.txt | grep "^frame " | sed "s/^/device contention processes=$cores /"
+fi

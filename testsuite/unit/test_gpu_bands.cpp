@@ -204,7 +204,11 @@ TEST(OverlayTiles, EveryPixelWhoseRayMeetsABoxLiesInATileOfIt)
     // of its bounding rectangle, and hold every pixel whose ray meets it
     const std::array<glm::dvec3, 2> box = {glm::dvec3(10, 10, 0), glm::dvec3(11, 11, 80)};
     const Camera camera = Camera::perspective({70, -40, 90}, {30, 20, 0}, 60, 240, 320);
-    const std::vector<uint32_t> tiles = overlay_tiles({box}, camera, 0, camera.rows());
+    const OverlayTiles listed_tiles = overlay_tiles({box}, camera, 0, camera.rows());
+    const std::vector<uint32_t> &tiles = listed_tiles.tiles;
+    EXPECT_FALSE(listed_tiles.every_tile);
+    EXPECT_EQ(listed_tiles.box_first.size(), tiles.size() + 1);
+    EXPECT_EQ(listed_tiles.boxes.size(), tiles.size()); // the one box each
     const int tile_cols = (camera.cols() + 7) / 8, tile_rows = (camera.rows() + 7) / 8;
     std::vector<uint8_t> listed(size_t(tile_cols * tile_rows), 0);
     for (uint32_t t : tiles)
@@ -236,14 +240,17 @@ TEST(OverlayTiles, EveryPixelWhoseRayMeetsABoxLiesInATileOfIt)
     EXPECT_LT(tiles.size(), rect_tiles / 2) << "of " << rect_tiles;
     std::printf("[ tiles ] %zu of the rectangle's %zu\n", tiles.size(), rect_tiles);
     // a band's own tiles: rows from its first
-    const std::vector<uint32_t> band = overlay_tiles({box}, camera, 40, 160);
+    const std::vector<uint32_t> band = overlay_tiles({box}, camera, 40, 160).tiles;
     EXPECT_FALSE(band.empty());
     for (uint32_t t : band)
         EXPECT_TRUE(listed[size_t(((t >> 16) + 5) * tile_cols + (t & 0xffff))]);
     // a box around the camera: every tile
     const std::array<glm::dvec3, 2> around = {glm::dvec3(60, -50, 80), glm::dvec3(80, -30, 100)};
-    EXPECT_EQ(overlay_tiles({around}, camera, 0, 16).size(), size_t(tile_cols * 2));
-    EXPECT_TRUE(overlay_tiles({}, camera, 0, 16).empty());
+    const OverlayTiles every = overlay_tiles({box, around}, camera, 0, 16);
+    EXPECT_TRUE(every.every_tile);
+    EXPECT_EQ(every.tiles.size(), size_t(tile_cols * 2));
+    EXPECT_TRUE(every.boxes.empty()); // no lists: every pixel traced
+    EXPECT_TRUE(overlay_tiles({}, camera, 0, 16).tiles.empty());
 }
 
 TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)

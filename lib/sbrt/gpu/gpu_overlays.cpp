@@ -9,7 +9,9 @@
 #include <cmath>
 #include <cstring>
 #include <tuple>
+#include <utility>
 
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
 #include "util/error.hpp"
@@ -94,15 +96,18 @@ bool overlaps(const std::vector<Point> &hull, double x0, double x1, double y0, d
 
 } // namespace
 
-std::vector<uint32_t> overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
-                                    const Camera &camera, int first_row, int rows)
+OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
+                           const Camera &camera, int first_row, int rows)
 {
     const int side = 8, cols = camera.cols();
     const int tile_cols = (cols + side - 1) / side, tile_rows = (rows + side - 1) / side;
     if (tile_cols > 0xffff || tile_rows > 0xffff)
         fail("overlay_tiles: ", tile_cols, " x ", tile_rows, " tiles, more than 65535 a side");
-    std::vector<uint8_t> marked(size_t(tile_cols) * size_t(tile_rows), 0);
-    for (const auto &box : boxes) {
+    // per tile, the boxes that reach it
+    std::vector<std::vector<uint32_t>> reached(size_t(tile_cols) * size_t(tile_rows));
+    OverlayTiles out;
+    for (size_t b = 0; b < boxes.size() && !out.every_tile; ++b) {
+        const auto &box = boxes[b];
         // the corners in pixel coordinates of the band (pixel centres whole)
         std::vector<Point> corners;
         int behind = 0;
@@ -118,8 +123,8 @@ std::vector<uint32_t> overlay_tiles(const std::vector<std::array<glm::dvec3, 2>>
         }
         if (behind == 8)
             continue; // wholly behind a perspective camera: no ray goes there
-        if (behind > 0) { // the camera is among them: any pixel may
-            std::fill(marked.begin(), marked.end(), uint8_t(1));
+        if (behind > 0) {
+            out.every_tile = true; // the camera is among them: any pixel may
             break;
         }
         const std::vector<Point> hull = convex_hull(corners);
@@ -140,20 +145,60 @@ std::vector<uint32_t> overlay_tiles(const std::vector<std::array<glm::dvec3, 2>>
         const int ty0 = std::max(0, tile(y0 - 1, tile_rows)),
                   ty1 = std::min(tile_rows - 1, tile(y1 + 1, tile_rows));
         for (int ty = ty0; ty <= ty1; ++ty)
-            for (int tx = tx0; tx <= tx1; ++tx) {
-                uint8_t &m = marked[size_t(ty) * size_t(tile_cols) + size_t(tx)];
+            for (int tx = tx0; tx <= tx1; ++tx)
                 // the tile's pixel centres, one pixel wider
-                if (!m && overlaps(hull, tx * side - 1.0, tx * side + side, ty * side - 1.0,
-                                   ty * side + side))
-                    m = 1;
+                if (overlaps(hull, tx * side - 1.0, tx * side + side, ty * side - 1.0,
+                             ty * side + side))
+                    reached[size_t(ty) * size_t(tile_cols) + size_t(tx)].push_back(uint32_t(b));
+    }
+    for (int ty = 0; ty < tile_rows; ++ty)
+        for (int tx = 0; tx < tile_cols; ++tx) {
+            const std::vector<uint32_t> &r = reached[size_t(ty) * size_t(tile_cols) + size_t(tx)];
+            if (!out.every_tile && r.empty())
+                continue;
+            out.tiles.push_back(uint32_t(tx) | uint32_t(ty) << 16);
+            out.box_first.push_back(uint32_t(out.boxes.size()));
+            if (!out.every_tile)
+                out.boxes.insert(out.boxes.end(), r.begin(), r.end());
+        }
+    out.box_first.push_back(uint32_t(out.boxes.size()));
+    return out;
+}
+
+std::vector<uint32_t> make_gpu_tile_list(const OverlayTiles &tiles, const Tracer &tracer,
+                                         const std::vector<std::array<glm::dvec3, 2>> &boxes)
+{
+    const size_t n = tiles.tiles.size();
+    std::vector<uint32_t> words = {uint32_t(n), uint32_t(4 + n),
+                                   uint32_t(4 + n + tiles.box_first.size()),
+                                   uint32_t(4 + n + tiles.box_first.size() + tiles.boxes.size())};
+    words.insert(words.end(), tiles.tiles.begin(), tiles.tiles.end());
+    words.insert(words.end(), tiles.box_first.begin(), tiles.box_first.end());
+    words.insert(words.end(), tiles.boxes.begin(), tiles.boxes.end());
+    const double pad = 1e-3;
+    for (const auto &box : boxes) {
+        glm::dvec3 lo(INFINITY), hi(-INFINITY);
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 local = tracer.frame().to_local(
+                glm::dvec3(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z));
+            lo = glm::min(lo, local);
+            hi = glm::max(hi, local);
+        }
+        // floats rounded outwards: the box never narrows
+        for (const auto &[corner, outwards] : {std::pair{lo - pad, -INFINITY},
+                                               std::pair{hi + pad, INFINITY}})
+            for (int a = 0; a < 3; ++a) {
+                float f = float(corner[a]);
+                if (outwards < 0 ? double(f) > corner[a] : double(f) < corner[a])
+                    f = std::nextafter(f, float(outwards));
+                uint32_t bits;
+                std::memcpy(&bits, &f, 4);
+                words.push_back(bits);
             }
     }
-    std::vector<uint32_t> tiles;
-    for (int ty = 0; ty < tile_rows; ++ty)
-        for (int tx = 0; tx < tile_cols; ++tx)
-            if (marked[size_t(ty) * size_t(tile_cols) + size_t(tx)])
-                tiles.push_back(uint32_t(tx) | uint32_t(ty) << 16);
-    return tiles;
+    if (words.size() > UINT32_MAX)
+        fail("make_gpu_tile_list: ", words.size(), " words, beyond 32-bit indices");
+    return words;
 }
 
 GpuOverlays make_gpu_overlays(const Tracer &tracer)

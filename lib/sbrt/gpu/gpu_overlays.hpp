@@ -60,14 +60,30 @@ inline bool shaded_on_gpu(GpuOverlayMode mode)
     return mode == GpuOverlayMode::alone || mode == GpuOverlayMode::with_model;
 }
 
-/// The 8 x 8 pixel tiles (work groups) of rows [first_row, first_row +
-/// rows) of `camera`'s image whose pixels' rays may meet one of `boxes`
-/// (Tracer::overlay_boxes), band-local, as x | y << 16, row by row: those
-/// the convex hull of a box's projected corners, one pixel wider, reaches
-/// (the work groups of the boreholes' pass, SBRT_TILE_LIST); every tile of
-/// the band where a box lies partly behind the camera.
-std::vector<uint32_t> overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
-                                    const Camera &camera, int first_row, int rows);
+/// \brief The 8 x 8 pixel tiles (work groups) of a band whose pixels' rays
+/// may meet an overlay's box, and the boxes each may meet.
+struct OverlayTiles {
+    std::vector<uint32_t> tiles;     ///< band-local x | y << 16, row by row
+    std::vector<uint32_t> box_first; ///< per tile, then one past: its boxes
+    std::vector<uint32_t> boxes;     ///< box indices
+    /// A box lies partly behind the camera: every tile, no box lists.
+    bool every_tile = false;
+};
+
+/// The tiles of rows [first_row, first_row + rows) of `camera`'s image
+/// whose pixels' rays may meet one of `boxes` (Tracer::overlay_boxes):
+/// those the convex hull of a box's projected corners, one pixel wider,
+/// reaches (the work groups of the boreholes' pass, SBRT_TILE_LIST).
+OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
+                           const Camera &camera, int first_row, int rows);
+
+/// `buffer Tiles` (binding 12, SBRT_TILE_LIST) of `tiles`: the count of
+/// tiles, where the box lists' offsets, the box indices and the boxes
+/// start (words); the tiles; each tile's first box, and one past; the box
+/// indices; each box as its low and high corner in `tracer`'s local frame
+/// (three floats each), a thousandth of a local unit wider.
+std::vector<uint32_t> make_gpu_tile_list(const OverlayTiles &tiles, const Tracer &tracer,
+                                         const std::vector<std::array<glm::dvec3, 2>> &boxes);
 
 /// The overlays of the tracer's scene on the GPU: the Overlays buffer's
 /// words (head, then the overlays), the logs (intervals, local tops) and,

@@ -105,7 +105,9 @@ public:
     /// empty where it does.
     std::vector<std::array<glm::dvec3, 2>> overlay_bounds() const;
     /// Boxes (the same form) that hold each borehole and fence panel,
-    /// whether the model is drawn or not.
+    /// whether the model is drawn or not: a borehole's up to the highest a
+    /// ray can meet in its cells (borehole_top), a panel's the model's
+    /// whole height.
     std::vector<std::array<glm::dvec3, 2>> overlay_boxes() const;
     /// The empty-space pyramid over what is drawn (no levels when skipping
     /// is off or the model is not drawn).
@@ -155,6 +157,9 @@ private:
               Walk &walk) const;
     void index_overlays();
     void build_pyramid();
+    /// The top (exaggerated map z) of the box `lo`-`hi` of borehole `b`:
+    /// its log's, its stack's and the model's highest in its cells.
+    double borehole_top(const Borehole &b, glm::dvec3 lo, glm::dvec3 hi) const;
 
     const Model &model_;
     Scene scene_;

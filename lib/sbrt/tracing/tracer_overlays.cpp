@@ -75,12 +75,42 @@ std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_boxes() const
     std::vector<std::array<glm::dvec3, 2>> boxes;
     const double low = frame_.corner(0).z, high = frame_.corner(7).z;
     const double r = scene_.borehole_radius;
-    for (const Borehole &b : scene_.boreholes)
-        boxes.push_back({glm::dvec3(b.x - r, b.y - r, low), glm::dvec3(b.x + r, b.y + r, high)});
+    for (const Borehole &b : scene_.boreholes) {
+        const glm::dvec3 lo(b.x - r, b.y - r, low), hi(b.x + r, b.y + r, high);
+        boxes.push_back({lo, glm::dvec3(hi.x, hi.y, borehole_top(b, lo, hi))});
+    }
     for (const FencePanel &p : scene_.fence)
         boxes.push_back({glm::dvec3(glm::min(p.a, p.b), low),
                          glm::dvec3(glm::max(p.a, p.b), high)});
     return boxes;
+}
+
+double Tracer::borehole_top(const Borehole &b, glm::dvec3 lo, glm::dvec3 hi) const
+{
+    // the highest a ray can meet in the cylinder's cells: its log, the
+    // stack at its axis, the model around it (the hole drilled through it
+    // shows the model's walls up to its top); the box's top without the
+    // model's pyramid
+    const MinMaxPyramid &model = model_pyramid();
+    if (model.levels() == 0)
+        return hi.z;
+    float top = 0;
+    for (const std::vector<Interval> *stack : {&b.stack, &b.model_stack})
+        if (!stack->empty())
+            top = std::max(top, stack->back().top);
+    const glm::dvec3 a = frame_.to_local(lo), c = frame_.to_local(hi);
+    const auto cell = [](double v, int n) { return std::clamp(int(std::floor(v)), 0, n - 1); };
+    const int cols = model.cols(0), rows = model.rows(0);
+    for (int y = cell(std::min(a.y, c.y), rows); y <= cell(std::max(a.y, c.y), rows); ++y)
+        for (int x = cell(std::min(a.x, c.x), cols); x <= cell(std::max(a.x, c.x), cols); ++x) {
+            const ZRange &range = model.node(0, x, y);
+            if (!range.empty())
+                top = std::max(top, range.high);
+        }
+    // in exaggerated map units, a hundred-thousandth of the box's height
+    // higher (no float rounding can put a drawn top above it)
+    const double z = frame_.exaggerate(frame_.from_local(glm::dvec3(0, 0, top))).z;
+    return std::min(hi.z, z + 1e-5 * (hi.z - lo.z));
 }
 
 bool Tracer::cross_borehole(const Borehole &borehole, double t_a, double t_b,
