@@ -39,7 +39,7 @@ void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
     const sbrt::RenderReport r = renderer.render(camera, outputs, sink);
     if (r.first_pass.tiles)
         G_verbose_message(_("First pass: %zu tiles of %d x %d pixels, %zu of them "
-                            "meet nothing (found in %.1f ms of the threads' time as rows were traced)"),
+                            "meet nothing (%.1f ms)"),
                           r.first_pass.tiles, sbrt::FIRST_PASS_TILE,
                           sbrt::FIRST_PASS_TILE, r.first_pass.empty_tiles,
                           r.first_pass.ms);

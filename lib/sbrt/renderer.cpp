@@ -227,7 +227,9 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
     report.bands = flow.bands();
     report.sink_ms = writer.sink_ms();
     report.band_wait_ms = writer.take_wait_ms();
-    report.worker_busy_ms = std::move(busy);
+    report.worker_busy_ms.resize(threads, 0.0); // the first pass's, then the rows'
+    for (unsigned w = 0; w < threads; ++w)
+        report.worker_busy_ms[w] += busy[w];
     report.most_rows_held = int(threads); // a row of hits per thread
 }
 
@@ -301,28 +303,31 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
                                                                    : std::max(16, 4 * int(threads)));
     if (rows)
         report.band_rows = std::max(1, std::min(report.band_rows, rows->max_band_rows(cols, outputs)));
+    // the threads and band buffers of the frames before: renders take turns
+    const std::lock_guard<std::mutex> frame(frame_mutex_);
+    if (!writer_)
+        writer_ = std::make_unique<BandWriter>();
     std::optional<CpuRowTracer> cpu;
-    if (!rows)
-        cpu.emplace(*tracer_, camera, threads, settings_.first_pass);
+    if (!rows) {
+        if (!pool_ || pool_->size() != threads)
+            pool_ = std::make_unique<WorkerPool>(threads);
+        cpu.emplace(*tracer_, camera, threads, settings_.first_pass, pool_.get());
+        report.first_pass = cpu->first_pass();
+        if (report.first_pass.tiles)
+            report.worker_busy_ms = pool_->busy_ms();
+    }
     RowTracer &source = rows ? *rows : *cpu;
     const RowShader shade{*tracer_, PixelShader(*model_, shading_), camera};
     std::optional<KernelBands> kernel;
     if (shading_.normals == Normals::kernel && !(rows && rows->shades_kernel_normals()))
         kernel.emplace(*tracer_, camera, shading_, source, threads);
-    const std::lock_guard<std::mutex> frame(frame_mutex_);
-    if (!writer_)
-        writer_ = std::make_unique<BandWriter>();
     if (cpu && !kernel) {
-        if (!pool_ || pool_->size() != threads)
-            pool_ = std::make_unique<WorkerPool>(threads);
         render_rows(*cpu, shade, outputs, sink, *pool_, *writer_, camera.rows(), cols, report);
     }
     else {
         render_bands(source, kernel ? &*kernel : nullptr, shade, outputs, sink, threads,
                      *writer_, camera.rows(), cols, report);
     }
-    if (cpu)
-        report.first_pass = cpu->first_pass(); // found as the rows were traced
     report.ms = ms_since(start);
     return report;
 }

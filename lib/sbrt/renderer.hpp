@@ -36,10 +36,10 @@ struct RenderReport {
     double ms = 0;       ///< prepare, trace, shade and emit, the sink included
     double trace_ms = 0; ///< tracing and shading the bands (this thread)
     double sink_ms = 0;  ///< the sink's time (its own thread, overlapping)
-    /// The CPU tracer's rows (face normals): per worker, the time spent
-    /// tracing and shading rows; the rest of trace_ms it waited (for a
-    /// band buffer the sink held: band_wait_ms, all workers together) or
-    /// took rows.
+    /// The CPU tracer (face normals): per worker, the time spent finding
+    /// the first pass's bounds, tracing and shading rows; the rest of the
+    /// frame it waited (at the first pass's end, or for a band buffer the
+    /// sink held: band_wait_ms, all workers together) or took work.
     std::vector<double> worker_busy_ms;
     double band_wait_ms = 0;
 };

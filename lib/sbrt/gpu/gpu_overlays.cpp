@@ -109,18 +109,10 @@ OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
     for (size_t b = 0; b < boxes.size() && !out.every_tile; ++b) {
         const auto &box = boxes[b];
         // the corners in pixel coordinates of the band (pixel centres whole)
-        std::vector<Point> corners;
         int behind = 0;
-        for (int k = 0; k < 8; ++k) {
-            const glm::dvec3 p(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z);
-            double x, y;
-            if (!camera.project(p, x, y)) {
-                ++behind;
-                continue;
-            }
-            corners.emplace_back((x + 1) / 2 * cols - 0.5,
-                                 (1 - y) / 2 * camera.rows() - 0.5 - first_row);
-        }
+        std::vector<Point> corners = projected_corners(box, camera, behind);
+        for (Point &p : corners)
+            p = Point((p.x + 1) / 2 * cols - 0.5, (1 - p.y) / 2 * camera.rows() - 0.5 - first_row);
         if (behind == 8)
             continue; // wholly behind a perspective camera: no ray goes there
         if (behind > 0) {

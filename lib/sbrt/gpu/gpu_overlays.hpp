@@ -18,6 +18,7 @@
 
 #include "model/interval_array.hpp"
 #include "scene/camera.hpp"
+#include "tracing/cpu_tracing.hpp"
 #include "tracing/tracer.hpp"
 
 namespace sbrt {

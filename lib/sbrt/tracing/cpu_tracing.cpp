@@ -13,6 +13,22 @@
 
 namespace sbrt {
 
+std::vector<glm::dvec2> projected_corners(const std::array<glm::dvec3, 2> &box,
+                                          const Camera &camera, int &behind)
+{
+    std::vector<glm::dvec2> corners;
+    behind = 0;
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 p(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z);
+        double x, y;
+        if (camera.project(p, x, y))
+            corners.emplace_back(x, y);
+        else
+            ++behind;
+    }
+    return corners;
+}
+
 std::optional<std::vector<PixelRect>> pixel_rects_of(
     const std::vector<std::array<glm::dvec3, 2>> &boxes, const Camera &camera)
 {
@@ -21,17 +37,11 @@ std::optional<std::vector<PixelRect>> pixel_rects_of(
     for (const auto &box : boxes) {
         double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
         int behind = 0;
-        for (int k = 0; k < 8; ++k) {
-            const glm::dvec3 p(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z);
-            double x, y;
-            if (!camera.project(p, x, y)) {
-                ++behind;
-                continue;
-            }
-            x0 = std::min(x0, x);
-            x1 = std::max(x1, x);
-            y0 = std::min(y0, y);
-            y1 = std::max(y1, y);
+        for (const glm::dvec2 &p : projected_corners(box, camera, behind)) {
+            x0 = std::min(x0, p.x);
+            x1 = std::max(x1, p.x);
+            y0 = std::min(y0, p.y);
+            y1 = std::max(y1, p.y);
         }
         if (behind == 8)
             continue; // wholly behind a perspective camera: no ray goes there
@@ -71,31 +81,29 @@ std::vector<std::pair<int, int>> row_spans(const std::vector<PixelRect> &rects, 
 }
 
 CpuRowTracer::CpuRowTracer(const Tracer &tracer, const Camera &camera,
-                           unsigned threads, bool first_pass)
+                           unsigned threads, bool first_pass, WorkerPool *pool)
     : overlay_rects_(tracer.overlay_bounds().empty()
                          ? std::nullopt
                          : pixel_rects_of(tracer.overlay_bounds(), camera)),
       tracer_(tracer),
       camera_(camera), threads_(threads)
 {
-    // no pyramid (skipping off, the model not drawn): every bound is 0;
-    // else each tile row's bounds are found by the first thread that
-    // traces one of its rows
-    if (first_pass)
-        bounds_.emplace(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET,
-                        FirstHitBounds::Lazy{});
+    // no pyramid (skipping off, the model not drawn): every bound is 0
+    const auto start = std::chrono::steady_clock::now();
+    if (first_pass && pool)
+        bounds_.emplace(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET, *pool);
+    else if (first_pass)
+        bounds_.emplace(tracer, camera, FIRST_PASS_TILE, FIRST_PASS_BUDGET, threads);
     else
         bounds_.emplace(camera);
-}
-
-FirstPassReport CpuRowTracer::first_pass() const
-{
-    return {bounds_->tiles(), bounds_->empty_tiles(), bounds_->lazy_ms()};
+    report_ = {bounds_->tiles(), bounds_->empty_tiles(),
+               std::chrono::duration<double, std::milli>(
+                   std::chrono::steady_clock::now() - start)
+                   .count()};
 }
 
 void CpuRowTracer::trace_row(int row, Hit *out) const
 {
-    bounds_->ensure_row(row);
     const int cols = camera_.cols();
     const auto trace = [&](int col) {
         if (bounds_->meets_nothing(row, col)) {
@@ -129,9 +137,9 @@ HitImage trace_image(const Tracer &tracer, const Camera &camera, unsigned thread
 {
     HitImage hits(size_t(camera.rows()) * camera.cols());
     CpuRowTracer rows(tracer, camera, threads, first_pass);
-    rows.trace_rows(0, camera.rows(), hits.data());
     if (report)
         *report = rows.first_pass();
+    rows.trace_rows(0, camera.rows(), hits.data());
     return hits;
 }
 

@@ -12,9 +12,12 @@
 #include <utility>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "output/band.hpp"
 #include "tracing/first_hit_bounds.hpp"
 #include "tracing/hit_image.hpp"
+#include "util/worker_pool.hpp"
 
 namespace sbrt {
 
@@ -27,7 +30,7 @@ constexpr int FIRST_PASS_TILE = 8, FIRST_PASS_BUDGET = 32;
 /// nothing (not walked at all), its time.
 struct FirstPassReport {
     size_t tiles = 0, empty_tiles = 0;
-    double ms = 0; ///< finding the bounds, all threads' time together
+    double ms = 0;
 };
 
 /// A rectangle of an image's pixels: first row, last row, first column,
@@ -38,6 +41,11 @@ using PixelRect = std::array<int, 4>;
 /// (low and high corners, exaggerated map coordinates): their projections,
 /// a pixel of margin (boxes wholly behind a perspective camera: none);
 /// none at all where a box reaches behind the camera (every pixel may).
+/// The corners of `box` (low, high) in front of `camera`, in normalised
+/// device coordinates; `behind` counts the others (a perspective camera's).
+std::vector<glm::dvec2> projected_corners(const std::array<glm::dvec3, 2> &box,
+                                          const Camera &camera, int &behind);
+
 std::optional<std::vector<PixelRect>> pixel_rects_of(
     const std::vector<std::array<glm::dvec3, 2>> &boxes, const Camera &camera);
 
@@ -83,17 +91,17 @@ public:
 /// \brief The exact CPU tracer over the rows of `camera`, on `threads`
 /// threads (0: all cores). With `first_pass` (and the tracer's pyramid)
 /// each ray starts where the coarse first pass (FirstHitBounds) puts its
-/// tile's first possible hit. Holds references to both arguments.
+/// tile's first possible hit, found at construction: on `pool`'s workers a
+/// tile at a time where given, else on `threads` threads a tile row at a
+/// time. Holds references to both arguments.
 class CpuRowTracer : public RowTracer {
 public:
     CpuRowTracer(const Tracer &tracer, const Camera &camera, unsigned threads = 0,
-                 bool first_pass = true);
+                 bool first_pass = true, WorkerPool *pool = nullptr);
     void trace_rows(int first, int count, Hit *out) override;
     /// The hits of one row (thread-safe).
     void trace_row(int row, Hit *out) const;
-    /// The first pass's tiles so far (its bounds are found as rows are
-    /// traced; ms: the threads' time finding them, all together).
-    FirstPassReport first_pass() const;
+    const FirstPassReport &first_pass() const { return report_; }
 
 private:
     /// Where the tracer draws only overlays: pixel rectangles (first row,
@@ -103,6 +111,7 @@ private:
     const Tracer &tracer_;
     const Camera &camera_;
     unsigned threads_;
+    FirstPassReport report_;
     std::optional<FirstHitBounds> bounds_;
 };
 

@@ -6,14 +6,13 @@
 #include "tracing/first_hit_bounds.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <queue>
-#include <thread>
 
 #include <glm/geometric.hpp>
 
+#include "util/error.hpp"
 #include "util/parallel.hpp"
 
 namespace sbrt {
@@ -84,20 +83,24 @@ FirstHitBounds::FirstHitBounds(const Tracer &tracer, const Camera &camera, int t
     if (!allocate(tracer))
         return;
     const int tile_rows = (camera.rows() + tile_ - 1) / tile_;
-    for_each_row(tile_rows, threads, [&](int ty) { find_tile_row(tracer, ty); });
+    for_each_row(tile_rows, threads, [&](int ty) {
+        for (int tx = 0; tx < tile_cols_; ++tx)
+            s_bounds_[size_t(ty) * tile_cols_ + tx] = tile_bound(tracer, ty * tile_, tx * tile_);
+    });
 }
 
 FirstHitBounds::FirstHitBounds(const Tracer &tracer, const Camera &camera, int tile,
-                               int budget, Lazy)
+                               int budget, WorkerPool &pool)
     : camera_(camera), tile_(std::max(1, tile)), budget_(std::max(1, budget))
 {
     if (!allocate(tracer))
         return;
-    lazy_tracer_ = &tracer;
-    const int tile_rows = (camera.rows() + tile_ - 1) / tile_;
-    tile_row_state_ = std::make_unique<std::atomic<uint8_t>[]>(size_t(tile_rows));
-    for (int ty = 0; ty < tile_rows; ++ty)
-        tile_row_state_[size_t(ty)].store(0, std::memory_order_relaxed);
+    if (s_bounds_.size() > size_t(INT32_MAX))
+        fail("first pass: ", s_bounds_.size(), " tiles");
+    pool.for_each_row(0, int(s_bounds_.size()), [&](int k, unsigned) {
+        const int ty = k / tile_cols_, tx = k % tile_cols_;
+        s_bounds_[size_t(k)] = tile_bound(tracer, ty * tile_, tx * tile_);
+    });
 }
 
 bool FirstHitBounds::allocate(const Tracer &tracer)
@@ -112,42 +115,6 @@ bool FirstHitBounds::allocate(const Tracer &tracer)
     for (int col = 0; col < camera_.cols(); ++col)
         col_tile_.push_back(uint32_t(col / tile_));
     return true;
-}
-
-void FirstHitBounds::find_tile_row(const Tracer &tracer, int ty) const
-{
-    for (int tx = 0; tx < tile_cols_; ++tx)
-        s_bounds_[size_t(ty) * tile_cols_ + tx] = tile_bound(tracer, ty * tile_, tx * tile_);
-}
-
-bool FirstHitBounds::try_tile_row(int ty) const
-{
-    std::atomic<uint8_t> &state = tile_row_state_[size_t(ty)];
-    if (state.load(std::memory_order_acquire) == 2)
-        return true;
-    uint8_t expected = 0;
-    if (!state.compare_exchange_strong(expected, 1, std::memory_order_acquire))
-        return expected == 2;
-    const auto start = std::chrono::steady_clock::now();
-    find_tile_row(*lazy_tracer_, ty);
-    lazy_ns_ += std::chrono::duration_cast<std::chrono::nanoseconds>(
-                    std::chrono::steady_clock::now() - start)
-                    .count();
-    state.store(2, std::memory_order_release);
-    return true;
-}
-
-void FirstHitBounds::ensure_row(int row) const
-{
-    if (!tile_row_state_)
-        return; // found at construction, or none
-    const int ty = row / tile_, tile_rows = (camera_.rows() + tile_ - 1) / tile_;
-    // the next tile row first where no thread has begun it: the rows of
-    // this one are taken by the threads around this one
-    if (ty + 1 < tile_rows)
-        try_tile_row(ty + 1);
-    while (!try_tile_row(ty))
-        std::this_thread::yield(); // another thread is finding it
 }
 
 double FirstHitBounds::tile_bound(const Tracer &tracer, int row0, int col0) const
@@ -219,15 +186,7 @@ double FirstHitBounds::t_start(int row, int col, const Ray &ray) const
 
 size_t FirstHitBounds::empty_tiles() const
 {
-    // lazy bounds: of the tile rows found so far
-    size_t empty = 0;
-    for (size_t ty = 0; tile_cols_ > 0 && ty < s_bounds_.size() / size_t(tile_cols_); ++ty) {
-        if (tile_row_state_ && tile_row_state_[ty].load(std::memory_order_acquire) != 2)
-            continue;
-        const auto row = s_bounds_.begin() + ptrdiff_t(ty * size_t(tile_cols_));
-        empty += size_t(std::count(row, row + tile_cols_, INF));
-    }
-    return empty;
+    return size_t(std::count(s_bounds_.begin(), s_bounds_.end(), INF));
 }
 
 } // namespace sbrt

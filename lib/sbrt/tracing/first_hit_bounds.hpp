@@ -9,14 +9,13 @@
 #ifndef SBRT_FIRST_HIT_BOUNDS_HPP
 #define SBRT_FIRST_HIT_BOUNDS_HPP
 
-#include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "scene/camera.hpp"
 #include "tracing/tracer.hpp"
+#include "util/worker_pool.hpp"
 
 namespace sbrt {
 
@@ -33,18 +32,10 @@ public:
                    int budget, unsigned threads = 0);
     /// No first pass: every bound is 0.
     explicit FirstHitBounds(const Camera &camera) : camera_(camera), tile_(1), budget_(1) {}
-    /// Bounds found as the rows need them (ensure_row), by the threads that
-    /// trace the rows: no pass of its own before the rows, no thread idle
-    /// at its end. Holds a reference to `tracer`.
-    struct Lazy {};
-    FirstHitBounds(const Tracer &tracer, const Camera &camera, int tile, int budget, Lazy);
-    /// Lazy bounds: those of the tile row of image row `row` found (by
-    /// this thread, or waited for where another is at it), and the next
-    /// tile row's begun where no thread has (thread-safe).
-    void ensure_row(int row) const;
-    /// Milliseconds spent finding lazy bounds, all threads together.
-    double lazy_ms() const { return double(lazy_ns_.load()) / 1e6; }
-
+    /// The same on `pool`'s workers, a tile at a time (no worker waits
+    /// for another at the end of the pass: a tile is a few microseconds).
+    FirstHitBounds(const Tracer &tracer, const Camera &camera, int tile, int budget,
+                   WorkerPool &pool);
     /// A t (of the unit ray of pixel (row, col), `ray` = camera.ray(row,
     /// col)) before which the ray meets nothing; inf where it meets nothing.
     double t_start(int row, int col, const Ray &ray) const;
@@ -66,11 +57,6 @@ private:
     double tile_bound(const Tracer &tracer, int row0, int col0) const;
     /// The arrays of the bounds of `tracer`'s pyramid; false without one.
     bool allocate(const Tracer &tracer);
-    /// Every bound of tile row `ty`.
-    void find_tile_row(const Tracer &tracer, int ty) const;
-    /// Lazy: finds tile row `ty` unless a thread has begun it; true where
-    /// it is found (by whichever thread).
-    bool try_tile_row(int ty) const;
     /// The bound of the tile of pixel (row, col), in s.
     double s_bound(int row, int col) const
     {
@@ -79,12 +65,7 @@ private:
 
     const Camera &camera_;
     int tile_, budget_, tile_cols_ = 0;
-    mutable std::vector<double> s_bounds_; ///< per tile, row-major
-    /// lazy bounds: the tracer, and per tile row 0 (not begun), 1 (a
-    /// thread finds it), 2 (found)
-    const Tracer *lazy_tracer_ = nullptr;
-    std::unique_ptr<std::atomic<uint8_t>[]> tile_row_state_;
-    mutable std::atomic<long long> lazy_ns_{0};
+    std::vector<double> s_bounds_; ///< per tile, row-major
     /// Per image row, its tile row's first bound; per column, its tile
     /// column (no division per pixel).
     std::vector<uint32_t> row_offset_, col_tile_;

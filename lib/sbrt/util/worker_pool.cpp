@@ -5,11 +5,13 @@
  ****************************************************************************/
 #include "util/worker_pool.hpp"
 
+#include <chrono>
+
 #include "util/parallel.hpp"
 
 namespace sbrt {
 
-WorkerPool::WorkerPool(unsigned threads)
+WorkerPool::WorkerPool(unsigned threads) : busy_ms_(thread_count(threads), 0.0)
 {
     const unsigned n = thread_count(threads);
     threads_.reserve(n - 1);
@@ -30,9 +32,14 @@ WorkerPool::~WorkerPool()
 
 void WorkerPool::run_rows(unsigned worker)
 {
+    using Clock = std::chrono::steady_clock;
+    double busy = 0;
     try {
-        for (long long row; (row = next_++) < last_;)
+        for (long long row; (row = next_++) < last_;) {
+            const auto start = Clock::now();
             (*function_)(int(row), worker);
+            busy += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        }
     }
     catch (...) {
         next_ = last_; // the others stop at their next row
@@ -40,6 +47,7 @@ void WorkerPool::run_rows(unsigned worker)
         if (!error_)
             error_ = std::current_exception();
     }
+    busy_ms_[worker] = busy; // read by the caller once every worker is done
 }
 
 void WorkerPool::work(unsigned worker)

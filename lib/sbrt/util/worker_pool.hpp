@@ -37,6 +37,10 @@ public:
     void for_each_row(int first, int last,
                       const std::function<void(int row, unsigned worker)> &row_function);
 
+    /// Per worker, the milliseconds spent in row_function during the last
+    /// for_each_row.
+    const std::vector<double> &busy_ms() const { return busy_ms_; }
+
 private:
     void work(unsigned worker);
     void run_rows(unsigned worker);
@@ -51,6 +55,7 @@ private:
     std::atomic<long long> next_{0};
     int last_ = 0;
     std::exception_ptr error_;
+    std::vector<double> busy_ms_;
     std::vector<std::thread> threads_;
 };
 

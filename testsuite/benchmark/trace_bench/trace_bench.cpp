@@ -292,11 +292,11 @@ void time_against_error(const Model &model, const Args &args, const Camera &came
 
 } // namespace
 
-/// Where the best CPU frame's time went: each worker's share of the
-/// parallel rows' wall time spent tracing and shading (the rest it waited
-/// for a band buffer or a row), the sum of the workers' busy time (against
-/// one thread's, a slower row as threads are added is the machine: clock,
-/// memory), the first pass, and the sink thread's share.
+/// Where the best CPU frame's time went: each worker's share of the frame
+/// spent finding first-pass bounds, tracing and shading (the rest it waited
+/// or took work), the sum of the workers' busy time (against one thread's:
+/// more work for the same rows as threads are added), the first pass's
+/// wall time, and the sink thread's share.
 void print_frame_parts(const RenderReport &r, const std::string &label)
 {
     double busy_sum = 0, busy_min = INFINITY;
@@ -307,13 +307,13 @@ void print_frame_parts(const RenderReport &r, const std::string &label)
     const double workers = double(std::max<size_t>(r.worker_busy_ms.size(), 1));
     std::string shares;
     for (double b : r.worker_busy_ms)
-        shares += (shares.empty() ? "" : ",") + std::to_string(int(std::lround(100 * b / r.trace_ms)));
+        shares += (shares.empty() ? "" : ",") + std::to_string(int(std::lround(100 * b / r.ms)));
     std::printf("frame_parts label=%s threads=%zu frame_ms=%.2f first_pass_ms=%.2f rows_ms=%.2f "
                 "busy_sum_ms=%.1f busy_mean_pct=%.1f busy_min_pct=%.1f band_wait_ms=%.2f "
                 "sink_ms=%.2f sink_pct=%.1f bands=%d busy_pct_each=%s\n",
                 label.c_str(), r.worker_busy_ms.size(), r.ms, r.first_pass.ms, r.trace_ms, busy_sum,
-                100 * busy_sum / workers / r.trace_ms, 100 * busy_min / r.trace_ms,
-                r.band_wait_ms, r.sink_ms, 100 * r.sink_ms / r.trace_ms, r.bands, shares.c_str());
+                100 * busy_sum / workers / r.ms, 100 * busy_min / r.ms, r.band_wait_ms, r.sink_ms,
+                100 * r.sink_ms / r.ms, r.bands, shares.c_str());
 }
 
 /// The streamed frame in process, warm (best of `repeat`), and the
