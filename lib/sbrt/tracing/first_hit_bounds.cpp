@@ -95,11 +95,17 @@ FirstHitBounds::FirstHitBounds(const Tracer &tracer, const Camera &camera, int t
 {
     if (!allocate(tracer))
         return;
-    if (s_bounds_.size() > size_t(INT32_MAX))
+    // runs of 16 tiles (tens of microseconds): many more than workers, and
+    // few enough that taking one costs nothing beside it
+    const size_t run = 16, runs = (s_bounds_.size() + run - 1) / run;
+    if (runs > size_t(INT32_MAX))
         fail("first pass: ", s_bounds_.size(), " tiles");
-    pool.for_each_row(0, int(s_bounds_.size()), [&](int k, unsigned) {
-        const int ty = k / tile_cols_, tx = k % tile_cols_;
-        s_bounds_[size_t(k)] = tile_bound(tracer, ty * tile_, tx * tile_);
+    pool.for_each_row(0, int(runs), [&](int r, unsigned) {
+        const size_t end = std::min(s_bounds_.size(), (size_t(r) + 1) * run);
+        for (size_t k = size_t(r) * run; k < end; ++k) {
+            const int ty = int(k / size_t(tile_cols_)), tx = int(k % size_t(tile_cols_));
+            s_bounds_[k] = tile_bound(tracer, ty * tile_, tx * tile_);
+        }
     });
 }
 

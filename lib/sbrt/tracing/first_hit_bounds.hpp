@@ -32,8 +32,9 @@ public:
                    int budget, unsigned threads = 0);
     /// No first pass: every bound is 0.
     explicit FirstHitBounds(const Camera &camera) : camera_(camera), tile_(1), budget_(1) {}
-    /// The same on `pool`'s workers, a tile at a time (no worker waits
-    /// for another at the end of the pass: a tile is a few microseconds).
+    /// The same on `pool`'s workers, 16 tiles at a time (no worker waits
+    /// long for another at the end of the pass: a tile is a microsecond or
+    /// two).
     FirstHitBounds(const Tracer &tracer, const Camera &camera, int tile, int budget,
                    WorkerPool &pool);
     /// A t (of the unit ray of pixel (row, col), `ray` = camera.ray(row,
