@@ -67,7 +67,11 @@ bool passes(vec2 range, float z_a, float z_b)
 void finish(uint index, vec3 point, uint code, float t)
 {
 #ifdef SBRT_HIT_T
-    hit_ts[index] = (code & 0xffffu) != 0u && (code & CODE_OVER_BUDGET) == 0u ? t : 1.0 / 0.0;
+    // -inf: over the budget, the host traces it (the boreholes' pass leaves
+    // it alone: listed once); inf: no opaque hit
+    hit_ts[index] = (code & CODE_OVER_BUDGET) != 0u ? -1.0 / 0.0
+                  : (code & 0xffffu) != 0u         ? t
+                                                   : 1.0 / 0.0;
 #endif
     if ((code & CODE_OVER_BUDGET) != 0u) {
         flag_over_budget(index);
@@ -117,9 +121,13 @@ bool climb(uint level, int ix, int iy, vec3 hi, vec3 lo, vec3 d, float z_in,
 bool model_hit_first(uint index, vec3 hi, vec3 lo, vec3 d)
 {
     uint tile = gl_WorkGroupID.x, first = tiles[tiles[1] + tile], last = tiles[tiles[1] + tile + 1u];
+    if (first == last)
+        return false; // no box lists: the camera among them, no model pass
     float t_model = hit_ts[index];
-    if (first == last || isinf(t_model))
-        return false; // no box lists (the camera among them), or no hit
+    if (t_model == -1.0 / 0.0)
+        return true; // over the model pass's budget: the host traces it
+    if (isinf(t_model))
+        return false; // no opaque hit
     float t_entry = 1.0 / 0.0;
     for (uint k = first; k < last; ++k) {
         uint at = tiles[3] + 6u * tiles[tiles[2] + k];

@@ -388,14 +388,14 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     bind_model();
     bind_shading(shade, shading);
     const int cols = camera.cols();
-    if (boreholes) {
-        // each pixel's t of its hit in the model's pass, for the boreholes'
-        const size_t bytes = size_t(layout.rows) * size_t(cols) * sizeof(float);
-        if (!hit_ts_ || hit_ts_->bytes() < bytes)
-            hit_ts_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                            checked_bytes(bytes, max_block_bytes_, "hits' distances"));
-        hit_ts_->bind(13);
-    }
+    // each pixel's t of its hit in the model's pass, for the boreholes'
+    // (binding 13): a buffer for each slot, as a band dispatched ahead
+    // writes its own while the band before still reads
+    bands_.set_scratch(boreholes ? checked_bytes(size_t(layout.rows) * size_t(cols) *
+                                                     sizeof(float),
+                                                 max_block_bytes_, "hits' distances")
+                                 : 0,
+                       13);
     shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
                [&](int first, int count) {
                    view.options[2] = uint32_t(first);
@@ -410,7 +410,10 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                        stats_.borehole_tiles += tiles.tiles.size();
                        stats_.tiles += all_tiles;
                    }
-                   if (tiles.tiles.size() < all_tiles || !boreholes) {
+                   // the model pass wherever some tile is not listed, and
+                   // wherever the boreholes' pass reads its hits (box lists)
+                   if (!boreholes || !tiles.every_tile) {
+                       ++stats_.model_pass_bands;
                        // the model alone: skipping as if there were no boreholes
                        if (boreholes && model_pyramid_)
                            model_pyramid_->bind(4);
@@ -468,10 +471,14 @@ void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_co
     band.value = sbrt::BandPlane<double>();
     stats_.host_bytes += band.pixels() * band.bytes_per_pixel() + 4;
 
-    // the rays over the loop budget, traced and shaded here
+    // the rays over the loop budget, traced and shaded here (each pixel
+    // listed once: the boreholes' pass leaves the model pass's alone)
     const uint32_t over = words[layout.over_budget_at];
     if (over == 0)
         return;
+    if (over > band.pixels())
+        sbrt::fail("the GPU listed ", over, " rays over its loop budget in a band of ",
+                   band.pixels(), " pixels");
     const auto start = Clock::now();
     const uint32_t *pixels = words + layout.over_budget_at + 1;
     const sbrt::PixelShader shader(tracer_.model(), shading);

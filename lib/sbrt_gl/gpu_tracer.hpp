@@ -46,6 +46,9 @@ struct GpuStats {
     /// Boreholes with the model: the 8 x 8 tiles the boreholes' pass
     /// shaded again, of all the tiles of the bands.
     size_t borehole_tiles = 0, tiles = 0;
+    /// Bands the model pass shaded (every band but where a borehole's box
+    /// holds the camera).
+    int model_pass_bands = 0;
     /// GPU time of each pass (GL_TIME_ELAPSED; with GpuTracer::time_passes),
     /// indexed by Pass (gpu_internal.hpp): see pass_name.
     std::vector<double> pass_ms;
@@ -229,7 +232,6 @@ private:
     /// and the tiles of the band last dispatched (binding 12)
     std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_;
     std::optional<GlBuffer> tiles_;
-    std::optional<GlBuffer> hit_ts_; ///< the model pass's t per pixel (binding 13)
     /// boreholes and curtains drawn by the shading program (bindings 9,
     /// 10 and, with the model, each cell's boreholes: 11)
     std::optional<GlBuffer> overlays_, logs_, cell_overlays_;

@@ -34,10 +34,28 @@ void MappedBands::begin_frame()
 void MappedBands::drop_queued()
 {
     // their slots come next again: skipping one would hand the GPU the
-    // slot of a band the sink may still read
+    // slot of a band the sink may still read; and not before the GPU is
+    // done with them (the host writes a slot's count before a dispatch)
     if (!queued_.empty())
         next_slot_ = queued_.front().slot;
+    for (const Queued &band : queued_)
+        band.fence.wait();
     queued_.clear();
+}
+
+void MappedBands::set_scratch(size_t bytes, GLuint binding)
+{
+    scratch_binding_ = binding;
+    if (bytes == 0) {
+        scratch_.clear();
+        return;
+    }
+    if (!scratch_.empty() && scratch_.front().bytes() >= bytes)
+        return;
+    drop_queued(); // their dispatches use the buffers replaced here
+    scratch_.clear();
+    for (int k = 0; k < SLOTS; ++k)
+        scratch_.emplace_back(gl_, GL_SHADER_STORAGE_BUFFER, bytes);
 }
 
 std::optional<sbrt::GpuBandLayout> MappedBands::layout(int rows, int cols,
@@ -77,6 +95,8 @@ void MappedBands::queue(int first, int count, const std::function<void(int, int)
     // GPU sees in the commands queued after (a coherent mapping)
     const uint32_t zero = 0;
     const size_t count_at = layout_->over_budget_at * 4;
+    if (!scratch_.empty())
+        scratch_[size_t(slot)].bind(scratch_binding_);
     if (staged_) {
         GlBuffer &device = device_slots_[size_t(slot)];
         device.write(count_at, &zero, 4);

@@ -17,6 +17,7 @@
 
 #include "gl_objects.hpp"
 #include "gpu/gpu_layout.hpp"
+#include "tracing/cpu_tracing.hpp"
 
 namespace sbrt_gl {
 
@@ -27,14 +28,17 @@ namespace sbrt_gl {
 /// writing across PCIe); on a software renderer, whose GPU memory is host
 /// memory, the shading pass writes the mapped buffer itself.
 /// SBRT_GPU_BANDS=staged or direct overrides (measurements). Band k of a
-/// frame lies
-/// in slot k % SLOTS: the renderer's sink holds at most SINK_BANDS bands
-/// (sbrt::RowTracer::SINK_BANDS), one more is being handed over, and one
-/// more is dispatched ahead, so no slot is written while the host reads
-/// it. Nothing is copied or converted on the host.
+/// frame lies in the next slot: the renderer has at most
+/// sbrt::RowTracer::SINK_BANDS bands out, the one being filled among them,
+/// so while band k is handed over the sink holds at most band k - 1, and
+/// band k + 1, dispatched ahead, goes to the slot of band k - 2: no slot is
+/// written while the host reads it. Nothing is copied or converted on the
+/// host.
 class MappedBands {
 public:
     static constexpr int SLOTS = 3;
+    static_assert(SLOTS >= int(sbrt::RowTracer::SINK_BANDS) + 1,
+                  "a slot for each band out and one dispatched ahead");
 
     /// `max_bytes`: the GPU's largest storage buffer binding.
     MappedBands(const GlApi &gl, size_t max_bytes, bool staged);
@@ -54,6 +58,10 @@ public:
     uint8_t *band(int first, int count, int image_rows,
                   const std::function<void(int, int)> &dispatch);
 
+    /// A GPU buffer of `bytes` for each slot (none: 0), bound to storage
+    /// binding `binding` with its slot for each dispatch: what a band's
+    /// passes keep between them while the next band is dispatched.
+    void set_scratch(size_t bytes, GLuint binding);
     /// When the GPU was last found done with a band (the host's time from
     /// there on is what follows the last dispatch).
     std::chrono::steady_clock::time_point last_done() const { return last_done_; }
@@ -77,6 +85,8 @@ private:
     bool staged_;
     std::vector<MappedBuffer> slots_;
     std::vector<GlBuffer> device_slots_; ///< staged: where the GPU writes
+    std::vector<GlBuffer> scratch_;      ///< set_scratch's, a slot each
+    GLuint scratch_binding_ = 0;
     std::deque<Queued> queued_;
     int next_slot_ = 0;
     std::chrono::steady_clock::time_point last_done_{};

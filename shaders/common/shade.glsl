@@ -120,7 +120,8 @@ void write_double(uint at, float f)
 void flag_over_budget(uint index)
 {
     uint n = atomicAdd(words[band_planes.w], 1u);
-    words[band_planes.w + 1u + n] = index;
+    if (band_planes.w + 1u + n < uint(words.length())) // (the host checks the count)
+        words[band_planes.w + 1u + n] = index;
 }
 
 // The outputs of pixel `index` of the band: the colour of the hit (local

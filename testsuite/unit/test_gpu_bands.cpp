@@ -253,9 +253,9 @@ TEST(OverlayTiles, EveryPixelWhoseRayMeetsABoxLiesInATileOfIt)
     EXPECT_TRUE(overlay_tiles({}, camera, 0, 16).tiles.empty());
 }
 
-TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)
+/// Two boreholes drilled where the model's stacks are, 1.5 cells wide.
+Scene two_boreholes(const Model &m)
 {
-    const Model m = geology(40, 56, 30);
     const Frame &f = m.frame();
     Scene scene;
     for (const auto &[row, col] : {std::pair{10, 12}, std::pair{25, 40}}) {
@@ -266,7 +266,13 @@ TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)
         scene.boreholes.push_back(std::move(b));
     }
     scene.borehole_radius = 1.5 * f.ew_res();
-    const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 16});
+    return scene;
+}
+
+TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)
+{
+    const Model m = geology(40, 56, 30);
+    const Renderer renderer(m, 2.0, two_boreholes(m), Shading{}, {2, true, 16});
     const Tracer &t = renderer.tracer();
     sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
     const Camera camera = Camera::perspective(
@@ -282,6 +288,49 @@ TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)
     EXPECT_EQ(r.gpu.tiles, size_t(8 * (5 * 2 + 1)));
     EXPECT_GT(r.gpu.borehole_tiles, 0u);
     EXPECT_LT(r.gpu.borehole_tiles, r.gpu.tiles / 3);
+}
+
+TEST_P(GpuBands, BandsWhoseEveryTileABoreholeReachesAndRaysOverTheBudget)
+{
+    // a close-up of a borehole from afar, 12 x 16 pixels: its box reaches
+    // every tile of the image (the model pass runs all the same; the
+    // boreholes' pass reads this frame's hits, not an earlier frame's);
+    // then budgets of 4
+    // loop iterations: rays over it in both passes, each listed once
+    const Model m = geology(40, 56, 30);
+    const Scene scene = two_boreholes(m);
+    const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 4});
+    const Tracer &t = renderer.tracer();
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    const Borehole &b = scene.boreholes.front();
+    const glm::dvec3 axis = t.frame().exaggerate(glm::dvec3(b.x, b.y, t.frame().centre().z));
+    const Outputs all{true, true, true};
+    const double tolerance = 2e-5 * 2 * t.frame().radius();
+    const auto render = [&](const Camera &camera, const std::string &what) {
+        Image got = empty_image(camera, all);
+        const sbrt_gl::GpuFrameReport r =
+            on_gpu.render(camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
+        expect_images_agree(renderer.render_image(camera, all), got, tolerance, what);
+        EXPECT_LE(r.gpu.over_budget, size_t(camera.rows()) * size_t(camera.cols())) << what;
+        return r;
+    };
+    const Camera far = Camera::perspective(
+        t.frame().centre() + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)),
+        t.frame().centre(), 40, 61, 83);
+    render(far, "far first");
+    // the same eye over a larger image first: the hits of its model pass
+    // lie where the close-up's boreholes' pass looks
+    const glm::dvec3 eye = axis + glm::dvec3(30, -40, 60) * m.frame().ew_res();
+    render(Camera::perspective(eye, axis, 30, 61, 83), "close, wide");
+    const Camera close = Camera::perspective(eye, axis, 2, 12, 16);
+    const sbrt_gl::GpuFrameReport r = render(close, "close-up");
+    EXPECT_EQ(r.gpu.borehole_tiles, r.gpu.tiles) << "every tile listed";
+    // and the model pass ran for each band all the same: the boreholes'
+    // pass reads its hits
+    EXPECT_EQ(r.gpu.model_pass_bands, r.gpu.bands);
+    on_gpu.gpu().set_loop_budget(4);
+    EXPECT_GT(render(far, "budget of 4").gpu.over_budget, 0u);
+    render(close, "close-up, budget of 4");
 }
 
 } // namespace
