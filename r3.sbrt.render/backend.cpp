@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "backend.hpp"
 
+#include <algorithm>
+
 #include <optional>
 
 #include "util/error.hpp"
@@ -71,7 +73,16 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
     if (first)
         G_verbose_message(_("Model upload: %.1f ms (kept for the next frames)"),
                           r.gpu.upload_ms);
-    G_verbose_message(_("Read back: %.1f ms; %d band(s)"), r.gpu.readback_ms, r.gpu.bands);
+    if (r.shaded_on_gpu)
+        G_verbose_message(_("Bands back: %d, in host memory as the GPU wrote them (%.2f bytes "
+                            "a pixel); the host's time after the last: %.2f ms"),
+                          r.gpu.bands,
+                          double(r.gpu.host_bytes) /
+                              std::max(1.0, double(camera.rows()) * double(camera.cols())),
+                          r.host_after_ms);
+    else
+        G_verbose_message(_("Bands back: %d, hit records read back and decoded in %.1f ms"),
+                          r.gpu.bands, r.gpu.readback_ms);
     report_bands(r.render);
     report(_("GPU tracing"), camera, r.gpu.trace_ms);
     if (r.gpu.over_budget)

@@ -286,7 +286,10 @@ class TestFrames(TestCase):
             capture_output=True, text=True)
         self.assertEqual(run.returncode, 0, msg=run.stderr)
         self.assertEqual(run.stderr.count("Model upload:"), 1)
-        self.assertEqual(run.stderr.count("Read back:"), 3)
+        self.assertEqual(run.stderr.count("Bands back:"), 3)
+        # shaded on the GPU: the bytes asked for read, nothing else (RGB
+        # and the class id: 3 + 4)
+        self.assertEqual(run.stderr.count("(7.00 bytes a pixel)"), 3, msg=run.stderr)
         self.render("output=cf", "material=cf_m", "frames=3", "zexag=2")
         for k in (1, 2, 3):
             # float32 on the GPU: a few edge pixels may differ
