@@ -23,16 +23,16 @@ uint entry_face(int axis, float d)
     return d > 0.0 ? FACE_BOTTOM : FACE_TOP;
 }
 
-// slab clip along one axis: narrows [t_near, t_far]; false when the ray
-// runs parallel to the slab outside it
-bool clip(int axis, float hi, float lo, float d, float high, inout float t_near,
+// slab clip to [low, high] along one axis: narrows [t_near, t_far]; false
+// when the ray runs parallel to the slab outside it
+bool clip(int axis, float hi, float lo, float d, float low, float high, inout float t_near,
           inout float t_far, inout int near_axis)
 {
     if (d == 0.0) {
         float o = hi + lo;
-        return !(o < 0.0 || o > high);
+        return !(o < low || o > high);
     }
-    float t0 = from_origin(0.0, hi, lo) / d;
+    float t0 = from_origin(low, hi, lo) / d;
     float t1 = from_origin(high, hi, lo) / d;
     if (t0 > t1) {
         float s = t0; t0 = t1; t1 = s;
@@ -132,21 +132,12 @@ bool model_hit_first(uint index, vec3 hi, vec3 lo, vec3 d)
     for (uint k = first; k < last; ++k) {
         uint at = tiles[3] + 6u * tiles[tiles[2] + k];
         float t0 = -1.0 / 0.0, t1 = 1.0 / 0.0;
-        for (int a = 0; a < 3; ++a) {
-            float low = uintBitsToFloat(tiles[at + uint(a)]);
-            float high = uintBitsToFloat(tiles[at + 3u + uint(a)]);
-            if (d[a] == 0.0) {
-                float o = hi[a] + lo[a];
-                if (o < low || o > high)
-                    t0 = 1.0 / 0.0;
-                continue;
-            }
-            float ta = from_origin(low, hi[a], lo[a]) / d[a];
-            float tb = from_origin(high, hi[a], lo[a]) / d[a];
-            t0 = max(t0, min(ta, tb));
-            t1 = min(t1, max(ta, tb));
-        }
-        if (t0 <= t1)
+        int axis = -1;
+        bool met = true;
+        for (int a = 0; a < 3 && met; ++a)
+            met = clip(a, hi[a], lo[a], d[a], uintBitsToFloat(tiles[at + uint(a)]),
+                       uintBitsToFloat(tiles[at + 3u + uint(a)]), t0, t1, axis);
+        if (met && t0 <= t1)
             t_entry = min(t_entry, t0);
     }
     return t_model + 1e-4 * abs(t_model) + 1e-3 < t_entry;
@@ -207,9 +198,9 @@ void trace_pixel()
     // 1. slab clip to [0, cols] x [0, rows] x [0, z_max], without a loop
     float t_near = -1.0 / 0.0, t_far = 1.0 / 0.0;
     int near_axis = -1;
-    if (!clip(0, hi.x, lo.x, d.x, float(grid.x), t_near, t_far, near_axis) ||
-        !clip(1, hi.y, lo.y, d.y, float(grid.y), t_near, t_far, near_axis) ||
-        !clip(2, hi.z, lo.z, d.z, box.x, t_near, t_far, near_axis))
+    if (!clip(0, hi.x, lo.x, d.x, 0.0, float(grid.x), t_near, t_far, near_axis) ||
+        !clip(1, hi.y, lo.y, d.y, 0.0, float(grid.y), t_near, t_far, near_axis) ||
+        !clip(2, hi.z, lo.z, d.z, 0.0, box.x, t_near, t_far, near_axis))
         return;
     uint wall = near_axis >= 0 ? entry_face(near_axis, d[near_axis]) : FACE_NONE;
     // clip planes (unrolled by the count, not a loop over a budget):

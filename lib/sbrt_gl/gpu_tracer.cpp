@@ -193,37 +193,28 @@ void GpuTracer::bind_model() const
 }
 
 
-void GpuTracer::dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, int first_row,
-                         int row_count, GlBuffer &buffer, size_t bytes_per_pixel, void *out)
+void GpuTracer::dispatch_records(const sbrt::Camera &camera, sbrt::GpuView &view,
+                                 int first_row, int row_count)
 {
-    dispatch_bands(camera.cols(), first_row, row_count, buffer, bytes_per_pixel, out,
-                   "the ray casting dispatch", [&](int first, int count) {
-                       view.options[2] = uint32_t(first);
-                       view.options[3] = uint32_t(count);
-                       view_.upload(&view, sizeof view); // stays bound to index 0
-                   });
-}
-
-void GpuTracer::dispatch_bands(int cols, int first_row, int row_count, GlBuffer &buffer,
-                               size_t bytes_per_pixel, void *out, const char *what,
-                               const std::function<void(int, int)> &set_band)
-{
-    const size_t row_bytes = size_t(cols) * bytes_per_pixel;
-    const int band_rows = int(buffer.bytes() / row_bytes);
-    buffer.bind(2);
+    const int cols = camera.cols();
+    const size_t row_bytes = size_t(cols) * sizeof(sbrt::GpuPixelHit);
+    const int band_rows = int(band_->bytes() / row_bytes);
+    band_->bind(2);
     for (int first = first_row; first < first_row + row_count; first += band_rows) {
         const int count = std::min(band_rows, first_row + row_count - first);
-        set_band(first, count);
+        view.options[2] = uint32_t(first);
+        view.options[3] = uint32_t(count);
+        view_.upload(&view, sizeof view); // stays bound to index 0
         auto start = Clock::now();
         timer_.time(int(Pass::records), [&] {
             gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
         });
         gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         gl_.Finish();
-        check_gl(gl_, what);
+        check_gl(gl_, "the ray casting dispatch");
         stats_.trace_ms += ms_since(start);
         start = Clock::now();
-        buffer.download(static_cast<uint8_t *>(out) + size_t(first - first_row) * row_bytes,
+        band_->download(records_.data() + size_t(first - first_row) * size_t(cols),
                         size_t(count) * row_bytes);
         stats_.readback_ms += ms_since(start);
         ++stats_.bands;
@@ -251,8 +242,7 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
     sbrt::GpuView view = traced_view(camera, loop_budget);
     record_program().use();
     bind_model();
-    dispatch(camera, view, first_row, row_count, *band_, sizeof(sbrt::GpuPixelHit),
-             records_.data());
+    dispatch_records(camera, view, first_row, row_count);
 
     const auto start = Clock::now();
     std::vector<size_t> over_per_row(size_t(row_count), 0);

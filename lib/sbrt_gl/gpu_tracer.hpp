@@ -171,18 +171,11 @@ private:
     /// The view block of `camera`, with the first pass's tile bounds on the
     /// GPU (computed when the camera is not the last one's).
     sbrt::GpuView traced_view(const sbrt::Camera &camera, uint32_t loop_budget);
-    /// Dispatches rows [first, first + count) in bands of at most
-    /// `band_rows`, reading `bytes_per_pixel` of each back into `out`.
-    void dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, int first, int count,
-                  GlBuffer &buffer, size_t bytes_per_pixel, void *out);
-    /// The bound program over rows [first, first + count) of an image
-    /// `cols` wide, in bands that fit `buffer` (binding 2), each band's
-    /// `bytes_per_pixel` read back into `out`; `set_band(first, count)`
-    /// uploads what the program reads of the band; `what` names the step
-    /// in a GL error.
-    void dispatch_bands(int cols, int first, int count, GlBuffer &buffer,
-                        size_t bytes_per_pixel, void *out, const char *what,
-                        const std::function<void(int, int)> &set_band);
+    /// The bound hit records' program over rows [first, first + count) of
+    /// `camera`'s image, in bands that fit band_ (binding 2), each band's
+    /// records read back into records_.
+    void dispatch_records(const sbrt::Camera &camera, sbrt::GpuView &view, int first,
+                          int count);
     /// The shading program of `pass` (shade, shade_boreholes or
     /// kernel_shade) for `shading` (with its drape), compiled when first
     /// needed.

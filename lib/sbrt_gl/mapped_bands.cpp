@@ -62,10 +62,11 @@ std::optional<sbrt::GpuBandLayout> MappedBands::layout(int rows, int cols,
                                                        const sbrt::Outputs &outputs)
 {
     if (layout_) {
-        const sbrt::GpuBandLayout same = sbrt::gpu_band_layout(layout_->rows, cols, outputs);
-        if (layout_->rows >= rows && same.words == layout_->words &&
-            same.material_at == layout_->material_at && same.depth_at == layout_->depth_at &&
-            same.elevation_at == layout_->elevation_at)
+        // the frame's while it holds the band: as wide, the same outputs
+        if (layout_->rows >= rows && layout_->cols == cols &&
+            (layout_->material_at != 0) == outputs.material &&
+            (layout_->elevation_at != 0) == outputs.elevation &&
+            (layout_->depth_at != 0) == outputs.depth)
             return layout_;
         drop_queued(); // another layout after all
     }

@@ -37,15 +37,15 @@ struct FirstPassReport {
 /// last column (inclusive).
 using PixelRect = std::array<int, 4>;
 
-/// The rectangles of `camera`'s pixels whose rays may meet one of `boxes`
-/// (low and high corners, exaggerated map coordinates): their projections,
-/// a pixel of margin (boxes wholly behind a perspective camera: none);
-/// none at all where a box reaches behind the camera (every pixel may).
 /// The corners of `box` (low, high) in front of `camera`, in normalised
 /// device coordinates; `behind` counts the others (a perspective camera's).
 std::vector<glm::dvec2> projected_corners(const std::array<glm::dvec3, 2> &box,
                                           const Camera &camera, int &behind);
 
+/// The rectangles of `camera`'s pixels whose rays may meet one of `boxes`
+/// (low and high corners, exaggerated map coordinates): their projections,
+/// a pixel of margin (boxes wholly behind a perspective camera: none);
+/// none at all where a box reaches behind the camera (every pixel may).
 std::optional<std::vector<PixelRect>> pixel_rects_of(
     const std::vector<std::array<glm::dvec3, 2>> &boxes, const Camera &camera);
 
@@ -91,9 +91,9 @@ public:
 /// \brief The exact CPU tracer over the rows of `camera`, on `threads`
 /// threads (0: all cores). With `first_pass` (and the tracer's pyramid)
 /// each ray starts where the coarse first pass (FirstHitBounds) puts its
-/// tile's first possible hit, found at construction: on `pool`'s workers a
-/// tile at a time where given, else on `threads` threads a tile row at a
-/// time. Holds references to both arguments.
+/// tile's first possible hit, found at construction on `pool`'s workers
+/// where given, else on `threads` threads. Holds references to both
+/// arguments.
 class CpuRowTracer : public RowTracer {
 public:
     CpuRowTracer(const Tracer &tracer, const Camera &camera, unsigned threads = 0,

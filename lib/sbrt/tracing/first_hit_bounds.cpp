@@ -80,33 +80,33 @@ FirstHitBounds::FirstHitBounds(const Tracer &tracer, const Camera &camera, int t
                                int budget, unsigned threads)
     : camera_(camera), tile_(std::max(1, tile)), budget_(std::max(1, budget))
 {
-    if (!allocate(tracer))
-        return;
-    const int tile_rows = (camera.rows() + tile_ - 1) / tile_;
-    for_each_row(tile_rows, threads, [&](int ty) {
-        for (int tx = 0; tx < tile_cols_; ++tx)
-            s_bounds_[size_t(ty) * tile_cols_ + tx] = tile_bound(tracer, ty * tile_, tx * tile_);
-    });
+    if (allocate(tracer))
+        for_each_row(tile_runs(), threads, [&](int r) { find_run(tracer, r); });
 }
 
 FirstHitBounds::FirstHitBounds(const Tracer &tracer, const Camera &camera, int tile,
                                int budget, WorkerPool &pool)
     : camera_(camera), tile_(std::max(1, tile)), budget_(std::max(1, budget))
 {
-    if (!allocate(tracer))
-        return;
-    // runs of 16 tiles (tens of microseconds): many more than workers, and
-    // few enough that taking one costs nothing beside it
-    const size_t run = 16, runs = (s_bounds_.size() + run - 1) / run;
+    if (allocate(tracer))
+        pool.for_each_row(0, tile_runs(), [&](int r, unsigned) { find_run(tracer, r); });
+}
+
+int FirstHitBounds::tile_runs() const
+{
+    const size_t runs = (s_bounds_.size() + TILE_RUN - 1) / TILE_RUN;
     if (runs > size_t(INT32_MAX))
         fail("first pass: ", s_bounds_.size(), " tiles");
-    pool.for_each_row(0, int(runs), [&](int r, unsigned) {
-        const size_t end = std::min(s_bounds_.size(), (size_t(r) + 1) * run);
-        for (size_t k = size_t(r) * run; k < end; ++k) {
-            const int ty = int(k / size_t(tile_cols_)), tx = int(k % size_t(tile_cols_));
-            s_bounds_[k] = tile_bound(tracer, ty * tile_, tx * tile_);
-        }
-    });
+    return int(runs);
+}
+
+void FirstHitBounds::find_run(const Tracer &tracer, int run)
+{
+    const size_t end = std::min(s_bounds_.size(), (size_t(run) + 1) * TILE_RUN);
+    for (size_t k = size_t(run) * TILE_RUN; k < end; ++k) {
+        const int ty = int(k / size_t(tile_cols_)), tx = int(k % size_t(tile_cols_));
+        s_bounds_[k] = tile_bound(tracer, ty * tile_, tx * tile_);
+    }
 }
 
 bool FirstHitBounds::allocate(const Tracer &tracer)

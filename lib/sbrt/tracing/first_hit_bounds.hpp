@@ -32,9 +32,7 @@ public:
                    int budget, unsigned threads = 0);
     /// No first pass: every bound is 0.
     explicit FirstHitBounds(const Camera &camera) : camera_(camera), tile_(1), budget_(1) {}
-    /// The same on `pool`'s workers, 16 tiles at a time (no worker waits
-    /// long for another at the end of the pass: a tile is a microsecond or
-    /// two).
+    /// The same on `pool`'s workers.
     FirstHitBounds(const Tracer &tracer, const Camera &camera, int tile, int budget,
                    WorkerPool &pool);
     /// A t (of the unit ray of pixel (row, col), `ray` = camera.ray(row,
@@ -58,6 +56,13 @@ private:
     double tile_bound(const Tracer &tracer, int row0, int col0) const;
     /// The arrays of the bounds of `tracer`'s pyramid; false without one.
     bool allocate(const Tracer &tracer);
+    /// Tiles are found in runs of TILE_RUN, row-major: tens of
+    /// microseconds each, many more than threads, and few enough that
+    /// taking one from the threads' shared counter costs nothing beside it.
+    static constexpr size_t TILE_RUN = 16;
+    int tile_runs() const;
+    /// The bounds of run `run`'s tiles.
+    void find_run(const Tracer &tracer, int run);
     /// The bound of the tile of pixel (row, col), in s.
     double s_bound(int row, int col) const
     {
