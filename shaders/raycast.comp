@@ -115,20 +115,26 @@ bool climb(uint level, int ix, int iy, vec3 hi, vec3 lo, vec3 d, float z_in,
 }
 
 #ifdef SBRT_TILE_LIST
+// A margin for float rounding around a ray's t
+float t_margin(float t) { return 1e-4 * abs(t) + 1e-3; }
+
 // Whether the model's pass found the opaque hit of pixel `index` before
 // its ray (local: (hi + t d) + lo) enters any box of its tile's boreholes:
-// then nothing of them shows there (a margin for float rounding)
-bool model_hit_first(uint index, vec3 hi, vec3 lo, vec3 d)
+// then nothing of them shows there. Else [t_from, t_to] holds where the
+// ray is in the boxes and the model pass's hit (t_to inf where that hit may
+// be drilled away): with every stratum opaque, outside it the ray meets
+// what the model pass found (t_from -inf: no model pass)
+bool model_hit_first(uint index, vec3 hi, vec3 lo, vec3 d, out float t_from, out float t_to)
 {
+    t_from = -1.0 / 0.0;
+    t_to = 1.0 / 0.0;
     uint tile = gl_WorkGroupID.x, first = tiles[tiles[1] + tile], last = tiles[tiles[1] + tile + 1u];
     if (first == last)
         return false; // no box lists: the camera among them, no model pass
     float t_model = hit_ts[index];
     if (t_model == -1.0 / 0.0)
         return true; // over the model pass's budget: the host traces it
-    if (isinf(t_model))
-        return false; // no opaque hit
-    float t_entry = 1.0 / 0.0;
+    float t_entry = 1.0 / 0.0, t_exit = -1.0 / 0.0;
     for (uint k = first; k < last; ++k) {
         uint at = tiles[3] + 6u * tiles[tiles[2] + k];
         float t0 = -1.0 / 0.0, t1 = 1.0 / 0.0;
@@ -137,10 +143,18 @@ bool model_hit_first(uint index, vec3 hi, vec3 lo, vec3 d)
         for (int a = 0; a < 3 && met; ++a)
             met = clip(a, hi[a], lo[a], d[a], uintBitsToFloat(tiles[at + uint(a)]),
                        uintBitsToFloat(tiles[at + 3u + uint(a)]), t0, t1, axis);
-        if (met && t0 <= t1)
+        if (met && t0 <= t1) {
             t_entry = min(t_entry, t0);
+            t_exit = max(t_exit, t1);
+        }
     }
-    return t_model + 1e-4 * abs(t_model) + 1e-3 < t_entry;
+    // no box met, or the model's hit before them (inf: no opaque hit)
+    if (isinf(t_entry) || t_model + t_margin(t_model) < t_entry)
+        return true;
+    float t_in = min(t_entry, t_model);
+    t_from = t_in - t_margin(t_in);
+    t_to = t_model + t_margin(t_model) < t_exit ? 1.0 / 0.0 : t_exit + t_margin(t_exit);
+    return false;
 }
 
 // The colour the model's pass packed for pixel (col, row) of the band
@@ -182,7 +196,8 @@ void trace_pixel()
     vec3 d = forward.xyz + x * du.xyz + y * dv.xyz;
     float t_min = spread_u.w;
 #ifdef SBRT_TILE_LIST
-    if (model_hit_first(index, hi, lo, d)) {
+    float t_from, t_to;
+    if (model_hit_first(index, hi, lo, d, t_from, t_to)) {
         // what the model's pass wrote stays: its colour to the packing
         group_rgb[gl_LocalInvocationIndex] = band_rgb(pixel.y, pixel.x);
         return;
@@ -190,6 +205,15 @@ void trace_pixel()
 #endif
     ray_d = d;
     t_eye = t_min;
+#ifdef SBRT_BOX_SPANS
+    // every stratum opaque: outside [t_from, t_to] the ray meets what the
+    // model pass found, whose outputs stay unless a hit in there replaces
+    // them
+    bool spans = !isinf(t_from);
+    if (spans)
+        group_rgb[gl_LocalInvocationIndex] = band_rgb(pixel.y, pixel.x);
+    else
+#endif
     finish(index, vec3(0.0), 0u, 0.0);
 #if defined(SBRT_OVERLAYS) || defined(SBRT_BOREHOLES)
     ov_begin(index, hi, lo, d);
@@ -235,6 +259,14 @@ void trace_pixel()
             wall = FACE_NONE;
         }
     }
+#ifdef SBRT_BOX_SPANS
+    if (spans && t_near < t_from) {
+        t_near = t_from;
+        wall = FACE_NONE;
+    }
+    if (spans)
+        t_far = min(t_far, t_to);
+#endif
     if (!(t_near <= t_far) || box.x <= 0.0)
         return;
 #ifdef SBRT_OVERLAYS
@@ -463,6 +495,9 @@ void trace_pixel()
 #endif
     break;
     }
+#ifdef SBRT_BOX_SPANS
+    if (!spans)
+#endif
     finish(index, vec3(0.0), 0u, 0.0);
 }
 

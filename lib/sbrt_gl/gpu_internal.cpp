@@ -7,6 +7,7 @@
 #include "gpu_internal.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "shader_sources.hpp"
 #include "tracing/cpu_tracing.hpp"
@@ -53,6 +54,15 @@ const char *const FIRST_PASS_DEFINES =
 static_assert(sbrt::FIRST_PASS_TILE == 8 && sbrt::FIRST_PASS_BUDGET == 32,
               "FIRST_PASS_DEFINES follow cpu_tracing.hpp");
 
+/// Whether the rays meet nothing translucent: a ray's outputs are then its
+/// first hit's alone, whatever it crossed before.
+bool every_stratum_opaque(const sbrt::Tracer &tracer)
+{
+    const std::vector<double> &extinction = tracer.scene().translucency.extinction;
+    return std::all_of(extinction.begin(), extinction.end(),
+                       [](double e) { return e == std::numeric_limits<double>::infinity(); });
+}
+
 } // namespace
 
 /// The sources of `pass` for `layout` and the form `model` is held in;
@@ -88,6 +98,11 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             drape && shade ? "#define SBRT_DRAPE 1\n" : "",
             kernel ? "#define SBRT_KERNEL 1\n" : "",
             pass == Pass::shade_boreholes ? "#define SBRT_TILE_LIST 1\n" : "",
+            // the boreholes' pass traces again only where the ray is in
+            // their boxes (or the model pass's hit may be drilled away)
+            pass == Pass::shade_boreholes && every_stratum_opaque(tracer)
+                ? "#define SBRT_BOX_SPANS 1\n"
+                : "",
             hit_t ? "#define SBRT_HIT_T 1\n" : "",
             overlays == sbrt::GpuOverlayMode::alone        ? "#define SBRT_OVERLAYS 1\n"
             : overlays == sbrt::GpuOverlayMode::with_model ? "#define SBRT_BOREHOLES 1\n"

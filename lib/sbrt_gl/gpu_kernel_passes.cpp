@@ -100,7 +100,7 @@ void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int
         kernel_across_->bind(6);
     }
     shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
-               [&](int first, int count) {
+               [&](int first, int count, int) {
                    kernel_.counts[1] = uint32_t(first);
                    kernel_.counts[2] = uint32_t(count);
                    kernel_block_->upload(&kernel_, sizeof kernel_);

@@ -374,6 +374,9 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
         boreholes ? tracer_.overlay_boxes() : std::vector<std::array<glm::dvec3, 2>>();
     GlComputeProgram *borehole_program =
         boreholes ? &shading_program(shading, Pass::shade_boreholes) : nullptr;
+    // the camera among the boxes: every tile in the boreholes' pass, and no
+    // model pass (no box lists to test its hits against)
+    const bool every_tile = boreholes && sbrt::overlay_tiles_everywhere(boxes, camera);
     sbrt::GpuView view = traced_view(camera, loop_budget_);
     bind_model();
     bind_shading(shade, shading);
@@ -387,22 +390,13 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                                  : 0,
                        13);
     shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
-               [&](int first, int count) {
+               [&](int first, int count, int slot) {
                    view.options[2] = uint32_t(first);
                    view.options[3] = uint32_t(count);
                    view_.upload(&view, sizeof view); // stays bound to index 0
-                   const sbrt::OverlayTiles tiles =
-                       boreholes ? sbrt::overlay_tiles(boxes, camera, first, count)
-                                 : sbrt::OverlayTiles();
                    const size_t all_tiles =
                        size_t((cols + 7) / 8) * size_t((count + 7) / 8);
-                   if (boreholes) {
-                       stats_.borehole_tiles += tiles.tiles.size();
-                       stats_.tiles += all_tiles;
-                   }
-                   // the model pass wherever some tile is not listed, and
-                   // wherever the boreholes' pass reads its hits (box lists)
-                   if (!boreholes || !tiles.every_tile) {
+                   if (!every_tile) {
                        ++stats_.model_pass_bands;
                        // the model alone: skipping as if there were no boreholes
                        if (boreholes && model_pyramid_)
@@ -414,18 +408,31 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                        });
                        pyramid_.bind(4);
                    }
-                   if (tiles.tiles.empty())
+                   if (!boreholes)
                        return;
-                   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-                   // a buffer of its own for each band: GL keeps the one a
-                   // queued dispatch reads until that is done
+                   // the GPU on the model's pass while the host lists the
+                   // tiles the boreholes may reach
+                   gl_.Flush();
+                   const auto listing = Clock::now();
+                   const sbrt::OverlayTiles tiles = sbrt::overlay_tiles(boxes, camera, first, count);
+                   stats_.borehole_tiles += tiles.tiles.size();
+                   stats_.tiles += all_tiles;
+                   if (tiles.tiles.empty()) {
+                       stats_.borehole_list_ms += ms_since(listing);
+                       return;
+                   }
                    const std::vector<uint32_t> words =
                        sbrt::make_gpu_tile_list(tiles, tracer_, boxes);
-                   tiles_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                                  checked_bytes(words.size() * 4, max_block_bytes_,
-                                                "boreholes' tiles"),
-                                  words.data());
-                   tiles_->bind(12);
+                   stats_.borehole_list_ms += ms_since(listing);
+                   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+                   const size_t bytes = checked_bytes(words.size() * 4, max_block_bytes_,
+                                                      "boreholes' tiles");
+                   std::optional<GlBuffer> &list = tile_lists_[size_t(slot)];
+                   if (!list || list->bytes() < bytes) // room to grow
+                       list.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                                    std::min(bytes + bytes / 2, max_block_bytes_));
+                   list->write(0, words.data(), bytes);
+                   list->bind(12);
                    borehole_program->use();
                    timer_.time(int(Pass::shade_boreholes), [&] {
                        gl_.DispatchCompute(GLuint(tiles.tiles.size()), 1, 1);
@@ -436,7 +443,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
 void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_count,
                            const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,
                            sbrt::Band &band, unsigned cpu_threads,
-                           const std::function<void(int, int)> &dispatch)
+                           const std::function<void(int, int, int)> &dispatch)
 {
     bands_.reset_gpu_ms();
     uint8_t *host = bands_.band(first_row, row_count, camera.rows(), dispatch);

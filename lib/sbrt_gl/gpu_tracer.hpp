@@ -10,6 +10,7 @@
 #define SBRT_GL_GPU_TRACER_HPP
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <functional>
 #include <optional>
@@ -46,6 +47,9 @@ struct GpuStats {
     /// Boreholes with the model: the 8 x 8 tiles the boreholes' pass
     /// shaded again, of all the tiles of the bands.
     size_t borehole_tiles = 0, tiles = 0;
+    /// The host's time listing those tiles and their boxes (while the GPU
+    /// runs the model pass).
+    double borehole_list_ms = 0;
     /// Bands the model pass shaded (every band but where a borehole's box
     /// holds the camera).
     int model_pass_bands = 0;
@@ -189,13 +193,13 @@ private:
     /// the drape uploaded when first needed).
     void bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading);
     /// Rows [first, first + count) shaded by the bound program into a
-    /// mapped band that `band` views: `dispatch(first, count)` queues one
-    /// band's dispatch; the rays over the loop budget traced and shaded on
+    /// mapped band that `band` views: `dispatch(first, count, slot)` queues
+    /// one band's dispatch into MappedBands' slot `slot`; the rays over the loop budget traced and shaded on
     /// the host.
     void shade_band(const sbrt::Camera &camera, int first, int count,
                     const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,
                     sbrt::Band &band, unsigned cpu_threads,
-                    const std::function<void(int, int)> &dispatch);
+                    const std::function<void(int, int, int)> &dispatch);
     /// The frame's band layout for `count` rows of `outputs` into `shade`.
     sbrt::GpuBandLayout band_layout(const sbrt::Camera &camera, int count,
                                     const sbrt::Outputs &outputs, sbrt::GpuShade &shade);
@@ -222,9 +226,10 @@ private:
     /// block, the band's output words
     std::optional<GlComputeProgram> shade_program_, drape_program_;
     /// the boreholes' pass over listed tiles (with a drape or without),
-    /// and the tiles of the band last dispatched (binding 12)
+    /// and the tiles of the band dispatched into each of MappedBands'
+    /// slots (binding 12): written only once the GPU is done with the slot
     std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_;
-    std::optional<GlBuffer> tiles_;
+    std::array<std::optional<GlBuffer>, MappedBands::SLOTS> tile_lists_;
     /// boreholes and curtains drawn by the shading program (bindings 9,
     /// 10 and, with the model, each cell's boreholes: 11)
     std::optional<GlBuffer> overlays_, logs_, cell_overlays_;

@@ -87,7 +87,7 @@ std::optional<sbrt::GpuBandLayout> MappedBands::layout(int rows, int cols,
     return layout_;
 }
 
-void MappedBands::queue(int first, int count, const std::function<void(int, int)> &dispatch)
+void MappedBands::queue(int first, int count, const std::function<void(int, int, int)> &dispatch)
 {
     const int slot = next_slot_;
     next_slot_ = (next_slot_ + 1) % SLOTS;
@@ -102,7 +102,7 @@ void MappedBands::queue(int first, int count, const std::function<void(int, int)
         GlBuffer &device = device_slots_[size_t(slot)];
         device.write(count_at, &zero, 4);
         device.bind(2);
-        dispatch(first, count);
+        dispatch(first, count, slot);
         // the outputs and the count into the mapped buffer, on the GPU
         gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         gl_.BindBuffer(GL_COPY_READ_BUFFER, device.name());
@@ -113,7 +113,7 @@ void MappedBands::queue(int first, int count, const std::function<void(int, int)
     else {
         std::memcpy(buffer.host() + count_at, &zero, 4);
         buffer.bind(2);
-        dispatch(first, count);
+        dispatch(first, count, slot);
     }
     gl_.MemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
     check_gl(gl_, "the shading dispatch");
@@ -121,7 +121,7 @@ void MappedBands::queue(int first, int count, const std::function<void(int, int)
 }
 
 uint8_t *MappedBands::band(int first, int count, int image_rows,
-                           const std::function<void(int, int)> &dispatch)
+                           const std::function<void(int, int, int)> &dispatch)
 {
     if (!layout_ || count > layout_->rows)
         sbrt::fail("MappedBands::band: ", count, " rows without a layout that holds them");

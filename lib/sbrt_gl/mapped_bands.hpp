@@ -51,12 +51,12 @@ public:
     /// it would not fit a storage buffer.
     std::optional<sbrt::GpuBandLayout> layout(int rows, int cols, const sbrt::Outputs &outputs);
     /// Rows [first, first + count) of an image of `image_rows`, laid out as
-    /// the frame's layout: dispatched by `dispatch(first, count)` with the
-    /// slot bound to storage binding 2 (unless the last call dispatched it
+    /// the frame's layout: dispatched by `dispatch(first, count, slot)` with
+    /// the slot bound to storage binding 2 (unless the last call dispatched it
     /// ahead); then the next band (as many rows) dispatched ahead; returns
     /// the band's memory once the GPU is done with it.
     uint8_t *band(int first, int count, int image_rows,
-                  const std::function<void(int, int)> &dispatch);
+                  const std::function<void(int, int, int)> &dispatch);
 
     /// A GPU buffer of `bytes` for each slot (none: 0), bound to storage
     /// binding `binding` with its slot for each dispatch: what a band's
@@ -77,7 +77,7 @@ private:
     /// Forgets the bands dispatched and not handed out.
     void drop_queued();
     /// Dispatches rows [first, first + count) into the next slot.
-    void queue(int first, int count, const std::function<void(int, int)> &dispatch);
+    void queue(int first, int count, const std::function<void(int, int, int)> &dispatch);
 
     const GlApi &gl_;
     size_t max_bytes_;

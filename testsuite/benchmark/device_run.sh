@@ -47,7 +47,8 @@ bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle
 sections=" ${SECTIONS:-unit gpu large boreholes scaling contention} "
 run() { [[ "$sections" == *" $1 "* ]]; }
 
-# 1. the GL unit tests on this GPU (EGL; the OSMesa ones need libOSMesa)
+# 1. the GL unit tests on this GPU (EGL; the OSMesa ones need libOSMesa): on
+# a fresh machine every program is compiled, about 2.5 minutes on an H100
 if run unit && [ -x "$bundle/sbrt_unit_tests" ]; then
     "$bundle/sbrt_unit_tests" \
         --gtest_filter='*egl*:*GpuBands*/0:*OverlayTiles*:*GpuBandLayout*:Renderer*:BandFlow*:WorkerPool*' 2>&1 |
@@ -112,14 +113,20 @@ for build in "${builds[@]}"; do
 done
 
 # 5. the machine's limit: B's single-thread frame alone, then on every core
-# at once in as many processes (nothing shared but the machine)
+# at once in as many processes (nothing shared but the machine), at both
+# sizes of the scaling table
 if run contention && [ -d "$data/geo_B" ]; then
-    taskset -c 0 "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 \
-        reference=0 label=B/alone | grep "^frame " | sed "s/^/device contention processes=1 /"
-    for ((k = 0; k < cores; ++k)); do
-        taskset -c "$k" "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 \
-            reference=0 label="B/core$k" >"$data/contention_$k.txt" &
+    for px in "cols=1056 rows=884" "cols=2112 rows=1768"; do
+        taskset -c 0 "$bundle/trace_bench" frame "$data/geo_B" $best $px threads=1 repeat=3 \
+            reference=0 label=B/alone | grep "^frame " | sed "s/^/device contention processes=1 /"
+        for ((k = 0; k < cores; ++k)); do
+            taskset -c "$k" "$bundle/trace_bench" frame "$data/geo_B" $best $px threads=1 \
+                repeat=3 reference=0 label="B/core$k" >"$data/contention_$k.txt" &
+        done
+        wait
+        cat "$data"/contention_*.txt | grep "^frame " |
+            awk -v px="$px" '{ for (i = 1; i <= NF; ++i) if ($i ~ /^frame_ms=/) {
+                                   split($i, v, "="); sum += v[2]; n += 1 } }
+                             END { printf "device contention processes=%d %s mean_frame_ms=%.1f\n", n, px, sum / n }'
     done
-    wait
-    cat "$data"/contention_*.txt | grep "^frame " | sed "s/^/device contention processes=$cores /"
 fi

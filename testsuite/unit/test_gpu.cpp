@@ -868,6 +868,17 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
     const Image want = renderer.render_image(camera, {});
     const Renderer plain(m, 2.0, Scene{}, Shading{}, {2, true, 16});
     EXPECT_NE(plain.render_image(camera, {}).rgb, want.rgb);
+    // logs standing above the surface, seen from low: rays meet them in
+    // their boxes before ground beyond the boxes (the boreholes' pass traces
+    // again only where a ray is in a box)
+    Scene tall = scene;
+    for (Borehole &b : tall.boreholes)
+        b.stack.push_back({2, b.stack.back().top + 8});
+    const Renderer towers(m, 2.0, tall, Shading{}, {2, true, 16});
+    const Camera low = Camera::perspective(
+        t.frame().centre() + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(0.5, -0.9, 0.25)),
+        t.frame().centre(), 40, 61, 83);
+    expect_gpu_shading_as_cpu(*context_, layout(), towers, low, "logs above the surface");
     // split cylinders through gaps in their logs, and a translucent material
     Scene split = split_through_gaps(scene);
     split.translucency = sbrt_test::cut_and_translucent_scene(m).translucency;

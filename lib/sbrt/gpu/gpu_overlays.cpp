@@ -77,24 +77,44 @@ std::vector<Point> convex_hull(std::vector<Point> points)
     return hull;
 }
 
-/// Whether the rectangle [x0, x1] x [y0, y1] and the convex polygon `hull`
-/// (counter-clockwise, within the rectangle's bounds on both axes as far
-/// as the caller checked) overlap: no edge of the hull separates them.
-bool overlaps(const std::vector<Point> &hull, double x0, double x1, double y0, double y1)
+/// The x-extent of the convex polygon `hull` (at least 3 points) within
+/// the horizontal slab y0 <= y <= y1: false where the slab misses it. Its
+/// edges clipped to the slab; a rectangle spanning the slab meets the
+/// polygon exactly where it meets that extent.
+bool slab_extent(const std::vector<Point> &hull, double y0, double y1, double &x0, double &x1)
 {
-    for (size_t i = 0; i < hull.size() && hull.size() >= 3; ++i) {
-        const Point &a = hull[i], &b = hull[(i + 1) % hull.size()];
-        // the rectangle wholly to the right of edge a -> b: outside
-        bool outside = true;
-        for (const Point c : {Point(x0, y0), Point(x1, y0), Point(x0, y1), Point(x1, y1)})
-            outside = outside && cross(a, b, c) < 0;
-        if (outside)
-            return false;
+    x0 = INFINITY;
+    x1 = -INFINITY;
+    for (size_t i = 0; i < hull.size(); ++i) {
+        Point a = hull[i], b = hull[(i + 1) % hull.size()];
+        if (a.y > b.y)
+            std::swap(a, b);
+        if (b.y < y0 || a.y > y1)
+            continue;
+        // the edge from where it enters the slab to where it leaves
+        const auto at = [&](double y) {
+            return b.y == a.y ? a.x : a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y));
+        };
+        const double xa = a.y >= y0 ? a.x : at(y0), xb = b.y <= y1 ? b.x : at(y1);
+        x0 = std::min({x0, xa, xb});
+        x1 = std::max({x1, xa, xb});
     }
-    return true;
+    return x0 <= x1;
 }
 
 } // namespace
+
+bool overlay_tiles_everywhere(const std::vector<std::array<glm::dvec3, 2>> &boxes,
+                              const Camera &camera)
+{
+    for (const auto &box : boxes) {
+        int behind = 0;
+        projected_corners(box, camera, behind);
+        if (behind > 0 && behind < 8)
+            return true;
+    }
+    return false;
+}
 
 OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
                            const Camera &camera, int first_row, int rows)
@@ -103,8 +123,8 @@ OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
     const int tile_cols = (cols + side - 1) / side, tile_rows = (rows + side - 1) / side;
     if (tile_cols > 0xffff || tile_rows > 0xffff)
         fail("overlay_tiles: ", tile_cols, " x ", tile_rows, " tiles, more than 65535 a side");
-    // per tile, the boxes that reach it
-    std::vector<std::vector<uint32_t>> reached(size_t(tile_cols) * size_t(tile_rows));
+    // (tile, box) for each tile a box reaches, box by box
+    std::vector<std::pair<uint32_t, uint32_t>> reached;
     OverlayTiles out;
     for (size_t b = 0; b < boxes.size() && !out.every_tile; ++b) {
         const auto &box = boxes[b];
@@ -127,32 +147,55 @@ OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
             y0 = std::min(y0, p.y);
             y1 = std::max(y1, p.y);
         }
-        // the tiles of its bounds (one pixel of margin), clamped before the
+        // the tile rows of its bounds (one pixel of margin), clamped before the
         // conversion to int (a box far outside projects far outside any int)
         const auto tile = [&](double v, int tiles) {
             return int(std::clamp(std::floor(v / side), -1.0, double(tiles)));
         };
-        const int tx0 = std::max(0, tile(x0 - 1, tile_cols)),
-                  tx1 = std::min(tile_cols - 1, tile(x1 + 1, tile_cols));
         const int ty0 = std::max(0, tile(y0 - 1, tile_rows)),
                   ty1 = std::min(tile_rows - 1, tile(y1 + 1, tile_rows));
-        for (int ty = ty0; ty <= ty1; ++ty)
-            for (int tx = tx0; tx <= tx1; ++tx)
-                // the tile's pixel centres, one pixel wider
-                if (overlaps(hull, tx * side - 1.0, tx * side + side, ty * side - 1.0,
-                             ty * side + side))
-                    reached[size_t(ty) * size_t(tile_cols) + size_t(tx)].push_back(uint32_t(b));
-    }
-    for (int ty = 0; ty < tile_rows; ++ty)
-        for (int tx = 0; tx < tile_cols; ++tx) {
-            const std::vector<uint32_t> &r = reached[size_t(ty) * size_t(tile_cols) + size_t(tx)];
-            if (!out.every_tile && r.empty())
+        for (int ty = ty0; ty <= ty1; ++ty) {
+            // the row's pixel centres, one pixel wider: where the hull lies
+            // across them (a hull of fewer than 3 points: its bounds)
+            double row_x0 = x0, row_x1 = x1;
+            if (hull.size() >= 3 &&
+                !slab_extent(hull, ty * side - 1.0, ty * side + side, row_x0, row_x1))
                 continue;
-            out.tiles.push_back(uint32_t(tx) | uint32_t(ty) << 16);
-            out.box_first.push_back(uint32_t(out.boxes.size()));
-            if (!out.every_tile)
-                out.boxes.insert(out.boxes.end(), r.begin(), r.end());
+            // tile tx's centres, one pixel wider: [8 tx - 1, 8 tx + 8]
+            const int tx0 = int(std::clamp(std::ceil((row_x0 - side) / side), 0.0,
+                                           double(tile_cols))),
+                      tx1 = int(std::clamp(std::floor((row_x1 + 1) / side), -1.0,
+                                           double(tile_cols - 1)));
+            for (int tx = tx0; tx <= tx1; ++tx)
+                reached.emplace_back(uint32_t(ty) * uint32_t(tile_cols) + uint32_t(tx),
+                                     uint32_t(b));
         }
+    }
+    if (out.every_tile) {
+        for (int ty = 0; ty < tile_rows; ++ty)
+            for (int tx = 0; tx < tile_cols; ++tx) {
+                out.tiles.push_back(uint32_t(tx) | uint32_t(ty) << 16);
+                out.box_first.push_back(0);
+            }
+        out.box_first.push_back(0);
+        return out;
+    }
+    // grouped by tile, row by row, each tile's boxes in their order (a
+    // counting sort on the tile)
+    std::vector<uint32_t> first(size_t(tile_cols) * size_t(tile_rows) + 1, 0);
+    for (const auto &[at, box] : reached)
+        ++first[at + 1];
+    for (size_t t = 0; t + 1 < first.size(); ++t) {
+        if (first[t + 1] != 0) {
+            out.tiles.push_back(uint32_t(t % size_t(tile_cols)) |
+                                uint32_t(t / size_t(tile_cols)) << 16);
+            out.box_first.push_back(first[t]);
+        }
+        first[t + 1] += first[t];
+    }
+    out.boxes.resize(reached.size());
+    for (const auto &[at, box] : reached)
+        out.boxes[first[at]++] = box;
     out.box_first.push_back(uint32_t(out.boxes.size()));
     return out;
 }

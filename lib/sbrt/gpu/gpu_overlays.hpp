@@ -78,6 +78,11 @@ struct OverlayTiles {
 OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
                            const Camera &camera, int first_row, int rows);
 
+/// Whether some of `boxes` lies partly behind `camera` (the camera among
+/// them): then overlay_tiles lists every tile, without box lists.
+bool overlay_tiles_everywhere(const std::vector<std::array<glm::dvec3, 2>> &boxes,
+                              const Camera &camera);
+
 /// `buffer Tiles` (binding 12, SBRT_TILE_LIST) of `tiles`: the count of
 /// tiles, where the box lists' offsets, the box indices and the boxes
 /// start (words); the tiles; each tile's first box, and one past; the box
