@@ -263,6 +263,74 @@ TEST(FormatV2, AnAreaReadsOnlyTheBlocksItMeets)
     EXPECT_EQ(report.blocks, 0u);
 }
 
+TEST(FormatV2, PointsReadOnlyTheirCellsFromTheBlocksThatHoldThem)
+{
+    // voxel tops (held compact) and continuous tops (held wide)
+    for (const Model &model : {sbrt_test::build_model(sbrt_test::random_voxels(12, 40, 50, 30)),
+                               float_model(40, 50, 6, 5)}) {
+        const Frame &f = model.frame();
+        StacksV2Options options;
+        options.block_size = 8;
+        const auto bytes = encode_stacks_v2(model, options);
+        ReadReport report;
+        ReadOptions read;
+        read.report = &report;
+        // two points in one block (rows 12, 13 of cols 20, 21), one on a
+        // block's corner cell (row 31, col 47), one outside the model
+        const auto at = [&](int row, int col) {
+            return std::array<double, 2>{f.west + (col + 0.5) * f.ew_res(),
+                                         f.north - (row + 0.5) * f.ns_res()};
+        };
+        read.points = std::vector<std::array<double, 2>>{
+            at(12, 20), at(13, 21), at(31, 47), {f.east + 1, f.north - 1}};
+        const Model part = decode_stacks(bytes.data(), bytes.size(), "points", nullptr, read);
+        EXPECT_EQ(report.blocks, 35u);
+        EXPECT_EQ(report.blocks_read, 2u);
+        uint64_t kept = 0;
+        for (int r = 0; r < f.rows; ++r)
+            for (int c = 0; c < f.cols; ++c) {
+                const uint64_t cell = model.cell_index(r, c);
+                const bool wanted = (r == 12 && c == 20) || (r == 13 && c == 21) ||
+                                    (r == 31 && c == 47);
+                ASSERT_EQ(part.stack_size(cell), wanted ? model.stack_size(cell) : 0u)
+                    << r << "," << c;
+                kept += part.stack_size(cell);
+                for (uint32_t i = 0; i < part.stack_size(cell); ++i) {
+                    const Interval a = part.intervals()[part.stack_begin(cell) + i];
+                    const Interval b = model.intervals()[model.stack_begin(cell) + i];
+                    ASSERT_EQ(a.material, b.material);
+                    ASSERT_EQ(a.top, b.top);
+                }
+            }
+        EXPECT_GT(kept, 2u);
+        EXPECT_EQ(part.intervals().size(), kept); // nothing held for the others
+        // with an area too: only the points inside it
+        read.area = MapArea{f.north, f.north - 20 * f.ns_res(), f.east, f.west};
+        const Model north = decode_stacks(bytes.data(), bytes.size(), "points", nullptr, read);
+        EXPECT_EQ(report.blocks_read, 1u);
+        EXPECT_EQ(north.stack_size(model.cell_index(31, 47)), 0u);
+        EXPECT_EQ(north.stack_size(model.cell_index(12, 20)), model.stack_size(model.cell_index(12, 20)));
+        // no point on the model: nothing read
+        read.area.reset();
+        read.points = std::vector<std::array<double, 2>>{{f.west - 1, f.north - 1}};
+        const Model none = decode_stacks(bytes.data(), bytes.size(), "points", nullptr, read);
+        EXPECT_EQ(report.blocks_read, 0u);
+        EXPECT_TRUE(none.intervals().empty());
+        // an SBRT with property channels: every stack of the blocks read
+        options.optional_features = V2_OPTIONAL_CHANNELS;
+        const auto with_channels = encode_stacks_v2(model, options);
+        read.points = std::vector<std::array<double, 2>>{at(12, 20)};
+        const Model block = decode_stacks(with_channels.data(), with_channels.size(), "points",
+                                          nullptr, read);
+        EXPECT_EQ(report.blocks_read, 1u);
+        for (int r = 8; r < 16; ++r)
+            for (int c = 16; c < 24; ++c)
+                ASSERT_EQ(block.stack_size(model.cell_index(r, c)),
+                          model.stack_size(model.cell_index(r, c)));
+        EXPECT_EQ(block.stack_size(model.cell_index(16, 20)), 0u);
+    }
+}
+
 TEST(FormatV2, ModelLargerThanTheMemoryLimitIsRefusedFirst)
 {
     const Model model = sbrt_test::build_model(sbrt_test::random_voxels(9, 20, 20, 40));

@@ -397,7 +397,27 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     }
     if (total != h.intervals)
         fail(what, ": blocks hold ", total, " intervals, header says ", h.intervals);
-    const std::vector<char> wanted = blocks_meeting(grid, f, options.area);
+    std::vector<char> wanted = blocks_meeting(grid, f, options.area);
+    // with points: only the blocks that hold one, and of them only the
+    // points' cells where the SBRT has no property channels (their values
+    // lie by the spans of every column of a block)
+    std::vector<char> keep;
+    if (options.points) {
+        const bool whole_blocks = (h.optional & V2_OPTIONAL_CHANNELS) != 0;
+        keep.assign(f.cells(), 0);
+        std::vector<char> holds(wanted.size(), 0);
+        const int block_cols = grid.block_cols();
+        for (const auto &[x, y] : *options.points)
+            if (const std::optional<GridCell> c = cell_of_point(f, x, y)) {
+                keep[uint64_t(c->row) * uint64_t(f.cols) + uint64_t(c->col)] = 1;
+                holds[size_t(c->row / grid.size) * size_t(block_cols) + size_t(c->col / grid.size)] = 1;
+            }
+        for (size_t b = 0; b < wanted.size(); ++b)
+            wanted[b] = wanted[b] && holds[b];
+        if (whole_blocks)
+            keep.clear();
+    }
+    const auto decoded = [&](uint64_t cell) { return keep.empty() || keep[cell]; };
     uint64_t wanted_intervals = 0, wanted_blocks = 0;
     for (size_t b = 0; b < entries.size(); ++b)
         if (wanted[b]) {
@@ -437,7 +457,7 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         grid.for_each_cell(block, [&](uint64_t cell) {
             const uint64_t n = load_le(p, h.widths.count_bytes);
             p += h.widths.count_bytes;
-            sizes[cell] = uint32_t(n);
+            sizes[cell] = decoded(cell) ? uint32_t(n) : 0;
             sum += n;
         });
         if (sum != e.intervals)
@@ -447,9 +467,11 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     StackIndex index = StackIndex::from_sizes(sizes.data(), f.cells());
     std::vector<uint32_t>().swap(sizes);
 
-    // pass 2: each block's intervals into place, in the kind held
-    Intervals wide(compact ? 0 : wanted_intervals);
-    CompactIntervals packed(compact ? wanted_intervals : 0);
+    // pass 2: each block's intervals into place, in the kind held (with
+    // points, the other cells' intervals skipped)
+    Intervals wide(compact ? 0 : index.total());
+    CompactIntervals packed(compact ? index.total() : 0);
+    const uint64_t top_bytes = h.widths.tops == TopEncoding::VoxelBoundaries ? 2 : 4;
     for_each_row(int(blocks), threads, [&](int block) {
         if (!wanted[size_t(block)])
             return;
@@ -462,9 +484,17 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         if (ZSTD_isError(n) || n != raw.size())
             fail(where, ": ", ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong size",
                  " (corrupt file)");
+        const uint8_t *count = raw.data();
         const uint8_t *material = raw.data() + grid.cells(block) * h.widths.count_bytes;
         const uint8_t *top = material + uint64_t(e.intervals) * h.widths.material_bytes;
         grid.for_each_cell(block, [&](uint64_t cell) {
+            const uint64_t n = load_le(count, h.widths.count_bytes);
+            count += h.widths.count_bytes;
+            if (!decoded(cell)) {
+                material += n * h.widths.material_bytes;
+                top += n * top_bytes;
+                return;
+            }
             const StackRange stack = index.range(cell);
             uint32_t below = 0;
             for (uint64_t i = stack.begin; i < stack.end; ++i) {

@@ -11,6 +11,7 @@
 #ifndef SBRT_FORMAT_V2_HPP
 #define SBRT_FORMAT_V2_HPP
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -94,6 +95,13 @@ struct ReadOptions {
     /// one cell) are decompressed; the stacks of all other cells are left
     /// empty. v1 files are read whole.
     std::optional<MapArea> area;
+    /// Where given, only the stacks of the cells holding these map points
+    /// (x, y; cell_of_point) are decoded, from the blocks that hold them
+    /// (and meet `area`, where that is given too); every other stack is
+    /// left empty. An SBRT with property channels keeps every stack of
+    /// those blocks (its channels lie by each column's span). v1 files are
+    /// read whole.
+    std::optional<std::vector<std::array<double, 2>>> points;
     ReadReport *report = nullptr; ///< filled where given
 };
 

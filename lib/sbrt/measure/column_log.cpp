@@ -12,19 +12,6 @@
 
 namespace sbrt {
 
-std::optional<GridCell> cell_of_point(const Frame &frame, double x, double y)
-{
-    if (!std::isfinite(x) || !std::isfinite(y))
-        return std::nullopt;
-    // floor, not truncation: points a fraction of a cell west or north of
-    // the frame give -1, not 0
-    const double col = std::floor((x - frame.west) / frame.ew_res());
-    const double row = std::floor((frame.north - y) / frame.ns_res());
-    if (col < 0 || col >= frame.cols || row < 0 || row >= frame.rows)
-        return std::nullopt;
-    return GridCell{int(row), int(col)};
-}
-
 size_t ColumnLog::layer_count() const
 {
     return size_t(std::count_if(entries.begin(), entries.end(),

@@ -2,7 +2,7 @@
  * MODULE:    lib/sbrt (r3.sbrt addon)
  * PURPOSE:   The column under a map point as a log: its intervals top to
  *            bottom at the model's true heights in map units (a virtual
- *            borehole), and the cell of the frame that holds a map point
+ *            borehole)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_COLUMN_LOG_HPP
@@ -15,17 +15,6 @@
 #include "model/model.hpp"
 
 namespace sbrt {
-
-/// \brief A cell of the frame's 2D grid: row 0 is the northernmost.
-struct GridCell {
-    int row = 0, col = 0;
-};
-
-/// \brief The cell that holds map point (x, y), or nothing where the point
-/// lies outside the frame or is not finite. Cells hold their west and
-/// north edges, as GRASS's Rast_easting_to_col / Rast_northing_to_row and
-/// r.what count them: a point on the frame's east or south edge is outside.
-std::optional<GridCell> cell_of_point(const Frame &frame, double x, double y);
 
 /// \brief The map elevation of local height `local` (units of tb_res above
 /// the frame's bottom): frame.bottom + local * tb_res.

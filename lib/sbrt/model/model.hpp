@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,17 @@ struct Frame {
     /// Throws sbrt::Error unless the frame is finite and non-degenerate.
     void validate(const char *where) const;
 };
+
+/// \brief A cell of the frame's 2D grid: row 0 is the northernmost.
+struct GridCell {
+    int row = 0, col = 0;
+};
+
+/// \brief The cell that holds map point (x, y), or nothing where the point
+/// lies outside the frame or is not finite. Cells hold their west and
+/// north edges, as GRASS's Rast_easting_to_col / Rast_northing_to_row and
+/// r.what count them: a point on the frame's east or south edge is outside.
+std::optional<GridCell> cell_of_point(const Frame &frame, double x, double y);
 
 /// \brief A class of the source map with its legend.
 struct Material {
