@@ -19,3 +19,25 @@ bench_model() {
     g.region --q raster_3d="$map"
     g.region --q rows=884 cols=1056
 }
+
+#   geotop_bench_model NX NY NZ DATA_DIR TOOLS_DIR [3D]
+# makes the GeoTOP-like NetCDF model of NX x NY x NZ voxels in DATA_DIR
+# once (testsuite/benchmark/geotop_like), imports its lithok as the SBRT
+# geotop_NXxNY where the search path lacks it and, with 3D, expands that
+# into the 3D raster of the same name (r3.sbrt.convert -r, bit-identical:
+# the GRASS route's input); sets map= to the name.
+geotop_bench_model() {
+    local nx=$1 ny=$2 nz=$3 data=$4 tools=$5 with_3d=${6:-} file gen
+    map=geotop_${nx}x${ny}
+    gen=$tools/../testsuite/benchmark/geotop_like
+    make -s -C "$gen" build/geotop_like
+    file=$data/geotop_like_${nx}x${ny}x${nz}.nc
+    [ -s "$file" ] || { "$gen/build/geotop_like" write "$file.part" "$nx" "$ny" "$nz" &&
+                        mv "$file.part" "$file"; }
+    r3.sbrt.convert -l | grep -q "^$map@" ||
+        r3.sbrt.convert --q file="$file" variable=lithok output="$map" >/dev/null
+    if [ -n "$with_3d" ] && [ -z "$(g.list type=raster_3d pattern="$map")" ]; then
+        r3.sbrt.convert -s input="$map" >/dev/null
+        r3.sbrt.convert --q -r input="$map" output="$map" >/dev/null
+    fi
+}

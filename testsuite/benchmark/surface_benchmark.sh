@@ -11,9 +11,13 @@
 #            are the same, prints the times and ratios; never fails on time.
 # USAGE:     make && testsuite/benchmark/surface_benchmark.sh [MODELS]
 #            MODELS: T S A B C (tools/make_geomodel.sh; C, 800 x 1000 x
-#            800 voxels, takes ~10 min to make once). Default: C
+#            800 voxels, takes ~10 min to make once) or national (a
+#            GeoTOP-like model of 2647 x 2812 x 313 voxels, made, imported
+#            and expanded into a 3D raster once: the GRASS route alone
+#            takes about an hour on 2 cores). Default: C
 #            CLASSES= the set (default 2,8,14: both sandstones and the
-#            gravel aquifer of the demo geology)
+#            gravel aquifer of the demo geology; national: 5,6,7, the
+#            fine, medium and coarse sand of GeoTOP's lithoclasses)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
@@ -67,7 +71,15 @@ echo "surface $name: r3.sbrt.surface / reading the SBRT = $(ratio "$sbrt_s" "$re
 EOS
 
 for model in ${*:-C}; do
-    name=geo_$model
-    in_grass PERMANENT bash -c ". '$SBRT_ROOT/tools/bench_model.sh' && bench_model $model '$SBRT_ROOT/tools'" >/dev/null 2>&1
-    in_grass surface_bench bash "$data/surface_one.sh" "$name" "$classes" 2>&1 | grep "^surface \|ERROR"
+    if [ "$model" = national ]; then
+        name=geotop_2647x2812
+        in_grass PERMANENT bash -c ". '$SBRT_ROOT/tools/bench_model.sh' &&
+            geotop_bench_model 2647 2812 313 '$data' '$SBRT_ROOT/tools' 3d" >/dev/null 2>&1
+        set_classes=${CLASSES:-5,6,7}
+    else
+        name=geo_$model
+        in_grass PERMANENT bash -c ". '$SBRT_ROOT/tools/bench_model.sh' && bench_model $model '$SBRT_ROOT/tools'" >/dev/null 2>&1
+        set_classes=$classes
+    fi
+    in_grass surface_bench bash "$data/surface_one.sh" "$name" "$set_classes" 2>&1 | grep "^surface \|ERROR"
 done

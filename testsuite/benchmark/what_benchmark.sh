@@ -60,14 +60,9 @@ EOS
 
 # the GeoTOP-like model NXxNYxNZ, generated and imported once
 geotop_sbrt() {
-    local nx=$1 ny=$2 nz=$3 name=geotop_${1}x${2} file
-    make -s -C "$here/geotop_like" build/geotop_like
-    file=$data/geotop_like_${nx}x${ny}x${nz}.nc
-    [ -s "$file" ] || { "$here/geotop_like/build/geotop_like" write "$file.part" "$nx" "$ny" "$nz" &&
-                        mv "$file.part" "$file"; }
-    compgen -G "$data/loc/*/sbrt/$name" >/dev/null ||
-        in_grass what_bench r3.sbrt.convert --q --o -o file="$file" variable=lithok output="$name" >/dev/null 2>&1
-    echo "$name"
+    in_grass what_bench bash -c ". '$SBRT_ROOT/tools/bench_model.sh' &&
+        geotop_bench_model $1 $2 $3 '$data' '$SBRT_ROOT/tools'" >/dev/null 2>&1
+    echo "geotop_${1}x${2}"
 }
 
 for model in ${*:-C}; do

@@ -220,13 +220,20 @@ TEST(FormatV2, VersionOneDirectoriesStayReadable)
     remove_tree(dir.substr(0, dir.rfind('/')));
 }
 
+/// `model` in blocks of 8 x 8 cells, with the optional features given.
+std::vector<uint8_t> in_blocks_of_8(const Model &model, uint32_t optional_features = 0)
+{
+    StacksV2Options options;
+    options.block_size = 8;
+    options.optional_features = optional_features;
+    return encode_stacks_v2(model, options);
+}
+
 TEST(FormatV2, AnAreaReadsOnlyTheBlocksItMeets)
 {
     const Model model = sbrt_test::build_model(sbrt_test::random_voxels(12, 40, 50, 30));
     const Frame &f = model.frame(); // 10 x 5 map units a cell
-    StacksV2Options options;
-    options.block_size = 8;
-    const auto bytes = encode_stacks_v2(model, options);
+    const auto bytes = in_blocks_of_8(model);
     ReadReport report;
     ReadOptions read;
     read.report = &report;
@@ -269,9 +276,7 @@ TEST(FormatV2, PointsReadOnlyTheirCellsFromTheBlocksThatHoldThem)
     for (const Model &model : {sbrt_test::build_model(sbrt_test::random_voxels(12, 40, 50, 30)),
                                float_model(40, 50, 6, 5)}) {
         const Frame &f = model.frame();
-        StacksV2Options options;
-        options.block_size = 8;
-        const auto bytes = encode_stacks_v2(model, options);
+        const auto bytes = in_blocks_of_8(model);
         ReadReport report;
         ReadOptions read;
         read.report = &report;
@@ -317,8 +322,7 @@ TEST(FormatV2, PointsReadOnlyTheirCellsFromTheBlocksThatHoldThem)
         EXPECT_EQ(report.blocks_read, 0u);
         EXPECT_TRUE(none.intervals().empty());
         // an SBRT with property channels: every stack of the blocks read
-        options.optional_features = V2_OPTIONAL_CHANNELS;
-        const auto with_channels = encode_stacks_v2(model, options);
+        const auto with_channels = in_blocks_of_8(model, V2_OPTIONAL_CHANNELS);
         read.points = std::vector<std::array<double, 2>>{at(12, 20)};
         const Model block = decode_stacks(with_channels.data(), with_channels.size(), "points",
                                           nullptr, read);
