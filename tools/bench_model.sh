@@ -35,9 +35,9 @@ geotop_bench_model() {
     [ -s "$file" ] || { "$gen/build/geotop_like" write "$file.part" "$nx" "$ny" "$nz" &&
                         mv "$file.part" "$file"; }
     r3.sbrt.convert -l | grep -q "^$map@" ||
-        r3.sbrt.convert --q file="$file" variable=lithok output="$map" >/dev/null
+        r3.sbrt.convert --q -o file="$file" variable=lithok output="$map" >/dev/null || return 1
     if [ -n "$with_3d" ] && [ -z "$(g.list type=raster_3d pattern="$map")" ]; then
-        r3.sbrt.convert -s input="$map" >/dev/null
+        r3.sbrt.convert -s input="$map" >/dev/null || return 1
         r3.sbrt.convert --q -r input="$map" output="$map" >/dev/null
     fi
 }

@@ -21,6 +21,7 @@ packages=(
     netcdf-bin                       # ncgen writes the NetCDF files of the import tests
     libcairo2-dev fonts-dejavu-core  # the PNG's annotations: legend, north arrow, scale bar
     ffmpeg                           # video= of an animation (and ffprobe in its test)
+    slurm-wlm munge parallel         # the cluster recipes, run on a one-node Slurm cluster and GNU parallel
     grass-gui                        # g.gui.sbrt: wxPython and GRASS's GUI parts (map selectors)
     xvfb xdotool imagemagick         # the tests drive g.gui.sbrt on a virtual screen
     jupyter-nbconvert python3-ipykernel python3-nbclient python3-nbformat  # docs/r3_sbrt.ipynb, run by the tests
