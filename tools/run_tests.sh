@@ -102,6 +102,7 @@ for test in testsuite/test_*.py; do
         bad=$((bad + 1)) # the file itself broke
     fi
     [ "$bad" -gt 0 ] && { grep -E "^(FAIL|ERROR):|Error|ERROR" "$log/$name.log" | head -20; }
+    grep -h "^SKIPPED: " "$log/$name.log" | sed "s/^/$name: /" # why a file's tests were skipped
     good=$((ran - bad)); [ "$good" -lt 0 ] && good=0
     passed=$((passed + good)); failed=$((failed + bad))
     echo "$name: $good passed, $bad failed"
