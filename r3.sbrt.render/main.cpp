@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "annotation_setup.hpp"
+#include "frame_claim.hpp"
 #include "frames.hpp"
 #include "grass.hpp"
 #include "raster_output.hpp"
@@ -86,6 +87,8 @@ void run(const RenderRequest &asked)
             ++skipped; // a rerun: finished frames stay as they are
             continue;
         }
+        // jobs sharing their PNG files: no two at one frame
+        const FrameClaim claim(request.frames > 1 ? frame.png : std::string(), k);
         if (sweep)
             session.sweep_to(k);
         render_frame(frame, session, cameras[size_t(k - 1)], region);

@@ -1,0 +1,30 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.render
+ * PURPOSE:   A frame's claim while it is rendered: jobs of range= that share
+ *            their PNG files (a cluster's tasks) find out, with a clear
+ *            message, when two of them are given the same frame
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_FRAME_CLAIM_HPP
+#define R3_SBRT_FRAME_CLAIM_HPP
+
+#include <string>
+
+/// \brief The file `<png>.claim` ("host pid") beside frame `frame`'s PNG,
+/// made exclusively and removed once the frame is written or its render
+/// fails. Another live process's claim is refused (bad_request, naming the
+/// process, its host and the file); a claim left by a process of this host
+/// that has ended (a killed job) is taken over. Without a png nothing is
+/// claimed.
+class FrameClaim {
+public:
+    FrameClaim(const std::string &png, int frame);
+    ~FrameClaim();
+    FrameClaim(const FrameClaim &) = delete;
+    FrameClaim &operator=(const FrameClaim &) = delete;
+
+private:
+    std::string path_; ///< empty: nothing claimed
+};
+
+#endif
