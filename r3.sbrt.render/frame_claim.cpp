@@ -7,13 +7,13 @@
 #include "request_error.hpp"
 
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
+#include <string>
 
 #include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 extern "C" {
@@ -31,10 +31,15 @@ std::string this_host()
     return name;
 }
 
-/// Whether process `pid` of this host has ended.
-bool ended(long pid)
+/// What a claim file says of its job: "host pid".
+std::string owner_of(int fd)
 {
-    return pid > 0 && kill(pid_t(pid), 0) != 0 && errno == ESRCH;
+    char text[300] = {};
+    const ssize_t n = pread(fd, text, sizeof text - 1, 0);
+    std::string owner(text, n > 0 ? size_t(n) : 0);
+    while (!owner.empty() && (owner.back() == '\n' || owner.back() == ' '))
+        owner.pop_back();
+    return owner.empty() ? "a job that has not written its name yet" : owner;
 }
 
 } // namespace
@@ -43,47 +48,45 @@ FrameClaim::FrameClaim(const std::string &png, int frame)
 {
     if (png.empty())
         return;
-    const std::string path = png + ".claim", host = this_host();
-    for (int attempt = 0; attempt < 2; ++attempt) {
-        const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
-        if (fd >= 0) {
-            const std::string owner = host + " " + std::to_string(getpid()) + "\n";
-            const bool written = write(fd, owner.data(), owner.size()) == ssize_t(owner.size());
-            close(fd);
-            if (!written) {
-                std::remove(path.c_str());
-                bad_request(_("Cannot write the claim file <%s> of frame %d: %s"),
-                            path.c_str(), frame, std::strerror(errno));
-            }
-            path_ = path;
-            return;
-        }
-        if (errno != EEXIST) {
-            // a folder where claims cannot be made: its PNG cannot be written
-            // either, which the PNG's own writing reports
+    const std::string path = png + ".claim";
+    // the claim is the lock on the file: the kernel lets it go with the
+    // process, so a killed job's claim lapses by itself
+    for (;;) {
+        const int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd < 0) {
+            // a folder where claims cannot be made: its PNG cannot be
+            // written either, which the PNG's own writing reports
             G_warning(_("Frame %d is rendered without a claim file <%s>: %s"), frame,
                       path.c_str(), std::strerror(errno));
             return;
         }
-        std::ifstream in(path);
-        std::string owner_host;
-        long pid = 0;
-        in >> owner_host >> pid;
-        if (attempt == 0 && owner_host == host && ended(pid)) {
-            std::remove(path.c_str()); // a job of this host was killed on it
-            continue;
+        if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+            const std::string owner = owner_of(fd);
+            close(fd);
+            bad_request(_("Frame %d <%s> is being rendered by another job (%s; claim "
+                          "file <%s>): give each job frames of its own (range=)"),
+                        frame, png.c_str(), owner.c_str(), path.c_str());
         }
-        bad_request(_("Frame %d <%s> is being rendered by another job (process %ld on "
-                      "%s, claim file <%s>): give each job frames of its own (range=), "
-                      "or remove the claim file where that job has ended on another "
-                      "machine"),
-                    frame, png.c_str(), pid, owner_host.empty() ? "?" : owner_host.c_str(),
-                    path.c_str());
+        // still the file at the path (not one its last owner removed)?
+        struct stat held, named;
+        if (fstat(fd, &held) == 0 && stat(path.c_str(), &named) == 0 &&
+            held.st_ino == named.st_ino && held.st_dev == named.st_dev) {
+            const std::string owner = this_host() + " process " + std::to_string(getpid()) + "\n";
+            if (ftruncate(fd, 0) != 0 || pwrite(fd, owner.data(), owner.size(), 0) < 0)
+                G_warning(_("Cannot write the claim file <%s>: %s"), path.c_str(),
+                          std::strerror(errno));
+            fd_ = fd;
+            path_ = path;
+            return;
+        }
+        close(fd); // removed meanwhile: claim the new one
     }
 }
 
 FrameClaim::~FrameClaim()
 {
-    if (!path_.empty())
-        std::remove(path_.c_str());
+    if (path_.empty())
+        return;
+    std::remove(path_.c_str()); // while the lock is held: the file is ours
+    close(fd_);
 }

@@ -10,12 +10,12 @@
 
 #include <string>
 
-/// \brief The file `<png>.claim` ("host pid") beside frame `frame`'s PNG,
-/// made exclusively and removed once the frame is written or its render
-/// fails. Another live process's claim is refused (bad_request, naming the
-/// process, its host and the file); a claim left by a process of this host
-/// that has ended (a killed job) is taken over. Without a png nothing is
-/// claimed.
+/// \brief The file `<png>.claim` beside frame `frame`'s PNG, locked
+/// (flock) while the frame is rendered and removed once it is written or
+/// its render fails; it names the job ("host process pid"). A claim another
+/// process holds is refused (bad_request, naming that job and the file); a
+/// file a killed job left holds no lock and is taken over. Without a png
+/// nothing is claimed.
 class FrameClaim {
 public:
     FrameClaim(const std::string &png, int frame);
@@ -25,6 +25,7 @@ public:
 
 private:
     std::string path_; ///< empty: nothing claimed
+    int fd_ = -1;      ///< the locked file
 };
 
 #endif

@@ -87,8 +87,13 @@ void run(const RenderRequest &asked)
             ++skipped; // a rerun: finished frames stay as they are
             continue;
         }
-        // jobs sharing their PNG files: no two at one frame
+        // jobs sharing their PNG files: no two at one frame (and a frame
+        // another job finished meanwhile stays)
         const FrameClaim claim(request.frames > 1 ? frame.png : std::string(), k);
+        if (request.frames > 1 && !request.overwrite && frame_finished(frame)) {
+            ++skipped;
+            continue;
+        }
         if (sweep)
             session.sweep_to(k);
         render_frame(frame, session, cameras[size_t(k - 1)], region);

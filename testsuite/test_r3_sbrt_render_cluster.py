@@ -54,6 +54,7 @@ class TestCluster(TestCase):
             print(f"SKIPPED: {cls.skipped}")
             return
         cls.env = dict(os.environ, SLURM_CONF=os.path.join(cls.slurm, "slurm.conf"))
+        cls.addClassCleanup(subprocess.run, [CLUSTER, "stop", cls.slurm], capture_output=True)
         set_up_t_model(cls)
         image_region(cls, *SIZE)
         env = gs.gisenv()
@@ -67,10 +68,8 @@ class TestCluster(TestCase):
 
     @classmethod
     def tearDownClass(cls):
-        if cls.skipped:
-            return
-        subprocess.run([CLUSTER, "stop", cls.slurm], capture_output=True)
-        cls.del_temp_region()
+        if not cls.skipped:
+            cls.del_temp_region()
 
     def setUp(self):
         if self.skipped:
@@ -201,7 +200,10 @@ class TestCluster(TestCase):
                              env=self.env).stdout.strip() and time.time() < deadline:
             time.sleep(0.1)
         done = [k for k in range(1, FRAMES + 1) if os.path.exists(got % k)]
+        self.assertGreaterEqual(len(done), 3)
         self.assertLess(len(done), FRAMES, "the task ended before it was killed")
+        # the frame it was on: its claim file left, its lock gone with it
+        self.assertTrue([n for n in os.listdir(os.path.dirname(got)) if n.endswith(".claim")])
         kept = {k: os.path.getmtime(got % k) for k in done}
         # the same task again: the finished frames stay, the rest are made
         self.sbatch(script, "0")
@@ -217,7 +219,8 @@ class TestCluster(TestCase):
         step = FRAMES // TASKS
         env = {k: os.environ[k] for k in JOB_ENV.split(",") if k in os.environ}
         run = subprocess.run(
-            f"seq 1 {step} {FRAMES} | parallel -j {TASKS} 'grass {self.location}/par{{}} -c "
+            f"seq 1 {step} {FRAMES} | parallel -j {TASKS} 'm={self.location}/par{{}}; "
+            f"[ -d $m ] || grass -c $m -e\n grass $m "
             f"--exec r3.sbrt.render input=geo@{self.mapset} frames={FRAMES} "
             f"range={{}}-$(({{}}+{step - 1})) size={SIZE[0]},{SIZE[1]} backend=cpu png={got}'",
             shell=True, capture_output=True, text=True, env=env)

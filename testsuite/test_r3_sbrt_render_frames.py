@@ -138,27 +138,25 @@ class TestFrames(TestCase):
         self.assertTrue(os.path.exists(os.path.join(self.dir, "nn_0002.png")))
 
     def test_two_jobs_at_one_frame_are_refused(self):
-        import socket
+        import fcntl
 
         png = os.path.join(self.dir, "cl_%02d.png")
         claim = png % 2 + ".claim"
-        # another job, alive, renders frame 2: this one stops there, clearly
-        with open(claim, "w") as f:
-            f.write(f"{socket.gethostname()} {os.getpid()}\n")
-        run = self.render(f"png={png}", "frames=3", check=False)
+        # another job holds frame 2 (its claim locked): this one stops
+        # there, naming it
+        with open(claim, "w") as held:
+            held.write("node7 process 4242\n")
+            held.flush()
+            fcntl.flock(held, fcntl.LOCK_EX)
+            run = self.render(f"png={png}", "frames=3", check=False)
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("Frame 2", said(run))
-        self.assertIn("being rendered by another job", said(run))
-        self.assertIn(f"process {os.getpid()}", said(run))
+        self.assertIn("being rendered by another job (node7 process 4242", said(run))
         self.assertTrue(os.path.exists(png % 1))
         self.assertFalse(os.path.exists(png % 2))
-        self.assertTrue(os.path.exists(claim)) # the other job's, left alone
-        # that job was killed (its process has ended): its claim is taken
-        # over, the frames are made, no claim is left
-        ended = subprocess.Popen(["true"])
-        ended.wait()
-        with open(claim, "w") as f:
-            f.write(f"{socket.gethostname()} {ended.pid}\n")
+        # that job was killed: its file holds no lock and is taken over;
+        # the frames are made and no claim is left
+        self.assertTrue(os.path.exists(claim))
         self.render(f"png={png}", "frames=3")
         self.assertTrue(all(os.path.exists(png % k) for k in (1, 2, 3)))
         self.assertEqual([n for n in os.listdir(self.dir) if n.endswith(".claim")], [])

@@ -103,9 +103,10 @@ for test in testsuite/test_*.py; do
     fi
     [ "$bad" -gt 0 ] && { grep -E "^(FAIL|ERROR):|Error|ERROR" "$log/$name.log" | head -20; }
     grep -h "^SKIPPED: " "$log/$name.log" | sed "s/^/$name: /" # why a file's tests were skipped
-    good=$((ran - bad)); [ "$good" -lt 0 ] && good=0
+    skipped=$(grep -oE "skipped=[0-9]+" "$log/$name.log" | tail -1 | cut -d= -f2)
+    good=$((ran - bad - ${skipped:-0})); [ "$good" -lt 0 ] && good=0
     passed=$((passed + good)); failed=$((failed + bad))
-    echo "$name: $good passed, $bad failed"
+    echo "$name: $good passed, $bad failed${skipped:+, $skipped skipped}"
 done
 
 # 6. the notebook docs/r3_sbrt.ipynb executed by nbconvert: one test, passed

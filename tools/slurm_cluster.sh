@@ -31,6 +31,7 @@ stop() {
             kill -0 "$pid" 2>/dev/null || break
             sleep 0.1
         done
+        kill -9 "$pid" 2>/dev/null || true # still there after 5 s
         rm -f "$dir/$daemon.pid"
     done
 }

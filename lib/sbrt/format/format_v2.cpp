@@ -430,12 +430,18 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     const bool compact =
         h.widths.tops == TopEncoding::VoxelBoundaries && voxel_tops_fit_compact(f.depths);
     const uint64_t limit = options.memory_limit ? options.memory_limit : physical_memory();
-    // pass 1's sizes (4 bytes a cell) beside the index it builds
-    const double needed = double(f.cells()) * (4 + h.widths.count_bytes + 0.5) +
-                          double(wanted_intervals) * (compact ? sizeof(CompactInterval) : sizeof(Interval));
-    if (needed > double(limit))
-        fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
-             "memory, more than the ", limit >> 20, " MiB available");
+    // pass 1's sizes (4 bytes a cell) beside the index it builds, the
+    // points' mask; the intervals of the wanted blocks (with points only
+    // the points' own, known after pass 1)
+    const double interval_bytes = compact ? sizeof(CompactInterval) : sizeof(Interval);
+    const auto check_memory = [&](uint64_t intervals) {
+        const double needed = double(f.cells()) * (4 + h.widths.count_bytes + 0.5) +
+                              double(keep.size()) + double(intervals) * interval_bytes;
+        if (needed > double(limit))
+            fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
+                 "memory, more than the ", limit >> 20, " MiB available");
+    };
+    check_memory(keep.empty() ? wanted_intervals : 0);
 
     // pass 1: each block's counts (the head of its frame) give the index
     std::vector<uint32_t> sizes(f.cells(), 0);
@@ -466,6 +472,8 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     });
     StackIndex index = StackIndex::from_sizes(sizes.data(), f.cells());
     std::vector<uint32_t>().swap(sizes);
+    if (!keep.empty())
+        check_memory(index.total());
 
     // pass 2: each block's intervals into place, in the kind held (with
     // points, the other cells' intervals skipped)
@@ -488,11 +496,11 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         const uint8_t *material = raw.data() + grid.cells(block) * h.widths.count_bytes;
         const uint8_t *top = material + uint64_t(e.intervals) * h.widths.material_bytes;
         grid.for_each_cell(block, [&](uint64_t cell) {
-            const uint64_t n = load_le(count, h.widths.count_bytes);
+            const uint64_t stack_size = load_le(count, h.widths.count_bytes);
             count += h.widths.count_bytes;
             if (!decoded(cell)) {
-                material += n * h.widths.material_bytes;
-                top += n * top_bytes;
+                material += stack_size * h.widths.material_bytes;
+                top += stack_size * top_bytes;
                 return;
             }
             const StackRange stack = index.range(cell);
