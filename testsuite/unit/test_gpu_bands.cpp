@@ -8,9 +8,11 @@
  *            bytes the host touches per pixel
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -251,6 +253,43 @@ TEST(OverlayTiles, EveryPixelWhoseRayMeetsABoxLiesInATileOfIt)
     EXPECT_EQ(every.tiles.size(), size_t(tile_cols * 2));
     EXPECT_TRUE(every.boxes.empty()); // no lists: every pixel traced
     EXPECT_TRUE(overlay_tiles({}, camera, 0, 16).tiles.empty());
+}
+
+TEST(OverlayTiles, ManyBoxesAreListedTileByTileAsEachAlone)
+{
+    // overlapping boxes, one beside the view and one far off it: each
+    // tile lists, in their order, exactly the boxes whose own lists hold it
+    const std::vector<std::array<glm::dvec3, 2>> boxes = {
+        {glm::dvec3(10, 10, 0), glm::dvec3(11, 11, 80)},
+        {glm::dvec3(10.5, 10.2, 0), glm::dvec3(12, 11.5, 60)},
+        {glm::dvec3(25, 5, 0), glm::dvec3(27, 9, 40)},
+        {glm::dvec3(-400, 30, 0), glm::dvec3(-399, 31, 10)},
+        {glm::dvec3(1e7, 1e7, 0), glm::dvec3(1e7 + 1, 1e7 + 1, 10)},
+        {glm::dvec3(18, 14, 0), glm::dvec3(30, 15, 5)}};
+    const Camera camera = Camera::perspective({70, -40, 90}, {30, 20, 0}, 60, 240, 320);
+    for (const auto &[first, rows] : {std::pair{0, 240}, std::pair{37, 101}}) {
+        const OverlayTiles all = overlay_tiles(boxes, camera, first, rows);
+        ASSERT_FALSE(all.every_tile);
+        ASSERT_EQ(all.box_first.size(), all.tiles.size() + 1);
+        ASSERT_EQ(all.box_first.back(), all.boxes.size());
+        std::map<uint32_t, std::vector<uint32_t>> listed; // tile -> boxes
+        for (size_t t = 0; t < all.tiles.size(); ++t) {
+            if (t > 0) // row by row, each tile once
+                EXPECT_LT((all.tiles[t - 1] >> 16) * 65536u + (all.tiles[t - 1] & 0xffff),
+                          (all.tiles[t] >> 16) * 65536u + (all.tiles[t] & 0xffff));
+            ASSERT_LT(all.box_first[t], all.box_first[t + 1]);
+            listed[all.tiles[t]].assign(all.boxes.begin() + all.box_first[t],
+                                        all.boxes.begin() + all.box_first[t + 1]);
+        }
+        std::map<uint32_t, std::vector<uint32_t>> alone;
+        for (uint32_t b = 0; b < boxes.size(); ++b)
+            for (uint32_t t : overlay_tiles({boxes[b]}, camera, first, rows).tiles)
+                alone[t].push_back(b);
+        EXPECT_EQ(listed, alone) << "rows from " << first;
+        EXPECT_FALSE(alone.empty());
+        for (const auto &[tile, in] : alone) // the far boxes list nothing
+            EXPECT_TRUE(std::find(in.begin(), in.end(), 4u) == in.end());
+    }
 }
 
 /// Two boreholes drilled where the model's stacks are, 1.5 cells wide.
