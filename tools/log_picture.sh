@@ -17,6 +17,7 @@ set -euo pipefail
 out=$(realpath -m "${1:-$SBRT_ROOT/r3.sbrt.what/r3_sbrt_what_logs.png}")
 sbrt_location "$(mktemp -d /tmp/r3sbrt_logs.XXXXXX)"
 work=$SBRT_GISDBASE
+trap 'rm -rf "$work"' EXIT
 cat >"$work/log_picture.sh" <<EOS
 set -euo pipefail
 "$SBRT_ROOT/tools/make_geomodel.sh" S geo >/dev/null
