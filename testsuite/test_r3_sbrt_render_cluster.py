@@ -14,6 +14,7 @@ COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 import os
 import shutil
 import subprocess
+import tempfile
 import time
 
 from grass.gunittest.case import TestCase
@@ -45,7 +46,9 @@ class TestCluster(TestCase):
     def setUpClass(cls):
         cls.work = gs.tempfile(create=False)
         os.makedirs(cls.work)
-        cls.slurm = os.path.join(cls.work, "slurm")
+        # a short path: Slurm's sockets lie in it (108 bytes at most)
+        cls.slurm = tempfile.mkdtemp(prefix="sbrt_slurm.", dir="/tmp")
+        cls.addClassCleanup(shutil.rmtree, cls.slurm, ignore_errors=True) # after the stop
         run = subprocess.run([CLUSTER, "start", cls.slurm], capture_output=True, text=True)
         cls.skipped = None
         if run.returncode != 0:
@@ -93,10 +96,15 @@ class TestCluster(TestCase):
     def sbatch(self, script, array, wait=True):
         """Submits `script` as --array=`array`; returns the job id once every
         task has ended (or at once, wait=False)."""
-        run = subprocess.run(
-            ["sbatch", "--parsable", f"--array={array}", f"--export={JOB_ENV}",
-             f"--output={self.work}/%x_%a.out", *(["--wait"] if wait else []), script],
-            capture_output=True, text=True, env=self.env)
+        try:
+            run = subprocess.run(
+                ["sbatch", "--parsable", f"--array={array}", f"--export={JOB_ENV}",
+                 f"--output={self.work}/%x_%a.out", *(["--wait"] if wait else []), script],
+                capture_output=True, text=True, env=self.env, timeout=600)
+        except subprocess.TimeoutExpired:
+            queue = subprocess.run(["squeue"], capture_output=True, text=True, env=self.env)
+            subprocess.run(["scancel", "--user=root"], env=self.env)
+            self.fail(f"the job array did not end in 10 minutes:\n{queue.stdout}")
         logs = ""
         for name in sorted(os.listdir(self.work)):
             if name.endswith(".out"):

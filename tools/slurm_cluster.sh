@@ -49,6 +49,10 @@ done
 [ -r /etc/munge/munge.key ] || cannot "no munge key (/etc/munge/munge.key; the munge package makes it)"
 cpus=${3:-$(nproc)}
 host=$(hostname -s)
+# slurmd's sockets lie in DIR/spool: their paths must fit a Unix socket's
+# 108 bytes (a step's socket fails the job's launch, and the job is held)
+[ $((${#dir} + ${#host} + 32)) -le 107 ] ||
+    cannot "DIR's path is ${#dir} characters long, too long for Slurm's sockets in it; give a shorter one (e.g. mktemp -d /tmp/slurm.XXXXXX)"
 stop # a cluster left over in DIR
 mkdir -p "$dir/state" "$dir/spool"
 cat >"$SLURM_CONF" <<EOF
