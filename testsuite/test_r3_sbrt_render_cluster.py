@@ -27,7 +27,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CLUSTER = os.path.join(ROOT, "tools", "slurm_cluster.sh")
 SIZE = (160, 120)
 # the killed task's frames: slow enough on one thread to be killed halfway
-KILLED_SIZE = (800, 600)
+# (on faster machines too: 1.2 M pixels a frame)
+KILLED_SIZE = (1280, 960)
 FRAMES = 24
 TASKS = 4
 # what a job's GRASS session needs of this one's environment
