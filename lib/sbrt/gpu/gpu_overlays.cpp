@@ -123,22 +123,29 @@ OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
     const int tile_cols = (cols + side - 1) / side, tile_rows = (rows + side - 1) / side;
     if (tile_cols > 0xffff || tile_rows > 0xffff)
         fail("overlay_tiles: ", tile_cols, " x ", tile_rows, " tiles, more than 65535 a side");
+    OverlayTiles out;
+    if (overlay_tiles_everywhere(boxes, camera)) {
+        // the camera is among them: any pixel's ray may meet one
+        out.every_tile = true;
+        for (int ty = 0; ty < tile_rows; ++ty)
+            for (int tx = 0; tx < tile_cols; ++tx) {
+                out.tiles.push_back(uint32_t(tx) | uint32_t(ty) << 16);
+                out.box_first.push_back(0);
+            }
+        out.box_first.push_back(0);
+        return out;
+    }
     // (tile, box) for each tile a box reaches, box by box
     std::vector<std::pair<uint32_t, uint32_t>> reached;
-    OverlayTiles out;
-    for (size_t b = 0; b < boxes.size() && !out.every_tile; ++b) {
+    for (size_t b = 0; b < boxes.size(); ++b) {
         const auto &box = boxes[b];
         // the corners in pixel coordinates of the band (pixel centres whole)
         int behind = 0;
         std::vector<Point> corners = projected_corners(box, camera, behind);
         for (Point &p : corners)
             p = Point((p.x + 1) / 2 * cols - 0.5, (1 - p.y) / 2 * camera.rows() - 0.5 - first_row);
-        if (behind == 8)
+        if (behind > 0)
             continue; // wholly behind a perspective camera: no ray goes there
-        if (behind > 0) {
-            out.every_tile = true; // the camera is among them: any pixel may
-            break;
-        }
         const std::vector<Point> hull = convex_hull(corners);
         double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
         for (const Point &p : hull) {
@@ -170,15 +177,6 @@ OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
                 reached.emplace_back(uint32_t(ty) * uint32_t(tile_cols) + uint32_t(tx),
                                      uint32_t(b));
         }
-    }
-    if (out.every_tile) {
-        for (int ty = 0; ty < tile_rows; ++ty)
-            for (int tx = 0; tx < tile_cols; ++tx) {
-                out.tiles.push_back(uint32_t(tx) | uint32_t(ty) << 16);
-                out.box_first.push_back(0);
-            }
-        out.box_first.push_back(0);
-        return out;
     }
     // grouped by tile, row by row, each tile's boxes in their order (a
     // counting sort on the tile)
