@@ -5,6 +5,9 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "file_crs.hpp"
+#include "format/format.hpp"
+
+#include <cstring>
 
 #include <ogr_spatialref.h>
 
@@ -126,4 +129,22 @@ void check_file_crs(const FileVariable &variable, const std::string &file,
                     "grass -c EPSG:code), or add -o to take the coordinates "
                     "as they are"),
                   file.c_str(), file_crs.c_str(), location.c_str());
+}
+
+std::string vertical_datum(const FileVariable &variable)
+{
+    const std::shared_ptr<OGRSpatialReference> srs = variable.spatial_ref();
+    if (!srs || !srs->IsCompound())
+        return {};
+    const char *name = srs->GetAttrValue("COMPD_CS|VERT_CS");
+    if (!name)
+        return {};
+    // EPSG names vertical CRSs "<datum> height" or "<datum> depth"
+    std::string datum = name;
+    for (const char *suffix : {" height", " depth"}) {
+        const size_t n = std::strlen(suffix);
+        if (datum.size() > n && datum.compare(datum.size() - n, n, suffix) == 0)
+            datum.erase(datum.size() - n);
+    }
+    return datum.size() <= sbrt::MAX_DATUM_CHARS ? datum : std::string();
 }

@@ -15,4 +15,9 @@
 void check_file_crs(const FileVariable &variable, const std::string &file,
                     bool override_check);
 
+/// The datum of the file's heights where its CRS is compound, named as
+/// geologists write it ("NAP" for EPSG:7415's "NAP height"); empty where
+/// the file names no vertical CRS.
+std::string vertical_datum(const FileVariable &variable);
+
 #endif

@@ -291,6 +291,10 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
                       file);
     if (survey != "none")
         apply_preset(survey, model);
+    model.set_vertical_datum(vertical_datum(variable));
+    if (!model.vertical_datum().empty())
+        G_verbose_message(_("Heights of <%s> are relative to %s"), file,
+                          model.vertical_datum().c_str());
     return model;
 }
 

@@ -99,6 +99,7 @@ void print_report(const char *name, const sbrt::Model &model,
                 "file_compression=%.3f\n",
                 unsigned(file.major), unsigned(file.minor),
                 (unsigned long long)file.bytes, file_per_interval, file_compression);
+        fprintf(stdout, "vertical_datum=%s\n", model.vertical_datum().c_str());
         if (channels)
             print_channels(*channels, true);
         return;
@@ -106,7 +107,10 @@ void print_report(const char *name, const sbrt::Model &model,
     fprintf(stdout, "SBRT:          %s\n", name);
     fprintf(stdout, "Extent:        N %.10g  S %.10g  E %.10g  W %.10g\n",
             f.north, f.south, f.east, f.west);
-    fprintf(stdout, "Vertical:      T %.10g  B %.10g\n", f.top, f.bottom);
+    fprintf(stdout, "Vertical:      T %.10g  B %.10g%s\n", f.top, f.bottom,
+            model.vertical_datum().empty()
+                ? ""
+                : ("  (relative to " + model.vertical_datum() + ")").c_str());
     fprintf(stdout, "Grid:          %d rows x %d cols x %d depths\n", f.rows,
             f.cols, f.depths);
     fprintf(stdout, "Resolution:    ns %.10g  ew %.10g  tb %.10g\n",

@@ -12,8 +12,16 @@
 
 #include <cairo.h>
 
+#include "cairo_canvas.hpp"
 #include "util/error.hpp"
 #include "model/model.hpp"
+
+using sbrt_grass::Canvas;
+using sbrt_grass::legend_text;
+using sbrt_grass::length_text;
+using sbrt_grass::nice_length;
+using sbrt_grass::select_font;
+using sbrt_grass::text_width;
 
 namespace {
 
@@ -28,118 +36,6 @@ struct Layout {
     }
     double scale, font, line, pad, arrow, bar;
 };
-
-/// Owns a cairo context drawing on a surface (RAII for both).
-class Canvas {
-public:
-    Canvas(int width, int height)
-        : surface_(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)),
-          cr_(cairo_create(surface_))
-    {
-        if (cairo_status(cr_) != CAIRO_STATUS_SUCCESS)
-            throw sbrt::Error(std::string("cannot draw the PNG's annotations: ") +
-                              cairo_status_to_string(cairo_status(cr_)));
-        cairo_select_font_face(cr_, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                               CAIRO_FONT_WEIGHT_NORMAL);
-    }
-    ~Canvas()
-    {
-        cairo_destroy(cr_);
-        cairo_surface_destroy(surface_);
-    }
-    Canvas(const Canvas &) = delete;
-    Canvas &operator=(const Canvas &) = delete;
-
-    cairo_t *cr() const { return cr_; }
-    /// The surface's pixels (xRGB words) as packed rgb rows.
-    void store(uint8_t *rgb, int rows, int cols)
-    {
-        cairo_surface_flush(surface_);
-        for (int r = 0; r < rows; ++r) {
-            const uint32_t *px = row(r);
-            for (int c = 0; c < cols; ++c, rgb += 3) {
-                rgb[0] = uint8_t(px[c] >> 16);
-                rgb[1] = uint8_t(px[c] >> 8);
-                rgb[2] = uint8_t(px[c]);
-            }
-        }
-    }
-
-private:
-    uint32_t *row(int r) const
-    {
-        return reinterpret_cast<uint32_t *>(cairo_image_surface_get_data(surface_) +
-                                            size_t(r) *
-                                                cairo_image_surface_get_stride(surface_));
-    }
-    cairo_surface_t *surface_;
-    cairo_t *cr_;
-};
-
-double text_width(cairo_t *cr, const std::string &text)
-{
-    cairo_text_extents_t extents;
-    cairo_text_extents(cr, text.c_str(), &extents);
-    return extents.x_advance;
-}
-
-std::string legend_text(const LegendClass &c)
-{
-    return c.label.empty() ? "class " + std::to_string(c.id) : c.label;
-}
-
-/// An arrow of length l.arrow centred on (x, y) pointing along `north`
-/// (image directions, unit): a shaft and a head, an N beyond its tip.
-void draw_north_arrow(cairo_t *cr, const Layout &l, glm::dvec2 north, double x, double y)
-{
-    const glm::dvec2 d = north, n(-north.y, north.x);
-    const glm::dvec2 c(x, y), tip = c + 0.5 * l.arrow * d, tail = c - 0.5 * l.arrow * d;
-    const glm::dvec2 base = tip - 0.4 * l.arrow * d;
-    const glm::dvec2 left = base + 0.22 * l.arrow * n, right = base - 0.22 * l.arrow * n;
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-    cairo_set_line_width(cr, 2 * l.scale);
-    cairo_move_to(cr, tail.x, tail.y);
-    cairo_line_to(cr, base.x, base.y);
-    cairo_stroke(cr);
-    cairo_move_to(cr, tip.x, tip.y);
-    cairo_line_to(cr, left.x, left.y);
-    cairo_line_to(cr, right.x, right.y);
-    cairo_close_path(cr);
-    cairo_fill(cr);
-
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                           CAIRO_FONT_WEIGHT_BOLD);
-    cairo_text_extents_t e;
-    cairo_text_extents(cr, "N", &e);
-    const glm::dvec2 at = tip + (0.8 * l.font) * d;
-    cairo_move_to(cr, at.x - e.x_bearing - e.width / 2, at.y - e.y_bearing - e.height / 2);
-    cairo_show_text(cr, "N");
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                           CAIRO_FONT_WEIGHT_NORMAL);
-}
-
-/// A "nice" length (1, 2 or 5 times a power of ten) of at most `most`.
-double nice_length(double most)
-{
-    const double ten = std::pow(10.0, std::floor(std::log10(most)));
-    for (double m : {5.0, 2.0, 1.0})
-        if (m * ten <= most)
-            return m * ten;
-    return ten;
-}
-
-std::string length_text(double metres, bool in_metres)
-{
-    char text[32];
-    if (!in_metres)
-        std::snprintf(text, sizeof text, "%g map units", metres);
-    else if (metres >= 1000)
-        std::snprintf(text, sizeof text, "%g km", metres / 1000);
-    else
-        std::snprintf(text, sizeof text, "%g m", metres);
-    return text;
-}
 
 /// A bar of four black and white parts, its bottom-left corner at (x,
 /// bottom), with its length below; `length` pixels.
@@ -217,20 +113,17 @@ struct Panel {
         if (more)
             w = std::max(w, text_width(cr, more_text()));
         w = std::max(w, text_width(cr, a.caption));
-        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                               CAIRO_FONT_WEIGHT_BOLD);
+        select_font(cr, true);
         if (!this->shown.empty() || a.bar)
             w = std::max(w, text_width(cr, a.title));
         if (a.bar) {
-            cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                                   CAIRO_FONT_WEIGHT_NORMAL);
+            select_font(cr);
             w = std::max({w, text_width(cr, bar_heading(*a.bar)), text_width(cr, bar_unit(*a.bar)),
                           2 * l.font + l.pad + text_width(cr, value_text(a.bar->high)),
                           2 * l.font + l.pad + text_width(cr, value_text(a.bar->low)),
                           l.font + l.pad + text_width(cr, "no value")});
         }
-        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                               CAIRO_FONT_WEIGHT_NORMAL);
+        select_font(cr);
         width = int(std::ceil(w + 2 * l.pad));
     }
     std::string more_text() const { return "+ " + std::to_string(more) + " more"; }
@@ -263,13 +156,11 @@ struct Panel {
 /// font is normal again after it.
 void draw_title(cairo_t *cr, const PngAnnotations &a, double x, double y)
 {
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                           CAIRO_FONT_WEIGHT_BOLD);
+    select_font(cr, true);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, x, y);
     cairo_show_text(cr, a.title.c_str());
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                           CAIRO_FONT_WEIGHT_NORMAL);
+    select_font(cr);
 }
 
 /// A property's legend below the title at baseline `y`: its name and unit,
@@ -341,16 +232,7 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
         draw_title(cr, a, x, y);
     for (const LegendClass *c : p.shown) {
         y += l.line;
-        const double swatch = std::round(l.font);
-        cairo_rectangle(cr, std::round(x) + 0.5, std::round(y - 0.9 * l.font) + 0.5, swatch,
-                        swatch);
-        cairo_set_source_rgb(cr, c->color[0] / 255.0, c->color[1] / 255.0,
-                             c->color[2] / 255.0);
-        cairo_fill_preserve(cr);
-        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        cairo_stroke(cr);
-        cairo_move_to(cr, x + l.font + l.pad, y);
-        cairo_show_text(cr, legend_text(*c).c_str());
+        sbrt_grass::draw_legend_entry(cr, *c, x, y, l.font, l.pad);
     }
     if (p.more) {
         y += l.line;
@@ -379,8 +261,9 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
         bottom -= l.line;
     }
     if (a.north)
-        draw_north_arrow(cr, l, *a.north, x + l.font + l.arrow / 2,
-                         bottom - l.pad - l.font - l.arrow / 2);
+        sbrt_grass::draw_north_arrow(
+            cr, *a.north, {x + l.font + l.arrow / 2, bottom - l.pad - l.font - l.arrow / 2},
+            l.arrow, l.font, l.scale);
 }
 
 } // namespace

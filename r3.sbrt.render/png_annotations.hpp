@@ -17,15 +17,11 @@
 
 #include <glm/vec2.hpp>
 
+#include "cairo_canvas.hpp"
 #include "output/band.hpp"
 #include "output/png_file.hpp"
 
-/// \brief One class the legend may show.
-struct LegendClass {
-    int32_t id;
-    std::string label; ///< empty: the legend shows the id
-    std::array<uint8_t, 3> color;
-};
+using sbrt_grass::LegendClass;
 
 /// \brief The legend of a property view: a colour bar.
 struct ColorBar {

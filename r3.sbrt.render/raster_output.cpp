@@ -175,14 +175,8 @@ void ImageMaps::close(const sbrt::Model &model, const sbrt::PropertyPaint *prope
         png_->finish();
     for (const Map &map : material_) {
         Rast_close(map.fd);
-        struct Colors colors;
-        sbrt_grass::make_colors(model.materials(), &colors);
-        Rast_write_colors(map.name.c_str(), G_mapset(), &colors);
-        Rast_free_colors(&colors);
-        struct Categories cats;
-        sbrt_grass::make_cats(model.materials(), &cats, request_.input.c_str());
-        Rast_write_cats(map.name.c_str(), &cats);
-        Rast_free_cats(&cats);
+        sbrt_grass::write_class_legend(map.name.c_str(), model.materials(),
+                                       request_.input.c_str());
         write_history(map.name, request_);
     }
     for (const auto *maps : {&elevation_, &depth_})

@@ -10,52 +10,15 @@
 
 #include "grass.hpp"
 #include "request_error.hpp"
+#include "vector_map.hpp"
 extern "C" {
 #include <grass/dbmi.h>
 #include <grass/vector.h>
 }
 
+using sbrt_grass::VectorMap;
+
 namespace {
-
-/// An open vector map at level 1 (no topology needed), closed on scope exit.
-class VectorMap {
-public:
-    VectorMap(const std::string &name, const char *layer)
-        : points_(Vect_new_line_struct()), cats_(Vect_new_cats_struct())
-    {
-        // Vect_open_old2 ends the process on a missing map: looked up first
-        if (!G_find_vector2(name.c_str(), ""))
-            bad_request(_("Vector map <%s> not found"), shortened(name).c_str());
-        Vect_set_open_level(1);
-        if (Vect_open_old2(&map_, name.c_str(), "", layer) < 0)
-            bad_request(_("Unable to open vector map <%s>"), name.c_str());
-    }
-    ~VectorMap()
-    {
-        Vect_destroy_line_struct(points_);
-        Vect_destroy_cats_struct(cats_);
-        Vect_close(&map_);
-    }
-    VectorMap(const VectorMap &) = delete;
-    VectorMap &operator=(const VectorMap &) = delete;
-
-    /// The next feature's type (0 at the end); its points and categories.
-    int next()
-    {
-        const int type = Vect_read_next_line(&map_, points_, cats_);
-        if (type == -1)
-            bad_request(_("Unable to read vector map <%s>"), Vect_get_full_name(&map_));
-        return type < 0 ? 0 : type;
-    }
-    const line_pnts &points() const { return *points_; }
-    line_cats *cats() { return cats_; }
-    Map_info &map() { return map_; }
-
-private:
-    Map_info map_;
-    line_pnts *points_;
-    line_cats *cats_;
-};
 
 /// A database driver open on a layer's table, shut down on scope exit.
 class LayerTable {

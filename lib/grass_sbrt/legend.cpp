@@ -62,4 +62,17 @@ void make_cats(const std::vector<sbrt::Material> &materials,
         }
 }
 
+void write_class_legend(const char *name, const std::vector<sbrt::Material> &materials,
+                        const char *title)
+{
+    struct Colors colors;
+    make_colors(materials, &colors);
+    Rast_write_colors(name, G_mapset(), &colors);
+    Rast_free_colors(&colors);
+    struct Categories cats;
+    make_cats(materials, &cats, title);
+    Rast_write_cats(name, &cats);
+    Rast_free_cats(&cats);
+}
+
 } // namespace sbrt_grass

@@ -24,6 +24,11 @@ void make_colors(const std::vector<sbrt::Material> &materials,
 void make_cats(const std::vector<sbrt::Material> &materials,
                struct Categories *cats, const char *title);
 
+/// Gives raster map `name` of the current mapset (class ids) the
+/// materials' colours (make_colors) and labels (make_cats, `title`).
+void write_class_legend(const char *name, const std::vector<sbrt::Material> &materials,
+                        const char *title);
+
 } // namespace sbrt_grass
 
 #endif

@@ -108,6 +108,24 @@ void decode_colors(const std::string &text, Model &model, const std::string &wha
     }
 }
 
+std::string encode_datum(const Model &model)
+{
+    return model.vertical_datum() + "\n";
+}
+
+void decode_datum(const std::string &text, Model &model, const std::string &what)
+{
+    std::string datum = text;
+    while (!datum.empty() && (datum.back() == '\n' || datum.back() == '\r'))
+        datum.pop_back();
+    if (datum.size() > MAX_DATUM_CHARS)
+        fail(what, ": a vertical datum of more than ", MAX_DATUM_CHARS, " characters");
+    for (char ch : datum)
+        if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f)
+            fail(what, ": the vertical datum is not one line of text");
+    model.set_vertical_datum(datum);
+}
+
 std::string encode_header(const Model &model, size_t channels)
 {
     const Frame &f = model.frame();
@@ -179,6 +197,8 @@ void write_sbrt(const std::string &directory, const Model &model,
     out.write_file("header", encode_header(model, channels));
     out.write_file("cats", encode_cats(model));
     out.write_file("colors", encode_colors(model));
+    if (!model.vertical_datum().empty())
+        out.write_file("datum", encode_datum(model));
     out.write_file("hist", history);
     out.commit();
 }
@@ -238,6 +258,13 @@ Model read_sbrt(const std::string &directory, const ReadOptions &options)
         const std::string colors_path = dir.member_path("colors");
         const std::vector<uint8_t> bytes = read_all(*colors, colors_path);
         decode_colors(std::string(bytes.begin(), bytes.end()), model, colors_path);
+    }
+    if (const auto datum = dir.open_regular_if_present("datum")) {
+        const std::string datum_path = dir.member_path("datum");
+        const std::vector<uint8_t> bytes = read_all(*datum, datum_path);
+        if (bytes.size() > 2 * MAX_DATUM_CHARS)
+            fail(datum_path, ": a vertical datum of more than ", MAX_DATUM_CHARS, " characters");
+        decode_datum(std::string(bytes.begin(), bytes.end()), model, datum_path);
     }
     return model;
 }

@@ -41,6 +41,11 @@ void decode_cats(const std::string &text, Model &model, const std::string &what)
 /// `stacks`.
 std::string encode_colors(const Model &model);
 void decode_colors(const std::string &text, Model &model, const std::string &what);
+/// `datum`: the model's vertical datum, one line ("NAP"); decoding takes
+/// at most MAX_DATUM_CHARS printable characters, else throws naming `what`.
+constexpr size_t MAX_DATUM_CHARS = 80;
+std::string encode_datum(const Model &model);
+void decode_datum(const std::string &text, Model &model, const std::string &what);
 
 /// Human-readable `header` (key: value), informational.
 std::string encode_header(const Model &model, size_t channels = 0);

@@ -106,6 +106,10 @@ public:
     std::vector<Interval> stack_intervals(uint64_t cell) const;
     /// Bytes the index and the intervals take in memory.
     uint64_t memory_bytes() const { return index_.bytes() + intervals_.size() * intervals_.record_bytes(); }
+    /// The vertical datum heights are relative to ("NAP"), where the
+    /// source named one; empty where unknown.
+    const std::string &vertical_datum() const { return vertical_datum_; }
+    void set_vertical_datum(std::string datum) { vertical_datum_ = std::move(datum); }
     /// Material index whose class id is `id`, or -1.
     int64_t find_material(int32_t id) const;
 
@@ -119,6 +123,7 @@ private:
     std::vector<Material> materials_;
     StackIndex index_;
     IntervalArray intervals_;
+    std::string vertical_datum_;
 };
 
 } // namespace sbrt

@@ -1,0 +1,49 @@
+/****************************************************************************
+ * MODULE:    lib/grass_sbrt (r3.sbrt addon)
+ * PURPOSE:   A vector map open for reading feature by feature
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "vector_map.hpp"
+
+#include "util/error.hpp"
+
+namespace sbrt_grass {
+
+namespace {
+
+/// A map name as a message quotes it: a request's value can be megabytes.
+std::string quoted(const std::string &name)
+{
+    constexpr size_t limit = 200;
+    return name.size() <= limit ? name : name.substr(0, limit) + "...";
+}
+
+} // namespace
+
+VectorMap::VectorMap(const std::string &name, const char *layer)
+{
+    if (!G_find_vector2(name.c_str(), ""))
+        sbrt::fail(_("Vector map"), " <", quoted(name), "> ", _("not found"));
+    Vect_set_open_level(1);
+    if (Vect_open_old2(&map_, name.c_str(), "", layer) < 0)
+        sbrt::fail(_("Unable to open vector map"), " <", quoted(name), ">");
+    points_ = Vect_new_line_struct();
+    cats_ = Vect_new_cats_struct();
+}
+
+VectorMap::~VectorMap()
+{
+    Vect_destroy_line_struct(points_);
+    Vect_destroy_cats_struct(cats_);
+    Vect_close(&map_);
+}
+
+int VectorMap::next()
+{
+    const int type = Vect_read_next_line(&map_, points_, cats_);
+    if (type == -1)
+        sbrt::fail(_("Unable to read vector map"), " <", Vect_get_full_name(&map_), ">");
+    return type < 0 ? 0 : type;
+}
+
+} // namespace sbrt_grass

@@ -1,0 +1,41 @@
+/****************************************************************************
+ * MODULE:    r3.sbrt.profile
+ * PURPOSE:   The module's options and what a run asks for
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef R3_SBRT_PROFILE_REQUEST_HPP
+#define R3_SBRT_PROFILE_REQUEST_HPP
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "grass.hpp"
+
+struct ProfileOptions {
+    Option *input, *coordinates, *line, *cat, *output, *resolution, *png, *zexag, *width;
+    Flag *shell;
+};
+
+/// \brief What a run asks for, read from the options.
+struct ProfileRequest {
+    std::string input;
+    std::vector<glm::dvec2> vertices; ///< from coordinates=, or empty
+    std::string line;                 ///< line=: a vector map, or empty
+    std::optional<int> cat;           ///< the line's category in layer 1
+    std::string output;               ///< the class profile map, or empty
+    std::optional<double> resolution; ///< its step along the line
+    std::string png;                  ///< the figure, or empty
+    std::optional<double> zexag;      ///< the figure's
+    int width = 1000;                 ///< the figure's plot, in pixels
+    bool shell = false;               ///< -g: the figure's and map's geometry
+};
+
+ProfileOptions define_profile_options();
+/// The request; a fatal error for values the parser lets through but the
+/// profile cannot take (a resolution or exaggeration not above 0).
+ProfileRequest read_profile_request(const ProfileOptions &o);
+
+#endif
