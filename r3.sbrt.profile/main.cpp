@@ -8,6 +8,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -108,6 +109,13 @@ void print_shell(const sbrt::ProfileLine &line, const std::optional<ProfileGrid>
                 axes.extent.top);
     std::printf("elevation_ticks=%s\n", joined(axes.elevation_ticks).c_str());
     std::printf("distance_ticks=%s\n", joined(axes.distance_ticks).c_str());
+    std::vector<double> rows, columns;
+    for (double t : axes.elevation_ticks)
+        rows.push_back(layout.plot_top + std::round(axes.y_of(t)));
+    for (double t : axes.distance_ticks)
+        columns.push_back(layout.plot_left + std::round(axes.x_of(t)));
+    std::printf("elevation_tick_rows=%s\n", joined(rows).c_str());
+    std::printf("distance_tick_columns=%s\n", joined(columns).c_str());
     std::printf("distance_unit=%s\n", axes.distance_unit.c_str());
     std::printf("elevation_title=%s\n", elevation_title(units).c_str());
     std::printf("distance_title=%s\n",

@@ -112,20 +112,19 @@ void draw_axes(cairo_t *cr, const Sizes &s, const Placement &p, const FigureAxes
                const FigureContent &c)
 {
     const double x0 = p.left, y0 = p.top, w = a.plot_width, h = a.plot_height;
-    const double dz = a.extent.top - a.extent.bottom;
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, 1);
     cairo_rectangle(cr, x0 - 0.5, y0 - 0.5, w + 1, h + 1);
     cairo_stroke(cr);
     for (double t : a.elevation_ticks) {
-        const double y = std::round(y0 + (a.extent.top - t) / dz * h) + 0.5;
+        const double y = std::round(y0 + a.y_of(t)) + 0.5;
         cairo_move_to(cr, x0 - 0.5, y);
         cairo_line_to(cr, x0 - 0.5 - s.tick, y);
         cairo_stroke(cr);
         show_text_at(cr, number_text(t), x0 - s.tick - s.pad / 2, y, 1, 0.5);
     }
     for (double t : a.distance_ticks) {
-        const double x = std::round(x0 + t / a.length * w) + 0.5;
+        const double x = std::round(x0 + a.x_of(t)) + 0.5;
         cairo_move_to(cr, x, y0 + h + 0.5);
         cairo_line_to(cr, x, y0 + h + 0.5 + s.tick);
         cairo_stroke(cr);
@@ -146,7 +145,7 @@ void draw_axes(cairo_t *cr, const Sizes &s, const Placement &p, const FigureAxes
     const auto &distances = c.line->vertex_distances();
     select_font(cr, true);
     for (size_t k = 0; k < distances.size(); ++k) {
-        const double x = std::round(x0 + distances[k] / a.length * w) + 0.5;
+        const double x = std::round(x0 + a.x_of(distances[k])) + 0.5;
         show_text_at(cr, vertex_name(k), x, y0 - s.pad / 2, 0.5, 1);
         if (k == 0 || k + 1 == distances.size())
             continue;

@@ -36,6 +36,14 @@ struct FigureAxes {
     std::vector<double> distance_ticks; ///< map units
     double distance_scale = 1; ///< map units per unit of the labels (1000: km)
     std::string distance_unit;
+
+    /// Pixels below the plot's top edge of elevation `z`; right of its
+    /// left edge of distance `d`: where ticks, labels and vertices go.
+    double y_of(double z) const
+    {
+        return (extent.top - z) / (extent.top - extent.bottom) * plot_height;
+    }
+    double x_of(double d) const { return d / length * plot_width; }
 };
 
 /// The axes of a profile of a line `length` long through layers from
