@@ -196,10 +196,9 @@ int main(int argc, char *argv[])
     G_add_keyword(_("SBRT"));
     module->label = _("Draws a geological profile of an SBRT along a line.");
     module->description =
-        _("Cuts a stack-based terrain model (SBRT) along a straight or bent line and writes "
-          "the classes of the vertical section as a raster map (distance along the line by "
-          "elevation) and as a figure with axes, a legend of the classes cut, the vertical "
-          "exaggeration and a location map.");
+        _("Writes the classes that the vertical section under a straight or bent line cuts "
+          "as a raster map (distance by elevation) and as a figure with axes, legend and "
+          "location map.");
     const ProfileOptions options = define_profile_options();
     sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
     if (G_parser(argc, argv))

@@ -56,7 +56,8 @@ class TestGrassNative(TestCase):
 
     def test_dialogs_list_the_sbrts_of_the_search_path(self):
         mapset = gs.gisenv()["MAPSET"]
-        for module, key in (("r3.sbrt.render", "input"), ("r3.sbrt.convert", "sbrt")):
+        for module, key in (("r3.sbrt.render", "input"), ("r3.sbrt.convert", "sbrt"),
+                            ("r3.sbrt.profile", "input")):
             param = self.interface(module).find(f"parameter[@name='{key}']")
             values = [v.findtext("name").strip() for v in param.iter("value")]
             self.assertEqual(values, ["geo", "geology", f"geo@{mapset}",

@@ -43,6 +43,10 @@ for i, frame in enumerate(frames):
     strip.paste(frame.resize((w // 2, h // 2)), ((i % 3) * w // 2, (i // 3) * h // 2))
 strip.save(f"{out}/r3_sbrt_demo_orbit_strip.png")
 EOP
+# a geological profile along a bent line A-B-C: the class profile map
+# (distance along the line by elevation) and its figure with axes
+r3.sbrt.profile --q --o input=geology coordinates=100,200,1200,1500,1900,900 \
+    output=profile png="$out/r3_sbrt_demo_profile.png"
 # the geological map: a top view in the model's own grid, and its legend
 # from the labels and colours the material map carries (d.legend)
 g.region raster_3d=geology
@@ -55,4 +59,4 @@ GRASS_RENDER_WIDTH=900 GRASS_RENDER_HEIGHT=500 GRASS_RENDER_FILE_READ=TRUE \\
 r.stats -l -c -n map_class   # cells of each class at the surface
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/demo_job.sh"
-echo "demo: images written to $out: r3_sbrt_demo_view.png (perspective), _hidden.png (upper strata hidden), _drape.png (orthophoto draped), _boreholes.png (wells, strata hidden), _section.png (cross section), _fence.png (fence diagram), _logs.png (wells alone: log and model halves), _map.png and _legend.png (geological map), _orbit.mp4 and _orbit_strip.png (a turntable of 36 frames)"
+echo "demo: images written to $out: r3_sbrt_demo_view.png (perspective), _hidden.png (upper strata hidden), _drape.png (orthophoto draped), _boreholes.png (wells, strata hidden), _section.png (cross section), _fence.png (fence diagram), _logs.png (wells alone: log and model halves), _map.png and _legend.png (geological map), _orbit.mp4 and _orbit_strip.png (a turntable of 36 frames), _profile.png (a geological profile along a bent line)"
