@@ -3,8 +3,9 @@
 # MODULE:    tools/valgrind_modules.sh (r3.sbrt addon)
 # PURPOSE:   Runs the modules under valgrind's memcheck on the small T
 #            model (convert both ways, list and copy the SBRT, render with
-#            every operation on the CPU backend): any invalid read or
-#            write, use of uninitialised memory or bad free fails the run.
+#            every operation on the CPU backend, a profile along a line):
+#            any invalid read or write, use of uninitialised memory or bad
+#            free fails the run.
 #            Leaks are not counted: GRASS modules leave their allocations
 #            to process exit by design.
 #            Prints "valgrind: N passed, N failed" (one per module run).
@@ -56,6 +57,8 @@ count memcheck render_strata r3.sbrt.render input=geo output=img_strata size=64,
 count memcheck render_boreholes r3.sbrt.render input=geo output=img_wells size=64,48 backend=cpu \
     boreholes=wells borehole_radius=30 -b -m log_top=cat log_bottom=cat log_class=cat
 count memcheck render_fence r3.sbrt.render input=geo output=img_fence size=64,48 backend=cpu fence=fence
+count memcheck profile r3.sbrt.profile input=geo line=fence output=prof width=200 \
+    png="$(g.gisenv get=GISDBASE)/vg_profile.png"
 echo "valgrind: $passed passed, $failed failed"
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/valgrind_job.sh" "$SBRT_ROOT/tools" 2>&1 |
