@@ -98,10 +98,7 @@ ProfileRequest read_profile_request(const ProfileOptions &o)
 {
     ProfileRequest r;
     r.input = o.input->answer;
-    if (o.coordinates->answers)
-        for (int i = 0; o.coordinates->answers[i] && o.coordinates->answers[i + 1]; i += 2)
-            r.vertices.push_back({std::strtod(o.coordinates->answers[i], nullptr),
-                                  std::strtod(o.coordinates->answers[i + 1], nullptr)});
+    r.vertices = sbrt_grass::read_coordinate_pairs(o.coordinates);
     r.line = o.line->answer ? o.line->answer : "";
     if (o.cat->answer)
         r.cat = std::atoi(o.cat->answer);

@@ -58,10 +58,8 @@ WhatRequest read_what_request(const WhatOptions &o)
 {
     WhatRequest r;
     r.input = o.input->answer;
-    if (o.coordinates->answers)
-        for (int i = 0; o.coordinates->answers[i] && o.coordinates->answers[i + 1]; i += 2)
-            r.coordinates.push_back({std::strtod(o.coordinates->answers[i], nullptr),
-                                     std::strtod(o.coordinates->answers[i + 1], nullptr)});
+    for (const glm::dvec2 &p : sbrt_grass::read_coordinate_pairs(o.coordinates))
+        r.coordinates.push_back({p.x, p.y});
     r.points = o.points->answer ? o.points->answer : "";
     r.layer = o.layer->answer ? o.layer->answer : "1";
     r.where = o.where->answer ? o.where->answer : "";

@@ -52,4 +52,14 @@ unsigned read_nprocs(const Option *nprocs)
     return unsigned(threads);
 }
 
+std::vector<glm::dvec2> read_coordinate_pairs(const Option *coordinates)
+{
+    std::vector<glm::dvec2> pairs;
+    if (coordinates->answers)
+        for (int i = 0; coordinates->answers[i] && coordinates->answers[i + 1]; i += 2)
+            pairs.push_back({std::strtod(coordinates->answers[i], nullptr),
+                             std::strtod(coordinates->answers[i + 1], nullptr)});
+    return pairs;
+}
+
 } // namespace sbrt_grass

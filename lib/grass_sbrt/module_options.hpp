@@ -7,6 +7,10 @@
 #ifndef SBRT_MODULE_OPTIONS_HPP
 #define SBRT_MODULE_OPTIONS_HPP
 
+#include <vector>
+
+#include <glm/vec2.hpp>
+
 #include "grass.hpp"
 
 namespace sbrt_grass {
@@ -22,6 +26,10 @@ Option *define_probability(const char *label);
 Option *define_nprocs();
 /// Its answer; a fatal error for a negative number.
 unsigned read_nprocs(const Option *nprocs);
+
+/// The east,north pairs of a coordinates= option (G_OPT_M_COORDS with
+/// multiple answers), in order; none where it has no answer.
+std::vector<glm::dvec2> read_coordinate_pairs(const Option *coordinates);
 
 } // namespace sbrt_grass
 
