@@ -24,6 +24,8 @@ namespace {
 
 /// Highest plot a figure may have, in pixels.
 constexpr int MAX_PLOT_HEIGHT = 8000;
+/// Most samples a side of the location map's footprint.
+constexpr int MAX_LOCATION_SAMPLES = 24;
 
 std::string number_text(double value)
 {
@@ -165,7 +167,9 @@ void draw_axes(cairo_t *cr, const Sizes &s, const Placement &p, const FigureAxes
 
 /// \brief The location map's frame: an area holding the model and the
 /// line, `side` pixels on its longer side; the cells with layers are
-/// sampled on a grid of at most 64 a side.
+/// sampled on a grid of at most MAX_LOCATION_SAMPLES a side (each sample
+/// decodes the block holding it: a finer grid would read a national
+/// model's every block for a picture 190 pixels wide).
 struct LocationFrame {
     LocationFrame(const sbrt::Frame &f, const sbrt::ProfileLine &line, double side, double scale_px)
         : west(f.west), east(f.east), south(f.south), north(f.north), model(f)
@@ -181,8 +185,10 @@ struct LocationFrame {
         scale = side / std::max(east - west, north - south);
         w = (east - west) * scale;
         h = (north - south) * scale;
-        across = std::clamp(int(std::ceil((f.east - f.west) * scale / (3 * scale_px))), 1, 64);
-        down = std::clamp(int(std::ceil((f.north - f.south) * scale / (3 * scale_px))), 1, 64);
+        across = std::clamp(int(std::ceil((f.east - f.west) * scale / (3 * scale_px))), 1,
+                            MAX_LOCATION_SAMPLES);
+        down = std::clamp(int(std::ceil((f.north - f.south) * scale / (3 * scale_px))), 1,
+                          MAX_LOCATION_SAMPLES);
     }
     /// Map corner of sample (r, k): its north-west for (r, k), ...
     glm::dvec2 corner(int r, int k) const
