@@ -141,6 +141,38 @@ class ViewState:
             cy + along[1] * half,
         )
 
+    def section_chord(self):
+        """x1,y1,x2,y2 of the section's line within the model's extent
+        (west or south end first), or None without a section."""
+        points = self.section_points()
+        if points is None:
+            return None
+        x1, y1, x2, y2 = points
+        e = self.extent
+        # Liang-Barsky: the part of the line inside the rectangle
+        low, high = 0.0, 1.0
+        for p, q in ((x1 - x2, x1 - e.west), (x2 - x1, e.east - x1),
+                     (y1 - y2, y1 - e.south), (y2 - y1, e.north - y1)):
+            if p == 0:
+                continue
+            t = q / p
+            if p < 0:
+                low = max(low, t)
+            else:
+                high = min(high, t)
+        return (x1 + low * (x2 - x1), y1 + low * (y2 - y1),
+                x1 + high * (x2 - x1), y1 + high * (y2 - y1))
+
+    def profile_command(self, png, output=""):
+        """The r3.sbrt.profile command line of the section's line across
+        the model (a figure `png`, and a map `output` where given)."""
+        words = ["input=" + self.sbrt,
+                 "coordinates=" + ",".join(number(v) for v in self.section_chord())]
+        if output:
+            words.append("output=" + output)
+        words.append("png=" + png)
+        return "r3.sbrt.profile " + " ".join(shlex.quote(w) for w in words)
+
     def move_section(self, share):
         """Moves the section by `share` of the model across (-2..2)."""
         if self.section is not None:

@@ -20,6 +20,7 @@ from gui_core.gselect import ColumnSelect, Select
 
 from column_profile import ProfileError, read_column, show_profile
 from render_thread import RenderThread
+from section_profile import SectionProfileFrame, profile_png_path
 from view_client import ServerError
 from strata_panel import StrataPanel
 from view_canvas import ViewCanvas
@@ -111,6 +112,9 @@ class ViewerFrame(wx.Frame):
              _("Write the raster maps and the PNG of this view"), self.on_save),
             (_("Record orbit"), wx.ART_EXECUTABLE_FILE,
              _("Render a turn about the target into PNGs and a video"), self.on_record),
+            (_("Section profile"), wx.ART_REPORT_VIEW,
+             _("Draw the cross section as a geological profile with axes, legend and "
+               "location map (r3.sbrt.profile)"), self.on_section_profile),
             (_("Reset view"), wx.ART_GO_HOME, _("Frame the whole model again"),
              self.on_reset),
         ]
@@ -502,10 +506,10 @@ class ViewerFrame(wx.Frame):
         self.request_frame(True)
 
     # save and record ----------------------------------------------------
-    def _run(self, command, event, busy, failure, finished):
+    def _run(self, command, event, busy, failure, finished, then=None):
         """Shows `command` and runs it on a thread (status `busy`); then logs
-        `event` with its outcome and shows `finished`, or its messages in a
-        box titled `failure`."""
+        `event` with its outcome and shows `finished` (and calls `then`), or
+        its messages in a box titled `failure`."""
         self.command.SetValue(command)
         self.SetStatusText(busy, 0)
         self.log.write("command", command=command)
@@ -519,6 +523,8 @@ class ViewerFrame(wx.Frame):
                 wx.MessageBox(messages, failure, wx.OK | wx.ICON_ERROR, self)
             else:
                 self.SetStatusText(finished, 0)
+                if then:
+                    then()
 
         def work():
             result = subprocess.run(shlex.split(command), capture_output=True, text=True)
@@ -549,6 +555,23 @@ class ViewerFrame(wx.Frame):
         command = self.state.command(*self.canvas.GetClientSize(), png=png, extra=extra)
         self._run(command, "recorded", _("Recording an orbit of %d frames...") % frames,
                   _("Record orbit failed"), _("Orbit written: %s") % (video or png))
+
+    def on_section_profile(self, event):
+        if self.state.section is None:
+            wx.MessageBox(_("Turn the cross section on first: its line is the profile's."),
+                          _("Section profile"), wx.OK | wx.ICON_INFORMATION, self)
+            return
+        png = profile_png_path()
+        command = self.state.profile_command(png)
+
+        def show():
+            frame = SectionProfileFrame(self, png, _("Profile of the section of %s")
+                                        % self.state.sbrt)
+            frame.Show()
+            self.log.write("section_profile", png=png, size=list(frame.GetClientSize()))
+
+        self._run(command, "profiled", _("Drawing the section's profile..."),
+                  _("Section profile failed"), _("Profile drawn"), then=show)
 
     def on_reset(self, event):
         self.state.reset_camera()

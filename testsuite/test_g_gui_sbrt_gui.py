@@ -5,7 +5,8 @@ PURPOSE:   g.gui.sbrt driven as a person would, under Xvfb: xdotool drags
            view; hiding a stratum in the list removes its colour from the
            screen; "Save view" writes maps equal to the screen pixel for
            pixel (the command it shows renders them); "Record orbit" writes
-           the frames and the video
+           the frames and the video; "Section profile" opens the profile
+           r3.sbrt.profile draws along the section's line
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
@@ -134,6 +135,26 @@ class TestViewerGui(TestCase, ViewerSession):
         pngs = sorted(f for f in os.listdir(self.work) if f.startswith("geo_orbit_"))
         self.assertEqual(pngs, ["geo_orbit_%04d.png" % k for k in range(1, 5)])
         self.assertGreater(os.path.getsize(os.path.join(self.work, "geo_orbit.mp4")), 0)
+
+    def test_section_profile(self):
+        # the section on: its line is the profile's
+        count = len(self.events())
+        self.click("section")
+        self.wait_for(lambda e: e["event"] == "frame" and e["full"] and
+                      any(w.startswith("section=") for w in e["words"]), after=count)
+        count = len(self.events())
+        tx, ty, tw, th = self.widgets["toolbar"]
+        self.xdotool("mousemove", tx + 268, ty + th // 2, "click", 1)
+        profiled = self.wait_for(lambda e: e["event"] == "profiled", after=count)
+        self.assertEqual(profiled["returncode"], 0, profiled["messages"])
+        self.assertIn("r3.sbrt.profile input=geo coordinates=", profiled["command"])
+        shown = self.wait_for(lambda e: e["event"] == "section_profile", after=count)
+        self.assertTrue(os.path.exists(shown["png"]))
+        width, height = shown["size"]
+        self.assertGreater(width, 600)
+        self.assertGreater(height, 300)
+        self.xdotool("search", "--sync", "--name", "^Profile of the section of geo",
+                     "windowfocus", "--sync")
 
 
 if __name__ == "__main__":

@@ -111,6 +111,30 @@ class TestViewState(TestCase):
         self.assertAlmostEqual(x1, 500.0)
         self.assertAlmostEqual(x2, 500.0)
 
+    def test_profile_of_the_section_across_the_model(self):
+        state = make_state()
+        state.section = (30.0, 0.2)
+        x1, y1, x2, y2 = state.section_chord()
+        # both ends on the model's edges, on the section's line
+        for x, y in ((x1, y1), (x2, y2)):
+            on_edge = min(abs(x - 0), abs(x - 1000), abs(y - 0), abs(y - 2000))
+            self.assertAlmostEqual(on_edge, 0, places=6)
+            self.assertTrue(-1e-6 <= x <= 1000 + 1e-6 and -1e-6 <= y <= 2000 + 1e-6)
+        px1, py1, px2, py2 = state.section_points()
+        cross = (px2 - px1) * (y2 - py1) - (py2 - py1) * (x2 - px1)
+        self.assertAlmostEqual(cross / math.hypot(px2 - px1, py2 - py1), 0, places=6)
+        self.assertAlmostEqual(math.degrees(math.atan2(y2 - y1, x2 - x1)), 30.0)
+        args = shlex.split(state.profile_command("/tmp/p q.png", output="prof"))
+        self.assertEqual(args[0], "r3.sbrt.profile")
+        self.assertEqual(args[1], "input=model")
+        self.assertEqual(word(args, "output"), "prof")
+        self.assertEqual(word(args, "png"), "/tmp/p q.png")
+        numbers = [float(v) for v in word(args, "coordinates").split(",")]
+        for got, want in zip(numbers, (x1, y1, x2, y2)):
+            self.assertAlmostEqual(got, want, delta=1e-3)
+        state.section = None
+        self.assertIsNone(state.section_chord())
+
     def test_words(self):
         state = make_state()
         words = state.words(320, 240)
