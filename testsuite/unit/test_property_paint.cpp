@@ -111,11 +111,42 @@ TEST(PropertyPaint, ValueAtHitIsTheFirstSolidVoxelsValue)
                                               got_sum == a + 2.0 * b;
             agree += same;
             valued += a != FILL;
+            // the colour: the ramp's at the value (the integer sum's colour
+            // table gives it), the no-value grey without one
+            if (has_sum)
+                EXPECT_EQ(sum.color(hit), sum.ramp().at(got_sum)) << got_sum;
+            else
+                EXPECT_EQ(sum.color(hit), glm::dvec3(190));
         }
     }
     EXPECT_GT(valued, rays / 2);
     // disagreement only where a ray passes exactly through an edge
     EXPECT_GE(agree, rays - rays / 1000) << agree << " of " << rays;
+}
+
+TEST(PropertyPaint, IntegerSumsColourFromATableAndOthersFromTheRamp)
+{
+    const std::string dir = sbrt_test::temp_dir("property_table");
+    const PropertyFixture fx = fixture(3, dir);
+    // a ramp with a step inside an integer's reach: a table off by one or
+    // taking a fraction for the value would show
+    const ColorRamp ramp({{{0, {0, 0, 0}}, {100, {250, 0, 0}}},
+                          {{100.5, {0, 250, 0}}, {300, {0, 0, 250}}}});
+    const PropertyPaint sum(fx.model, fx.channels, {0, 1}, ramp);
+    const Tracer tracer(fx.model, 1.0);
+    const Frame &f = fx.voxels.frame;
+    int checked = 0;
+    for (int row = 0; row < f.rows; ++row)
+        for (int col = 0; col < f.cols; ++col) {
+            const Hit hit = tracer.trace({{col + 0.5, f.rows - row - 0.5, f.depths + 5.0},
+                                          {0, 0, -1}});
+            double v;
+            if (!sum.value(hit, v))
+                continue;
+            EXPECT_EQ(sum.color(hit), ramp.at(v)) << v;
+            ++checked;
+        }
+    EXPECT_GT(checked, f.rows * f.cols / 3);
 }
 
 TEST(PropertyPaint, HiddenStrataShowTheValuesBehindThem)

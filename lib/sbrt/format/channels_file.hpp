@@ -132,6 +132,21 @@ public:
         out = column(channel, cell)[level - s.lo];
         return true;
     }
+    /// The values at voxel `level` of `cell` of `count` channels (their
+    /// indices in `channels`) into `out`; false outside the cell's span.
+    /// The cell's block is found once for all of them (a property that
+    /// sums channels reads each hit's voxel so).
+    bool values(const size_t *channels, size_t count, uint64_t cell, uint32_t level,
+                float *out) const
+    {
+        const CellSlot &s = slots_[cell];
+        if (level < s.lo || level >= s.hi)
+            return false;
+        const size_t block = block_of(cell), at = s.at + (level - s.lo);
+        for (size_t k = 0; k < count; ++k)
+            out[k] = block_values(channels[k], block)[at];
+        return true;
+    }
     /// Blocks decoded so far (all channels) and in the file.
     uint64_t blocks_decoded() const { return decoded_; }
     uint64_t block_count() const { return uint64_t(blocks_) * channels_.size(); }

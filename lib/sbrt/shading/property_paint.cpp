@@ -102,6 +102,30 @@ PropertyPaint::PropertyPaint(const Model &model,
     for (size_t c : summed_)
         if (c >= channels_->size())
             fail("a property view of channel ", c, " of ", channels_->size());
+    make_color_table();
+}
+
+void PropertyPaint::make_color_table()
+{
+    // a sum of integer values (GeoTOP's percentages) takes few values: the
+    // ramp's colour of each, looked up by index instead of searched
+    double low = 0, high = 0;
+    for (size_t c : summed_) {
+        const ChannelInfo &info = channels_->info(c);
+        if (!info.integer || info.scale != std::round(info.scale) ||
+            info.offset != std::round(info.offset) || !std::isfinite(info.min) ||
+            !std::isfinite(info.max))
+            return;
+        const double a = info.physical(float(info.min)), b = info.physical(float(info.max));
+        low += std::min(a, b);
+        high += std::max(a, b);
+    }
+    if (!(high - low < double(MAX_COLOR_TABLE)))
+        return;
+    table_low_ = low;
+    table_.resize(size_t(high - low) + 1);
+    for (size_t k = 0; k < table_.size(); ++k)
+        table_[k] = ramp_.at(low + double(k));
 }
 
 bool property_at_hit(const Model &model, const PropertyChannels &channels,
@@ -110,13 +134,20 @@ bool property_at_hit(const Model &model, const PropertyChannels &channels,
     HitVoxel voxel;
     if (!voxel_of_hit(model, hit, voxel))
         return false;
+    // the voxel's values of every summed channel, a chunk at a time
+    constexpr size_t CHUNK = 16;
+    float raw[CHUNK];
     double sum = 0;
-    for (size_t c : summed) {
-        float raw;
-        const ChannelInfo &info = channels.info(c);
-        if (!channels.value(c, voxel.cell, voxel.level, raw) || info.is_fill(raw))
+    for (size_t first = 0; first < summed.size(); first += CHUNK) {
+        const size_t count = std::min(CHUNK, summed.size() - first);
+        if (!channels.values(summed.data() + first, count, voxel.cell, voxel.level, raw))
             return false;
-        sum += info.physical(raw);
+        for (size_t k = 0; k < count; ++k) {
+            const ChannelInfo &info = channels.info(summed[first + k]);
+            if (info.is_fill(raw[k]))
+                return false;
+            sum += info.physical(raw[k]);
+        }
     }
     out = sum;
     return true;
@@ -158,7 +189,13 @@ glm::dvec3 UncertaintyFade::apply(const Hit &hit, glm::dvec3 color) const
 glm::dvec3 PropertyPaint::color(const Hit &hit) const
 {
     double v;
-    return value(hit, v) ? ramp_.at(v) : no_value_;
+    if (!value(hit, v))
+        return no_value_;
+    // the table where it holds v (a file's stated range is not trusted)
+    const double k = v - table_low_;
+    if (k >= 0 && k < double(table_.size()) && k == std::floor(k))
+        return table_[size_t(k)];
+    return ramp_.at(v);
 }
 
 } // namespace sbrt

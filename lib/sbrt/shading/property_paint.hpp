@@ -78,12 +78,21 @@ public:
     const PropertyChannels &channels() const { return *channels_; }
     const std::vector<size_t> &summed() const { return summed_; }
 
+    /// Most entries of the colour table of an integer-valued property.
+    static constexpr size_t MAX_COLOR_TABLE = 1 << 16;
+
 private:
+    void make_color_table();
+
     const Model &model_;
     std::shared_ptr<const PropertyChannels> channels_;
     std::vector<size_t> summed_;
     ColorRamp ramp_;
     glm::dvec3 no_value_;
+    /// the ramp at table_low_, table_low_ + 1, ...: where every summed
+    /// channel holds integers (empty otherwise)
+    std::vector<glm::dvec3> table_;
+    double table_low_ = 0;
 };
 
 } // namespace sbrt
