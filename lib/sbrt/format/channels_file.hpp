@@ -147,14 +147,21 @@ public:
             out[k] = block_values(channels[k], block)[at];
         return true;
     }
+    /// Where `cell`'s values lie: its span and first value in its block.
+    const CellSlot &slot(uint64_t cell) const { return slots_[cell]; }
+    /// The block holding `cell`'s values (of every channel), of blocks().
+    size_t block_of(uint64_t cell) const;
+    size_t blocks() const { return blocks_; }
+    /// The decoded values of `channel` in `block`, every cell's span after
+    /// another (decoded now where they are not yet; throws sbrt::Error for
+    /// a corrupt block).
+    const std::vector<float> &block_values(size_t channel, size_t block) const;
     /// Blocks decoded so far (all channels) and in the file.
     uint64_t blocks_decoded() const { return decoded_; }
     uint64_t block_count() const { return uint64_t(blocks_) * channels_.size(); }
 
 private:
     struct Block;
-    const std::vector<float> &block_values(size_t channel, size_t block) const;
-    size_t block_of(uint64_t cell) const;
 
     std::shared_ptr<const MappedFile> file_;
     std::string what_;

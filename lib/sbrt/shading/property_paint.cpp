@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <mutex>
 
 #include "util/error.hpp"
 
@@ -90,6 +92,13 @@ bool voxel_of_hit(const Model &model, const Hit &hit, HitVoxel &voxel)
     return true;
 }
 
+struct PropertyPaint::SumBlock {
+    std::once_flag once;
+    std::vector<double> sums;
+};
+
+PropertyPaint::~PropertyPaint() = default;
+
 PropertyPaint::PropertyPaint(const Model &model,
                              std::shared_ptr<const PropertyChannels> channels,
                              std::vector<size_t> summed, ColorRamp ramp,
@@ -103,6 +112,27 @@ PropertyPaint::PropertyPaint(const Model &model,
         if (c >= channels_->size())
             fail("a property view of channel ", c, " of ", channels_->size());
     make_color_table();
+    if (summed_.size() > 1)
+        sums_ = std::make_unique<SumBlock[]>(channels_->blocks());
+}
+
+const std::vector<double> &PropertyPaint::block_sums(size_t block) const
+{
+    SumBlock &b = sums_[block];
+    std::call_once(b.once, [&] {
+        std::vector<double> sums;
+        for (size_t k = 0; k < summed_.size(); ++k) {
+            const ChannelInfo &info = channels_->info(summed_[k]);
+            const std::vector<float> &values = channels_->block_values(summed_[k], block);
+            if (k == 0)
+                sums.assign(values.size(), 0.0);
+            for (size_t i = 0; i < values.size(); ++i)
+                sums[i] = info.is_fill(values[i]) ? std::numeric_limits<double>::quiet_NaN()
+                                                  : sums[i] + info.physical(values[i]);
+        }
+        b.sums = std::move(sums);
+    });
+    return b.sums;
 }
 
 void PropertyPaint::make_color_table()
@@ -155,7 +185,20 @@ bool property_at_hit(const Model &model, const PropertyChannels &channels,
 
 bool PropertyPaint::value(const Hit &hit, double &out) const
 {
-    return property_at_hit(model_, *channels_, summed_, hit, out);
+    if (!sums_)
+        return property_at_hit(model_, *channels_, summed_, hit, out);
+    HitVoxel voxel;
+    if (!voxel_of_hit(model_, hit, voxel))
+        return false;
+    const CellSlot &slot = channels_->slot(voxel.cell);
+    if (voxel.level < slot.lo || voxel.level >= slot.hi)
+        return false;
+    const double sum =
+        block_sums(channels_->block_of(voxel.cell))[slot.at + (voxel.level - slot.lo)];
+    if (std::isnan(sum))
+        return false;
+    out = sum;
+    return true;
 }
 
 UncertaintyFade::UncertaintyFade(const Model &model,

@@ -68,6 +68,7 @@ public:
     PropertyPaint(const Model &model, std::shared_ptr<const PropertyChannels> channels,
                   std::vector<size_t> summed, ColorRamp ramp,
                   std::array<uint8_t, 3> no_value = {190, 190, 190});
+    ~PropertyPaint();
 
     /// The property at `hit`; false where it has none.
     bool value(const Hit &hit, double &out) const;
@@ -83,6 +84,9 @@ public:
 
 private:
     void make_color_table();
+    /// The sums of `block`'s voxels, NaN where a summed channel has no
+    /// value (made once, by whichever thread needs it first).
+    const std::vector<double> &block_sums(size_t block) const;
 
     const Model &model_;
     std::shared_ptr<const PropertyChannels> channels_;
@@ -93,6 +97,10 @@ private:
     /// channel holds integers (empty otherwise)
     std::vector<glm::dvec3> table_;
     double table_low_ = 0;
+    /// a sum's values block by block: a hit reads one array, not one per
+    /// channel (each a cache miss on a model larger than the cache)
+    struct SumBlock;
+    std::unique_ptr<SumBlock[]> sums_;
 };
 
 } // namespace sbrt
