@@ -212,6 +212,28 @@ UncertaintyFade::UncertaintyFade(const Model &model,
     if (!(high > low))
         fail("an uncertainty fade from ", low, " to ", high, ": the high end must be "
              "above the low one");
+    const ChannelInfo &info = channels_->info(channel);
+    if (info.integer && info.scale == std::round(info.scale) &&
+        info.offset == std::round(info.offset) && std::isfinite(info.min) &&
+        std::isfinite(info.max)) {
+        const double a = info.physical(float(info.min)), b = info.physical(float(info.max));
+        if (std::abs(b - a) < double(MAX_ENTRIES)) {
+            entries_low_ = std::min(a, b);
+            entries_ = size_t(std::abs(b - a)) + 1;
+        }
+    }
+}
+
+bool UncertaintyFade::value(const Hit &hit, double &out) const
+{
+    return property_at_hit(model_, *channels_, channel_, hit, out);
+}
+
+glm::dvec3 UncertaintyFade::faded(const glm::dvec3 &color, double value) const
+{
+    // Rec. 709 luminance: the grey the colour fades to
+    const double grey = 0.2126 * color.x + 0.7152 * color.y + 0.0722 * color.z;
+    return color + share(value) * (glm::dvec3(grey) - color);
 }
 
 double UncertaintyFade::share(double value) const
@@ -222,11 +244,7 @@ double UncertaintyFade::share(double value) const
 glm::dvec3 UncertaintyFade::apply(const Hit &hit, glm::dvec3 color) const
 {
     double v;
-    if (!property_at_hit(model_, *channels_, channel_, hit, v))
-        return color;
-    // Rec. 709 luminance: the grey the colour fades to
-    const double grey = 0.2126 * color.x + 0.7152 * color.y + 0.0722 * color.z;
-    return color + share(v) * (glm::dvec3(grey) - color);
+    return value(hit, v) ? faded(color, v) : color;
 }
 
 glm::dvec3 PropertyPaint::color(const Hit &hit) const
@@ -235,10 +253,8 @@ glm::dvec3 PropertyPaint::color(const Hit &hit) const
     if (!value(hit, v))
         return no_value_;
     // the table where it holds v (a file's stated range is not trusted)
-    const double k = v - table_low_;
-    if (k >= 0 && k < double(table_.size()) && k == std::floor(k))
-        return table_[size_t(k)];
-    return ramp_.at(v);
+    const int64_t k = table_entry(v);
+    return k >= 0 ? table_[size_t(k)] : ramp_.at(v);
 }
 
 } // namespace sbrt

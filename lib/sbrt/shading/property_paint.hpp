@@ -9,6 +9,7 @@
 #define SBRT_PROPERTY_PAINT_HPP
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -48,14 +49,31 @@ public:
     glm::dvec3 apply(const Hit &hit, glm::dvec3 color) const;
     /// The share of grey, 0..1, of an uncertainty value.
     double share(double value) const;
+    /// The uncertainty at `hit`'s voxel; false where it has none.
+    bool value(const Hit &hit, double &out) const;
+    /// `color` faded by uncertainty `value`.
+    glm::dvec3 faded(const glm::dvec3 &color, double value) const;
     double low() const { return low_; }
     double high() const { return high_; }
+    /// Where the channel holds few whole numbers (at most MAX_ENTRIES:
+    /// GeoTOP's onz_lk 0..100): their count, the first, and the entry of
+    /// value `v` (-1 where it is none of them); 0 entries otherwise.
+    static constexpr size_t MAX_ENTRIES = 4096;
+    size_t entries() const { return entries_; }
+    double entries_low() const { return entries_low_; }
+    int64_t entry(double v) const
+    {
+        const double k = v - entries_low_;
+        return k >= 0 && k < double(entries_) && k == std::floor(k) ? int64_t(k) : -1;
+    }
 
 private:
     const Model &model_;
     std::shared_ptr<const PropertyChannels> channels_;
     std::vector<size_t> channel_;
     double low_, high_;
+    size_t entries_ = 0;
+    double entries_low_ = 0;
 };
 
 /// \brief A property shown on the model's hits.
@@ -75,6 +93,18 @@ public:
     /// The surface colour of `hit` (0..255) before lighting.
     glm::dvec3 color(const Hit &hit) const;
 
+    /// The colour table of an integer-valued sum (the ramp at
+    /// table_low(), table_low() + 1, ...); empty for other properties.
+    const std::vector<glm::dvec3> &table() const { return table_; }
+    double table_low() const { return table_low_; }
+    /// The entry of table() that colours value `v`, or -1 where none does.
+    int64_t table_entry(double v) const
+    {
+        const double k = v - table_low_;
+        return k >= 0 && k < double(table_.size()) && k == std::floor(k) ? int64_t(k) : -1;
+    }
+    /// Hits without a value take this colour.
+    const glm::dvec3 &no_value() const { return no_value_; }
     const ColorRamp &ramp() const { return ramp_; }
     const PropertyChannels &channels() const { return *channels_; }
     const std::vector<size_t> &summed() const { return summed_; }

@@ -39,6 +39,9 @@ uint8_t round_channel(double c)
 
 } // namespace
 
+/// Most entries of a table of lit face colours (3 bytes each).
+constexpr size_t MAX_FACE_TABLE = size_t(1) << 22;
+
 PixelShader::PixelShader(const Model &model, const Shading &shading)
     : shading_(shading)
 {
@@ -46,6 +49,31 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
     for (size_t m = 0; m < model.materials().size(); ++m) {
         const auto rgb = material_color(model, uint32_t(m));
         base_.emplace_back(rgb[0], rgb[1], rgb[2]);
+    }
+    if (shading.property && !shading.drape && !shading.fade &&
+        !shading.property->table().empty()) {
+        // a sum of integers: each value's colour on each face, lit once
+        const auto &table = shading.property->table();
+        property_face_rgb_.reserve((table.size() + 1) * 6);
+        for (size_t k = 0; k <= table.size(); ++k)
+            for (int face = int(Face::west); face <= int(Face::top); ++face)
+                property_face_rgb_.push_back(lit_face(
+                    k < table.size() ? table[k] : shading.property->no_value(), Face(face)));
+    }
+    const size_t fades = shading.fade ? shading.fade->entries() + 1 : 0;
+    if (shading.fade && !shading.drape && !shading.property && fades > 1 &&
+        base_.size() * fades * 6 <= MAX_FACE_TABLE) {
+        // few uncertainty values: each class's faded colour on each face
+        fade_face_rgb_.reserve(base_.size() * fades * 6);
+        for (const glm::dvec3 &base : base_)
+            for (size_t k = 0; k < fades; ++k) {
+                const glm::dvec3 surface =
+                    k + 1 < fades
+                        ? shading.fade->faded(base, shading.fade->entries_low() + double(k))
+                        : base;
+                for (int face = int(Face::west); face <= int(Face::top); ++face)
+                    fade_face_rgb_.push_back(lit_face(surface, Face(face)));
+            }
     }
     if (shading.drape || shading.property || shading.fade) // colours per hit
         return;
@@ -67,11 +95,41 @@ std::array<uint8_t, 3> PixelShader::operator()(const Hit &hit) const
         if (!hit.is_hit())
             return shading_.background;
         const int face = int(hit.face);
-        if (!cell_face_rgb_.empty() && face >= int(Face::west) && face <= int(Face::top) &&
-            hit.normal == glm::vec3(face_normal(hit.face)))
+        const bool cell_face = face >= int(Face::west) && face <= int(Face::top) &&
+                               hit.normal == glm::vec3(face_normal(hit.face));
+        if (cell_face && !cell_face_rgb_.empty())
             return cell_face_rgb_[size_t(hit.material) * 6 + size_t(face - 1)];
+        if (cell_face && !fade_face_rgb_.empty()) {
+            const size_t fades = shading_.fade->entries() + 1;
+            double v;
+            const int64_t k = shading_.fade->value(hit, v) ? shading_.fade->entry(v)
+                                                           : int64_t(fades - 1);
+            if (k >= 0)
+                return fade_face_rgb_[(size_t(hit.material) * fades + size_t(k)) * 6 +
+                                      size_t(face - 1)];
+        }
+        if (cell_face && !property_face_rgb_.empty()) {
+            double v;
+            const int64_t k = shading_.property->value(hit, v)
+                                  ? shading_.property->table_entry(v)
+                                  : int64_t(shading_.property->table().size());
+            if (k >= 0)
+                return property_face_rgb_[size_t(k) * 6 + size_t(face - 1)];
+        }
     }
     return lit(hit);
+}
+
+std::array<uint8_t, 3> PixelShader::lit_face(const glm::dvec3 &surface, Face face) const
+{
+    // lit() with nothing in front (veil 0, transmittance 1): the same sums
+    const glm::dvec3 normal(glm::vec3(face_normal(face)));
+    const double lambert = std::max(0.0, glm::dot(shading_.light, normal));
+    const glm::dvec3 color = surface * (shading_.ambient + (1 - shading_.ambient) * lambert);
+    std::array<uint8_t, 3> rgb;
+    for (int k = 0; k < 3; ++k)
+        rgb[k] = round_channel(std::clamp(color[k], 0.0, 255.0));
+    return rgb;
 }
 
 std::array<uint8_t, 3> PixelShader::lit(const Hit &hit) const

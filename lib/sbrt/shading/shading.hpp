@@ -70,6 +70,16 @@ private:
     /// six faces with its face normal, nothing in front: per material,
     /// faces west..top (Face values 1..6).
     std::vector<std::array<uint8_t, 3>> cell_face_rgb_;
+    /// The same for a property with a colour table (PropertyPaint::table)
+    /// and no drape or fade: per table entry, then for hits without a
+    /// value (the last six), faces west..top.
+    std::vector<std::array<uint8_t, 3>> property_face_rgb_;
+    /// The same for a fade whose channel holds few whole numbers, with
+    /// neither drape nor property: per material, per fade entry and then
+    /// for hits without a value, faces west..top.
+    std::vector<std::array<uint8_t, 3>> fade_face_rgb_;
+    /// lit()'s colour of `surface` on a cell face with its face normal.
+    std::array<uint8_t, 3> lit_face(const glm::dvec3 &surface, Face face) const;
 };
 
 /// Pixel (row, col) of `band` (a band of camera's image): the colour of
