@@ -132,21 +132,6 @@ public:
         out = column(channel, cell)[level - s.lo];
         return true;
     }
-    /// The values at voxel `level` of `cell` of `count` channels (their
-    /// indices in `channels`) into `out`; false outside the cell's span.
-    /// The cell's block is found once for all of them (a property that
-    /// sums channels reads each hit's voxel so).
-    bool values(const size_t *channels, size_t count, uint64_t cell, uint32_t level,
-                float *out) const
-    {
-        const CellSlot &s = slots_[cell];
-        if (level < s.lo || level >= s.hi)
-            return false;
-        const size_t block = block_of(cell), at = s.at + (level - s.lo);
-        for (size_t k = 0; k < count; ++k)
-            out[k] = block_values(channels[k], block)[at];
-        return true;
-    }
     /// Where `cell`'s values lie: its span and first value in its block.
     const CellSlot &slot(uint64_t cell) const { return slots_[cell]; }
     /// The block holding `cell`'s values (of every channel), of blocks().

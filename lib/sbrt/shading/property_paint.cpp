@@ -111,7 +111,12 @@ PropertyPaint::PropertyPaint(const Model &model,
     for (size_t c : summed_)
         if (c >= channels_->size())
             fail("a property view of channel ", c, " of ", channels_->size());
-    make_color_table();
+    // a sum of integer values (GeoTOP's percentages) takes few values: the
+    // ramp's colour of each, looked up by index instead of searched
+    whole_ = whole_values(*channels_, summed_, MAX_COLOR_TABLE);
+    table_.resize(whole_.count);
+    for (size_t k = 0; k < table_.size(); ++k)
+        table_[k] = ramp_.at(whole_.low + double(k));
     if (summed_.size() > 1)
         sums_ = std::make_unique<SumBlock[]>(channels_->blocks());
 }
@@ -135,27 +140,23 @@ const std::vector<double> &PropertyPaint::block_sums(size_t block) const
     return b.sums;
 }
 
-void PropertyPaint::make_color_table()
+WholeValues whole_values(const PropertyChannels &channels, const std::vector<size_t> &summed,
+                         size_t most)
 {
-    // a sum of integer values (GeoTOP's percentages) takes few values: the
-    // ramp's colour of each, looked up by index instead of searched
     double low = 0, high = 0;
-    for (size_t c : summed_) {
-        const ChannelInfo &info = channels_->info(c);
+    for (size_t c : summed) {
+        const ChannelInfo &info = channels.info(c);
         if (!info.integer || info.scale != std::round(info.scale) ||
             info.offset != std::round(info.offset) || !std::isfinite(info.min) ||
             !std::isfinite(info.max))
-            return;
+            return {};
         const double a = info.physical(float(info.min)), b = info.physical(float(info.max));
         low += std::min(a, b);
         high += std::max(a, b);
     }
-    if (!(high - low < double(MAX_COLOR_TABLE)))
-        return;
-    table_low_ = low;
-    table_.resize(size_t(high - low) + 1);
-    for (size_t k = 0; k < table_.size(); ++k)
-        table_[k] = ramp_.at(low + double(k));
+    if (!(high - low < double(most)))
+        return {};
+    return {low, size_t(high - low) + 1};
 }
 
 bool property_at_hit(const Model &model, const PropertyChannels &channels,
@@ -164,20 +165,13 @@ bool property_at_hit(const Model &model, const PropertyChannels &channels,
     HitVoxel voxel;
     if (!voxel_of_hit(model, hit, voxel))
         return false;
-    // the voxel's values of every summed channel, a chunk at a time
-    constexpr size_t CHUNK = 16;
-    float raw[CHUNK];
     double sum = 0;
-    for (size_t first = 0; first < summed.size(); first += CHUNK) {
-        const size_t count = std::min(CHUNK, summed.size() - first);
-        if (!channels.values(summed.data() + first, count, voxel.cell, voxel.level, raw))
+    for (size_t c : summed) {
+        float raw;
+        const ChannelInfo &info = channels.info(c);
+        if (!channels.value(c, voxel.cell, voxel.level, raw) || info.is_fill(raw))
             return false;
-        for (size_t k = 0; k < count; ++k) {
-            const ChannelInfo &info = channels.info(summed[first + k]);
-            if (info.is_fill(raw[k]))
-                return false;
-            sum += info.physical(raw[k]);
-        }
+        sum += info.physical(raw);
     }
     out = sum;
     return true;
@@ -212,16 +206,7 @@ UncertaintyFade::UncertaintyFade(const Model &model,
     if (!(high > low))
         fail("an uncertainty fade from ", low, " to ", high, ": the high end must be "
              "above the low one");
-    const ChannelInfo &info = channels_->info(channel);
-    if (info.integer && info.scale == std::round(info.scale) &&
-        info.offset == std::round(info.offset) && std::isfinite(info.min) &&
-        std::isfinite(info.max)) {
-        const double a = info.physical(float(info.min)), b = info.physical(float(info.max));
-        if (std::abs(b - a) < double(MAX_ENTRIES)) {
-            entries_low_ = std::min(a, b);
-            entries_ = size_t(std::abs(b - a)) + 1;
-        }
-    }
+    whole_ = whole_values(*channels_, channel_, MAX_ENTRIES);
 }
 
 bool UncertaintyFade::value(const Hit &hit, double &out) const
@@ -253,7 +238,7 @@ glm::dvec3 PropertyPaint::color(const Hit &hit) const
     if (!value(hit, v))
         return no_value_;
     // the table where it holds v (a file's stated range is not trusted)
-    const int64_t k = table_entry(v);
+    const int64_t k = whole_.index(v);
     return k >= 0 ? table_[size_t(k)] : ramp_.at(v);
 }
 

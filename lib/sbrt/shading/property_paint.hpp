@@ -37,6 +37,26 @@ bool voxel_of_hit(const Model &model, const Hit &hit, HitVoxel &voxel);
 bool property_at_hit(const Model &model, const PropertyChannels &channels,
                      const std::vector<size_t> &summed, const Hit &hit, double &out);
 
+/// \brief The whole numbers low, low + 1, ..., low + count - 1: the values
+/// a property takes where they are few (GeoTOP's percentages), so that a
+/// colour per value can be made once; count 0 where they are not.
+struct WholeValues {
+    double low = 0;
+    size_t count = 0;
+    /// The index of `v` among them, or -1 where it is none of them (a
+    /// file's stated range is not trusted).
+    int64_t index(double v) const
+    {
+        const double k = v - low;
+        return k >= 0 && k < double(count) && k == std::floor(k) ? int64_t(k) : -1;
+    }
+};
+
+/// The values the sum of `summed` channels can take, where each holds
+/// integers with a whole scale and offset and they are fewer than `most`.
+WholeValues whole_values(const PropertyChannels &channels, const std::vector<size_t> &summed,
+                         size_t most);
+
 /// \brief Class colours faded by an uncertainty channel: a voxel whose
 /// value is `low` or less keeps its colour, one at `high` or more is grey
 /// (the colour's own luminance), linearly between.
@@ -55,25 +75,17 @@ public:
     glm::dvec3 faded(const glm::dvec3 &color, double value) const;
     double low() const { return low_; }
     double high() const { return high_; }
-    /// Where the channel holds few whole numbers (at most MAX_ENTRIES:
-    /// GeoTOP's onz_lk 0..100): their count, the first, and the entry of
-    /// value `v` (-1 where it is none of them); 0 entries otherwise.
+    /// The uncertainty's values where they are few whole numbers (at most
+    /// MAX_ENTRIES: GeoTOP's onz_lk 0..100); count 0 otherwise.
     static constexpr size_t MAX_ENTRIES = 4096;
-    size_t entries() const { return entries_; }
-    double entries_low() const { return entries_low_; }
-    int64_t entry(double v) const
-    {
-        const double k = v - entries_low_;
-        return k >= 0 && k < double(entries_) && k == std::floor(k) ? int64_t(k) : -1;
-    }
+    const WholeValues &whole() const { return whole_; }
 
 private:
     const Model &model_;
     std::shared_ptr<const PropertyChannels> channels_;
     std::vector<size_t> channel_;
     double low_, high_;
-    size_t entries_ = 0;
-    double entries_low_ = 0;
+    WholeValues whole_;
 };
 
 /// \brief A property shown on the model's hits.
@@ -93,16 +105,10 @@ public:
     /// The surface colour of `hit` (0..255) before lighting.
     glm::dvec3 color(const Hit &hit) const;
 
-    /// The colour table of an integer-valued sum (the ramp at
-    /// table_low(), table_low() + 1, ...); empty for other properties.
+    /// The values of an integer-valued sum (count 0 for other properties)
+    /// and the ramp's colour of each, in their order.
+    const WholeValues &whole() const { return whole_; }
     const std::vector<glm::dvec3> &table() const { return table_; }
-    double table_low() const { return table_low_; }
-    /// The entry of table() that colours value `v`, or -1 where none does.
-    int64_t table_entry(double v) const
-    {
-        const double k = v - table_low_;
-        return k >= 0 && k < double(table_.size()) && k == std::floor(k) ? int64_t(k) : -1;
-    }
     /// Hits without a value take this colour.
     const glm::dvec3 &no_value() const { return no_value_; }
     const ColorRamp &ramp() const { return ramp_; }
@@ -113,7 +119,6 @@ public:
     static constexpr size_t MAX_COLOR_TABLE = 1 << 16;
 
 private:
-    void make_color_table();
     /// The sums of `block`'s voxels, NaN where a summed channel has no
     /// value (made once, by whichever thread needs it first).
     const std::vector<double> &block_sums(size_t block) const;
@@ -123,10 +128,9 @@ private:
     std::vector<size_t> summed_;
     ColorRamp ramp_;
     glm::dvec3 no_value_;
-    /// the ramp at table_low_, table_low_ + 1, ...: where every summed
-    /// channel holds integers (empty otherwise)
+    /// the ramp at each of whole_'s values (empty without them)
+    WholeValues whole_;
     std::vector<glm::dvec3> table_;
-    double table_low_ = 0;
     /// a sum's values block by block: a hit reads one array, not one per
     /// channel (each a cache miss on a model larger than the cache)
     struct SumBlock;

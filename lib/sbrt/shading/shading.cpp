@@ -37,6 +37,21 @@ uint8_t round_channel(double c)
     return uint8_t(c - low >= 0.5 ? low + 1 : low);
 }
 
+/// `surface` (0..255) under the light: ambient plus the diffuse share.
+glm::dvec3 lit_surface(const Shading &shading, const glm::dvec3 &surface, double lambert)
+{
+    return surface * (shading.ambient + (1 - shading.ambient) * lambert);
+}
+
+/// A colour (0..255, clamped) as a pixel's bytes.
+std::array<uint8_t, 3> rgb_of(const glm::dvec3 &color)
+{
+    std::array<uint8_t, 3> rgb;
+    for (int k = 0; k < 3; ++k)
+        rgb[k] = round_channel(std::clamp(color[k], 0.0, 255.0));
+    return rgb;
+}
+
 } // namespace
 
 /// Most entries of a table of lit face colours (3 bytes each).
@@ -60,7 +75,7 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
                 property_face_rgb_.push_back(lit_face(
                     k < table.size() ? table[k] : shading.property->no_value(), Face(face)));
     }
-    const size_t fades = shading.fade ? shading.fade->entries() + 1 : 0;
+    const size_t fades = shading.fade ? shading.fade->whole().count + 1 : 0;
     if (shading.fade && !shading.drape && !shading.property && fades > 1 &&
         base_.size() * fades * 6 <= MAX_FACE_TABLE) {
         // few uncertainty values: each class's faded colour on each face
@@ -69,7 +84,7 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
             for (size_t k = 0; k < fades; ++k) {
                 const glm::dvec3 surface =
                     k + 1 < fades
-                        ? shading.fade->faded(base, shading.fade->entries_low() + double(k))
+                        ? shading.fade->faded(base, shading.fade->whole().low + double(k))
                         : base;
                 for (int face = int(Face::west); face <= int(Face::top); ++face)
                     fade_face_rgb_.push_back(lit_face(surface, Face(face)));
@@ -77,14 +92,10 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
     }
     if (shading.drape || shading.property || shading.fade) // colours per hit
         return;
-    for (uint32_t m = 0; m < base_.size(); ++m)
-        for (int face = int(Face::west); face <= int(Face::top); ++face) {
-            Hit hit;
-            hit.material = m;
-            hit.face = Face(face);
-            hit.normal = glm::vec3(face_normal(hit.face));
-            cell_face_rgb_.push_back(lit(hit));
-        }
+    // (EMPTY's entries are never read: a miss is the background)
+    for (const glm::dvec3 &base : base_)
+        for (int face = int(Face::west); face <= int(Face::top); ++face)
+            cell_face_rgb_.push_back(lit_face(base, Face(face)));
 }
 
 std::array<uint8_t, 3> PixelShader::operator()(const Hit &hit) const
@@ -100,9 +111,9 @@ std::array<uint8_t, 3> PixelShader::operator()(const Hit &hit) const
         if (cell_face && !cell_face_rgb_.empty())
             return cell_face_rgb_[size_t(hit.material) * 6 + size_t(face - 1)];
         if (cell_face && !fade_face_rgb_.empty()) {
-            const size_t fades = shading_.fade->entries() + 1;
+            const size_t fades = shading_.fade->whole().count + 1;
             double v;
-            const int64_t k = shading_.fade->value(hit, v) ? shading_.fade->entry(v)
+            const int64_t k = shading_.fade->value(hit, v) ? shading_.fade->whole().index(v)
                                                            : int64_t(fades - 1);
             if (k >= 0)
                 return fade_face_rgb_[(size_t(hit.material) * fades + size_t(k)) * 6 +
@@ -111,7 +122,7 @@ std::array<uint8_t, 3> PixelShader::operator()(const Hit &hit) const
         if (cell_face && !property_face_rgb_.empty()) {
             double v;
             const int64_t k = shading_.property->value(hit, v)
-                                  ? shading_.property->table_entry(v)
+                                  ? shading_.property->whole().index(v)
                                   : int64_t(shading_.property->table().size());
             if (k >= 0)
                 return property_face_rgb_[size_t(k) * 6 + size_t(face - 1)];
@@ -124,12 +135,7 @@ std::array<uint8_t, 3> PixelShader::lit_face(const glm::dvec3 &surface, Face fac
 {
     // lit() with nothing in front (veil 0, transmittance 1): the same sums
     const glm::dvec3 normal(glm::vec3(face_normal(face)));
-    const double lambert = std::max(0.0, glm::dot(shading_.light, normal));
-    const glm::dvec3 color = surface * (shading_.ambient + (1 - shading_.ambient) * lambert);
-    std::array<uint8_t, 3> rgb;
-    for (int k = 0; k < 3; ++k)
-        rgb[k] = round_channel(std::clamp(color[k], 0.0, 255.0));
-    return rgb;
+    return rgb_of(lit_surface(shading_, surface, std::max(0.0, glm::dot(shading_.light, normal))));
 }
 
 std::array<uint8_t, 3> PixelShader::lit(const Hit &hit) const
@@ -151,13 +157,9 @@ std::array<uint8_t, 3> PixelShader::lit(const Hit &hit) const
             hit.face == Face::plane || hit.face == Face::fence
                 ? 1.0
                 : std::max(0.0, glm::dot(shading.light, glm::dvec3(hit.normal)));
-        color = surface * (shading.ambient + (1 - shading.ambient) * lambert);
+        color = lit_surface(shading, surface, lambert);
     }
-    color = 255.0 * glm::dvec3(hit.veil) + double(hit.transmittance) * color;
-    std::array<uint8_t, 3> rgb;
-    for (int k = 0; k < 3; ++k)
-        rgb[k] = round_channel(std::clamp(color[k], 0.0, 255.0));
-    return rgb;
+    return rgb_of(255.0 * glm::dvec3(hit.veil) + double(hit.transmittance) * color);
 }
 
 void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Camera &camera,
