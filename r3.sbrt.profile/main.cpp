@@ -54,17 +54,26 @@ std::string line_text(const sbrt::ProfileLine &line)
     return text;
 }
 
-/// The SBRT's stacks under the line's samples (`columns` of each count)
-/// and the location map's samples, read from the blocks that hold them.
-sbrt::Model read_model_along(const std::string &input, const sbrt::ProfileLine &line,
-                             const std::vector<int> &columns, int plot_width)
+/// The frame of SBRT `input` alone: no block is decoded.
+sbrt::Frame read_frame(const std::string &input)
 {
     sbrt::ReadOptions options;
-    options.points.emplace(); // none: the frame alone
-    const sbrt::Frame frame = sbrt_grass::read_sbrt_map(input.c_str(), options).frame();
+    options.points.emplace(); // no points: no stacks
+    return sbrt_grass::read_sbrt_map(input.c_str(), options).frame();
+}
+
+/// The SBRT (its frame: `frame`) with the stacks under the line's samples
+/// (`columns` of each count) and the location map's samples, read from the
+/// blocks that hold them.
+sbrt::Model read_model_along(const std::string &input, const sbrt::Frame &frame,
+                             const sbrt::ProfileLine &line, const std::vector<int> &columns,
+                             int plot_width)
+{
+    sbrt::ReadOptions options;
+    options.points.emplace();
     for (int cols : columns)
         for (int c = 0; c < cols; ++c) {
-            const glm::dvec2 p = line.point_at((c + 0.5) * line.length() / cols);
+            const glm::dvec2 p = line.column_point(c, cols);
             options.points->push_back({p.x, p.y});
         }
     for (const glm::dvec2 &p : location_samples(frame, line, plot_width))
@@ -133,14 +142,12 @@ void run(const ProfileRequest &request)
                    "latitude-longitude location does not have: use a projected location");
     const sbrt::ProfileLine line(read_line_vertices(request));
     // the map's columns at its step (the model's finer resolution unless given)
-    sbrt::ReadOptions frame_only;
-    frame_only.points.emplace();
-    const sbrt::Frame frame = sbrt_grass::read_sbrt_map(request.input.c_str(), frame_only).frame();
+    const sbrt::Frame frame = read_frame(request.input);
     const double step =
         request.resolution.value_or(std::min(frame.ew_res(), frame.ns_res()));
     const int map_cols = profile_columns(line.length(), step);
     const sbrt::Model model =
-        read_model_along(request.input, line, {map_cols, request.width}, request.width);
+        read_model_along(request.input, frame, line, {map_cols, request.width}, request.width);
 
     const std::optional<ProfileGrid> grid = profile_grid(model, line, map_cols);
     auto solid = sbrt::solid_extent(model, line, request.width);

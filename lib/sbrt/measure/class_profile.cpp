@@ -72,7 +72,7 @@ ClassProfile class_profile(const Model &model, const ProfileLine &line, int cols
     profile.classes.assign(size_t(rows) * size_t(cols), NULL_CLASS);
     const Frame &frame = model.frame();
     for (int c = 0; c < cols; ++c) {
-        const Column column = column_under(model, line.point_at(profile.distance(c)));
+        const Column column = column_under(model, line.column_point(c, cols));
         if (column.ids.empty())
             continue;
         for (int r = 0; r < rows; ++r)
@@ -88,8 +88,7 @@ std::optional<ProfileExtent> solid_extent(const Model &model, const ProfileLine 
     const Frame &frame = model.frame();
     double lowest = HUGE_VAL, highest = -HUGE_VAL;
     for (int s = 0; s < samples; ++s) {
-        const Column column =
-            column_under(model, line.point_at((s + 0.5) * line.length() / samples));
+        const Column column = column_under(model, line.column_point(s, samples));
         for (size_t i = 0; i < column.ids.size(); ++i) {
             if (column.ids[i] == NULL_CLASS)
                 continue;

@@ -22,8 +22,8 @@ struct ProfileExtent {
 };
 
 /// \brief Class ids of a section along a line: `cols` columns evenly along
-/// the line, each the column of the model's cell under its centre's
-/// distance; `rows` rows evenly from `top` down to `bottom`, each the class
+/// the line, each the column of the model's cell under its centre
+/// (ProfileLine::column_point); `rows` rows evenly from `top` down to `bottom`, each the class
 /// at its centre's elevation. Exact at those points: a point on an
 /// interval's top belongs to the interval above, as a voxel holds its
 /// bottom face. NULL_CLASS where nothing is (air, a cave, a null, off the
@@ -35,8 +35,6 @@ struct ClassProfile {
     std::vector<int32_t> classes; ///< row by row, row 0 the highest
 
     int32_t at(int row, int col) const { return classes[size_t(row) * size_t(cols) + size_t(col)]; }
-    /// Distance along the line of column `col`'s centre.
-    double distance(int col) const { return (col + 0.5) * length / cols; }
     /// Elevation of row `row`'s centre.
     double elevation(int row) const
     {

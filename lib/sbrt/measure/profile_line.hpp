@@ -27,6 +27,13 @@ public:
     double length() const { return distances_.back(); }
     /// The map point at distance `d` along the line (clamped to its ends).
     glm::dvec2 point_at(double d) const;
+    /// The distance of the centre of step `col` of `cols` even steps along
+    /// the line, and its map point: where a profile's column samples.
+    double column_distance(int col, int cols) const { return (col + 0.5) * length() / cols; }
+    glm::dvec2 column_point(int col, int cols) const
+    {
+        return point_at(column_distance(col, cols));
+    }
 
 private:
     std::vector<glm::dvec2> vertices_;
