@@ -166,6 +166,7 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
             property_ = std::make_unique<sbrt::PropertyPaint>(
                 *model_, channels_, summed,
                 property_ramp(request.property_color, low, high));
+            property_frames_ = 0;
         }
         property_key_ = property;
     }
@@ -283,5 +284,8 @@ void RenderSession::build_renderer(sbrt::Model model, sbrt::Scene scene)
 void RenderSession::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
                            const sbrt::BandSink &sink)
 {
+    // a property's sums are kept per block once a second frame shows it
+    if (property_ && property_frames_++ > 0)
+        property_->keep_block_sums();
     backend_->render(camera, outputs, sink);
 }

@@ -85,6 +85,7 @@ private:
     const sbrt::PropertyChannels *channels(const RenderRequest &request);
     std::string property_key_;
     std::unique_ptr<sbrt::PropertyPaint> property_;
+    int property_frames_ = 0; ///< frames that showed property_
     std::unique_ptr<sbrt::UncertaintyFade> fade_;
     std::string context_key_;
     std::unique_ptr<sbrt_gl::GlContext> context_;

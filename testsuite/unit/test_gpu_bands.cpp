@@ -274,9 +274,10 @@ TEST(OverlayTiles, ManyBoxesAreListedTileByTileAsEachAlone)
         ASSERT_EQ(all.box_first.back(), all.boxes.size());
         std::map<uint32_t, std::vector<uint32_t>> listed; // tile -> boxes
         for (size_t t = 0; t < all.tiles.size(); ++t) {
-            if (t > 0) // row by row, each tile once
+            if (t > 0) { // row by row, each tile once
                 EXPECT_LT((all.tiles[t - 1] >> 16) * 65536u + (all.tiles[t - 1] & 0xffff),
                           (all.tiles[t] >> 16) * 65536u + (all.tiles[t] & 0xffff));
+            }
             ASSERT_LT(all.box_first[t], all.box_first[t + 1]);
             listed[all.tiles[t]].assign(all.boxes.begin() + all.box_first[t],
                                         all.boxes.begin() + all.box_first[t + 1]);

@@ -88,6 +88,8 @@ TEST(PropertyPaint, ValueAtHitIsTheFirstSolidVoxelsValue)
         const Tracer tracer(fx.model, 1.0);
         const PropertyPaint single(fx.model, fx.channels, {0}, grey_ramp());
         const PropertyPaint sum(fx.model, fx.channels, {0, 1}, grey_ramp());
+        PropertyPaint kept(fx.model, fx.channels, {0, 1}, grey_ramp()); // sums per block
+        kept.keep_block_sums();
         std::mt19937 rng(seed);
         std::uniform_real_distribution<double> u(-1, 1);
         const Frame &f = fx.voxels.frame;
@@ -106,6 +108,11 @@ TEST(PropertyPaint, ValueAtHitIsTheFirstSolidVoxelsValue)
             double got_single = NAN, got_sum = NAN;
             const bool has_single = single.value(hit, got_single);
             const bool has_sum = sum.value(hit, got_sum);
+            double got_kept = NAN;
+            EXPECT_EQ(kept.value(hit, got_kept), has_sum);
+            if (has_sum) {
+                EXPECT_EQ(got_kept, got_sum);
+            }
             const bool same = a == FILL ? !has_single && !has_sum
                                         : has_single && got_single == a && has_sum &&
                                               got_sum == a + 2.0 * b;

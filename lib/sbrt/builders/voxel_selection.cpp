@@ -106,13 +106,13 @@ Model select_voxels(const Model &model, const PropertyChannels &channels,
     for_each_row(f.rows, threads, [&](int row) {
         std::vector<Interval> &out = rows[size_t(row)];
         std::vector<uint32_t> &count = sizes[size_t(row)];
-        std::vector<const float *> columns(selection.channels.size());
+        std::vector<ChannelValues> columns(selection.channels.size());
         for (int col = 0; col < f.cols; ++col) {
             const uint64_t cell = model.cell_index(row, col);
             const size_t before = out.size();
             const ColumnSpan span = channels.span(cell);
             for (size_t k = 0; k < columns.size(); ++k)
-                columns[k] = span.size() ? channels.column(selection.channels[k], cell) : nullptr;
+                columns[k] = channels.column(selection.channels[k], cell);
             // walk the stack; voxels in the span keep their class where the
             // condition holds, all others of a solid interval go empty
             auto append = [&](uint32_t material, float top) {

@@ -7,9 +7,11 @@
 
 #include <zstd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 #include "format/byte_io.hpp"
 #include "format/mapped_file.hpp"
@@ -31,13 +33,6 @@ uint32_t float_bits(float v)
     uint32_t bits;
     std::memcpy(&bits, &v, 4);
     return bits;
-}
-
-float bits_float(uint32_t bits)
-{
-    float v;
-    std::memcpy(&v, &bits, 4);
-    return v;
 }
 
 bool is_exact_integer(float v)
@@ -121,10 +116,41 @@ void encode_block(const std::vector<float> &values, const std::vector<ColumnSpan
     SBRT_CHECK_EQ(at, n, "channel block");
 }
 
-/// The inverse of encode_block, on untrusted bytes.
-void decode_block(const uint8_t *raw, size_t size, const CellSlot *slots,
-                  size_t cells, size_t n, std::vector<float> &out,
-                  const std::string &what)
+/// Sums one block's differences down each column into codes of WIDTH
+/// bytes (little-endian) at `codes`, which may be `planes` where WIDTH is 1.
+template <unsigned WIDTH, bool INTEGERS>
+void sum_columns(const uint8_t *planes, size_t n, const CellSlot *slots, size_t cells,
+                 uint8_t *codes)
+{
+    constexpr uint32_t MASK = WIDTH == 4 ? 0xffffffffu : (1u << (8 * WIDTH)) - 1;
+    for (size_t c = 0; c < cells; ++c) {
+        uint32_t below = 0;
+        const size_t end = size_t(slots[c].at) + (slots[c].hi - slots[c].lo);
+        for (size_t i = slots[c].at; i < end; ++i) {
+            uint32_t stored = 0;
+            for (unsigned b = 0; b < WIDTH; ++b)
+                stored |= uint32_t(planes[b * n + i]) << (8 * b);
+            const uint32_t code = INTEGERS ? (below + stored) & MASK : stored ^ below;
+            below = code;
+            for (unsigned b = 0; b < WIDTH; ++b)
+                codes[i * WIDTH + b] = uint8_t(code >> (8 * b));
+        }
+    }
+}
+
+/// \brief A block's values decoded: codes in their stored width.
+struct DecodedCodes {
+    std::unique_ptr<uint8_t[]> bytes; ///< the codes start at `at`
+    size_t at = 0;
+    unsigned width = 1;
+    bool float_bits = false;
+    int32_t base = 0;
+};
+
+/// The inverse of encode_block, on untrusted bytes (`raw`, `size` of them,
+/// is taken: a block of one-byte values is decoded in place).
+DecodedCodes decode_block(std::unique_ptr<uint8_t[]> raw, size_t size, const CellSlot *slots,
+                          size_t cells, size_t n, const std::string &what)
 {
     if (size < BLOCK_HEAD)
         fail(what, ": block of ", size, " bytes is shorter than its head");
@@ -136,24 +162,25 @@ void decode_block(const uint8_t *raw, size_t size, const CellSlot *slots,
     if (size != BLOCK_HEAD + n * width)
         fail(what, ": block holds ", size, " bytes where its cells' spans need ",
              BLOCK_HEAD + n * width, " (the channels do not match the stacks)");
-    const int64_t base = int32_t(uint32_t(load_le(raw + 4, 4)));
-    const uint64_t mask = width == 4 ? 0xffffffffull : (1ull << (8 * width)) - 1;
-    const uint8_t *planes = raw + BLOCK_HEAD;
-    out.resize(n);
-    for (size_t c = 0; c < cells; ++c) {
-        uint32_t below = 0;
-        for (uint32_t k = 0, i = slots[c].at; k < slots[c].hi - slots[c].lo; ++k, ++i) {
-            uint32_t stored = 0;
-            for (unsigned b = 0; b < width; ++b)
-                stored |= uint32_t(planes[b * n + i]) << (8 * b);
-            const uint32_t code = coding == CODING_INTEGERS
-                                      ? uint32_t((below + stored) & mask)
-                                      : stored ^ below;
-            below = code;
-            out[i] = coding == CODING_INTEGERS ? float(base + int64_t(code))
-                                               : bits_float(code);
-        }
+    DecodedCodes out;
+    out.width = width;
+    out.float_bits = coding == CODING_FLOAT_BITS;
+    out.base = int32_t(uint32_t(load_le(&raw[4], 4)));
+    const uint8_t *planes = raw.get() + BLOCK_HEAD;
+    if (width == 1) {
+        sum_columns<1, true>(planes, n, slots, cells, raw.get() + BLOCK_HEAD);
+        out.bytes = std::move(raw);
+        out.at = BLOCK_HEAD;
+        return out;
     }
+    out.bytes.reset(new uint8_t[n * width]); // every byte written below
+    if (width == 2)
+        sum_columns<2, true>(planes, n, slots, cells, out.bytes.get());
+    else if (out.float_bits)
+        sum_columns<4, false>(planes, n, slots, cells, out.bytes.get());
+    else
+        sum_columns<4, true>(planes, n, slots, cells, out.bytes.get());
+    return out;
 }
 
 void write_string(ByteWriter &out, const std::string &s)
@@ -333,7 +360,7 @@ struct PropertyChannels::Block {
     uint64_t offset = 0;
     uint32_t compressed = 0, raw = 0, crc = 0;
     std::once_flag once;
-    std::vector<float> values;
+    DecodedCodes codes;
 };
 
 PropertyChannels::PropertyChannels(std::shared_ptr<const MappedFile> file, std::string what,
@@ -443,7 +470,7 @@ size_t PropertyChannels::block_of(uint64_t cell) const
     return (row / size_t(block_size_)) * size_t(block_cols_) + col / size_t(block_size_);
 }
 
-const std::vector<float> &PropertyChannels::block_values(size_t channel, size_t b) const
+ChannelValues PropertyChannels::block_values(size_t channel, size_t b) const
 {
     Block &block = blocks_data_[channel * blocks_ + b];
     std::call_once(block.once, [&] {
@@ -455,9 +482,10 @@ const std::vector<float> &PropertyChannels::block_values(size_t channel, size_t 
         const size_t expected = BLOCK_HEAD + size_t(block_values_[b]) * 4;
         if (block.raw > expected)
             fail(where, ": says it holds ", block.raw, " bytes, more than its cells can");
-        std::vector<uint8_t> raw(block.raw);
-        const size_t n = ZSTD_decompress(raw.data(), raw.size(), src, block.compressed);
-        if (ZSTD_isError(n) || n != raw.size())
+        // not zeroed first: decompression writes every byte or fails
+        std::unique_ptr<uint8_t[]> raw(new uint8_t[std::max<size_t>(block.raw, 1)]);
+        const size_t n = ZSTD_decompress(raw.get(), block.raw, src, block.compressed);
+        if (ZSTD_isError(n) || n != block.raw)
             fail(where, ": does not decompress to its stated size (corrupt file)");
         // the block's cells, row by row, in the order they were written
         const size_t brow = b / size_t(block_cols_), bcol = b % size_t(block_cols_);
@@ -465,21 +493,20 @@ const std::vector<float> &PropertyChannels::block_values(size_t channel, size_t 
         for (int r = int(brow) * block_size_; r < std::min(rows_, int(brow + 1) * block_size_); ++r)
             for (int c = int(bcol) * block_size_; c < std::min(cols_, int(bcol + 1) * block_size_); ++c)
                 cells.push_back(slots_[uint64_t(r) * uint64_t(cols_) + uint64_t(c)]);
-        std::vector<float> values;
-        decode_block(raw.data(), raw.size(), cells.data(), cells.size(),
-                     block_values_[b], values, where);
-        block.values = std::move(values);
+        block.codes = decode_block(std::move(raw), block.raw, cells.data(), cells.size(),
+                                   block_values_[b], where);
         ++decoded_;
     });
-    return block.values;
+    const DecodedCodes &d = block.codes;
+    return {d.bytes.get() + d.at, d.width, d.float_bits, d.base, block_values_[b]};
 }
 
-const float *PropertyChannels::column(size_t channel, uint64_t cell) const
+ChannelValues PropertyChannels::column(size_t channel, uint64_t cell) const
 {
     const CellSlot &s = slots_[cell];
     if (s.hi == s.lo)
-        return nullptr;
-    return block_values(channel, block_of(cell)).data() + s.at;
+        return {};
+    return block_values(channel, block_of(cell)).part(s.at, s.hi - s.lo);
 }
 
 } // namespace sbrt

@@ -14,6 +14,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -88,6 +89,54 @@ private:
     std::vector<std::vector<uint8_t>> raw_, compressed_;
 };
 
+/// \brief Decoded values of one channel: `size` codes of `width` bytes
+/// each (1, 2 or 4, little-endian), a value base + code (integers) or the
+/// code's bits (float32). A view: the codes belong to PropertyChannels.
+class ChannelValues {
+public:
+    ChannelValues() = default;
+    ChannelValues(const uint8_t *codes, unsigned width, bool float_bits, int32_t base,
+                  size_t size)
+        : codes_(codes), size_(size), base_(base), width_(uint8_t(width)),
+          float_bits_(float_bits)
+    {
+    }
+    size_t size() const { return size_; }
+    explicit operator bool() const { return codes_ != nullptr; }
+    float operator[](size_t i) const
+    {
+        uint32_t code;
+        if (width_ == 1) {
+            code = codes_[i];
+        } else if (width_ == 2) {
+            const uint8_t *p = codes_ + 2 * i;
+            code = uint32_t(p[0]) | uint32_t(p[1]) << 8;
+        } else {
+            const uint8_t *p = codes_ + 4 * i;
+            code = uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 |
+                   uint32_t(p[3]) << 24;
+        }
+        if (float_bits_) {
+            float v;
+            std::memcpy(&v, &code, 4);
+            return v;
+        }
+        return float(int64_t(base_) + int64_t(code));
+    }
+    /// `count` values from the `first` on (a cell's span in its block).
+    ChannelValues part(size_t first, size_t count) const
+    {
+        return {codes_ + first * width_, width_, float_bits_, base_, count};
+    }
+
+private:
+    const uint8_t *codes_ = nullptr;
+    size_t size_ = 0;
+    int32_t base_ = 0;
+    uint8_t width_ = 1;
+    bool float_bits_ = false;
+};
+
 /// \brief Where a cell's span lies in its block's decoded values.
 struct CellSlot {
     uint32_t lo = 0, hi = 0; ///< the span
@@ -120,9 +169,9 @@ public:
         return {slots_[cell].lo, slots_[cell].hi};
     }
     /// The values of `cell`'s span, bottom up (span(cell).size() of them),
-    /// its block decoded where it is not yet; nullptr for an empty span.
-    /// Throws sbrt::Error for a corrupt block.
-    const float *column(size_t channel, uint64_t cell) const;
+    /// its block decoded where it is not yet; empty (false) for an empty
+    /// span. Throws sbrt::Error for a corrupt block.
+    ChannelValues column(size_t channel, uint64_t cell) const;
     /// The value at voxel `level` (0 bottom) of `cell`; false outside its span.
     bool value(size_t channel, uint64_t cell, uint32_t level, float &out) const
     {
@@ -138,9 +187,9 @@ public:
     size_t block_of(uint64_t cell) const;
     size_t blocks() const { return blocks_; }
     /// The decoded values of `channel` in `block`, every cell's span after
-    /// another (decoded now where they are not yet; throws sbrt::Error for
-    /// a corrupt block).
-    const std::vector<float> &block_values(size_t channel, size_t block) const;
+    /// another (decoded now where they are not yet, kept in the width they
+    /// are stored in; throws sbrt::Error for a corrupt block).
+    ChannelValues block_values(size_t channel, size_t block) const;
     /// Blocks decoded so far (all channels) and in the file.
     uint64_t blocks_decoded() const { return decoded_; }
     uint64_t block_count() const { return uint64_t(blocks_) * channels_.size(); }

@@ -18,7 +18,7 @@ std::vector<VoxelValues> column_voxels(const Model &model, const PropertyChannel
     std::vector<VoxelValues> out;
     if (span.size() == 0)
         return out;
-    std::vector<const float *> columns;
+    std::vector<ChannelValues> columns;
     for (size_t c = 0; c < channels.size(); ++c)
         columns.push_back(channels.column(c, index));
     // the material of each level from the stack, bottom up: an interval

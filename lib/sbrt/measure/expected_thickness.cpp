@@ -49,7 +49,7 @@ double expected_thickness(const PropertyChannels &channels, const std::vector<si
     const ColumnSpan span = channels.span(cell);
     if (span.size() == 0)
         return NAN;
-    std::vector<const float *> columns;
+    std::vector<ChannelValues> columns;
     for (const size_t c : summed)
         columns.push_back(channels.column(c, cell));
     double percent = 0; // the sum of p over the voxels with a value

@@ -94,8 +94,15 @@ bool voxel_of_hit(const Model &model, const Hit &hit, HitVoxel &voxel)
 
 struct PropertyPaint::SumBlock {
     std::once_flag once;
-    std::vector<double> sums;
+    std::vector<uint16_t> index; ///< a whole-valued sum: its value's index
+    std::vector<double> sums;    ///< other sums
 };
+
+namespace {
+/// Sum indices that are no index: no value, and a value outside the
+/// file's stated range (not trusted: it is summed again at the hit).
+constexpr uint16_t NO_SUM = 0xffff, SUM_OUTSIDE = 0xfffe;
+} // namespace
 
 PropertyPaint::~PropertyPaint() = default;
 
@@ -117,27 +124,47 @@ PropertyPaint::PropertyPaint(const Model &model,
     table_.resize(whole_.count);
     for (size_t k = 0; k < table_.size(); ++k)
         table_[k] = ramp_.at(whole_.low + double(k));
-    if (summed_.size() > 1)
+}
+
+void PropertyPaint::keep_block_sums()
+{
+    if (summed_.size() > 1 && !sums_)
         sums_ = std::make_unique<SumBlock[]>(channels_->blocks());
 }
 
-const std::vector<double> &PropertyPaint::block_sums(size_t block) const
+const PropertyPaint::SumBlock &PropertyPaint::block_sums(size_t block) const
 {
     SumBlock &b = sums_[block];
     std::call_once(b.once, [&] {
-        std::vector<double> sums;
-        for (size_t k = 0; k < summed_.size(); ++k) {
-            const ChannelInfo &info = channels_->info(summed_[k]);
-            const std::vector<float> &values = channels_->block_values(summed_[k], block);
-            if (k == 0)
-                sums.assign(values.size(), 0.0);
-            for (size_t i = 0; i < values.size(); ++i)
-                sums[i] = info.is_fill(values[i]) ? std::numeric_limits<double>::quiet_NaN()
-                                                  : sums[i] + info.physical(values[i]);
+        std::vector<ChannelValues> values;
+        std::vector<const ChannelInfo *> infos;
+        for (size_t c : summed_) {
+            values.push_back(channels_->block_values(c, block));
+            infos.push_back(&channels_->info(c));
         }
-        b.sums = std::move(sums);
+        const size_t n = values[0].size();
+        // a whole-valued sum as the index of its value: 2 bytes a voxel
+        const bool indexed = whole_.count > 0 && whole_.count < SUM_OUTSIDE;
+        (indexed ? b.index.resize(n) : b.sums.resize(n));
+        for (size_t i = 0; i < n; ++i) {
+            double sum = 0; // in the order of summed_, as property_at_hit
+            for (size_t k = 0; k < values.size(); ++k) {
+                const float raw = values[k][i];
+                if (infos[k]->is_fill(raw)) {
+                    sum = std::numeric_limits<double>::quiet_NaN();
+                    break;
+                }
+                sum += infos[k]->physical(raw);
+            }
+            if (!indexed) {
+                b.sums[i] = sum;
+                continue;
+            }
+            const int64_t k = std::isnan(sum) ? -1 : whole_.index(sum);
+            b.index[i] = std::isnan(sum) ? NO_SUM : k < 0 ? SUM_OUTSIDE : uint16_t(k);
+        }
     });
-    return b.sums;
+    return b;
 }
 
 WholeValues whole_values(const PropertyChannels &channels, const std::vector<size_t> &summed,
@@ -187,11 +214,20 @@ bool PropertyPaint::value(const Hit &hit, double &out) const
     const CellSlot &slot = channels_->slot(voxel.cell);
     if (voxel.level < slot.lo || voxel.level >= slot.hi)
         return false;
-    const double sum =
-        block_sums(channels_->block_of(voxel.cell))[slot.at + (voxel.level - slot.lo)];
-    if (std::isnan(sum))
+    const SumBlock &b = block_sums(channels_->block_of(voxel.cell));
+    const size_t at = slot.at + (voxel.level - slot.lo);
+    if (!b.index.empty()) {
+        const uint16_t k = b.index[at];
+        if (k == NO_SUM)
+            return false;
+        if (k == SUM_OUTSIDE)
+            return property_at_hit(model_, *channels_, summed_, hit, out);
+        out = whole_.low + double(k);
+        return true;
+    }
+    if (std::isnan(b.sums[at]))
         return false;
-    out = sum;
+    out = b.sums[at];
     return true;
 }
 

@@ -102,6 +102,12 @@ public:
 
     /// The property at `hit`; false where it has none.
     bool value(const Hit &hit, double &out) const;
+    /// From now on a sum is made for a whole block where a hit first needs
+    /// one of its values, and kept: later hits read one array instead of
+    /// one per channel. Pays where blocks are seen again (a session of
+    /// several frames), not in one frame, whose hits read few of a block's
+    /// values; not to be called while a frame is shaded.
+    void keep_block_sums();
     /// The surface colour of `hit` (0..255) before lighting.
     glm::dvec3 color(const Hit &hit) const;
 
@@ -119,9 +125,10 @@ public:
     static constexpr size_t MAX_COLOR_TABLE = 1 << 16;
 
 private:
-    /// The sums of `block`'s voxels, NaN where a summed channel has no
-    /// value (made once, by whichever thread needs it first).
-    const std::vector<double> &block_sums(size_t block) const;
+    struct SumBlock;
+    /// The sums of `block`'s voxels (made once, by whichever thread needs
+    /// it first).
+    const SumBlock &block_sums(size_t block) const;
 
     const Model &model_;
     std::shared_ptr<const PropertyChannels> channels_;
@@ -133,7 +140,6 @@ private:
     std::vector<glm::dvec3> table_;
     /// a sum's values block by block: a hit reads one array, not one per
     /// channel (each a cache miss on a model larger than the cache)
-    struct SumBlock;
     std::unique_ptr<SumBlock[]> sums_;
 };
 
