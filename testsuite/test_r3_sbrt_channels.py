@@ -297,9 +297,10 @@ class TestChannels(TestCase, Raster3dCompare):
     def test_property_views_on_the_gpu_equal_the_cpu(self):
         """On the GPU (egl, llvmpipe here): select= makes a model of the voxels
         meeting the condition, traced as any other and shaded there;
-        property= and fade= are traced there and coloured on the host at the
-        GPU's hits. Each view's class map, value= map and colours equal the
-        CPU's (within 1/500 of the pixels; a colour level apart)."""
+        property= and fade= of whole-numbered channels are coloured there
+        too, and with a value= map on the host at the GPU's hits. Each
+        view's class map, value= map and colours equal the CPU's (within
+        1/500 of the pixels; a colour level apart)."""
         self.runModule("r3.sbrt.convert", flags="s", sbrt="with_channels")
         size = (96, 72)
         view = ["input=with_channels", "size=%d,%d" % size, "zexag=40", "azimuth=210",
@@ -307,7 +308,8 @@ class TestChannels(TestCase, Raster3dCompare):
         scenes = (("sel", ["select=kans_5>=40"], "Shading: on the GPU"),
                   ("prop", ["property=kans_5",
                             "value=prop_{backend}_v"], "at the GPU's hits"),
-                  ("fade", ["fade=kans_5", "fade_range=0,100"], "at the GPU's hits"))
+                  ("gpuprop", ["property=kans_5"], "Shading: on the GPU"),
+                  ("fade", ["fade=kans_5", "fade_range=0,100"], "Shading: on the GPU"))
         pixels = size[0] * size[1]
         for name, options, shading in scenes:
             maps = {}

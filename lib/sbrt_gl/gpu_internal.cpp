@@ -66,9 +66,10 @@ bool every_stratum_opaque(const sbrt::Tracer &tracer)
 } // namespace
 
 /// The sources of `pass` for `layout` and the form `model` is held in;
-/// with `drape`, a drape's colours among the outputs (SBRT_DRAPE).
+/// with `drape`, a drape's colours among the outputs (SBRT_DRAPE); with
+/// `paint`, the shading pass's colours by voxel (SBRT_PAINT).
 std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
-                                       const sbrt::Tracer &tracer, bool drape)
+                                       const sbrt::Tracer &tracer, bool drape, bool paint)
 {
     const sbrt::Model &model = tracer.model();
     const unsigned count_bytes = model.index().count_bytes();
@@ -96,6 +97,7 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
                                : "#define SBRT_COUNT_BYTES 4\n",
             shade ? "#define SBRT_SHADE 1\n" : "",
             drape && shade ? "#define SBRT_DRAPE 1\n" : "",
+            paint && pass == Pass::shade ? "#define SBRT_PAINT 1\n" : "",
             kernel ? "#define SBRT_KERNEL 1\n" : "",
             pass == Pass::shade_boreholes ? "#define SBRT_TILE_LIST 1\n" : "",
             // the boreholes' pass traces again only where the ray is in

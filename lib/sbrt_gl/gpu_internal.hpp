@@ -49,9 +49,11 @@ enum class Pass : int {
 /// The sources of `pass` for `layout`, the form the tracer's model is held
 /// in and its overlays (the shaded ray casting pass draws them:
 /// common/overlays.glsl); with `drape`, a drape's colours among the
-/// outputs (SBRT_DRAPE).
+/// outputs (SBRT_DRAPE); with `paint`, the shading pass colours by voxel
+/// (SBRT_PAINT: lib/sbrt/gpu/gpu_paint.hpp).
 std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
-                                       const sbrt::Tracer &tracer, bool drape = false);
+                                       const sbrt::Tracer &tracer, bool drape = false,
+                                       bool paint = false);
 
 } // namespace sbrt_gl
 

@@ -18,8 +18,9 @@ struct GpuFrameReport {
     sbrt::RenderReport render; ///< the pipeline's bands and times
     GpuStats gpu;              ///< dispatches, read-back, rays over the budget
     /// Whether the GPU shaded (face normals, or kernel normals where the
-    /// image's hits fit it), else the CPU did from the GPU's hits (always
-    /// for colours from property channels, which stay on the host).
+    /// image's hits fit it), else the CPU did from the GPU's hits (for
+    /// colours from property channels where the GPU does not make them:
+    /// shaded_on_host).
     bool shaded_on_gpu = false;
     /// Shaded on the GPU: the host's time from when the GPU was done with
     /// the last band to the end of the frame (the sink's last band
@@ -28,9 +29,11 @@ struct GpuFrameReport {
 };
 
 /// Whether `shading` colours by voxel (property channels: property=,
-/// fade=): the host shades then, at the GPU's hits, for the GPU holds no
-/// channels.
-bool shaded_on_host(const sbrt::Shading &shading);
+/// fade=) in a way the GPU does not (sbrt::gpu_paints: a property or fade
+/// of few whole values, face normals, no drape, no overlays, no value=
+/// output): the host shades then, at the GPU's hits.
+bool shaded_on_host(const sbrt::Tracer &tracer, const sbrt::Shading &shading,
+                    const sbrt::Outputs &outputs);
 
 /// \brief The prepared scene of `renderer` (model after hiding and
 /// pruning, planes, pyramid; its shading, read at every frame) with the
@@ -55,9 +58,9 @@ public:
     sbrt::Image render_image(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
                              unsigned cpu_threads = 0);
 
-    /// Whether `camera`'s frame is shaded on the GPU with the renderer's
-    /// shading as it is now.
-    bool shades_on_gpu(const sbrt::Camera &camera) const;
+    /// Whether `camera`'s frame of `outputs` is shaded on the GPU with the
+    /// renderer's shading as it is now.
+    bool shades_on_gpu(const sbrt::Camera &camera, const sbrt::Outputs &outputs = {}) const;
     const GpuTracer &gpu() const { return gpu_; }
     GpuTracer &gpu() { return gpu_; }
     const sbrt::Renderer &renderer() const { return renderer_; }

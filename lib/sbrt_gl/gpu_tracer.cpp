@@ -14,6 +14,7 @@
 #include "util/parallel.hpp"
 #include "gpu_internal.hpp"
 #include "gpu/gpu_overlays.hpp"
+#include "gpu/gpu_paint.hpp"
 
 namespace sbrt_gl {
 
@@ -266,13 +267,18 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
 GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, Pass pass)
 {
     const bool draped = shading.drape != nullptr;
+    // colours by voxel: only the model pass of face normals (gpu_paints)
+    const bool painted = shading.property || shading.fade;
+    if (painted && pass != Pass::shade)
+        sbrt::fail("colours by voxel are not made in this GPU pass");
     std::optional<GlComputeProgram> &program =
         pass == Pass::kernel_shade      ? (draped ? kernel_drape_program_ : kernel_program_)
         : pass == Pass::shade_boreholes ? (draped ? boreholes_drape_program_ : boreholes_program_)
+        : painted                       ? paint_program_
                                         : (draped ? drape_program_ : shade_program_);
     if (!program) {
         const auto start = Clock::now();
-        program.emplace(gl_, pass_sources(pass, layout_, tracer_, draped), &cache_);
+        program.emplace(gl_, pass_sources(pass, layout_, tracer_, draped, painted), &cache_);
         stats_.upload_ms += ms_since(start);
     }
     return *program;
@@ -298,11 +304,27 @@ void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &s
         drape_on_gpu_ = shading.drape;
         stats_.upload_ms += ms_since(start);
     }
+    if (shading.property || shading.fade) {
+        // the words are made again only where what they show changed
+        std::string key = sbrt::gpu_paint_key(shading);
+        if (!paint_ || key != paint_key_) {
+            const auto start = Clock::now();
+            const std::vector<uint32_t> words = sbrt::make_gpu_paint(tracer_, shading);
+            paint_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                           checked_bytes(words.size() * sizeof(uint32_t), max_block_bytes_,
+                                         "colours by voxel"),
+                           words.data());
+            paint_key_ = std::move(key);
+            stats_.upload_ms += ms_since(start);
+        }
+    }
     shade_->upload(&shade, sizeof shade);
     shade_->bind(1);
     looks_->bind(5);
     if (shading.drape)
         drape_->bind(7);
+    if (shading.property || shading.fade)
+        paint_->bind(7);
     if (!sbrt::shaded_on_gpu(sbrt::gpu_overlay_mode(tracer_)))
         return;
     if (!overlays_) {
@@ -363,6 +385,8 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                            const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                            sbrt::Band &band, unsigned cpu_threads)
 {
+    if ((shading.property || shading.fade) && !sbrt::gpu_paints(tracer_, shading, outputs))
+        sbrt::fail("these colours by voxel are made on the host, not on the GPU");
     sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     const sbrt::GpuBandLayout layout = band_layout(camera, row_count, outputs, shade);
     GlComputeProgram &program = shading_program(shading, Pass::shade);

@@ -131,7 +131,8 @@ public:
     /// the drape where there was one), or 0.
     GLuint shade_program() const
     {
-        return drape_program_   ? drape_program_->name()
+        return paint_program_   ? paint_program_->name()
+               : drape_program_ ? drape_program_->name()
                : shade_program_ ? shade_program_->name()
                                 : 0;
     }
@@ -162,7 +163,8 @@ public:
     /// Whether the shading program (shade_program) came from the cache.
     bool shade_program_from_cache() const
     {
-        return drape_program_   ? drape_program_->from_cache()
+        return paint_program_   ? paint_program_->from_cache()
+               : drape_program_ ? drape_program_->from_cache()
                : shade_program_ ? shade_program_->from_cache()
                                 : false;
     }
@@ -225,6 +227,11 @@ private:
     /// shading on the GPU: its program, the materials' looks, the Shade
     /// block, the band's output words
     std::optional<GlComputeProgram> shade_program_, drape_program_;
+    /// ...coloured by voxel (a property or a fade), and its words (binding
+    /// 7, as a drape's: a scene has one or the other) with their key
+    std::optional<GlComputeProgram> paint_program_;
+    std::optional<GlBuffer> paint_;
+    std::string paint_key_;
     /// the boreholes' pass over listed tiles (with a drape or without),
     /// and the tiles of the band dispatched into each of MappedBands'
     /// slots (binding 12): written only once the GPU is done with the slot

@@ -210,6 +210,15 @@ layout(std140, binding = 1) uniform Shade {
 layout(std430, binding = 7) readonly buffer Drape { uint drape_words[]; };
 #endif
 
+#ifdef SBRT_PAINT
+// Colours by voxel (lib/sbrt/gpu/gpu_paint.hpp; a scene with a drape has
+// none, so it takes the drape's binding): a head (where the entries and
+// the colours start, fade values + 1 or 0, the no-value entry's colour),
+// per cell its first entry and lo | hi << 16, the voxels' 16-bit entries,
+// the colours as float bits r, g, b.
+layout(std430, binding = 7) readonly buffer Paint { uint paint_words[]; };
+#endif
+
 // Per material: x: its colour r | g << 8 | b << 16; y: its class id.
 layout(std430, binding = 5) readonly buffer Looks { uvec4 looks[]; };
 #endif

@@ -71,6 +71,53 @@ bool drape_sample(vec3 p, out vec3 rgb)
 }
 #endif
 
+#ifdef SBRT_PAINT
+// The colour (0..255, before lighting) of the voxel a hit at local point
+// p through `face` of `material` lies on, as voxel_of_hit
+// (lib/sbrt/shading/property_paint.cpp) finds it: false where a
+// coordinate it floors lies within float's reach of a voxel's edge (either
+// voxel may be the hit's) or the voxel's value is outside the file's
+// stated range; the host colours those pixels.
+bool paint_color(vec3 p, uint face, uint material, out vec3 rgb)
+{
+    const float EDGE = 1e-4;
+    rgb = vec3(0.0);
+    float u = p.x, v = float(grid.y) - p.y, z = p.z; // rows from the north
+    int col = int(floor(u)), row = int(floor(v)), level = int(floor(z));
+    bool ew = face == FACE_WEST || face == FACE_EAST;
+    bool ns = face == FACE_NORTH || face == FACE_SOUTH;
+    bool tb = face == FACE_TOP || face == FACE_BOTTOM;
+    if (face == FACE_WEST) col = int(round(u));
+    if (face == FACE_EAST) col = int(round(u)) - 1;
+    if (face == FACE_NORTH) row = int(round(v));
+    if (face == FACE_SOUTH) row = int(round(v)) - 1;
+    if (face == FACE_TOP) level = int(round(z)) - 1;
+    if (face == FACE_BOTTOM) level = int(round(z));
+    if ((!ew && abs(u - round(u)) <= EDGE) || (!ns && abs(v - round(v)) <= EDGE) ||
+        (!tb && abs(z - round(z)) <= EDGE))
+        return false;
+    uint entry = paint_words[3];
+    if (row >= 0 && row < int(grid.y) && col >= 0 && col < int(grid.x)) {
+        uint cell = uint(row) * grid.x + uint(col);
+        uint at = paint_words[4u + 2u * cell], span = paint_words[5u + 2u * cell];
+        int lo = int(span & 0xffffu), hi = int(span >> 16);
+        if (level >= lo && level < hi) {
+            uint i = at + uint(level - lo);
+            uint e = (paint_words[paint_words[0] + i / 2u] >> (16u * (i & 1u))) & 0xffffu;
+            if (e == 0xfffeu) // GPU_PAINT_OUTSIDE
+                return false;
+            if (e != 0xffffu) // GPU_PAINT_NONE
+                entry = e;
+        }
+    }
+    uint fades = paint_words[2];
+    uint c = paint_words[1] + 3u * (fades == 0u ? entry : material * fades + entry);
+    rgb = vec3(uintBitsToFloat(paint_words[c]), uintBitsToFloat(paint_words[c + 1u]),
+               uintBitsToFloat(paint_words[c + 2u]));
+    return true;
+}
+#endif
+
 // The normal of a hit from its face (a cell's face, a clip plane's, or
 // facing the ray where the camera is in the material; `ray_d` the ray's
 // local direction)
@@ -133,9 +180,18 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
     uint material = code & 0xffffu;
     vec3 color = background.rgb;
     if (material != 0u) {
+#ifdef SBRT_PAINT
+        vec3 surface;
+        if (!paint_color(point, (code >> 16) & 0xfu, material, surface)) {
+            flag_over_budget(index); // the host colours it
+            group_rgb[gl_LocalInvocationIndex] = 0u;
+            return;
+        }
+#else
         uint rgb = looks[material].x;
         vec3 surface = vec3(float(rgb & 255u), float((rgb >> 8) & 255u),
                             float((rgb >> 16) & 255u));
+#endif
 #ifdef SBRT_DRAPE
         vec3 texture_rgb;
         if (on_drape_surface(point, (code >> 16) & 0xfu) && drape_sample(point, texture_rgb))

@@ -564,54 +564,6 @@ TEST(GpuMemoryLayout, TexturesHoldEveryIntervalWithLessThanARowWasted)
     EXPECT_THROW(parse_gpu_layout("3d-texture"), Error);
 }
 
-namespace {
-
-/// The streamed render with the GPU shading against the CPU's: colour
-/// levels within 1, classes equal but on a share of edge pixels,
-/// elevation and depth within float rounding of the model's size but on
-/// `far_allowed` pixels (a ray along a cell's edge, in float, may meet the
-/// material of the cell beside); more than one pixel in `hits_in` a hit.
-void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layout,
-                               const Renderer &renderer, const Camera &camera,
-                               const std::string &what, size_t far_allowed = 0,
-                               size_t hits_in = 10)
-{
-    sbrt_gl::GpuRenderer on_gpu(context, renderer, layout);
-    const sbrt_gl::GpuTracer &gpu = on_gpu.gpu();
-    const Outputs all{true, true, true};
-    const Image want = renderer.render_image(camera, all);
-    EXPECT_TRUE(on_gpu.shades_on_gpu(camera)) << what;
-    const Image got = on_gpu.render_image(camera, all, 2);
-    EXPECT_TRUE(gpu.shade_program() != 0 || gpu.kernel_program() != 0)
-        << "the GPU did not shade: " << what;
-    if (renderer.shading().normals == Normals::kernel) {
-        EXPECT_NE(gpu.kernel_program(), 0u) << "kernel normals not found on the GPU: " << what;
-    }
-    const size_t n = want.material.size();
-    size_t classes = 0, colours = 0, far = 0, hits = 0;
-    const double tolerance = 2e-5 * 2 * renderer.tracer().frame().radius();
-    for (size_t i = 0; i < n; ++i) {
-        classes += got.material[i] != want.material[i];
-        for (int k = 0; k < 3; ++k)
-            colours += std::abs(int(got.rgb[i * 3 + k]) - int(want.rgb[i * 3 + k])) > 1;
-        if (got.material[i] == want.material[i] && want.material[i] != NULL_CLASS) {
-            ++hits;
-            far += !(std::fabs(got.elevation[i] - want.elevation[i]) <= tolerance &&
-                     std::fabs(got.depth[i] - want.depth[i]) <= tolerance);
-        }
-        else if (want.material[i] == NULL_CLASS && got.material[i] == NULL_CLASS) {
-            far += !(std::isnan(got.elevation[i]) && std::isnan(got.depth[i]));
-        }
-    }
-    // the GPU traced them (the host traces again only rays over its budget)
-    EXPECT_LE(gpu.stats().over_budget, n / 100) << what;
-    EXPECT_GT(hits, n / hits_in) << what;
-    EXPECT_LE(classes, n / 500 + 1) << what;
-    EXPECT_LE(colours, n / 200 + classes * 3) << what;
-    EXPECT_LE(far, far_allowed) << what;
-}
-
-} // namespace
 
 namespace {
 

@@ -183,6 +183,8 @@ public:
     }
     /// Where `cell`'s values lie: its span and first value in its block.
     const CellSlot &slot(uint64_t cell) const { return slots_[cell]; }
+    /// The cells of the model the channels belong to.
+    uint64_t cells() const { return slots_.size(); }
     /// The block holding `cell`'s values (of every channel), of blocks().
     size_t block_of(uint64_t cell) const;
     size_t blocks() const { return blocks_; }

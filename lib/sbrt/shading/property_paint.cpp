@@ -190,8 +190,12 @@ bool property_at_hit(const Model &model, const PropertyChannels &channels,
                      const std::vector<size_t> &summed, const Hit &hit, double &out)
 {
     HitVoxel voxel;
-    if (!voxel_of_hit(model, hit, voxel))
-        return false;
+    return voxel_of_hit(model, hit, voxel) && property_at_voxel(channels, summed, voxel, out);
+}
+
+bool property_at_voxel(const PropertyChannels &channels, const std::vector<size_t> &summed,
+                       const HitVoxel &voxel, double &out)
+{
     double sum = 0;
     for (size_t c : summed) {
         float raw;
@@ -248,6 +252,11 @@ UncertaintyFade::UncertaintyFade(const Model &model,
 bool UncertaintyFade::value(const Hit &hit, double &out) const
 {
     return property_at_hit(model_, *channels_, channel_, hit, out);
+}
+
+bool UncertaintyFade::voxel_value(const HitVoxel &voxel, double &out) const
+{
+    return property_at_voxel(*channels_, channel_, voxel, out);
 }
 
 glm::dvec3 UncertaintyFade::faded(const glm::dvec3 &color, double value) const

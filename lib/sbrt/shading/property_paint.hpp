@@ -36,6 +36,9 @@ bool voxel_of_hit(const Model &model, const Hit &hit, HitVoxel &voxel);
 /// where the hit has no voxel, lies outside the spans or meets a fill.
 bool property_at_hit(const Model &model, const PropertyChannels &channels,
                      const std::vector<size_t> &summed, const Hit &hit, double &out);
+/// The same at `voxel`.
+bool property_at_voxel(const PropertyChannels &channels, const std::vector<size_t> &summed,
+                       const HitVoxel &voxel, double &out);
 
 /// \brief The whole numbers low, low + 1, ..., low + count - 1: the values
 /// a property takes where they are few (GeoTOP's percentages), so that a
@@ -71,10 +74,14 @@ public:
     double share(double value) const;
     /// The uncertainty at `hit`'s voxel; false where it has none.
     bool value(const Hit &hit, double &out) const;
+    /// The uncertainty at `voxel`; false where it has none.
+    bool voxel_value(const HitVoxel &voxel, double &out) const;
+    const PropertyChannels &channels() const { return *channels_; }
     /// `color` faded by uncertainty `value`.
     glm::dvec3 faded(const glm::dvec3 &color, double value) const;
     double low() const { return low_; }
     double high() const { return high_; }
+    size_t channel() const { return channel_[0]; }
     /// The uncertainty's values where they are few whole numbers (at most
     /// MAX_ENTRIES: GeoTOP's onz_lk 0..100); count 0 otherwise.
     static constexpr size_t MAX_ENTRIES = 4096;
@@ -102,6 +109,11 @@ public:
 
     /// The property at `hit`; false where it has none.
     bool value(const Hit &hit, double &out) const;
+    /// The property at `voxel`; false where it has none.
+    bool voxel_value(const HitVoxel &voxel, double &out) const
+    {
+        return property_at_voxel(*channels_, summed_, voxel, out);
+    }
     /// From now on a sum is made for a whole block where a hit first needs
     /// one of its values, and kept: later hits read one array instead of
     /// one per channel. Pays where blocks are seen again (a session of

@@ -1,0 +1,163 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Colours by voxel on the GPU: the `buffer Paint` words
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu/gpu_paint.hpp"
+
+#include <cstring>
+
+#include "gpu/gpu_overlays.hpp"
+#include "model/material_table.hpp"
+#include "shading/property_paint.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
+
+namespace sbrt {
+
+namespace {
+
+constexpr size_t HEAD_WORDS = 4;
+
+const PropertyChannels &painted_channels(const Shading &shading)
+{
+    return shading.property ? shading.property->channels() : shading.fade->channels();
+}
+
+/// The colours before lighting, entry by entry (GPU_PAINT_NONE's last).
+std::vector<glm::dvec3> paint_colours(const Model &model, const Shading &shading)
+{
+    std::vector<glm::dvec3> colours;
+    if (shading.property) {
+        colours = shading.property->table();
+        colours.push_back(shading.property->no_value());
+        return colours;
+    }
+    const UncertaintyFade &fade = *shading.fade;
+    for (size_t m = 0; m < model.materials().size(); ++m) {
+        const auto rgb = material_color(model, uint32_t(m));
+        const glm::dvec3 base(rgb[0], rgb[1], rgb[2]);
+        for (size_t k = 0; k < fade.whole().count; ++k)
+            colours.push_back(fade.faded(base, fade.whole().low + double(k)));
+        colours.push_back(base);
+    }
+    return colours;
+}
+
+} // namespace
+
+bool gpu_paints(const Tracer &tracer, const Shading &shading, const Outputs &outputs)
+{
+    if (!shading.property == !shading.fade || shading.drape ||
+        shading.normals != Normals::face || outputs.value ||
+        gpu_overlay_mode(tracer) != GpuOverlayMode::none)
+        return false;
+    const WholeValues &whole =
+        shading.property ? shading.property->whole() : shading.fade->whole();
+    if (whole.count == 0 || whole.count >= GPU_PAINT_OUTSIDE)
+        return false;
+    if (shading.fade && tracer.model().materials().size() * (whole.count + 1) >
+                            GPU_PAINT_MAX_COLOURS)
+        return false;
+    const Frame &f = tracer.model().frame();
+    const PropertyChannels &channels = painted_channels(shading);
+    return f.depths < 65536 && channels.blocks() > 0 &&
+           f.cells() == channels.cells();
+}
+
+std::string gpu_paint_key(const Shading &shading)
+{
+    if (!shading.property && !shading.fade)
+        return {};
+    std::string key = shading.property ? "property" : "fade";
+    auto add = [&](const void *p, size_t n) { key.append(static_cast<const char *>(p), n); };
+    const PropertyChannels *channels = &painted_channels(shading);
+    add(&channels, sizeof channels);
+    if (shading.property) {
+        for (size_t c : shading.property->summed())
+            add(&c, sizeof c);
+    } else {
+        const size_t c = shading.fade->channel();
+        add(&c, sizeof c);
+    }
+    const WholeValues &whole =
+        shading.property ? shading.property->whole() : shading.fade->whole();
+    add(&whole.low, sizeof whole.low);
+    add(&whole.count, sizeof whole.count);
+    // the colours follow from the ramp, the no-value colour and the fade's
+    // range: the property's table and the fade's ends say them
+    if (shading.property) {
+        for (const glm::dvec3 &c : shading.property->table())
+            add(&c, sizeof c);
+        add(&shading.property->no_value(), sizeof(glm::dvec3));
+    } else {
+        const double ends[2] = {shading.fade->low(), shading.fade->high()};
+        add(ends, sizeof ends);
+    }
+    return key;
+}
+
+std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shading,
+                                     unsigned threads)
+{
+    const Model &model = tracer.model();
+    const Frame &f = model.frame();
+    if (!gpu_paints(tracer, shading, Outputs{}))
+        fail("a GPU paint of a shading the GPU does not colour");
+    const PropertyChannels &channels = painted_channels(shading);
+    const WholeValues &whole =
+        shading.property ? shading.property->whole() : shading.fade->whole();
+    const uint64_t cells = f.cells();
+
+    // each cell's span where the prepared model keeps its stack
+    std::vector<uint32_t> words(HEAD_WORDS + 2 * cells, 0);
+    uint64_t entries = 0;
+    for (uint64_t cell = 0; cell < cells; ++cell) {
+        const ColumnSpan span = model.stack(cell).size() == 0 ? ColumnSpan{} : channels.span(cell);
+        if (entries + span.size() > UINT32_MAX)
+            fail("a GPU paint of more than 2^32 voxels");
+        words[HEAD_WORDS + 2 * cell] = uint32_t(entries);
+        words[HEAD_WORDS + 2 * cell + 1] = span.lo | span.hi << 16;
+        entries += span.size();
+    }
+
+    // each voxel's entry, row by row of cells
+    std::vector<uint16_t> entry(entries);
+    for_each_row(f.rows, threads, [&](int row) {
+        for (int col = 0; col < f.cols; ++col) {
+            const uint64_t cell = model.cell_index(row, col);
+            const uint32_t at = words[HEAD_WORDS + 2 * cell];
+            const uint32_t span = words[HEAD_WORDS + 2 * cell + 1];
+            for (uint32_t level = span & 0xffff; level < span >> 16; ++level) {
+                double v;
+                const HitVoxel voxel{cell, level};
+                const bool has = shading.property ? shading.property->voxel_value(voxel, v)
+                                                  : shading.fade->voxel_value(voxel, v);
+                const int64_t k = has ? whole.index(v) : -1;
+                entry[at + level - (span & 0xffff)] =
+                    uint16_t(!has ? GPU_PAINT_NONE : k < 0 ? GPU_PAINT_OUTSIDE : uint32_t(k));
+            }
+        }
+    });
+    const size_t entries_at = words.size();
+    words.resize(entries_at + (entries + 1) / 2, 0);
+    // (little-endian: the first of two entries in a word's low half)
+    std::memcpy(words.data() + entries_at, entry.data(), entry.size() * sizeof(uint16_t));
+
+    const std::vector<glm::dvec3> colours = paint_colours(model, shading);
+    const size_t colours_at = words.size();
+    for (const glm::dvec3 &c : colours)
+        for (int k = 0; k < 3; ++k) {
+            const float v = float(c[k]);
+            uint32_t bits;
+            std::memcpy(&bits, &v, 4);
+            words.push_back(bits);
+        }
+    words[0] = uint32_t(entries_at);
+    words[1] = uint32_t(colours_at);
+    words[2] = shading.fade ? uint32_t(whole.count + 1) : 0;
+    words[3] = uint32_t(whole.count); // GPU_PAINT_NONE's colour
+    return words;
+}
+
+} // namespace sbrt

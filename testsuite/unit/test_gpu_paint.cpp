@@ -1,0 +1,223 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   Colours by voxel on the GPU (issue 29): a property of few
+ *            whole values (a scaled sum with fills) and an uncertainty
+ *            fade, shaded by the GPU (egl, llvmpipe here), against the
+ *            CPU's image of the same renderer: from several sides, through
+ *            clip planes and with strata hidden; where the GPU does not
+ *            make them (value= output, kernel normals) the host does
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstring>
+#include <memory>
+#include <random>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "format/mapped_file.hpp"
+#include "gpu/gpu_paint.hpp"
+#include "gpu_compare.hpp"
+#include "scene/hidden_materials.hpp"
+#include "shading/property_paint.hpp"
+
+using namespace sbrt;
+using namespace sbrt_test;
+
+namespace {
+
+constexpr float FILL = -127;
+
+/// A random voxel model with two channels: a percentage with fills and a
+/// second one meant twice its stored value.
+struct PaintFixture {
+    Model model;
+    std::shared_ptr<const PropertyChannels> channels;
+};
+
+PaintFixture fixture(const std::string &dir)
+{
+    PaintFixture fx;
+    const Voxels voxels = random_voxels(5, 36, 44, 30, 6);
+    fx.model = build_model(voxels);
+    const Frame &f = voxels.frame;
+    std::mt19937 rng(5);
+    Source source(2, std::vector<float>(f.voxels()));
+    for (size_t i = 0; i < f.voxels(); ++i) {
+        source[0][i] = rng() % 11 == 0 ? FILL : float(rng() % 101);
+        source[1][i] = float(rng() % 40);
+    }
+    ChannelInfo a, b;
+    a.name = "kans_5";
+    a.has_fill = true;
+    a.fill = FILL;
+    b.name = "kans_6";
+    b.scale = 2;
+    const std::string path = dir + "/channels";
+    write_channels(path, fx.model, source, {a, b}, 8);
+    fx.channels = std::make_shared<const PropertyChannels>(
+        std::make_shared<const MappedFile>(path), path, fx.model);
+    return fx;
+}
+
+ColorRamp ramp()
+{
+    return ColorRamp::through({{30, 0, 90}, {20, 160, 140}, {250, 230, 30}}, 0, 180);
+}
+
+class GpuPaint : public ::testing::TestWithParam<GpuLayout> {
+protected:
+    void SetUp() override
+    {
+        context_ = make_context("egl");
+        if (!context_)
+            GTEST_FAIL();
+    }
+    std::unique_ptr<sbrt_gl::GlContext> context_;
+};
+
+INSTANTIATE_TEST_SUITE_P(Layouts, GpuPaint,
+                         ::testing::Values(GpuLayout::ssbo, GpuLayout::textures),
+                         [](const auto &info) { return gpu_layout_name(info.param); });
+
+/// Cameras from above, low from the south-west and from the north-east.
+std::vector<Camera> cameras(const Tracer &t)
+{
+    std::vector<Camera> out;
+    for (const glm::dvec3 dir : {glm::dvec3(0.3, -0.4, 1.2), glm::dvec3(-0.7, -0.6, 0.5),
+                                 glm::dvec3(0.8, 0.5, 0.35)})
+        out.push_back(Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() *
+                                                                    glm::normalize(dir),
+                                          t.frame().centre(), 40, 71, 93));
+    return out;
+}
+
+/// Pixels whose colour differs by more than a level between two images.
+size_t differing(const Image &a, const Image &b)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < a.rgb.size(); i += 3)
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(int(a.rgb[i + k]) - int(b.rgb[i + k])) > 1) {
+                ++n;
+                break;
+            }
+    return n;
+}
+
+} // namespace
+
+TEST_P(GpuPaint, APropertySumIsColouredOnTheGpuAsTheCpuDoes)
+{
+    const PaintFixture fx = fixture(temp_dir("gpu_paint_property"));
+    const PropertyPaint paint(fx.model, fx.channels, {0, 1}, ramp());
+    ASSERT_GT(paint.whole().count, 0u);
+    Shading shading;
+    shading.light = Shading::light_from(120, 40);
+    shading.property = &paint;
+    const Renderer renderer(fx.model, 2.0, Scene{}, shading, {2, true, 16});
+    for (const Camera &camera : cameras(renderer.tracer()))
+        expect_gpu_shading_as_cpu(*context_, GetParam(), renderer, camera, "property", 2);
+    // the colours are the property's, not the classes'
+    Shading classes = shading;
+    classes.property = nullptr;
+    const Renderer by_class(fx.model, 2.0, Scene{}, classes, {2, true, 16});
+    const Camera camera = cameras(renderer.tracer())[0];
+    const Image shown = renderer.render_image(camera, {});
+    EXPECT_GT(differing(shown, by_class.render_image(camera, {})), shown.rgb.size() / 3 / 4);
+}
+
+TEST_P(GpuPaint, AFadeIsColouredOnTheGpuAsTheCpuDoes)
+{
+    const PaintFixture fx = fixture(temp_dir("gpu_paint_fade"));
+    const UncertaintyFade fade(fx.model, fx.channels, 0, 0, 100);
+    Shading shading;
+    shading.light = Shading::light_from(200, 35);
+    shading.fade = &fade;
+    const Renderer renderer(fx.model, 2.0, Scene{}, shading, {2, true, 16});
+    for (const Camera &camera : cameras(renderer.tracer()))
+        expect_gpu_shading_as_cpu(*context_, GetParam(), renderer, camera, "fade", 2);
+}
+
+TEST_P(GpuPaint, CutsAndHiddenStrataShowTheValuesOfTheModelAsRead)
+{
+    const PaintFixture fx = fixture(temp_dir("gpu_paint_cuts"));
+    const PropertyPaint paint(fx.model, fx.channels, {0, 1}, ramp());
+    Shading shading;
+    shading.property = &paint;
+    const Frame &f = fx.model.frame();
+    // off the cell walls and the voxels' tops
+    const glm::dvec3 mid((f.west + f.east) / 2 + 0.37 * f.ew_res(),
+                         (f.south + f.north) / 2 + 0.29 * f.ns_res(),
+                         (f.bottom + f.top) / 2 + 0.41 * f.tb_res());
+    Scene cut;
+    cut.planes = {{mid, {1, -0.6, 0.2}}, {mid + glm::dvec3(0, 8 * f.ns_res(), 0), {0, 1, 0}}};
+    const Renderer sections(hide_materials(fx.model, {2}), 2.0, cut, shading, {2, true, 16});
+    for (const Camera &camera : cameras(sections.tracer()))
+        expect_gpu_shading_as_cpu(*context_, GetParam(), sections, camera, "cuts", 2);
+}
+
+TEST_P(GpuPaint, WhatTheGpuDoesNotColourTheHostDoes)
+{
+    const PaintFixture fx = fixture(temp_dir("gpu_paint_host"));
+    const PropertyPaint paint(fx.model, fx.channels, {0, 1}, ramp());
+    Shading shading;
+    shading.property = &paint;
+    const Renderer renderer(fx.model, 2.0, Scene{}, shading, {2, true, 16});
+    const Camera camera = cameras(renderer.tracer())[1];
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, GetParam());
+    EXPECT_TRUE(on_gpu.shades_on_gpu(camera));
+    // value=: the property at each hit, which the GPU does not write
+    Outputs value;
+    value.value = true;
+    EXPECT_FALSE(on_gpu.shades_on_gpu(camera, value));
+    const Image want = renderer.render_image(camera, value);
+    const Image got = on_gpu.render_image(camera, value);
+    ASSERT_EQ(got.value.size(), want.value.size());
+    size_t same = 0;
+    for (size_t i = 0; i < want.value.size(); ++i)
+        same += got.value[i] == want.value[i] ||
+                (std::isnan(got.value[i]) && std::isnan(want.value[i]));
+    EXPECT_GE(same, want.value.size() - want.value.size() / 500);
+    // a property of other than few whole values: the host
+    const PropertyPaint one(fx.model, fx.channels, {0}, ramp());
+    Shading kernel = shading;
+    kernel.property = &one;
+    kernel.normals = Normals::kernel;
+    EXPECT_FALSE(gpu_paints(renderer.tracer(), kernel, {}));
+}
+
+TEST(GpuPaintWords, EachVoxelHoldsItsEntryAndEachCellItsSpan)
+{
+    const PaintFixture fx = fixture(temp_dir("gpu_paint_words"));
+    const PropertyPaint paint(fx.model, fx.channels, {0, 1}, ramp());
+    Shading shading;
+    shading.property = &paint;
+    const Tracer tracer(fx.model, 1.0);
+    const std::vector<uint32_t> words = make_gpu_paint(tracer, shading, 2);
+    const Frame &f = fx.model.frame();
+    size_t checked = 0;
+    for (uint64_t cell = 0; cell < f.cells(); ++cell) {
+        const ColumnSpan span = fx.channels->span(cell);
+        ASSERT_EQ(words[5 + 2 * cell], span.lo | span.hi << 16);
+        for (uint32_t level = span.lo; level < span.hi; ++level) {
+            const uint32_t i = words[4 + 2 * cell] + level - span.lo;
+            const uint32_t entry = (words[words[0] + i / 2] >> (16 * (i & 1))) & 0xffff;
+            double v;
+            if (!paint.voxel_value({cell, level}, v)) {
+                EXPECT_EQ(entry, GPU_PAINT_NONE);
+                continue;
+            }
+            ASSERT_EQ(double(entry), v - paint.whole().low);
+            // its colour: the ramp's at the value
+            float rgb[3];
+            std::memcpy(rgb, &words[words[1] + 3 * entry], sizeof rgb);
+            const glm::dvec3 want = paint.ramp().at(v);
+            for (int k = 0; k < 3; ++k)
+                EXPECT_FLOAT_EQ(rgb[k], float(want[k]));
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, f.cells() * 4);
+    EXPECT_EQ(words[3], uint32_t(paint.whole().count)); // the no-value colour
+}
