@@ -65,8 +65,7 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
     const sbrt_gl::GpuFrameReport r =
         gpu.render(camera, outputs, sink, unsigned(request.threads));
     G_verbose_message(r.shaded_on_gpu ? _("Shading: on the GPU")
-                      : sbrt_gl::shaded_on_host(gpu.renderer().tracer(),
-                                                gpu.renderer().shading(), outputs)
+                      : gpu.shaded_on_host(outputs)
                           ? _("Shading: on the CPU at the GPU's hits (these colours "
                               "by voxel are made on the host)")
                           : _("Shading: on the CPU (kernel normals of an image "

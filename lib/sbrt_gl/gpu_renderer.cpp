@@ -7,7 +7,6 @@
 
 #include <chrono>
 
-#include "gpu/gpu_paint.hpp"
 #include "gpu_row_tracer.hpp"
 
 namespace sbrt_gl {
@@ -18,16 +17,16 @@ GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &rendere
 {
 }
 
-bool shaded_on_host(const sbrt::Tracer &tracer, const sbrt::Shading &shading,
-                    const sbrt::Outputs &outputs)
+bool GpuRenderer::shaded_on_host(const sbrt::Outputs &outputs) const
 {
-    return (shading.property || shading.fade) && !sbrt::gpu_paints(tracer, shading, outputs);
+    const sbrt::Shading &shading = renderer_.shading();
+    return (shading.property || shading.fade) && !gpu_.paints(shading, outputs);
 }
 
 bool GpuRenderer::shades_on_gpu(const sbrt::Camera &camera, const sbrt::Outputs &outputs) const
 {
     const sbrt::Shading &shading = renderer_.shading();
-    if (shaded_on_host(renderer_.tracer(), shading, outputs))
+    if (shaded_on_host(outputs))
         return false;
     if (shading.normals == sbrt::Normals::face)
         return true;
@@ -44,7 +43,7 @@ GpuFrameReport GpuRenderer::render(const sbrt::Camera &camera, const sbrt::Outpu
     GpuRowTracer rows(gpu_, camera, cpu_threads);
     // where kernel normals cannot be found on the GPU the renderer finds
     // them from the GPU's hits (it never asks the GPU to shade then)
-    const bool on_host = shaded_on_host(renderer_.tracer(), renderer_.shading(), outputs);
+    const bool on_host = shaded_on_host(outputs);
     rows.shade_on_gpu(on_host ? nullptr : &renderer_.shading());
     report.shaded_on_gpu =
         !on_host &&

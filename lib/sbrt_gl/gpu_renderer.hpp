@@ -28,13 +28,6 @@ struct GpuFrameReport {
     double host_after_ms = 0;
 };
 
-/// Whether `shading` colours by voxel (property channels: property=,
-/// fade=) in a way the GPU does not (sbrt::gpu_paints: a property or fade
-/// of few whole values, face normals, no drape, no overlays, no value=
-/// output): the host shades then, at the GPU's hits.
-bool shaded_on_host(const sbrt::Tracer &tracer, const sbrt::Shading &shading,
-                    const sbrt::Outputs &outputs);
-
 /// \brief The prepared scene of `renderer` (model after hiding and
 /// pruning, planes, pyramid; its shading, read at every frame) with the
 /// model uploaded to the GPU of `context` once, at construction. Each
@@ -58,6 +51,12 @@ public:
     sbrt::Image render_image(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
                              unsigned cpu_threads = 0);
 
+    /// Whether the renderer's shading colours by voxel (property channels:
+    /// property=, fade=) in a way the GPU does not (GpuTracer::paints: a
+    /// property or fade of few whole values, face normals, no drape, no
+    /// overlays, no value= output, a model small enough): the host shades
+    /// then, at the GPU's hits.
+    bool shaded_on_host(const sbrt::Outputs &outputs) const;
     /// Whether `camera`'s frame of `outputs` is shaded on the GPU with the
     /// renderer's shading as it is now.
     bool shades_on_gpu(const sbrt::Camera &camera, const sbrt::Outputs &outputs = {}) const;

@@ -264,6 +264,12 @@ void GpuTracer::trace_rows(const sbrt::Camera &camera, int first_row, int row_co
     stats_.readback_ms += ms_since(start);
 }
 
+bool GpuTracer::paints(const sbrt::Shading &shading, const sbrt::Outputs &outputs) const
+{
+    return sbrt::gpu_paints(tracer_, shading, outputs) &&
+           sbrt::gpu_paint_bytes(tracer_, shading) <= max_block_bytes_;
+}
+
 GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, Pass pass)
 {
     const bool draped = shading.drape != nullptr;
@@ -385,7 +391,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                            const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                            sbrt::Band &band, unsigned cpu_threads)
 {
-    if ((shading.property || shading.fade) && !sbrt::gpu_paints(tracer_, shading, outputs))
+    if ((shading.property || shading.fade) && !paints(shading, outputs))
         sbrt::fail("these colours by voxel are made on the host, not on the GPU");
     sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     const sbrt::GpuBandLayout layout = band_layout(camera, row_count, outputs, shade);

@@ -121,6 +121,9 @@ public:
     void shade_kernel_rows(const sbrt::Camera &camera, int first, int count,
                            const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                            sbrt::Band &band, unsigned cpu_threads = 0);
+    /// Whether the shading pass colours `shading`'s property or fade for
+    /// `outputs` (sbrt::gpu_paints, in one storage buffer of this GL).
+    bool paints(const sbrt::Shading &shading, const sbrt::Outputs &outputs) const;
     /// The loop budget of this GL: llvmpipe's (GPU_LOOP_BUDGET), none on
     /// a GPU.
     uint32_t loop_budget() const { return loop_budget_; }

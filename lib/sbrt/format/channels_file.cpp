@@ -451,6 +451,7 @@ PropertyChannels::PropertyChannels(std::shared_ptr<const MappedFile> file, std::
                 fail(what_, ": a block of more than 2^32 values");
             slots_[cell] = {span.lo, span.hi, filled};
             filled += span.size();
+            values_ += span.size();
         }
 }
 

@@ -183,8 +183,10 @@ public:
     }
     /// Where `cell`'s values lie: its span and first value in its block.
     const CellSlot &slot(uint64_t cell) const { return slots_[cell]; }
-    /// The cells of the model the channels belong to.
+    /// The cells of the model the channels belong to, and the values each
+    /// channel holds (every cell's span).
     uint64_t cells() const { return slots_.size(); }
+    uint64_t values() const { return values_; }
     /// The block holding `cell`'s values (of every channel), of blocks().
     size_t block_of(uint64_t cell) const;
     size_t blocks() const { return blocks_; }
@@ -206,6 +208,7 @@ private:
     std::vector<ChannelInfo> channels_;
     std::vector<CellSlot> slots_;
     std::vector<uint32_t> block_values_; ///< values a block holds (all spans)
+    uint64_t values_ = 0;
     std::unique_ptr<Block[]> blocks_data_; ///< channel-major
     mutable std::atomic<uint64_t> decoded_{0};
 };

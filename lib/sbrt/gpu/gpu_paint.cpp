@@ -61,8 +61,19 @@ bool gpu_paints(const Tracer &tracer, const Shading &shading, const Outputs &out
         return false;
     const Frame &f = tracer.model().frame();
     const PropertyChannels &channels = painted_channels(shading);
-    return f.depths < 65536 && channels.blocks() > 0 &&
-           f.cells() == channels.cells();
+    return f.depths < 65536 && channels.blocks() > 0 && f.cells() == channels.cells() &&
+           channels.values() <= GPU_PAINT_MAX_VOXELS;
+}
+
+uint64_t gpu_paint_bytes(const Tracer &tracer, const Shading &shading)
+{
+    const WholeValues &whole =
+        shading.property ? shading.property->whole() : shading.fade->whole();
+    const uint64_t colours =
+        shading.property ? whole.count + 1
+                         : uint64_t(tracer.model().materials().size()) * (whole.count + 1);
+    return 4 * (HEAD_WORDS + 2 * tracer.model().frame().cells()) +
+           4 * ((painted_channels(shading).values() + 1) / 2) + 12 * colours;
 }
 
 std::string gpu_paint_key(const Shading &shading)

@@ -29,12 +29,19 @@ namespace sbrt {
 constexpr uint32_t GPU_PAINT_NONE = 0xffff, GPU_PAINT_OUTSIDE = 0xfffe;
 /// Most colours of a fade's table (classes x fade values).
 constexpr size_t GPU_PAINT_MAX_COLOURS = size_t(1) << 20;
+/// Most voxels whose entries go up (128 MiB of them, made in about a
+/// second on 16 cores): a larger model is coloured on the host at the
+/// GPU's hits, which decodes only the blocks that rays reach.
+constexpr uint64_t GPU_PAINT_MAX_VOXELS = uint64_t(1) << 26;
 
 /// Whether the GPU can colour `shading`'s property or fade at `tracer`'s
 /// hits with `outputs`: one of them (not both), its values few whole
-/// numbers, face normals, no drape, no overlays, no value= output, and a
-/// model of fewer than 65,536 levels. Elsewhere the host colours the hits.
+/// numbers, face normals, no drape, no overlays, no value= output, a
+/// model of fewer than 65,536 levels and channels of at most
+/// GPU_PAINT_MAX_VOXELS voxels. Elsewhere the host colours the hits.
 bool gpu_paints(const Tracer &tracer, const Shading &shading, const Outputs &outputs);
+/// The most bytes make_gpu_paint's words take (where gpu_paints holds).
+uint64_t gpu_paint_bytes(const Tracer &tracer, const Shading &shading);
 
 /// `buffer Paint` (std430 uint words) for `shading` over `tracer`'s model
 /// (gpu_paints must hold): a head of 4 words (where the entries start,
