@@ -197,7 +197,15 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
                       file, found->title.c_str(), name, found->name.c_str());
     }
     sbrt::ColumnStackBuilder builder(frame);
-    const size_t band = variable.band_size(max_band);
+    // bands of whole chunks: a chunk cut by two bands would be decompressed
+    // twice (with eleven channels of a national model a band of the
+    // memory's share is one row, and every chunk was read 16 times); a
+    // chunk's rows of every variable, twice, within 1/8 of the memory
+    // available and 256 MB each
+    const size_t chunk_bytes = std::max(
+        4 * max_band, std::min(size_t(available / (16.0 * double(1 + props.size()))),
+                               size_t(256) << 20));
+    const size_t band = variable.band_size(max_band, chunk_bytes);
     // the next band is read (one thread) while this one is converted;
     // doubles keep every sample type aligned; the classes' first, then
     // each property's

@@ -444,13 +444,13 @@ std::shared_ptr<OGRSpatialReference> FileVariable::spatial_ref() const
     return srs_from_attributes(*root);
 }
 
-size_t FileVariable::band_size(size_t max_bytes) const
+size_t FileVariable::band_size(size_t max_bytes, size_t chunk_bytes) const
 {
     const size_t row_bytes = easting().size * vertical().size * sample_bytes();
     size_t rows = std::max<size_t>(1, max_bytes / row_bytes);
     const std::vector<GUInt64> blocks = array_->GetBlockSize();
     const size_t chunk = size_t(blocks[dim_of_axis_[1]]);
-    if (chunk > 1 && chunk * row_bytes <= 4 * max_bytes)
+    if (chunk > 1 && chunk * row_bytes <= chunk_bytes)
         rows = std::max(chunk, rows / chunk * chunk);
     return std::min(rows, northing().size);
 }

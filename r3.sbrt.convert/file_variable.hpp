@@ -92,8 +92,9 @@ public:
     std::shared_ptr<OGRSpatialReference> spatial_ref() const;
 
     /// Northing index count per read that keeps a band near `max_bytes`,
-    /// a multiple of the file's chunk where that fits.
-    size_t band_size(size_t max_bytes) const;
+    /// a multiple of the file's chunk where a chunk's rows take at most
+    /// `chunk_bytes` (a chunk cut by two bands is decompressed twice).
+    size_t band_size(size_t max_bytes, size_t chunk_bytes) const;
     /// The type values are read in: the file's own where listed (GDAL then
     /// copies without converting), else float64.
     sbrt::SampleType sample() const { return grid_.sample; }

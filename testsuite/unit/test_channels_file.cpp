@@ -270,3 +270,33 @@ TEST(ChannelsFile, HorizonModelsHaveNoSpans)
     EXPECT_FALSE(has_voxel_tops(m));
     EXPECT_THROW(solid_span(m, 0), Error);
 }
+
+TEST(PendingValues, HoldEveryValueBitExactlyWhileWideningAsValuesNeed)
+{
+    PendingValues pending;
+    std::vector<float> all;
+    auto add = [&](std::vector<float> values) {
+        pending.append(values.data(), values.size());
+        all.insert(all.end(), values.begin(), values.end());
+    };
+    add({0, 100, -127, 5});            // bytes
+    add({300, -2000, 7});              // int16: the bytes before widened
+    add({-0.0f, 2.5f, std::numeric_limits<float>::quiet_NaN(), 1e9f}); // floats
+    add({3, -127});
+    std::vector<float> got;
+    pending.floats(got);
+    ASSERT_EQ(got.size(), all.size());
+    EXPECT_EQ(pending.size(), all.size());
+    for (size_t i = 0; i < all.size(); ++i)
+        EXPECT_EQ(std::memcmp(&got[i], &all[i], 4), 0) << i;
+    pending.clear();
+    add({});
+    pending.floats(got);
+    EXPECT_TRUE(got.empty());
+    // narrow again after clear: -0 alone still comes back as -0
+    const float minus_zero = -0.0f;
+    pending.append(&minus_zero, 1);
+    pending.floats(got);
+    ASSERT_EQ(got.size(), 1u);
+    EXPECT_TRUE(std::signbit(got[0]));
+}

@@ -204,6 +204,69 @@ std::string read_string(ByteReader &in, const std::string &what)
 
 // --------------------------------------------------------------- writer
 
+void PendingValues::append(const float *values, size_t n)
+{
+    // the width the new values need
+    unsigned need = width_;
+    for (size_t i = 0; i < n && need < 4; ++i) {
+        const float v = values[i];
+        if (!is_exact_integer(v) || v < -32768.0f || v > 32767.0f ||
+            (v == 0 && std::signbit(v))) // -0 kept as its float bits
+            need = 4;
+        else if (v < -128.0f || v > 127.0f)
+            need = std::max(need, 2u);
+    }
+    if (need > width_)
+        widen(need);
+    bytes_.resize((size_ + n) * width_);
+    uint8_t *out = bytes_.data() + size_ * width_;
+    for (size_t i = 0; i < n; ++i) {
+        if (width_ == 1) {
+            out[i] = uint8_t(int8_t(values[i]));
+        } else if (width_ == 2) {
+            const int16_t v = int16_t(values[i]);
+            std::memcpy(out + 2 * i, &v, 2);
+        } else {
+            std::memcpy(out + 4 * i, &values[i], 4);
+        }
+    }
+    size_ += n;
+}
+
+void PendingValues::widen(unsigned width)
+{
+    std::vector<float> held;
+    floats(held);
+    width_ = width;
+    size_ = 0;
+    bytes_.clear();
+    append(held.data(), held.size());
+}
+
+void PendingValues::floats(std::vector<float> &out) const
+{
+    out.resize(size_);
+    const uint8_t *in = bytes_.data();
+    for (size_t i = 0; i < size_; ++i) {
+        if (width_ == 1) {
+            out[i] = float(int8_t(in[i]));
+        } else if (width_ == 2) {
+            int16_t v;
+            std::memcpy(&v, in + 2 * i, 2);
+            out[i] = float(v);
+        } else {
+            std::memcpy(&out[i], in + 4 * i, 4);
+        }
+    }
+}
+
+void PendingValues::clear()
+{
+    bytes_.clear(); // capacity kept for the next row of blocks
+    width_ = 1;
+    size_ = 0;
+}
+
 ChannelsWriter::ChannelsWriter(ByteSink &sink, int rows, int cols, int block_size,
                                std::vector<ChannelInfo> channels, unsigned threads,
                                int zstd_level)
@@ -220,7 +283,7 @@ ChannelsWriter::ChannelsWriter(ByteSink &sink, int rows, int cols, int block_siz
         c.integer = !c.has_fill || is_exact_integer(c.fill);
     }
     block_spans_.resize(size_t(block_cols_));
-    pending_.assign(channels_.size(), std::vector<std::vector<float>>(size_t(block_cols_)));
+    pending_.assign(channels_.size(), std::vector<PendingValues>(size_t(block_cols_)));
     table_.resize(channels_.size());
     std::vector<uint8_t> header(CHANNELS_HEADER_SIZE, 0);
     sink_.append(header.data(), header.size()); // patched by finish()
@@ -238,8 +301,7 @@ void ChannelsWriter::add_row(const ColumnSpan *spans, const std::vector<const fl
             size_t n = 0;
             for (int c = c0; c < c1; ++c)
                 n += spans[c].size();
-            std::vector<float> &out = pending_[ch][size_t(bc)];
-            out.insert(out.end(), v, v + n);
+            pending_[ch][size_t(bc)].append(v, n);
             channels_[ch].voxels += n;
             v += n;
         }
@@ -257,50 +319,56 @@ void ChannelsWriter::add_row(const ColumnSpan *spans, const std::vector<const fl
 void ChannelsWriter::flush_block_row()
 {
     const size_t jobs = channels_.size() * size_t(block_cols_);
-    // buffers kept from one row of blocks to the next: no fresh pages
-    std::vector<std::vector<uint8_t>> &compressed = compressed_;
-    compressed.resize(jobs);
-    raw_.resize(jobs);
-    std::vector<uint32_t> raw_sizes(jobs);
-    std::vector<BlockFigures> figures(jobs);
-    for_each_row(int(jobs), threads_, [&](int job) {
-        const size_t ch = size_t(job) / size_t(block_cols_),
-                     bc = size_t(job) % size_t(block_cols_);
-        std::vector<uint8_t> &raw = raw_[size_t(job)];
-        encode_block(pending_[ch][bc], block_spans_[bc], channels_[ch], figures[size_t(job)],
-                     raw);
-        if (raw.size() > UINT32_MAX)
-            fail("channels: a block of ", raw.size(), " bytes (give a smaller block size)");
-        std::vector<uint8_t> &out = compressed[size_t(job)];
-        out.resize(ZSTD_compressBound(raw.size()));
-        // one context a thread, kept: no tables allocated per block
-        thread_local const std::unique_ptr<ZSTD_CCtx, size_t (*)(ZSTD_CCtx *)> context(
-            ZSTD_createCCtx(), ZSTD_freeCCtx);
-        const size_t n = ZSTD_compressCCtx(context.get(), out.data(), out.size(), raw.data(),
-                                           raw.size(), zstd_level_);
-        if (ZSTD_isError(n))
-            fail("channels: zstd: ", ZSTD_getErrorName(n));
-        out.resize(n);
-        raw_sizes[size_t(job)] = uint32_t(raw.size());
-    });
-    for (size_t job = 0; job < jobs; ++job) {
-        const size_t ch = job / size_t(block_cols_);
-        ChannelInfo &info = channels_[ch];
-        const BlockFigures &f = figures[job];
-        if (f.valid) {
-            info.min = info.valid ? std::min(info.min, f.min) : f.min;
-            info.max = info.valid ? std::max(info.max, f.max) : f.max;
-            info.valid += f.valid;
+    // a few blocks at a time (twice the threads), appended in order: the
+    // buffers are a group's, not a whole row of blocks'
+    const size_t group = 2 * size_t(thread_count(threads_));
+    values_.resize(group);
+    raw_.resize(group);
+    compressed_.resize(group);
+    std::vector<uint32_t> raw_sizes(group);
+    std::vector<BlockFigures> figures(group);
+    for (size_t first = 0; first < jobs; first += group) {
+        const size_t count = std::min(group, jobs - first);
+        for_each_row(int(count), threads_, [&](int k) {
+            const size_t job = first + size_t(k);
+            const size_t ch = job / size_t(block_cols_), bc = job % size_t(block_cols_);
+            std::vector<float> &values = values_[size_t(k)];
+            pending_[ch][bc].floats(values);
+            std::vector<uint8_t> &raw = raw_[size_t(k)];
+            encode_block(values, block_spans_[bc], channels_[ch], figures[size_t(k)], raw);
+            if (raw.size() > UINT32_MAX)
+                fail("channels: a block of ", raw.size(), " bytes (give a smaller block size)");
+            std::vector<uint8_t> &out = compressed_[size_t(k)];
+            out.resize(ZSTD_compressBound(raw.size()));
+            // one context a thread, kept: no tables allocated per block
+            thread_local const std::unique_ptr<ZSTD_CCtx, size_t (*)(ZSTD_CCtx *)> context(
+                ZSTD_createCCtx(), ZSTD_freeCCtx);
+            const size_t n = ZSTD_compressCCtx(context.get(), out.data(), out.size(),
+                                               raw.data(), raw.size(), zstd_level_);
+            if (ZSTD_isError(n))
+                fail("channels: zstd: ", ZSTD_getErrorName(n));
+            out.resize(n);
+            raw_sizes[size_t(k)] = uint32_t(raw.size());
+        });
+        for (size_t k = 0; k < count; ++k) {
+            const size_t ch = (first + k) / size_t(block_cols_);
+            ChannelInfo &info = channels_[ch];
+            const BlockFigures &f = figures[k];
+            if (f.valid) {
+                info.min = info.valid ? std::min(info.min, f.min) : f.min;
+                info.max = info.valid ? std::max(info.max, f.max) : f.max;
+                info.valid += f.valid;
+            }
+            info.integer = info.integer && f.integer;
+            const std::vector<uint8_t> &out = compressed_[k];
+            table_[ch].push_back({sink_.size(), uint32_t(out.size()), raw_sizes[k],
+                                  crc32_of(out.data(), out.size())});
+            channels_[ch].bytes += out.size() + 20;
+            sink_.append(out.data(), out.size());
         }
-        info.integer = info.integer && f.integer;
-        const std::vector<uint8_t> &out = compressed[job];
-        table_[ch].push_back({sink_.size(), uint32_t(out.size()), raw_sizes[job],
-                              crc32_of(out.data(), out.size())});
-        channels_[ch].bytes += out.size() + 20;
-        sink_.append(out.data(), out.size());
     }
     for (auto &per_channel : pending_)
-        for (std::vector<float> &values : per_channel)
+        for (PendingValues &values : per_channel)
             values.clear();
     for (std::vector<ColumnSpan> &spans : block_spans_)
         spans.clear();

@@ -52,8 +52,29 @@ constexpr uint32_t CHANNELS_HEADER_SIZE = 64;
 ///   compressed size, u32 uncompressed size, u32 crc32 of the compressed
 ///   bytes.
 ///
+/// \brief Values of one channel's block waiting for the rest of its rows,
+/// held in the narrowest of int8, int16 and float32 that holds each
+/// exactly (GeoTOP's percentages and fills: a byte each), widened when a
+/// value needs it.
+class PendingValues {
+public:
+    void append(const float *values, size_t n);
+    size_t size() const { return size_; }
+    /// The values as floats into `out` (replacing what it held).
+    void floats(std::vector<float> &out) const;
+    void clear();
+
+private:
+    /// Stores the values held again in `width` bytes each (2 or 4).
+    void widen(unsigned width);
+    std::vector<uint8_t> bytes_;
+    unsigned width_ = 1; ///< 1: int8, 2: int16, 4: float32 bits
+    size_t size_ = 0;
+};
+
 /// \brief Writes a channels member as rows of cells arrive (north to
-/// south), holding one row of blocks uncompressed at a time.
+/// south), holding one row of blocks at a time (its values as narrow as
+/// they allow) and compressing it a few blocks at a time.
 class ChannelsWriter {
 public:
     ChannelsWriter(ByteSink &sink, int rows, int cols, int block_size,
@@ -83,9 +104,11 @@ private:
     int row_ = 0;
     std::vector<std::vector<ColumnSpan>> block_spans_; ///< per block column
     /// per channel, per block column: the values of the pending rows
-    std::vector<std::vector<std::vector<float>>> pending_;
+    std::vector<std::vector<PendingValues>> pending_;
     std::vector<std::vector<BlockEntry>> table_; ///< per channel
-    /// per block of a row of blocks: its raw and compressed bytes
+    /// per block of a group compressed together: its values, raw and
+    /// compressed bytes (kept from one group to the next: no fresh pages)
+    std::vector<std::vector<float>> values_;
     std::vector<std::vector<uint8_t>> raw_, compressed_;
 };
 
