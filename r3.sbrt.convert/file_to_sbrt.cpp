@@ -244,7 +244,11 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
         size_t count, first;
     };
     auto rows_of = [&](size_t row0) {
-        const size_t count = std::min(band, ny - row0);
+        // bands start on the file's chunks: a northing that runs south to
+        // north has its first chunk in the south, so the first band (the
+        // northmost) takes what is left over
+        const size_t lead = y.ascending ? ny % band : 0;
+        const size_t count = row0 == 0 && lead ? lead : std::min(band, ny - row0);
         return Rows{count, y.ascending ? ny - row0 - count : row0};
     };
     auto read = [&](size_t row0, std::vector<Buffer> &set) {
@@ -261,12 +265,12 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     if (channel_bands)
         import.record_spans(&spans);
     std::future<std::vector<sbrt::BandStrides>> pending = read(0, buffers[0]);
-    for (size_t row0 = 0, b = 0; row0 < ny; row0 += band, b ^= 1) {
+    for (size_t row0 = 0, b = 0; row0 < ny; row0 += rows_of(row0).count, b ^= 1) {
         G_percent(row0, ny, 1);
         const std::vector<sbrt::BandStrides> steps = pending.get();
-        if (row0 + band < ny)
-            pending = read(row0 + band, buffers[b ^ 1]);
         const Rows rows = rows_of(row0);
+        if (row0 + rows.count < ny)
+            pending = read(row0 + rows.count, buffers[b ^ 1]);
         try {
             import.add(buffers[b][0].data(), steps[0], row0, rows.count, rows.first);
             if (channel_bands) {

@@ -9,7 +9,10 @@
 #            and of 2 CPUs, beside the same orbit in one process on 1 and on
 #            2 threads; wall-clock times of one run each, as root (the
 #            job array's from its first task's start to its last task's
-#            end: sbatch --wait itself polls every few seconds). Checks
+#            end: sbatch --wait itself polls every few seconds); and what
+#            this machine gives two independent processes: the orbit on
+#            one thread alone, then two such processes at once (each its
+#            own mapset), whose throughput bounds any scheduler's. Checks
 #            that the frames equal the one-process frames; never fails on
 #            time.
 # USAGE:     make && testsuite/benchmark/cluster_benchmark.sh [MODEL] (B)
@@ -38,6 +41,15 @@ for threads in 1 2; do
         png="$work/one$threads/orbit_%04d.png" >/dev/null 2>&1
     one[$threads]=$(seconds "$start" "$(date +%s.%N)")
 done
+
+# the machine's own limit: one single-threaded orbit alone, then two at once
+mkdir -p "$work/pair_a" "$work/pair_b"
+start=$(date +%s.%N)
+in_grass cluster_bench_a r3.sbrt.render --q $view nprocs=1 png="$work/pair_a/orbit_%04d.png" >/dev/null 2>&1 &
+in_grass cluster_bench_b r3.sbrt.render --q $view nprocs=1 png="$work/pair_b/orbit_%04d.png" >/dev/null 2>&1 &
+wait
+pair=$(seconds "$start" "$(date +%s.%N)")
+rm -rf "$data"/loc/cluster_bench_a "$data"/loc/cluster_bench_b
 
 # the job array on a cluster of 1 CPU, then of 2
 cat >"$work/orbit.sh" <<EOS
@@ -72,6 +84,7 @@ done
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
 echo "cluster geo_$model: orbit of $frames frames at $size, $(nproc) cores here"
 echo "cluster geo_$model: one process, 1 thread: ${one[1]} s; 2 threads: ${one[2]} s ($(ratio "${one[1]}" "${one[2]}")x)"
+echo "cluster geo_$model: two independent 1-thread processes at once: ${pair} s for twice the frames: $(awk -v a="${one[1]}" -v b="$pair" 'BEGIN { printf "%.2f", 2 * a / b }')x the throughput of one (what this machine gives two CPU-bound processes)"
 echo "cluster geo_$model: job array of $tasks tasks, 1-CPU cluster: ${array[1]} s; 2-CPU cluster: ${array[2]} s"
 echo "cluster geo_$model: speed-up from 1 to 2 CPUs: $(ratio "${array[1]}" "${array[2]}")x (target >= 1.8)"
 echo "cluster geo_$model: job array on 2 CPUs / one process on 2 threads: $(ratio "${array[2]}" "${one[2]}")"

@@ -5,10 +5,12 @@
  ****************************************************************************/
 #include "builders/channel_bands.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
 #include "util/error.hpp"
+#include "util/parallel.hpp"
 
 namespace sbrt {
 
@@ -67,18 +69,25 @@ void ChannelBands::add(const std::vector<ColumnSpan> &spans,
     SBRT_CHECK_EQ(bands.size(), grids_.size(), "ChannelBands::add");
     const size_t nx = grids_.empty() ? 0 : grids_[0].easting.size;
     SBRT_CHECK_EQ(spans.size(), rows * nx, "ChannelBands::add spans");
-    std::vector<const float *> pointers(grids_.size());
-    for (size_t r = 0; r < rows; ++r) {
-        const ColumnSpan *row_spans = spans.data() + r * nx;
-        for (size_t ch = 0; ch < grids_.size(); ++ch) {
-            with_sample_type(grids_[ch].sample, [&](auto *type) {
-                using T = std::remove_pointer_t<decltype(type)>;
-                gather(ch, static_cast<const T *>(bands[ch]), steps[ch], row0 + r, first,
-                       row_spans, row_values_[ch]);
-            });
-            pointers[ch] = row_values_[ch].data();
-        }
-        writer_.add_row(row_spans, pointers);
+    // channel by channel on all cores, in runs of rows that end where a
+    // row of blocks does (the writer compresses it then)
+    for (size_t r0 = 0; r0 < rows;) {
+        const size_t run = std::min(rows - r0, size_t(writer_.rows_to_block_end()));
+        for_each_row(int(grids_.size()), 0, [&](int ch) {
+            for (size_t r = r0; r < r0 + run; ++r) {
+                const ColumnSpan *row_spans = spans.data() + r * nx;
+                with_sample_type(grids_[size_t(ch)].sample, [&](auto *type) {
+                    using T = std::remove_pointer_t<decltype(type)>;
+                    gather(size_t(ch), static_cast<const T *>(bands[size_t(ch)]),
+                           steps[size_t(ch)], row0 + r, first, row_spans,
+                           row_values_[size_t(ch)]);
+                });
+                writer_.add_channel_row(size_t(ch), row_spans, row_values_[size_t(ch)].data());
+            }
+        });
+        for (size_t r = r0; r < r0 + run; ++r)
+            writer_.end_row(spans.data() + r * nx);
+        r0 += run;
     }
 }
 

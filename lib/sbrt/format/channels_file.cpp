@@ -204,30 +204,42 @@ std::string read_string(ByteReader &in, const std::string &what)
 
 // --------------------------------------------------------------- writer
 
+namespace {
+/// The width a value needs: 1 (int8), 2 (int16) or 4 (float bits: other
+/// values, NaN and -0).
+unsigned width_of(float v)
+{
+    if (v >= -128.0f && v <= 127.0f && float(int(v)) == v && !(v == 0 && std::signbit(v)))
+        return 1;
+    if (v >= -32768.0f && v <= 32767.0f && float(int(v)) == v && !(v == 0 && std::signbit(v)))
+        return 2;
+    return 4;
+}
+} // namespace
+
 void PendingValues::append(const float *values, size_t n)
 {
-    // the width the new values need
-    unsigned need = width_;
-    for (size_t i = 0; i < n && need < 4; ++i) {
-        const float v = values[i];
-        if (!is_exact_integer(v) || v < -32768.0f || v > 32767.0f ||
-            (v == 0 && std::signbit(v))) // -0 kept as its float bits
-            need = 4;
-        else if (v < -128.0f || v > 127.0f)
-            need = std::max(need, 2u);
-    }
-    if (need > width_)
-        widen(need);
     bytes_.resize((size_ + n) * width_);
-    uint8_t *out = bytes_.data() + size_ * width_;
     for (size_t i = 0; i < n; ++i) {
+        const float v = values[i];
+        if (width_ < 4) {
+            // one pass: stored while it fits, widened where it does not
+            const unsigned need = width_of(v);
+            if (need > width_) {
+                size_ += i;
+                widen(need);
+                append(values + i, n - i);
+                return;
+            }
+        }
+        uint8_t *out = bytes_.data() + (size_ + i) * width_;
         if (width_ == 1) {
-            out[i] = uint8_t(int8_t(values[i]));
+            *out = uint8_t(int8_t(int(v)));
         } else if (width_ == 2) {
-            const int16_t v = int16_t(values[i]);
-            std::memcpy(out + 2 * i, &v, 2);
+            const int16_t k = int16_t(int(v));
+            std::memcpy(out, &k, 2);
         } else {
-            std::memcpy(out + 4 * i, &values[i], 4);
+            std::memcpy(out, &v, 4);
         }
     }
     size_ += n;
@@ -236,7 +248,7 @@ void PendingValues::append(const float *values, size_t n)
 void PendingValues::widen(unsigned width)
 {
     std::vector<float> held;
-    floats(held);
+    floats(held); // the size_ values stored so far
     width_ = width;
     size_ = 0;
     bytes_.clear();
@@ -292,20 +304,32 @@ ChannelsWriter::ChannelsWriter(ByteSink &sink, int rows, int cols, int block_siz
 void ChannelsWriter::add_row(const ColumnSpan *spans, const std::vector<const float *> &values)
 {
     SBRT_CHECK_EQ(values.size(), channels_.size(), "ChannelsWriter::add_row");
+    for (size_t ch = 0; ch < channels_.size(); ++ch)
+        add_channel_row(ch, spans, values[ch]);
+    end_row(spans);
+}
+
+void ChannelsWriter::add_channel_row(size_t channel, const ColumnSpan *spans,
+                                     const float *values)
+{
     if (row_ >= rows_)
         fail("channels: more rows than the grid's ", rows_);
-    for (size_t ch = 0; ch < channels_.size(); ++ch) {
-        const float *v = values[ch];
-        for (int bc = 0; bc < block_cols_; ++bc) {
-            const int c0 = bc * block_size_, c1 = std::min(cols_, c0 + block_size_);
-            size_t n = 0;
-            for (int c = c0; c < c1; ++c)
-                n += spans[c].size();
-            pending_[ch][size_t(bc)].append(v, n);
-            channels_[ch].voxels += n;
-            v += n;
-        }
+    const float *v = values;
+    for (int bc = 0; bc < block_cols_; ++bc) {
+        const int c0 = bc * block_size_, c1 = std::min(cols_, c0 + block_size_);
+        size_t n = 0;
+        for (int c = c0; c < c1; ++c)
+            n += spans[c].size();
+        pending_[channel][size_t(bc)].append(v, n);
+        channels_[channel].voxels += n;
+        v += n;
     }
+}
+
+void ChannelsWriter::end_row(const ColumnSpan *spans)
+{
+    if (row_ >= rows_)
+        fail("channels: more rows than the grid's ", rows_);
     for (int bc = 0; bc < block_cols_; ++bc) {
         const int c0 = bc * block_size_, c1 = std::min(cols_, c0 + block_size_);
         block_spans_[size_t(bc)].insert(block_spans_[size_t(bc)].end(), spans + c0,

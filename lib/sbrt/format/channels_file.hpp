@@ -84,6 +84,14 @@ public:
     /// The next row: `spans` per cell (cols of them), and per channel the
     /// values of the row's spans one after another (bottom up).
     void add_row(const ColumnSpan *spans, const std::vector<const float *> &values);
+    /// The same in parts: channel `channel`'s values of the next rows, one
+    /// row at a time (distinct channels may come from threads at once),
+    /// then end_row for each of those rows in order, at most
+    /// rows_to_block_end() rows ahead.
+    void add_channel_row(size_t channel, const ColumnSpan *spans, const float *values);
+    void end_row(const ColumnSpan *spans);
+    /// Rows that may come before the row of blocks is complete.
+    int rows_to_block_end() const { return block_size_ - row_ % block_size_; }
     /// Writes the directory and the header (every row must have come).
     void finish();
     /// The channels with the figures of their values (after finish: bytes).
