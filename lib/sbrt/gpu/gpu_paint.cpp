@@ -24,22 +24,30 @@ const PropertyChannels &painted_channels(const Shading &shading)
     return shading.property ? shading.property->channels() : shading.fade->channels();
 }
 
+const WholeValues &painted_whole(const Shading &shading)
+{
+    return shading.property ? shading.property->whole() : shading.fade->whole();
+}
+
+/// Colours in the table: a property's per value and its no-value colour;
+/// a fade's per class of `model`, per value and the class's own.
+uint64_t colour_count(const Model &model, const Shading &shading)
+{
+    const uint64_t entries = painted_whole(shading).count + 1;
+    return shading.property ? entries : uint64_t(model.materials().size()) * entries;
+}
+
 /// The colours before lighting, entry by entry (GPU_PAINT_NONE's last).
 std::vector<glm::dvec3> paint_colours(const Model &model, const Shading &shading)
 {
+    if (shading.property)
+        return shading.property->entry_colors();
     std::vector<glm::dvec3> colours;
-    if (shading.property) {
-        colours = shading.property->table();
-        colours.push_back(shading.property->no_value());
-        return colours;
-    }
-    const UncertaintyFade &fade = *shading.fade;
     for (size_t m = 0; m < model.materials().size(); ++m) {
         const auto rgb = material_color(model, uint32_t(m));
-        const glm::dvec3 base(rgb[0], rgb[1], rgb[2]);
-        for (size_t k = 0; k < fade.whole().count; ++k)
-            colours.push_back(fade.faded(base, fade.whole().low + double(k)));
-        colours.push_back(base);
+        const std::vector<glm::dvec3> entries =
+            shading.fade->entry_colors(glm::dvec3(rgb[0], rgb[1], rgb[2]));
+        colours.insert(colours.end(), entries.begin(), entries.end());
     }
     return colours;
 }
@@ -52,12 +60,9 @@ bool gpu_paints(const Tracer &tracer, const Shading &shading, const Outputs &out
         shading.normals != Normals::face || outputs.value ||
         gpu_overlay_mode(tracer) != GpuOverlayMode::none)
         return false;
-    const WholeValues &whole =
-        shading.property ? shading.property->whole() : shading.fade->whole();
-    if (whole.count == 0 || whole.count >= GPU_PAINT_OUTSIDE)
-        return false;
-    if (shading.fade && tracer.model().materials().size() * (whole.count + 1) >
-                            GPU_PAINT_MAX_COLOURS)
+    const WholeValues &whole = painted_whole(shading);
+    if (whole.count == 0 || whole.count >= GPU_PAINT_OUTSIDE ||
+        (shading.fade && colour_count(tracer.model(), shading) > GPU_PAINT_MAX_COLOURS))
         return false;
     const Frame &f = tracer.model().frame();
     const PropertyChannels &channels = painted_channels(shading);
@@ -67,13 +72,9 @@ bool gpu_paints(const Tracer &tracer, const Shading &shading, const Outputs &out
 
 uint64_t gpu_paint_bytes(const Tracer &tracer, const Shading &shading)
 {
-    const WholeValues &whole =
-        shading.property ? shading.property->whole() : shading.fade->whole();
-    const uint64_t colours =
-        shading.property ? whole.count + 1
-                         : uint64_t(tracer.model().materials().size()) * (whole.count + 1);
     return 4 * (HEAD_WORDS + 2 * tracer.model().frame().cells()) +
-           4 * ((painted_channels(shading).values() + 1) / 2) + 12 * colours;
+           4 * ((painted_channels(shading).values() + 1) / 2) +
+           12 * colour_count(tracer.model(), shading);
 }
 
 std::string gpu_paint_key(const Shading &shading)
@@ -91,8 +92,7 @@ std::string gpu_paint_key(const Shading &shading)
         const size_t c = shading.fade->channel();
         add(&c, sizeof c);
     }
-    const WholeValues &whole =
-        shading.property ? shading.property->whole() : shading.fade->whole();
+    const WholeValues &whole = painted_whole(shading);
     add(&whole.low, sizeof whole.low);
     add(&whole.count, sizeof whole.count);
     // the colours follow from the ramp, the no-value colour and the fade's
@@ -116,8 +116,7 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
     if (!gpu_paints(tracer, shading, Outputs{}))
         fail("a GPU paint of a shading the GPU does not colour");
     const PropertyChannels &channels = painted_channels(shading);
-    const WholeValues &whole =
-        shading.property ? shading.property->whole() : shading.fade->whole();
+    const WholeValues &whole = painted_whole(shading);
     const uint64_t cells = f.cells();
 
     // each cell's span where the prepared model keeps its stack

@@ -145,7 +145,10 @@ const PropertyPaint::SumBlock &PropertyPaint::block_sums(size_t block) const
         const size_t n = values[0].size();
         // a whole-valued sum as the index of its value: 2 bytes a voxel
         const bool indexed = whole_.count > 0 && whole_.count < SUM_OUTSIDE;
-        (indexed ? b.index.resize(n) : b.sums.resize(n));
+        if (indexed)
+            b.index.resize(n);
+        else
+            b.sums.resize(n);
         for (size_t i = 0; i < n; ++i) {
             double sum = 0; // in the order of summed_, as property_at_hit
             for (size_t k = 0; k < values.size(); ++k) {
@@ -266,6 +269,16 @@ glm::dvec3 UncertaintyFade::faded(const glm::dvec3 &color, double value) const
     return color + share(value) * (glm::dvec3(grey) - color);
 }
 
+std::vector<glm::dvec3> UncertaintyFade::entry_colors(const glm::dvec3 &base) const
+{
+    std::vector<glm::dvec3> entries;
+    entries.reserve(whole_.count + 1);
+    for (size_t k = 0; k < whole_.count; ++k)
+        entries.push_back(faded(base, whole_.low + double(k)));
+    entries.push_back(base);
+    return entries;
+}
+
 double UncertaintyFade::share(double value) const
 {
     return std::clamp((value - low_) / (high_ - low_), 0.0, 1.0);
@@ -275,6 +288,13 @@ glm::dvec3 UncertaintyFade::apply(const Hit &hit, glm::dvec3 color) const
 {
     double v;
     return value(hit, v) ? faded(color, v) : color;
+}
+
+std::vector<glm::dvec3> PropertyPaint::entry_colors() const
+{
+    std::vector<glm::dvec3> entries = table_;
+    entries.push_back(no_value_);
+    return entries;
 }
 
 glm::dvec3 PropertyPaint::color(const Hit &hit) const

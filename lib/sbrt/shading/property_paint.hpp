@@ -86,6 +86,9 @@ public:
     /// MAX_ENTRIES: GeoTOP's onz_lk 0..100); count 0 otherwise.
     static constexpr size_t MAX_ENTRIES = 4096;
     const WholeValues &whole() const { return whole_; }
+    /// `base` faded by each of whole()'s values, then `base` itself (the
+    /// colour of a voxel without a value): the entries a table holds.
+    std::vector<glm::dvec3> entry_colors(const glm::dvec3 &base) const;
 
 private:
     const Model &model_;
@@ -127,6 +130,9 @@ public:
     /// and the ramp's colour of each, in their order.
     const WholeValues &whole() const { return whole_; }
     const std::vector<glm::dvec3> &table() const { return table_; }
+    /// The table, then the no-value colour: the entries a table of
+    /// whole() holds.
+    std::vector<glm::dvec3> entry_colors() const;
     /// Hits without a value take this colour.
     const glm::dvec3 &no_value() const { return no_value_; }
     const ColorRamp &ramp() const { return ramp_; }

@@ -68,12 +68,11 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
     if (shading.property && !shading.drape && !shading.fade &&
         !shading.property->table().empty()) {
         // a sum of integers: each value's colour on each face, lit once
-        const auto &table = shading.property->table();
-        property_face_rgb_.reserve((table.size() + 1) * 6);
-        for (size_t k = 0; k <= table.size(); ++k)
+        const std::vector<glm::dvec3> entries = shading.property->entry_colors();
+        property_face_rgb_.reserve(entries.size() * 6);
+        for (const glm::dvec3 &surface : entries)
             for (int face = int(Face::west); face <= int(Face::top); ++face)
-                property_face_rgb_.push_back(lit_face(
-                    k < table.size() ? table[k] : shading.property->no_value(), Face(face)));
+                property_face_rgb_.push_back(lit_face(surface, Face(face)));
     }
     const size_t fades = shading.fade ? shading.fade->whole().count + 1 : 0;
     if (shading.fade && !shading.drape && !shading.property && fades > 1 &&
@@ -81,14 +80,9 @@ PixelShader::PixelShader(const Model &model, const Shading &shading)
         // few uncertainty values: each class's faded colour on each face
         fade_face_rgb_.reserve(base_.size() * fades * 6);
         for (const glm::dvec3 &base : base_)
-            for (size_t k = 0; k < fades; ++k) {
-                const glm::dvec3 surface =
-                    k + 1 < fades
-                        ? shading.fade->faded(base, shading.fade->whole().low + double(k))
-                        : base;
+            for (const glm::dvec3 &surface : shading.fade->entry_colors(base))
                 for (int face = int(Face::west); face <= int(Face::top); ++face)
                     fade_face_rgb_.push_back(lit_face(surface, Face(face)));
-            }
     }
     if (shading.drape || shading.property || shading.fade) // colours per hit
         return;
