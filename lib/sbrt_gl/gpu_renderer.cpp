@@ -20,7 +20,8 @@ GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &rendere
 bool GpuRenderer::shaded_on_host(const sbrt::Outputs &outputs) const
 {
     const sbrt::Shading &shading = renderer_.shading();
-    return (shading.property || shading.fade) && !gpu_.paints(shading, outputs);
+    return (shading.property || shading.fade) &&
+           (!paint_on_gpu_ || !gpu_.paints(shading, outputs));
 }
 
 bool GpuRenderer::shades_on_gpu(const sbrt::Camera &camera, const sbrt::Outputs &outputs) const

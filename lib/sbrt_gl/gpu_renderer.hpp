@@ -57,6 +57,11 @@ public:
     /// overlays, no value= output, a model small enough): the host shades
     /// then, at the GPU's hits.
     bool shaded_on_host(const sbrt::Outputs &outputs) const;
+    /// Whether the GPU may colour by voxel at all (default yes): its words
+    /// cover the whole model (every block decoded, made and uploaded at
+    /// the first frame), which pays over a session's frames; the host's
+    /// colouring at the GPU's hits decodes only the blocks rays reach.
+    void paint_on_gpu(bool allowed) { paint_on_gpu_ = allowed; }
     /// Whether `camera`'s frame of `outputs` is shaded on the GPU with the
     /// renderer's shading as it is now.
     bool shades_on_gpu(const sbrt::Camera &camera, const sbrt::Outputs &outputs = {}) const;
@@ -67,6 +72,7 @@ public:
 private:
     const sbrt::Renderer &renderer_;
     GpuTracer gpu_;
+    bool paint_on_gpu_ = true;
 };
 
 } // namespace sbrt_gl

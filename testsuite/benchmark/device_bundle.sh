@@ -7,7 +7,9 @@
 #            BASE_BENCH=path adds another build's trace_bench as
 #            trace_bench_base, measured in the same run), the shared libraries
 #            it needs beyond the C/C++ runtime, the SBRTs of the sizes
-#            given (gzipped) and device_run.sh, and Debian's glvnd
+#            given (gzipped), a GeoTOP-like model with its eleven
+#            property channels (200 x 200 x 160, paint_gt: issue 29's GPU
+#            property view) and device_run.sh, and Debian's glvnd
 #            packages into .gl/; both folders are ignored by git
 #            (.git/info/exclude). Prints the command for the device tool
 #            (carry .device and .gl).
@@ -49,6 +51,13 @@ done
 EOS
 TOOLS=$root/tools OUT=$root/.device/sbrt in_grass PERMANENT bash "$SBRT_GISDBASE/device_models.sh" \
     "$root/tools" $sizes
+# a GeoTOP-like model with property channels (issue 29)
+make -s -C testsuite/benchmark/geotop_like build/geotop_like
+paint_nc=$SBRT_GISDBASE/geotop_channels_200x200x160.nc
+[ -s "$paint_nc" ] || testsuite/benchmark/geotop_like/build/geotop_like write "$paint_nc" \
+    200 200 160 properties >/dev/null
+in_grass PERMANENT r3.sbrt.convert --q -o -a file="$paint_nc" variable=lithok output=paint_gt
+tar -C "$SBRT_GISDBASE/loc/PERMANENT/sbrt" -czf .device/sbrt/paint_gt.tar.gz paint_gt
 (cd .gl && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 >/dev/null)
 du -sh .device .gl
 echo "device command (carry .device and .gl):"

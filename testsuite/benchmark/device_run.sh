@@ -21,10 +21,17 @@
 #              with one such process on every core at once (contention);
 #            - with trace_bench_base in the bundle (another build, e.g. the
 #              last main), the same figures of that build, in the same run;
-#            - with sbrt_unit_tests in the bundle, the GL unit tests on EGL.
+#            - with sbrt_unit_tests in the bundle, the GL unit tests on EGL;
+#            - issue 29's property view (paint_gt with its channels): the
+#              class view against property= (a sum of three percentages)
+#              and fade= on the GPU, cold (a fresh renderer, the colours
+#              by voxel made and uploaded, or coloured on the host) and
+#              warm, and the GPU's pixels against the CPU's.
 #            Runs here too (llvmpipe), which checks the script.
 # USAGE:     [SECTIONS="unit gpu large boreholes scaling contention"]
 #            bash .device/device_run.sh [SIZES] (A B C)
+#            (sections: unit paint gpu large boreholes scaling contention;
+#            UNIT_FILTER= the unit tests to run, a GoogleTest filter)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
@@ -44,20 +51,34 @@ cores=$(nproc)
 builds=(new)
 [ -x "$bundle/trace_bench_base" ] && builds+=(base)
 bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
-sections=" ${SECTIONS:-unit gpu large boreholes scaling contention} "
+sections=" ${SECTIONS:-unit paint gpu large boreholes scaling contention} "
 run() { [[ "$sections" == *" $1 "* ]]; }
 
 # 1. the GL unit tests on this GPU (EGL; the OSMesa ones need libOSMesa): on
 # a fresh machine every program is compiled, about 2.5 minutes on an H100
 if run unit && [ -x "$bundle/sbrt_unit_tests" ]; then
     "$bundle/sbrt_unit_tests" \
-        --gtest_filter='*egl*:*GpuBands*/0:*OverlayTiles*:*GpuBandLayout*:Renderer*:BandFlow*:WorkerPool*' 2>&1 |
+        --gtest_filter="${UNIT_FILTER:-*egl*:*GpuPaint*:*GpuBands*/0:*OverlayTiles*:*GpuBandLayout*:Renderer*:BandFlow*:WorkerPool*}" 2>&1 |
         grep -E "^\[  (PASSED|FAILED) |Failure|^\[ stress" | sed "s/^/device unit /" || true
 fi
 
 for size in $sizes; do
     tar -C "$data" -xzf "$bundle/sbrt/geo_$size.tar.gz"
 done
+
+# property views (issue 29): the model with channels at r3.sbrt.render's
+# view of the benchmark (azimuth 200, elevation 35, zexag 20), on all
+# cores and on one; the GL programs cached as a user's are
+if run paint && [ -f "$bundle/sbrt/paint_gt.tar.gz" ]; then
+    tar -C "$data" -xzf "$bundle/sbrt/paint_gt.tar.gz"
+    for n in "$cores" 1; do
+        for px in "cols=1056 rows=884" "cols=800 rows=600"; do
+            SBRT_PROGRAM_CACHE=$data/programs "$bundle/trace_bench" paint_frame "$data/paint_gt" \
+                azimuth=200 elevation=35 zexag=20 $px property=kans_5+kans_6+kans_7 fade=onz_lk \
+                repeat=5 threads="$n" label=paint_gt | sed "s/^/device threads=$n /"
+        done
+    done
+fi
 
 # 2. GPU frames per model and view, each build
 for build in "${builds[@]}"; do

@@ -16,6 +16,15 @@
  *                        warm, each kind back to back (the GPU's after 0.3 s
  *                        of frames: its clocks fall between short frames);
  *                        beside them the CPU's frame (threads=)
+ *              paint_frame the class view against a property (property=
+ *                        a+b: their sum through a ramp) and a fade
+ *                        (fade=c, 0..100) on the GPU (gpu=) and the CPU:
+ *                        each kind's first frame of a fresh GPU renderer
+ *                        and channels (the colours by voxel made and
+ *                        uploaded; and coloured on the host at the GPU's
+ *                        hits instead), its warm frame, whether the GPU shaded
+ *                        it, and the pixels whose colour differs from the
+ *                        CPU's by more than one level
  *              format    the stacks file in format 1 and 2: bytes, bytes
  *                        per interval, load (warm) and write times
  *              error     time against error: the exact method, the sampled
@@ -28,6 +37,8 @@
  *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
  *            [threads=N] [classes=FILE: error writes the reference's class
  *            ids, int32] [boreholes=N radius=R: gpu_frame with N boreholes]
+ *            [property=a+b fade=c: paint_frame]; instead of position=,
+ *            azimuth= and elevation= (degrees) frame the whole model
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <chrono>
@@ -51,6 +62,8 @@
 #include "gpu_renderer.hpp"
 #include "gpu_tracer.hpp"
 #include "scene/hidden_materials.hpp"
+#include "shading/property_paint.hpp"
+#include "scene/view.hpp"
 #include "util/parallel.hpp"
 #include "renderer.hpp"
 #include "tracing/sampled_tracer.hpp"
@@ -521,6 +534,170 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
                 dispatch_ms[1] / dispatch_ms[0], checksum);
 }
 
+/// A whole frame's RGB gathered from its bands.
+struct FrameRgb {
+    std::vector<uint8_t> rgb;
+    BandSink sink(const Camera &camera)
+    {
+        rgb.assign(size_t(camera.rows()) * camera.cols() * 3, 0);
+        return [this](const Band &band) {
+            const size_t row_bytes = size_t(band.cols) * 3;
+            for (int r = 0; r < band.rows; ++r)
+                std::memcpy(rgb.data() + size_t(band.first_row + r) * row_bytes,
+                            band.rgb.row(r), row_bytes);
+        };
+    }
+};
+
+/// Pixels whose colour differs by more than one level in any component.
+size_t pixels_apart(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b)
+{
+    size_t apart = 0;
+    for (size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3)
+        apart += std::abs(int(a[i]) - b[i]) > 1 || std::abs(int(a[i + 1]) - b[i + 1]) > 1 ||
+                 std::abs(int(a[i + 2]) - b[i + 2]) > 1;
+    return apart;
+}
+
+/// The class view, property= (a sum of channels through a ramp over their
+/// stated range) and fade= (0..100) of the SBRT in `dir`, on the GPU and
+/// the CPU (threads=): the first frame of a fresh GPU renderer with fresh
+/// channels (nothing decoded, the colours by voxel made and uploaded; the
+/// GL programs come from the cache, filled by a frame before), the warm
+/// frame (best of `repeat` back to back, after 0.3 s of them) and the CPU's
+/// warm frame; whether the GPU shaded and how many pixels differ from the
+/// CPU's by more than one level.
+void paint_frame(const std::string &dir, const Args &args, const Camera &camera, double zexag,
+                 int repeat)
+{
+    const std::string label = args.get("label", "view");
+    const unsigned threads = unsigned(std::stoi(args.get("threads", "0")));
+    const Model as_read = read_sbrt(dir);
+    const std::unique_ptr<sbrt_gl::GlContext> context = gl_context(args);
+    if (!context) {
+        std::printf("paint_frame label=%s no_gl_context\n", label.c_str());
+        return;
+    }
+    // the kinds: class, property, fade (those asked for)
+    struct Kind {
+        std::string name, what;
+    };
+    std::vector<Kind> kinds{{"class", ""}};
+    if (!args.get("property", "").empty())
+        kinds.push_back({"property", args.get("property", "")});
+    if (!args.get("fade", "").empty())
+        kinds.push_back({"fade", args.get("fade", "")});
+    const auto channel_of = [&](const PropertyChannels &channels, const std::string &name) {
+        const int k = channels.find(name);
+        if (k < 0)
+            fail("no channel ", name, " in ", dir);
+        return size_t(k);
+    };
+    // the shading of a kind over fresh channels (nothing decoded)
+    struct Painted {
+        std::shared_ptr<const PropertyChannels> channels;
+        std::unique_ptr<PropertyPaint> property;
+        std::unique_ptr<UncertaintyFade> fade;
+        Shading shading;
+    };
+    const auto painted = [&](const Kind &kind) {
+        Painted p;
+        if (kind.name == "class")
+            return p;
+        p.channels = read_channels(dir, as_read);
+        if (!p.channels)
+            fail(dir, " has no property channels");
+        if (kind.name == "fade") {
+            p.fade = std::make_unique<UncertaintyFade>(
+                as_read, p.channels, channel_of(*p.channels, kind.what), 0, 100);
+            p.shading.fade = p.fade.get();
+            return p;
+        }
+        std::vector<size_t> summed;
+        double low = 0, high = 0;
+        std::stringstream in(kind.what);
+        for (std::string name; std::getline(in, name, '+');) {
+            summed.push_back(channel_of(*p.channels, name));
+            const ChannelInfo &info = p.channels->info(summed.back());
+            low += std::min(info.physical(float(info.min)), info.physical(float(info.max)));
+            high += std::max(info.physical(float(info.min)), info.physical(float(info.max)));
+        }
+        if (!(high > low))
+            high = low + 1;
+        const ColorRamp viridis = ColorRamp::through(
+            {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}}, low,
+            high);
+        p.property = std::make_unique<PropertyPaint>(as_read, p.channels, summed, viridis);
+        p.shading.property = p.property.get();
+        return p;
+    };
+    Renderer renderer(read_sbrt(dir), zexag, Scene{}, Shading{}, RenderSettings{threads, true, 0});
+    const double rays = double(camera.rows()) * camera.cols();
+    std::map<std::string, double> warm_ms, first_ms;
+    for (const Kind &kind : kinds) {
+        // the GL programs into the cache (not timed)
+        {
+            Painted p = painted(kind);
+            renderer.set_shading(p.shading);
+            sbrt_gl::GpuRenderer on_gpu(*context, renderer);
+            on_gpu.render(camera, {}, [](const Band &) {}, threads);
+        }
+        // cold: fresh channels, a fresh GPU renderer, its first frame
+        Painted p = painted(kind);
+        renderer.set_shading(p.shading);
+        FrameRgb gpu_rgb, cpu_rgb;
+        BandSink to_gpu_rgb = gpu_rgb.sink(camera);
+        double first = 0, upload_ms = 0;
+        bool on_gpu_shaded = false;
+        std::unique_ptr<sbrt_gl::GpuRenderer> on_gpu;
+        first = run_ms([&] {
+            on_gpu = std::make_unique<sbrt_gl::GpuRenderer>(*context, renderer);
+            const sbrt_gl::GpuFrameReport r = on_gpu->render(camera, {}, to_gpu_rgb, threads);
+            on_gpu_shaded = r.shaded_on_gpu;
+        });
+        upload_ms = on_gpu->gpu().stats().upload_ms;
+        // cold again, the host colouring at the GPU's hits (decoding only
+        // the blocks rays reach)
+        double first_host = NAN;
+        if (kind.name != "class") {
+            Painted fresh = painted(kind);
+            renderer.set_shading(fresh.shading);
+            first_host = run_ms([&] {
+                sbrt_gl::GpuRenderer host_coloured(*context, renderer);
+                host_coloured.paint_on_gpu(false);
+                host_coloured.render(camera, {}, [](const Band &) {}, threads);
+            });
+            renderer.set_shading(p.shading);
+        }
+        // warm: back to back after 0.3 s of frames
+        warm_up_gpu(*on_gpu, camera, [](const Band &) {}, threads);
+        const double warm = best_ms(repeat, [&] {
+            on_gpu->render(camera, {}, [](const Band &) {}, threads);
+        });
+        on_gpu->render(camera, {}, to_gpu_rgb, threads);
+        BandSink to_cpu_rgb = cpu_rgb.sink(camera);
+        renderer.render(camera, {}, to_cpu_rgb);
+        const double cpu = best_ms(repeat, [&] { renderer.render(camera, {}, [](const Band &) {}); });
+        warm_ms[kind.name] = warm;
+        first_ms[kind.name] = first;
+        std::printf("paint_frame label=%s kind=%s%s%s renderer=\"%s\" cols=%d rows=%d "
+                    "shaded_on_gpu=%s first_frame_ms=%.2f upload_ms=%.2f "
+                    "first_frame_host_coloured_ms=%.2f frame_ms=%.3f "
+                    "mrays=%.0f cpu_frame_ms=%.1f cpu_threads=%u gpu/cpu=%.1f "
+                    "pixels_apart_from_cpu=%zu of %.0f\n",
+                    label.c_str(), kind.name.c_str(), kind.what.empty() ? "" : "=",
+                    kind.what.c_str(), on_gpu->gpu().gl_renderer().c_str(), camera.cols(),
+                    camera.rows(), on_gpu_shaded ? "yes" : "no", first, upload_ms, first_host, warm,
+                    rays / warm / 1000, cpu, thread_count(threads), cpu / warm,
+                    pixels_apart(gpu_rgb.rgb, cpu_rgb.rgb), rays);
+    }
+    for (const Kind &kind : kinds)
+        if (kind.name != "class")
+            std::printf("paint_frame label=%s %s/class first_frame=%.2f warm_frame=%.2f\n",
+                        label.c_str(), kind.name.c_str(), first_ms[kind.name] / first_ms["class"],
+                        warm_ms[kind.name] / warm_ms["class"]);
+}
+
 /// Format 1 against format 2 on the model of `directory` (whatever its
 /// own format): both written to temporary directories, each read and
 /// written `repeat` times in turns.
@@ -603,7 +780,7 @@ void compact_against_wide(const Model &read, const Args &args, const Camera &cam
 int main(int argc, char *argv[])
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s format|skipping|frame|gpu_frame|error|compact SBRT_DIR key=value...\n", argv[0]);
+        std::fprintf(stderr, "usage: %s format|skipping|frame|gpu_frame|paint_frame|error|compact SBRT_DIR key=value...\n", argv[0]);
         return 2;
     }
     try {
@@ -621,20 +798,32 @@ int main(int argc, char *argv[])
             return 0;
         }
         // the streamed modes load the model themselves (timed)
-        const bool streamed = mode == "frame" || mode == "gpu_frame";
+        const bool streamed = mode == "frame" || mode == "gpu_frame" || mode == "paint_frame";
         const Model model = streamed ? Model() : load(argv[2], args);
         const double zexag = std::stod(args.get("zexag", "1"));
         const int repeat = std::stoi(args.get("repeat", "3"));
         const Model framed = streamed ? read_sbrt(argv[2]) : Model();
         const Tracer probe(streamed ? framed : model, zexag);
-        const Camera camera = Camera::perspective(
-            probe.frame().exaggerate(args.point("position")), probe.frame().exaggerate(args.point("target")),
-            std::stod(args.get("fov", "25")), std::stoi(args.get("rows", "884")),
-            std::stoi(args.get("cols", "1056")));
+        const int rows = std::stoi(args.get("rows", "884")),
+                  cols = std::stoi(args.get("cols", "1056"));
+        Camera camera;
+        if (args.get("azimuth", "").empty())
+            camera = Camera::perspective(probe.frame().exaggerate(args.point("position")),
+                                         probe.frame().exaggerate(args.point("target")),
+                                         std::stod(args.get("fov", "25")), rows, cols);
+        else { // the whole model framed, as r3.sbrt.render's azimuth= does
+            View view;
+            view.azimuth = std::stod(args.get("azimuth", "225"));
+            view.elevation = std::stod(args.get("elevation", "30"));
+            view.fov = std::stod(args.get("fov", "40"));
+            camera = view_camera(view, streamed ? framed : model, probe.frame(), rows, cols);
+        }
         if (mode == "frame")
             frame(argv[2], args, camera, zexag, repeat);
         else if (mode == "gpu_frame")
             gpu_frame(argv[2], args, camera, zexag, repeat);
+        else if (mode == "paint_frame")
+            paint_frame(argv[2], args, camera, zexag, repeat);
         else if (mode == "skipping")
             skipping(model, args, camera, zexag, repeat);
         else if (mode == "error")
