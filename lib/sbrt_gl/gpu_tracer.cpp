@@ -135,6 +135,29 @@ void GpuTracer::reset_stats()
     timer_.take_ms(0); // the queries of what went before
 }
 
+namespace {
+
+/// What a PixelShader of `shading` depends on: its address (the shader
+/// holds a reference), its settings and what it shows.
+std::string host_shader_key(const sbrt::Shading &shading)
+{
+    std::string key = sbrt::gpu_paint_key(shading);
+    const auto add = [&](const void *p, size_t n) {
+        key.append(static_cast<const char *>(p), n);
+    };
+    const void *pointers[] = {&shading, shading.drape, shading.property, shading.fade};
+    add(pointers, sizeof pointers);
+    add(&shading.light, sizeof shading.light);
+    add(&shading.ambient, sizeof shading.ambient);
+    add(shading.background.data(), shading.background.size());
+    add(&shading.normals, sizeof shading.normals);
+    add(&shading.kernel, sizeof shading.kernel);
+    add(&shading.smooth, sizeof shading.smooth);
+    return key;
+}
+
+} // namespace
+
 void GpuTracer::begin_frame()
 {
     reset_stats();
@@ -508,11 +531,21 @@ void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_co
                    band.pixels(), " pixels");
     const auto start = Clock::now();
     const uint32_t *pixels = words + layout.over_budget_at + 1;
-    const sbrt::PixelShader shader(tracer_.model(), shading);
-    const int chunks = int((over + 255) / 256);
+    // the shader's face tables cost more than a few rays: made again only
+    // where the shading changed
+    std::string key = host_shader_key(shading);
+    if (!host_shader_ || key != host_shader_key_) {
+        host_shader_.emplace(tracer_.model(), shading);
+        host_shader_key_ = std::move(key);
+    }
+    const sbrt::PixelShader &shader = *host_shader_;
+    // a few rays a thread: a ray traced alone, without the first pass's
+    // bounds, takes microseconds
+    constexpr uint32_t CHUNK = 16;
+    const int chunks = int((over + CHUNK - 1) / CHUNK);
     sbrt::for_each_row(0, chunks, cpu_threads, [&](int chunk) {
-        const uint32_t end = std::min<uint32_t>(over, uint32_t(chunk + 1) * 256);
-        for (uint32_t k = uint32_t(chunk) * 256; k < end; ++k) {
+        const uint32_t end = std::min<uint32_t>(over, uint32_t(chunk + 1) * CHUNK);
+        for (uint32_t k = uint32_t(chunk) * CHUNK; k < end; ++k) {
             const int row = first_row + int(pixels[k] / cols), col = int(pixels[k] % cols);
             const sbrt::Hit hit = tracer_.trace(camera.ray(row, col));
             sbrt::shade_into_band(tracer_, shader, camera, hit, row, col, band);

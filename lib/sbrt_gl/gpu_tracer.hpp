@@ -24,6 +24,7 @@
 #include "tracing/cpu_tracing.hpp"
 #include "gpu/gpu_memory_layout.hpp"
 #include "gpu/gpu_overlays.hpp"
+#include "shading/shading.hpp"
 #include "tracing/hit_image.hpp"
 
 namespace sbrt_gl {
@@ -234,6 +235,10 @@ private:
     /// 7, as a drape's: a scene has one or the other) with their key
     std::optional<GlComputeProgram> paint_program_;
     std::optional<GlBuffer> paint_;
+    /// The host's shader of the rays over the budget (and those the GPU's
+    /// shader sends back), kept while the shading stays as it was.
+    std::optional<sbrt::PixelShader> host_shader_;
+    std::string host_shader_key_;
     std::string paint_key_;
     /// the boreholes' pass over listed tiles (with a drape or without),
     /// and the tiles of the band dispatched into each of MappedBands'

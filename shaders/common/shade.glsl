@@ -72,43 +72,68 @@ bool drape_sample(vec3 p, out vec3 rgb)
 #endif
 
 #ifdef SBRT_PAINT
+// The colour entry of voxel `level` of cell (col, row from the north): its
+// entry, the none entry (paint_words[3]) outside the grid or the cell's
+// span, or GPU_PAINT_OUTSIDE (0xfffe: a value outside the file's stated
+// range)
+uint paint_entry(int col, int row, int level)
+{
+    uint entry = paint_words[3];
+    if (row < 0 || row >= int(grid.y) || col < 0 || col >= int(grid.x))
+        return entry;
+    uint cell = uint(row) * grid.x + uint(col);
+    uint at = paint_words[4u + 2u * cell], span = paint_words[5u + 2u * cell];
+    int lo = int(span & 0xffffu), hi = int(span >> 16);
+    if (level < lo || level >= hi)
+        return entry;
+    uint i = at + uint(level - lo);
+    uint e = (paint_words[paint_words[0] + i / 2u] >> (16u * (i & 1u))) & 0xffffu;
+    return e == 0xffffu ? entry : e; // GPU_PAINT_NONE
+}
+
 // The colour (0..255, before lighting) of the voxel a hit at local point
 // p through `face` of `material` lies on, as voxel_of_hit
-// (lib/sbrt/shading/property_paint.cpp) finds it: false where a
-// coordinate it floors lies within float's reach of a voxel's edge (either
-// voxel may be the hit's) or the voxel's value is outside the file's
-// stated range; the host colours those pixels.
+// (lib/sbrt/shading/property_paint.cpp) finds it. Where a coordinate it
+// floors lies within float's reach of a voxel's edge, either voxel may be
+// the hit's: the colour is the voxels' where they have the same entry.
+// False where they do not, where two coordinates are that near an edge or
+// where the value is outside the file's stated range: the host colours
+// those pixels.
 bool paint_color(vec3 p, uint face, uint material, out vec3 rgb)
 {
     const float EDGE = 1e-4;
     rgb = vec3(0.0);
     float u = p.x, v = float(grid.y) - p.y, z = p.z; // rows from the north
-    int col = int(floor(u)), row = int(floor(v)), level = int(floor(z));
-    bool ew = face == FACE_WEST || face == FACE_EAST;
-    bool ns = face == FACE_NORTH || face == FACE_SOUTH;
-    bool tb = face == FACE_TOP || face == FACE_BOTTOM;
-    if (face == FACE_WEST) col = int(round(u));
-    if (face == FACE_EAST) col = int(round(u)) - 1;
-    if (face == FACE_NORTH) row = int(round(v));
-    if (face == FACE_SOUTH) row = int(round(v)) - 1;
-    if (face == FACE_TOP) level = int(round(z)) - 1;
-    if (face == FACE_BOTTOM) level = int(round(z));
-    if ((!ew && abs(u - round(u)) <= EDGE) || (!ns && abs(v - round(v)) <= EDGE) ||
-        (!tb && abs(z - round(z)) <= EDGE))
-        return false;
-    uint entry = paint_words[3];
-    if (row >= 0 && row < int(grid.y) && col >= 0 && col < int(grid.x)) {
-        uint cell = uint(row) * grid.x + uint(col);
-        uint at = paint_words[4u + 2u * cell], span = paint_words[5u + 2u * cell];
-        int lo = int(span & 0xffffu), hi = int(span >> 16);
-        if (level >= lo && level < hi) {
-            uint i = at + uint(level - lo);
-            uint e = (paint_words[paint_words[0] + i / 2u] >> (16u * (i & 1u))) & 0xffffu;
-            if (e == 0xfffeu) // GPU_PAINT_OUTSIDE
-                return false;
-            if (e != 0xffffu) // GPU_PAINT_NONE
-                entry = e;
+    ivec3 voxel = ivec3(floor(u), floor(v), floor(z));
+    if (face == FACE_WEST) voxel.x = int(round(u));
+    if (face == FACE_EAST) voxel.x = int(round(u)) - 1;
+    if (face == FACE_NORTH) voxel.y = int(round(v));
+    if (face == FACE_SOUTH) voxel.y = int(round(v)) - 1;
+    if (face == FACE_TOP) voxel.z = int(round(z)) - 1;
+    if (face == FACE_BOTTOM) voxel.z = int(round(z));
+    // the axes the face does not fix, where the point is near an edge:
+    // the voxel across it is the other candidate
+    bvec3 free_axis = bvec3(face != FACE_WEST && face != FACE_EAST,
+                            face != FACE_NORTH && face != FACE_SOUTH,
+                            face != FACE_TOP && face != FACE_BOTTOM);
+    vec3 q = vec3(u, v, z);
+    ivec3 across = ivec3(0);
+    int near_edges = 0;
+    for (int a = 0; a < 3; ++a)
+        if (free_axis[a] && abs(q[a] - round(q[a])) <= EDGE) {
+            // the voxel on the other side of the edge at round(q)
+            across[a] = voxel[a] == int(round(q[a])) ? -1 : 1;
+            ++near_edges;
         }
+    if (near_edges > 1)
+        return false;
+    uint entry = paint_entry(voxel.x, voxel.y, voxel.z);
+    if (entry == 0xfffeu) // GPU_PAINT_OUTSIDE
+        return false;
+    if (near_edges == 1) {
+        ivec3 other = voxel + across;
+        if (paint_entry(other.x, other.y, other.z) != entry)
+            return false;
     }
     uint fades = paint_words[2];
     uint c = paint_words[1] + 3u * (fades == 0u ? entry : material * fades + entry);

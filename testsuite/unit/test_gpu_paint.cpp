@@ -139,6 +139,59 @@ TEST_P(GpuPaint, AFadeIsColouredOnTheGpuAsTheCpuDoes)
         expect_gpu_shading_as_cpu(*context_, GetParam(), renderer, camera, "fade", 2);
 }
 
+TEST_P(GpuPaint, AtAVoxelsEdgeTheGpuColoursOnlyWhereBothSidesAgree)
+{
+    // three values: neighbours often agree (the GPU colours those pixels
+    // whichever side float puts the hit on), else the host colours them.
+    // Comparing the wrong neighbour, or none, colours some of the ~1e-4 of
+    // pixels near an edge by the wrong voxel.
+    const Voxels voxels = random_voxels(9, 36, 44, 30, 6);
+    const Model model = build_model(voxels);
+    const Frame &f = voxels.frame;
+    std::mt19937 rng(9);
+    Source source(1, std::vector<float>(f.voxels()));
+    for (float &v : source[0])
+        v = float(rng() % 3);
+    ChannelInfo info;
+    info.name = "kans_1";
+    const std::string path = temp_dir("gpu_paint_edges") + "/channels";
+    write_channels(path, model, source, {info}, 8);
+    const auto channels = std::make_shared<const PropertyChannels>(
+        std::make_shared<const MappedFile>(path), path, model);
+    const PropertyPaint paint(model, channels, {0}, ColorRamp::through({{0, 0, 255}, {255, 0, 0}}, 0, 2));
+    ASSERT_EQ(paint.whole().count, 3u);
+    Shading shading;
+    shading.property = &paint;
+    const Renderer renderer(model, 2.0, Scene{}, shading, {2, true, 16});
+    const Tracer &t = renderer.tracer();
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, GetParam());
+    size_t sent_back = 0;
+    for (const glm::dvec3 dir : {glm::dvec3(0.3, -0.4, 1.2), glm::dvec3(-0.7, -0.6, 0.5)}) {
+        const Camera camera = Camera::perspective(
+            t.frame().centre() + 2.2 * t.frame().radius() * glm::normalize(dir),
+            t.frame().centre(), 40, 700, 900);
+        ASSERT_TRUE(on_gpu.shades_on_gpu(camera));
+        const Image want = renderer.render_image(camera, {true, false, false});
+        const Image got = on_gpu.render_image(camera, {true, false, false}, 2);
+        sent_back += on_gpu.gpu().stats().over_budget;
+        size_t classes = 0, colours = 0;
+        for (size_t i = 0; i < want.material.size(); ++i) {
+            if (got.material[i] != want.material[i]) {
+                ++classes;
+                continue;
+            }
+            for (int k = 0; k < 3; ++k)
+                if (std::abs(int(got.rgb[3 * i + k]) - int(want.rgb[3 * i + k])) > 1) {
+                    ++colours;
+                    break;
+                }
+        }
+        EXPECT_LE(classes, want.material.size() / 5000);
+        EXPECT_EQ(colours, 0u) << "pixels coloured by another voxel than the CPU's";
+    }
+    EXPECT_GT(sent_back, 0u); // some neighbours disagree
+}
+
 TEST_P(GpuPaint, CutsAndHiddenStrataShowTheValuesOfTheModelAsRead)
 {
     const PaintFixture fx = fixture(temp_dir("gpu_paint_cuts"));

@@ -674,7 +674,20 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
         const double warm = best_ms(repeat, [&] {
             on_gpu->render(camera, {}, [](const Band &) {}, threads);
         });
-        on_gpu->render(camera, {}, to_gpu_rgb, threads);
+        // where the warm frame's time goes: each pass's GL time, the rays
+        // the host traced and coloured (flagged by the shader), its time
+        on_gpu->gpu().time_passes(true);
+        const sbrt_gl::GpuFrameReport parts = on_gpu->render(camera, {}, to_gpu_rgb, threads);
+        on_gpu->gpu().time_passes(false);
+        std::string passes;
+        for (size_t k = 0; k < parts.gpu.pass_ms.size(); ++k)
+            if (parts.gpu.pass_ms[k] > 0)
+                passes += std::string(" gl_") + sbrt_gl::pass_name(int(k)) + "_ms=" +
+                          std::to_string(parts.gpu.pass_ms[k]);
+        std::printf("paint_parts label=%s kind=%s%s over_budget=%zu host_traced_ms=%.3f "
+                    "host_after_ms=%.3f frame_ms=%.3f\n",
+                    label.c_str(), kind.name.c_str(), passes.c_str(), parts.gpu.over_budget,
+                    parts.gpu.readback_ms, parts.host_after_ms, parts.render.ms);
         BandSink to_cpu_rgb = cpu_rgb.sink(camera);
         renderer.render(camera, {}, to_cpu_rgb);
         const double cpu = best_ms(repeat, [&] { renderer.render(camera, {}, [](const Band &) {}); });
