@@ -131,23 +131,41 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
         entries += span.size();
     }
 
-    // each voxel's entry, row by row of cells
+    // each voxel's entry, block by block of the channels (a block is
+    // decoded once, by the thread that takes it), a column of each summed
+    // channel a cell: the sum as property_at_voxel makes it
+    const std::vector<size_t> summed =
+        shading.property ? shading.property->summed() : std::vector<size_t>{shading.fade->channel()};
+    const int bs = channels.block_size();
+    const int block_cols = (f.cols + bs - 1) / bs;
     std::vector<uint16_t> entry(entries);
-    for_each_row(f.rows, threads, [&](int row) {
-        for (int col = 0; col < f.cols; ++col) {
-            const uint64_t cell = model.cell_index(row, col);
-            const uint32_t at = words[HEAD_WORDS + 2 * cell];
-            const uint32_t span = words[HEAD_WORDS + 2 * cell + 1];
-            for (uint32_t level = span & 0xffff; level < span >> 16; ++level) {
-                double v;
-                const HitVoxel voxel{cell, level};
-                const bool has = shading.property ? shading.property->voxel_value(voxel, v)
-                                                  : shading.fade->voxel_value(voxel, v);
-                const int64_t k = has ? whole.index(v) : -1;
-                entry[at + level - (span & 0xffff)] =
-                    uint16_t(!has ? GPU_PAINT_NONE : k < 0 ? GPU_PAINT_OUTSIDE : uint32_t(k));
+    for_each_row(int(channels.blocks()), threads, [&](int b) {
+        std::vector<ChannelValues> columns(summed.size());
+        const int row0 = (b / block_cols) * bs, col0 = (b % block_cols) * bs;
+        for (int row = row0; row < std::min(f.rows, row0 + bs); ++row)
+            for (int col = col0; col < std::min(f.cols, col0 + bs); ++col) {
+                const uint64_t cell = model.cell_index(row, col);
+                const uint32_t at = words[HEAD_WORDS + 2 * cell];
+                const uint32_t span = words[HEAD_WORDS + 2 * cell + 1];
+                const uint32_t size = (span >> 16) - (span & 0xffff);
+                if (size == 0)
+                    continue;
+                for (size_t k = 0; k < summed.size(); ++k)
+                    columns[k] = channels.column(summed[k], cell);
+                for (uint32_t i = 0; i < size; ++i) {
+                    double sum = 0;
+                    bool has = true;
+                    for (size_t k = 0; k < summed.size() && has; ++k) {
+                        const float raw = columns[k][i];
+                        const ChannelInfo &info = channels.info(summed[k]);
+                        has = !info.is_fill(raw);
+                        sum += info.physical(raw);
+                    }
+                    const int64_t v = has ? whole.index(sum) : -1;
+                    entry[at + i] =
+                        uint16_t(!has ? GPU_PAINT_NONE : v < 0 ? GPU_PAINT_OUTSIDE : uint32_t(v));
+                }
             }
-        }
     });
     const size_t entries_at = words.size();
     words.resize(entries_at + (entries + 1) / 2, 0);
