@@ -19,6 +19,8 @@
 #              share (frame_parts);
 #            - the machine's own limit: B's single-thread frame alone and
 #              with one such process on every core at once (contention);
+#              B on 1 and on all cores in turns, three rounds, with the
+#              cores' clock read while each runs (alternate);
 #            - with trace_bench_base in the bundle (another build, e.g. the
 #              last main), the same figures of that build, in the same run;
 #            - with sbrt_unit_tests in the bundle, the GL unit tests on EGL;
@@ -30,7 +32,8 @@
 #            Runs here too (llvmpipe), which checks the script.
 # USAGE:     [SECTIONS="unit gpu large boreholes scaling contention"]
 #            bash .device/device_run.sh [SIZES] (A B C)
-#            (sections: unit paint gpu large boreholes scaling contention;
+#            (sections: unit paint gpu large boreholes scaling contention
+#            alternate;
 #            UNIT_FILTER= the unit tests to run, a GoogleTest filter)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
@@ -51,7 +54,7 @@ cores=$(nproc)
 builds=(new)
 [ -x "$bundle/trace_bench_base" ] && builds+=(base)
 bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
-sections=" ${SECTIONS:-unit paint gpu large boreholes scaling contention} "
+sections=" ${SECTIONS:-unit paint gpu large boreholes scaling contention alternate} "
 run() { [[ "$sections" == *" $1 "* ]]; }
 
 # 1. the GL unit tests on this GPU (EGL; the OSMesa ones need libOSMesa): on
@@ -104,8 +107,23 @@ if [ -d "$data/geo_B" ]; then
         bench=$(bench_of "$build")
         run large && "$bench" gpu_frame "$data/geo_B" $best cols=4224 rows=3536 label=B/large \
             repeat=5 threads="$cores" | sed "s/^/device build=$build size=B view=best /"
-        run boreholes && "$bench" gpu_frame "$data/geo_B" $best label=B/boreholes repeat=5 \
-            threads="$cores" boreholes=100 radius=20 | sed "s/^/device build=$build size=B view=best /"
+        if run boreholes; then
+            # the GPU's clock while its frames run (nvidia-smi where there is one)
+            clocks=$data/gpu_clocks.txt
+            : >"$clocks"
+            sampler=
+            if command -v nvidia-smi >/dev/null; then
+                nvidia-smi --query-gpu=clocks.sm --format=csv,noheader,nounits -lms 50 >"$clocks" &
+                sampler=$!
+            fi
+            for drilled in 0 100; do
+                "$bench" gpu_frame "$data/geo_B" $best label=B/boreholes repeat=20 \
+                    threads="$cores" boreholes=$drilled radius=20 |
+                    sed "s/^/device build=$build size=B view=best /"
+            done
+            [ -n "$sampler" ] && kill "$sampler" && wait "$sampler" 2>/dev/null
+            sort -n "$clocks" | awk '{ v[NR] = $1 } END { if (NR) printf "device gpu_clock_mhz samples=%d min=%d median=%d max=%d\n", NR, v[1], v[int((NR + 1) / 2)], v[NR] }'
+        fi
     done
     if run large; then
         for px in "cols=1056 rows=884" "cols=4224 rows=3536"; do
@@ -149,5 +167,28 @@ if run contention && [ -d "$data/geo_B" ]; then
             awk -v px="$px" '{ for (i = 1; i <= NF; ++i) if ($i ~ /^frame_ms=/) {
                                    split($i, v, "="); sum += v[2]; n += 1 } }
                              END { printf "device contention processes=%d %s mean_frame_ms=%.1f\n", n, px, sum / n }'
+    done
+fi
+
+# 6. B on one core and on all, in turns (three rounds), each with the mean
+# clock of the cores it runs on, read from /proc/cpuinfo halfway through:
+# what a frame on n cores gains against what the clock loses
+cpu_mhz() { # mean MHz of cores 0..$1-1
+    awk -v n="$1" '/^processor/ { p = $3 } /^cpu MHz/ && p < n { s += $4; k += 1 }
+                   END { if (k) printf "%.0f", s / k; else printf "?" }' /proc/cpuinfo
+}
+if run alternate && [ -d "$data/geo_B" ]; then
+    for round in 1 2 3; do
+        for px in "cols=1056 rows=884" "cols=2112 rows=1768"; do
+            for n in 1 "$cores"; do
+                taskset -c "0-$((n - 1))" "$bundle/trace_bench" frame "$data/geo_B" $best $px \
+                    threads="$n" repeat=7 reference=0 label="B/round$round" >"$data/alt.txt" &
+                pid=$!
+                sleep 0.5
+                mhz=$(cpu_mhz "$n")
+                wait "$pid"
+                grep -E "^frame" "$data/alt.txt" | sed "s/^/device alternate round=$round cores=$n mhz=$mhz /"
+            done
+        done
     done
 fi
