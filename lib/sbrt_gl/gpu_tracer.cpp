@@ -477,6 +477,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    const std::vector<uint32_t> words =
                        sbrt::make_gpu_tile_list(tiles, tracer_, boxes);
                    stats_.borehole_list_ms += ms_since(listing);
+                   const auto submit = Clock::now();
                    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
                    const size_t bytes = checked_bytes(words.size() * 4, max_block_bytes_,
                                                       "boreholes' tiles");
@@ -490,6 +491,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    timer_.time(int(Pass::shade_boreholes), [&] {
                        gl_.DispatchCompute(GLuint(tiles.tiles.size()), 1, 1);
                    });
+                   stats_.borehole_submit_ms += ms_since(submit);
                });
 }
 

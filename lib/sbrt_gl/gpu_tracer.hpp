@@ -51,6 +51,9 @@ struct GpuStats {
     /// The host's time listing those tiles and their boxes (while the GPU
     /// runs the model pass).
     double borehole_list_ms = 0;
+    /// The host's time handing the list to the GL and dispatching the
+    /// boreholes' pass (a driver that waits for the GPU shows here).
+    double borehole_submit_ms = 0;
     /// Bands the model pass shaded (every band but where a borehole's box
     /// holds the camera).
     int model_pass_bands = 0;

@@ -463,11 +463,14 @@ void print_gpu_frame_parts(sbrt_gl::GpuRenderer &on_gpu, Renderer &renderer,
                       std::to_string(pass_ms[p]);
     std::printf("gpu_parts label=%s cols=%d rows=%d bands=%d%s sink_ms=%.3f host_after_ms=%.3f "
                 "memcpy_ms=%.3f host/memcpy=%.2f host_bytes_per_pixel=%.3f "
-                "asked_bytes_per_pixel=3 over_budget=%zu borehole_tiles=%zu/%zu borehole_list_ms=%.3f\n",
+                "asked_bytes_per_pixel=3 over_budget=%zu borehole_tiles=%zu/%zu borehole_list_ms=%.3f "
+                "borehole_submit_ms=%.3f gpu_wait_ms=%.3f\n",
                 label.c_str(), camera.cols(), camera.rows(), best.gpu.bands, passes.c_str(),
                 best.render.sink_ms, best.host_after_ms, memcpy_ms, best.host_after_ms / memcpy_ms,
                 double(best.gpu.host_bytes) / double(pixels), best.gpu.over_budget,
-                best.gpu.borehole_tiles, best.gpu.tiles, best.gpu.borehole_list_ms);
+                best.gpu.borehole_tiles, best.gpu.tiles, best.gpu.borehole_list_ms,
+                best.gpu.borehole_submit_ms,
+                best.gpu.trace_ms - best.gpu.borehole_list_ms - best.gpu.borehole_submit_ms);
 }
 
 /// The streamed frame on the GPU (gpu=egl|osmesa): the model uploaded
