@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "mapped_bands.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -107,8 +108,9 @@ void MappedBands::queue(int first, int count, const std::function<void(int, int,
         gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         gl_.BindBuffer(GL_COPY_READ_BUFFER, device.name());
         gl_.BindBuffer(GL_COPY_WRITE_BUFFER, buffer.name());
+        const size_t copied = std::min(layout_->bytes(), count_at + 4 + 4 * STAGED_SENT_BACK);
         gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
-                              GLsizeiptr(count_at + 4));
+                              GLsizeiptr(copied));
     }
     else {
         std::memcpy(buffer.host() + count_at, &zero, 4);
@@ -139,13 +141,14 @@ uint8_t *MappedBands::band(int first, int count, int image_rows,
     gpu_ms_ += ms_since(start);
     uint8_t *host = slots_[size_t(band.slot)].host();
     if (staged_) {
-        // the rays over the budget (rare: a software renderer) read back
+        // the pixels sent back beyond those the copy brought: read back
         uint32_t over = 0;
         std::memcpy(&over, host + layout_->over_budget_at * 4, 4);
-        if (over > 0)
-            device_slots_[size_t(band.slot)].download((layout_->over_budget_at + 1) * 4,
-                                                     host + (layout_->over_budget_at + 1) * 4,
-                                                     size_t(over) * 4);
+        if (over > STAGED_SENT_BACK) {
+            const size_t at = (layout_->over_budget_at + 1 + STAGED_SENT_BACK) * 4;
+            device_slots_[size_t(band.slot)].download(at, host + at,
+                                                     size_t(over - STAGED_SENT_BACK) * 4);
+        }
     }
     queued_.pop_front();
     return host;

@@ -37,6 +37,12 @@ namespace sbrt_gl {
 class MappedBands {
 public:
     static constexpr int SLOTS = 3;
+    /// Staged bands: the first this many pixels the GPU sends back to the
+    /// host (over its loop budget, or colours by voxel it cannot decide)
+    /// come into the mapped buffer with the outputs, by the GPU's copy: a
+    /// read of GPU memory by the host waits for all the GL queued (0.5-1
+    /// ms on an H100's frame of 0.2). More are read back after the fence.
+    static constexpr size_t STAGED_SENT_BACK = 4096;
     static_assert(SLOTS >= int(sbrt::RowTracer::SINK_BANDS) + 1,
                   "a slot for each band out and one dispatched ahead");
 
