@@ -26,7 +26,7 @@ namespace {
 /// for.
 struct RowShader {
     const Tracer &tracer;
-    const PixelShader shader;
+    const PixelShader &shader;
     const Camera &camera;
 
     void operator()(const Hit *hits, int row, Band &band) const
@@ -317,7 +317,14 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
             report.worker_busy_ms = pool_->busy_ms();
     }
     RowTracer &source = rows ? *rows : *cpu;
-    const RowShader shade{*tracer_, PixelShader(*model_, shading_), camera};
+    // the shader's tables (a fade's: classes x values x faces) are made
+    // again only where the shading changed
+    std::string shader_key = pixel_shader_key(shading_);
+    if (!shader_ || shader_key != shader_key_) {
+        shader_ = std::make_unique<PixelShader>(*model_, shading_);
+        shader_key_ = std::move(shader_key);
+    }
+    const RowShader shade{*tracer_, *shader_, camera};
     std::optional<KernelBands> kernel;
     if (shading_.normals == Normals::kernel && !(rows && rows->shades_kernel_normals()))
         kernel.emplace(*tracer_, camera, shading_, source, threads);

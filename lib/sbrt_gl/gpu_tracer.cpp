@@ -135,32 +135,10 @@ void GpuTracer::reset_stats()
     timer_.take_ms(0); // the queries of what went before
 }
 
-namespace {
-
-/// What a PixelShader of `shading` depends on: its address (the shader
-/// holds a reference), its settings and what it shows.
-std::string host_shader_key(const sbrt::Shading &shading)
-{
-    std::string key = sbrt::gpu_paint_key(shading);
-    const auto add = [&](const void *p, size_t n) {
-        key.append(static_cast<const char *>(p), n);
-    };
-    const void *pointers[] = {&shading, shading.drape, shading.property, shading.fade};
-    add(pointers, sizeof pointers);
-    add(&shading.light, sizeof shading.light);
-    add(&shading.ambient, sizeof shading.ambient);
-    add(shading.background.data(), shading.background.size());
-    add(&shading.normals, sizeof shading.normals);
-    add(&shading.kernel, sizeof shading.kernel);
-    add(&shading.smooth, sizeof shading.smooth);
-    return key;
-}
-
-} // namespace
-
 void GpuTracer::begin_frame()
 {
     reset_stats();
+    frame_start_ = Clock::now();
     bands_.begin_frame();
 }
 
@@ -444,6 +422,8 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                        13);
     shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
                [&](int first, int count, int slot) {
+                   if (stats_.before_dispatch_ms == 0) // the first band
+                       stats_.before_dispatch_ms = ms_since(frame_start_);
                    view.options[2] = uint32_t(first);
                    view.options[3] = uint32_t(count);
                    view_.upload(&view, sizeof view); // stays bound to index 0
@@ -535,7 +515,7 @@ void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_co
     const uint32_t *pixels = words + layout.over_budget_at + 1;
     // the shader's face tables cost more than a few rays: made again only
     // where the shading changed
-    std::string key = host_shader_key(shading);
+    std::string key = sbrt::pixel_shader_key(shading);
     if (!host_shader_ || key != host_shader_key_) {
         host_shader_.emplace(tracer_.model(), shading);
         host_shader_key_ = std::move(key);

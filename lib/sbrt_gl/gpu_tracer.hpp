@@ -54,6 +54,9 @@ struct GpuStats {
     /// The host's time handing the list to the GL and dispatching the
     /// boreholes' pass (a driver that waits for the GPU shows here).
     double borehole_submit_ms = 0;
+    /// The host's time from the frame's start to its first shading
+    /// dispatch (the scene's lists, layouts and bindings).
+    double before_dispatch_ms = 0;
     /// Bands the model pass shaded (every band but where a borehole's box
     /// holds the camera).
     int model_pass_bands = 0;
@@ -214,6 +217,7 @@ private:
                                     const sbrt::Outputs &outputs, sbrt::GpuShade &shade);
 
     std::chrono::steady_clock::time_point created_; ///< times the upload
+    std::chrono::steady_clock::time_point frame_start_; ///< begin_frame
     const sbrt::Tracer &tracer_;
     GlApi gl_;
     ProgramCache cache_;

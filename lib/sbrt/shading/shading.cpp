@@ -57,6 +57,36 @@ std::array<uint8_t, 3> rgb_of(const glm::dvec3 &color)
 /// Most entries of a table of lit face colours (3 bytes each).
 constexpr size_t MAX_FACE_TABLE = size_t(1) << 22;
 
+std::string pixel_shader_key(const Shading &shading)
+{
+    std::string key;
+    const auto add = [&](const void *p, size_t n) {
+        key.append(static_cast<const char *>(p), n);
+    };
+    const void *pointers[] = {&shading, shading.drape, shading.property, shading.fade};
+    add(pointers, sizeof pointers);
+    add(&shading.light, sizeof shading.light);
+    add(&shading.ambient, sizeof shading.ambient);
+    add(shading.background.data(), shading.background.size());
+    add(&shading.normals, sizeof shading.normals);
+    add(&shading.kernel, sizeof shading.kernel);
+    add(&shading.smooth, sizeof shading.smooth);
+    // a new paint or fade may take an old one's address
+    if (const PropertyPaint *p = shading.property) {
+        add(&p->whole().low, sizeof p->whole().low);
+        add(&p->whole().count, sizeof p->whole().count);
+        for (const glm::dvec3 &c : p->table())
+            add(&c, sizeof c);
+        add(&p->no_value(), sizeof(glm::dvec3));
+    }
+    if (const UncertaintyFade *f = shading.fade) {
+        const double values[] = {f->low(), f->high(), f->whole().low, double(f->whole().count),
+                                 double(f->channel())};
+        add(values, sizeof values);
+    }
+    return key;
+}
+
 PixelShader::PixelShader(const Model &model, const Shading &shading)
     : shading_(shading)
 {

@@ -8,6 +8,7 @@
 #define SBRT_SHADING_HPP
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "model/material_table.hpp"
@@ -48,6 +49,12 @@ struct Image {
     std::vector<double> value;      ///< the shown property, NaN (property only)
 };
 
+
+/// What a PixelShader of `shading` depends on beyond its model: the
+/// address of `shading` (the shader holds a reference), its settings and
+/// what its property or fade colours are made of. Equal keys, equal
+/// shaders: one is kept while the key stays.
+std::string pixel_shader_key(const Shading &shading);
 
 /// \brief A Shading made ready for one model's pixels: each material's
 /// colour is looked up once, not per pixel. Holds a reference to `shading`.

@@ -464,13 +464,15 @@ void print_gpu_frame_parts(sbrt_gl::GpuRenderer &on_gpu, Renderer &renderer,
     std::printf("gpu_parts label=%s cols=%d rows=%d bands=%d%s sink_ms=%.3f host_after_ms=%.3f "
                 "memcpy_ms=%.3f host/memcpy=%.2f host_bytes_per_pixel=%.3f "
                 "asked_bytes_per_pixel=3 over_budget=%zu borehole_tiles=%zu/%zu borehole_list_ms=%.3f "
-                "borehole_submit_ms=%.3f gpu_wait_ms=%.3f\n",
+                "borehole_submit_ms=%.3f gpu_wait_ms=%.3f before_dispatch_ms=%.3f "
+                "parts_frame_ms=%.3f\n",
                 label.c_str(), camera.cols(), camera.rows(), best.gpu.bands, passes.c_str(),
                 best.render.sink_ms, best.host_after_ms, memcpy_ms, best.host_after_ms / memcpy_ms,
                 double(best.gpu.host_bytes) / double(pixels), best.gpu.over_budget,
                 best.gpu.borehole_tiles, best.gpu.tiles, best.gpu.borehole_list_ms,
                 best.gpu.borehole_submit_ms,
-                best.gpu.trace_ms - best.gpu.borehole_list_ms - best.gpu.borehole_submit_ms);
+                best.gpu.trace_ms - best.gpu.borehole_list_ms - best.gpu.borehole_submit_ms,
+                best.gpu.before_dispatch_ms, best.render.ms);
 }
 
 /// The streamed frame on the GPU (gpu=egl|osmesa): the model uploaded
@@ -688,9 +690,10 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
                 passes += std::string(" gl_") + sbrt_gl::pass_name(int(k)) + "_ms=" +
                           std::to_string(parts.gpu.pass_ms[k]);
         std::printf("paint_parts label=%s kind=%s%s over_budget=%zu host_traced_ms=%.3f "
-                    "host_after_ms=%.3f frame_ms=%.3f\n",
+                    "before_dispatch_ms=%.3f gpu_wait_ms=%.3f host_after_ms=%.3f frame_ms=%.3f\n",
                     label.c_str(), kind.name.c_str(), passes.c_str(), parts.gpu.over_budget,
-                    parts.gpu.readback_ms, parts.host_after_ms, parts.render.ms);
+                    parts.gpu.readback_ms, parts.gpu.before_dispatch_ms, parts.gpu.trace_ms,
+                    parts.host_after_ms, parts.render.ms);
         BandSink to_cpu_rgb = cpu_rgb.sink(camera);
         renderer.render(camera, {}, to_cpu_rgb);
         const double cpu = best_ms(repeat, [&] { renderer.render(camera, {}, [](const Band &) {}); });
