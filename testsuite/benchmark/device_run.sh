@@ -110,19 +110,21 @@ if [ -d "$data/geo_B" ]; then
         if run boreholes; then
             # the GPU's clock while its frames run (nvidia-smi where there is one)
             clocks=$data/gpu_clocks.txt
-            : >"$clocks"
             sampler=
-            if command -v nvidia-smi >/dev/null; then
-                nvidia-smi --query-gpu=clocks.sm --format=csv,noheader,nounits -lms 50 >"$clocks" &
-                sampler=$!
-            fi
             for drilled in 0 100; do
-                "$bench" gpu_frame "$data/geo_B" $best label=B/boreholes repeat=20 \
+                : >"$clocks"
+                if command -v nvidia-smi >/dev/null; then
+                    nvidia-smi --query-gpu=clocks.sm --format=csv,noheader,nounits -lms 20 >"$clocks" &
+                    sampler=$!
+                fi
+                # the GPU's frames alone (cpu=0), many, while the clock is read
+                "$bench" gpu_frame "$data/geo_B" $best label=B/boreholes repeat="${BOREHOLE_FRAMES:-200}" cpu=0 \
                     threads="$cores" boreholes=$drilled radius=20 |
                     sed "s/^/device build=$build size=B view=best /"
+                [ -n "$sampler" ] && kill "$sampler" && wait "$sampler" 2>/dev/null
+                sampler=
+                sort -n "$clocks" | awk -v b=$drilled '{ v[NR] = $1 } END { if (NR) printf "device boreholes=%d gpu_clock_mhz samples=%d min=%d median=%d max=%d\n", b, NR, v[1], v[int((NR + 1) / 2)], v[NR] }'
             done
-            [ -n "$sampler" ] && kill "$sampler" && wait "$sampler" 2>/dev/null
-            sort -n "$clocks" | awk '{ v[NR] = $1 } END { if (NR) printf "device gpu_clock_mhz samples=%d min=%d median=%d max=%d\n", NR, v[1], v[int((NR + 1) / 2)], v[NR] }'
         fi
     done
     if run large; then

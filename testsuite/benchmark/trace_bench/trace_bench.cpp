@@ -37,7 +37,8 @@
  *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
  *            [threads=N] [classes=FILE: error writes the reference's class
  *            ids, int32] [boreholes=N radius=R: gpu_frame with N boreholes]
- *            [property=a+b fade=c: paint_frame]; instead of position=,
+ *            [property=a+b fade=c: paint_frame] [cpu=0: gpu_frame without
+ *            the CPU's frames]; instead of position=,
  *            azimuth= and elevation= (degrees) frame the whole model
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
@@ -521,10 +522,14 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
         warm_up_gpu(on_gpu, camera, sink, threads);
         return best_ms(repeat, [&] { gpu_run(shading, best_dispatch); });
     };
-    std::vector<double> ms = {gpu_best(face, dispatch_ms[0]), best_ms(repeat, [&] {
+    // cpu=0: the GPU's frames alone (e.g. while its clock is sampled)
+    const bool cpu = args.get("cpu", "1") != "0";
+    std::vector<double> ms = {gpu_best(face, dispatch_ms[0]),
+                              cpu ? best_ms(repeat, [&] {
                                   renderer.set_shading(face);
                                   renderer.render(camera, {}, sink);
-                              })};
+                              })
+                                  : NAN};
     // with boreholes the CPU finds kernel normals
     ms.push_back(drilled == 0 ? gpu_best(kernel, dispatch_ms[1]) : NAN);
     const double rays = double(camera.rows()) * camera.cols();
