@@ -138,7 +138,16 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
         shading.property ? shading.property->summed() : std::vector<size_t>{shading.fade->channel()};
     const int bs = channels.block_size();
     const int block_cols = (f.cols + bs - 1) / bs;
-    std::vector<uint16_t> entry(entries);
+    // the entries go straight into their words, two a word (the first in
+    // the low half: little-endian bytes), and the colours after them
+    const std::vector<glm::dvec3> colours = paint_colours(model, shading);
+    const size_t entries_at = words.size(), colours_at = entries_at + (entries + 1) / 2;
+    words.resize(colours_at + 3 * colours.size()); // (zeroes: an odd count's last half)
+    unsigned char *entry_bytes = reinterpret_cast<unsigned char *>(words.data() + entries_at);
+    const auto set_entry = [&](uint64_t i, uint32_t e) {
+        const uint16_t e16 = uint16_t(e);
+        std::memcpy(entry_bytes + 2 * i, &e16, 2);
+    };
     for_each_row(int(channels.blocks()), threads, [&](int b) {
         std::vector<ChannelValues> columns(summed.size());
         const int row0 = (b / block_cols) * bs, col0 = (b % block_cols) * bs;
@@ -162,24 +171,15 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
                         sum += info.physical(raw);
                     }
                     const int64_t v = has ? whole.index(sum) : -1;
-                    entry[at + i] =
-                        uint16_t(!has ? GPU_PAINT_NONE : v < 0 ? GPU_PAINT_OUTSIDE : uint32_t(v));
+                    set_entry(uint64_t(at) + i,
+                              !has ? GPU_PAINT_NONE : v < 0 ? GPU_PAINT_OUTSIDE : uint32_t(v));
                 }
             }
     });
-    const size_t entries_at = words.size();
-    words.resize(entries_at + (entries + 1) / 2, 0);
-    // (little-endian: the first of two entries in a word's low half)
-    std::memcpy(words.data() + entries_at, entry.data(), entry.size() * sizeof(uint16_t));
-
-    const std::vector<glm::dvec3> colours = paint_colours(model, shading);
-    const size_t colours_at = words.size();
-    for (const glm::dvec3 &c : colours)
-        for (int k = 0; k < 3; ++k) {
-            const float v = float(c[k]);
-            uint32_t bits;
-            std::memcpy(&bits, &v, 4);
-            words.push_back(bits);
+    for (size_t k = 0; k < colours.size(); ++k)
+        for (int c = 0; c < 3; ++c) {
+            const float v = float(colours[k][c]);
+            std::memcpy(&words[colours_at + 3 * k + size_t(c)], &v, 4);
         }
     words[0] = uint32_t(entries_at);
     words[1] = uint32_t(colours_at);
