@@ -317,14 +317,9 @@ RenderReport Renderer::render(const Camera &camera, const Outputs &outputs,
             report.worker_busy_ms = pool_->busy_ms();
     }
     RowTracer &source = rows ? *rows : *cpu;
-    // the shader's tables (a fade's: classes x values x faces) are made
-    // again only where the shading changed
-    std::string shader_key = pixel_shader_key(shading_);
-    if (!shader_ || shader_key != shader_key_) {
-        shader_ = std::make_unique<PixelShader>(*model_, shading_);
-        shader_key_ = std::move(shader_key);
-    }
-    const RowShader shade{*tracer_, *shader_, camera};
+    if (!shader_)
+        shader_ = std::make_unique<KeptPixelShader>(*model_);
+    const RowShader shade{*tracer_, shader_->of(shading_), camera};
     std::optional<KernelBands> kernel;
     if (shading_.normals == Normals::kernel && !(rows && rows->shades_kernel_normals()))
         kernel.emplace(*tracer_, camera, shading_, source, threads);

@@ -87,9 +87,8 @@ private:
     mutable std::mutex frame_mutex_;
     mutable std::unique_ptr<WorkerPool> pool_;
     mutable std::unique_ptr<BandWriter> writer_;
-    /// the frames' shader, kept while pixel_shader_key(shading_) stays
-    mutable std::unique_ptr<PixelShader> shader_;
-    mutable std::string shader_key_;
+    /// the frames' shader, kept while the shading stays
+    mutable std::unique_ptr<KeptPixelShader> shader_;
 };
 
 /// An image of `camera`'s size for `outputs` (misses: NULL_CLASS, NaN).

@@ -32,7 +32,7 @@ GpuRowTracer::GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned 
 template <typename PixelFunction>
 void GpuRowTracer::for_cpu_pixels(int first, int count, const PixelFunction &f) const
 {
-    if (cpu_rects_ && cpu_rects_->empty())
+    if (!any_cpu_pixels())
         return;
     sbrt::for_each_row(first, first + count, threads_, [&](int row) {
         if (!cpu_rects_) {
@@ -59,7 +59,7 @@ void GpuRowTracer::trace_rows(int first, int count, sbrt::Hit *out)
 bool GpuRowTracer::shades_kernel_normals() const
 {
     return shading_ && shading_->normals == sbrt::Normals::kernel && gpu_.kernel_fits(camera_) &&
-           cpu_rects_ && cpu_rects_->empty();
+           !any_cpu_pixels();
 }
 
 int GpuRowTracer::preferred_band_rows(int cols) const
@@ -90,7 +90,9 @@ bool GpuRowTracer::shade_rows(int first, int count, const sbrt::Outputs &outputs
     const sbrt::Tracer &tracer = gpu_.tracer();
     if (sbrt::gpu_overlay_mode(tracer) == sbrt::GpuOverlayMode::with_model)
         return true; // the boreholes' pass drew them
-    const sbrt::PixelShader shader(tracer.model(), *shading_);
+    if (!any_cpu_pixels())
+        return true; // (no shader made for no pixel)
+    const sbrt::PixelShader &shader = gpu_.host_shader(*shading_);
     for_cpu_pixels(first, count, [&](int row, int col) {
         sbrt::Hit hit;
         tracer.trace_into(camera_.ray(row, col), 0, hit);

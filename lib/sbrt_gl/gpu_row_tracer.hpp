@@ -57,6 +57,8 @@ public:
     }
 
 private:
+    /// Whether the CPU traces any pixel.
+    bool any_cpu_pixels() const { return !cpu_rects_ || !cpu_rects_->empty(); }
     /// Calls f(row, col) for each pixel of rows [first, first + count)
     /// the CPU traces, on the threads.
     template <typename PixelFunction>

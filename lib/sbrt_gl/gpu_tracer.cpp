@@ -71,7 +71,8 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
       materials_(material_buffer(gl_, tracer)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
       pyramid_(pyramid_buffer(gl_, tracer.pyramid(), max_block_bytes_)),
-      bands_(gl_, max_block_bytes_, !is_software_renderer(gl_renderer())), timer_(gl_)
+      bands_(gl_, max_block_bytes_, !is_software_renderer(gl_renderer())), timer_(gl_),
+      host_shader_(tracer.model())
 {
     if (&tracer.model_pyramid() != &tracer.pyramid())
         model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
@@ -513,14 +514,7 @@ void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_co
                    band.pixels(), " pixels");
     const auto start = Clock::now();
     const uint32_t *pixels = words + layout.over_budget_at + 1;
-    // the shader's face tables cost more than a few rays: made again only
-    // where the shading changed
-    std::string key = sbrt::pixel_shader_key(shading);
-    if (!host_shader_ || key != host_shader_key_) {
-        host_shader_.emplace(tracer_.model(), shading);
-        host_shader_key_ = std::move(key);
-    }
-    const sbrt::PixelShader &shader = *host_shader_;
+    const sbrt::PixelShader &shader = host_shader(shading);
     // 256 rays a thread: a ray traced alone takes microseconds, starting a
     // thread tens (the few dozen a property view sends back: one thread;
     // an H200's frame took 0.33 ms on one host thread, 0.54 on 16)

@@ -131,6 +131,12 @@ public:
     /// Whether the shading pass colours `shading`'s property or fade for
     /// `outputs` (sbrt::gpu_paints, in one storage buffer of this GL).
     bool paints(const sbrt::Shading &shading, const sbrt::Outputs &outputs) const;
+    /// The host's shader of `shading` for the pixels it traces and shades
+    /// (kept while the shading stays as it was).
+    const sbrt::PixelShader &host_shader(const sbrt::Shading &shading)
+    {
+        return host_shader_.of(shading);
+    }
     /// The loop budget of this GL: llvmpipe's (GPU_LOOP_BUDGET), none on
     /// a GPU.
     uint32_t loop_budget() const { return loop_budget_; }
@@ -242,10 +248,6 @@ private:
     /// 7, as a drape's: a scene has one or the other) with their key
     std::optional<GlComputeProgram> paint_program_;
     std::optional<GlBuffer> paint_;
-    /// The host's shader of the rays over the budget (and those the GPU's
-    /// shader sends back), kept while the shading stays as it was.
-    std::optional<sbrt::PixelShader> host_shader_;
-    std::string host_shader_key_;
     std::string paint_key_;
     /// the boreholes' pass over listed tiles (with a drape or without),
     /// and the tiles of the band dispatched into each of MappedBands'
@@ -271,6 +273,9 @@ private:
     std::optional<GlBuffer> looks_, shade_;
     MappedBands bands_; ///< where shaded bands land
     PassTimer timer_;
+    /// the host's shader of the pixels it traces, kept while the shading
+    /// stays as it was
+    sbrt::KeptPixelShader host_shader_;
     /// the drape's surface and texture (binding 7), and whose they are
     std::optional<GlBuffer> drape_;
     const sbrt::Drape *drape_on_gpu_ = nullptr;

@@ -57,6 +57,9 @@ std::array<uint8_t, 3> rgb_of(const glm::dvec3 &color)
 /// Most entries of a table of lit face colours (3 bytes each).
 constexpr size_t MAX_FACE_TABLE = size_t(1) << 22;
 
+namespace {
+
+/// What a PixelShader of `shading` depends on beyond its model.
 std::string pixel_shader_key(const Shading &shading)
 {
     std::string key;
@@ -85,6 +88,18 @@ std::string pixel_shader_key(const Shading &shading)
         add(values, sizeof values);
     }
     return key;
+}
+
+} // namespace
+
+const PixelShader &KeptPixelShader::of(const Shading &shading)
+{
+    std::string key = pixel_shader_key(shading);
+    if (!shader_ || key != key_) {
+        shader_.emplace(model_, shading);
+        key_ = std::move(key);
+    }
+    return *shader_;
 }
 
 PixelShader::PixelShader(const Model &model, const Shading &shading)

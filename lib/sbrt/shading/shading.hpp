@@ -8,6 +8,7 @@
 #define SBRT_SHADING_HPP
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,12 +51,6 @@ struct Image {
 };
 
 
-/// What a PixelShader of `shading` depends on beyond its model: the
-/// address of `shading` (the shader holds a reference), its settings and
-/// what its property or fade colours are made of. Equal keys, equal
-/// shaders: one is kept while the key stays.
-std::string pixel_shader_key(const Shading &shading);
-
 /// \brief A Shading made ready for one model's pixels: each material's
 /// colour is looked up once, not per pixel. Holds a reference to `shading`.
 class PixelShader {
@@ -87,6 +82,23 @@ private:
     std::vector<std::array<uint8_t, 3>> fade_face_rgb_;
     /// lit()'s colour of `surface` on a cell face with its face normal.
     std::array<uint8_t, 3> lit_face(const glm::dvec3 &surface, Face face) const;
+};
+
+/// \brief One model's PixelShader, kept from frame to frame while what it
+/// depends on stays: the address of the shading (the shader holds a
+/// reference), its settings and what its property or fade colours are
+/// made of (a fade's face tables, classes x values x faces, cost more than
+/// a frame of a GPU).
+class KeptPixelShader {
+public:
+    explicit KeptPixelShader(const Model &model) : model_(model) {}
+    /// The shader of `shading`, made again only where it changed.
+    const PixelShader &of(const Shading &shading);
+
+private:
+    const Model &model_;
+    std::optional<PixelShader> shader_;
+    std::string key_;
 };
 
 /// Pixel (row, col) of `band` (a band of camera's image): the colour of
