@@ -133,7 +133,7 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
 
     // each voxel's entry, block by block of the channels (a block is
     // decoded once, by the thread that takes it), a column of each summed
-    // channel a cell: the sum as property_at_voxel makes it
+    // channel a cell
     const std::vector<size_t> summed =
         shading.property ? shading.property->summed() : std::vector<size_t>{shading.fade->channel()};
     const int bs = channels.block_size();
@@ -162,14 +162,8 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
                 for (size_t k = 0; k < summed.size(); ++k)
                     columns[k] = channels.column(summed[k], cell);
                 for (uint32_t i = 0; i < size; ++i) {
-                    double sum = 0;
-                    bool has = true;
-                    for (size_t k = 0; k < summed.size() && has; ++k) {
-                        const float raw = columns[k][i];
-                        const ChannelInfo &info = channels.info(summed[k]);
-                        has = !info.is_fill(raw);
-                        sum += info.physical(raw);
-                    }
+                    double sum;
+                    const bool has = sum_at(channels, summed, columns.data(), i, sum);
                     const int64_t v = has ? whole.index(sum) : -1;
                     set_entry(uint64_t(at) + i,
                               !has ? GPU_PAINT_NONE : v < 0 ? GPU_PAINT_OUTSIDE : uint32_t(v));

@@ -137,11 +137,8 @@ const PropertyPaint::SumBlock &PropertyPaint::block_sums(size_t block) const
     SumBlock &b = sums_[block];
     std::call_once(b.once, [&] {
         std::vector<ChannelValues> values;
-        std::vector<const ChannelInfo *> infos;
-        for (size_t c : summed_) {
+        for (size_t c : summed_)
             values.push_back(channels_->block_values(c, block));
-            infos.push_back(&channels_->info(c));
-        }
         const size_t n = values[0].size();
         // a whole-valued sum as the index of its value: 2 bytes a voxel
         const bool indexed = whole_.count > 0 && whole_.count < SUM_OUTSIDE;
@@ -150,15 +147,9 @@ const PropertyPaint::SumBlock &PropertyPaint::block_sums(size_t block) const
         else
             b.sums.resize(n);
         for (size_t i = 0; i < n; ++i) {
-            double sum = 0; // in the order of summed_, as property_at_hit
-            for (size_t k = 0; k < values.size(); ++k) {
-                const float raw = values[k][i];
-                if (infos[k]->is_fill(raw)) {
-                    sum = std::numeric_limits<double>::quiet_NaN();
-                    break;
-                }
-                sum += infos[k]->physical(raw);
-            }
+            double sum;
+            if (!sum_at(*channels_, summed_, values.data(), i, sum))
+                sum = std::numeric_limits<double>::quiet_NaN(); // a fill
             if (!indexed) {
                 b.sums[i] = sum;
                 continue;
@@ -194,6 +185,21 @@ bool property_at_hit(const Model &model, const PropertyChannels &channels,
 {
     HitVoxel voxel;
     return voxel_of_hit(model, hit, voxel) && property_at_voxel(channels, summed, voxel, out);
+}
+
+bool sum_at(const PropertyChannels &channels, const std::vector<size_t> &summed,
+            const ChannelValues *values, size_t i, double &out)
+{
+    double sum = 0;
+    for (size_t k = 0; k < summed.size(); ++k) {
+        const float raw = values[k][i];
+        const ChannelInfo &info = channels.info(summed[k]);
+        if (info.is_fill(raw))
+            return false;
+        sum += info.physical(raw);
+    }
+    out = sum;
+    return true;
 }
 
 bool property_at_voxel(const PropertyChannels &channels, const std::vector<size_t> &summed,

@@ -40,6 +40,13 @@ bool property_at_hit(const Model &model, const PropertyChannels &channels,
 bool property_at_voxel(const PropertyChannels &channels, const std::vector<size_t> &summed,
                        const HitVoxel &voxel, double &out);
 
+/// The sum of `summed` channels at position `i` of `values` (one view per
+/// summed channel, in its order, of the same voxels), as property_at_voxel
+/// makes it: values as meant, added in the order of `summed`; false where
+/// one is a fill.
+bool sum_at(const PropertyChannels &channels, const std::vector<size_t> &summed,
+            const ChannelValues *values, size_t i, double &out);
+
 /// \brief The whole numbers low, low + 1, ..., low + count - 1: the values
 /// a property takes where they are few (GeoTOP's percentages), so that a
 /// colour per value can be made once; count 0 where they are not.
