@@ -544,21 +544,6 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
                 dispatch_ms[1] / dispatch_ms[0], checksum);
 }
 
-/// A whole frame's RGB gathered from its bands.
-struct FrameRgb {
-    std::vector<uint8_t> rgb;
-    BandSink sink(const Camera &camera)
-    {
-        rgb.assign(size_t(camera.rows()) * camera.cols() * 3, 0);
-        return [this](const Band &band) {
-            const size_t row_bytes = size_t(band.cols) * 3;
-            for (int r = 0; r < band.rows; ++r)
-                std::memcpy(rgb.data() + size_t(band.first_row + r) * row_bytes,
-                            band.rgb.row(r), row_bytes);
-        };
-    }
-};
-
 /// Pixels whose colour differs by more than one level in any component.
 size_t pixels_apart(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b)
 {
@@ -655,14 +640,13 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
         // cold: fresh channels, a fresh GPU renderer, its first frame
         Painted p = painted(kind);
         renderer.set_shading(p.shading);
-        FrameRgb gpu_rgb, cpu_rgb;
-        BandSink to_gpu_rgb = gpu_rgb.sink(camera);
         double first = 0, upload_ms = 0;
         bool on_gpu_shaded = false;
         std::unique_ptr<sbrt_gl::GpuRenderer> on_gpu;
         first = run_ms([&] {
             on_gpu = std::make_unique<sbrt_gl::GpuRenderer>(*context, renderer);
-            const sbrt_gl::GpuFrameReport r = on_gpu->render(camera, {}, to_gpu_rgb, threads);
+            const sbrt_gl::GpuFrameReport r =
+                on_gpu->render(camera, {}, [](const Band &) {}, threads);
             on_gpu_shaded = r.shaded_on_gpu;
         });
         upload_ms = on_gpu->gpu().stats().upload_ms;
@@ -687,7 +671,8 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
         // where the warm frame's time goes: each pass's GL time, the rays
         // the host traced and coloured (flagged by the shader), its time
         on_gpu->gpu().time_passes(true);
-        const sbrt_gl::GpuFrameReport parts = on_gpu->render(camera, {}, to_gpu_rgb, threads);
+        const sbrt_gl::GpuFrameReport parts =
+            on_gpu->render(camera, {}, [](const Band &) {}, threads);
         on_gpu->gpu().time_passes(false);
         std::string passes;
         for (size_t k = 0; k < parts.gpu.pass_ms.size(); ++k)
@@ -699,8 +684,8 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
                     label.c_str(), kind.name.c_str(), passes.c_str(), parts.gpu.over_budget,
                     parts.gpu.readback_ms, parts.gpu.before_dispatch_ms, parts.gpu.trace_ms,
                     parts.host_after_ms, parts.render.ms);
-        BandSink to_cpu_rgb = cpu_rgb.sink(camera);
-        renderer.render(camera, {}, to_cpu_rgb);
+        const size_t apart = pixels_apart(on_gpu->render_image(camera, {}, threads).rgb,
+                                          renderer.render_image(camera, {}).rgb);
         const double cpu = best_ms(repeat, [&] { renderer.render(camera, {}, [](const Band &) {}); });
         warm_ms[kind.name] = warm;
         first_ms[kind.name] = first;
@@ -713,7 +698,7 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
                     kind.what.c_str(), on_gpu->gpu().gl_renderer().c_str(), camera.cols(),
                     camera.rows(), on_gpu_shaded ? "yes" : "no", first, upload_ms, first_host, warm,
                     rays / warm / 1000, cpu, thread_count(threads), cpu / warm,
-                    pixels_apart(gpu_rgb.rgb, cpu_rgb.rgb), rays);
+                    apart, rays);
     }
     for (const Kind &kind : kinds)
         if (kind.name != "class")
