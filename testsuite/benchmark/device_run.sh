@@ -30,11 +30,9 @@
 #              by voxel made and uploaded, or coloured on the host) and
 #              warm, and the GPU's pixels against the CPU's.
 #            Runs here too (llvmpipe), which checks the script.
-# USAGE:     [SECTIONS="unit gpu large boreholes scaling contention"]
+# USAGE:     [SECTIONS="unit paint gpu large boreholes scaling contention
+#            alternate"] [UNIT_FILTER=a GoogleTest filter] [BOREHOLE_FRAMES=200]
 #            bash .device/device_run.sh [SIZES] (A B C)
-#            (sections: unit paint gpu large boreholes scaling contention
-#            alternate;
-#            UNIT_FILTER= the unit tests to run, a GoogleTest filter)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
