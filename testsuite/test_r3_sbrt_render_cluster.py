@@ -96,12 +96,19 @@ class TestCluster(TestCase):
 
     def sbatch(self, script, array, wait=True):
         """Submits `script` as --array=`array`; returns the job id once every
-        task has ended (or at once, wait=False)."""
+        task has ended (tools/slurm_cluster.sh wait: sbatch --wait would poll
+        every 2 to 10 s), or at once (wait=False)."""
+        run = subprocess.run(
+            ["sbatch", "--parsable", f"--array={array}", f"--export={JOB_ENV}",
+             f"--output={self.work}/%x_%a.out", script],
+            capture_output=True, text=True, env=self.env)
+        self.assertEqual(run.returncode, 0, msg=run.stderr)
+        job = run.stdout.strip().split(";")[0]
+        if not wait:
+            return job
         try:
-            run = subprocess.run(
-                ["sbatch", "--parsable", f"--array={array}", f"--export={JOB_ENV}",
-                 f"--output={self.work}/%x_%a.out", *(["--wait"] if wait else []), script],
-                capture_output=True, text=True, env=self.env, timeout=600)
+            run = subprocess.run([CLUSTER, "wait", self.slurm, job],
+                                 capture_output=True, text=True, env=self.env, timeout=600)
         except subprocess.TimeoutExpired:
             queue = subprocess.run(["squeue"], capture_output=True, text=True, env=self.env)
             subprocess.run(["scancel", "--user=root"], env=self.env)
@@ -112,7 +119,7 @@ class TestCluster(TestCase):
                 with open(os.path.join(self.work, name)) as out:
                     logs += f"--- {name}\n{out.read()[-1500:]}"
         self.assertEqual(run.returncode, 0, msg=run.stderr + logs)
-        return run.stdout.strip().split(";")[0]
+        return job
 
     def orbit_lines(self, png, size=SIZE, frames_a_task=FRAMES // TASKS):
         # the manual's job array, a quarter of the frames a task, each task

@@ -8,14 +8,18 @@
 #            node's CPUs), starts munged, slurmctld and slurmd with their
 #            sockets, state, logs and pid files in DIR, and waits until
 #            sinfo shows the node idle; `stop DIR` cancels the jobs and
-#            stops the daemons. Commands then need SLURM_CONF=DIR/slurm.conf.
-#            Exits 2, saying why, where Slurm cannot start here.
-# USAGE:     tools/slurm_cluster.sh start DIR [CPUS] | stop DIR
+#            stops the daemons; `wait DIR JOB` returns once every task of
+#            JOB (sbatch --parsable's id) has ended, 0 where each completed
+#            with exit code 0, else 1 naming the others (sbatch --wait polls
+#            every 2 to 10 s: tens of seconds lost a short job array).
+#            Commands then need SLURM_CONF=DIR/slurm.conf. Exits 2, saying
+#            why, where Slurm cannot start here.
+# USAGE:     tools/slurm_cluster.sh start DIR [CPUS] | stop DIR | wait DIR JOB
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
 action=${1:-} dir=${2:-}
-[ -n "$action" ] && [ -n "$dir" ] || { echo "usage: $0 start DIR [CPUS] | stop DIR" >&2; exit 1; }
+[ -n "$action" ] && [ -n "$dir" ] || { echo "usage: $0 start DIR [CPUS] | stop DIR | wait DIR JOB" >&2; exit 1; }
 mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)
 export SLURM_CONF=$dir/slurm.conf
@@ -40,7 +44,22 @@ if [ "$action" = stop ]; then
     stop
     exit 0
 fi
-[ "$action" = start ] || { echo "usage: $0 start DIR [CPUS] | stop DIR" >&2; exit 1; }
+if [ "$action" = wait ]; then
+    job=${3:?usage: $0 wait DIR JOB}
+    # squeue lists the tasks still pending or running (an error: ask again)
+    while ! queued=$(squeue --noheader --jobs="$job" --format=%i 2>/dev/null) || [ -n "$queued" ]; do
+        sleep 0.2
+    done
+    # slurmctld keeps ended jobs' records for MinJobAge (300 s)
+    tasks=$(scontrol --oneliner show job "$job" |
+        grep -o -E 'ArrayTaskId=[0-9]+|JobState=[A-Z_]+|ExitCode=[0-9:]+' | paste -d ' ' - - -)
+    failed=$(grep -v 'JobState=COMPLETED ExitCode=0:0' <<<"$tasks" || true)
+    [ -z "$failed" ] && exit 0
+    echo "slurm_cluster: tasks of job $job that did not complete:" >&2
+    echo "$failed" >&2
+    exit 1
+fi
+[ "$action" = start ] || { echo "usage: $0 start DIR [CPUS] | stop DIR | wait DIR JOB" >&2; exit 1; }
 [ "$(id -u)" = 0 ] || cannot "the daemons run as root, and this is user $(id -un)"
 for tool in munged slurmctld slurmd sinfo sbatch; do
     command -v "$tool" >/dev/null || [ -x "/usr/sbin/$tool" ] ||
@@ -75,6 +94,10 @@ ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 JobAcctGatherType=jobacct_gather/none
 SchedulerType=sched/backfill
+# a task starts as soon as a CPU is free: Slurm's default holds batch jobs
+# back up to 3 s (batch_sched_delay), which on a one-node cluster of
+# second-long tasks is most of the wall time
+SchedulerParameters=batch_sched_delay=0,sched_min_interval=0
 SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
 ReturnToService=2

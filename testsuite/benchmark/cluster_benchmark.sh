@@ -9,7 +9,7 @@
 #            and of 2 CPUs, beside the same orbit in one process on 1 and on
 #            2 threads; wall-clock times of one run each, as root (the
 #            job array's from its first task's start to its last task's
-#            end: sbatch --wait itself polls every few seconds); and what
+#            end); and what
 #            this machine gives two independent processes: the orbit on
 #            one thread alone, then two such processes at once (each its
 #            own mapset), whose throughput bounds any scheduler's. Checks
@@ -69,9 +69,10 @@ for cpus in 1 2; do
     mkdir -p "$work/array$cpus"
     rm -rf "$data"/loc/cjob*
     rm -f "$work"/task_*.out
-    SLURM_CONF=$work/slurm/slurm.conf sbatch --wait --quiet --array=0-$((tasks - 1)) \
+    job=$(SLURM_CONF=$work/slurm/slurm.conf sbatch --parsable --array=0-$((tasks - 1)) \
         --export=PATH,HOME,GRASS_ADDON_BASE,GRASS_SKIP_MAPSET_OWNER_CHECK \
-        --output="$work/task_%a.out" "$work/orbit.sh" "$work/array$cpus"
+        --output="$work/task_%a.out" "$work/orbit.sh" "$work/array$cpus")
+    "$SBRT_ROOT/tools/slurm_cluster.sh" wait "$work/slurm" "${job%%;*}"
     array[$cpus]=$(cat "$work"/task_*.out | awk '$1 == "start" && (!s || $2 < s) { s = $2 }
                                                  $1 == "end" && $2 > e { e = $2 }
                                                  END { printf "%.2f", e - s }')
