@@ -123,11 +123,12 @@ class TestCluster(TestCase):
 
     def orbit_lines(self, png, size=SIZE, frames_a_task=FRAMES // TASKS):
         # the manual's job array, a quarter of the frames a task, each task
-        # in a mapset of its own (made once: a rerun finds it)
+        # in a mapset of its own (made by its first run's session: a rerun
+        # finds it)
         return [f"first=$((SLURM_ARRAY_TASK_ID * {frames_a_task} + 1))",
                 "mapset=/data/loc/job$SLURM_ARRAY_TASK_ID",
-                "[ -d $mapset ] || grass -c $mapset -e",
-                "grass $mapset --exec r3.sbrt.render input=geology@PERMANENT "
+                "new=; [ -d $mapset ] || new=-c",
+                "grass $new $mapset --exec r3.sbrt.render input=geology@PERMANENT "
                 "nprocs=$SLURM_CPUS_PER_TASK \\",
                 f"    frames={FRAMES} range=$first-$((first + {frames_a_task - 1})) "
                 f"size={size[0]},{size[1]} backend=cpu png={png}"]
@@ -171,8 +172,8 @@ class TestCluster(TestCase):
         # a task a tile: row and column from the task's number
         lines = [f"row=$((SLURM_ARRAY_TASK_ID / 4 * {th})) col=$((SLURM_ARRAY_TASK_ID % 4 * {tw}))",
                  "mapset=/data/loc/poster$SLURM_ARRAY_TASK_ID",
-                 "[ -d $mapset ] || grass -c $mapset -e",
-                 "grass $mapset --exec r3.sbrt.render input=geology@PERMANENT "
+                 "new=; [ -d $mapset ] || new=-c",
+                 "grass $new $mapset --exec r3.sbrt.render input=geology@PERMANENT "
                  "nprocs=$SLURM_CPUS_PER_TASK \\",
                  f"    size={cols},{rows} tile=$row,$col,{th},{tw} backend=cpu zexag=2 "
                  "output=tile_$SLURM_ARRAY_TASK_ID material=tile_$SLURM_ARRAY_TASK_ID.class \\",
@@ -236,7 +237,7 @@ class TestCluster(TestCase):
         env = {k: os.environ[k] for k in JOB_ENV.split(",") if k in os.environ}
         run = subprocess.run(
             f"seq 1 {step} {FRAMES} | parallel -j {TASKS} 'm={self.location}/par{{}}; "
-            f"[ -d $m ] || grass -c $m -e\n grass $m "
+            f"c=; [ -d $m ] || c=-c; grass $c $m "
             f"--exec r3.sbrt.render input=geo@{self.mapset} frames={FRAMES} "
             f"range={{}}-$(({{}}+{step - 1})) size={SIZE[0]},{SIZE[1]} backend=cpu png={got}'",
             shell=True, capture_output=True, text=True, env=env)
