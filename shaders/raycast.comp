@@ -128,21 +128,26 @@ bool model_hit_first(uint index, vec3 hi, vec3 lo, vec3 d, out float t_from, out
 {
     t_from = -1.0 / 0.0;
     t_to = 1.0 / 0.0;
-    uint tile = gl_WorkGroupID.x, first = tiles[tiles[1] + tile], last = tiles[tiles[1] + tile + 1u];
-    if (first == last)
+    uint slots = tiles[3];
+    if (slots == 0u)
         return false; // no box lists: the camera among them, no model pass
     float t_model = hit_ts[index];
     if (t_model == -1.0 / 0.0)
         return true; // over the model pass's budget: the host traces it
+    uvec2 at_tile = work_group_tile();
+    uint tile = at_tile.y * tiles[4] + at_tile.x, listed = tiles[tiles[8] + tile];
+    // more boxes than slots: every box
+    bool every_box = listed > slots;
+    uint count = every_box ? tiles[6] : listed;
     float t_entry = 1.0 / 0.0, t_exit = -1.0 / 0.0;
-    for (uint k = first; k < last; ++k) {
-        uint at = tiles[3] + 6u * tiles[tiles[2] + k];
+    for (uint k = 0u; k < count; ++k) {
+        uint at = 6u * (every_box ? k : tiles[tiles[9] + tile * slots + k]);
         float t0 = -1.0 / 0.0, t1 = 1.0 / 0.0;
         int axis = -1;
         bool met = true;
         for (int a = 0; a < 3 && met; ++a)
-            met = clip(a, hi[a], lo[a], d[a], uintBitsToFloat(tiles[at + uint(a)]),
-                       uintBitsToFloat(tiles[at + 3u + uint(a)]), t0, t1, axis);
+            met = clip(a, hi[a], lo[a], d[a], boxes[at + uint(a)], boxes[at + 3u + uint(a)], t0,
+                       t1, axis);
         if (met && t0 <= t1) {
             t_entry = min(t_entry, t0);
             t_exit = max(t_exit, t1);

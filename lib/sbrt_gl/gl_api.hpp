@@ -47,6 +47,8 @@ namespace sbrt_gl {
     X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                  \
     X(PFNGLCOPYBUFFERSUBDATAPROC, CopyBufferSubData)                          \
     X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                              \
+    X(PFNGLDISPATCHCOMPUTEINDIRECTPROC, DispatchComputeIndirect)              \
+    X(PFNGLCLEARBUFFERSUBDATAPROC, ClearBufferSubData)                        \
     X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                                  \
     X(PFNGLGENTEXTURESPROC, GenTextures)                                      \
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                \

@@ -43,7 +43,9 @@ enum class Pass : int {
     /// raycast.comp: the shaded outputs of the model and its boreholes
     /// over the listed tiles (SBRT_BOREHOLES, SBRT_TILE_LIST); the shade
     /// pass draws the model alone then
-    shade_boreholes
+    shade_boreholes,
+    /// tile_cull.comp: the tiles of a band the boreholes' pass draws
+    cull_tiles
 };
 
 /// The sources of `pass` for `layout`, the form the tracer's model is held

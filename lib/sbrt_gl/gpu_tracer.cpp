@@ -14,6 +14,7 @@
 #include "util/parallel.hpp"
 #include "gpu_internal.hpp"
 #include "gpu/gpu_overlays.hpp"
+#include "shader_sources.hpp"
 #include "gpu/gpu_paint.hpp"
 
 namespace sbrt_gl {
@@ -147,14 +148,14 @@ std::vector<double> GpuTracer::take_pass_ms()
 {
     if (!timer_.enabled())
         return {};
-    return timer_.take_ms(int(Pass::shade_boreholes) + 1);
+    return timer_.take_ms(int(Pass::cull_tiles) + 1);
 }
 
 const char *pass_name(int k)
 {
     static const char *const names[] = {"records",        "shade",         "kernel_depth",
                                         "kernel_normals", "kernel_across", "kernel_shade",
-                                        "first_pass",     "shade_boreholes"};
+                                        "first_pass",     "shade_boreholes", "cull_tiles"};
     return k >= 0 && k < int(std::size(names)) ? names[k] : "?";
 }
 
@@ -412,6 +413,13 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     sbrt::GpuView view = traced_view(camera, loop_budget_);
     bind_model();
     bind_shading(shade, shading);
+    if (boreholes && !boxes_) {
+        const std::vector<float> corners = sbrt::make_gpu_boxes(tracer_, boxes);
+        boxes_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                       checked_bytes(corners.size() * sizeof(float), max_block_bytes_,
+                                     "boreholes' boxes"),
+                       corners.data());
+    }
     const int cols = camera.cols();
     // each pixel's t of its hit in the model's pass, for the boreholes'
     // (binding 13): a buffer for each slot, as a band dispatched ahead
@@ -444,36 +452,74 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    }
                    if (!boreholes)
                        return;
-                   // the GPU on the model's pass while the host lists the
-                   // tiles the boreholes may reach
-                   gl_.Flush();
-                   const auto listing = Clock::now();
-                   const sbrt::OverlayTiles tiles = sbrt::overlay_tiles(boxes, camera, first, count);
-                   stats_.borehole_tiles += tiles.tiles.size();
                    stats_.tiles += all_tiles;
-                   if (tiles.tiles.empty()) {
-                       stats_.borehole_list_ms += ms_since(listing);
-                       return;
-                   }
+                   // the band's tiles a box reaches: listed by the GPU (or
+                   // every tile by the host), then the boreholes' pass over
+                   // them, as many work groups as tiles listed
+                   const auto listing = Clock::now();
+                   const sbrt::GpuTileHead head =
+                       sbrt::make_gpu_tile_head(tracer_, camera, first, count,
+                                                uint32_t(boxes.size()), every_tile ? 0 : 8);
                    const std::vector<uint32_t> words =
-                       sbrt::make_gpu_tile_list(tiles, tracer_, boxes);
-                   stats_.borehole_list_ms += ms_since(listing);
-                   const auto submit = Clock::now();
-                   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-                   const size_t bytes = checked_bytes(words.size() * 4, max_block_bytes_,
+                       every_tile ? sbrt::gpu_every_tile_list(head)
+                                  : std::vector<uint32_t>(
+                                        reinterpret_cast<const uint32_t *>(&head),
+                                        reinterpret_cast<const uint32_t *>(&head + 1));
+                   const size_t bytes = checked_bytes(size_t(head.words) * 4, max_block_bytes_,
                                                       "boreholes' tiles");
                    std::optional<GlBuffer> &list = tile_lists_[size_t(slot)];
                    if (!list || list->bytes() < bytes) // room to grow
                        list.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
                                     std::min(bytes + bytes / 2, max_block_bytes_));
-                   list->write(0, words.data(), bytes);
+                   list->write(0, words.data(), words.size() * 4);
+                   if (!every_tile) {
+                       // no box counted in any tile yet
+                       const GLuint zero = 0;
+                       gl_.ClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI,
+                                              GLintptr(head.counts_at) * 4,
+                                              GLsizeiptr(all_tiles) * 4, GL_RED_INTEGER,
+                                              GL_UNSIGNED_INT, &zero);
+                   }
+                   stats_.borehole_list_ms += ms_since(listing);
+                   const auto submit = Clock::now();
                    list->bind(12);
+                   boxes_->bind(14);
+                   if (!every_tile) {
+                       cull_program().use();
+                       timer_.time(int(Pass::cull_tiles), [&] {
+                           gl_.DispatchCompute(GLuint(boxes.size()), 1, 1);
+                       });
+                   }
+                   // the list and the model pass's hits before the pass reads them
+                   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
                    borehole_program->use();
                    timer_.time(int(Pass::shade_boreholes), [&] {
-                       gl_.DispatchCompute(GLuint(tiles.tiles.size()), 1, 1);
+                       if (every_tile) {
+                           gl_.DispatchCompute(GLuint(all_tiles), 1, 1);
+                           return;
+                       }
+                       gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list->name());
+                       gl_.DispatchComputeIndirect(0);
                    });
                    stats_.borehole_submit_ms += ms_since(submit);
                });
+    if (boreholes) {
+        // the tiles the GPU listed in the band just done (its slot's count)
+        uint32_t listed = 0;
+        tile_lists_[size_t(bands_.last_slot())]->download(&listed, 4);
+        stats_.borehole_tiles += listed;
+    }
+}
+
+GlComputeProgram &GpuTracer::cull_program()
+{
+    if (!cull_program_) {
+        const auto start = Clock::now();
+        cull_program_.emplace(gl_, std::vector<const char *>{"#version 450\n", SHADER_TILE_CULL},
+                              &cache_);
+        stats_.upload_ms += ms_since(start);
+    }
+    return *cull_program_;
 }
 
 void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_count,

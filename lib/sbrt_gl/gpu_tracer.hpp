@@ -48,11 +48,12 @@ struct GpuStats {
     /// Boreholes with the model: the 8 x 8 tiles the boreholes' pass
     /// shaded again, of all the tiles of the bands.
     size_t borehole_tiles = 0, tiles = 0;
-    /// The host's time listing those tiles and their boxes (while the GPU
-    /// runs the model pass).
+    /// The host's time writing the head of each band's list of those
+    /// tiles, which the GPU fills (or, where a box lies partly behind the
+    /// camera, listing every tile).
     double borehole_list_ms = 0;
-    /// The host's time handing the list to the GL and dispatching the
-    /// boreholes' pass (a driver that waits for the GPU shows here).
+    /// The host's time dispatching the culling and the boreholes' pass (a
+    /// driver that waits for the GPU shows here).
     double borehole_submit_ms = 0;
     /// The host's time from the frame's start to its first shading
     /// dispatch (the scene's lists, layouts and bindings).
@@ -202,6 +203,8 @@ private:
     /// kernel_shade) for `shading` (with its drape), compiled when first
     /// needed.
     GlComputeProgram &shading_program(const sbrt::Shading &shading, Pass pass);
+    /// The culling pass of the boreholes' tiles (tile_cull.comp).
+    GlComputeProgram &cull_program();
     /// Compiles `program` for `pass` (gpu_internal.hpp) when first needed
     /// and runs it over width x height invocations (pixels of the whole
     /// image, or the first pass's tiles), its buffers bound; a barrier
@@ -250,9 +253,11 @@ private:
     std::optional<GlBuffer> paint_;
     std::string paint_key_;
     /// the boreholes' pass over listed tiles (with a drape or without),
-    /// and the tiles of the band dispatched into each of MappedBands'
-    /// slots (binding 12): written only once the GPU is done with the slot
-    std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_;
+    /// the culling pass that lists them, the boxes (binding 14), and the
+    /// tiles of the band dispatched into each of MappedBands' slots
+    /// (binding 12): written only once the GPU is done with the slot
+    std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_, cull_program_;
+    std::optional<GlBuffer> boxes_;
     std::array<std::optional<GlBuffer>, MappedBands::SLOTS> tile_lists_;
     /// boreholes and curtains drawn by the shading program (bindings 9,
     /// 10 and, with the model, each cell's boreholes: 11)

@@ -139,6 +139,7 @@ uint8_t *MappedBands::band(int first, int count, int image_rows,
     band.fence.wait();
     last_done_ = Clock::now();
     gpu_ms_ += ms_since(start);
+    last_slot_ = band.slot;
     uint8_t *host = slots_[size_t(band.slot)].host();
     if (staged_) {
         // the pixels sent back beyond those the copy brought: read back

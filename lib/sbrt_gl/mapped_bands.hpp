@@ -71,6 +71,9 @@ public:
     /// When the GPU was last found done with a band (the host's time from
     /// there on is what follows the last dispatch).
     std::chrono::steady_clock::time_point last_done() const { return last_done_; }
+    /// The slot of the band band() returned last (the `slot` its dispatch
+    /// was given).
+    int last_slot() const { return last_slot_; }
     /// Milliseconds spent queueing dispatches and waiting for their fences.
     double gpu_ms() const { return gpu_ms_; }
     void reset_gpu_ms() { gpu_ms_ = 0; }
@@ -94,7 +97,7 @@ private:
     std::vector<GlBuffer> scratch_;      ///< set_scratch's, a slot each
     GLuint scratch_binding_ = 0;
     std::deque<Queued> queued_;
-    int next_slot_ = 0;
+    int next_slot_ = 0, last_slot_ = 0;
     std::chrono::steady_clock::time_point last_done_{};
     double gpu_ms_ = 0;
 };

@@ -16,6 +16,7 @@ extern const char *const SHADER_COMMON_OVERLAYS; ///< shaders/common/overlays.gl
 extern const char *const SHADER_RAYCAST;       ///< shaders/raycast.comp
 extern const char *const SHADER_KERNEL;        ///< shaders/kernel.comp
 extern const char *const SHADER_FIRST_PASS;    ///< shaders/first_pass.comp
+extern const char *const SHADER_TILE_CULL;     ///< shaders/tile_cull.comp
 
 } // namespace sbrt_gl
 

@@ -164,14 +164,18 @@ layout(std430, binding = 2) buffer Pixels { uint words[]; };
 
 #ifdef SBRT_TILE_LIST
 // The boreholes' pass (SBRT_BOREHOLES): one work group a listed tile of
-// 8 x 8 pixels of the band (sbrt::make_gpu_tile_list): the count of tiles
-// and where the box lists' offsets, the box indices and the boxes start;
-// each tile x | y << 16; its boxes; each box's local low and high corner.
-// The model alone was shaded everywhere before.
+// 8 x 8 pixels of the band, listed on the GPU by shaders/tile_cull.comp
+// (or every tile by the host): sbrt::GpuTileHead (word 3: box slots a
+// tile, 0 without box lists; 4: the band's tile columns; 6: boxes; 7, 8,
+// 9: where the list, the tiles' counts of boxes and their slots start),
+// then the tiles x | y << 16, each tile's count, its boxes; and the boxes
+// (sbrt::make_gpu_boxes): each box's local low and high corner. The model
+// alone was shaded everywhere before.
 layout(std430, binding = 12) readonly buffer Tiles { uint tiles[]; };
+layout(std430, binding = 14) readonly buffer Boxes { float boxes[]; };
 uvec2 work_group_tile()
 {
-    uint tile = tiles[4u + gl_WorkGroupID.x];
+    uint tile = tiles[tiles[7] + gl_WorkGroupID.x];
     return uvec2(tile & 0xffffu, tile >> 16);
 }
 #else

@@ -330,6 +330,54 @@ TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)
     EXPECT_LT(r.gpu.borehole_tiles, r.gpu.tiles / 3);
 }
 
+TEST_P(GpuBands, TheGpuListsTheTilesTheHostsListingWould)
+{
+    // twenty boreholes, from three sides and from nearly above, in bands of
+    // 16 rows: the GPU's culling lists every tile overlay_tiles lists on
+    // the host (float rounding may add one at a box's edge)
+    const Model m = geology(40, 56, 30);
+    const auto &f = m.frame();
+    Scene scene;
+    for (int k = 0; k < 20; ++k) {
+        const int row = 3 + 7 * (k / 5) % 34, col = 4 + 11 * (k % 5) + k / 5;
+        Borehole b;
+        b.x = f.west + (col + 0.5) * f.ew_res();
+        b.y = f.north - (row + 0.5) * f.ns_res();
+        b.stack = b.model_stack = m.stack_intervals(m.cell_index(row, col));
+        scene.boreholes.push_back(std::move(b));
+    }
+    scene.borehole_radius = 1.5 * f.ew_res();
+    const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 16});
+    const Tracer &t = renderer.tracer();
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    const Outputs all{true, true, true};
+    const glm::dvec3 c = t.frame().centre();
+    const double r = t.frame().radius();
+    const Camera cameras[] = {
+        Camera::perspective(c + 2.2 * r * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)), c, 40, 83, 61),
+        Camera::perspective(c + 1.6 * r * glm::normalize(glm::dvec3(-0.8, 0.3, 0.4)), c, 50, 70, 97),
+        Camera::orthographic(c + 3.0 * r * glm::normalize(glm::dvec3(0.2, 0.5, 0.8)), c, 1.5 * r,
+                             64, 64),
+        Camera::perspective(c + glm::dvec3(0.1 * r, 0.05 * r, 2.5 * r), c, 35, 90, 90)};
+    const std::vector<std::array<glm::dvec3, 2>> boxes = t.overlay_boxes();
+    for (size_t k = 0; k < std::size(cameras); ++k) {
+        const Camera &camera = cameras[k];
+        ASSERT_FALSE(overlay_tiles_everywhere(boxes, camera));
+        Image got = empty_image(camera, all);
+        const sbrt_gl::GpuFrameReport report =
+            on_gpu.render(camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
+        expect_images_agree(renderer.render_image(camera, all), got, 2e-5 * 2 * r,
+                            "view " + std::to_string(k));
+        size_t on_host = 0;
+        for (int first = 0; first < camera.rows(); first += 16)
+            on_host += overlay_tiles(boxes, camera, first, std::min(16, camera.rows() - first))
+                           .tiles.size();
+        EXPECT_GT(on_host, 0u) << "view " << k;
+        EXPECT_GE(report.gpu.borehole_tiles, on_host) << "view " << k;
+        EXPECT_LE(report.gpu.borehole_tiles, on_host + on_host / 50 + 1) << "view " << k;
+    }
+}
+
 TEST_P(GpuBands, BandsWhoseEveryTileABoreholeReachesAndRaysOverTheBudget)
 {
     // a close-up of a borehole from afar, 12 x 16 pixels: its box reaches

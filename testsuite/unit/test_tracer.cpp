@@ -103,6 +103,37 @@ TEST(Tracer, ExaggerationKeepsWhatIsHitOnAVerticalRay)
         }
 }
 
+TEST(Camera, PixelRowsPlaceAPointWhereProjectDoes)
+{
+    // perspective, parallel and windows of them: (c / w, r / w) is the
+    // pixel position of project's (x, y), w > 0 exactly where it projects
+    const Camera cameras[] = {
+        Camera::perspective({70, -40, 90}, {30, 20, 0}, 60, 240, 320),
+        Camera::orthographic({-50, 300, 400}, {30, 20, 10}, 150, 101, 77),
+        Camera::perspective({70, -40, 90}, {30, 20, 0}, 60, 240, 320).window(37, 50, 11, 90),
+        Camera::orthographic({-50, 300, 400}, {30, 20, 10}, 150, 101, 77).rows_window(20, 31)};
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> at(-200, 200);
+    for (const Camera &camera : cameras) {
+        const std::array<glm::dvec4, 3> rows = camera.pixel_rows();
+        int projected = 0;
+        for (int k = 0; k < 200; ++k) {
+            const glm::dvec4 p(at(random), at(random), at(random), 1);
+            double x, y;
+            const double w = glm::dot(rows[2], p);
+            if (!camera.project(glm::dvec3(p), x, y)) {
+                EXPECT_LE(w, 0);
+                continue;
+            }
+            ++projected;
+            ASSERT_GT(w, 0);
+            EXPECT_NEAR(glm::dot(rows[0], p) / w, (x + 1) / 2 * camera.cols() - 0.5, 1e-9);
+            EXPECT_NEAR(glm::dot(rows[1], p) / w, (1 - y) / 2 * camera.rows() - 0.5, 1e-9);
+        }
+        EXPECT_GT(projected, 50);
+    }
+}
+
 TEST(Camera, BadCamerasAreErrors)
 {
     EXPECT_THROW(Camera::perspective({1, 2, 3}, {1, 2, 3}, 40, 10, 10), Error);

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "util/error.hpp"
@@ -198,16 +199,54 @@ OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
     return out;
 }
 
-std::vector<uint32_t> make_gpu_tile_list(const OverlayTiles &tiles, const Tracer &tracer,
-                                         const std::vector<std::array<glm::dvec3, 2>> &boxes)
+GpuTileHead make_gpu_tile_head(const Tracer &tracer, const Camera &camera, int first_row,
+                               int rows, uint32_t boxes, uint32_t slots)
 {
-    const size_t n = tiles.tiles.size();
-    std::vector<uint32_t> words = {uint32_t(n), uint32_t(4 + n),
-                                   uint32_t(4 + n + tiles.box_first.size()),
-                                   uint32_t(4 + n + tiles.box_first.size() + tiles.boxes.size())};
-    words.insert(words.end(), tiles.tiles.begin(), tiles.tiles.end());
-    words.insert(words.end(), tiles.box_first.begin(), tiles.box_first.end());
-    words.insert(words.end(), tiles.boxes.begin(), tiles.boxes.end());
+    GpuTileHead head;
+    head.slots = slots;
+    head.tile_cols = uint32_t((camera.cols() + 7) / 8);
+    head.tile_rows = uint32_t((rows + 7) / 8);
+    head.boxes = boxes;
+    const uint64_t tiles = uint64_t(head.tile_cols) * head.tile_rows;
+    const uint64_t words = sizeof head / 4 + 2 * tiles + tiles * slots;
+    if (words > UINT32_MAX)
+        fail("make_gpu_tile_head: ", words, " words, beyond 32-bit indices");
+    head.list_at = uint32_t(sizeof head / 4);
+    head.counts_at = uint32_t(head.list_at + tiles);
+    head.slots_at = uint32_t(head.counts_at + tiles);
+    head.words = uint32_t(words);
+    // the forms of a map point, then of a local one (map = local / scale +
+    // the point at local 0), the band's first row at 0
+    const CoordinateFrame &frame = tracer.frame();
+    const glm::dvec3 scale = frame.scale(), zero = -frame.to_local(glm::dvec3(0)) / scale;
+    const std::array<glm::dvec4, 3> map = camera.pixel_rows();
+    for (int k = 0; k < 3; ++k) {
+        glm::dvec4 form = map[size_t(k)];
+        if (k == 1)
+            form -= double(first_row) * map[2];
+        const glm::dvec4 local(glm::dvec3(form) / scale, form.w + glm::dot(glm::dvec3(form), zero));
+        for (int a = 0; a < 4; ++a)
+            head.pixel_rows[k][a] = float(local[a]);
+    }
+    return head;
+}
+
+std::vector<uint32_t> gpu_every_tile_list(GpuTileHead head)
+{
+    head.slots = 0;
+    head.groups[0] = head.tile_cols * head.tile_rows;
+    std::vector<uint32_t> words(sizeof head / 4);
+    std::memcpy(words.data(), &head, sizeof head);
+    for (uint32_t ty = 0; ty < head.tile_rows; ++ty)
+        for (uint32_t tx = 0; tx < head.tile_cols; ++tx)
+            words.push_back(tx | ty << 16);
+    return words;
+}
+
+std::vector<float> make_gpu_boxes(const Tracer &tracer,
+                                  const std::vector<std::array<glm::dvec3, 2>> &boxes)
+{
+    std::vector<float> out;
     const double pad = 1e-3;
     for (const auto &box : boxes) {
         glm::dvec3 lo(INFINITY), hi(-INFINITY);
@@ -224,14 +263,12 @@ std::vector<uint32_t> make_gpu_tile_list(const OverlayTiles &tiles, const Tracer
                 float f = float(corner[a]);
                 if (outwards < 0 ? double(f) > corner[a] : double(f) < corner[a])
                     f = std::nextafter(f, float(outwards));
-                uint32_t bits;
-                std::memcpy(&bits, &f, 4);
-                words.push_back(bits);
+                out.push_back(f);
             }
     }
-    if (words.size() > UINT32_MAX)
-        fail("make_gpu_tile_list: ", words.size(), " words, beyond 32-bit indices");
-    return words;
+    if (out.empty())
+        out.push_back(0); // a buffer is never empty
+    return out;
 }
 
 GpuOverlays make_gpu_overlays(const Tracer &tracer)

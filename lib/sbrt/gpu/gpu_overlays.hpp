@@ -74,7 +74,8 @@ struct OverlayTiles {
 /// The tiles of rows [first_row, first_row + rows) of `camera`'s image
 /// whose pixels' rays may meet one of `boxes` (Tracer::overlay_boxes):
 /// those the convex hull of a box's projected corners, one pixel wider,
-/// reaches (the work groups of the boreholes' pass, SBRT_TILE_LIST).
+/// reaches. The boreholes' pass draws these tiles; the GPU lists them
+/// itself (shaders/tile_cull.comp), and the tests hold its lists to this.
 OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
                            const Camera &camera, int first_row, int rows);
 
@@ -83,13 +84,42 @@ OverlayTiles overlay_tiles(const std::vector<std::array<glm::dvec3, 2>> &boxes,
 bool overlay_tiles_everywhere(const std::vector<std::array<glm::dvec3, 2>> &boxes,
                               const Camera &camera);
 
-/// `buffer Tiles` (binding 12, SBRT_TILE_LIST) of `tiles`: the count of
-/// tiles, where the box lists' offsets, the box indices and the boxes
-/// start (words); the tiles; each tile's first box, and one past; the box
-/// indices; each box as its low and high corner in `tracer`'s local frame
-/// (three floats each), a thousandth of a local unit wider.
-std::vector<uint32_t> make_gpu_tile_list(const OverlayTiles &tiles, const Tracer &tracer,
-                                         const std::vector<std::array<glm::dvec3, 2>> &boxes);
+/// Head of `buffer Tiles` (binding 12) of a band in the boreholes' pass
+/// (SBRT_TILE_LIST), which the GPU's culling pass (shaders/tile_cull.comp,
+/// a work group a box) fills: the band's tiles that a box's projection,
+/// one pixel wider, reaches, as overlay_tiles lists them on the host.
+/// After the head (words): the listed tiles (x | y << 16, in no order); a
+/// count for each tile of the band (row by row) of the boxes that reach
+/// it; `slots` box indices for each tile (a tile reached by more: its
+/// pass tests every box).
+struct GpuTileHead {
+    /// the boreholes' pass's work groups (glDispatchComputeIndirect): x is
+    /// the count of tiles listed, 0 until the culling pass counts them
+    uint32_t groups[3] = {0, 1, 1};
+    /// box indices a tile; 0: every tile listed by the host, no box lists
+    /// (a box partly behind the camera)
+    uint32_t slots = 0;
+    uint32_t tile_cols = 0, tile_rows = 0, boxes = 0;
+    uint32_t list_at = 0, counts_at = 0, slots_at = 0, words = 0, pad = 0;
+    /// Camera::pixel_rows of local points, the band's first row at 0
+    float pixel_rows[3][4] = {};
+};
+static_assert(sizeof(GpuTileHead) == 24 * 4, "24 words");
+
+/// The head of the band of `rows` rows from `first_row` of `camera`'s
+/// image, with `boxes` boxes and `slots` box indices a tile (0: every
+/// tile listed, see gpu_every_tile_list).
+GpuTileHead make_gpu_tile_head(const Tracer &tracer, const Camera &camera, int first_row,
+                               int rows, uint32_t boxes, uint32_t slots);
+
+/// The words of `head` (slots 0) listing every tile of its band.
+std::vector<uint32_t> gpu_every_tile_list(GpuTileHead head);
+
+/// `buffer Boxes` (binding 14) of the boreholes' pass and its culling:
+/// each box as its low and high corner in `tracer`'s local frame (three
+/// floats each), a thousandth of a local unit wider, rounded outwards.
+std::vector<float> make_gpu_boxes(const Tracer &tracer,
+                                  const std::vector<std::array<glm::dvec3, 2>> &boxes);
 
 /// The overlays of the tracer's scene on the GPU: the Overlays buffer's
 /// words (head, then the overlays), the logs (intervals, local tops) and,

@@ -1,0 +1,121 @@
+// The tiles of a band that the boreholes' pass draws (raycast.comp with
+// SBRT_TILE_LIST), listed on the GPU: one work group a box (a borehole's
+// bounds, sbrt::make_gpu_boxes). A tile of 8 x 8 pixels is listed where
+// the convex hull of the box's eight projected corners meets the tile's
+// pixel centres one pixel wider, as sbrt::overlay_tiles lists them on the
+// host: separated on no axis of the image and no normal of a line through
+// two corners (the hull's edges are among them). A tile's first box lists
+// the tile and counts it in the dispatch's work groups; each box goes into
+// the tile's slots, or past them only into its count (the pass then tests
+// every box there). The head (sbrt::GpuTileHead) is the host's; the
+// counts start at 0.
+
+layout(local_size_x = 64) in;
+
+layout(std430, binding = 12) buffer Tiles { uint tiles[]; };
+layout(std430, binding = 14) readonly buffer Boxes { float boxes[]; };
+
+const uint GROUPS = 0u, SLOTS = 3u, TILE_COLS = 4u, TILE_ROWS = 5u, LIST_AT = 7u,
+           COUNTS_AT = 8u, SLOTS_AT = 9u, PIXEL_ROWS = 12u;
+// beyond float rounding of the corners' pixel positions (the tiles are
+// already one pixel wider than their centres)
+const float MARGIN = 1e-2;
+
+shared vec2 corner[8];
+shared bool in_front[8];
+// per line through two corners: its unit normal and the corners' extent on it
+shared vec4 axis[28];
+
+float head_float(uint k) { return uintBitsToFloat(tiles[PIXEL_ROWS + k]); }
+
+void list_tile(uint tx, uint ty, uint box)
+{
+    uint tile = ty * tiles[TILE_COLS] + tx;
+    uint n = atomicAdd(tiles[tiles[COUNTS_AT] + tile], 1u);
+    if (n == 0u)
+        tiles[tiles[LIST_AT] + atomicAdd(tiles[GROUPS], 1u)] = tx | ty << 16;
+    if (n < tiles[SLOTS])
+        tiles[tiles[SLOTS_AT] + tile * tiles[SLOTS] + n] = box;
+}
+
+void main()
+{
+    uint box = gl_WorkGroupID.x, me = gl_LocalInvocationIndex;
+    if (me < 8u) {
+        vec4 p = vec4(boxes[6u * box + ((me & 1u) != 0u ? 3u : 0u)],
+                      boxes[6u * box + 1u + ((me & 2u) != 0u ? 3u : 0u)],
+                      boxes[6u * box + 2u + ((me & 4u) != 0u ? 3u : 0u)], 1.0);
+        vec3 at;
+        for (uint k = 0u; k < 3u; ++k)
+            at[k] = dot(vec4(head_float(4u * k), head_float(4u * k + 1u), head_float(4u * k + 2u),
+                             head_float(4u * k + 3u)),
+                        p);
+        in_front[me] = at.z > 0.0;
+        corner[me] = at.xy / at.z;
+    }
+    barrier();
+    uint front = 0u;
+    for (uint k = 0u; k < 8u; ++k)
+        front += in_front[k] ? 1u : 0u;
+    if (front == 0u)
+        return; // wholly behind the camera: no ray goes there
+    if (me < 28u) {
+        // pair me of the 28 (i < j)
+        uint i = 0u, k = me;
+        while (k >= 7u - i) {
+            k -= 7u - i;
+            i += 1u;
+        }
+        uint j = i + 1u + k;
+        vec2 e = corner[j] - corner[i];
+        vec2 n = vec2(-e.y, e.x);
+        float len = length(n);
+        vec4 a = vec4(0.0, 0.0, -1.0 / 0.0, 1.0 / 0.0); // separates nothing
+        if (len > 1e-6 && front == 8u) {
+            a = vec4(n / len, 1.0 / 0.0, -1.0 / 0.0);
+            for (uint k = 0u; k < 8u; ++k) {
+                float d = dot(a.xy, corner[k]);
+                a.z = min(a.z, d);
+                a.w = max(a.w, d);
+            }
+        }
+        axis[me] = a;
+    }
+    barrier();
+    uint tile_cols = tiles[TILE_COLS], tile_rows = tiles[TILE_ROWS];
+    // the tiles of its bounds; a box partly behind (float rounding at the
+    // camera's plane, the host found none): every tile of the band
+    vec2 lo = vec2(1.0 / 0.0), hi = vec2(-1.0 / 0.0);
+    for (uint k = 0u; k < 8u; ++k) {
+        lo = min(lo, corner[k]);
+        hi = max(hi, corner[k]);
+    }
+    // tile t's centres, one pixel wider: [8 t - 1, 8 t + 8]
+    vec2 t0 = clamp(ceil((lo - 8.0 - MARGIN) / 8.0), vec2(0.0),
+                    vec2(float(tile_cols), float(tile_rows)));
+    vec2 t1 = clamp(floor((hi + 1.0 + MARGIN) / 8.0), vec2(-1.0),
+                    vec2(float(tile_cols), float(tile_rows)) - 1.0);
+    if (front < 8u) {
+        t0 = vec2(0.0);
+        t1 = vec2(float(tile_cols), float(tile_rows)) - 1.0;
+    }
+    if (t1.x < t0.x || t1.y < t0.y)
+        return;
+    uint x0 = uint(t0.x), y0 = uint(t0.y), cols = uint(t1.x) - x0 + 1u;
+    uint count = cols * (uint(t1.y) - y0 + 1u);
+    for (uint k = me; k < count; k += 64u) {
+        uint tx = x0 + k % cols, ty = y0 + k / cols;
+        vec2 r0 = vec2(8.0 * float(tx) - 1.0, 8.0 * float(ty) - 1.0) - MARGIN;
+        vec2 r1 = r0 + 9.0 + 2.0 * MARGIN;
+        bool apart = false;
+        for (uint a = 0u; a < 28u && !apart; ++a) {
+            vec4 s = axis[a];
+            // the rectangle's extent on the axis
+            float low = s.x * (s.x > 0.0 ? r0.x : r1.x) + s.y * (s.y > 0.0 ? r0.y : r1.y);
+            float high = s.x * (s.x > 0.0 ? r1.x : r0.x) + s.y * (s.y > 0.0 ? r1.y : r0.y);
+            apart = high < s.z - MARGIN || low > s.w + MARGIN;
+        }
+        if (!apart)
+            list_tile(tx, ty, box);
+    }
+}
