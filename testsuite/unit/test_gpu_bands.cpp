@@ -293,12 +293,13 @@ TEST(OverlayTiles, ManyBoxesAreListedTileByTileAsEachAlone)
     }
 }
 
-/// Two boreholes drilled where the model's stacks are, 1.5 cells wide.
-Scene two_boreholes(const Model &m)
+/// Boreholes drilled where the model's stacks are at `cells` (row,
+/// column), 1.5 cells wide.
+Scene boreholes_at(const Model &m, const std::vector<std::pair<int, int>> &cells)
 {
     const Frame &f = m.frame();
     Scene scene;
-    for (const auto &[row, col] : {std::pair{10, 12}, std::pair{25, 40}}) {
+    for (const auto &[row, col] : cells) {
         Borehole b;
         b.x = f.west + (col + 0.5) * f.ew_res();
         b.y = f.north - (row + 0.5) * f.ns_res();
@@ -308,6 +309,8 @@ Scene two_boreholes(const Model &m)
     scene.borehole_radius = 1.5 * f.ew_res();
     return scene;
 }
+
+Scene two_boreholes(const Model &m) { return boreholes_at(m, {{10, 12}, {25, 40}}); }
 
 TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)
 {
@@ -336,18 +339,10 @@ TEST_P(GpuBands, TheGpuListsTheTilesTheHostsListingWould)
     // 16 rows: the GPU's culling lists every tile overlay_tiles lists on
     // the host (float rounding may add one at a box's edge)
     const Model m = geology(40, 56, 30);
-    const auto &f = m.frame();
-    Scene scene;
-    for (int k = 0; k < 20; ++k) {
-        const int row = 3 + 7 * (k / 5) % 34, col = 4 + 11 * (k % 5) + k / 5;
-        Borehole b;
-        b.x = f.west + (col + 0.5) * f.ew_res();
-        b.y = f.north - (row + 0.5) * f.ns_res();
-        b.stack = b.model_stack = m.stack_intervals(m.cell_index(row, col));
-        scene.boreholes.push_back(std::move(b));
-    }
-    scene.borehole_radius = 1.5 * f.ew_res();
-    const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 16});
+    std::vector<std::pair<int, int>> cells;
+    for (int k = 0; k < 20; ++k)
+        cells.emplace_back(3 + 7 * (k / 5) % 34, 4 + 11 * (k % 5) + k / 5);
+    const Renderer renderer(m, 2.0, boreholes_at(m, cells), Shading{}, {2, true, 16});
     const Tracer &t = renderer.tracer();
     sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
     const Outputs all{true, true, true};
