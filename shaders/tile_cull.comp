@@ -16,17 +16,17 @@ layout(std430, binding = 12) buffer Tiles { uint tiles[]; };
 layout(std430, binding = 14) readonly buffer Boxes { float boxes[]; };
 
 const uint GROUPS = 0u, SLOTS = 3u, TILE_COLS = 4u, TILE_ROWS = 5u, LIST_AT = 7u,
-           COUNTS_AT = 8u, SLOTS_AT = 9u, PIXEL_ROWS = 12u;
+           COUNTS_AT = 8u, SLOTS_AT = 9u, PIXEL_ROWS = 12u, CAMERA_HI = 24u, CAMERA_LO = 28u;
 // beyond float rounding of the corners' pixel positions (the tiles are
-// already one pixel wider than their centres)
-const float MARGIN = 1e-2;
+// already one pixel wider than their centres), and a share of their size
+const float MARGIN = 1e-2, ROUNDING = 5e-7;
 
 shared vec2 corner[8];
 shared bool in_front[8];
 // per line through two corners: its unit normal and the corners' extent on it
 shared vec4 axis[28];
 
-float head_float(uint k) { return uintBitsToFloat(tiles[PIXEL_ROWS + k]); }
+float head_float(uint word) { return uintBitsToFloat(tiles[word]); }
 
 void list_tile(uint tx, uint ty, uint box)
 {
@@ -42,16 +42,23 @@ void main()
 {
     uint box = gl_WorkGroupID.x, me = gl_LocalInvocationIndex;
     if (me < 8u) {
-        vec4 p = vec4(boxes[6u * box + ((me & 1u) != 0u ? 3u : 0u)],
+        vec3 p = vec3(boxes[6u * box + ((me & 1u) != 0u ? 3u : 0u)],
                       boxes[6u * box + 1u + ((me & 2u) != 0u ? 3u : 0u)],
-                      boxes[6u * box + 2u + ((me & 4u) != 0u ? 3u : 0u)], 1.0);
+                      boxes[6u * box + 2u + ((me & 4u) != 0u ? 3u : 0u)]);
+        vec3 hi = vec3(head_float(CAMERA_HI), head_float(CAMERA_HI + 1u),
+                       head_float(CAMERA_HI + 2u));
+        vec3 lo = vec3(head_float(CAMERA_LO), head_float(CAMERA_LO + 1u),
+                       head_float(CAMERA_LO + 2u));
+        vec3 v = (p - hi) - lo;
         vec3 at;
-        for (uint k = 0u; k < 3u; ++k)
-            at[k] = dot(vec4(head_float(4u * k), head_float(4u * k + 1u), head_float(4u * k + 2u),
-                             head_float(4u * k + 3u)),
-                        p);
-        in_front[me] = at.z > 0.0;
+        for (uint k = 0u; k < 3u; ++k) {
+            uint row = PIXEL_ROWS + 4u * k;
+            at[k] = dot(vec3(head_float(row), head_float(row + 1u), head_float(row + 2u)), v) +
+                    head_float(row + 3u);
+        }
         corner[me] = at.xy / at.z;
+        // a corner beyond float's range: as if behind (every tile)
+        in_front[me] = at.z > 0.0 && !any(isinf(corner[me])) && !any(isnan(corner[me]));
     }
     barrier();
     uint front = 0u;
@@ -83,6 +90,10 @@ void main()
     }
     barrier();
     uint tile_cols = tiles[TILE_COLS], tile_rows = tiles[TILE_ROWS];
+    float size = 0.0;
+    for (uint k = 0u; k < 8u; ++k)
+        size = max(size, abs(corner[k].x) + abs(corner[k].y));
+    float margin = MARGIN + ROUNDING * size;
     // the tiles of its bounds; a box partly behind (float rounding at the
     // camera's plane, the host found none): every tile of the band
     vec2 lo = vec2(1.0 / 0.0), hi = vec2(-1.0 / 0.0);
@@ -91,9 +102,9 @@ void main()
         hi = max(hi, corner[k]);
     }
     // tile t's centres, one pixel wider: [8 t - 1, 8 t + 8]
-    vec2 t0 = clamp(ceil((lo - 8.0 - MARGIN) / 8.0), vec2(0.0),
+    vec2 t0 = clamp(ceil((lo - 8.0 - margin) / 8.0), vec2(0.0),
                     vec2(float(tile_cols), float(tile_rows)));
-    vec2 t1 = clamp(floor((hi + 1.0 + MARGIN) / 8.0), vec2(-1.0),
+    vec2 t1 = clamp(floor((hi + 1.0 + margin) / 8.0), vec2(-1.0),
                     vec2(float(tile_cols), float(tile_rows)) - 1.0);
     if (front < 8u) {
         t0 = vec2(0.0);
@@ -105,15 +116,15 @@ void main()
     uint count = cols * (uint(t1.y) - y0 + 1u);
     for (uint k = me; k < count; k += 64u) {
         uint tx = x0 + k % cols, ty = y0 + k / cols;
-        vec2 r0 = vec2(8.0 * float(tx) - 1.0, 8.0 * float(ty) - 1.0) - MARGIN;
-        vec2 r1 = r0 + 9.0 + 2.0 * MARGIN;
+        vec2 r0 = vec2(8.0 * float(tx) - 1.0, 8.0 * float(ty) - 1.0) - margin;
+        vec2 r1 = r0 + 9.0 + 2.0 * margin;
         bool apart = false;
         for (uint a = 0u; a < 28u && !apart; ++a) {
             vec4 s = axis[a];
             // the rectangle's extent on the axis
             float low = s.x * (s.x > 0.0 ? r0.x : r1.x) + s.y * (s.y > 0.0 ? r0.y : r1.y);
             float high = s.x * (s.x > 0.0 ? r1.x : r0.x) + s.y * (s.y > 0.0 ? r1.y : r0.y);
-            apart = high < s.z - MARGIN || low > s.w + MARGIN;
+            apart = high < s.z - margin || low > s.w + margin;
         }
         if (!apart)
             list_tile(tx, ty, box);

@@ -452,6 +452,12 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    }
                    if (!boreholes)
                        return;
+                   // GL takes at least 65535 work groups a dimension
+                   if (all_tiles > 65535 || boxes.size() > 65535)
+                       sbrt::fail("boreholes with the model on the GPU: ", boxes.size(),
+                                  " boreholes over a band of ", all_tiles,
+                                  " tiles, more than one dispatch takes (65535): fewer rows "
+                                  "a band or fewer boreholes");
                    stats_.tiles += all_tiles;
                    // the band's tiles a box reaches: listed by the GPU (or
                    // every tile by the host), then the boreholes' pass over
@@ -491,7 +497,9 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                        });
                    }
                    // the list and the model pass's hits before the pass reads them
-                   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+                   // (and the count before it is copied out)
+                   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
+                                     GL_BUFFER_UPDATE_BARRIER_BIT);
                    borehole_program->use();
                    timer_.time(int(Pass::shade_boreholes), [&] {
                        if (every_tile) {
@@ -501,12 +509,19 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                        gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list->name());
                        gl_.DispatchComputeIndirect(0);
                    });
+                   std::optional<MappedBuffer> &listed = tile_counts_[size_t(slot)];
+                   if (!listed)
+                       listed.emplace(gl_, sizeof(uint32_t));
+                   gl_.BindBuffer(GL_COPY_READ_BUFFER, list->name());
+                   gl_.BindBuffer(GL_COPY_WRITE_BUFFER, listed->name());
+                   gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
+                                         sizeof(uint32_t));
                    stats_.borehole_submit_ms += ms_since(submit);
                });
     if (boreholes) {
         // the tiles the GPU listed in the band just done (its slot's count)
         uint32_t listed = 0;
-        tile_lists_[size_t(bands_.last_slot())]->download(&listed, 4);
+        std::memcpy(&listed, tile_counts_[size_t(bands_.last_slot())]->host(), sizeof listed);
         stats_.borehole_tiles += listed;
     }
 }

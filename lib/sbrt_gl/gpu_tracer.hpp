@@ -99,8 +99,8 @@ public:
     /// host. The next band is dispatched before this one is waited for.
     /// Adds to stats().
     /// Boreholes drawn with the model are shaded in a second pass over the
-    /// 8 x 8 tiles their pixels lie in (overlay_tiles), the model alone in
-    /// the first, skipping with the model's own pyramid.
+    /// 8 x 8 tiles their pixels lie in (listed by the GPU, tile_cull.comp),
+    /// the model alone in the first, skipping with the model's own pyramid.
     void shade_rows(const sbrt::Camera &camera, int first, int count,
                     const sbrt::Shading &shading, const sbrt::Outputs &outputs,
                     sbrt::Band &band, unsigned cpu_threads = 0);
@@ -259,6 +259,9 @@ private:
     std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_, cull_program_;
     std::optional<GlBuffer> boxes_;
     std::array<std::optional<GlBuffer>, MappedBands::SLOTS> tile_lists_;
+    /// the count of tiles listed, copied there for the host once the band
+    /// is done (a read of GPU memory would wait for all queued)
+    std::array<std::optional<MappedBuffer>, MappedBands::SLOTS> tile_counts_;
     /// boreholes and curtains drawn by the shading program (bindings 9,
     /// 10 and, with the model, each cell's boreholes: 11)
     std::optional<GlBuffer> overlays_, logs_, cell_overlays_;

@@ -120,15 +120,16 @@ TEST(Camera, PixelRowsPlaceAPointWhereProjectDoes)
         for (int k = 0; k < 200; ++k) {
             const glm::dvec4 p(at(random), at(random), at(random), 1);
             double x, y;
-            const double w = glm::dot(rows[2], p);
+            const glm::dvec4 v(glm::dvec3(p) - camera.origin(), 1);
+            const double w = glm::dot(rows[2], v);
             if (!camera.project(glm::dvec3(p), x, y)) {
                 EXPECT_LE(w, 0);
                 continue;
             }
             ++projected;
             ASSERT_GT(w, 0);
-            EXPECT_NEAR(glm::dot(rows[0], p) / w, (x + 1) / 2 * camera.cols() - 0.5, 1e-9);
-            EXPECT_NEAR(glm::dot(rows[1], p) / w, (1 - y) / 2 * camera.rows() - 0.5, 1e-9);
+            EXPECT_NEAR(glm::dot(rows[0], v) / w, (x + 1) / 2 * camera.cols() - 0.5, 1e-9);
+            EXPECT_NEAR(glm::dot(rows[1], v) / w, (1 - y) / 2 * camera.rows() - 0.5, 1e-9);
         }
         EXPECT_GT(projected, 50);
     }

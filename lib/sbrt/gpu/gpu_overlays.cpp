@@ -206,6 +206,9 @@ GpuTileHead make_gpu_tile_head(const Tracer &tracer, const Camera &camera, int f
     head.slots = slots;
     head.tile_cols = uint32_t((camera.cols() + 7) / 8);
     head.tile_rows = uint32_t((rows + 7) / 8);
+    if (head.tile_cols > 0xffff || head.tile_rows > 0xffff)
+        fail("make_gpu_tile_head: ", head.tile_cols, " x ", head.tile_rows,
+             " tiles, more than 65535 a side");
     head.boxes = boxes;
     const uint64_t tiles = uint64_t(head.tile_cols) * head.tile_rows;
     const uint64_t words = sizeof head / 4 + 2 * tiles + tiles * slots;
@@ -215,18 +218,22 @@ GpuTileHead make_gpu_tile_head(const Tracer &tracer, const Camera &camera, int f
     head.counts_at = uint32_t(head.list_at + tiles);
     head.slots_at = uint32_t(head.counts_at + tiles);
     head.words = uint32_t(words);
-    // the forms of a map point, then of a local one (map = local / scale +
-    // the point at local 0), the band's first row at 0
+    // the forms of a map point's offset from the camera, then of a local
+    // one's (map offset = local offset / scale), the band's first row at 0
     const CoordinateFrame &frame = tracer.frame();
-    const glm::dvec3 scale = frame.scale(), zero = -frame.to_local(glm::dvec3(0)) / scale;
+    const glm::dvec3 scale = frame.scale(), eye = frame.to_local(camera.origin());
     const std::array<glm::dvec4, 3> map = camera.pixel_rows();
     for (int k = 0; k < 3; ++k) {
         glm::dvec4 form = map[size_t(k)];
         if (k == 1)
             form -= double(first_row) * map[2];
-        const glm::dvec4 local(glm::dvec3(form) / scale, form.w + glm::dot(glm::dvec3(form), zero));
+        const glm::dvec4 local(glm::dvec3(form) / scale, form.w);
         for (int a = 0; a < 4; ++a)
             head.pixel_rows[k][a] = float(local[a]);
+    }
+    for (int a = 0; a < 3; ++a) {
+        head.camera_hi[a] = float(eye[a]);
+        head.camera_lo[a] = float(eye[a] - double(head.camera_hi[a]));
     }
     return head;
 }

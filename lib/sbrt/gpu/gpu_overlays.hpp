@@ -101,10 +101,15 @@ struct GpuTileHead {
     uint32_t slots = 0;
     uint32_t tile_cols = 0, tile_rows = 0, boxes = 0;
     uint32_t list_at = 0, counts_at = 0, slots_at = 0, words = 0, pad = 0;
-    /// Camera::pixel_rows of local points, the band's first row at 0
+    /// Camera::pixel_rows in the local frame, the band's first row at 0:
+    /// xyz the coefficients of v = p - the camera, w the constant
     float pixel_rows[3][4] = {};
+    /// the camera in the local frame as floats hi + lo (xyz): v is (p -
+    /// hi) - lo, whose rounding grows with the distance to the camera,
+    /// not with the distance to local 0
+    float camera_hi[4] = {}, camera_lo[4] = {};
 };
-static_assert(sizeof(GpuTileHead) == 24 * 4, "24 words");
+static_assert(sizeof(GpuTileHead) == 32 * 4, "32 words");
 
 /// The head of the band of `rows` rows from `first_row` of `camera`'s
 /// image, with `boxes` boxes and `slots` box indices a tile (0: every

@@ -173,7 +173,7 @@ std::array<glm::dvec4, 3> Camera::pixel_rows() const
     // project's x = (dot(v, du) / (s |du|^2) - x_offset) / x_scale with
     // v = p - origin, s = dot(v, forward) (1 parallel); then the pixel's
     // column (x + 1) / 2 cols - 0.5, and its row alike from y, downwards
-    const auto form = [&](glm::dvec3 a) { return glm::dvec4(a, -glm::dot(a, origin_)); };
+    const auto form = [](glm::dvec3 a) { return glm::dvec4(a, 0); };
     const glm::dvec4 w = kind_ == Kind::perspective ? form(forward_) : glm::dvec4(0, 0, 0, 1);
     const glm::dvec4 x = form(du_ / glm::dot(du_, du_)), y = form(dv_ / glm::dot(dv_, dv_));
     const double cx = cols_ / (2 * x_scale_), cy = rows_ / (2 * window_scale_);

@@ -71,11 +71,11 @@ public:
     /// Normalised device coordinates (x, y) of the ray through point p;
     /// false where p is not in front of a perspective camera.
     bool project(glm::dvec3 p, double &x, double &y) const;
-    /// Where p falls in this image as three linear forms of (p, 1): with
-    /// (c, r, w) their values, the pixel position is (c / w, r / w), pixel
-    /// centres whole and rows from the top (project's x, y as (x + 1) / 2
-    /// cols - 0.5 and (1 - y) / 2 rows - 0.5); w > 0 where p lies in front
-    /// of a perspective camera, 1 for a parallel one.
+    /// Where p falls in this image as three linear forms of (p - origin(),
+    /// 1): with (c, r, w) their values, the pixel position is (c / w, r /
+    /// w), pixel centres whole and rows from the top (project's x, y as (x
+    /// + 1) / 2 cols - 0.5 and (1 - y) / 2 rows - 0.5); w > 0 where p lies
+    /// in front of a perspective camera, 1 for a parallel one.
     std::array<glm::dvec4, 3> pixel_rows() const;
     int rows() const { return rows_; }
     int cols() const { return cols_; }
