@@ -13,8 +13,8 @@
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 #include "gpu_internal.hpp"
-#include "gpu/gpu_overlays.hpp"
 #include "shader_sources.hpp"
+#include "gpu/gpu_overlays.hpp"
 #include "gpu/gpu_paint.hpp"
 
 namespace sbrt_gl {
@@ -351,11 +351,22 @@ void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &s
                                    checked_bytes(overlays.cells.size() * sizeof(uint32_t),
                                                  max_block_bytes_, "cells' boreholes"),
                                    overlays.cells.data());
+        // with the model: the boxes of the boreholes' pass and its culling
+        if (sbrt::gpu_overlay_mode(tracer_) == sbrt::GpuOverlayMode::with_model) {
+            const std::vector<float> corners =
+                sbrt::make_gpu_boxes(tracer_, tracer_.overlay_boxes());
+            boxes_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                           checked_bytes(corners.size() * sizeof(float), max_block_bytes_,
+                                         "boreholes' boxes"),
+                           corners.data());
+        }
     }
     overlays_->bind(9);
     logs_->bind(10);
     if (cell_overlays_)
         cell_overlays_->bind(11);
+    if (boxes_)
+        boxes_->bind(14);
 }
 
 void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, int width,
@@ -413,14 +424,15 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     sbrt::GpuView view = traced_view(camera, loop_budget_);
     bind_model();
     bind_shading(shade, shading);
-    if (boreholes && !boxes_) {
-        const std::vector<float> corners = sbrt::make_gpu_boxes(tracer_, boxes);
-        boxes_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                       checked_bytes(corners.size() * sizeof(float), max_block_bytes_,
-                                     "boreholes' boxes"),
-                       corners.data());
-    }
     const int cols = camera.cols();
+    // GL takes at least 65535 work groups a dimension: the cull's a box,
+    // the boreholes' pass's a tile of the band
+    const size_t band_tiles = size_t((cols + 7) / 8) * size_t((layout.rows + 7) / 8);
+    if (boreholes && (band_tiles > 65535 || boxes.size() > 65535))
+        sbrt::fail("boreholes with the model on the GPU: ", boxes.size(),
+                   " boreholes over bands of ", band_tiles,
+                   " tiles, more than one dispatch takes (65535): fewer rows a band or "
+                   "fewer boreholes");
     // each pixel's t of its hit in the model's pass, for the boreholes'
     // (binding 13): a buffer for each slot, as a band dispatched ahead
     // writes its own while the band before still reads
@@ -452,12 +464,6 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    }
                    if (!boreholes)
                        return;
-                   // GL takes at least 65535 work groups a dimension
-                   if (all_tiles > 65535 || boxes.size() > 65535)
-                       sbrt::fail("boreholes with the model on the GPU: ", boxes.size(),
-                                  " boreholes over a band of ", all_tiles,
-                                  " tiles, more than one dispatch takes (65535): fewer rows "
-                                  "a band or fewer boreholes");
                    stats_.tiles += all_tiles;
                    // the band's tiles a box reaches: listed by the GPU (or
                    // every tile by the host), then the boreholes' pass over
@@ -489,7 +495,6 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    stats_.borehole_list_ms += ms_since(listing);
                    const auto submit = Clock::now();
                    list->bind(12);
-                   boxes_->bind(14);
                    if (!every_tile) {
                        cull_program().use();
                        timer_.time(int(Pass::cull_tiles), [&] {
