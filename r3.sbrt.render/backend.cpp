@@ -70,9 +70,13 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
                               "by voxel are made on the host)")
                           : _("Shading: on the CPU (kernel normals of an image "
                               "whose hits do not fit the GPU)"));
-    if (first)
+    if (first) {
         G_verbose_message(_("Model upload: %.1f ms (kept for the next frames)"),
                           r.gpu.upload_ms);
+        G_verbose_message(_("GPU programs: %.1f ms (compiled, or loaded from the program "
+                            "cache where an earlier run compiled them)"),
+                          r.gpu.programs_ms);
+    }
     if (r.shaded_on_gpu)
         G_verbose_message(_("Bands back: %d, in host memory as the GPU wrote them (%.2f bytes "
                             "a pixel); the host's time after the last: %.2f ms"),

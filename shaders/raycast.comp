@@ -62,8 +62,8 @@ bool passes(vec2 range, float z_a, float z_b)
 }
 
 #ifdef SBRT_SHADE
-// The outputs of the pixel (common/shade.glsl), or the word that sends it
-// back to the host: over the loop budget
+// The outputs of the pixel, kept for write_kept_pixel (common/shade.glsl),
+// or the word that sends it back to the host: over the loop budget
 void finish(uint index, vec3 point, uint code, float t)
 {
 #ifdef SBRT_HIT_T
@@ -77,8 +77,8 @@ void finish(uint index, vec3 point, uint code, float t)
         flag_over_budget(index);
         return;
     }
-    write_pixel(index, point, code, hit_normal(code, ray_d),
-                vec4(veil, transmittance), length((t - t_eye) * ray_d * real_unit.xyz));
+    keep_pixel(index, point, code, hit_normal(code, ray_d), vec4(veil, transmittance),
+               length((t - t_eye) * ray_d * real_unit.xyz));
 }
 #else
 void finish(uint index, vec3 point, uint code, float t)
@@ -492,8 +492,10 @@ void trace_pixel()
             finish(index, vec3(0.0), CODE_OVER_BUDGET, 0.0);
             return;
         }
-        if (crossed == OV_ENDED)
+        if (crossed == OV_ENDED) {
+            ov_keep_end();
             return;
+        }
         boreholes_crossed = true; // on to the next cell
         continue;
     }
@@ -513,6 +515,7 @@ void main()
     // packed into the band's rows once all are shaded
     group_rgb[gl_LocalInvocationIndex] = 0u;
     trace_pixel();
+    write_kept_pixel(); // where its ray ended: one copy of the shading
     memoryBarrierShared();
     barrier();
     pack_group_rgb(min(options.w, grid.w - options.z), grid.z);

@@ -131,9 +131,11 @@ std::string GpuTracer::gl_renderer() const
 
 void GpuTracer::reset_stats()
 {
-    const double upload_ms = stats_.upload_ms;
+    // what the tracer's life has cost so far, not a frame's
+    const double upload_ms = stats_.upload_ms, programs_ms = stats_.programs_ms;
     stats_ = GpuStats();
     stats_.upload_ms = upload_ms;
+    stats_.programs_ms = programs_ms;
     timer_.take_ms(0); // the queries of what went before
 }
 
@@ -173,9 +175,7 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
 const GlComputeProgram &GpuTracer::record_program() const
 {
     // compiled when first used: a render shaded on the GPU never needs it
-    if (!program_)
-        program_.emplace(gl_, pass_sources(Pass::records, layout_, tracer_), &cache_);
-    return *program_;
+    return program_ ? *program_ : built(program_, pass_sources(Pass::records, layout_, tracer_));
 }
 
 void GpuTracer::bind_model() const
@@ -285,12 +285,7 @@ GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, Pass 
         : pass == Pass::shade_boreholes ? (draped ? boreholes_drape_program_ : boreholes_program_)
         : painted                       ? paint_program_
                                         : (draped ? drape_program_ : shade_program_);
-    if (!program) {
-        const auto start = Clock::now();
-        program.emplace(gl_, pass_sources(pass, layout_, tracer_, draped, painted), &cache_);
-        stats_.upload_ms += ms_since(start);
-    }
-    return *program;
+    return program ? *program : built(program, pass_sources(pass, layout_, tracer_, draped, painted));
 }
 
 void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading)
@@ -373,7 +368,7 @@ void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, in
                          int height)
 {
     if (!program)
-        program.emplace(gl_, pass_sources(pass, layout_, tracer_), &cache_);
+        built(program, pass_sources(pass, layout_, tracer_));
     program->use();
     timer_.time(int(pass), [&] {
         gl_.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
@@ -533,13 +528,17 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
 
 GlComputeProgram &GpuTracer::cull_program()
 {
-    if (!cull_program_) {
-        const auto start = Clock::now();
-        cull_program_.emplace(gl_, std::vector<const char *>{"#version 450\n", SHADER_TILE_CULL},
-                              &cache_);
-        stats_.upload_ms += ms_since(start);
-    }
-    return *cull_program_;
+    return cull_program_ ? *cull_program_
+                         : built(cull_program_, {"#version 450\n", SHADER_TILE_CULL});
+}
+
+GlComputeProgram &GpuTracer::built(std::optional<GlComputeProgram> &program,
+                                   const std::vector<const char *> &sources) const
+{
+    const auto start = Clock::now();
+    program.emplace(gl_, sources, &cache_);
+    stats_.programs_ms += ms_since(start);
+    return *program;
 }
 
 void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_count,

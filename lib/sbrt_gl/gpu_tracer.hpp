@@ -35,7 +35,7 @@ enum class Pass : int;
 /// Figures of the last trace_image call (or of the trace_rows calls since
 /// reset_stats).
 struct GpuStats {
-    double upload_ms = 0;   ///< shader compile and model upload
+    double upload_ms = 0;   ///< model upload
     double trace_ms = 0;    ///< dispatches until the GPU is done
     double readback_ms = 0; ///< hit records back and decoded; shaded
                             ///< bands' rays over the budget traced here
@@ -58,6 +58,10 @@ struct GpuStats {
     /// The host's time from the frame's start to its first shading
     /// dispatch (the scene's lists, layouts and bindings).
     double before_dispatch_ms = 0;
+    /// The host's time building programs so far (as upload_ms, the
+    /// tracer's whole life): compiled by the driver, or loaded from the
+    /// program cache.
+    double programs_ms = 0;
     /// Bands the model pass shaded (every band but where a borehole's box
     /// holds the camera).
     int model_pass_bands = 0;
@@ -205,6 +209,10 @@ private:
     GlComputeProgram &shading_program(const sbrt::Shading &shading, Pass pass);
     /// The culling pass of the boreholes' tiles (tile_cull.comp).
     GlComputeProgram &cull_program();
+    /// `program`, built from `sources` (compiled, or loaded from the cache)
+    /// where it is not yet; the time in stats_.programs_ms.
+    GlComputeProgram &built(std::optional<GlComputeProgram> &program,
+                            const std::vector<const char *> &sources) const;
     /// Compiles `program` for `pass` (gpu_internal.hpp) when first needed
     /// and runs it over width x height invocations (pixels of the whole
     /// image, or the first pass's tiles), its buffers bound; a barrier
@@ -287,7 +295,7 @@ private:
     /// the drape's surface and texture (binding 7), and whose they are
     std::optional<GlBuffer> drape_;
     const sbrt::Drape *drape_on_gpu_ = nullptr;
-    GpuStats stats_;
+    mutable GpuStats stats_; ///< mutable: the hit records' program is built when first used
     uint32_t loop_budget_ = sbrt::GPU_LOOP_BUDGET;
 };
 

@@ -65,31 +65,42 @@ float ov_t_at(float z) { return from_origin(z, ov_hi.z, ov_lo.z) / ov_d.z; }
 vec2 ov_from(vec2 c) { return ((ov_hi.xy - c) + ov_lo.xy) * map_unit.xy; }
 vec2 ov_dir() { return ov_d.xy * map_unit.xy; }
 
-// `surface`: face | plane << 4 (as raycast.comp's wall); n its normal
-// where it is a cylinder, curtain or split face
-void ov_write(float t, uint material, uint surface, vec3 n)
+// The surface that ends the walk, noted by ov_meet and kept for the
+// pixel's outputs by ov_keep_end (one place: see keep_pixel): at t, code
+// material | surface << 16, surface as raycast.comp's wall (face | plane
+// << 4), n its normal where it is a cylinder, curtain or split face; code
+// 0 where a veil ends the walk or nothing was met
+float ov_end_t = 0.0;
+uint ov_end_code = 0u;
+vec3 ov_end_n = vec3(0.0);
+
+void ov_keep_end()
 {
-    uint code = material | surface << 16;
-    if ((surface & 0xfu) < FACE_CYLINDER)
-        n = hit_normal(code, ray_d);
-    write_pixel(ov_index, (ov_hi + t * ov_d) + ov_lo, code, n,
-                vec4(veil, transmittance), length((t - t_eye) * ray_d * real_unit.xyz));
+    vec3 n = ov_end_n;
+    if (((ov_end_code >> 16) & 0xfu) < FACE_CYLINDER)
+        n = hit_normal(ov_end_code, ray_d);
+    keep_pixel(ov_index, (ov_hi + ov_end_t * ov_d) + ov_lo, ov_end_code, n,
+                vec4(veil, transmittance), length((ov_end_t - t_eye) * ray_d * real_unit.xyz));
 }
 
-// Tracer::meet: true where the walk ends (an opaque hit, written, or a
-// veil nothing shows through)
+// Tracer::meet: true where the walk ends (an opaque hit, or a veil
+// nothing shows through: noted for ov_keep_end)
 bool ov_meet(uint material, float t_enter, float t_exit, uint surface, vec3 n)
 {
     if (material == 0u)
         return false;
     vec4 look = materials[material];
     if (look.w < 0.0) {
-        ov_write(t_enter, material, surface, n);
+        ov_end_t = t_enter;
+        ov_end_code = material | surface << 16;
+        ov_end_n = n;
         return true;
     }
     float crossed = t_exit > t_enter ? (t_exit - t_enter) * ov_length_per_t : overlay_head.y;
     if (absorb(look, crossed)) {
-        ov_write(0.0, 0u, FACE_NONE, vec3(0.0));
+        ov_end_t = 0.0;
+        ov_end_code = 0u | FACE_NONE << 16;
+        ov_end_n = vec3(0.0);
         return true;
     }
     return false;
@@ -125,10 +136,11 @@ bool ov_walk(bool model, uint first, uint last, float t_a, float t_b, uint surfa
         for (uint j = k;; --j) {
             ++ov_work;
             if (j != last) {
+                // entered through `surface` (j == k) or its top
                 float t_exit = j > first ? min(t_b, ov_t_at(ov_top(model, j - 1u))) : t_b;
-                if (j == k ? ov_meet(ov_material(model, j), t_a, t_exit, surface, n)
-                           : ov_meet(ov_material(model, j), ov_t_at(ov_top(model, j)), t_exit,
-                                     FACE_TOP, vec3(0.0)))
+                float t_enter = j == k ? t_a : ov_t_at(ov_top(model, j));
+                if (ov_meet(ov_material(model, j), t_enter, t_exit, j == k ? surface : FACE_TOP,
+                            j == k ? n : vec3(0.0)))
                     return true;
             }
             if (j == first || !(ov_top(model, j - 1u) > z_b))
@@ -139,10 +151,11 @@ bool ov_walk(bool model, uint first, uint last, float t_a, float t_b, uint surfa
         ++ov_work;
         if (j != k && !(ov_top(model, j - 1u) < z_b))
             return false;
+        // entered through `surface` (j == k) or its bottom
         float t_exit = ov_d.z == 0.0 ? t_b : min(t_b, ov_t_at(ov_top(model, j)));
-        if (j == k ? ov_meet(ov_material(model, j), t_a, t_exit, surface, n)
-                   : ov_meet(ov_material(model, j), ov_t_at(ov_top(model, j - 1u)), t_exit,
-                             FACE_BOTTOM, vec3(0.0)))
+        float t_enter = j == k ? t_a : ov_t_at(ov_top(model, j - 1u));
+        if (ov_meet(ov_material(model, j), t_enter, t_exit, j == k ? surface : FACE_BOTTOM,
+                    j == k ? n : vec3(0.0)))
             return true;
         if (ov_d.z == 0.0)
             return false;
@@ -150,27 +163,29 @@ bool ov_walk(bool model, uint first, uint last, float t_a, float t_b, uint surfa
     return false;
 }
 
-// Tracer::cross_borehole: the cylinder of `o` from t_a to t_b
+// Tracer::cross_borehole: the cylinder of `o` from t_a to t_b; split (a
+// split direction s that the ray crosses in there), in two pieces, the
+// second entered through the split face. One walk in the loop: a driver
+// that inlines every call compiles it once
 bool ov_borehole(Overlay o, float t_a, float t_b, uint surface, vec3 n)
 {
     uvec2 log_stack = uvec2(o.stacks.x, o.stacks.x + o.stacks.y);
-    vec2 s = overlay_head.zw;
-    if (s == vec2(0.0))
-        return ov_walk(false, log_stack.x, log_stack.y, t_a, t_b, surface, n);
     uvec2 model_stack = uvec2(o.stacks.z, o.stacks.z + o.stacks.w);
     // the log on the side s points to, the model's stack on the other
+    // (whole cylinders, s = 0: the log)
+    vec2 s = overlay_head.zw;
     float s0 = dot(ov_from(o.ends.xy), s), s1 = dot(ov_dir(), s);
     float t_split = s1 != 0.0 ? -s0 / s1 : 1.0 / 0.0;
-    if (!(t_split > t_a && t_split < t_b)) {
-        uvec2 half_stack = s0 + 0.5 * (t_a + t_b) * s1 >= 0.0 ? log_stack : model_stack;
-        return ov_walk(false, half_stack.x, half_stack.y, t_a, t_b, surface, n);
+    bool split = s != vec2(0.0) && t_split > t_a && t_split < t_b;
+    for (uint piece = 0u; piece < (split ? 2u : 1u); ++piece) {
+        float from = piece == 0u ? t_a : t_split, to = split && piece == 0u ? t_split : t_b;
+        uvec2 stack = s == vec2(0.0) || s0 + 0.5 * (from + to) * s1 >= 0.0 ? log_stack
+                                                                      : model_stack;
+        if (ov_walk(false, stack.x, stack.y, from, to, piece == 0u ? surface : FACE_SPLIT,
+                    piece == 0u ? n : vec3(s1 > 0.0 ? -s : s, 0.0)))
+            return true;
     }
-    uvec2 before = s0 + 0.5 * (t_a + t_split) * s1 >= 0.0 ? log_stack : model_stack;
-    if (ov_walk(false, before.x, before.y, t_a, t_split, surface, n))
-        return true;
-    uvec2 after = s0 + 0.5 * (t_split + t_b) * s1 >= 0.0 ? log_stack : model_stack;
-    return ov_walk(false, after.x, after.y, t_split, t_b, FACE_SPLIT,
-                   vec3(s1 > 0.0 ? -s : s, 0.0));
+    return false;
 }
 
 // Tracer::overlay_events for one overlay: its stretch [start, end] of
@@ -308,7 +323,7 @@ void trace_overlays(float t_near, float t_far, uint wall)
             continue; // inside a cylinder already crossed
         if (!panel) {
             if (ov_cross_cylinder(o, start, stop, n, cursor, surface, surface_n))
-                return;
+                break;
             continue;
         }
         // a curtain: the class of the model at its point
@@ -326,10 +341,11 @@ void trace_overlays(float t_near, float t_far, uint wall)
         surface = FACE_FENCE;
         surface_n = n;
         if (low != stack.y && ov_meet(interval_material(low), start, start, surface, surface_n))
-            return;
+            break;
         cursor = start;
     }
-    ov_write(0.0, 0u, FACE_NONE, vec3(0.0)); // no hit: the veil before the background
+    // what ended the walk, or no hit (code 0): the veil before the background
+    ov_keep_end();
 }
 #endif
 
@@ -353,19 +369,22 @@ uint ov_cross_cell(uint cell, uvec2 stack, float t_in, float t_out, uint wall, i
         uint next = ov_next(items_first, items_last, t_in, t_out, last_start, last, start, stop, n);
         if (ov_work > ov_limit)
             return OV_OVER_BUDGET;
+        if (next != OV_NONE) {
+            last_start = start;
+            last = next;
+            if (stop <= cursor)
+                continue; // inside a cylinder already crossed
+        }
+        // the model's stack up to the next borehole, or to the cell's end
+        float to = next != OV_NONE ? start : t_out;
+        if (to > cursor && ov_walk(true, stack.x, stack.y, cursor, to, surface, surface_n))
+            return OV_ENDED;
         if (next == OV_NONE)
             break;
-        last_start = start;
-        last = next;
-        if (stop <= cursor)
-            continue; // inside a cylinder already crossed
-        if (start > cursor && ov_walk(true, stack.x, stack.y, cursor, start, surface, surface_n))
-            return OV_ENDED;
         if (ov_cross_cylinder(overlays[next], start, stop, n, cursor, surface, surface_n))
             return OV_ENDED;
     }
-    bool ended = cursor < t_out && ov_walk(true, stack.x, stack.y, cursor, t_out, surface, surface_n);
     work = ov_work;
-    return ended ? OV_ENDED : OV_PASSED;
+    return OV_PASSED;
 }
 #endif

@@ -243,6 +243,34 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
         write_double(band_planes.z + 2u * index, material != 0u ? depth : missing);
 }
 
+// The outputs of the pixel as write_pixel takes them, kept where its ray
+// ends (raycast.comp's finish, the overlays' walks) and written once
+// after the trace (write_kept_pixel): one copy of the shading in the
+// program. A driver that inlines every call compiles each copy (NVIDIA's
+// took 100 s for the boreholes' program with a copy at each end).
+bool kept = false;
+uint kept_index = 0u, kept_code = 0u;
+vec3 kept_point = vec3(0.0), kept_n = vec3(0.0);
+vec4 kept_veil_t = vec4(0.0);
+float kept_depth = 0.0;
+
+void keep_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float depth)
+{
+    kept = true;
+    kept_index = index;
+    kept_point = point;
+    kept_code = code;
+    kept_n = n;
+    kept_veil_t = veil_t;
+    kept_depth = depth;
+}
+
+void write_kept_pixel()
+{
+    if (kept)
+        write_pixel(kept_index, kept_point, kept_code, kept_n, kept_veil_t, kept_depth);
+}
+
 // After a barrier, in uniform control flow: the work group's colours into
 // its words of the band's RGB rows. Its 8 x 8 pixels start at column
 // 8 gx, byte 24 gx of a row: a whole word, so each word of a row has one

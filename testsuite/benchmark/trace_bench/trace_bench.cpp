@@ -535,11 +535,11 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
     const double rays = double(camera.rows()) * camera.cols();
     print_gpu_frame_parts(on_gpu, renderer, camera, sink, threads, repeat, label);
     std::printf("gpu_frame label=%s boreholes=%zu renderer=\"%s\" cols=%d rows=%d upload_ms=%.1f "
-                "frame_ms=%.2f dispatch_ms=%.2f mrays=%.0f frames_per_s=%.1f "
+                "programs_ms=%.1f frame_ms=%.2f dispatch_ms=%.2f mrays=%.0f frames_per_s=%.1f "
                 "cpu_frame_ms=%.1f cpu_threads=%u gpu/cpu=%.1f kernel_frame_ms=%.2f "
                 "kernel_dispatch_ms=%.2f kernel/face_dispatch=%.2f (checksum %zu)\n",
                 label.c_str(), drilled, gpu.gl_renderer().c_str(), camera.cols(), camera.rows(),
-                upload_ms, ms[0], dispatch_ms[0], rays / ms[0] / 1000, 1000 / ms[0], ms[1],
+                upload_ms, gpu.stats().programs_ms, ms[0], dispatch_ms[0], rays / ms[0] / 1000, 1000 / ms[0], ms[1],
                 thread_count(threads), ms[1] / ms[0], ms[2], dispatch_ms[1],
                 dispatch_ms[1] / dispatch_ms[0], checksum);
 }
