@@ -24,9 +24,17 @@ std::optional<std::vector<sbrt::PixelRect>> cpu_pixels_of(const sbrt::Tracer &tr
 }
 
 GpuRowTracer::GpuRowTracer(GpuTracer &gpu, const sbrt::Camera &camera, unsigned cpu_threads)
-    : gpu_(gpu), camera_(camera), threads_(cpu_threads),
-      cpu_rects_(cpu_pixels_of(gpu.tracer(), camera))
+    : gpu_(gpu), camera_(camera), threads_(cpu_threads)
 {
+}
+
+const std::optional<std::vector<sbrt::PixelRect>> &GpuRowTracer::cpu_pixels() const
+{
+    if (!cpu_rects_found_) {
+        cpu_rects_ = cpu_pixels_of(gpu_.tracer(), camera_);
+        cpu_rects_found_ = true;
+    }
+    return cpu_rects_;
 }
 
 template <typename PixelFunction>
@@ -34,13 +42,14 @@ void GpuRowTracer::for_cpu_pixels(int first, int count, const PixelFunction &f) 
 {
     if (!any_cpu_pixels())
         return;
+    const std::optional<std::vector<sbrt::PixelRect>> &rects = cpu_pixels(); // found: shared
     sbrt::for_each_row(first, first + count, threads_, [&](int row) {
-        if (!cpu_rects_) {
+        if (!rects) {
             for (int col = 0; col < camera_.cols(); ++col)
                 f(row, col);
             return;
         }
-        for (const auto &[c0, c1] : sbrt::row_spans(*cpu_rects_, row))
+        for (const auto &[c0, c1] : sbrt::row_spans(*rects, row))
             for (int col = c0; col <= c1; ++col)
                 f(row, col);
     });

@@ -51,14 +51,13 @@ public:
     /// The pixels traced on the CPU: none (no overlays drawn with the
     /// model), rectangles, or every pixel (none: the camera is among the
     /// boreholes).
-    const std::optional<std::vector<sbrt::PixelRect>> &cpu_pixels() const
-    {
-        return cpu_rects_;
-    }
+    /// Found when first asked: a frame the GPU shades with face normals
+    /// never needs them.
+    const std::optional<std::vector<sbrt::PixelRect>> &cpu_pixels() const;
 
 private:
     /// Whether the CPU traces any pixel.
-    bool any_cpu_pixels() const { return !cpu_rects_ || !cpu_rects_->empty(); }
+    bool any_cpu_pixels() const { return !cpu_pixels() || !cpu_pixels()->empty(); }
     /// Calls f(row, col) for each pixel of rows [first, first + count)
     /// the CPU traces, on the threads.
     template <typename PixelFunction>
@@ -69,7 +68,8 @@ private:
     unsigned threads_;
     const sbrt::Shading *shading_ = nullptr;
     bool kernel_prepared_ = false; ///< this camera's hit records are on the GPU
-    std::optional<std::vector<sbrt::PixelRect>> cpu_rects_;
+    mutable bool cpu_rects_found_ = false;
+    mutable std::optional<std::vector<sbrt::PixelRect>> cpu_rects_;
 };
 
 } // namespace sbrt_gl

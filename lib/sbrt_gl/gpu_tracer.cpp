@@ -409,8 +409,7 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     // and the boreholes again over the tiles where a ray may meet one (no
     // other ray pays for them)
     const bool boreholes = sbrt::gpu_overlay_mode(tracer_) == sbrt::GpuOverlayMode::with_model;
-    const std::vector<std::array<glm::dvec3, 2>> boxes =
-        boreholes ? tracer_.overlay_boxes() : std::vector<std::array<glm::dvec3, 2>>();
+    const std::vector<std::array<glm::dvec3, 2>> &boxes = tracer_.overlay_boxes();
     GlComputeProgram *borehole_program =
         boreholes ? &shading_program(shading, Pass::shade_boreholes) : nullptr;
     // the camera among the boxes: every tile in the boreholes' pass, and no

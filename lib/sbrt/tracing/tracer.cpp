@@ -113,6 +113,7 @@ Tracer::Tracer(const Model &model, double zexag, Scene scene)
         fail("Tracer: the borehole radius must be positive");
     index_overlays();
     build_pyramid();
+    overlay_boxes_ = find_overlay_boxes(); // with the pyramid: borehole_top reads it
 }
 
 void Tracer::build_pyramid()

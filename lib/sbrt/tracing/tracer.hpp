@@ -107,8 +107,8 @@ public:
     /// Boxes (the same form) that hold each borehole and fence panel,
     /// whether the model is drawn or not: a borehole's up to the highest a
     /// ray can meet in its cells (borehole_top), a panel's the model's
-    /// whole height.
-    std::vector<std::array<glm::dvec3, 2>> overlay_boxes() const;
+    /// whole height. Found once, with the tracer: every frame asks.
+    const std::vector<std::array<glm::dvec3, 2>> &overlay_boxes() const { return overlay_boxes_; }
     /// The empty-space pyramid over what is drawn (no levels when skipping
     /// is off or the model is not drawn).
     const MinMaxPyramid &pyramid() const { return pyramid_; }
@@ -157,6 +157,8 @@ private:
               Walk &walk) const;
     void index_overlays();
     void build_pyramid();
+    /// overlay_boxes(), found (the pyramid built).
+    std::vector<std::array<glm::dvec3, 2>> find_overlay_boxes() const;
     /// The top (exaggerated map z) of the box `lo`-`hi` of borehole `b`:
     /// its log's, its stack's and the model's highest in its cells.
     double borehole_top(const Borehole &b, glm::dvec3 lo, glm::dvec3 hi) const;
@@ -173,6 +175,7 @@ private:
     glm::dvec2 box_low_{0}, box_high_{0};
     MinMaxPyramid pyramid_;
     MinMaxPyramid model_pyramid_; ///< with overlays drawn with the model only
+    std::vector<std::array<glm::dvec3, 2>> overlay_boxes_;
 };
 
 } // namespace sbrt

@@ -70,7 +70,7 @@ std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_bounds() const
     return overlay_boxes();
 }
 
-std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_boxes() const
+std::vector<std::array<glm::dvec3, 2>> Tracer::find_overlay_boxes() const
 {
     std::vector<std::array<glm::dvec3, 2>> boxes;
     const double low = frame_.corner(0).z, high = frame_.corner(7).z;
