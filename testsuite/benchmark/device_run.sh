@@ -24,14 +24,17 @@
 #            - with trace_bench_base in the bundle (another build, e.g. the
 #              last main), the same figures of that build, in the same run;
 #            - with sbrt_unit_tests in the bundle, the GL unit tests on EGL;
+#            - what building the GPU's programs costs from empty caches
+#              (ours and the driver's): B's class view, with 100
+#              boreholes, and the property view (programs_ms);
 #            - issue 29's property view (paint_gt with its channels): the
 #              class view against property= (a sum of three percentages)
 #              and fade= on the GPU, cold (a fresh renderer, the colours
 #              by voxel made and uploaded, or coloured on the host) and
 #              warm, and the GPU's pixels against the CPU's.
 #            Runs here too (llvmpipe), which checks the script.
-# USAGE:     [SECTIONS="unit paint gpu large boreholes scaling contention
-#            alternate"] [UNIT_FILTER=a GoogleTest filter] [BOREHOLE_FRAMES=200]
+# USAGE:     [SECTIONS="programs unit paint gpu large boreholes scaling
+#            contention alternate"] [UNIT_FILTER=a GoogleTest filter] [BOREHOLE_FRAMES=200]
 #            bash .device/device_run.sh [SIZES] (A B C)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
@@ -52,8 +55,25 @@ cores=$(nproc)
 builds=(new)
 [ -x "$bundle/trace_bench_base" ] && builds+=(base)
 bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
-sections=" ${SECTIONS:-unit paint gpu large boreholes scaling contention alternate} "
+sections=" ${SECTIONS:-programs unit paint gpu large boreholes scaling contention alternate} "
 run() { [[ "$sections" == *" $1 "* ]]; }
+
+# 0. the programs compiled from nothing: neither our program cache nor the
+# driver's (NVIDIA's __GL_SHADER_DISK_CACHE; Mesa's MESA_SHADER_CACHE_DISABLE)
+# (an H100 took 100 s for the boreholes' program while it had a copy of
+# the shading at each place a walk ends)
+if run programs && [ -f "$bundle/sbrt/geo_B.tar.gz" ]; then
+    tar -C "$data" -xzf "$bundle/sbrt/geo_B.tar.gz"
+    for drilled in 0 100; do
+        status=0
+        SBRT_PROGRAM_CACHE=off __GL_SHADER_DISK_CACHE=0 MESA_SHADER_CACHE_DISABLE=true \
+            timeout 300 "$bundle/trace_bench" gpu_frame "$data/geo_B" $best label=B/programs \
+            repeat=1 cpu=0 threads="$cores" boreholes=$drilled radius=20 >"$data/programs.txt" ||
+            status=$?
+        echo "device programs cold boreholes=$drilled exit=$status" \
+            "$(grep -oE "programs_ms=[0-9.]+" "$data/programs.txt" || echo programs_ms=?)"
+    done
+fi
 
 # 1. the GL unit tests on this GPU (EGL; the OSMesa ones need libOSMesa): on
 # a fresh machine every program is compiled, about 2.5 minutes on an H100

@@ -1,0 +1,92 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   The shading programs' sources hold one copy of the shading:
+ *            a driver that inlines every call (NVIDIA's) compiles each
+ *            place that calls it; with a copy at each place a borehole's
+ *            walk could end, an H100 took 100 s to compile the boreholes'
+ *            program
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <regex>
+#include <string>
+
+#include "shader_sources.hpp"
+
+namespace {
+
+/// `source` without its // comments.
+std::string without_comments(const std::string &source)
+{
+    std::string code;
+    for (size_t at = 0; at < source.size();) {
+        const size_t comment = source.find("//", at);
+        if (comment == std::string::npos) {
+            code += source.substr(at);
+            break;
+        }
+        code += source.substr(at, comment - at);
+        const size_t line_end = source.find('\n', comment);
+        at = line_end == std::string::npos ? source.size() : line_end;
+    }
+    return code;
+}
+
+/// The places in `sources` (comments left out) that call `function`: its
+/// name and "(" not after a return type (the definition).
+int calls_of(const std::string &function, std::initializer_list<const char *> sources)
+{
+    int calls = 0;
+    for (const char *source : sources) {
+        const std::string code = without_comments(source);
+        for (size_t at = code.find(function + "("); at != std::string::npos;
+             at = code.find(function + "(", at + 1)) {
+            const bool part_of_a_name =
+                at > 0 && (std::isalnum(static_cast<unsigned char>(code[at - 1])) ||
+                           code[at - 1] == '_');
+            // a definition: the line holds only a return type before it
+            const size_t line_start = code.rfind('\n', at) + 1; // npos + 1: 0
+            static const std::regex return_type("\\s*[A-Za-z_][A-Za-z0-9_]*\\s+");
+            const bool definition =
+                std::regex_match(code.substr(line_start, at - line_start), return_type);
+            if (!part_of_a_name && !definition)
+                ++calls;
+        }
+    }
+    return calls;
+}
+
+} // namespace
+
+TEST(ShaderSources, TheRaycastProgramsShadeInOnePlace)
+{
+    using namespace sbrt_gl;
+    const auto program = {SHADER_COMMON_LAYOUT, SHADER_COMMON_SHADE, SHADER_COMMON_RAY,
+                          SHADER_COMMON_OVERLAYS, SHADER_RAYCAST};
+    // the shading: written once, after the trace, from what its end kept
+    EXPECT_EQ(calls_of("write_pixel", program), 1);
+    EXPECT_EQ(calls_of("write_kept_pixel", program), 1);
+    EXPECT_EQ(calls_of("paint_color", program), 1);
+    // what a borehole's walk inlines: one walk of a log's pieces, one of
+    // the model's stack in a cell; one meeting a walk's direction, one a
+    // curtain's
+    EXPECT_EQ(calls_of("ov_walk", program), 2);
+    EXPECT_EQ(calls_of("ov_borehole", program), 1);
+    EXPECT_EQ(calls_of("ov_meet", program), 3);
+    // the kernel's shading pass: one write of its own (shade.glsl's
+    // write_kept_pixel never called there)
+    EXPECT_EQ(calls_of("write_pixel", {SHADER_KERNEL}), 1);
+    EXPECT_EQ(calls_of("write_kept_pixel", {SHADER_KERNEL}), 0);
+}
+
+TEST(ShaderSources, CallsAreCountedWithoutDefinitionsAndComments)
+{
+    const char *source = "void f(uint a)\n{\n}\n"
+                         "// f(1) in a comment\n"
+                         "void g() { f(1u); if (ok) f(2u); g_f(3u); }\n"
+                         "bool h = f(4u) == 0;\n";
+    EXPECT_EQ(calls_of("f", {source}), 3);
+    EXPECT_EQ(calls_of("g", {source}), 0);
+}
