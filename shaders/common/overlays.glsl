@@ -80,7 +80,7 @@ void ov_keep_end()
     if (((ov_end_code >> 16) & 0xfu) < FACE_CYLINDER)
         n = hit_normal(ov_end_code, ray_d);
     keep_pixel(ov_index, (ov_hi + ov_end_t * ov_d) + ov_lo, ov_end_code, n,
-                vec4(veil, transmittance), length((ov_end_t - t_eye) * ray_d * real_unit.xyz));
+               vec4(veil, transmittance), length((ov_end_t - t_eye) * ray_d * real_unit.xyz));
 }
 
 // Tracer::meet: true where the walk ends (an opaque hit, or a veil
