@@ -418,6 +418,15 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     sbrt::GpuView view = traced_view(camera, loop_budget_);
     bind_model();
     bind_shading(shade, shading);
+    if (shading.property || shading.fade) {
+        // the rays in double: a hit near a voxel's edge placed on its face
+        // as the CPU places it (binding 3)
+        const sbrt::GpuViewDouble exact = sbrt::make_gpu_view_double(tracer_, camera);
+        if (!view_double_)
+            view_double_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof exact);
+        view_double_->upload(&exact, sizeof exact);
+        view_double_->bind(3);
+    }
     const int cols = camera.cols();
     // GL takes at least 65535 work groups a dimension: the cull's a box,
     // the boreholes' pass's a tile of the band

@@ -258,6 +258,8 @@ private:
     /// ...coloured by voxel (a property or a fade), and its words (binding
     /// 7, as a drape's: a scene has one or the other) with their key
     std::optional<GlComputeProgram> paint_program_;
+    /// colours by voxel: the view's rays in double (binding 3)
+    std::optional<GlBuffer> view_double_;
     std::optional<GlBuffer> paint_;
     std::string paint_key_;
     /// the boreholes' pass over listed tiles (with a drape or without),

@@ -221,6 +221,16 @@ layout(std430, binding = 7) readonly buffer Drape { uint drape_words[]; };
 // per cell its first entry and lo | hi << 16, the voxels' 16-bit entries,
 // the colours as float bits r, g, b.
 layout(std430, binding = 7) readonly buffer Paint { uint paint_words[]; };
+// The View block's rays in double (sbrt::GpuViewDouble): a hit near a
+// voxel's edge is placed on its face again as the CPU's tracer places it
+layout(std140, binding = 3) uniform ViewDouble {
+    dvec4 exact_origin; // xyz: the base, unrounded
+    dvec4 exact_forward;
+    dvec4 exact_du;
+    dvec4 exact_dv;
+    dvec4 exact_spread_u;
+    dvec4 exact_spread_v;
+};
 #endif
 
 // Per material: x: its colour r | g << 8 | b << 16; y: its class id.

@@ -91,15 +91,45 @@ uint paint_entry(int col, int row, int level)
     return e == 0xffffu ? entry : e; // GPU_PAINT_NONE
 }
 
+// Whether the ray of pixel `index` of the band, in double, meets the plane
+// of `face` (a cell's wall, top or bottom; its whole-numbered coordinate
+// the nearest to q's) inside `voxel`'s face, clear of its edges by far
+// more than the double's rounding: then the CPU's tracer, meeting that
+// face, finds that voxel. q, voxel: (u, v, z), v in rows from the north.
+bool on_face_in_double(uint index, uint face, vec3 q, ivec3 voxel)
+{
+    const double CLEAR = 1e-7;
+    int axis = face <= FACE_EAST ? 0 : face <= FACE_NORTH ? 1 : 2;
+    uint col = index % grid.z, row = index / grid.z + options.z;
+    double x = (double(col) + 0.5) / double(grid.z) * 2.0 - 1.0;
+    double y = 1.0 - (double(row) + 0.5) / double(grid.w) * 2.0;
+    dvec3 o = exact_origin.xyz + x * exact_spread_u.xyz + y * exact_spread_v.xyz;
+    dvec3 d = exact_forward.xyz + x * exact_du.xyz + y * exact_dv.xyz;
+    // (u, v, z) of the ray: local x, rows - local y, local z
+    o.y = double(grid.y) - o.y;
+    d.y = -d.y;
+    if (d[axis] == 0.0)
+        return false;
+    double t = (double(round(q[axis])) - o[axis]) / d[axis];
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+        double c = o[a] + t * d[a];
+        if (a != axis && !(c >= double(voxel[a]) + CLEAR && c <= double(voxel[a]) + 1.0 - CLEAR))
+            inside = false;
+    }
+    return inside;
+}
+
 // The colour (0..255, before lighting) of the voxel a hit at local point
 // p through `face` of `material` lies on, as voxel_of_hit
-// (lib/sbrt/shading/property_paint.cpp) finds it. Where a coordinate it
-// floors lies within float's reach of a voxel's edge, either voxel may be
-// the hit's: the colour is the voxels' where they have the same entry.
-// False where they do not, where two coordinates are that near an edge or
-// where the value is outside the file's stated range: the host colours
-// those pixels.
-bool paint_color(vec3 p, uint face, uint material, out vec3 rgb)
+// (lib/sbrt/shading/property_paint.cpp) finds it, for pixel `index` of the
+// band. Where a coordinate it floors lies within float's reach of a
+// voxel's edge, either voxel may be the hit's: the hit is placed again in
+// double (on_face_in_double), else the colour is the voxels' where they
+// have the same entry. False where neither settles it, and where the
+// value is outside the file's stated range: the host colours those
+// pixels.
+bool paint_color(uint index, vec3 p, uint face, uint material, out vec3 rgb)
 {
     const float EDGE = 1e-4;
     rgb = vec3(0.0);
@@ -125,6 +155,11 @@ bool paint_color(vec3 p, uint face, uint material, out vec3 rgb)
             across[a] = voxel[a] == int(round(q[a])) ? -1 : 1;
             ++near_edges;
         }
+    // a cell's face: placed again in double, where it lies well inside
+    // the voxel's face that voxel is the CPU's
+    if (near_edges > 0 && face >= FACE_WEST && face <= FACE_TOP &&
+        on_face_in_double(index, face, q, voxel))
+        near_edges = 0;
     if (near_edges > 1)
         return false;
     uint entry = paint_entry(voxel.x, voxel.y, voxel.z);
@@ -207,7 +242,7 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
     if (material != 0u) {
 #ifdef SBRT_PAINT
         vec3 surface;
-        if (!paint_color(point, (code >> 16) & 0xfu, material, surface)) {
+        if (!paint_color(index, point, (code >> 16) & 0xfu, material, surface)) {
             flag_over_budget(index); // the host colours it
             group_rgb[gl_LocalInvocationIndex] = 0u;
             return;

@@ -139,12 +139,15 @@ TEST_P(GpuPaint, AFadeIsColouredOnTheGpuAsTheCpuDoes)
         expect_gpu_shading_as_cpu(*context_, GetParam(), renderer, camera, "fade", 2);
 }
 
-TEST_P(GpuPaint, AtAVoxelsEdgeTheGpuColoursOnlyWhereBothSidesAgree)
+TEST_P(GpuPaint, AtAVoxelsEdgeTheGpuColoursWhereDoubleOrBothSidesSettleIt)
 {
     // three values: neighbours often agree (the GPU colours those pixels
-    // whichever side float puts the hit on), else the host colours them.
-    // Comparing the wrong neighbour, or none, colours some of the ~1e-4 of
-    // pixels near an edge by the wrong voxel.
+    // whichever side float puts the hit on); where they do not, the GPU
+    // places the hit on its face again in double and colours it where it
+    // lies well inside its voxel's face, else the host colours it.
+    // Comparing the wrong neighbour, or none, or a wrong placement in
+    // double, colours some of the ~1e-4 of pixels near an edge by the
+    // wrong voxel.
     const Voxels voxels = random_voxels(9, 36, 44, 30, 6);
     const Model model = build_model(voxels);
     const Frame &f = voxels.frame;
@@ -189,7 +192,10 @@ TEST_P(GpuPaint, AtAVoxelsEdgeTheGpuColoursOnlyWhereBothSidesAgree)
         EXPECT_LE(classes, want.material.size() / 5000);
         EXPECT_EQ(colours, 0u) << "pixels coloured by another voxel than the CPU's";
     }
-    EXPECT_GT(sent_back, 0u); // some neighbours disagree
+    // some hits float puts across the edge from the CPU's go back to the
+    // host; in double most settle on the GPU (26 here, 242 in float alone)
+    EXPECT_GT(sent_back, 0u);
+    EXPECT_LT(sent_back, 60u);
 }
 
 TEST_P(GpuPaint, CutsAndHiddenStrataShowTheValuesOfTheModelAsRead)

@@ -25,6 +25,50 @@ void put(float out[4], glm::dvec3 v)
     out[3] = 0;
 }
 
+/// The rays of `camera` in the tracer's local frame: through origin + x
+/// spread_u + y spread_v along forward + x du + y dv for x, y in
+/// normalised device coordinates (du = dv = 0 for parallel rays), from t
+/// = -s (the eye). They are re-based on the plane through the model's
+/// centre across the view: a camera far away keeps its precision (float
+/// directions and distances would lose the model).
+struct LocalRays {
+    glm::dvec3 origin{0.0}, forward{0.0}, du{0.0}, dv{0.0}, spread_u{0.0}, spread_v{0.0};
+    double s = 0;
+};
+
+LocalRays local_rays(const Tracer &tracer, const Camera &camera)
+{
+    glm::dvec3 map_origin, map_forward, map_du, map_dv;
+    camera.linear_rays(map_origin, map_forward, map_du, map_dv);
+    const glm::dvec3 eye = tracer.frame().to_local(map_origin);
+    LocalRays rays;
+    rays.forward = tracer.frame().local_direction(map_forward);
+    const glm::dvec3 du = tracer.frame().local_direction(map_du);
+    const glm::dvec3 dv = tracer.frame().local_direction(map_dv);
+    const glm::dvec3 centre = tracer.frame().to_local(tracer.frame().centre());
+    rays.s = std::max(0.0, glm::dot(centre - eye, rays.forward) /
+                               glm::dot(rays.forward, rays.forward));
+    rays.origin = eye + rays.s * rays.forward;
+    if (camera.parallel()) {
+        rays.spread_u = du;
+        rays.spread_v = dv;
+    }
+    else {
+        rays.du = du;
+        rays.dv = dv;
+        rays.spread_u = rays.s * du;
+        rays.spread_v = rays.s * dv;
+    }
+    return rays;
+}
+
+void put(double out[4], glm::dvec3 v)
+{
+    for (int i = 0; i < 3; ++i)
+        out[i] = v[i];
+    out[3] = 0;
+}
+
 } // namespace
 
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
@@ -32,32 +76,16 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
 {
     const Frame &f = tracer.model().frame();
     GpuView view{};
-    // rays are re-based on the plane through the model's centre across the
-    // view: a camera far away keeps its precision (float directions and
-    // distances would lose the model); the eye is at t = -s
-    glm::dvec3 map_origin, map_forward, map_du, map_dv;
-    camera.linear_rays(map_origin, map_forward, map_du, map_dv);
-    const glm::dvec3 eye = tracer.frame().to_local(map_origin);
-    const glm::dvec3 forward = tracer.frame().local_direction(map_forward);
-    const glm::dvec3 du = tracer.frame().local_direction(map_du);
-    const glm::dvec3 dv = tracer.frame().local_direction(map_dv);
-    const glm::dvec3 centre = tracer.frame().to_local(tracer.frame().centre());
-    const double s = std::max(0.0, glm::dot(centre - eye, forward) / glm::dot(forward, forward));
-    const glm::dvec3 origin = eye + s * forward;
-    const glm::dvec3 hi = glm::dvec3(glm::vec3(origin));
+    const LocalRays rays = local_rays(tracer, camera);
+    const glm::dvec3 origin = rays.origin, hi = glm::dvec3(glm::vec3(origin));
+    const double s = rays.s;
     put(view.origin_hi, hi);
     put(view.origin_lo, origin - hi);
-    put(view.forward, forward);
-    if (camera.parallel()) {
-        put(view.spread_u, du);
-        put(view.spread_v, dv);
-    }
-    else {
-        put(view.du, du);
-        put(view.dv, dv);
-        put(view.spread_u, s * du);
-        put(view.spread_v, s * dv);
-    }
+    put(view.forward, rays.forward);
+    put(view.du, rays.du);
+    put(view.dv, rays.dv);
+    put(view.spread_u, rays.spread_u);
+    put(view.spread_v, rays.spread_v);
     view.spread_u[3] = float(-s);
     view.grid[0] = uint32_t(f.cols);
     view.grid[1] = uint32_t(f.rows);
@@ -77,6 +105,19 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
     }
     view.counts[0] = uint32_t(planes.size());
     view.counts[1] = uint32_t(tracer.pyramid().levels());
+    return view;
+}
+
+GpuViewDouble make_gpu_view_double(const Tracer &tracer, const Camera &camera)
+{
+    const LocalRays rays = local_rays(tracer, camera);
+    GpuViewDouble view{};
+    put(view.origin, rays.origin);
+    put(view.forward, rays.forward);
+    put(view.du, rays.du);
+    put(view.dv, rays.dv);
+    put(view.spread_u, rays.spread_u);
+    put(view.spread_v, rays.spread_v);
     return view;
 }
 

@@ -44,6 +44,20 @@ static_assert(offsetof(GpuView, counts) == 288, "std140 View block");
 static_assert(offsetof(GpuView, grid) == 112, "std140 View block");
 static_assert(offsetof(GpuView, options) == 144, "std140 View block");
 
+/// `uniform ViewDouble` (std140, binding 3; the shading pass of colours by
+/// voxel): the rays of GpuView in double (base = origin, rays start where
+/// GpuView says), so that a hit within float's reach of a voxel's edge is
+/// placed on its face as the CPU's double tracer places it.
+struct GpuViewDouble {
+    double origin[4]; ///< xyz: base (origin_hi + origin_lo, unrounded)
+    double forward[4];
+    double du[4];
+    double dv[4];
+    double spread_u[4];
+    double spread_v[4];
+};
+static_assert(sizeof(GpuViewDouble) == 192, "std140 ViewDouble block");
+
 /// `struct Interval` (std430) is the model's own Interval.
 static_assert(sizeof(Interval) == 8 && offsetof(Interval, material) == 0 &&
                   offsetof(Interval, top) == 4,
@@ -152,6 +166,9 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
 /// The view block of `camera` in the tracer's local frame.
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
                       uint32_t loop_budget = GPU_LOOP_BUDGET);
+
+/// The same rays in double (GpuViewDouble).
+GpuViewDouble make_gpu_view_double(const Tracer &tracer, const Camera &camera);
 
 /// The Kernel block of `camera` (a whole image) with `kernel` and the
 /// smoothing of `weights` (gaussian_weights; none: no smoothing).
