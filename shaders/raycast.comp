@@ -62,8 +62,9 @@ bool passes(vec2 range, float z_a, float z_b)
 }
 
 #ifdef SBRT_SHADE
-// The outputs of the pixel, kept for write_kept_pixel (common/shade.glsl),
-// or the word that sends it back to the host: over the loop budget
+// The end of the pixel's ray, kept (common/shade.glsl) for
+// write_kept_pixel below, or the word that sends it back to the host:
+// over the loop budget
 void finish(uint index, vec3 point, uint code, float t)
 {
 #ifdef SBRT_HIT_T
@@ -74,11 +75,21 @@ void finish(uint index, vec3 point, uint code, float t)
                                                    : 1.0 / 0.0;
 #endif
     if ((code & CODE_OVER_BUDGET) != 0u) {
-        flag_over_budget(index);
+        send_back(index);
         return;
     }
-    keep_pixel(index, point, code, hit_normal(code, ray_d), vec4(veil, transmittance),
-               length((t - t_eye) * ray_d * real_unit.xyz));
+    keep_pixel(index, point, code, vec3(0.0), t);
+}
+
+// The kept end of the pixel's ray (common/shade.glsl), lit along its
+// surface's normal and seen through the veil of what the ray crossed
+void write_kept_pixel()
+{
+    if (!kept)
+        return;
+    vec3 n = ((kept_code >> 16) & 0xfu) < FACE_CYLINDER ? hit_normal(kept_code, ray_d) : kept_n;
+    write_pixel(kept_index, kept_point, kept_code, n, vec4(veil, transmittance),
+                length((kept_t - t_eye) * ray_d * real_unit.xyz));
 }
 #else
 void finish(uint index, vec3 point, uint code, float t)

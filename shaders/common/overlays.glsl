@@ -76,11 +76,7 @@ vec3 ov_end_n = vec3(0.0);
 
 void ov_keep_end()
 {
-    vec3 n = ov_end_n;
-    if (((ov_end_code >> 16) & 0xfu) < FACE_CYLINDER)
-        n = hit_normal(ov_end_code, ray_d);
-    keep_pixel(ov_index, (ov_hi + ov_end_t * ov_d) + ov_lo, ov_end_code, n,
-               vec4(veil, transmittance), length((ov_end_t - t_eye) * ray_d * real_unit.xyz));
+    keep_pixel(ov_index, (ov_hi + ov_end_t * ov_d) + ov_lo, ov_end_code, ov_end_n, ov_end_t);
 }
 
 // Tracer::meet: true where the walk ends (an opaque hit, or a veil
@@ -310,7 +306,7 @@ void trace_overlays(float t_near, float t_far, uint wall)
         vec3 n;
         uint next = ov_next(0u, overlay_count.x, t_near, t_far, last_start, last, start, stop, n);
         if (ov_work > ov_limit) {
-            flag_over_budget(ov_index); // over the budget: the host's
+            send_back(ov_index); // over the budget: the host's
             return;
         }
         if (next == OV_NONE)

@@ -18,6 +18,18 @@ const float MIN_TRANSMITTANCE = 1.0 / 4096.0;
 vec3 ray_d = vec3(0.0);
 float t_eye = 0.0;
 
+#ifdef SBRT_SHADE
+// Pixel `index` to the host, which traces it again (over the loop
+// budget): what the GPU writes for it is the background kept before the
+// trace, seen as it was then (no veil)
+void send_back(uint index)
+{
+    flag_over_budget(index);
+    veil = vec3(0.0);
+    transmittance = 1.0;
+}
+#endif
+
 // Beer-Lambert over `length` map units of a translucent material; true
 // once (almost) nothing behind can be seen
 bool absorb(vec4 material, float length)

@@ -91,14 +91,18 @@ uint paint_entry(int col, int row, int level)
     return e == 0xffffu ? entry : e; // GPU_PAINT_NONE
 }
 
+#ifdef SBRT_COMPACT_INTERVALS
 // Whether the ray of pixel `index` of the band, in double, meets the plane
 // of `face` (a cell's wall, top or bottom; its whole-numbered coordinate
 // the nearest to q's) inside `voxel`'s face, clear of its edges by far
 // more than the double's rounding: then the CPU's tracer, meeting that
 // face, finds that voxel. q, voxel: (u, v, z), v in rows from the north.
+// Only where every interval's top is a voxel's (compact intervals): a top
+// between voxel boundaries is not on that plane, and the CPU finds a
+// wall's voxel near such a top from the interval's material.
 bool on_face_in_double(uint index, uint face, vec3 q, ivec3 voxel)
 {
-    const double CLEAR = 1e-7;
+    const double CLEAR = 1e-7lf;
     int axis = face <= FACE_EAST ? 0 : face <= FACE_NORTH ? 1 : 2;
     uint col = index % grid.z, row = index / grid.z + options.z;
     double x = (double(col) + 0.5) / double(grid.z) * 2.0 - 1.0;
@@ -113,12 +117,14 @@ bool on_face_in_double(uint index, uint face, vec3 q, ivec3 voxel)
     double t = (double(round(q[axis])) - o[axis]) / d[axis];
     bool inside = true;
     for (int a = 0; a < 3; ++a) {
-        double c = o[a] + t * d[a];
-        if (a != axis && !(c >= double(voxel[a]) + CLEAR && c <= double(voxel[a]) + 1.0 - CLEAR))
+        // the rounding of c grows as the ray grazes the plane
+        double c = o[a] + t * d[a], clear = CLEAR * max(1.0lf, abs(d[a] / d[axis]));
+        if (a != axis && !(c >= double(voxel[a]) + clear && c <= double(voxel[a]) + 1.0lf - clear))
             inside = false;
     }
     return inside;
 }
+#endif
 
 // The colour (0..255, before lighting) of the voxel a hit at local point
 // p through `face` of `material` lies on, as voxel_of_hit
@@ -157,9 +163,11 @@ bool paint_color(uint index, vec3 p, uint face, uint material, out vec3 rgb)
         }
     // a cell's face: placed again in double, where it lies well inside
     // the voxel's face that voxel is the CPU's
+#ifdef SBRT_COMPACT_INTERVALS
     if (near_edges > 0 && face >= FACE_WEST && face <= FACE_TOP &&
         on_face_in_double(index, face, q, voxel))
         near_edges = 0;
+#endif
     if (near_edges > 1)
         return false;
     uint entry = paint_entry(voxel.x, voxel.y, voxel.z);
@@ -278,32 +286,29 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
         write_double(band_planes.z + 2u * index, material != 0u ? depth : missing);
 }
 
-// The outputs of the pixel as write_pixel takes them, kept where its ray
-// ends (raycast.comp's finish, the overlays' walks) and written once
-// after the trace (write_kept_pixel): one copy of the shading in the
-// program. A driver that inlines every call compiles each copy (NVIDIA's
-// took 100 s for the boreholes' program with a copy at each end).
+// Where the pixel's ray ended, kept by raycast.comp's finish and the
+// overlays' walks and written once after the trace (raycast.comp's
+// write_kept_pixel): one copy of the shading in the program. A driver that
+// inlines every call compiles each copy (NVIDIA's took 100 s for the
+// boreholes' program with a copy at each end). Only what the end alone
+// knows is kept, and held through the trace's loop: the veil, a cell
+// face's normal and the depth are found when written.
 bool kept = false;
 uint kept_index = 0u, kept_code = 0u;
 vec3 kept_point = vec3(0.0), kept_n = vec3(0.0);
-vec4 kept_veil_t = vec4(0.0);
-float kept_depth = 0.0;
+float kept_t = 0.0;
 
-void keep_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float depth)
+// The end of pixel `index`'s ray at t (local point, code); n: the normal
+// of a borehole's mantle, a curtain or a split face (FACE_CYLINDER and
+// after), the others' found from the code
+void keep_pixel(uint index, vec3 point, uint code, vec3 n, float t)
 {
     kept = true;
     kept_index = index;
     kept_point = point;
     kept_code = code;
     kept_n = n;
-    kept_veil_t = veil_t;
-    kept_depth = depth;
-}
-
-void write_kept_pixel()
-{
-    if (kept)
-        write_pixel(kept_index, kept_point, kept_code, kept_n, kept_veil_t, kept_depth);
+    kept_t = t;
 }
 
 // After a barrier, in uniform control flow: the work group's colours into

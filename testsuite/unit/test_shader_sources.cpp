@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
-#include <regex>
+#include <sstream>
 #include <string>
 
 #include "shader_sources.hpp"
@@ -47,10 +47,13 @@ int calls_of(const std::string &function, std::initializer_list<const char *> so
                 at > 0 && (std::isalnum(static_cast<unsigned char>(code[at - 1])) ||
                            code[at - 1] == '_');
             // a definition: the line holds only a return type before it
+            // (a word, not `return` or `else`)
             const size_t line_start = code.rfind('\n', at) + 1; // npos + 1: 0
-            static const std::regex return_type("\\s*[A-Za-z_][A-Za-z0-9_]*\\s+");
-            const bool definition =
-                std::regex_match(code.substr(line_start, at - line_start), return_type);
+            std::istringstream before(code.substr(line_start, at - line_start));
+            std::string word, more;
+            const bool definition = bool(before >> word) && !(before >> more) &&
+                                    word != "return" && word != "else" &&
+                                    std::isspace(static_cast<unsigned char>(code[at - 1]));
             if (!part_of_a_name && !definition)
                 ++calls;
         }
@@ -86,7 +89,10 @@ TEST(ShaderSources, CallsAreCountedWithoutDefinitionsAndComments)
     const char *source = "void f(uint a)\n{\n}\n"
                          "// f(1) in a comment\n"
                          "void g() { f(1u); if (ok) f(2u); g_f(3u); }\n"
-                         "bool h = f(4u) == 0;\n";
-    EXPECT_EQ(calls_of("f", {source}), 3);
+                         "bool h = f(4u) == 0;\n"
+                         "uint k() { return f(5u); }\n"
+                         "    return f(6u);\n"
+                         "    else f(7u);\n";
+    EXPECT_EQ(calls_of("f", {source}), 6);
     EXPECT_EQ(calls_of("g", {source}), 0);
 }
