@@ -503,10 +503,8 @@ void trace_pixel()
             finish(index, vec3(0.0), CODE_OVER_BUDGET, 0.0);
             return;
         }
-        if (crossed == OV_ENDED) {
-            ov_keep_end();
-            return;
-        }
+        if (crossed == OV_ENDED)
+            return; // its end kept where the walk met it
         boreholes_crossed = true; // on to the next cell
         continue;
     }

@@ -65,38 +65,29 @@ float ov_t_at(float z) { return from_origin(z, ov_hi.z, ov_lo.z) / ov_d.z; }
 vec2 ov_from(vec2 c) { return ((ov_hi.xy - c) + ov_lo.xy) * map_unit.xy; }
 vec2 ov_dir() { return ov_d.xy * map_unit.xy; }
 
-// The surface that ends the walk, noted by ov_meet and kept for the
-// pixel's outputs by ov_keep_end (one place: see keep_pixel): at t, code
-// material | surface << 16, surface as raycast.comp's wall (face | plane
-// << 4), n its normal where it is a cylinder, curtain or split face; code
-// 0 where a veil ends the walk or nothing was met
-float ov_end_t = 0.0;
-uint ov_end_code = 0u;
-vec3 ov_end_n = vec3(0.0);
-
-void ov_keep_end()
+// The end of the walk at t kept for the pixel's outputs (keep_pixel):
+// code material | surface << 16, surface as raycast.comp's wall (face |
+// plane << 4), n its normal where it is a cylinder, curtain or split face;
+// code 0 where a veil ends the walk or nothing was met
+void ov_keep(float t, uint code, vec3 n)
 {
-    keep_pixel(ov_index, (ov_hi + ov_end_t * ov_d) + ov_lo, ov_end_code, ov_end_n, ov_end_t);
+    keep_pixel(ov_index, (ov_hi + t * ov_d) + ov_lo, code, n, t);
 }
 
 // Tracer::meet: true where the walk ends (an opaque hit, or a veil
-// nothing shows through: noted for ov_keep_end)
+// nothing shows through: kept)
 bool ov_meet(uint material, float t_enter, float t_exit, uint surface, vec3 n)
 {
     if (material == 0u)
         return false;
     vec4 look = materials[material];
     if (look.w < 0.0) {
-        ov_end_t = t_enter;
-        ov_end_code = material | surface << 16;
-        ov_end_n = n;
+        ov_keep(t_enter, material | surface << 16, n);
         return true;
     }
     float crossed = t_exit > t_enter ? (t_exit - t_enter) * ov_length_per_t : overlay_head.y;
     if (absorb(look, crossed)) {
-        ov_end_t = 0.0;
-        ov_end_code = 0u | FACE_NONE << 16;
-        ov_end_n = vec3(0.0);
+        ov_keep(0.0, 0u | FACE_NONE << 16, vec3(0.0));
         return true;
     }
     return false;
@@ -235,7 +226,7 @@ bool ov_event(Overlay o, float t_lo, float t_hi, out float start, out float end,
 }
 
 // what a cell with boreholes gave (ov_cross_cell): the ray passes, it
-// ended (its pixel written) or ran over the loop budget
+// ended (its end kept) or ran over the loop budget
 const uint OV_PASSED = 1u, OV_ENDED = 2u, OV_OVER_BUDGET = 3u;
 const uint OV_NONE = 0xffffffffu; // no overlay
 
@@ -319,7 +310,7 @@ void trace_overlays(float t_near, float t_far, uint wall)
             continue; // inside a cylinder already crossed
         if (!panel) {
             if (ov_cross_cylinder(o, start, stop, n, cursor, surface, surface_n))
-                break;
+                return; // its end kept
             continue;
         }
         // a curtain: the class of the model at its point
@@ -337,11 +328,10 @@ void trace_overlays(float t_near, float t_far, uint wall)
         surface = FACE_FENCE;
         surface_n = n;
         if (low != stack.y && ov_meet(interval_material(low), start, start, surface, surface_n))
-            break;
+            return; // its end kept
         cursor = start;
     }
-    // what ended the walk, or no hit (code 0): the veil before the background
-    ov_keep_end();
+    ov_keep(0.0, 0u | FACE_NONE << 16, vec3(0.0)); // no hit: the veil before the background
 }
 #endif
 
