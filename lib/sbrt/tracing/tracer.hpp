@@ -103,7 +103,7 @@ public:
     /// Boxes (low, high corners; exaggerated map coordinates) that hold
     /// everything this tracer can hit where it does not draw the model;
     /// empty where it does.
-    std::vector<std::array<glm::dvec3, 2>> overlay_bounds() const;
+    const std::vector<std::array<glm::dvec3, 2>> &overlay_bounds() const;
     /// Boxes (the same form) that hold each borehole and fence panel,
     /// whether the model is drawn or not: a borehole's up to the highest a
     /// ray can meet in its cells (borehole_top), a panel's the model's

@@ -63,11 +63,10 @@ void Tracer::index_overlays()
     }
 }
 
-std::vector<std::array<glm::dvec3, 2>> Tracer::overlay_bounds() const
+const std::vector<std::array<glm::dvec3, 2>> &Tracer::overlay_bounds() const
 {
-    if (scene_.draw_model)
-        return {};
-    return overlay_boxes();
+    static const std::vector<std::array<glm::dvec3, 2>> none;
+    return scene_.draw_model ? none : overlay_boxes_;
 }
 
 std::vector<std::array<glm::dvec3, 2>> Tracer::find_overlay_boxes() const
