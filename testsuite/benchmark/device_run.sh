@@ -58,12 +58,16 @@ bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle
 sections=" ${SECTIONS:-programs unit paint gpu large boreholes scaling contention alternate} "
 run() { [[ "$sections" == *" $1 "* ]]; }
 
+# the models, unpacked once for every section
+for size in $sizes; do
+    tar -C "$data" -xzf "$bundle/sbrt/geo_$size.tar.gz"
+done
+
 # 0. the programs compiled from nothing: neither our program cache nor the
 # driver's (NVIDIA's __GL_SHADER_DISK_CACHE; Mesa's MESA_SHADER_CACHE_DISABLE)
 # (an H100 took 100 s for the boreholes' program while it had a copy of
 # the shading at each place a walk ends)
-if run programs && [ -f "$bundle/sbrt/geo_B.tar.gz" ]; then
-    tar -C "$data" -xzf "$bundle/sbrt/geo_B.tar.gz"
+if run programs && [ -d "$data/geo_B" ]; then
     for drilled in 0 100; do
         status=0
         SBRT_PROGRAM_CACHE=off __GL_SHADER_DISK_CACHE=0 MESA_SHADER_CACHE_DISABLE=true \
@@ -82,10 +86,6 @@ if run unit && [ -x "$bundle/sbrt_unit_tests" ]; then
         --gtest_filter="${UNIT_FILTER:-*egl*:*GpuPaint*:*GpuBands*/0:*OverlayTiles*:*GpuBandLayout*:Renderer*:BandFlow*:WorkerPool*}" 2>&1 |
         grep -E "^\[  (PASSED|FAILED) |Failure|^\[ stress" | sed "s/^/device unit /" || true
 fi
-
-for size in $sizes; do
-    tar -C "$data" -xzf "$bundle/sbrt/geo_$size.tar.gz"
-done
 
 # property views (issue 29): the model with channels at r3.sbrt.render's
 # view of the benchmark (azimuth 200, elevation 35, zexag 20), on all
