@@ -61,6 +61,33 @@ bool passes(vec2 range, float z_a, float z_b)
     return range.x > range.y || min(z_a, z_b) >= range.y || max(z_a, z_b) < range.x;
 }
 
+#ifdef SBRT_HIT_T
+// The farthest t of the work group's model hits, for the culling of the
+// boreholes' tiles (tile_cull.comp): each pixel's t as a key whose unsigned
+// order is the floats' (0: no pixel)
+shared uint far_keys[64];
+
+uint far_key(float t)
+{
+    uint u = floatBitsToUint(t);
+    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+
+// The tile's farthest t, after the band's pixels' ts (sbrt::GpuTileHead's
+// far_at), row by row of tiles
+void write_tile_far()
+{
+    uint most = 0u;
+    for (uint k = 0u; k < 64u; ++k)
+        most = max(most, far_keys[k]);
+    if (most == 0u)
+        return;
+    uint u = (most & 0x80000000u) != 0u ? most & 0x7fffffffu : ~most;
+    uvec2 tile = gl_WorkGroupID.xy;
+    hit_ts[options.w * grid.z + tile.y * ((grid.z + 7u) / 8u) + tile.x] = uintBitsToFloat(u);
+}
+#endif
+
 #ifdef SBRT_SHADE
 // The end of the pixel's ray, kept (common/shade.glsl) for
 // write_kept_pixel below, or the word that sends it back to the host:
@@ -70,9 +97,12 @@ void finish(uint index, vec3 point, uint code, float t)
 #ifdef SBRT_HIT_T
     // -inf: over the budget, the host traces it (the boreholes' pass leaves
     // it alone: listed once); inf: no opaque hit
-    hit_ts[index] = (code & CODE_OVER_BUDGET) != 0u ? -1.0 / 0.0
-                  : (code & 0xffffu) != 0u         ? t
-                                                   : 1.0 / 0.0;
+    float t_hit = (code & CODE_OVER_BUDGET) != 0u ? -1.0 / 0.0
+                : (code & 0xffffu) != 0u         ? t
+                                                 : 1.0 / 0.0;
+    hit_ts[index] = t_hit;
+    // over the budget: its tile listed for every box that reaches it
+    far_keys[gl_LocalInvocationIndex] = far_key(isinf(t_hit) ? 1.0 / 0.0 : t_hit);
 #endif
     if ((code & CODE_OVER_BUDGET) != 0u) {
         send_back(index);
@@ -523,10 +553,17 @@ void main()
     // every invocation reaches the barrier: the work group's colours are
     // packed into the band's rows once all are shaded
     group_rgb[gl_LocalInvocationIndex] = 0u;
+#ifdef SBRT_HIT_T
+    far_keys[gl_LocalInvocationIndex] = 0u;
+#endif
     trace_pixel();
     write_kept_pixel(); // where its ray ended: one copy of the shading
     memoryBarrierShared();
     barrier();
+#ifdef SBRT_HIT_T
+    if (gl_LocalInvocationIndex == 0u)
+        write_tile_far();
+#endif
     pack_group_rgb(min(options.w, grid.w - options.z), grid.z);
 #else
     trace_pixel();

@@ -8,21 +8,27 @@
 // the tile and counts it in the dispatch's work groups; each box goes into
 // the tile's slots, or past them only into its count (the pass then tests
 // every box there). The head (sbrt::GpuTileHead) is the host's; the
-// counts start at 0.
+// counts start at 0. A tile whose model hits (the model pass's, just
+// done) all lie before the least t at which a ray enters the box is not
+// listed for it: every pixel there keeps the model pass's colour.
 
 layout(local_size_x = 64) in;
 
 layout(std430, binding = 12) buffer Tiles { uint tiles[]; };
+layout(std430, binding = 13) readonly buffer HitTs { float hit_ts[]; };
 layout(std430, binding = 14) readonly buffer Boxes { float boxes[]; };
 
 const uint GROUPS = 0u, SLOTS = 3u, TILE_COLS = 4u, TILE_ROWS = 5u, LIST_AT = 7u,
-           COUNTS_AT = 8u, SLOTS_AT = 9u, PIXEL_ROWS = 12u, CAMERA_HI = 24u, CAMERA_LO = 28u;
+           COUNTS_AT = 8u, SLOTS_AT = 9u, PIXEL_ROWS = 12u, CAMERA_HI = 24u, CAMERA_LO = 28u,
+           RAY_T = 32u, FAR_AT = 36u;
 // beyond float rounding of the corners' pixel positions (the tiles are
 // already one pixel wider than their centres), and a share of their size
 const float MARGIN = 1e-2, ROUNDING = 5e-7;
 
 shared vec2 corner[8];
 shared bool in_front[8];
+// each corner's t on the ray through it, and a bound on its rounding
+shared vec2 corner_t[8];
 // per line through two corners: its unit normal and the corners' extent on it
 shared vec4 axis[28];
 
@@ -57,6 +63,9 @@ void main()
                     head_float(row + 3u);
         }
         corner[me] = at.xy / at.z;
+        vec3 a = vec3(head_float(RAY_T), head_float(RAY_T + 1u), head_float(RAY_T + 2u));
+        float c = head_float(RAY_T + 3u);
+        corner_t[me] = vec2(dot(a, v) + c, dot(abs(a), abs(v)) + abs(c));
         // a corner beyond float's range: as if behind (every tile)
         in_front[me] = at.z > 0.0 && !any(isinf(corner[me])) && !any(isnan(corner[me]));
     }
@@ -94,6 +103,14 @@ void main()
     for (uint k = 0u; k < 8u; ++k)
         size = max(size, abs(corner[k].x) + abs(corner[k].y));
     float margin = MARGIN + ROUNDING * size;
+    // the least t of a ray in the box, less what rounding and the
+    // boreholes' pass's own margin (raycast.comp's t_margin) may take away
+    float t_box = 1.0 / 0.0, t_scale = 0.0;
+    for (uint k = 0u; k < 8u; ++k) {
+        t_box = min(t_box, corner_t[k].x);
+        t_scale = max(t_scale, corner_t[k].y);
+    }
+    t_box -= 1e-5 * t_scale + 1e-4 * abs(t_box) + 1e-3;
     // the tiles of its bounds; a box partly behind (float rounding at the
     // camera's plane, the host found none): every tile of the band
     vec2 lo = vec2(1.0 / 0.0), hi = vec2(-1.0 / 0.0);
@@ -126,7 +143,11 @@ void main()
             float high = s.x * (s.x > 0.0 ? r1.x : r0.x) + s.y * (s.y > 0.0 ? r1.y : r0.y);
             apart = high < s.z - margin || low > s.w + margin;
         }
-        if (!apart)
+        // the model pass's hits all before the box (behind the camera: a
+        // box partly there is listed everywhere)
+        float t_far = hit_ts[tiles[FAR_AT] + ty * tile_cols + tx];
+        bool hidden = front == 8u && t_far + 1e-4 * abs(t_far) + 1e-3 < t_box;
+        if (!apart && !hidden)
             list_tile(tx, ty, box);
     }
 }

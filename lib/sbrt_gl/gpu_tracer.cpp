@@ -436,10 +436,13 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    " boreholes over bands of ", band_tiles,
                    " tiles, more than one dispatch takes (65535): fewer rows a band or "
                    "fewer boreholes");
-    // each pixel's t of its hit in the model's pass, for the boreholes'
-    // (binding 13): a buffer for each slot, as a band dispatched ahead
-    // writes its own while the band before still reads
-    bands_.set_scratch(boreholes ? checked_bytes(size_t(layout.rows) * size_t(cols) *
+    // each pixel's t of its hit in the model's pass, then each tile's
+    // farthest, for the boreholes' pass and its culling (binding 13): a
+    // buffer for each slot, as a band dispatched ahead writes its own while
+    // the band before still reads
+    const size_t layout_tiles = size_t((cols + 7) / 8) * size_t((layout.rows + 7) / 8);
+    bands_.set_scratch(boreholes ? checked_bytes((size_t(layout.rows) * size_t(cols) +
+                                                  layout_tiles) *
                                                      sizeof(float),
                                                  max_block_bytes_, "hits' distances")
                                  : 0,
@@ -499,6 +502,9 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    const auto submit = Clock::now();
                    list->bind(12);
                    if (!every_tile) {
+                       // the model pass's farthest t of each tile before
+                       // the culling reads them
+                       gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
                        cull_program().use();
                        timer_.time(int(Pass::cull_tiles), [&] {
                            gl_.DispatchCompute(GLuint(boxes.size()), 1, 1);

@@ -183,7 +183,8 @@ uvec2 work_group_tile() { return gl_WorkGroupID.xy; }
 #endif
 #if defined(SBRT_HIT_T) || defined(SBRT_TILE_LIST)
 // The model's pass with boreholes drawn in a pass of their own: each
-// pixel's t of its opaque hit, 1/0 where it has none (binding 13)
+// pixel's t of its opaque hit, 1/0 where it has none, then each tile's
+// farthest (binding 13)
 layout(std430, binding = 13) buffer HitTs { float hit_ts[]; };
 #endif
 

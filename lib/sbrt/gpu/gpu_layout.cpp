@@ -121,6 +121,19 @@ GpuViewDouble make_gpu_view_double(const Tracer &tracer, const Camera &camera)
     return view;
 }
 
+glm::dvec4 ray_t_form(const Tracer &tracer, const Camera &camera, glm::dvec3 from)
+{
+    // a ray: origin + s (x du + y dv) + t (forward + x du + y dv) for a
+    // pinhole, origin + x spread_u + y spread_v + t forward for a parallel
+    // camera; a form across the image plane's two axes, 1 along forward,
+    // gives t
+    const LocalRays rays = local_rays(tracer, camera);
+    const glm::dvec3 n = camera.parallel() ? glm::cross(rays.spread_u, rays.spread_v)
+                                           : glm::cross(rays.du, rays.dv);
+    const glm::dvec3 a = n / glm::dot(n, rays.forward);
+    return {a, glm::dot(a, from - rays.origin)};
+}
+
 std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid)
 {
     if (pyramid.levels() > GPU_MAX_PYRAMID_LEVELS)

@@ -14,6 +14,9 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
 #include "output/band.hpp"
 #include "shading/shading.hpp"
 #include "tracing/tracer.hpp"
@@ -169,6 +172,12 @@ GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,
 
 /// The same rays in double (GpuViewDouble).
 GpuViewDouble make_gpu_view_double(const Tracer &tracer, const Camera &camera);
+
+/// The t of make_gpu_view's rays at a local point p, as a form of p -
+/// `from` (local): t = dot(xyz, p - from) + w, whichever pixel's ray runs
+/// through p (a pinhole's rays all leave its eye; a parallel camera's
+/// plane of origins and t move together).
+glm::dvec4 ray_t_form(const Tracer &tracer, const Camera &camera, glm::dvec3 from);
 
 /// The Kernel block of `camera` (a whole image) with `kernel` and the
 /// smoothing of `weights` (gaussian_weights; none: no smoothing).

@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "gpu/gpu_layout.hpp"
 #include "util/error.hpp"
 
 namespace sbrt {
@@ -235,6 +236,10 @@ GpuTileHead make_gpu_tile_head(const Tracer &tracer, const Camera &camera, int f
         head.camera_hi[a] = float(eye[a]);
         head.camera_lo[a] = float(eye[a] - double(head.camera_hi[a]));
     }
+    const glm::dvec4 t_form = ray_t_form(tracer, camera, eye);
+    for (int a = 0; a < 4; ++a)
+        head.ray_t[a] = float(t_form[a]);
+    head.far_at = uint32_t(uint64_t(rows) * uint64_t(camera.cols()));
     return head;
 }
 

@@ -108,8 +108,17 @@ struct GpuTileHead {
     /// hi) - lo, whose rounding grows with the distance to the camera,
     /// not with the distance to local 0
     float camera_hi[4] = {}, camera_lo[4] = {};
+    /// a ray's t at local point p: dot(xyz, v) + w (ray_t_form), v as
+    /// above; a box's least over its corners is the least t at which a ray
+    /// enters it
+    float ray_t[4] = {};
+    /// where `buffer HitTs` (binding 13) holds the farthest t of each
+    /// tile's model hits (the model pass writes them after the band's
+    /// pixels' ts): a tile whose model hits all lie before a box's least t
+    /// is not listed for that box
+    uint32_t far_at = 0, pad_end[3] = {};
 };
-static_assert(sizeof(GpuTileHead) == 32 * 4, "32 words");
+static_assert(sizeof(GpuTileHead) == 40 * 4, "40 words");
 
 /// The head of the band of `rows` rows from `first_row` of `camera`'s
 /// image, with `boxes` boxes and `slots` box indices a tile (0: every
