@@ -5,7 +5,8 @@
 #            machine (an NVIDIA GPU, 16 cores, no GRASS, no network): puts
 #            into .device/ trace_bench and the unit tests (GRASS-free;
 #            BASE_BENCH=path adds another build's trace_bench as
-#            trace_bench_base, measured in the same run), the shared libraries
+#            trace_bench_base, measured in the same run), machine_probe,
+#            the shared libraries
 #            it needs beyond the C/C++ runtime, the SBRTs of the sizes
 #            given (gzipped), a GeoTOP-like model with its eleven
 #            property channels (200 x 200 x 160, paint_gt: issue 29's GPU
@@ -30,11 +31,13 @@ done
 rm -rf .device && mkdir -p .device/lib .device/sbrt .gl
 make -s -C testsuite/benchmark/trace_bench >/dev/null
 make -s -C testsuite/unit build/sbrt_unit_tests >/dev/null
+make -s -C testsuite/benchmark/machine_probe >/dev/null
 cp testsuite/benchmark/trace_bench/build/trace_bench testsuite/unit/build/sbrt_unit_tests \
-    testsuite/benchmark/device_run.sh .device/
+    testsuite/benchmark/machine_probe/build/machine_probe testsuite/benchmark/device_run.sh \
+    .device/
 # another build's trace_bench for figures of both in one run (BASE_BENCH=path)
 [ -n "${BASE_BENCH:-}" ] && cp "$BASE_BENCH" .device/trace_bench_base
-strip --strip-debug .device/trace_bench* .device/sbrt_unit_tests
+strip --strip-debug .device/trace_bench* .device/sbrt_unit_tests .device/machine_probe
 # what the binary links beyond the C/C++ runtime and GL (the debs bring GL)
 ldd .device/trace_bench | awk '/=> \// { print $3 }' |
     grep -vE '/(libc|libm|libstdc\+\+|libgcc_s|ld-linux[^/]*|libEGL|libGL[^/]*|libOpenGL|libGLdispatch|libdl|libpthread)\.so' |

@@ -17,7 +17,9 @@
 #            - the CPU on 1, 2, 4, 8, 16 cores (taskset), B at 1056 x 884
 #              and 2112 x 1768, C at 1056 x 884, with each worker's busy
 #              share (frame_parts);
-#            - the machine's own limit: B's single-thread frame alone and
+#            - the machine's own limit: what it gives 1, 2, 4, 8, 16
+#              threads of arithmetic, streaming and dependent random reads
+#              (machine_probe: machine); B's single-thread frame alone and
 #              with one such process on every core at once (contention);
 #              B on 1 and on all cores in turns, three rounds, with the
 #              cores' clock read while each runs (alternate);
@@ -34,7 +36,7 @@
 #              warm, and the GPU's pixels against the CPU's.
 #            Runs here too (llvmpipe), which checks the script.
 # USAGE:     [SECTIONS="programs unit paint gpu large boreholes scaling
-#            contention alternate"] [UNIT_FILTER=a GoogleTest filter] [BOREHOLE_FRAMES=200]
+#            machine contention alternate"] [UNIT_FILTER=a GoogleTest filter] [BOREHOLE_FRAMES=200]
 #            bash .device/device_run.sh [SIZES] (A B C)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
@@ -55,7 +57,7 @@ cores=$(nproc)
 builds=(new)
 [ -x "$bundle/trace_bench_base" ] && builds+=(base)
 bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
-sections=" ${SECTIONS:-programs unit paint gpu large boreholes scaling contention alternate} "
+sections=" ${SECTIONS:-programs unit paint gpu large boreholes scaling machine contention alternate} "
 run() { [[ "$sections" == *" $1 "* ]]; }
 
 # the models, unpacked once for every section
@@ -170,6 +172,16 @@ for build in "${builds[@]}"; do
         done
     done
 done
+
+# the machine's limit without our code: each kind of work's rate a thread
+# on n cores against one alone (a fall in arithmetic: the clock or shared
+# cores; in streaming: bandwidth; in random reads: memory latency)
+if run machine && [ -x "$bundle/machine_probe" ]; then
+    for n in 1 2 4 8 16; do
+        [ "$n" -le "$cores" ] || break
+        taskset -c "0-$((n - 1))" "$bundle/machine_probe" threads="$n" | sed "s/^/device /"
+    done
+fi
 
 # 5. the machine's limit: B's single-thread frame alone, then on every core
 # at once in as many processes (nothing shared but the machine), at both

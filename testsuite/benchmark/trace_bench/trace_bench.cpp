@@ -15,7 +15,8 @@
  *                        (face, then kernel normals) and the RGB read back,
  *                        warm, each kind back to back (the GPU's after 0.3 s
  *                        of frames: its clocks fall between short frames);
- *                        beside them the CPU's frame (threads=)
+ *                        beside them the CPU's frame (threads=), and the
+ *                        pixels of the GPU's image apart from the CPU's
  *              paint_frame the class view against a property (property=
  *                        a+b: their sum through a ramp) and a fade
  *                        (fade=c, 0..100) on the GPU (gpu=) and the CPU:
@@ -399,6 +400,16 @@ Scene boreholes(const Model &model, const Args &args)
     return scene;
 }
 
+/// Pixels whose colour differs by more than one level in any component.
+size_t pixels_apart(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b)
+{
+    size_t apart = 0;
+    for (size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3)
+        apart += std::abs(int(a[i]) - b[i]) > 1 || std::abs(int(a[i + 1]) - b[i + 1]) > 1 ||
+                 std::abs(int(a[i + 2]) - b[i + 2]) > 1;
+    return apart;
+}
+
 /// Frames on the GPU back to back for 0.3 s: a GPU's clocks fall between
 /// short frames with idle time around them (an H100 ran the same pass in
 /// 0.77 ms at its idle clock of 345 MHz and in 0.14 ms at 1980 MHz), so
@@ -534,24 +545,19 @@ void gpu_frame(const std::string &dir, const Args &args, const Camera &camera, d
     ms.push_back(drilled == 0 ? gpu_best(kernel, dispatch_ms[1]) : NAN);
     const double rays = double(camera.rows()) * camera.cols();
     print_gpu_frame_parts(on_gpu, renderer, camera, sink, threads, repeat, label);
+    // the GPU's image against the CPU's (face normals)
+    renderer.set_shading(face);
+    const size_t apart = pixels_apart(on_gpu.render_image(camera, {}, threads).rgb,
+                                      renderer.render_image(camera, {}).rgb);
     std::printf("gpu_frame label=%s boreholes=%zu renderer=\"%s\" cols=%d rows=%d upload_ms=%.1f "
                 "programs_ms=%.1f frame_ms=%.2f dispatch_ms=%.2f mrays=%.0f frames_per_s=%.1f "
                 "cpu_frame_ms=%.1f cpu_threads=%u gpu/cpu=%.1f kernel_frame_ms=%.2f "
-                "kernel_dispatch_ms=%.2f kernel/face_dispatch=%.2f (checksum %zu)\n",
+                "kernel_dispatch_ms=%.2f kernel/face_dispatch=%.2f pixels_apart_from_cpu=%zu "
+                "(checksum %zu)\n",
                 label.c_str(), drilled, gpu.gl_renderer().c_str(), camera.cols(), camera.rows(),
                 upload_ms, gpu.stats().programs_ms, ms[0], dispatch_ms[0], rays / ms[0] / 1000, 1000 / ms[0], ms[1],
                 thread_count(threads), ms[1] / ms[0], ms[2], dispatch_ms[1],
-                dispatch_ms[1] / dispatch_ms[0], checksum);
-}
-
-/// Pixels whose colour differs by more than one level in any component.
-size_t pixels_apart(const std::vector<uint8_t> &a, const std::vector<uint8_t> &b)
-{
-    size_t apart = 0;
-    for (size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3)
-        apart += std::abs(int(a[i]) - b[i]) > 1 || std::abs(int(a[i + 1]) - b[i + 1]) > 1 ||
-                 std::abs(int(a[i + 2]) - b[i + 2]) > 1;
-    return apart;
+                dispatch_ms[1] / dispatch_ms[0], apart, checksum);
 }
 
 /// The class view, property= (a sum of channels through a ramp over their
