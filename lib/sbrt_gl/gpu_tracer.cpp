@@ -440,9 +440,8 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     // farthest, for the boreholes' pass and its culling (binding 13): a
     // buffer for each slot, as a band dispatched ahead writes its own while
     // the band before still reads
-    const size_t layout_tiles = size_t((cols + 7) / 8) * size_t((layout.rows + 7) / 8);
     bands_.set_scratch(boreholes ? checked_bytes((size_t(layout.rows) * size_t(cols) +
-                                                  layout_tiles) *
+                                                  band_tiles) *
                                                      sizeof(float),
                                                  max_block_bytes_, "hits' distances")
                                  : 0,
