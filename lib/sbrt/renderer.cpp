@@ -197,8 +197,13 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
                  int cols, RenderReport &report)
 {
     const unsigned threads = pool.size();
+    // each thread a run of consecutive rows at a time (its cache holds the
+    // cells the run's rays cross); bands enough for every thread's run
+    const int run = rows_per_take(rows, threads);
     const BandFrame frame(writer, sink,
-                          std::max<size_t>(3, 2 * threads / size_t(report.band_rows) + 2));
+                          std::max<size_t>(3, 2 * threads * size_t(run) /
+                                                      size_t(report.band_rows) +
+                                                  2));
     BandFlow flow(writer, rows, cols, report.band_rows, outputs);
     std::vector<double> busy(threads, 0.0);
     const auto start = std::chrono::steady_clock::now();
@@ -221,7 +226,7 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
             flow.abort(); // no thread waits for a band that cannot come
             throw;
         }
-    });
+    }, run);
     report.trace_ms = ms_since(start);
     writer.finish();
     report.bands = flow.bands();

@@ -16,7 +16,8 @@
 #            - model B with 100 boreholes drawn with the model;
 #            - the CPU on 1, 2, 4, 8, 16 cores (taskset), B at 1056 x 884
 #              and 2112 x 1768, C at 1056 x 884, with each worker's busy
-#              share (frame_parts);
+#              share (frame_parts), and on one core the rows in the order
+#              one of 16 threads meets them (row_order);
 #            - the machine's own limit: what it gives 1, 2, 4, 8, 16
 #              threads of arithmetic, streaming and dependent random reads
 #              (machine_probe: machine); B's single-thread frame alone and
@@ -155,7 +156,8 @@ if [ -d "$data/geo_B" ]; then
     fi
 fi
 
-# 4. the CPU's scaling, each build
+# 4. the CPU's scaling, each build; first, on one core, what a thread's
+# cache loses when its rows lie apart as at 16 threads (row_order)
 for build in "${builds[@]}"; do
     run scaling || break
     bench=$(bench_of "$build")
@@ -164,6 +166,8 @@ for build in "${builds[@]}"; do
         size=$1
         shift
         [ -d "$data/geo_$size" ] || continue
+        [ "$build" = new ] && taskset -c 0 "$bench" row_order "$data/geo_$size" $best "$@" \
+            repeat=3 label="$size/$1" | sed "s/^/device /"
         for n in 1 2 4 8 16; do
             [ "$n" -le "$cores" ] || break
             taskset -c "0-$((n - 1))" "$bench" frame "$data/geo_$size" $best "$@" \

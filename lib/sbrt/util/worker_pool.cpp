@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "util/worker_pool.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "util/parallel.hpp"
@@ -35,9 +36,10 @@ void WorkerPool::run_rows(unsigned worker)
     using Clock = std::chrono::steady_clock;
     double busy = 0;
     try {
-        for (long long row; (row = next_++) < last_;) {
+        for (long long first; (first = next_.fetch_add(run_)) < last_;) {
             const auto start = Clock::now();
-            (*function_)(int(row), worker);
+            for (long long row = first; row < std::min<long long>(first + run_, last_); ++row)
+                (*function_)(int(row), worker);
             busy += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         }
     }
@@ -71,15 +73,16 @@ void WorkerPool::work(unsigned worker)
 }
 
 void WorkerPool::for_each_row(int first, int last,
-                              const std::function<void(int, unsigned)> &row_function)
+                              const std::function<void(int, unsigned)> &row_function, int run)
 {
     const std::lock_guard<std::mutex> job(job_mutex_);
     {
         const std::lock_guard<std::mutex> lock(mutex_);
         function_ = &row_function;
-        // 64 bits: every worker takes one past `last`, which must not wrap
+        // 64 bits: every worker takes one run past `last`, which must not wrap
         next_ = first;
         last_ = last;
+        run_ = std::max(1, run);
         error_ = nullptr;
         running_ = unsigned(threads_.size());
         ++generation_;

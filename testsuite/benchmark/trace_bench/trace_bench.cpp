@@ -26,6 +26,10 @@
  *                        hits instead), its warm frame, whether the GPU shaded
  *                        it, and the pixels whose colour differs from the
  *                        CPU's by more than one level
+ *              row_order on one thread, the rows in the order one of
+ *                        as_threads= (16) threads meets them, a row a take
+ *                        and in runs (rows_per_take), against the image's
+ *                        own order
  *              format    the stacks file in format 1 and 2: bytes, bytes
  *                        per interval, load (warm) and write times
  *              error     time against error: the exact method, the sampled
@@ -33,7 +37,7 @@
  *                        normals k = 3..11, each against the exact CPU
  *                        reference with face normals
  * USAGE:     trace_bench format SBRT_DIR [repeat=7] [label=name]
- *            trace_bench skipping|frame|gpu_frame|error SBRT_DIR position=x,y,z
+ *            trace_bench skipping|frame|gpu_frame|error|row_order SBRT_DIR position=x,y,z
  *            target=x,y,z [fov=25] [zexag=1] [cols=1056] [rows=884]
  *            [repeat=3] [hide=id,id] [label=name] [gpu=egl|osmesa|none]
  *            [threads=N] [classes=FILE: error writes the reference's class
@@ -331,6 +335,38 @@ void print_frame_parts(const RenderReport &r, const std::string &label)
                 label.c_str(), r.worker_busy_ms.size(), r.ms, r.first_pass.ms, r.trace_ms, busy_sum,
                 100 * busy_sum / workers / r.ms, 100 * busy_min / r.ms, r.band_wait_ms, r.sink_ms,
                 100 * r.sink_ms / r.ms, r.bands, shares.c_str());
+}
+
+/// On one thread, the rows of the image traced in the order one of
+/// `as_threads` threads meets them (thread k's takes, then thread k+1's),
+/// taking one row at a time and taking runs of rows_per_take, against the
+/// image's own order: what a thread's cache loses when its rows lie apart
+/// (issue 32: at 16 threads the workers' busy time summed to 1.1-1.5
+/// times one thread's), measured without the cores it needs.
+void row_order(const Model &model, const Args &args, const Camera &camera, double zexag,
+               int repeat)
+{
+    const Tracer tracer(model, zexag);
+    CpuRowTracer rows(tracer, camera, 1, true);
+    HitImage hits(static_cast<size_t>(camera.cols()));
+    const int image_rows = camera.rows();
+    const unsigned as_threads = unsigned(std::stoi(args.get("as_threads", "16")));
+    const auto order = [&](unsigned threads, int run) {
+        return [&, threads, run] {
+            const int takes = (image_rows + run - 1) / run;
+            for (unsigned t = 0; t < threads; ++t)
+                for (int k = int(t); k < takes; k += int(threads))
+                    for (int r = k * run; r < std::min(image_rows, (k + 1) * run); ++r)
+                        rows.trace_row(r, hits.data());
+        };
+    };
+    const int run = rows_per_take(image_rows, as_threads);
+    const std::vector<double> ms =
+        best_ms_in_turns(repeat, {order(1, image_rows), order(as_threads, 1), order(as_threads, run)});
+    std::printf("row_order label=%s cols=%d rows=%d as_threads=%u image_order_ms=%.1f "
+                "a_row_a_take_ms=%.1f (%.2fx) runs_of_%d_ms=%.1f (%.2fx)\n",
+                args.get("label", "view").c_str(), camera.cols(), image_rows, as_threads, ms[0],
+                ms[1], ms[1] / ms[0], run, ms[2], ms[2] / ms[0]);
 }
 
 /// The streamed frame in process, warm (best of `repeat`), and the
@@ -795,7 +831,7 @@ void compact_against_wide(const Model &read, const Args &args, const Camera &cam
 int main(int argc, char *argv[])
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s format|skipping|frame|gpu_frame|paint_frame|error|compact SBRT_DIR key=value...\n", argv[0]);
+        std::fprintf(stderr, "usage: %s format|skipping|frame|gpu_frame|paint_frame|error|compact|row_order SBRT_DIR key=value...\n", argv[0]);
         return 2;
     }
     try {
@@ -843,6 +879,8 @@ int main(int argc, char *argv[])
             skipping(model, args, camera, zexag, repeat);
         else if (mode == "error")
             time_against_error(model, args, camera, zexag, repeat);
+        else if (mode == "row_order")
+            row_order(model, args, camera, zexag, repeat);
         else if (mode == "compact")
             compact_against_wide(model, args, camera, zexag, repeat);
         else
