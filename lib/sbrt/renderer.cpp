@@ -199,9 +199,8 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
     const unsigned threads = pool.size();
     // each thread a run of consecutive rows at a time (its cache holds the
     // cells the run's rays cross); bands enough for every thread's run
-    const int run = rows_per_take(rows, threads);
     const BandFrame frame(writer, sink,
-                          std::max<size_t>(3, 2 * threads * size_t(run) /
+                          std::max<size_t>(3, 2 * threads * size_t(ROWS_PER_TAKE) /
                                                       size_t(report.band_rows) +
                                                   2));
     BandFlow flow(writer, rows, cols, report.band_rows, outputs);
@@ -226,7 +225,7 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
             flow.abort(); // no thread waits for a band that cannot come
             throw;
         }
-    }, run);
+    }, ROWS_PER_TAKE);
     report.trace_ms = ms_since(start);
     writer.finish();
     report.bands = flow.bands();

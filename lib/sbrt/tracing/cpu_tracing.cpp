@@ -128,7 +128,7 @@ void CpuRowTracer::trace_row(int row, Hit *out) const
 void CpuRowTracer::trace_rows(int first, int count, Hit *out)
 {
     const size_t cols = size_t(camera_.cols());
-    for_each_row_in_runs(first, first + count, threads_, rows_per_take(count, threads_),
+    for_each_row_in_runs(first, first + count, threads_, ROWS_PER_TAKE,
                          [&](int row) { trace_row(row, out + size_t(row - first) * cols); });
 }
 

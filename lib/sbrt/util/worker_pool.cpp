@@ -36,9 +36,14 @@ void WorkerPool::run_rows(unsigned worker)
     using Clock = std::chrono::steady_clock;
     double busy = 0;
     try {
-        for (long long first; (first = next_.fetch_add(run_)) < last_;) {
+        for (;;) {
+            const int take =
+                rows_to_take(last_ - next_.load(std::memory_order_relaxed), size(), most_);
+            const long long first = next_.fetch_add(take);
+            if (first >= last_)
+                break;
             const auto start = Clock::now();
-            for (long long row = first; row < std::min<long long>(first + run_, last_); ++row)
+            for (long long row = first; row < std::min<long long>(first + take, last_); ++row)
                 (*function_)(int(row), worker);
             busy += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         }
@@ -73,16 +78,17 @@ void WorkerPool::work(unsigned worker)
 }
 
 void WorkerPool::for_each_row(int first, int last,
-                              const std::function<void(int, unsigned)> &row_function, int run)
+                              const std::function<void(int, unsigned)> &row_function, int most)
 {
     const std::lock_guard<std::mutex> job(job_mutex_);
     {
         const std::lock_guard<std::mutex> lock(mutex_);
         function_ = &row_function;
-        // 64 bits: every worker takes one run past `last`, which must not wrap
+        // 64 bits: every worker takes up to `most` past `last`, which must
+        // not wrap
         next_ = first;
         last_ = last;
-        run_ = std::max(1, run);
+        most_ = most;
         error_ = nullptr;
         running_ = unsigned(threads_.size());
         ++generation_;

@@ -31,13 +31,14 @@ public:
     unsigned size() const { return unsigned(threads_.size()) + 1; }
 
     /// Calls row_function(row, worker) for row in [first, last), rows taken
-    /// `run` at a time (dynamic scheduling; a worker calls it for its run's
-    /// rows in order; rows_per_take), worker in [0, size()): 0 is the
-    /// caller. Returns when every row is done; the first exception thrown
-    /// on any worker stops the others taking rows and is rethrown here.
+    /// up to `most` at a time (dynamic scheduling, rows_to_take; a worker
+    /// calls it for its take's rows in order), worker in [0, size()): 0 is
+    /// the caller. Returns when every row is done; the first exception
+    /// thrown on any worker stops the others taking rows and is rethrown
+    /// here.
     void for_each_row(int first, int last,
                       const std::function<void(int row, unsigned worker)> &row_function,
-                      int run = 1);
+                      int most = 1);
 
     /// Per worker, the milliseconds spent in row_function during the last
     /// for_each_row.
@@ -56,7 +57,7 @@ private:
     const std::function<void(int, unsigned)> *function_ = nullptr;
     std::atomic<long long> next_{0};
     int last_ = 0;
-    int run_ = 1; ///< rows a worker takes at once
+    int most_ = 1; ///< the most rows a worker takes at once
     std::exception_ptr error_;
     std::vector<double> busy_ms_;
     std::vector<std::thread> threads_;

@@ -28,7 +28,7 @@
  *                        CPU's by more than one level
  *              row_order on one thread, the rows in the order one of
  *                        as_threads= (16) threads meets them, a row a take
- *                        and in runs (rows_per_take), against the image's
+ *                        and in runs (ROWS_PER_TAKE), against the image's
  *                        own order
  *              format    the stacks file in format 1 and 2: bytes, bytes
  *                        per interval, load (warm) and write times
@@ -339,7 +339,7 @@ void print_frame_parts(const RenderReport &r, const std::string &label)
 
 /// On one thread, the rows of the image traced in the order one of
 /// `as_threads` threads meets them (thread k's takes, then thread k+1's),
-/// taking one row at a time and taking runs of rows_per_take, against the
+/// taking one row at a time and taking runs of ROWS_PER_TAKE, against the
 /// image's own order: what a thread's cache loses when its rows lie apart
 /// (issue 32: at 16 threads the workers' busy time summed to 1.1-1.5
 /// times one thread's), measured without the cores it needs.
@@ -360,7 +360,7 @@ void row_order(const Model &model, const Args &args, const Camera &camera, doubl
                         rows.trace_row(r, hits.data());
         };
     };
-    const int run = rows_per_take(image_rows, as_threads);
+    const int run = ROWS_PER_TAKE;
     const std::vector<double> ms =
         best_ms_in_turns(repeat, {order(1, image_rows), order(as_threads, 1), order(as_threads, run)});
     std::printf("row_order label=%s cols=%d rows=%d as_threads=%u image_order_ms=%.1f "
