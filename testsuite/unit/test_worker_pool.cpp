@@ -7,6 +7,7 @@
  ****************************************************************************/
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <map>
 #include <mutex>
 #include <numeric>
@@ -99,18 +100,23 @@ TEST(WorkerPool, RowsTakenInRunsComeInOrderOnOneWorkerEach)
     // a thread traces runs of consecutive rows (their rays cross the same
     // cells: its cache keeps them), fewer rows a take as the rows run out,
     // every row once
+    // rows that take a while (20 us), so that every worker takes some
+    // between the others' takes
+    const auto slow = [] { std::this_thread::sleep_for(std::chrono::microseconds(20)); };
     WorkerPool pool(4);
     RowsSeen seen(pool.size());
-    pool.for_each_row(5, 805, [&](int row, unsigned worker) { seen[worker].push_back(row); }, 8);
+    pool.for_each_row(5, 805, [&](int row, unsigned worker) {
+        slow();
+        seen[worker].push_back(row);
+    }, 8);
     // takes of 8 until 64 rows are left, then fewer: about 120 takes or
     // fewer (adjacent ones may join), against 800 a row at a time
-    const size_t runs = runs_of_rows(seen, 5, 805);
-    EXPECT_LE(runs, 150u);
-    EXPECT_GE(runs, 4u);
+    EXPECT_LE(runs_of_rows(seen, 5, 805), 150u);
     // the free function, on threads of its own
     std::mutex mutex;
     std::map<std::thread::id, std::vector<int>> by_thread;
     for_each_row_in_runs(2, 399, 3, 8, [&](int row) {
+        slow();
         const std::lock_guard<std::mutex> lock(mutex);
         by_thread[std::this_thread::get_id()].push_back(row);
     });
@@ -118,10 +124,13 @@ TEST(WorkerPool, RowsTakenInRunsComeInOrderOnOneWorkerEach)
     for (auto &[id, rows] : by_thread)
         threads.push_back(rows);
     EXPECT_LE(runs_of_rows(threads, 2, 399), 70u);
-    // a row at a time
+    // a row at a time: the workers' rows interleave
     RowsSeen single(pool.size());
-    pool.for_each_row(0, 50, [&](int row, unsigned worker) { single[worker].push_back(row); });
-    runs_of_rows(single, 0, 50);
+    pool.for_each_row(0, 200, [&](int row, unsigned worker) {
+        slow();
+        single[worker].push_back(row);
+    });
+    EXPECT_GT(runs_of_rows(single, 0, 200), 60u);
     // takes: at most `most`, half a thread's share of what is left, one
     // at the end
     EXPECT_EQ(rows_to_take(1000, 16, 8), 8);

@@ -22,8 +22,8 @@ namespace sbrt {
 /// Sizes the band's vectors for `rows` rows of the outputs asked for.
 void prepare_band(Band &band, int first_row, int rows, int cols, const Outputs &outputs);
 
-/// \brief Rows go to the threads one at a time in order (for_each_row);
-/// each row is written into its band, and a band goes to the writer when
+/// \brief Rows go to the threads in order, a run of them at a time
+/// (WorkerPool::for_each_row); each row is written into its band, and a band goes to the writer when
 /// its last row is done, whichever thread does it. Bands are opened in
 /// order, each with a buffer from the writer (waiting while the sink holds
 /// them all): the threads run at most the writer's buffers ahead of the

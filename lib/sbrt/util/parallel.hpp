@@ -68,7 +68,7 @@ void for_each_row_in_runs(int first, int last, unsigned threads, int most,
             }
         }
         catch (...) {
-            next = last; // the others stop at their next row
+            next = last; // the others stop at their next take
             const std::lock_guard<std::mutex> lock(error_mutex);
             if (!error)
                 error = std::current_exception();

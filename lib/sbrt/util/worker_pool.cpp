@@ -49,7 +49,7 @@ void WorkerPool::run_rows(unsigned worker)
         }
     }
     catch (...) {
-        next_ = last_; // the others stop at their next row
+        next_ = last_; // the others stop at their next take
         const std::lock_guard<std::mutex> lock(mutex_);
         if (!error_)
             error_ = std::current_exception();
