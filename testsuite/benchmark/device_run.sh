@@ -167,7 +167,7 @@ for build in "${builds[@]}"; do
         shift
         [ -d "$data/geo_$size" ] || continue
         [ "$build" = new ] && taskset -c 0 "$bench" row_order "$data/geo_$size" $best "$@" \
-            repeat=3 label="$size/$1" | sed "s/^/device /"
+            repeat=5 label="$size/$1" | sed "s/^/device /"
         for n in 1 2 4 8 16; do
             [ "$n" -le "$cores" ] || break
             taskset -c "0-$((n - 1))" "$bench" frame "$data/geo_$size" $best "$@" \
