@@ -34,6 +34,10 @@ shared vec4 axis[28];
 
 float head_float(uint word) { return uintBitsToFloat(tiles[word]); }
 
+// raycast.comp's margin for float rounding around a ray's t (the
+// boreholes' pass tests each pixel's model hit against its boxes with it)
+float t_margin(float t) { return 1e-4 * abs(t) + 1e-3; }
+
 void list_tile(uint tx, uint ty, uint box)
 {
     uint tile = ty * tiles[TILE_COLS] + tx;
@@ -110,7 +114,7 @@ void main()
         t_box = min(t_box, corner_t[k].x);
         t_scale = max(t_scale, corner_t[k].y);
     }
-    t_box -= 1e-5 * t_scale + 1e-4 * abs(t_box) + 1e-3;
+    t_box -= 1e-5 * t_scale + t_margin(t_box);
     // the tiles of its bounds; a box partly behind (float rounding at the
     // camera's plane, the host found none): every tile of the band
     vec2 lo = vec2(1.0 / 0.0), hi = vec2(-1.0 / 0.0);
@@ -143,11 +147,12 @@ void main()
             float high = s.x * (s.x > 0.0 ? r1.x : r0.x) + s.y * (s.y > 0.0 ? r1.y : r0.y);
             apart = high < s.z - margin || low > s.w + margin;
         }
+        if (apart)
+            continue;
         // the model pass's hits all before the box (behind the camera: a
         // box partly there is listed everywhere)
         float t_far = hit_ts[tiles[FAR_AT] + ty * tile_cols + tx];
-        bool hidden = front == 8u && t_far + 1e-4 * abs(t_far) + 1e-3 < t_box;
-        if (!apart && !hidden)
+        if (front < 8u || !(t_far + t_margin(t_far) < t_box))
             list_tile(tx, ty, box);
     }
 }

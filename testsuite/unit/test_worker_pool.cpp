@@ -99,9 +99,8 @@ TEST(WorkerPool, RowsTakenInRunsComeInOrderOnOneWorkerEach)
 {
     // a thread traces runs of consecutive rows (their rays cross the same
     // cells: its cache keeps them), fewer rows a take as the rows run out,
-    // every row once
-    // rows that take a while (20 us), so that every worker takes some
-    // between the others' takes
+    // every row once; rows that take a while (20 us), so that every worker
+    // takes some between the others' takes
     const auto slow = [] { std::this_thread::sleep_for(std::chrono::microseconds(20)); };
     WorkerPool pool(4);
     RowsSeen seen(pool.size());

@@ -39,6 +39,23 @@ inline int rows_to_take(long long left, unsigned threads, int most)
                                      std::max(1, most)));
 }
 
+/// One thread's share of rows [.., last) taken from `next` (shared by the
+/// `threads` threads): take after take of up to `most` rows
+/// (rows_to_take), take_function(first, end) called for each, until no row
+/// is left.
+template <typename TakeFunction>
+void take_rows(std::atomic<long long> &next, long long last, unsigned threads, int most,
+               const TakeFunction &take_function)
+{
+    for (;;) {
+        const int take = rows_to_take(last - next.load(std::memory_order_relaxed), threads, most);
+        const long long first = next.fetch_add(take);
+        if (first >= last)
+            return;
+        take_function(first, std::min<long long>(first + take, last));
+    }
+}
+
 /// Calls row_function(row) for row in [first, last) on `threads` threads
 /// (0: all cores), rows taken up to `most` at a time (rows_to_take; each
 /// thread calls it for its take's rows in order); returns when all rows
@@ -57,15 +74,10 @@ void for_each_row_in_runs(int first, int last, unsigned threads, int most,
     std::mutex error_mutex;
     auto work = [&]() {
         try {
-            for (;;) {
-                const int take = rows_to_take(last - next.load(std::memory_order_relaxed),
-                                              threads, most);
-                const long long start = next.fetch_add(take);
-                if (start >= last)
-                    break;
-                for (long long row = start; row < std::min<long long>(start + take, last); ++row)
+            take_rows(next, last, threads, most, [&](long long take_first, long long end) {
+                for (long long row = take_first; row < end; ++row)
                     row_function(int(row));
-            }
+            });
         }
         catch (...) {
             next = last; // the others stop at their next take

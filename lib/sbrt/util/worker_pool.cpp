@@ -5,7 +5,6 @@
  ****************************************************************************/
 #include "util/worker_pool.hpp"
 
-#include <algorithm>
 #include <chrono>
 
 #include "util/parallel.hpp"
@@ -36,17 +35,12 @@ void WorkerPool::run_rows(unsigned worker)
     using Clock = std::chrono::steady_clock;
     double busy = 0;
     try {
-        for (;;) {
-            const int take =
-                rows_to_take(last_ - next_.load(std::memory_order_relaxed), size(), most_);
-            const long long first = next_.fetch_add(take);
-            if (first >= last_)
-                break;
+        take_rows(next_, last_, size(), most_, [&](long long first, long long end) {
             const auto start = Clock::now();
-            for (long long row = first; row < std::min<long long>(first + take, last_); ++row)
+            for (long long row = first; row < end; ++row)
                 (*function_)(int(row), worker);
             busy += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        }
+        });
     }
     catch (...) {
         next_ = last_; // the others stop at their next take
