@@ -15,6 +15,9 @@ set -uo pipefail
 cd "$SBRT_ROOT"
 passed=0
 failed=0
+# the seconds a step took, for its line: lap sets $took (since the last lap)
+step_start=$SECONDS
+lap() { took=" ($((SECONDS - step_start)) s)"; step_start=$SECONDS; }
 log=$(mktemp -d /tmp/r3sbrt_tests.XXXXXX)
 
 # 1. unit tests (GoogleTest)
@@ -24,7 +27,8 @@ if make -s -C testsuite/unit build/sbrt_unit_tests >"$log/unit_build.log" 2>&1; 
     f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log/unit.log")
     passed=$((passed + ${p:-0})); failed=$((failed + ${f:-0}))
     grep -E "^\[  FAILED  \] [A-Z]|Failure" "$log/unit.log" | head -20
-    echo "unit tests: ${p:-0} passed, ${f:-0} failed"
+    lap
+    echo "unit tests: ${p:-0} passed, ${f:-0} failed$took"
     if [ -z "$p" ] && [ -z "$f" ]; then failed=$((failed + 1)); tail -20 "$log/unit.log"; fi
 else
     cat "$log/unit_build.log"; failed=$((failed + 1))
@@ -45,7 +49,8 @@ if make -s -C testsuite/unit BUILD=build-san SAN_FLAGS="$san_flags" build-san/sb
         grep -E "ERROR: |runtime error|SUMMARY" "$log/unit_san.log" | head -20
     fi
     passed=$((passed + p)); failed=$((failed + f))
-    echo "unit tests under ASan+UBSan: $p passed, $f failed"
+    lap
+    echo "unit tests under ASan+UBSan: $p passed, $f failed$took"
 else
     cat "$log/unit_san_build.log"; failed=$((failed + 1))
 fi
@@ -53,7 +58,8 @@ fi
 # 3. the SBRT reader fuzzed for FUZZ_SECONDS (libFuzzer, ASan+UBSan): one test
 if make -s -C testsuite/fuzz run FUZZ_SECONDS="${FUZZ_SECONDS:-60}" >"$log/fuzz.log" 2>&1; then
     passed=$((passed + 1))
-    echo "fuzz (SBRT reader): passed, $(sed -n 's/^stat::number_of_executed_units: *//p' "$log/fuzz.log") inputs in ${FUZZ_SECONDS:-60} s"
+    lap
+    echo "fuzz (SBRT reader): passed, $(sed -n 's/^stat::number_of_executed_units: *//p' "$log/fuzz.log") inputs in ${FUZZ_SECONDS:-60} s$took"
 else
     failed=$((failed + 1))
     grep -E "ERROR|==[0-9]+==|crash-|leak-|timeout-" "$log/fuzz.log" | head -20
@@ -65,7 +71,8 @@ fi
 if make -s -C testsuite/fuzz run-requests REQUEST_SECONDS="${REQUEST_SECONDS:-30}" \
     >"$log/fuzz_requests.log" 2>&1; then
     passed=$((passed + 1))
-    echo "fuzz (view server requests): passed, $(sed -n 's/^stat::number_of_executed_units: *//p' "$log/fuzz_requests.log") lines in ${REQUEST_SECONDS:-30} s"
+    lap
+    echo "fuzz (view server requests): passed, $(sed -n 's/^stat::number_of_executed_units: *//p' "$log/fuzz_requests.log") lines in ${REQUEST_SECONDS:-30} s$took"
 else
     failed=$((failed + 1))
     grep -E "ERROR|==[0-9]+==|crash-|leak-|timeout-|exited" "$log/fuzz_requests.log" | head -20
@@ -86,7 +93,8 @@ f=$(sed -n 's/^valgrind: [0-9]* passed, \([0-9]*\) failed/\1/p' "$log/valgrind.l
 [ -z "$p" ] && { p=0; f=1; tail -20 "$log/valgrind.log"; }
 [ "${f:-0}" -gt 0 ] && grep -v "clean$" "$log/valgrind.log" | head -30
 passed=$((passed + p)); failed=$((failed + ${f:-0}))
-echo "modules under valgrind: $p passed, ${f:-0} failed"
+lap
+echo "modules under valgrind: $p passed, ${f:-0} failed$took"
 
 # 5. gunittest files, each in a fresh mapset of a throw-away location
 sbrt_location "$log/grassdata"
@@ -106,7 +114,8 @@ for test in testsuite/test_*.py; do
     skipped=$(grep -oE "skipped=[0-9]+" "$log/$name.log" | tail -1 | cut -d= -f2)
     good=$((ran - bad - ${skipped:-0})); [ "$good" -lt 0 ] && good=0
     passed=$((passed + good)); failed=$((failed + bad))
-    echo "$name: $good passed, $bad failed${skipped:+, $skipped skipped}"
+    lap
+    echo "$name: $good passed, $bad failed${skipped:+, $skipped skipped}$took"
 done
 
 # 6. the notebook docs/r3_sbrt.ipynb executed by nbconvert: one test, passed
@@ -129,7 +138,8 @@ sys.exit(not (len(shows) >= 5 and good == len(shows)))
 PY
 then
     passed=$((passed + 1))
-    echo "notebook (docs/r3_sbrt.ipynb): passed"
+    lap
+    echo "notebook (docs/r3_sbrt.ipynb): passed$took"
 else
     failed=$((failed + 1))
     grep -E "Error|error|notebook:" "$log/notebook.log" | head -20
