@@ -29,10 +29,15 @@ struct RowShader {
     const PixelShader &shader;
     const Camera &camera;
 
+    /// Columns [c0, c1) of `row`.
+    void operator()(const Hit *hits, int row, Band &band, int c0, int c1) const
+    {
+        for (int col = c0; col < c1; ++col)
+            shade_into_band(tracer, shader, camera, hits[col], row, col, band);
+    }
     void operator()(const Hit *hits, int row, Band &band) const
     {
-        for (int col = 0; col < band.cols; ++col)
-            shade_into_band(tracer, shader, camera, hits[col], row, col, band);
+        (*this)(hits, row, band, 0, band.cols);
     }
 };
 
@@ -188,10 +193,12 @@ double ms_since(std::chrono::steady_clock::time_point start)
         .count();
 }
 
-/// The CPU tracer with face normals, in one pass over the image's rows: a
-/// row is traced and shaded at once (its hits stay in cache), rows are
-/// taken in order by any thread, and a band goes to the sink when its last
-/// row is done (no thread waits for the others at a band's end).
+/// The CPU tracer with face normals, in one pass over the image's rows:
+/// a thread takes a run of rows and traces and shades it block by block
+/// (for_each_block: a block's hits stay in cache, and the cells its rays
+/// cross), runs are taken in order by any thread, and a band goes to the
+/// sink when its last row is done (no thread waits for the others at a
+/// band's end).
 void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs &outputs,
                  const BandSink &sink, WorkerPool &pool, BandWriter &writer, int rows,
                  int cols, RenderReport &report)
@@ -206,16 +213,23 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
     BandFlow flow(writer, rows, cols, report.band_rows, outputs);
     std::vector<double> busy(threads, 0.0);
     const auto start = std::chrono::steady_clock::now();
-    pool.for_each_row(0, rows, [&](int row, unsigned worker) {
+    pool.for_each_take(0, rows, [&](int first, int end, unsigned worker) {
         try {
             thread_local HitImage hits; // warm from frame to frame
-            hits.resize(size_t(cols));
-            Band &band = flow.band_of(row);
-            const auto row_start = std::chrono::steady_clock::now();
-            cpu.trace_row(row, hits.data());
-            shade(hits.data(), row, band);
-            busy[worker] += ms_since(row_start);
-            flow.row_done(row);
+            thread_local std::vector<Band *> bands;
+            hits.resize(size_t(end - first) * size_t(cols));
+            bands.clear();
+            for (int row = first; row < end; ++row)
+                bands.push_back(&flow.band_of(row));
+            const auto take_start = std::chrono::steady_clock::now();
+            for_each_block(first, end, cols, [&](int row, int c0, int c1) {
+                Hit *row_hits = hits.data() + size_t(row - first) * size_t(cols);
+                cpu.trace_span(row, c0, c1, row_hits);
+                shade(row_hits, row, *bands[size_t(row - first)], c0, c1);
+            });
+            busy[worker] += ms_since(take_start);
+            for (int row = first; row < end; ++row)
+                flow.row_done(row);
         }
         catch (const BandWriter::Cancelled &) {
             // another thread failed and cancelled: its error is the one
@@ -234,7 +248,7 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
     report.worker_busy_ms.resize(threads, 0.0); // the first pass's, then the rows'
     for (unsigned w = 0; w < threads; ++w)
         report.worker_busy_ms[w] += busy[w];
-    report.most_rows_held = int(threads); // a row of hits per thread
+    report.most_rows_held = int(threads) * ROWS_PER_TAKE; // a take of hits per thread
 }
 
 /// Band by band: kernel normals (over their window of rows, when given),

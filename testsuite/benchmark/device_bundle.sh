@@ -60,7 +60,7 @@ paint_nc=$SBRT_GISDBASE/geotop_channels_200x200x160.nc
 [ -s "$paint_nc" ] || testsuite/benchmark/geotop_like/build/geotop_like write "$paint_nc" \
     200 200 160 properties >/dev/null
 [ -d "$SBRT_GISDBASE/loc/PERMANENT/sbrt/paint_gt" ] ||
-    in_grass PERMANENT r3.sbrt.convert --q -a file="$paint_nc" variable=lithok output=paint_gt
+    in_grass PERMANENT r3.sbrt.convert --q -a -o file="$paint_nc" variable=lithok output=paint_gt
 tar -C "$SBRT_GISDBASE/loc/PERMANENT/sbrt" -czf .device/sbrt/paint_gt.tar.gz paint_gt
 (cd .gl && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 >/dev/null)
 du -sh .device .gl

@@ -6,6 +6,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <map>
@@ -18,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tracing/cpu_tracing.hpp"
 #include "util/parallel.hpp"
 #include "util/worker_pool.hpp"
 
@@ -137,4 +139,44 @@ TEST(WorkerPool, RowsTakenInRunsComeInOrderOnOneWorkerEach)
     EXPECT_EQ(rows_to_take(5, 16, 8), 1);
     EXPECT_EQ(rows_to_take(0, 16, 8), 1);
     EXPECT_EQ(rows_to_take(1000, 2, 1), 1);
+}
+
+TEST(WorkerPool, TakesAndTheirBlocksCoverEveryPixelOnce)
+{
+    // the renderer's order: takes of consecutive rows, each traced block
+    // by block (for_each_block), a block's rows top to bottom
+    WorkerPool pool(3);
+    const int first = 3, last = 203, cols = 2 * COLS_PER_BLOCK + 21;
+    std::vector<int> visits(size_t(last) * size_t(cols), 0);
+    std::mutex mutex;
+    std::vector<std::pair<int, int>> takes;
+    pool.for_each_take(first, last, [&](int take_first, int take_end, unsigned) {
+        std::vector<std::array<int, 3>> order;
+        for_each_block(take_first, take_end, cols,
+                       [&](int row, int c0, int c1) { order.push_back({c0, row, c1}); });
+        // blocks left to right, each down the take's rows
+        EXPECT_TRUE(std::is_sorted(order.begin(), order.end()));
+        EXPECT_EQ(order.size(), size_t(take_end - take_first) * 3);
+        const std::lock_guard<std::mutex> lock(mutex);
+        takes.emplace_back(take_first, take_end);
+        for (const auto &[c0, row, c1] : order) {
+            EXPECT_LE(c1 - c0, COLS_PER_BLOCK);
+            for (int col = c0; col < c1; ++col)
+                ++visits[size_t(row) * size_t(cols) + size_t(col)];
+        }
+    }, ROWS_PER_TAKE);
+    for (int row = 0; row < last; ++row)
+        for (int col = 0; col < cols; ++col)
+            ASSERT_EQ(visits[size_t(row) * size_t(cols) + size_t(col)], row >= first ? 1 : 0)
+                << "row " << row << ", column " << col;
+    // consecutive takes of at most ROWS_PER_TAKE rows, end to end
+    std::sort(takes.begin(), takes.end());
+    int next = first;
+    for (const auto &[take_first, take_end] : takes) {
+        EXPECT_EQ(take_first, next);
+        EXPECT_GE(take_end - take_first, 1);
+        EXPECT_LE(take_end - take_first, ROWS_PER_TAKE);
+        next = take_end;
+    }
+    EXPECT_EQ(next, last);
 }

@@ -102,9 +102,8 @@ CpuRowTracer::CpuRowTracer(const Tracer &tracer, const Camera &camera,
                    .count()};
 }
 
-void CpuRowTracer::trace_row(int row, Hit *out) const
+void CpuRowTracer::trace_span(int row, int c0, int c1, Hit *out) const
 {
-    const int cols = camera_.cols();
     const auto trace = [&](int col) {
         if (bounds_->meets_nothing(row, col)) {
             out[col] = Hit(); // what trace() returns for a t_start of inf
@@ -114,22 +113,25 @@ void CpuRowTracer::trace_row(int row, Hit *out) const
         tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
     };
     if (!overlay_rects_) {
-        for (int col = 0; col < cols; ++col)
+        for (int col = c0; col < c1; ++col)
             trace(col);
         return;
     }
     // the columns of the rectangles across this row, overlaps merged
-    std::fill(out, out + cols, Hit());
-    for (const auto &[c0, c1] : row_spans(*overlay_rects_, row))
-        for (int col = c0; col <= c1; ++col)
+    std::fill(out + c0, out + c1, Hit());
+    for (const auto &[s0, s1] : row_spans(*overlay_rects_, row))
+        for (int col = std::max(c0, s0); col <= std::min(c1 - 1, s1); ++col)
             trace(col);
 }
 
 void CpuRowTracer::trace_rows(int first, int count, Hit *out)
 {
-    const size_t cols = size_t(camera_.cols());
-    for_each_row_in_runs(first, first + count, threads_, ROWS_PER_TAKE,
-                         [&](int row) { trace_row(row, out + size_t(row - first) * cols); });
+    const int cols = camera_.cols();
+    for_each_take(first, first + count, threads_, ROWS_PER_TAKE, [&](int take_first, int end) {
+        for_each_block(take_first, end, cols, [&](int row, int c0, int c1) {
+            trace_span(row, c0, c1, out + size_t(row - first) * size_t(cols));
+        });
+    });
 }
 
 HitImage trace_image(const Tracer &tracer, const Camera &camera, unsigned threads,

@@ -56,15 +56,15 @@ void take_rows(std::atomic<long long> &next, long long last, unsigned threads, i
     }
 }
 
-/// Calls row_function(row) for row in [first, last) on `threads` threads
-/// (0: all cores), rows taken up to `most` at a time (rows_to_take; each
-/// thread calls it for its take's rows in order); returns when all rows
-/// are done. The first exception thrown by row_function, on any thread, stops
-/// the other threads taking rows and is rethrown here (a thread never ends
-/// the process with std::terminate).
-template <typename RowFunction>
-void for_each_row_in_runs(int first, int last, unsigned threads, int most,
-                          const RowFunction &row_function)
+/// Calls take_function(take_first, take_end) for takes of rows covering
+/// [first, last) on `threads` threads (0: all cores), up to `most` rows a
+/// take (rows_to_take); returns when all rows are done. The first
+/// exception thrown by take_function, on any thread, stops the other
+/// threads taking rows and is rethrown here (a thread never ends the
+/// process with std::terminate).
+template <typename TakeFunction>
+void for_each_take(int first, int last, unsigned threads, int most,
+                   const TakeFunction &take_function)
 {
     threads = thread_count(threads);
     // 64 bits: every thread takes up to `most` past `last`, which must not
@@ -75,8 +75,7 @@ void for_each_row_in_runs(int first, int last, unsigned threads, int most,
     auto work = [&]() {
         try {
             take_rows(next, last, threads, most, [&](long long take_first, long long end) {
-                for (long long row = take_first; row < end; ++row)
-                    row_function(int(row));
+                take_function(int(take_first), int(end));
             });
         }
         catch (...) {
@@ -94,6 +93,18 @@ void for_each_row_in_runs(int first, int last, unsigned threads, int most,
         t.join();
     if (error)
         std::rethrow_exception(error);
+}
+
+/// for_each_take with row_function(row) called for each row of a take, in
+/// order.
+template <typename RowFunction>
+void for_each_row_in_runs(int first, int last, unsigned threads, int most,
+                          const RowFunction &row_function)
+{
+    for_each_take(first, last, threads, most, [&](int take_first, int end) {
+        for (int row = take_first; row < end; ++row)
+            row_function(row);
+    });
 }
 
 /// for_each_row_in_runs, a row at a time.

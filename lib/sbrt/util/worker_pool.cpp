@@ -37,8 +37,7 @@ void WorkerPool::run_rows(unsigned worker)
     try {
         take_rows(next_, last_, size(), most_, [&](long long first, long long end) {
             const auto start = Clock::now();
-            for (long long row = first; row < end; ++row)
-                (*function_)(int(row), worker);
+            (*function_)(int(first), int(end), worker);
             busy += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         });
     }
@@ -74,10 +73,23 @@ void WorkerPool::work(unsigned worker)
 void WorkerPool::for_each_row(int first, int last,
                               const std::function<void(int, unsigned)> &row_function, int most)
 {
+    for_each_take(
+        first, last,
+        [&](int take_first, int take_end, unsigned worker) {
+            for (int row = take_first; row < take_end; ++row)
+                row_function(row, worker);
+        },
+        most);
+}
+
+void WorkerPool::for_each_take(int first, int last,
+                               const std::function<void(int, int, unsigned)> &take_function,
+                               int most)
+{
     const std::lock_guard<std::mutex> job(job_mutex_);
     {
         const std::lock_guard<std::mutex> lock(mutex_);
-        function_ = &row_function;
+        function_ = &take_function;
         // 64 bits: every worker takes up to `most` past `last`, which must
         // not wrap
         next_ = first;

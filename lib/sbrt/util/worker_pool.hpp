@@ -1,8 +1,9 @@
 /****************************************************************************
  * MODULE:    lib/sbrt (r3.sbrt addon)
  * PURPOSE:   Threads kept from frame to frame: rows of an image go to the
- *            workers one at a time, no thread is started per frame, and
- *            what a worker keeps in thread_local storage stays warm
+ *            workers in takes of consecutive rows, no thread is started
+ *            per frame, and what a worker keeps in thread_local storage
+ *            stays warm
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_WORKER_POOL_HPP
@@ -30,18 +31,24 @@ public:
 
     unsigned size() const { return unsigned(threads_.size()) + 1; }
 
-    /// Calls row_function(row, worker) for row in [first, last), rows taken
-    /// up to `most` at a time (dynamic scheduling, rows_to_take; a worker
-    /// calls it for its take's rows in order), worker in [0, size()): 0 is
-    /// the caller. Returns when every row is done; the first exception
-    /// thrown on any worker stops the others taking rows and is rethrown
-    /// here.
+    /// Calls take_function(take_first, take_end, worker) for takes of rows
+    /// covering [first, last), up to `most` rows a take (dynamic
+    /// scheduling, rows_to_take), worker in [0, size()): 0 is the caller.
+    /// Returns when every row is done; the first exception thrown on any
+    /// worker stops the others taking rows and is rethrown here.
+    void for_each_take(int first, int last,
+                       const std::function<void(int take_first, int take_end, unsigned worker)>
+                           &take_function,
+                       int most);
+
+    /// for_each_take with row_function(row, worker) called for each row
+    /// of a take, in order.
     void for_each_row(int first, int last,
                       const std::function<void(int row, unsigned worker)> &row_function,
                       int most = 1);
 
-    /// Per worker, the milliseconds spent in row_function during the last
-    /// for_each_row.
+    /// Per worker, the milliseconds spent in take_function during the
+    /// last for_each_take.
     const std::vector<double> &busy_ms() const { return busy_ms_; }
 
 private:
@@ -54,7 +61,7 @@ private:
     long long generation_ = 0; ///< which job the workers are on
     unsigned running_ = 0;     ///< pool threads still in the job
     bool closing_ = false;
-    const std::function<void(int, unsigned)> *function_ = nullptr;
+    const std::function<void(int, int, unsigned)> *function_ = nullptr;
     std::atomic<long long> next_{0};
     int last_ = 0;
     int most_ = 1; ///< the most rows a worker takes at once

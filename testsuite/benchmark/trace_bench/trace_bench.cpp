@@ -27,8 +27,9 @@
  *                        it, and the pixels whose colour differs from the
  *                        CPU's by more than one level
  *              row_order on one thread, the rows in the order one of
- *                        as_threads= (16) threads meets them, a row a take
- *                        and in runs (ROWS_PER_TAKE), against the image's
+ *                        as_threads= (16) threads meets them, a row a take,
+ *                        in runs (ROWS_PER_TAKE) and in runs traced block
+ *                        by block (COLS_PER_BLOCK), against the image's
  *                        own order
  *              format    the stacks file in format 1 and 2: bytes, bytes
  *                        per interval, load (warm) and write times
@@ -360,13 +361,29 @@ void row_order(const Model &model, const Args &args, const Camera &camera, doubl
                         rows.trace_row(r, hits.data());
         };
     };
+    // runs taken as above, each traced block by block (for_each_block), as
+    // the renderer does
+    const auto in_blocks = [&](unsigned threads, int run) {
+        return [&, threads, run] {
+            const int takes = (image_rows + run - 1) / run;
+            for (unsigned t = 0; t < threads; ++t)
+                for (int k = int(t); k < takes; k += int(threads))
+                    for_each_block(k * run, std::min(image_rows, (k + 1) * run), camera.cols(),
+                                   [&](int row, int c0, int c1) {
+                                       rows.trace_span(row, c0, c1, hits.data());
+                                   });
+        };
+    };
     const int run = ROWS_PER_TAKE;
     const std::vector<double> ms =
-        best_ms_in_turns(repeat, {order(1, image_rows), order(as_threads, 1), order(as_threads, run)});
+        best_ms_in_turns(repeat, {order(1, image_rows), order(as_threads, 1), order(as_threads, run),
+                                  in_blocks(as_threads, run)});
     std::printf("row_order label=%s cols=%d rows=%d as_threads=%u image_order_ms=%.1f "
-                "a_row_a_take_ms=%.1f (%.2fx) runs_of_%d_ms=%.1f (%.2fx)\n",
+                "a_row_a_take_ms=%.1f (%.2fx) runs_of_%d_ms=%.1f (%.2fx) "
+                "runs_in_blocks_of_%d_ms=%.1f (%.2fx)\n",
                 args.get("label", "view").c_str(), camera.cols(), image_rows, as_threads, ms[0],
-                ms[1], ms[1] / ms[0], run, ms[2], ms[2] / ms[0]);
+                ms[1], ms[1] / ms[0], run, ms[2], ms[2] / ms[0], COLS_PER_BLOCK, ms[3],
+                ms[3] / ms[0]);
 }
 
 /// The streamed frame in process, warm (best of `repeat`), and the
