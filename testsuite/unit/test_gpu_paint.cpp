@@ -29,13 +29,13 @@ namespace {
 constexpr float FILL = -127;
 
 /// A random voxel model with two channels: a percentage with fills and a
-/// second one meant twice its stored value.
+/// second one meant `b_scale` times its stored value (0 .. b_values - 1).
 struct PaintFixture {
     Model model;
     std::shared_ptr<const PropertyChannels> channels;
 };
 
-PaintFixture fixture(const std::string &dir)
+PaintFixture fixture(const std::string &dir, double b_scale = 2, unsigned b_values = 40)
 {
     PaintFixture fx;
     const Voxels voxels = random_voxels(5, 36, 44, 30, 6);
@@ -45,14 +45,14 @@ PaintFixture fixture(const std::string &dir)
     Source source(2, std::vector<float>(f.voxels()));
     for (size_t i = 0; i < f.voxels(); ++i) {
         source[0][i] = rng() % 11 == 0 ? FILL : float(rng() % 101);
-        source[1][i] = float(rng() % 40);
+        source[1][i] = float(rng() % b_values);
     }
     ChannelInfo a, b;
     a.name = "kans_5";
     a.has_fill = true;
     a.fill = FILL;
     b.name = "kans_6";
-    b.scale = 2;
+    b.scale = b_scale;
     const std::string path = dir + "/channels";
     write_channels(path, fx.model, source, {a, b}, 8);
     fx.channels = std::make_shared<const PropertyChannels>(
@@ -248,35 +248,41 @@ TEST_P(GpuPaint, WhatTheGpuDoesNotColourTheHostDoes)
 
 TEST(GpuPaintWords, EachVoxelHoldsItsEntryAndEachCellItsSpan)
 {
-    const PaintFixture fx = fixture(temp_dir("gpu_paint_words"));
-    const PropertyPaint paint(fx.model, fx.channels, {0, 1}, ramp());
-    Shading shading;
-    shading.property = &paint;
-    const Tracer tracer(fx.model, 1.0);
-    const std::vector<uint32_t> words = make_gpu_paint(tracer, shading, 2);
-    const Frame &f = fx.model.frame();
-    size_t checked = 0;
-    for (uint64_t cell = 0; cell < f.cells(); ++cell) {
-        const ColumnSpan span = fx.channels->span(cell);
-        ASSERT_EQ(words[5 + 2 * cell], span.lo | span.hi << 16);
-        for (uint32_t level = span.lo; level < span.hi; ++level) {
-            const uint32_t i = words[4 + 2 * cell] + level - span.lo;
-            const uint32_t entry = (words[words[0] + i / 2] >> (16 * (i & 1))) & 0xffff;
-            double v;
-            if (!paint.voxel_value({cell, level}, v)) {
-                EXPECT_EQ(entry, GPU_PAINT_NONE);
-                continue;
+    // the entries in integers (whole codes, small scales), and through the
+    // doubles of sum_at (a scale too large for the integers' bounds)
+    for (const auto &[b_scale, b_values] : {std::pair<double, unsigned>{2, 40}, {2000, 4}}) {
+        SCOPED_TRACE("second channel's scale " + std::to_string(b_scale));
+        const PaintFixture fx = fixture(temp_dir("gpu_paint_words"), b_scale, b_values);
+        const PropertyPaint paint(fx.model, fx.channels, {0, 1}, ramp());
+        ASSERT_GT(paint.whole().count, 0u);
+        Shading shading;
+        shading.property = &paint;
+        const Tracer tracer(fx.model, 1.0);
+        const std::vector<uint32_t> words = make_gpu_paint(tracer, shading, 2);
+        const Frame &f = fx.model.frame();
+        size_t checked = 0;
+        for (uint64_t cell = 0; cell < f.cells(); ++cell) {
+            const ColumnSpan span = fx.channels->span(cell);
+            ASSERT_EQ(words[5 + 2 * cell], span.lo | span.hi << 16);
+            for (uint32_t level = span.lo; level < span.hi; ++level) {
+                const uint32_t i = words[4 + 2 * cell] + level - span.lo;
+                const uint32_t entry = (words[words[0] + i / 2] >> (16 * (i & 1))) & 0xffff;
+                double v;
+                if (!paint.voxel_value({cell, level}, v)) {
+                    EXPECT_EQ(entry, GPU_PAINT_NONE);
+                    continue;
+                }
+                ASSERT_EQ(double(entry), v - paint.whole().low);
+                // its colour: the ramp's at the value
+                float rgb[3];
+                std::memcpy(rgb, &words[words[1] + 3 * entry], sizeof rgb);
+                const glm::dvec3 want = paint.ramp().at(v);
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_FLOAT_EQ(rgb[k], float(want[k]));
+                ++checked;
             }
-            ASSERT_EQ(double(entry), v - paint.whole().low);
-            // its colour: the ramp's at the value
-            float rgb[3];
-            std::memcpy(rgb, &words[words[1] + 3 * entry], sizeof rgb);
-            const glm::dvec3 want = paint.ramp().at(v);
-            for (int k = 0; k < 3; ++k)
-                EXPECT_FLOAT_EQ(rgb[k], float(want[k]));
-            ++checked;
         }
+        EXPECT_GT(checked, f.cells() * 4);
+        EXPECT_EQ(words[3], uint32_t(paint.whole().count)); // the no-value colour
     }
-    EXPECT_GT(checked, f.cells() * 4);
-    EXPECT_EQ(words[3], uint32_t(paint.whole().count)); // the no-value colour
 }

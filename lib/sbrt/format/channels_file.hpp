@@ -154,6 +154,21 @@ public:
         }
         return float(int64_t(base_) + int64_t(code));
     }
+    /// Whether every value is a whole number held as a 1- or 2-byte code
+    /// and small enough (below 2^24) that float holds it exactly: whole()
+    /// then gives value i as operator[] does, as an integer.
+    bool whole_codes() const
+    {
+        return !float_bits_ && width_ <= 2 && base_ > -(1 << 24) + 65536 &&
+               base_ < (1 << 24) - 65536;
+    }
+    int64_t whole(size_t i) const
+    {
+        const uint32_t code = width_ == 1 ? uint32_t(codes_[i])
+                                          : uint32_t(codes_[2 * i]) |
+                                                uint32_t(codes_[2 * i + 1]) << 8;
+        return int64_t(base_) + int64_t(code);
+    }
     /// `count` values from the `first` on (a cell's span in its block).
     ChannelValues part(size_t first, size_t count) const
     {

@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "gpu/gpu_paint.hpp"
 
+#include <cmath>
 #include <cstring>
 
 #include "gpu/gpu_overlays.hpp"
@@ -50,6 +51,66 @@ std::vector<glm::dvec3> paint_colours(const Model &model, const Shading &shading
         colours.insert(colours.end(), entries.begin(), entries.end());
     }
     return colours;
+}
+
+/// \brief A summed channel's value in integers: raw * scale + offset, and
+/// whether raw is the fill, exactly as sum_at finds them in double, for
+/// codes whose values are whole (ChannelValues::whole_codes) where scale,
+/// offset and fill are whole and small enough that no sum of them leaves
+/// the integers double holds exactly.
+struct WholeTerm {
+    bool usable = false, has_fill = false;
+    int64_t fill = 0, scale = 1, offset = 0;
+
+    explicit WholeTerm(const ChannelInfo &info)
+    {
+        const auto whole = [](double v, double most) {
+            return std::isfinite(v) && v == std::round(v) && std::abs(v) <= most;
+        };
+        usable = whole(info.scale, 1024) && whole(info.offset, 1 << 30) &&
+                 (!info.has_fill || whole(double(info.fill), 1 << 24));
+        if (!usable)
+            return;
+        has_fill = info.has_fill;
+        fill = int64_t(info.fill);
+        scale = int64_t(info.scale);
+        offset = int64_t(info.offset);
+    }
+};
+
+/// The entries of voxels [0, size) of a cell whose summed channels' values
+/// are `columns`, into set_entry(i, entry): in integers where every term
+/// and column allows (WholeTerm), else through sum_at.
+template <typename SetEntry>
+void cell_entries(const PropertyChannels &channels, const std::vector<size_t> &summed,
+                  const std::vector<WholeTerm> &terms, const ChannelValues *columns,
+                  const WholeValues &whole, uint32_t size, const SetEntry &set_entry)
+{
+    bool in_integers = std::abs(whole.low) < double(int64_t(1) << 52);
+    for (size_t k = 0; k < summed.size(); ++k)
+        in_integers = in_integers && terms[k].usable && columns[k].whole_codes();
+    if (!in_integers) {
+        for (uint32_t i = 0; i < size; ++i) {
+            double sum;
+            const bool has = sum_at(channels, summed, columns, i, sum);
+            const int64_t v = has ? whole.index(sum) : -1;
+            set_entry(i, !has ? GPU_PAINT_NONE : v < 0 ? GPU_PAINT_OUTSIDE : uint32_t(v));
+        }
+        return;
+    }
+    const int64_t low = int64_t(whole.low), count = int64_t(whole.count);
+    for (uint32_t i = 0; i < size; ++i) {
+        int64_t sum = 0;
+        bool has = true;
+        for (size_t k = 0; k < summed.size() && has; ++k) {
+            const int64_t raw = columns[k].whole(i);
+            has = !(terms[k].has_fill && raw == terms[k].fill);
+            sum += raw * terms[k].scale + terms[k].offset;
+        }
+        const int64_t v = sum - low;
+        set_entry(i, !has ? GPU_PAINT_NONE
+                          : v < 0 || v >= count ? GPU_PAINT_OUTSIDE : uint32_t(v));
+    }
 }
 
 } // namespace
@@ -148,6 +209,9 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
         const uint16_t e16 = uint16_t(e);
         std::memcpy(entry_bytes + 2 * i, &e16, 2);
     };
+    std::vector<WholeTerm> terms;
+    for (size_t c : summed)
+        terms.emplace_back(channels.info(c));
     for_each_row(int(channels.blocks()), threads, [&](int b) {
         std::vector<ChannelValues> columns(summed.size());
         const int row0 = (b / block_cols) * bs, col0 = (b % block_cols) * bs;
@@ -161,13 +225,8 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
                     continue;
                 for (size_t k = 0; k < summed.size(); ++k)
                     columns[k] = channels.column(summed[k], cell);
-                for (uint32_t i = 0; i < size; ++i) {
-                    double sum;
-                    const bool has = sum_at(channels, summed, columns.data(), i, sum);
-                    const int64_t v = has ? whole.index(sum) : -1;
-                    set_entry(uint64_t(at) + i,
-                              !has ? GPU_PAINT_NONE : v < 0 ? GPU_PAINT_OUTSIDE : uint32_t(v));
-                }
+                cell_entries(channels, summed, terms, columns.data(), whole, size,
+                             [&](uint32_t i, uint32_t e) { set_entry(uint64_t(at) + i, e); });
             }
     });
     for (size_t k = 0; k < colours.size(); ++k)
