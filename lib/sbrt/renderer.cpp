@@ -205,7 +205,11 @@ void render_rows(const CpuRowTracer &cpu, const RowShader &shade, const Outputs 
 {
     const unsigned threads = pool.size();
     // each thread a run of consecutive rows at a time (its cache holds the
-    // cells the run's rays cross); bands enough for every thread's run
+    // cells the run's rays cross). A thread opens the bands of its whole
+    // run before it traces a row of it, so a run must never span more
+    // bands than the writer has buffers (it would wait for its own rows):
+    // a run of ROWS_PER_TAKE rows spans at most 7 / band_rows + 2 bands,
+    // fewer than these buffers, which keep every thread's run going
     const BandFrame frame(writer, sink,
                           std::max<size_t>(3, 2 * threads * size_t(ROWS_PER_TAKE) /
                                                       size_t(report.band_rows) +

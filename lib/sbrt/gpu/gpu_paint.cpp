@@ -72,7 +72,7 @@ struct WholeTerm {
         if (!usable)
             return;
         has_fill = info.has_fill;
-        fill = int64_t(info.fill);
+        fill = has_fill ? int64_t(info.fill) : 0;
         scale = int64_t(info.scale);
         offset = int64_t(info.offset);
     }
@@ -86,7 +86,10 @@ void cell_entries(const PropertyChannels &channels, const std::vector<size_t> &s
                   const std::vector<WholeTerm> &terms, const ChannelValues *columns,
                   const WholeValues &whole, uint32_t size, const SetEntry &set_entry)
 {
-    bool in_integers = std::abs(whole.low) < double(int64_t(1) << 52);
+    // (the stated range is not trusted: a low with a fraction has no
+    // whole value, every voxel outside, as index finds)
+    bool in_integers =
+        std::abs(whole.low) < double(int64_t(1) << 52) && whole.low == std::floor(whole.low);
     for (size_t k = 0; k < summed.size(); ++k)
         in_integers = in_integers && terms[k].usable && columns[k].whole_codes();
     if (!in_integers) {

@@ -23,7 +23,7 @@ namespace sbrt {
 void prepare_band(Band &band, int first_row, int rows, int cols, const Outputs &outputs);
 
 /// \brief Rows go to the threads in order, a run of them at a time
-/// (WorkerPool::for_each_row); each row is written into its band, and a
+/// (WorkerPool::for_each_take); each row is written into its band, and a
 /// band goes to the writer when its last row is done, whichever thread
 /// does it. Bands are opened in
 /// order, each with a buffer from the writer (waiting while the sink holds

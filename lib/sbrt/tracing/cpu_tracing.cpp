@@ -82,12 +82,18 @@ std::vector<std::pair<int, int>> row_spans(const std::vector<PixelRect> &rects, 
 
 CpuRowTracer::CpuRowTracer(const Tracer &tracer, const Camera &camera,
                            unsigned threads, bool first_pass, WorkerPool *pool)
-    : overlay_rects_(tracer.overlay_bounds().empty()
-                         ? std::nullopt
-                         : pixel_rects_of(tracer.overlay_bounds(), camera)),
-      tracer_(tracer),
-      camera_(camera), threads_(threads)
+    : tracer_(tracer), camera_(camera), threads_(threads)
 {
+    // the overlays' columns of each row, found once (a row is traced block
+    // by block)
+    const std::optional<std::vector<PixelRect>> rects =
+        tracer.overlay_bounds().empty() ? std::nullopt
+                                        : pixel_rects_of(tracer.overlay_bounds(), camera);
+    if (rects) {
+        overlay_spans_.emplace(size_t(camera.rows()));
+        for (int row = 0; row < camera.rows(); ++row)
+            (*overlay_spans_)[size_t(row)] = row_spans(*rects, row);
+    }
     // no pyramid (skipping off, the model not drawn): every bound is 0
     const auto start = std::chrono::steady_clock::now();
     if (first_pass && pool)
@@ -112,14 +118,14 @@ void CpuRowTracer::trace_span(int row, int c0, int c1, Hit *out) const
         const Ray ray = camera_.ray(row, col);
         tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
     };
-    if (!overlay_rects_) {
+    if (!overlay_spans_) {
         for (int col = c0; col < c1; ++col)
             trace(col);
         return;
     }
     // the columns of the rectangles across this row, overlaps merged
     std::fill(out + c0, out + c1, Hit());
-    for (const auto &[s0, s1] : row_spans(*overlay_rects_, row))
+    for (const auto &[s0, s1] : (*overlay_spans_)[size_t(row)])
         for (int col = std::max(c0, s0); col <= std::min(c1 - 1, s1); ++col)
             trace(col);
 }

@@ -128,10 +128,10 @@ public:
     const FirstPassReport &first_pass() const { return report_; }
 
 private:
-    /// Where the tracer draws only overlays: pixel rectangles (first row,
-    /// last row, first column, last column) outside which no ray can hit
+    /// Where the tracer draws only overlays: per row, the columns (first,
+    /// last; merged) of the pixel rectangles outside which no ray can hit
     /// anything; none where every pixel is traced.
-    std::optional<std::vector<PixelRect>> overlay_rects_;
+    std::optional<std::vector<std::vector<std::pair<int, int>>>> overlay_spans_;
     const Tracer &tracer_;
     const Camera &camera_;
     unsigned threads_;
