@@ -78,41 +78,67 @@ struct WholeTerm {
     }
 };
 
+/// \brief The summed channels' terms in integers, usable where every
+/// term is (WholeTerm) and the values' low is whole (the stated range is
+/// not trusted: a low with a fraction has no whole value, every voxel
+/// outside, as WholeValues::index finds).
+struct WholeSum {
+    std::vector<WholeTerm> terms;
+    bool usable = true;
+    int64_t low = 0, count = 0;
+
+    WholeSum(const PropertyChannels &channels, const std::vector<size_t> &summed,
+             const WholeValues &whole)
+    {
+        for (size_t c : summed) {
+            terms.emplace_back(channels.info(c));
+            usable = usable && terms.back().usable;
+        }
+        usable = usable && std::abs(whole.low) < double(int64_t(1) << 52) &&
+                 whole.low == std::floor(whole.low);
+        low = usable ? int64_t(whole.low) : 0;
+        count = int64_t(whole.count);
+    }
+};
+
+/// A voxel's entry: none where it has no value, else its value's index
+/// (-1: outside the values, GPU_PAINT_OUTSIDE).
+uint32_t paint_entry(bool has, int64_t index)
+{
+    return !has ? GPU_PAINT_NONE : index < 0 ? GPU_PAINT_OUTSIDE : uint32_t(index);
+}
+
 /// The entries of voxels [0, size) of a cell whose summed channels' values
-/// are `columns`, into set_entry(i, entry): in integers where every term
-/// and column allows (WholeTerm), else through sum_at.
+/// are `columns`, into set_entry(i, entry): in integers where the sum and
+/// every column allow (WholeSum, ChannelValues::whole_codes), else through
+/// sum_at.
 template <typename SetEntry>
 void cell_entries(const PropertyChannels &channels, const std::vector<size_t> &summed,
-                  const std::vector<WholeTerm> &terms, const ChannelValues *columns,
+                  const WholeSum &in_whole, const ChannelValues *columns,
                   const WholeValues &whole, uint32_t size, const SetEntry &set_entry)
 {
-    // (the stated range is not trusted: a low with a fraction has no
-    // whole value, every voxel outside, as index finds)
-    bool in_integers =
-        std::abs(whole.low) < double(int64_t(1) << 52) && whole.low == std::floor(whole.low);
+    bool in_integers = in_whole.usable;
     for (size_t k = 0; k < summed.size(); ++k)
-        in_integers = in_integers && terms[k].usable && columns[k].whole_codes();
+        in_integers = in_integers && columns[k].whole_codes();
     if (!in_integers) {
         for (uint32_t i = 0; i < size; ++i) {
             double sum;
             const bool has = sum_at(channels, summed, columns, i, sum);
-            const int64_t v = has ? whole.index(sum) : -1;
-            set_entry(i, !has ? GPU_PAINT_NONE : v < 0 ? GPU_PAINT_OUTSIDE : uint32_t(v));
+            set_entry(i, paint_entry(has, has ? whole.index(sum) : -1));
         }
         return;
     }
-    const int64_t low = int64_t(whole.low), count = int64_t(whole.count);
     for (uint32_t i = 0; i < size; ++i) {
         int64_t sum = 0;
         bool has = true;
         for (size_t k = 0; k < summed.size() && has; ++k) {
+            const WholeTerm &term = in_whole.terms[k];
             const int64_t raw = columns[k].whole(i);
-            has = !(terms[k].has_fill && raw == terms[k].fill);
-            sum += raw * terms[k].scale + terms[k].offset;
+            has = !(term.has_fill && raw == term.fill);
+            sum += raw * term.scale + term.offset;
         }
-        const int64_t v = sum - low;
-        set_entry(i, !has ? GPU_PAINT_NONE
-                          : v < 0 || v >= count ? GPU_PAINT_OUTSIDE : uint32_t(v));
+        const int64_t v = sum - in_whole.low;
+        set_entry(i, paint_entry(has, v >= 0 && v < in_whole.count ? v : -1));
     }
 }
 
@@ -212,9 +238,7 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
         const uint16_t e16 = uint16_t(e);
         std::memcpy(entry_bytes + 2 * i, &e16, 2);
     };
-    std::vector<WholeTerm> terms;
-    for (size_t c : summed)
-        terms.emplace_back(channels.info(c));
+    const WholeSum in_whole(channels, summed, whole);
     for_each_row(int(channels.blocks()), threads, [&](int b) {
         std::vector<ChannelValues> columns(summed.size());
         const int row0 = (b / block_cols) * bs, col0 = (b % block_cols) * bs;
@@ -228,7 +252,7 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
                     continue;
                 for (size_t k = 0; k < summed.size(); ++k)
                     columns[k] = channels.column(summed[k], cell);
-                cell_entries(channels, summed, terms, columns.data(), whole, size,
+                cell_entries(channels, summed, in_whole, columns.data(), whole, size,
                              [&](uint32_t i, uint32_t e) { set_entry(uint64_t(at) + i, e); });
             }
     });

@@ -352,32 +352,30 @@ void row_order(const Model &model, const Args &args, const Camera &camera, doubl
     HitImage hits(static_cast<size_t>(camera.cols()));
     const int image_rows = camera.rows();
     const unsigned as_threads = unsigned(std::stoi(args.get("as_threads", "16")));
-    const auto order = [&](unsigned threads, int run) {
-        return [&, threads, run] {
+    // the takes of `run` rows one of `threads` threads meets, each row
+    // traced whole or, `in_blocks`, the take block by block
+    // (for_each_block, as the renderer does)
+    const auto order = [&](unsigned threads, int run, bool in_blocks = false) {
+        return [&, threads, run, in_blocks] {
             const int takes = (image_rows + run - 1) / run;
             for (unsigned t = 0; t < threads; ++t)
-                for (int k = int(t); k < takes; k += int(threads))
-                    for (int r = k * run; r < std::min(image_rows, (k + 1) * run); ++r)
-                        rows.trace_row(r, hits.data());
-        };
-    };
-    // runs taken as above, each traced block by block (for_each_block), as
-    // the renderer does
-    const auto in_blocks = [&](unsigned threads, int run) {
-        return [&, threads, run] {
-            const int takes = (image_rows + run - 1) / run;
-            for (unsigned t = 0; t < threads; ++t)
-                for (int k = int(t); k < takes; k += int(threads))
-                    for_each_block(k * run, std::min(image_rows, (k + 1) * run), camera.cols(),
-                                   [&](int row, int c0, int c1) {
-                                       rows.trace_span(row, c0, c1, hits.data());
-                                   });
+                for (int k = int(t); k < takes; k += int(threads)) {
+                    const int first = k * run, end = std::min(image_rows, (k + 1) * run);
+                    if (!in_blocks) {
+                        for (int r = first; r < end; ++r)
+                            rows.trace_row(r, hits.data());
+                        continue;
+                    }
+                    for_each_block(first, end, camera.cols(), [&](int row, int c0, int c1) {
+                        rows.trace_span(row, c0, c1, hits.data());
+                    });
+                }
         };
     };
     const int run = ROWS_PER_TAKE;
     const std::vector<double> ms =
         best_ms_in_turns(repeat, {order(1, image_rows), order(as_threads, 1), order(as_threads, run),
-                                  in_blocks(as_threads, run)});
+                                  order(as_threads, run, true)});
     std::printf("row_order label=%s cols=%d rows=%d as_threads=%u image_order_ms=%.1f "
                 "a_row_a_take_ms=%.1f (%.2fx) runs_of_%d_ms=%.1f (%.2fx) "
                 "runs_in_blocks_of_%d_ms=%.1f (%.2fx)\n",
