@@ -21,7 +21,10 @@
 #            - the machine's own limit: what it gives 1, 2, 4, 8, 16
 #              threads of arithmetic, streaming and dependent random reads
 #              (machine_probe: machine); B's single-thread frame alone and
-#              with one such process on every core at once (contention);
+#              with one such process on every core at once, for 1-16
+#              cores, against the threads of one process (contention);
+#              each core beside core 0, two single-thread frames at once
+#              (pairs);
 #              B on 1 and on all cores in turns, three rounds, with the
 #              cores' clock read while each runs (alternate);
 #            - with trace_bench_base in the bundle (another build, e.g. the
@@ -37,7 +40,7 @@
 #              warm, and the GPU's pixels against the CPU's.
 #            Runs here too (llvmpipe), which checks the script.
 # USAGE:     [SECTIONS="programs unit paint gpu large boreholes scaling
-#            machine contention alternate"] [UNIT_FILTER=a GoogleTest filter] [BOREHOLE_FRAMES=200]
+#            machine contention pairs alternate"] [UNIT_FILTER=a GoogleTest filter] [BOREHOLE_FRAMES=200]
 #            bash .device/device_run.sh [SIZES] (A B C)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
@@ -58,7 +61,7 @@ cores=$(nproc)
 builds=(new)
 [ -x "$bundle/trace_bench_base" ] && builds+=(base)
 bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
-sections=" ${SECTIONS:-programs unit paint gpu large boreholes scaling machine contention alternate} "
+sections=" ${SECTIONS:-programs unit paint gpu large boreholes scaling machine contention pairs alternate} "
 run() { [[ "$sections" == *" $1 "* ]]; }
 
 # the models, unpacked once for every section
@@ -187,22 +190,69 @@ if run machine && [ -x "$bundle/machine_probe" ]; then
     done
 fi
 
-# 5. the machine's limit: B's single-thread frame alone, then on every core
-# at once in as many processes (nothing shared but the machine), at both
-# sizes of the scaling table
+# 5. the machine's limit on the tracer itself: in three rounds, for n = 1,
+# 2, 4, 8, 16 cores (0..n-1), B's frame on n threads in one process, then
+# n single-thread processes at once, one a core (nothing shared but the
+# machine: each its own model and buffers). The summary, medians of the
+# rounds: our efficiency at n (the 1-thread frame over n times the
+# n-thread frame) beside the machine's (one process alone over the mean of
+# n at once) and their ratio: where that ratio is near 1, the machine, not
+# the tracer, sets the limit
 if run contention && [ -d "$data/geo_B" ]; then
-    for px in "cols=1056 rows=884" "cols=2112 rows=1768"; do
-        taskset -c 0 "$bundle/trace_bench" frame "$data/geo_B" $best $px threads=1 repeat=3 \
-            reference=0 label=B/alone | grep "^frame " | sed "s/^/device contention processes=1 /"
-        for ((k = 0; k < cores; ++k)); do
-            taskset -c "$k" "$bundle/trace_bench" frame "$data/geo_B" $best $px threads=1 \
-                repeat=3 reference=0 label="B/core$k" >"$data/contention_$k.txt" &
+    log=$data/contention.txt
+    : >"$log"
+    frame_ms_of() { grep "^frame " "$@" | grep -oE "frame_ms=[0-9.]+" | cut -d= -f2; }
+    for round in 1 2 3; do
+        for px in "cols=1056 rows=884" "cols=2112 rows=1768"; do
+            for n in 1 2 4 8 16; do
+                [ "$n" -le "$cores" ] || break
+                ms=$(taskset -c "0-$((n - 1))" "$bundle/trace_bench" frame "$data/geo_B" $best $px \
+                    threads="$n" repeat=5 reference=0 label=B/threads | frame_ms_of)
+                echo "device contention round=$round ${px%% *} n=$n kind=threads frame_ms=$ms" | tee -a "$log"
+                for ((k = 0; k < n; ++k)); do
+                    taskset -c "$k" "$bundle/trace_bench" frame "$data/geo_B" $best $px threads=1 \
+                        repeat=5 reference=0 label="B/core$k" >"$data/contention_$k.txt" &
+                done
+                wait
+                ms=$(for ((k = 0; k < n; ++k)); do frame_ms_of "$data/contention_$k.txt"; done |
+                    awk '{ s += $1 } END { printf "%.2f", s / NR }')
+                echo "device contention round=$round ${px%% *} n=$n kind=processes mean_frame_ms=$ms" |
+                    tee -a "$log"
+            done
         done
+    done
+    awk '{ for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
+           key = f["cols"] " " f["n"] " " f["kind"]
+           v[key] = v[key] " " (f["kind"] == "threads" ? f["frame_ms"] : f["mean_frame_ms"])
+           ns[f["cols"] " " f["n"]] = 1 }
+         function median(list,    a, m, i, j, t) {
+             m = split(list, a, " ")
+             for (i = 1; i <= m; ++i) for (j = i + 1; j <= m; ++j) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
+             return m % 2 ? a[(m + 1) / 2] : (a[m / 2] + a[m / 2 + 1]) / 2 }
+         END { for (k in ns) { split(k, c, " "); cols = c[1]; n = c[2]
+                   t1 = median(v[cols " 1 threads"]); tn = median(v[cols " " n " threads"])
+                   p1 = median(v[cols " 1 processes"]); pn = median(v[cols " " n " processes"])
+                   ours = t1 / (n * tn); machine = p1 / pn
+                   printf "device contention summary cols=%s n=%d threads_frame_ms=%.1f processes_mean_frame_ms=%.1f ours=%.3f machine=%.3f ours/machine=%.3f\n", cols, n, tn, pn, ours, machine, ours / machine } }' \
+        "$log" | sort -t= -k2,2n -k3,3n
+fi
+
+# what a second tracer on core k costs the one on core 0 (B's single-thread
+# frame, each pair at once, against core 0 alone): cores that share a
+# physical core (hyperthreads the guest is not told of) or a cache show
+if run pairs && [ -d "$data/geo_B" ]; then
+    pair_ms() { grep "^frame " "$1" | grep -oE "frame_ms=[0-9.]+" | cut -d= -f2; }
+    taskset -c 0 "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 reference=0 \
+        label=B/alone >"$data/pair_0.txt"
+    alone=$(pair_ms "$data/pair_0.txt")
+    for ((k = 1; k < cores; ++k)); do
+        taskset -c 0 "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 \
+            reference=0 label=B/with >"$data/pair_0.txt" &
+        taskset -c "$k" "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 \
+            reference=0 label=B/other >"$data/pair_k.txt"
         wait
-        cat "$data"/contention_*.txt | grep "^frame " |
-            awk -v px="$px" '{ for (i = 1; i <= NF; ++i) if ($i ~ /^frame_ms=/) {
-                                   split($i, v, "="); sum += v[2]; n += 1 } }
-                             END { printf "device contention processes=%d %s mean_frame_ms=%.1f\n", n, px, sum / n }'
+        awk -v k="$k" -v a="$alone" -v z="$(pair_ms "$data/pair_0.txt")" -v o="$(pair_ms "$data/pair_k.txt")" \
+            'BEGIN { printf "device pairs core0_with=%d alone_ms=%s core0_ms=%s other_ms=%s core0_slowdown=%.3f\n", k, a, z, o, z / a }'
     done
 fi
 
