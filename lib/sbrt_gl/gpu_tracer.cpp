@@ -132,9 +132,11 @@ std::string GpuTracer::gl_renderer() const
 void GpuTracer::reset_stats()
 {
     // what the tracer's life has cost so far, not a frame's
-    const double upload_ms = stats_.upload_ms, programs_ms = stats_.programs_ms;
+    const double upload_ms = stats_.upload_ms, paint_ms = stats_.paint_ms,
+                 programs_ms = stats_.programs_ms;
     stats_ = GpuStats();
     stats_.upload_ms = upload_ms;
+    stats_.paint_ms = paint_ms;
     stats_.programs_ms = programs_ms;
     timer_.take_ms(0); // the queries of what went before
 }
@@ -314,6 +316,7 @@ void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &s
         if (!paint_ || key != paint_key_) {
             const auto start = Clock::now();
             const std::vector<uint32_t> words = sbrt::make_gpu_paint(tracer_, shading);
+            stats_.paint_ms += ms_since(start);
             paint_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
                            checked_bytes(words.size() * sizeof(uint32_t), max_block_bytes_,
                                          "colours by voxel"),

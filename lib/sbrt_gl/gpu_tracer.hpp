@@ -36,6 +36,9 @@ enum class Pass : int;
 /// reset_stats).
 struct GpuStats {
     double upload_ms = 0;   ///< model upload
+    /// Of upload_ms: the host's time making the colours by voxel
+    /// (make_gpu_paint), before they go up (kept as upload_ms is).
+    double paint_ms = 0;
     double trace_ms = 0;    ///< dispatches until the GPU is done
     double readback_ms = 0; ///< hit records back and decoded; shaded
                             ///< bands' rays over the budget traced here

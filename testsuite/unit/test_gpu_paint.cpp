@@ -29,13 +29,15 @@ namespace {
 constexpr float FILL = -127;
 
 /// A random voxel model with two channels: a percentage with fills and a
-/// second one meant `b_scale` times its stored value (0 .. b_values - 1).
+/// second one meant `b_scale` times its stored value (0 .. b_values - 1)
+/// plus `b_offset`.
 struct PaintFixture {
     Model model;
     std::shared_ptr<const PropertyChannels> channels;
 };
 
-PaintFixture fixture(const std::string &dir, double b_scale = 2, unsigned b_values = 40)
+PaintFixture fixture(const std::string &dir, double b_scale = 2, unsigned b_values = 40,
+                     double b_offset = 0)
 {
     PaintFixture fx;
     const Voxels voxels = random_voxels(5, 36, 44, 30, 6);
@@ -53,6 +55,7 @@ PaintFixture fixture(const std::string &dir, double b_scale = 2, unsigned b_valu
     a.fill = FILL;
     b.name = "kans_6";
     b.scale = b_scale;
+    b.offset = b_offset;
     const std::string path = dir + "/channels";
     write_channels(path, fx.model, source, {a, b}, 8);
     fx.channels = std::make_shared<const PropertyChannels>(
@@ -248,11 +251,19 @@ TEST_P(GpuPaint, WhatTheGpuDoesNotColourTheHostDoes)
 
 TEST(GpuPaintWords, EachVoxelHoldsItsEntryAndEachCellItsSpan)
 {
-    // the entries in integers (whole codes, small scales), and through the
-    // doubles of sum_at (a scale too large for the integers' bounds)
-    for (const auto &[b_scale, b_values] : {std::pair<double, unsigned>{2, 40}, {2000, 4}}) {
-        SCOPED_TRACE("second channel's scale " + std::to_string(b_scale));
-        const PaintFixture fx = fixture(temp_dir("gpu_paint_words"), b_scale, b_values);
+    // the entries in integers (whole 1-byte codes, a small scale; 2-byte
+    // codes with an offset), and through the doubles of sum_at (a scale
+    // too large for the integers' bounds); columns of up to 30 voxels: runs
+    // of 16 and the rest
+    struct Case {
+        double scale;
+        unsigned values;
+        double offset;
+    };
+    for (const Case &c : {Case{2, 40, 0}, Case{1, 300, 7}, Case{2000, 4, 0}}) {
+        SCOPED_TRACE("second channel: scale " + std::to_string(c.scale) + ", " +
+                     std::to_string(c.values) + " values, offset " + std::to_string(c.offset));
+        const PaintFixture fx = fixture(temp_dir("gpu_paint_words"), c.scale, c.values, c.offset);
         const PropertyPaint paint(fx.model, fx.channels, {0, 1}, ramp());
         ASSERT_GT(paint.whole().count, 0u);
         Shading shading;

@@ -169,6 +169,10 @@ public:
                                                 uint32_t(codes_[2 * i + 1]) << 8;
         return int64_t(base_) + int64_t(code);
     }
+    /// Values [0, size()) as whole() gives them, into `out` (whole_codes()
+    /// must hold; `out` is not the codes): in a loop the compiler
+    /// vectorises.
+    void whole_into(int32_t *out) const;
     /// `count` values from the `first` on (a cell's span in its block).
     ChannelValues part(size_t first, size_t count) const
     {

@@ -108,14 +108,51 @@ uint32_t paint_entry(bool has, int64_t index)
     return !has ? GPU_PAINT_NONE : index < 0 ? GPU_PAINT_OUTSIDE : uint32_t(index);
 }
 
+// The loops over a column's values below run over 16 * runs of them (the
+// column padded): a count the compiler knows is a multiple of 16, over
+// pointers that alias nothing, which it vectorises at -O2.
+
+/// has[i] &= raw[i] != fill over [0, 16 * runs).
+void clear_fills(uint8_t *__restrict has, const int32_t *__restrict raw, int32_t fill,
+                 size_t runs)
+{
+    for (size_t i = 0; i < runs << 4; ++i)
+        has[i] &= uint8_t(raw[i] != fill);
+}
+
+/// sum[i] += raw[i] * scale over [0, 16 * runs).
+void add_scaled(int64_t *__restrict sum, const int32_t *__restrict raw, int64_t scale,
+                size_t runs)
+{
+    if (scale == 1) {
+        for (size_t i = 0; i < runs << 4; ++i)
+            sum[i] += raw[i];
+        return;
+    }
+    for (size_t i = 0; i < runs << 4; ++i)
+        sum[i] += int64_t(raw[i]) * scale;
+}
+
+/// Each voxel's entry from its sum less the low and whether it has a value
+/// (paint_entry, in 16 bits), over [0, 16 * runs).
+void entries_of(const int64_t *__restrict sum, const uint8_t *__restrict has, int64_t count,
+                uint16_t *__restrict entry, size_t runs)
+{
+    for (size_t i = 0; i < runs << 4; ++i) {
+        const uint16_t inside = uint64_t(sum[i]) < uint64_t(count) // 0 <= sum < count
+                                    ? uint16_t(sum[i])
+                                    : uint16_t(GPU_PAINT_OUTSIDE);
+        entry[i] = has[i] ? inside : uint16_t(GPU_PAINT_NONE);
+    }
+}
+
 /// The entries of voxels [0, size) of a cell whose summed channels' values
-/// are `columns`, into set_entry(i, entry): in integers where the sum and
-/// every column allow (WholeSum, ChannelValues::whole_codes), else through
-/// sum_at.
-template <typename SetEntry>
+/// are `columns`, into `out` (16 bits each, little-endian): in integers where the sum and
+/// every column allow (WholeSum, ChannelValues::whole_codes), a channel at
+/// a time over the whole column, else through sum_at.
 void cell_entries(const PropertyChannels &channels, const std::vector<size_t> &summed,
                   const WholeSum &in_whole, const ChannelValues *columns,
-                  const WholeValues &whole, uint32_t size, const SetEntry &set_entry)
+                  const WholeValues &whole, uint32_t size, unsigned char *out)
 {
     bool in_integers = in_whole.usable;
     for (size_t k = 0; k < summed.size(); ++k)
@@ -124,22 +161,36 @@ void cell_entries(const PropertyChannels &channels, const std::vector<size_t> &s
         for (uint32_t i = 0; i < size; ++i) {
             double sum;
             const bool has = sum_at(channels, summed, columns, i, sum);
-            set_entry(i, paint_entry(has, has ? whole.index(sum) : -1));
+            const uint16_t entry = uint16_t(paint_entry(has, has ? whole.index(sum) : -1));
+            std::memcpy(out + 2 * size_t(i), &entry, 2);
         }
         return;
     }
-    for (uint32_t i = 0; i < size; ++i) {
-        int64_t sum = 0;
-        bool has = true;
-        for (size_t k = 0; k < summed.size() && has; ++k) {
-            const WholeTerm &term = in_whole.terms[k];
-            const int64_t raw = columns[k].whole(i);
-            has = !(term.has_fill && raw == term.fill);
-            sum += raw * term.scale + term.offset;
-        }
-        const int64_t v = sum - in_whole.low;
-        set_entry(i, paint_entry(has, v >= 0 && v < in_whole.count ? v : -1));
+    // a column is at most 65,535 voxels (gpu_paints); each thread's own,
+    // padded to a multiple of 16 (clear_fills): the values past `size` are
+    // zeroes, never read into an entry. Each sum starts at the terms'
+    // offsets less the values' low.
+    const size_t runs = (size_t(size) + 15) / 16, padded = 16 * runs;
+    thread_local std::vector<int32_t> raw;
+    thread_local std::vector<int64_t> sum;
+    thread_local std::vector<uint8_t> has;
+    thread_local std::vector<uint16_t> entries;
+    raw.assign(padded, 0);
+    has.assign(padded, 1);
+    int64_t start = -in_whole.low;
+    for (const WholeTerm &term : in_whole.terms)
+        start += term.offset;
+    sum.assign(padded, start);
+    for (size_t k = 0; k < summed.size(); ++k) {
+        const WholeTerm &term = in_whole.terms[k];
+        columns[k].whole_into(raw.data());
+        if (term.has_fill)
+            clear_fills(has.data(), raw.data(), int32_t(term.fill), runs);
+        add_scaled(sum.data(), raw.data(), term.scale, runs);
     }
+    entries.resize(padded);
+    entries_of(sum.data(), has.data(), in_whole.count, entries.data(), runs);
+    std::memcpy(out, entries.data(), 2 * size_t(size)); // (little-endian, as the words)
 }
 
 } // namespace
@@ -209,8 +260,10 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
     const WholeValues &whole = painted_whole(shading);
     const uint64_t cells = f.cells();
 
-    // each cell's span where the prepared model keeps its stack
+    // each cell's span where the prepared model keeps its stack, and the
+    // blocks that hold one
     std::vector<uint32_t> words(HEAD_WORDS + 2 * cells, 0);
+    std::vector<char> block_needed(channels.blocks(), 0);
     uint64_t entries = 0;
     for (uint64_t cell = 0; cell < cells; ++cell) {
         const ColumnSpan span = model.stack(cell).size() == 0 ? ColumnSpan{} : channels.span(cell);
@@ -219,42 +272,41 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
         words[HEAD_WORDS + 2 * cell] = uint32_t(entries);
         words[HEAD_WORDS + 2 * cell + 1] = span.lo | span.hi << 16;
         entries += span.size();
+        if (span.size() > 0)
+            block_needed[channels.block_of(cell)] = 1;
     }
 
-    // each voxel's entry, block by block of the channels (a block is
-    // decoded once, by the thread that takes it), a column of each summed
-    // channel a cell
+    // the summed channels' blocks decoded first, each by one thread (a
+    // model's few large blocks would leave most threads idle if the entries
+    // went block by block), then each voxel's entry, a row of cells a take
     const std::vector<size_t> summed =
         shading.property ? shading.property->summed() : std::vector<size_t>{shading.fade->channel()};
-    const int bs = channels.block_size();
-    const int block_cols = (f.cols + bs - 1) / bs;
+    const int blocks = int(channels.blocks());
+    for_each_row(blocks * int(summed.size()), threads, [&](int task) {
+        if (block_needed[size_t(task % blocks)])
+            channels.block_values(summed[size_t(task / blocks)], size_t(task % blocks));
+    });
     // the entries go straight into their words, two a word (the first in
     // the low half: little-endian bytes), and the colours after them
     const std::vector<glm::dvec3> colours = paint_colours(model, shading);
     const size_t entries_at = words.size(), colours_at = entries_at + (entries + 1) / 2;
     words.resize(colours_at + 3 * colours.size()); // (zeroes: an odd count's last half)
     unsigned char *entry_bytes = reinterpret_cast<unsigned char *>(words.data() + entries_at);
-    const auto set_entry = [&](uint64_t i, uint32_t e) {
-        const uint16_t e16 = uint16_t(e);
-        std::memcpy(entry_bytes + 2 * i, &e16, 2);
-    };
     const WholeSum in_whole(channels, summed, whole);
-    for_each_row(int(channels.blocks()), threads, [&](int b) {
+    for_each_row(f.rows, threads, [&](int row) {
         std::vector<ChannelValues> columns(summed.size());
-        const int row0 = (b / block_cols) * bs, col0 = (b % block_cols) * bs;
-        for (int row = row0; row < std::min(f.rows, row0 + bs); ++row)
-            for (int col = col0; col < std::min(f.cols, col0 + bs); ++col) {
-                const uint64_t cell = model.cell_index(row, col);
-                const uint32_t at = words[HEAD_WORDS + 2 * cell];
-                const uint32_t span = words[HEAD_WORDS + 2 * cell + 1];
-                const uint32_t size = (span >> 16) - (span & 0xffff);
-                if (size == 0)
-                    continue;
-                for (size_t k = 0; k < summed.size(); ++k)
-                    columns[k] = channels.column(summed[k], cell);
-                cell_entries(channels, summed, in_whole, columns.data(), whole, size,
-                             [&](uint32_t i, uint32_t e) { set_entry(uint64_t(at) + i, e); });
-            }
+        for (int col = 0; col < f.cols; ++col) {
+            const uint64_t cell = model.cell_index(row, col);
+            const uint32_t at = words[HEAD_WORDS + 2 * cell];
+            const uint32_t span = words[HEAD_WORDS + 2 * cell + 1];
+            const uint32_t size = (span >> 16) - (span & 0xffff);
+            if (size == 0)
+                continue;
+            for (size_t k = 0; k < summed.size(); ++k)
+                columns[k] = channels.column(summed[k], cell);
+            cell_entries(channels, summed, in_whole, columns.data(), whole, size,
+                         entry_bytes + 2 * uint64_t(at));
+        }
     });
     for (size_t k = 0; k < colours.size(); ++k)
         for (int c = 0; c < 3; ++c) {

@@ -697,7 +697,7 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
         // cold: fresh channels, a fresh GPU renderer, its first frame
         Painted p = painted(kind);
         renderer.set_shading(p.shading);
-        double first = 0, upload_ms = 0;
+        double first = 0, upload_ms = 0, paint_ms = 0;
         bool on_gpu_shaded = false;
         std::unique_ptr<sbrt_gl::GpuRenderer> on_gpu;
         first = run_ms([&] {
@@ -707,6 +707,7 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
             on_gpu_shaded = r.shaded_on_gpu;
         });
         upload_ms = on_gpu->gpu().stats().upload_ms;
+        paint_ms = on_gpu->gpu().stats().paint_ms;
         // cold again, the host colouring at the GPU's hits (decoding only
         // the blocks rays reach)
         double first_host = NAN;
@@ -747,13 +748,14 @@ void paint_frame(const std::string &dir, const Args &args, const Camera &camera,
         warm_ms[kind.name] = warm;
         first_ms[kind.name] = first;
         std::printf("paint_frame label=%s kind=%s%s%s renderer=\"%s\" cols=%d rows=%d "
-                    "shaded_on_gpu=%s first_frame_ms=%.2f upload_ms=%.2f "
+                    "shaded_on_gpu=%s first_frame_ms=%.2f upload_ms=%.2f paint_ms=%.2f "
                     "first_frame_host_coloured_ms=%.2f frame_ms=%.3f "
                     "mrays=%.0f cpu_frame_ms=%.1f cpu_threads=%u gpu/cpu=%.1f "
                     "pixels_apart_from_cpu=%zu of %.0f\n",
                     label.c_str(), kind.name.c_str(), kind.what.empty() ? "" : "=",
                     kind.what.c_str(), on_gpu->gpu().gl_renderer().c_str(), camera.cols(),
-                    camera.rows(), on_gpu_shaded ? "yes" : "no", first, upload_ms, first_host, warm,
+                    camera.rows(), on_gpu_shaded ? "yes" : "no", first, upload_ms, paint_ms, first_host,
+                    warm,
                     rays / warm / 1000, cpu, thread_count(threads), cpu / warm,
                     apart, rays);
     }
