@@ -11,6 +11,7 @@
 #include <cstring>
 #include <memory>
 #include <random>
+#include <set>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -297,3 +298,46 @@ TEST(GpuPaintWords, EachVoxelHoldsItsEntryAndEachCellItsSpan)
         EXPECT_EQ(words[3], uint32_t(paint.whole().count)); // the no-value colour
     }
 }
+
+TEST(GpuPaintWords, OnlyTheSummedChannelsBlocksThatHoldVoxelsAreDecoded)
+{
+    // voxels in the north-west corner only (as in a model read for an
+    // area): the words decode the blocks of the summed channels there,
+    // none of the third channel, none elsewhere
+    Voxels voxels = random_voxels(7, 36, 44, 30, 6);
+    const Frame &f = voxels.frame;
+    for (int d = 0; d < f.depths; ++d)
+        for (int r = 0; r < f.rows; ++r)
+            for (int c = 0; c < f.cols; ++c)
+                if (r >= 12 || c >= 10)
+                    voxels.classes[size_t(d) * f.cells() + size_t(r) * size_t(f.cols) + size_t(c)] =
+                        NULL_CLASS;
+    const Model model = build_model(voxels);
+    std::mt19937 rng(9);
+    Source source(3, std::vector<float>(f.voxels()));
+    for (std::vector<float> &channel : source)
+        for (float &v : channel)
+            v = float(rng() % 101);
+    std::vector<ChannelInfo> infos(3);
+    infos[0].name = "a";
+    infos[1].name = "b";
+    infos[2].name = "c";
+    const std::string path = temp_dir("gpu_paint_blocks") + "/channels";
+    write_channels(path, model, source, infos, 8);
+    const auto channels = std::make_shared<const PropertyChannels>(
+        std::make_shared<const MappedFile>(path), path, model);
+    std::set<size_t> with_voxels;
+    for (uint64_t cell = 0; cell < f.cells(); ++cell)
+        if (channels->span(cell).size() > 0)
+            with_voxels.insert(channels->block_of(cell));
+    ASSERT_GE(with_voxels.size(), 2u);
+    ASSERT_LT(with_voxels.size(), channels->blocks() / 4);
+    const PropertyPaint paint(model, channels, {0, 2}, ramp());
+    Shading shading;
+    shading.property = &paint;
+    const Tracer tracer(model, 1.0);
+    EXPECT_EQ(channels->blocks_decoded(), 0u);
+    make_gpu_paint(tracer, shading, 3);
+    EXPECT_EQ(channels->blocks_decoded(), 2 * with_voxels.size());
+}
+

@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "gpu/gpu_paint.hpp"
 
+#include <climits>
 #include <cmath>
 #include <cstring>
 
@@ -110,7 +111,8 @@ uint32_t paint_entry(bool has, int64_t index)
 
 // The loops over a column's values below run over 16 * runs of them (the
 // column padded): a count the compiler knows is a multiple of 16, over
-// pointers that alias nothing, which it vectorises at -O2.
+// pointers that alias nothing, which it vectorises (GCC 12 at -O2, as
+// Debian's builds).
 
 /// has[i] &= raw[i] != fill over [0, 16 * runs).
 void clear_fills(uint8_t *__restrict has, const int32_t *__restrict raw, int32_t fill,
@@ -168,7 +170,7 @@ void cell_entries(const PropertyChannels &channels, const std::vector<size_t> &s
     }
     // a column is at most 65,535 voxels (gpu_paints); each thread's own,
     // padded to a multiple of 16 (clear_fills): the values past `size` are
-    // zeroes, never read into an entry. Each sum starts at the terms'
+    // zeroes, never copied out. Each sum starts at the terms'
     // offsets less the values' low.
     const size_t runs = (size_t(size) + 15) / 16, padded = 16 * runs;
     thread_local std::vector<int32_t> raw;
@@ -281,11 +283,12 @@ std::vector<uint32_t> make_gpu_paint(const Tracer &tracer, const Shading &shadin
     // went block by block), then each voxel's entry, a row of cells a take
     const std::vector<size_t> summed =
         shading.property ? shading.property->summed() : std::vector<size_t>{shading.fade->channel()};
-    const int blocks = int(channels.blocks());
-    for_each_row(blocks * int(summed.size()), threads, [&](int task) {
-        if (block_needed[size_t(task % blocks)])
-            channels.block_values(summed[size_t(task / blocks)], size_t(task % blocks));
-    });
+    const int64_t blocks = int64_t(channels.blocks()), tasks = blocks * int64_t(summed.size());
+    if (tasks <= INT_MAX) // (else each block is decoded below where first needed)
+        for_each_row(int(tasks), threads, [&](int task) {
+            if (block_needed[size_t(task % blocks)])
+                channels.block_values(summed[size_t(task / blocks)], size_t(task % blocks));
+        });
     // the entries go straight into their words, two a word (the first in
     // the low half: little-endian bytes), and the colours after them
     const std::vector<glm::dvec3> colours = paint_colours(model, shading);
