@@ -19,9 +19,12 @@ failed=0
 step_start=$SECONDS
 lap() { took=" ($((SECONDS - step_start)) s)"; step_start=$SECONDS; }
 log=$(mktemp -d /tmp/r3sbrt_tests.XXXXXX)
+# the unit tests' builds on every core (their libraries' sub-makes share
+# make's job slots)
+jobs=-j$(nproc)
 
 # 1. unit tests (GoogleTest)
-if make -s -C testsuite/unit build/sbrt_unit_tests >"$log/unit_build.log" 2>&1; then
+if make -s "$jobs" -C testsuite/unit build/sbrt_unit_tests >"$log/unit_build.log" 2>&1; then
     testsuite/unit/build/sbrt_unit_tests >"$log/unit.log" 2>&1
     p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log/unit.log")
     f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log/unit.log")
@@ -36,7 +39,7 @@ fi
 
 # 2. the unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer
 san_flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-if make -s -C testsuite/unit BUILD=build-san SAN_FLAGS="$san_flags" build-san/sbrt_unit_tests \
+if make -s "$jobs" -C testsuite/unit BUILD=build-san SAN_FLAGS="$san_flags" build-san/sbrt_unit_tests \
     >"$log/unit_san_build.log" 2>&1; then
     LSAN_OPTIONS=suppressions=$SBRT_ROOT/testsuite/unit/lsan.supp \
         testsuite/unit/build-san/sbrt_unit_tests >"$log/unit_san.log" 2>&1
