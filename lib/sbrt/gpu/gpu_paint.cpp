@@ -87,6 +87,9 @@ struct WholeSum {
     std::vector<WholeTerm> terms;
     bool usable = true;
     int64_t low = 0, count = 0;
+    /// Where a voxel's sum less the low starts: the terms' offsets less
+    /// the low.
+    int64_t start = 0;
 
     WholeSum(const PropertyChannels &channels, const std::vector<size_t> &summed,
              const WholeValues &whole)
@@ -99,6 +102,9 @@ struct WholeSum {
                  whole.low == std::floor(whole.low);
         low = usable ? int64_t(whole.low) : 0;
         count = int64_t(whole.count);
+        start = -low;
+        for (const WholeTerm &term : terms)
+            start += term.offset;
     }
 };
 
@@ -141,10 +147,8 @@ void entries_of(const int64_t *__restrict sum, const uint8_t *__restrict has, in
                 uint16_t *__restrict entry, size_t runs)
 {
     for (size_t i = 0; i < runs << 4; ++i) {
-        const uint16_t inside = uint64_t(sum[i]) < uint64_t(count) // 0 <= sum < count
-                                    ? uint16_t(sum[i])
-                                    : uint16_t(GPU_PAINT_OUTSIDE);
-        entry[i] = has[i] ? inside : uint16_t(GPU_PAINT_NONE);
+        const bool inside = uint64_t(sum[i]) < uint64_t(count); // 0 <= sum < count
+        entry[i] = uint16_t(paint_entry(has[i] != 0, inside ? sum[i] : -1));
     }
 }
 
@@ -170,8 +174,7 @@ void cell_entries(const PropertyChannels &channels, const std::vector<size_t> &s
     }
     // a column is at most 65,535 voxels (gpu_paints); each thread's own,
     // padded to a multiple of 16 (clear_fills): the values past `size` are
-    // zeroes, never copied out. Each sum starts at the terms'
-    // offsets less the values' low.
+    // zeroes, never copied out.
     const size_t runs = (size_t(size) + 15) / 16, padded = 16 * runs;
     thread_local std::vector<int32_t> raw;
     thread_local std::vector<int64_t> sum;
@@ -179,10 +182,7 @@ void cell_entries(const PropertyChannels &channels, const std::vector<size_t> &s
     thread_local std::vector<uint16_t> entries;
     raw.assign(padded, 0);
     has.assign(padded, 1);
-    int64_t start = -in_whole.low;
-    for (const WholeTerm &term : in_whole.terms)
-        start += term.offset;
-    sum.assign(padded, start);
+    sum.assign(padded, in_whole.start);
     for (size_t k = 0; k < summed.size(); ++k) {
         const WholeTerm &term = in_whole.terms[k];
         columns[k].whole_into(raw.data());
