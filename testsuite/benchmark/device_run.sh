@@ -63,6 +63,8 @@ builds=(new)
 bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
 sections=" ${SECTIONS:-programs unit paint gpu large boreholes scaling machine contention pairs alternate} "
 run() { [[ "$sections" == *" $1 "* ]]; }
+# the frame_ms of trace_bench frame's output (files, or standard input)
+frame_ms_of() { grep "^frame " "$@" | grep -oE "frame_ms=[0-9.]+" | cut -d= -f2; }
 
 # the models, unpacked once for every section
 for size in $sizes; do
@@ -201,7 +203,6 @@ fi
 if run contention && [ -d "$data/geo_B" ]; then
     log=$data/contention.txt
     : >"$log"
-    frame_ms_of() { grep "^frame " "$@" | grep -oE "frame_ms=[0-9.]+" | cut -d= -f2; }
     for round in 1 2 3; do
         for px in "cols=1056 rows=884" "cols=2112 rows=1768"; do
             for n in 1 2 4 8 16; do
@@ -241,17 +242,16 @@ fi
 # frame, each pair at once, against core 0 alone): cores that share a
 # physical core (hyperthreads the guest is not told of) or a cache show
 if run pairs && [ -d "$data/geo_B" ]; then
-    pair_ms() { grep "^frame " "$1" | grep -oE "frame_ms=[0-9.]+" | cut -d= -f2; }
     taskset -c 0 "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 reference=0 \
         label=B/alone >"$data/pair_0.txt"
-    alone=$(pair_ms "$data/pair_0.txt")
+    alone=$(frame_ms_of "$data/pair_0.txt")
     for ((k = 1; k < cores; ++k)); do
         taskset -c 0 "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 \
             reference=0 label=B/with >"$data/pair_0.txt" &
         taskset -c "$k" "$bundle/trace_bench" frame "$data/geo_B" $best threads=1 repeat=5 \
             reference=0 label=B/other >"$data/pair_k.txt"
         wait
-        awk -v k="$k" -v a="$alone" -v z="$(pair_ms "$data/pair_0.txt")" -v o="$(pair_ms "$data/pair_k.txt")" \
+        awk -v k="$k" -v a="$alone" -v z="$(frame_ms_of "$data/pair_0.txt")" -v o="$(frame_ms_of "$data/pair_k.txt")" \
             'BEGIN { printf "device pairs core0_with=%d alone_ms=%s core0_ms=%s other_ms=%s core0_slowdown=%.3f\n", k, a, z, o, z / a }'
     done
 fi
