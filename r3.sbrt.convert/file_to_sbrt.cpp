@@ -19,6 +19,7 @@
 #include "file_crs.hpp"
 #include "file_variable.hpp"
 #include "grass.hpp"
+#include "util/safe_text.hpp"
 #include "util/unfilled_allocator.hpp"
 #include "model/legend_rules.hpp"
 #include "model/survey_presets.hpp"
@@ -314,7 +315,7 @@ void print_file_variables(const char *file, bool shell)
 {
     const std::vector<VariableSummary> variables = list_file_variables(file);
     if (!shell)
-        fprintf(stdout, "Variables of <%s>:\n", file);
+        fprintf(stdout, "Variables of <%s>:\n", sbrt::printable(file).c_str());
     for (const VariableSummary &v : variables) {
         std::string dims, sizes;
         for (size_t i = 0; i < v.dimensions.size(); ++i) {
@@ -322,14 +323,18 @@ void print_file_variables(const char *file, bool shell)
             sizes += (i ? "," : "") + std::to_string(v.sizes[i]);
         }
         if (shell)
-            fprintf(stdout, "variable=%s|type=%s|dimensions=%s|sizes=%s|"
-                            "long_name=%s|units=%s\n",
-                    v.name.c_str(), v.type.c_str(), dims.c_str(), sizes.c_str(),
-                    v.long_name.c_str(), v.units.c_str());
+            fprintf(stdout, "variable=%s\n",
+                    sbrt::shell_word(sbrt::record_field(v.name) + "|type=" +
+                                     sbrt::record_field(v.type) + "|dimensions=" +
+                                     sbrt::record_field(dims) + "|sizes=" + sizes +
+                                     "|long_name=" + sbrt::record_field(v.long_name) +
+                                     "|units=" + sbrt::record_field(v.units))
+                        .c_str());
         else
-            fprintf(stdout, "  %-16s %-8s (%s) = (%s)%s%s%s\n", v.name.c_str(),
-                    v.type.c_str(), dims.c_str(), sizes.c_str(),
-                    v.long_name.empty() ? "" : "  ", v.long_name.c_str(),
-                    v.units.empty() ? "" : (" [" + v.units + "]").c_str());
+            fprintf(stdout, "  %-16s %-8s (%s) = (%s)%s%s%s\n",
+                    sbrt::printable(v.name).c_str(), sbrt::printable(v.type).c_str(),
+                    sbrt::printable(dims).c_str(), sizes.c_str(),
+                    v.long_name.empty() ? "" : "  ", sbrt::printable(v.long_name).c_str(),
+                    v.units.empty() ? "" : (" [" + sbrt::printable(v.units) + "]").c_str());
     }
 }

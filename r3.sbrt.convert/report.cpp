@@ -11,6 +11,7 @@
 
 #include "grass.hpp"
 #include "model/material_table.hpp"
+#include "util/safe_text.hpp"
 
 namespace {
 
@@ -35,15 +36,21 @@ void print_channels(const sbrt::PropertyChannels &channels, bool shell)
     for (const sbrt::ChannelInfo &c : channels.infos()) {
         const double per_voxel = c.voxels ? double(c.bytes) / double(c.voxels) : 0;
         if (shell) {
-            fprintf(stdout,
-                    "channel=%s|type=%s|min=%.9g|max=%.9g|voxels=%llu|valid=%llu|"
-                    "fill=%s|scale=%.17g|offset=%.17g|bytes=%llu|bytes_per_voxel=%.4f|"
-                    "unit=%s|long_name=%s\n",
-                    c.name.c_str(), sbrt::channel_type_name(c.type()), c.min, c.max,
-                    (unsigned long long)c.voxels, (unsigned long long)c.valid,
-                    c.has_fill ? std::to_string(c.fill).c_str() : "",
-                    c.scale, c.offset, (unsigned long long)c.bytes, per_voxel,
-                    c.unit.c_str(), c.long_name.c_str());
+            char numbers[512];
+            std::snprintf(numbers, sizeof numbers,
+                          "|type=%s|min=%.9g|max=%.9g|voxels=%llu|valid=%llu|fill=%s|"
+                          "scale=%.17g|offset=%.17g|bytes=%llu|bytes_per_voxel=%.4f|",
+                          sbrt::channel_type_name(c.type()), c.min, c.max,
+                          (unsigned long long)c.voxels, (unsigned long long)c.valid,
+                          c.has_fill ? std::to_string(c.fill).c_str() : "", c.scale,
+                          c.offset, (unsigned long long)c.bytes, per_voxel);
+            // one shell word a record: eval sets channel= (to the last one)
+            // and the scalars above stay set (no pipeline of assignments)
+            fprintf(stdout, "channel=%s\n",
+                    sbrt::shell_word(sbrt::record_field(c.name) + numbers + "unit=" +
+                                     sbrt::record_field(c.unit) + "|long_name=" +
+                                     sbrt::record_field(c.long_name))
+                        .c_str());
             continue;
         }
         char fill[64] = "no fill";
@@ -51,10 +58,10 @@ void print_channels(const sbrt::PropertyChannels &channels, bool shell)
             std::snprintf(fill, sizeof fill, "fill %.9g", double(c.fill));
         fprintf(stdout, "  %-12s %-4s %9.6g .. %-9.6g %s, %5.1f %% valid, %.3f bytes "
                         "per voxel%s%s%s%s\n",
-                c.name.c_str(), sbrt::channel_type_name(c.type()), c.min, c.max, fill,
-                c.voxels ? 100.0 * double(c.valid) / double(c.voxels) : 0.0, per_voxel,
-                c.unit.empty() ? "" : ", unit ", c.unit.c_str(),
-                c.long_name.empty() ? "" : ": ", c.long_name.c_str());
+                sbrt::printable(c.name).c_str(), sbrt::channel_type_name(c.type()), c.min,
+                c.max, fill, c.voxels ? 100.0 * double(c.valid) / double(c.voxels) : 0.0,
+                per_voxel, c.unit.empty() ? "" : ", unit ", sbrt::printable(c.unit).c_str(),
+                c.long_name.empty() ? "" : ": ", sbrt::printable(c.long_name).c_str());
         if (c.scale != 1 || c.offset != 0)
             fprintf(stdout, "  %-12s value = stored * %.9g + %.9g\n", "", c.scale,
                     c.offset);
@@ -86,7 +93,7 @@ void print_report(const char *name, const sbrt::Model &model,
                 "intervals=%llu\nsolid_intervals=%llu\nmax_stack=%u\n"
                 "mean_stack=%.6f\ncompression=%.3f\n"
                 "memory_bytes_per_interval=%.4f\nmemory_index_bytes_per_cell=%.4f\n",
-                name, f.north, f.south, f.east, f.west, f.top, f.bottom,
+                sbrt::shell_word(name).c_str(), f.north, f.south, f.east, f.west, f.top, f.bottom,
                 f.rows, f.cols, f.depths, f.ns_res(), f.ew_res(), f.tb_res(),
                 model.materials().size() - 1, (unsigned long long)s.voxels,
                 (unsigned long long)s.voxel_bytes,
@@ -99,18 +106,19 @@ void print_report(const char *name, const sbrt::Model &model,
                 "file_compression=%.3f\n",
                 unsigned(file.major), unsigned(file.minor),
                 (unsigned long long)file.bytes, file_per_interval, file_compression);
-        fprintf(stdout, "vertical_datum=%s\n", model.vertical_datum().c_str());
+        fprintf(stdout, "vertical_datum=%s\n",
+                sbrt::shell_word(model.vertical_datum()).c_str());
         if (channels)
             print_channels(*channels, true);
         return;
     }
-    fprintf(stdout, "SBRT:          %s\n", name);
+    fprintf(stdout, "SBRT:          %s\n", sbrt::printable(name).c_str());
     fprintf(stdout, "Extent:        N %.10g  S %.10g  E %.10g  W %.10g\n",
             f.north, f.south, f.east, f.west);
     fprintf(stdout, "Vertical:      T %.10g  B %.10g%s\n", f.top, f.bottom,
             model.vertical_datum().empty()
                 ? ""
-                : ("  (relative to " + model.vertical_datum() + ")").c_str());
+                : ("  (relative to " + sbrt::printable(model.vertical_datum()) + ")").c_str());
     fprintf(stdout, "Grid:          %d rows x %d cols x %d depths\n", f.rows,
             f.cols, f.depths);
     fprintf(stdout, "Resolution:    ns %.10g  ew %.10g  tb %.10g\n",
@@ -127,7 +135,7 @@ void print_report(const char *name, const sbrt::Model &model,
         const sbrt::Material &m = model.materials()[i];
         const auto rgb = sbrt::material_color(model, i);
         fprintf(stdout, "  %11d  %3d:%3d:%3d  %s\n", m.id, rgb[0], rgb[1], rgb[2],
-                m.label.c_str());
+                sbrt::printable(m.label).c_str());
     }
     fprintf(stdout, "Memory (papers' Table 1):\n");
     fprintf(stdout, "  voxels:            %llu\n", (unsigned long long)s.voxels);

@@ -21,6 +21,8 @@ from view_client import ServerError, ViewServer
 from column_profile import profile_figure, read_column
 import grass.script as gs
 
+from shell_output import shell_records
+
 
 class TestViewServer(TestCase):
     @classmethod
@@ -168,7 +170,7 @@ class TestViewServerChannels(TestCase):
         self.assertEqual([s.id for s in strata if s.id > 0], [1, 2, 3])
         self.assertEqual(len(channels), 1)
         listing = gs.read_command("r3.sbrt.convert", flags="g", sbrt="vlith")
-        fields = dict(f.split("=", 1) for f in listing.splitlines()[-1].split("|"))
+        fields = shell_records(listing, "channel")[-1]
         self.assertEqual(channels[0].name, "vprob")
         self.assertEqual(channels[0].unit, "%")
         self.assertEqual(channels[0].long_name, "P(sand)")

@@ -18,6 +18,7 @@ from grass.gunittest.main import test
 import grass.script as gs
 
 from geomodel_fixture import Raster3dCompare, error_of
+from shell_output import shell_records
 
 FILL = -127
 NX, NY, NZ = 14, 17, 40
@@ -191,13 +192,9 @@ class TestChannels(TestCase, Raster3dCompare):
         self.assertIn("kans_5", listing)
         self.assertIn("kans op lithoklasse 5", listing)
         self.assertIn("value = stored * 0.01 + 5", listing)
-        lines = gs.read_command("r3.sbrt.convert", flags="g",
-                                sbrt="with_channels").splitlines()
-        channels = {}
-        for line in lines:
-            if line.startswith("channel="):
-                fields = dict(f.split("=", 1) for f in line.split("|"))
-                channels[fields["channel"]] = fields
+        output = gs.read_command("r3.sbrt.convert", flags="g", sbrt="with_channels")
+        lines = output.splitlines()
+        channels = {c["channel"]: c for c in shell_records(output, "channel")}
         self.assertEqual(sorted(channels), ["kans_5", "kh", "porosity"])
         self.assertEqual(channels["kans_5"]["type"], "i8")  # 0..100, fill -127
         self.assertEqual(channels["kh"]["type"], "i16")
@@ -215,8 +212,7 @@ class TestChannels(TestCase, Raster3dCompare):
         self.assertModule("r3.sbrt.convert", file=other, variable="lithok",
                           flags="a", output="all_channels", preset="none")
         listing = gs.read_command("r3.sbrt.convert", flags="g", sbrt="all_channels")
-        names = sorted(line.split("|")[0][len("channel="):]
-                       for line in listing.splitlines() if line.startswith("channel="))
+        names = sorted(c["channel"] for c in shell_records(listing, "channel"))
         self.assertEqual(names, ["kans_5", "kh", "porosity"])
 
     def test_classes_alone_still_have_no_channels(self):

@@ -19,6 +19,7 @@ from grass.gunittest.main import test
 import grass.script as gs
 
 from geomodel_fixture import Raster3dCompare, run_in_new_location
+from shell_output import shell_records
 
 FILL = -127
 NX, NY, NZ = 30, 60, 100  # 24 kB of doubles a row: memory=1 reads 43 rows
@@ -243,8 +244,10 @@ class TestImportNetcdf(TestCase, Raster3dCompare):
         self.assertIn("Int16", listing)
         self.assertIn("(x,y,z) = (30,60,100)", listing)
         shell = gs.read_command("r3.sbrt.convert", flags="g", file=self.reference)
-        self.assertIn("variable=lithok|type=Int16|dimensions=x,y,z|sizes=30,60,100",
-                      shell)
+        lithok = [v for v in shell_records(shell, "variable") if v["variable"] == "lithok"]
+        self.assertEqual(len(lithok), 1)
+        self.assertEqual((lithok[0]["type"], lithok[0]["dimensions"], lithok[0]["sizes"]),
+                         ("Int16", "x,y,z", "30,60,100"))
 
     def test_float_variable_needs_rules(self):
         path = self.path("float.nc")

@@ -15,6 +15,7 @@ from grass.gunittest.main import test
 import grass.script as gs
 
 from geomodel_fixture import Raster3dCompare, error_of
+from shell_output import shell_records
 
 # r3.mapcalc's row(), col() and depth() count from 1, depth 1 at the bottom
 GROUND = "(5 + (row() * 3 + col() * 2) % 7)"
@@ -71,12 +72,8 @@ class TestRasterChannels(TestCase, Raster3dCompare):
         self.assertGreaterEqual(float(stats["min"]), 0)
 
     def test_g_lists_the_channels_with_type_unit_and_title(self):
-        channels = {}
-        for line in gs.read_command("r3.sbrt.convert", flags="g",
-                                    sbrt="lith_channels").splitlines():
-            if line.startswith("channel="):
-                fields = dict(f.split("=", 1) for f in line.split("|"))
-                channels[fields["channel"]] = fields
+        channels = {c["channel"]: c for c in shell_records(
+            gs.read_command("r3.sbrt.convert", flags="g", sbrt="lith_channels"), "channel")}
         self.assertEqual(sorted(channels), ["poro", "prob"])
         # 0..100 and a fill of 101 for the nulls: one byte a voxel
         self.assertEqual(channels["prob"]["type"], "u8")

@@ -16,6 +16,7 @@ packages=(
     clang libclang-rt-14-dev         # libFuzzer and the sanitizers' runtimes
     valgrind                         # memcheck of the modules
     libpng-dev                       # the PNG file of a render
+    nlohmann-json3-dev               # JSON output written by a library: valid by construction
     python3-pil                      # tests read the PNG back with a real decoder
     python3-matplotlib               # g.gui.sbrt's column profile
     netcdf-bin                       # ncgen writes the NetCDF files of the import tests
