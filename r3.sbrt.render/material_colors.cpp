@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "material_colors.hpp"
 #include "request_error.hpp"
+#include "grass_color_rules.hpp"
 
 #include <algorithm>
 
@@ -24,13 +25,15 @@ void apply_color_option(const RenderRequest &request, sbrt::Model &model)
     Rast_init_colors(&colors);
     if (!request.color.empty())
         Rast_make_colors(&colors, request.color.c_str(), low, high); // fatal if unknown
-    else if (request.rules == "-") {
-        if (!Rast_read_color_rules(&colors, low, high, Rast_read_color_rule, stdin))
-            bad_request(_("rules=-: no valid colour rules on standard input"));
+    else {
+        // read and checked by us: GRASS's reader would end the view server
+        // on a bad line and print the line (of whatever file it was given)
+        const sbrt::ColorRules rules =
+            request.rules == "-"
+                ? sbrt::read_color_rules_stream(stdin, "rules=- (standard input)")
+                : sbrt::read_color_rules_file(request.rules, "rules=" + request.rules);
+        set_grass_colors(rules, low, high, &colors);
     }
-    else if (!Rast_load_colors(&colors, request.rules.c_str(), low, high))
-        bad_request(_("rules=%s: cannot read colour rules from this file"),
-                      request.rules.c_str());
     for (size_t i = 1; i < materials.size(); ++i) {
         int red, green, blue;
         CELL id = materials[i].id;

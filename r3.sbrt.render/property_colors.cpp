@@ -9,6 +9,7 @@
 
 #include <algorithm>
 
+#include "grass_color_rules.hpp"
 #include "request_error.hpp"
 
 std::vector<size_t> property_channels(const RenderRequest &request,
@@ -69,13 +70,10 @@ sbrt::ColorRamp property_ramp(const std::string &table, double low, double high)
     struct Colors colors;
     Rast_init_colors(&colors);
     const bool is_file = table.find('/') != std::string::npos || access(table.c_str(), R_OK) == 0;
-    if (is_file) {
-        if (access(table.c_str(), R_OK) != 0 ||
-            !Rast_load_fp_colors(&colors, table.c_str(), low, high))
-            bad_request(_("property_color=%s: cannot read it as a colour rules file "
-                          "(lines 'value red:green:blue', value may end in %%)"),
-                        table.c_str());
-    }
+    if (is_file) // read and checked by us, never by GRASS's reader
+        set_grass_colors(
+            sbrt::read_color_rules_file(table, "property_color=" + table), low, high,
+            &colors);
     else {
         if (!G_find_color_rule(table.c_str()))
             bad_request(_("property_color=%s is neither a GRASS colour table (e.g. "
