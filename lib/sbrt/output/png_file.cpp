@@ -5,7 +5,13 @@
  ****************************************************************************/
 #include "output/png_file.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <csetjmp>
+#include <cstdlib>
+#include <cstring>
 
 #include <png.h>
 
@@ -24,10 +30,22 @@ void on_png_error(png_structp png, png_const_charp message)
 
 void on_png_warning(png_structp, png_const_charp) {}
 
+/// The process's umask, read once (umask() both reads and sets it; read at
+/// static initialisation, before any thread could create a file).
+mode_t read_umask()
+{
+    const mode_t mask = umask(022);
+    umask(mask);
+    return mask;
+}
+const mode_t initial_umask = read_umask();
+
+mode_t process_umask() { return initial_umask; }
+
 } // namespace
 
 PngFile::PngFile(const std::string &path, int rows, int cols)
-    : path_(path), temp_(path + ".tmp"), rows_(rows), cols_(cols)
+    : path_(path), rows_(rows), cols_(cols)
 {
     if (rows <= 0 || cols <= 0)
         fail("PNG <", path, ">: an image of ", cols, " x ", rows, " pixels");
@@ -40,11 +58,7 @@ PngFile::PngFile(const std::string &path, int rows, int cols)
         discard();
         fail("PNG <", path, ">: libpng could not start");
     }
-    file_ = std::fopen(temp_.c_str(), "wb");
-    if (!file_) {
-        discard();
-        fail("cannot write PNG file <", temp_, ">");
-    }
+    open_temporary();
     if (setjmp(png_jmpbuf(png))) {
         discard(); // no destructor runs for a constructor that throws
         fail("PNG <", path, ">: ", error_);
@@ -103,10 +117,41 @@ void PngFile::finish()
         fail("PNG <", path_, ">: ", error_);
     png_write_end(png, nullptr);
     const bool closed = std::fclose(file_) == 0;
+    const int close_error = errno;
     file_ = nullptr;
-    if (!closed || std::rename(temp_.c_str(), path_.c_str()) != 0) {
+    if (!closed) {
         std::remove(temp_.c_str());
-        fail("cannot write PNG file <", path_, ">");
+        fail("cannot write PNG file <", path_, ">: ", std::strerror(close_error));
+    }
+    // the last of several writers of one path wins, each with a whole file
+    if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
+        const int error = errno;
+        std::remove(temp_.c_str());
+        fail("cannot write PNG file <", path_, ">: ", std::strerror(error));
+    }
+}
+
+void PngFile::open_temporary()
+{
+    // a name of its own in the folder of the file (rename() stays in one
+    // file system): processes writing one path never share a temporary
+    temp_ = path_ + ".XXXXXX.tmp";
+    const int fd = mkstemps(temp_.data(), 4);
+    if (fd < 0) {
+        const int error = errno;
+        discard();
+        fail("cannot write PNG file <", path_, ">: cannot create a file beside it: ",
+             std::strerror(error));
+    }
+    // as fopen() would make it: 0666 less the umask (mkstemp makes 0600)
+    fchmod(fd, 0666 & ~process_umask());
+    file_ = fdopen(fd, "wb");
+    if (!file_) {
+        const int error = errno;
+        close(fd);
+        std::remove(temp_.c_str());
+        discard();
+        fail("cannot write PNG file <", path_, ">: ", std::strerror(error));
     }
 }
 

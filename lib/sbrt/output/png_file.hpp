@@ -1,8 +1,10 @@
 /****************************************************************************
  * MODULE:    lib/sbrt (r3.sbrt addon)
  * PURPOSE:   An RGB PNG file written row by row through libpng, as the
- *            bands of a render arrive; atomic (a temporary sibling renamed
- *            into place by finish(), removed if the image is not finished)
+ *            bands of a render arrive; atomic (a temporary sibling of a
+ *            name unique to this writer, renamed into place by finish(),
+ *            removed if the image is not finished): several processes
+ *            writing one path each write a whole file, the last one stays
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_PNG_FILE_HPP
@@ -28,6 +30,8 @@ public:
     void finish();
 
 private:
+    /// Creates the temporary file (a unique name beside path_) as file_.
+    void open_temporary();
     /// Frees libpng's state; removes the temporary file if still open.
     void discard();
 
