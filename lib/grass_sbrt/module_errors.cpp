@@ -5,6 +5,9 @@
  ****************************************************************************/
 #include "module_errors.hpp"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 
@@ -12,6 +15,24 @@
 #include "util/error.hpp"
 
 namespace sbrt_grass {
+
+namespace {
+
+/// What a module printed must have reached standard output: a full disk or
+/// a closed pipe is an error, not success (issue 48, item 11).
+void check_standard_output()
+{
+    errno = 0;
+    const bool flushed = std::fflush(stdout) == 0;
+    if (flushed && !std::ferror(stdout))
+        return;
+    const int cause = errno;
+    G_fatal_error(_("Cannot write to standard output: %s; check the disk or the program "
+                    "reading it"),
+                  cause ? std::strerror(cause) : _("a write failed"));
+}
+
+} // namespace
 
 void run_reporting_errors(const char *doing, const std::string &subject,
                           const char *memory_hint, const std::function<void()> &job)
@@ -29,6 +50,7 @@ void run_reporting_errors(const char *doing, const std::string &subject,
     catch (const std::exception &e) {
         G_fatal_error(_("Failed while %s <%s>: %s"), doing, subject.c_str(), e.what());
     }
+    check_standard_output();
 }
 
 } // namespace sbrt_grass

@@ -16,7 +16,9 @@ namespace sbrt_grass {
 /// G_fatal_error on what it throws: an sbrt::Error's message as it is;
 /// running out of memory as "Out of memory while <doing> <subject>: <hint>";
 /// any other exception (one carried from a worker thread) as "Failed while
-/// <doing> <subject>: <what>".
+/// <doing> <subject>: <what>". Then what the job printed must have reached
+/// standard output (flushed, no write failed): else a fatal error, so that
+/// `module > /dev/full` never exits 0.
 void run_reporting_errors(const char *doing, const std::string &subject,
                           const char *memory_hint, const std::function<void()> &job);
 

@@ -55,6 +55,18 @@ TEST(LegendRules, BadLinesAreNamed)
     EXPECT_NE(error_of([&] { parse_category_rules(a, "labels.txt"); })
                   .find("labels.txt line 2: expected id:label"),
               std::string::npos);
+    // a file that is no rules file (issue 48, item 5): its line is named,
+    // never echoed
+    std::istringstream shadow("root:$y$j9T$secret:19000:0:99999:7:::\n");
+    const std::string shadow_error =
+        error_of([&] { parse_category_rules(shadow, "/etc/shadow"); });
+    EXPECT_NE(shadow_error.find("/etc/shadow line 1:"), std::string::npos);
+    EXPECT_EQ(shadow_error.find("secret"), std::string::npos) << shadow_error;
+    std::istringstream passwd("name: x\nreference: y\nroot:x:0:0:root:/root:/bin/bash\n");
+    EXPECT_EQ(error_of([&] { parse_preset(passwd, "p"); }).find("/root"), std::string::npos);
+    // labels are valid UTF-8 where they enter (item 9)
+    std::istringstream bad_utf8("1:zand \xFF grof\n");
+    EXPECT_EQ(parse_category_rules(bad_utf8, "l")[0].label, "zand \xEF\xBF\xBD grof");
     std::istringstream b("5:2:backwards\n");
     EXPECT_NE(error_of([&] { parse_category_rules(b, "r"); }).find("runs backwards"),
               std::string::npos);

@@ -15,6 +15,7 @@
 #include "format/atomic_dir.hpp"
 #include "format/byte_sink.hpp"
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 #include "format/mapped_file.hpp"
 #include "format/member_dir.hpp"
 #include "format/stacks_fields.hpp"
@@ -67,7 +68,7 @@ void decode_cats(const std::string &text, Model &model, const std::string &what)
             fail(what, " line ", number, ": expected id:label");
         const int64_t m = model.find_material(int32_t(id));
         if (m > 0)
-            model.materials()[size_t(m)].label = line.substr(colon + 1);
+            model.materials()[size_t(m)].label = valid_utf8(line.substr(colon + 1));
     }
 }
 

@@ -11,6 +11,7 @@
 #include <cstdlib>
 
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 namespace sbrt {
 
@@ -75,7 +76,7 @@ std::vector<ClassStyle> parse_category_rules(std::istream &in, const std::string
         ClassStyle s;
         const auto colon = t.find(':');
         if (colon == std::string::npos || !parse_id(t.substr(0, colon), s.low))
-            fail(what, " line ", number, ": expected id:label or low:high:label (", t, ")");
+            fail(what, " line ", number, ": expected id:label or low:high:label");
         s.high = s.low;
         std::string rest = t.substr(colon + 1);
         const auto second = rest.find(':');
@@ -86,7 +87,7 @@ std::vector<ClassStyle> parse_category_rules(std::istream &in, const std::string
             s.high = high;
             rest = rest.substr(second + 1);
         }
-        s.label = trim(rest);
+        s.label = valid_utf8(trim(rest));
         s.has_label = true;
         rules.push_back(s);
     }
@@ -132,9 +133,9 @@ SurveyPreset parse_preset(std::istream &in, const std::string &what)
         const auto gap = rest.find_first_of(" \t");
         const std::string color = rest.substr(0, gap);
         if (!parse_id(head, s.low) || !parse_rgb(color, s))
-            fail(what, " line ", number, ": expected id red:green:blue label (", t, ")");
+            fail(what, " line ", number, ": expected id red:green:blue label");
         s.high = s.low;
-        s.label = gap == std::string::npos ? "" : trim(rest.substr(gap));
+        s.label = gap == std::string::npos ? "" : valid_utf8(trim(rest.substr(gap)));
         s.has_label = !s.label.empty();
         p.classes.push_back(s);
     }
