@@ -24,7 +24,7 @@ std::string number_text(double value)
 
 std::string value_text(double value, const char *none)
 {
-    return std::isnan(value) ? std::string(none) : number_text(value);
+    return std::isfinite(value) ? number_text(value) : std::string(none);
 }
 
 const sbrt::Material &material_of(const sbrt::Model &model, uint32_t material)

@@ -36,7 +36,7 @@ struct LogSource {
 /// without layers) or "ok"; json's and csv's `status`.
 const char *point_status(const PointLog &point);
 
-/// A number as json and csv give it: 15 significant digits, which keep
+/// A number as json and csv give it (a finite one): 15 significant digits, which keep
 /// every decimal the model's float32 heights and the map's coordinates
 /// hold without the binary noise of a 17-digit print (2.4, not
 /// 2.4000000000000004).
@@ -45,18 +45,25 @@ std::string number_text(double value);
 /// The class id and label of material `material` of `model`.
 const sbrt::Material &material_of(const sbrt::Model &model, uint32_t material);
 
-/// A channel value as json and csv give it ("null" / "" for none).
+/// A number as csv gives it: number_text, `none` where it is none (nan,
+/// +-inf: no number a reader of the file takes).
 std::string value_text(double value, const char *none);
 
 /// A readable log per point: top to bottom, a line per layer (top,
 /// bottom, thickness, class, label) and per gap between layers; then,
 /// with channels, a line per voxel (top, bottom, class, each channel).
+/// Labels and channel names printable: no control character of a model
+/// of another mapset reaches the terminal.
 void write_plain_logs(FILE *out, const LogSource &source, const std::vector<PointLog> &logs);
 /// A json list of points, each with its layers (gaps left out) and, with
 /// channels, its voxels ("voxels": top, bottom, level, class, "values").
+/// Valid JSON and UTF-8 whatever the model holds: null for a number that
+/// is none (nan, +-inf), labels made valid UTF-8 and escaped.
 void write_json_logs(FILE *out, const LogSource &source, const std::vector<PointLog> &logs);
 /// A csv row per layer (gaps left out), one row for a point outside or an
-/// empty column; a header row first. With channels, the columns "level"
+/// empty column; a header row first. RFC 4180: labels printable and
+/// quoted where they hold a comma or a quote; an empty field for a number
+/// that is none (nan, +-inf). With channels, the columns "level"
 /// and one per channel follow, empty on layer rows, and a row per voxel
 /// (level set, thickness the voxel's) follows each point's layers.
 void write_csv_logs(FILE *out, const LogSource &source, const std::vector<PointLog> &logs);

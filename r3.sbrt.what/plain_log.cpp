@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "log_writers.hpp"
+#include "util/safe_text.hpp"
 
 namespace {
 
@@ -59,8 +60,9 @@ void write_voxel_table(FILE *out, const LogSource &source, const PointLog &p, in
                  width, "top", width, "bottom", "class");
     std::vector<int> widths;
     for (const sbrt::ChannelInfo &c : source.channels) {
-        widths.push_back(std::max(8, int(c.name.size())));
-        std::fprintf(out, " %*s", widths.back(), c.name.c_str());
+        const std::string name = sbrt::printable(c.name);
+        widths.push_back(std::max(8, int(name.size())));
+        std::fprintf(out, " %*s", widths.back(), name.c_str());
     }
     std::fputc('\n', out);
     for (const sbrt::VoxelValues &v : p.voxels) {
@@ -100,7 +102,7 @@ void write_plain_logs(FILE *out, const LogSource &source, const std::vector<Poin
                 std::fprintf(out, "%6s  %s\n", "", "(gap)");
             else
                 std::fprintf(out, "%6d  %s\n", material_of(model, e.material).id,
-                             material_of(model, e.material).label.c_str());
+                             sbrt::printable(material_of(model, e.material).label).c_str());
         }
         if (!p.voxels.empty())
             write_voxel_table(out, source, p, decimals);

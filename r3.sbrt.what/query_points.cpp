@@ -7,6 +7,9 @@
 #include "query_points.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include "util/error.hpp"
@@ -85,14 +88,58 @@ std::vector<int> selected_categories(Map_info &map, int layer, const std::string
     return selected;
 }
 
+/// The layer number that layer= names: a number as it is (-1: every
+/// layer), else the name of one of the map's layers (its database links,
+/// as v.db.connect -p lists them). Vect_get_field_number would take any
+/// other text as layer 0 (atoi) and so log every point; GRASS's modules
+/// refuse such a layer, and so does this.
+int layer_number(Map_info &map, const std::string &layer)
+{
+    errno = 0;
+    char *end = nullptr;
+    const long number = std::strtol(layer.c_str(), &end, 10);
+    if (!layer.empty() && *end == '\0' && errno == 0) {
+        if (number < -1 || number > 2147483647L)
+            sbrt::fail("layer=", layer, ": not a layer (a number from 1 up, -1 for every "
+                       "layer, or the name of a layer of the map)");
+        return int(number);
+    }
+    if (const field_info *info = Vect_get_field_by_name(&map, layer.c_str()))
+        return info->number;
+    sbrt::fail("layer=", layer, ": vector map <", Vect_get_full_name(&map),
+               "> has no layer of that name (v.db.connect -p map=", Vect_get_full_name(&map),
+               " lists its layers; give a layer's number or name, or -1 for every layer)");
+}
+
+/// Refuses a point that is no position (coordinates=nan,nan or inf, a
+/// vector map holding nan): it would be logged as outside, with
+/// coordinates that json cannot hold.
+void check_finite(const std::vector<QueryPoint> &points, const WhatRequest &request)
+{
+    for (size_t i = 0; i < points.size(); ++i) {
+        const QueryPoint &p = points[i];
+        if (std::isfinite(p.x) && std::isfinite(p.y))
+            continue;
+        if (request.points.empty())
+            sbrt::fail("coordinates=: point ", i + 1, " (", p.x, ",", p.y,
+                       ") is not a position: give finite numbers");
+        sbrt::fail("points=", request.points, ": point ", i + 1,
+                   p.cat >= 0 ? " (cat " + std::to_string(p.cat) + ")" : std::string(),
+                   " lies at ", p.x, ",", p.y,
+                   ", not a position: correct it (v.edit) or leave it out with where=");
+    }
+}
+
 } // namespace
 
 std::vector<QueryPoint> query_points(const WhatRequest &request)
 {
-    if (request.points.empty())
+    if (request.points.empty()) {
+        check_finite(request.coordinates, request);
         return request.coordinates;
+    }
     PointMap vector(request.points, request.layer);
-    const int layer = Vect_get_field_number(&vector.map(), request.layer.c_str());
+    const int layer = layer_number(vector.map(), request.layer);
     std::vector<int> selected;
     if (!request.where.empty())
         selected = selected_categories(vector.map(), layer, request.where);
@@ -130,5 +177,6 @@ std::vector<QueryPoint> query_points(const WhatRequest &request)
     if (others)
         G_warning(_("points=%s: %zu features that are not points skipped"),
                   request.points.c_str(), others);
+    check_finite(points, request);
     return points;
 }

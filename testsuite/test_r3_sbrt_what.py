@@ -5,15 +5,22 @@ PURPOSE:   r3.sbrt.what against GRASS's own tools: the log of every column
            UTM coordinates equals the voxels that r3.to.rast slices and
            r.what read there; json and csv parsed and compared; a horizon
            model's continuous tops equal r.what on the horizons; vector
-           points with layer= and where=; bad input fails clearly
+           points with layer= and where=; bad input fails clearly; hostile
+           input (labels with control characters, quotes, commas and bytes
+           that are no UTF-8, channel values of +-inf, coordinates of nan
+           or inf, layer= no layer, a full standard output) gives valid
+           json, csv and plain text or a clear error
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import csv
 import io
 import json
 import os
+import re
+import struct
 import subprocess
 import tempfile
+import zlib
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
@@ -82,15 +89,59 @@ def write_cats(name, labels):
             f.write(f"{k}:{label}\n")
 
 
-def what(**options):
-    """r3.sbrt.what's return code, standard output and messages."""
-    args = ["r3.sbrt.what"] + [
+def what_args(**options):
+    return ["r3.sbrt.what"] + [
         f"{k}={','.join(map(str, v)) if isinstance(v, (list, tuple)) else v}"
         for k, v in options.items()
     ]
-    run = subprocess.run(args, capture_output=True, text=True)
+
+
+def what(**options):
+    """r3.sbrt.what's return code, standard output and messages."""
+    run = subprocess.run(what_args(**options), capture_output=True, text=True,
+                         timeout=120)
     # GRASS wraps its messages: one space between words
     return run.returncode, run.stdout, " ".join(run.stderr.split())
+
+
+def what_bytes(**options):
+    """r3.sbrt.what's return code, standard output as bytes, messages."""
+    run = subprocess.run(what_args(**options), capture_output=True, timeout=120)
+    return run.returncode, run.stdout, " ".join(run.stderr.decode(errors="replace").split())
+
+
+def strict_json(data):
+    """bytes parsed as RFC 8259 asks: valid UTF-8, no NaN or Infinity
+    (which Python's json takes by default)."""
+    def refuse(constant):
+        raise ValueError(f"{constant} is no JSON")
+    return json.loads(data.decode("utf-8"), parse_constant=refuse)
+
+
+def patch_first_channel(path, scale=None, offset=None):
+    """Sets the scale and offset of the first channel of an SBRT's channels
+    member (lib/sbrt/format/channels_file.cpp: a 64-byte header, the
+    directory at dir_at with each channel's name, long name and unit, then
+    scale and offset as f64) and its checksums: a channel as another
+    mapset may hold it, which r3.sbrt.convert would not write."""
+    with open(path, "rb") as f:
+        data = bytearray(f.read())
+    dir_at = struct.unpack_from("<Q", data, 32)[0]
+    at = dir_at
+    for _ in range(3):  # name, long name, unit: u32 length and bytes
+        at += 4 + struct.unpack_from("<I", data, at)[0]
+    if scale is not None:
+        struct.pack_into("<d", data, at, scale)
+    if offset is not None:
+        struct.pack_into("<d", data, at + 8, offset)
+    struct.pack_into("<I", data, 48, zlib.crc32(data[dir_at:]))
+    struct.pack_into("<I", data, 60, zlib.crc32(data[:60]))
+    with open(path, "wb") as f:
+        f.write(data)
+
+
+# C0 but line feed, DEL and C1: what may drive a terminal
+CONTROL = re.compile("[\x00-\x09\x0b-\x1f\x7f-\x9f]")
 
 
 def flat(points):
@@ -282,6 +333,9 @@ class TestWhatVoxelModel(TestCase):
     def test_vector_points_with_where_and_output_file(self):
         points = self.json_logs(points="what_pts", where="kind = 'odd'")
         self.assertEqual([p["cat"] for p in points], [1, 3, 5, 7, 9])
+        # layer= by its name (v.in.ascii names layer 1 after the map)
+        self.assertEqual(self.json_logs(points="what_pts", layer="what_pts",
+                                        where="kind = 'odd'"), points)
         by_coords = self.json_logs(coordinates=flat(cell_centres()[0:10:2]))
         for a, b in zip(points, by_coords):
             self.assertEqual(a["intervals"], b["intervals"])
@@ -313,6 +367,135 @@ class TestWhatVoxelModel(TestCase):
         rc, _, err = what(input="what3d", coordinates=[W + 1, N - 1], format="xml")
         self.assertNotEqual(rc, 0)
         self.assertIn("format", err)
+
+
+class TestWhatHostileInput(TestCase):
+    """What another mapset's SBRT or a careless request may hold: labels
+    with control characters, quotes, a comma and a byte that is no UTF-8,
+    a channel of +-inf, coordinates of nan or inf, a layer that is none; a
+    standard output that takes nothing."""
+
+    # written into the SBRT's cats member as bytes: ESC [31m would turn a
+    # terminal red, \r return to the line's start, \xff is no UTF-8, \xc2\x9b
+    # is C1's CSI
+    HOSTILE = b'ctrl\x01\x1b[31mred, "q" \r\xff\x7f\xc2\x9b end'
+    # the label as valid UTF-8 (what json gives back): \xff is U+FFFD
+    HOSTILE_TEXT = 'ctrl\x01\x1b[31mred, "q" \r\ufffd\x7f\x9b end'
+    # the label printable (plain and csv): every control character U+FFFD
+    HOSTILE_PRINTABLE = CONTROL.sub("\ufffd", HOSTILE_TEXT)
+
+    @classmethod
+    def setUpClass(cls):
+        cls.use_temp_region()
+        cls.runModule("g.region", n=60, s=0, w=0, e=40, b=-20, t=10, res=10, res3=10,
+                      tbres=5)
+        cls.runModule("r3.mapcalc", expression="hostile = 1 + (z() > -5) + (z() > 5)",
+                      overwrite=True)
+        # 2, -2 and 0.5 by column: times a scale of 1e308 (patched in,
+        # r3.sbrt.convert refuses such a channel) +inf, -inf and 5e307
+        cls.runModule("r3.mapcalc", overwrite=True, expression=(
+            "hostile_p = float(if(col() == 1, 2, if(col() == 2, -2, 0.5)))"))
+        gs.run_command("r3.sbrt.convert", input="hostile", properties="hostile_p",
+                       output="hostile", overwrite=True, quiet=True)
+        env = gs.gisenv()
+        cls.sbrt_dir = os.path.join(env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"],
+                                    "sbrt", "hostile")
+        patch_first_channel(os.path.join(cls.sbrt_dir, "channels"), scale=1e308)
+        with open(os.path.join(cls.sbrt_dir, "cats"), "wb") as f:
+            f.write(b"1:Sand, fine\n2:" + cls.HOSTILE + b"\n3:Clay\n")
+        gs.write_command("v.in.ascii", input="-", stdin="1|5|55\n2|nan|45\n",
+                         output="hostile_nan", x=2, y=3, cat=1, quiet=True, overwrite=True)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.runModule("g.remove", flags="f", type="raster_3d", name="hostile,hostile_p")
+        cls.runModule("g.remove", flags="f", type="vector", name="hostile_nan")
+        cls.runModule("r3.sbrt.manage", flags="f", remove="hostile")
+        cls.del_temp_region()
+
+    def test_hostile_label_gives_valid_json_csv_and_plain(self):
+        # column 1 (+inf), column 2 (-inf), column 3 (0.5); classes 3, 2, 1
+        coords = [5, 55, 15, 55, 25, 55]
+        rc, out, err = what_bytes(input="hostile", coordinates=coords, format="json")
+        self.assertEqual(rc, 0, err)
+        points = strict_json(out)
+        # control characters (C0, DEL, C1) escaped: none raw in the output
+        self.assertIsNone(CONTROL.search(out.decode("utf-8")), out)
+        labels = [i["label"] for i in points[0]["intervals"]]
+        self.assertEqual(labels, ["Clay", self.HOSTILE_TEXT, "Sand, fine"])
+        rc, out, err = what_bytes(input="hostile", coordinates=coords, format="csv")
+        self.assertEqual(rc, 0, err)
+        text = out.decode("utf-8")
+        self.assertIsNone(CONTROL.search(text), text)
+        rows = list(csv.DictReader(io.StringIO(text, newline="")))
+        layer_rows = [r for r in rows if not r["level"] and r["point"] == "1"]
+        self.assertEqual([r["label"] for r in layer_rows],
+                         ["Clay", self.HOSTILE_PRINTABLE, "Sand, fine"])
+        rc, out, err = what_bytes(input="hostile", coordinates=coords)
+        self.assertEqual(rc, 0, err)
+        text = out.decode("utf-8")
+        self.assertIsNone(CONTROL.search(text), text)
+        self.assertIn(self.HOSTILE_PRINTABLE, text)
+
+    def test_infinite_channel_values_are_null_and_empty(self):
+        coords = [5, 55, 15, 55, 25, 55]
+        rc, out, err = what_bytes(input="hostile", coordinates=coords, format="json")
+        self.assertEqual(rc, 0, err)
+        points = strict_json(out)
+        values = [{v["values"]["hostile_p"] for v in p["voxels"]} for p in points]
+        self.assertEqual(values, [{None}, {None}, {5e307}])
+        rc, out, err = what_bytes(input="hostile", coordinates=coords, format="csv")
+        self.assertEqual(rc, 0, err)
+        rows = [r for r in csv.DictReader(io.StringIO(out.decode("utf-8"))) if r["level"]]
+        by_point = {}
+        for r in rows:
+            by_point.setdefault(r["point"], set()).add(r["hostile_p"])
+        self.assertEqual(by_point, {"1": {""}, "2": {""}, "3": {"5e+307"}})
+        # add_offset = Infinity: every value none, or the channel refused
+        patch_first_channel(os.path.join(self.sbrt_dir, "channels"), scale=1.0,
+                            offset=float("inf"))
+        try:
+            rc, out, err = what_bytes(input="hostile", coordinates=coords, format="json")
+        finally:
+            patch_first_channel(os.path.join(self.sbrt_dir, "channels"), scale=1e308,
+                                offset=0.0)
+        if rc == 0:
+            values = {v["values"]["hostile_p"] for p in strict_json(out) for v in p["voxels"]}
+            self.assertEqual(values, {None})
+        else:
+            self.assertIn("ERROR:", err)
+
+    def test_non_finite_coordinates_are_refused(self):
+        for coords in (["nan", "nan"], ["inf", 45], [5, 55, "-inf", 45]):
+            for fmt in ("json", "csv", "plain"):
+                rc, out, err = what(input="hostile", coordinates=coords, format=fmt)
+                self.assertNotEqual(rc, 0, (coords, out))
+                self.assertIn("coordinates=: point", err)
+                self.assertIn("not a position", err)
+        rc, out, err = what(input="hostile", points="hostile_nan", format="json")
+        self.assertNotEqual(rc, 0, out)
+        self.assertIn("points=hostile_nan: point 2 (cat 2)", err)
+
+    def test_layer_that_is_none_fails(self):
+        rc, out, err = what(input="hostile", points="hostile_nan", layer="abc",
+                            where="cat = 1")
+        self.assertNotEqual(rc, 0, out)
+        rc, out, err = what(input="hostile", points="hostile_nan", layer="abc")
+        self.assertNotEqual(rc, 0, out)
+        self.assertIn("layer=abc", err)
+        self.assertIn("no layer of that name", err)
+
+    def test_full_standard_output_fails(self):
+        if not os.path.exists("/dev/full"):
+            self.skipTest("no /dev/full")
+        for fmt in ("json", "csv", "plain"):
+            with open("/dev/full", "w") as full:
+                run = subprocess.run(
+                    what_args(input="hostile", coordinates=[5, 55], format=fmt),
+                    stdout=full, stderr=subprocess.PIPE, text=True, timeout=120)
+            self.assertNotEqual(run.returncode, 0, fmt)
+            self.assertIn("Unable to write the logs to standard output",
+                          " ".join(run.stderr.split()))
 
 
 class TestWhatHorizonModel(TestCase):
