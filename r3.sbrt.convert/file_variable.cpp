@@ -9,9 +9,12 @@
 #include <ogr_spatialref.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "builders/cf_attributes.hpp"
 #include "builders/flag_legend.hpp"
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 void GdalDatasetCloser::operator()(GDALDataset *dataset) const
 {
@@ -64,13 +67,15 @@ std::string type_name_of(const GDALExtendedDataType &type)
     return GDALGetDataTypeName(type.GetNumericDataType());
 }
 
+/// A text attribute as valid UTF-8 (labels, units and names enter here:
+/// a file's bytes are not trusted to be text); "" where absent.
 std::string string_attribute(const GDALIHasAttribute &holder, const char *key)
 {
     const auto a = holder.GetAttribute(key);
     if (!a || a->GetDataType().GetClass() != GEDTC_STRING)
         return {};
     const char *s = a->ReadAsString();
-    return s ? s : "";
+    return s ? sbrt::valid_utf8(s) : "";
 }
 
 std::vector<double> numeric_attribute(const GDALIHasAttribute &holder,
@@ -80,6 +85,49 @@ std::vector<double> numeric_attribute(const GDALIHasAttribute &holder,
     if (!a || a->GetDataType().GetClass() != GEDTC_NUMERIC)
         return {};
     return a->ReadAsDoubleArray();
+}
+
+/// An attribute as the file has it: numbers, text or something else.
+sbrt::FileAttribute file_attribute(const GDALIHasAttribute &holder, const char *key)
+{
+    sbrt::FileAttribute out;
+    QuietGdalErrors quiet;
+    const auto a = holder.GetAttribute(key);
+    if (!a)
+        return out;
+    out.present = true;
+    const GDALExtendedDataType &type = a->GetDataType();
+    if (type.GetClass() == GEDTC_NUMERIC &&
+        !GDALDataTypeIsComplex(type.GetNumericDataType())) {
+        out.numeric = true;
+        out.values = a->ReadAsDoubleArray();
+    }
+    else if (type.GetClass() == GEDTC_STRING) {
+        const char *s = a->ReadAsString();
+        out.text = s ? s : "";
+    }
+    return out;
+}
+
+/// scale_factor or add_offset: the attribute's one value, checked; else
+/// the driver's (`has`: whether there is one), which must be finite (and
+/// a scale not 0); `none` where there is neither.
+double packing_value(const GDALIHasAttribute &holder, const char *key, double driver,
+                     bool &has, double none, const std::string &where,
+                     const std::string &variable, const std::string &path)
+{
+    const sbrt::AttributeRule &rule = sbrt::attribute_rule(key);
+    const sbrt::FileAttribute attribute = file_attribute(holder, key);
+    if (attribute.present) {
+        has = true;
+        return sbrt::checked_numbers(attribute, rule, where, variable, path)[0];
+    }
+    if (!has)
+        return none;
+    sbrt::FileAttribute as_read;
+    as_read.present = as_read.numeric = true;
+    as_read.values = {driver};
+    return sbrt::checked_numbers(as_read, rule, where, variable, path)[0];
 }
 
 /// Every array below `group`, by full name, in the file's order.
@@ -251,13 +299,13 @@ FileVariable::FileVariable(const std::string &path, const std::string &name,
     if (type.GetClass() != GEDTC_NUMERIC ||
         GDALDataTypeIsComplex(type.GetNumericDataType()))
         sbrt::fail(where, " is not numeric (", type_name(), ")");
+    // packing: the file's own attributes, checked (GDAL takes the first of
+    // several values and skips text), else what the driver reads (Zarr)
     bool has_scale = false, has_offset = false;
-    scale_ = array_->GetScale(&has_scale);
-    offset_ = array_->GetOffset(&has_offset);
-    if (!has_scale)
-        scale_ = 1;
-    if (!has_offset)
-        offset_ = 0;
+    scale_ = packing_value(*array_, "scale_factor", array_->GetScale(&has_scale),
+                           has_scale, 1, where, base_name(), path);
+    offset_ = packing_value(*array_, "add_offset", array_->GetOffset(&has_offset),
+                            has_offset, 0, where, base_name(), path);
     if ((has_scale || has_offset) && !packed_allowed)
         sbrt::fail(where, " is packed (scale_factor/add_offset); unpack it "
                           "first, e.g. ncpdq -U");
@@ -332,20 +380,40 @@ FileVariable::FileVariable(const std::string &path, const std::string &name,
             axis == int(sbrt::AxisRole::vertical) && negate_vertical, what);
     }
 
+    read_missing_values(where);
+}
+
+void FileVariable::read_missing_values(const std::string &where)
+{
+    auto numbers = [&](const char *key) {
+        return sbrt::checked_numbers(file_attribute(*array_, key),
+                                     sbrt::attribute_rule(key), where, base_name(),
+                                     path_);
+    };
+    const std::vector<double> fill = numbers("_FillValue");
     bool has_fill = false;
-    const double fill = array_->GetNoDataValueAsDouble(&has_fill);
-    if (has_fill)
-        grid_.missing.exact.push_back(fill);
-    for (const char *key : {"_FillValue", "missing_value"})
-        for (double v : numeric_attribute(*array_, key))
-            grid_.missing.exact.push_back(v);
-    const std::vector<double> range = numeric_attribute(*array_, "valid_range");
+    const double driver_fill = array_->GetNoDataValueAsDouble(&has_fill);
+    if (!fill.empty())
+        grid_.missing.exact.push_back(fill[0]);
+    else if (has_fill) {
+        // a fill the driver knows without the attribute (HDF5's own)
+        if (std::isinf(driver_fill))
+            sbrt::fail(where, ": its fill value is ", driver_fill,
+                       "; give it a finite _FillValue attribute");
+        grid_.missing.exact.push_back(driver_fill);
+    }
+    for (double v : numbers("missing_value"))
+        grid_.missing.exact.push_back(v);
+    const std::vector<double> range = numbers("valid_range");
     if (range.size() == 2) {
+        if (range[0] > range[1])
+            sbrt::fail(where, ": attribute valid_range runs from ", range[0], " down to ",
+                       range[1], "; give the lowest valid value first");
         grid_.missing.valid_min = range[0];
         grid_.missing.valid_max = range[1];
     }
-    const std::vector<double> vmin = numeric_attribute(*array_, "valid_min");
-    const std::vector<double> vmax = numeric_attribute(*array_, "valid_max");
+    const std::vector<double> vmin = numbers("valid_min");
+    const std::vector<double> vmax = numbers("valid_max");
     if (vmin.size() == 1)
         grid_.missing.valid_min = vmin[0];
     if (vmax.size() == 1)
@@ -389,7 +457,8 @@ std::vector<std::pair<std::string, std::string>> FileVariable::global_attributes
     for (const auto &a : root->GetAttributes())
         if (a && a->GetDataType().GetClass() == GEDTC_STRING) {
             const char *value = a->ReadAsString();
-            out.emplace_back(a->GetName(), value ? value : "");
+            out.emplace_back(sbrt::valid_utf8(a->GetName()),
+                             value ? sbrt::valid_utf8(value) : "");
         }
     return out;
 }

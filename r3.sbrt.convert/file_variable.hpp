@@ -106,6 +106,9 @@ public:
     sbrt::BandStrides read_band(size_t first, size_t count, void *values) const;
 
 private:
+    /// _FillValue, missing_value and the valid range, each checked.
+    void read_missing_values(const std::string &where);
+
     std::string path_, name_;
     GdalDatasetPtr dataset_;
     std::shared_ptr<GDALMDArray> array_;
