@@ -16,6 +16,7 @@
 #include "format/format_v2.hpp"
 #include "grass.hpp"
 #include "model/property_channel.hpp"
+#include "util/safe_text.hpp"
 
 namespace {
 
@@ -36,13 +37,13 @@ public:
             G_fatal_error(_("Unable to open 3D raster map <%s>"), name.c_str());
         info_.name = name.substr(0, name.find('@'));
         const char *unit = Rast3d_get_unit(map_);
-        info_.unit = unit && std::string(unit) != "none" ? unit : "";
+        info_.unit = unit && std::string(unit) != "none" ? sbrt::valid_utf8(unit) : "";
         // the title (r3.support title=) is kept in the map's history
         struct History history;
         if (Rast3d_read_history(name.c_str(), mapset, &history) >= 0) {
             const char *title = Rast_get_history(&history, HIST_TITLE);
             if (title && std::string(title) != name.substr(0, name.find('@')))
-                info_.long_name = title;
+                info_.long_name = sbrt::valid_utf8(title);
             Rast_free_history(&history);
         }
         choose_fill();
@@ -62,6 +63,14 @@ public:
         Rast3d_get_value(map_, col, row, depth, &v, DCELL_TYPE);
         if (Rast3d_is_null_value_num(&v, DCELL_TYPE))
             return info_.fill;
+        if (std::isinf(v))
+            G_fatal_error(_("3D raster map <%s>, row %d, column %d, depth %d: holds "
+                            "%s; a channel's values must be finite (views colour them "
+                            "by their range): make them null first, e.g. r3.mapcalc "
+                            "\"%s_f = if(abs(%s) < 1e30, %s, null())\""),
+                          name_.c_str(), row + 1, col + 1, depth + 1,
+                          v > 0 ? "Infinity" : "-Infinity", info_.name.c_str(),
+                          name_.c_str(), name_.c_str());
         const float f = float(v);
         if (double(f) != v)
             G_fatal_error(_("3D raster map <%s>, row %d, column %d, depth %d: %.17g is "

@@ -21,6 +21,8 @@ ChannelBands::ChannelBands(std::vector<BandGrid> grids, std::vector<std::string>
 {
     SBRT_CHECK_EQ(grids_.size(), writer.channels().size(), "ChannelBands");
     SBRT_CHECK_EQ(names_.size(), grids_.size(), "ChannelBands");
+    for (const ChannelInfo &c : writer.channels())
+        no_values_.push_back(c.has_fill ? c.fill : NAN);
 }
 
 template <typename T>
@@ -38,6 +40,7 @@ void ChannelBands::gather(size_t channel, const T *values, const BandStrides &st
         n += spans[col].size();
     out.resize(n);
     float *to = out.data();
+    const float no_value = no_values_[channel];
     for (size_t col = 0; col < nx; ++col) {
         const ColumnSpan span = spans[col];
         if (span.size() == 0)
@@ -47,6 +50,22 @@ void ChannelBands::gather(size_t channel, const T *values, const BandStrides &st
                                            (z.ascending ? 0 : (nz - 1) * step.vertical));
         for (uint32_t d = span.lo; d < span.hi; ++d) {
             const T value = values[bottom + ptrdiff_t(d) * dz];
+            // _FillValue, missing_value and the valid range all mean no
+            // value: one marker for them (the fill, or NaN)
+            if (grid.missing.is_missing(double(value))) {
+                *to++ = no_value;
+                continue;
+            }
+            if constexpr (!std::is_integral_v<T>)
+                if (std::isinf(value))
+                    fail("property variable '", names_[channel], "' holds ",
+                         value > 0 ? "Infinity" : "-Infinity", " at row ", row + 1,
+                         ", column ", col + 1, ", depth ", d + 1,
+                         " (from the bottom): a channel's values must be finite "
+                         "(views colour them by their range); mark such values as "
+                         "no data with its valid_max/valid_min (or valid_range) "
+                         "attribute, e.g. ncatted -O -a valid_max,", names_[channel],
+                         ",o,d,1e30 <file>, or replace them by the _FillValue");
             const float kept = float(value);
             if constexpr (!(std::is_integral_v<T> && sizeof(T) <= 2))
                 if (double(kept) != double(value) && !std::isnan(double(value)))

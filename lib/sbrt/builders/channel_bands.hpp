@@ -28,7 +28,9 @@ public:
     /// (row by row, as BandImport::record_spans leaves them); per channel
     /// its band (first northing index `first`) and strides. Throws
     /// sbrt::Error naming the channel, row, column and depth of a value a
-    /// float32 does not hold exactly.
+    /// float32 does not hold exactly, and of an infinite one. Missing
+    /// values (the grid's _FillValue, missing_value, outside its valid
+    /// range) are stored as the channel's fill, or NaN where it has none.
     void add(const std::vector<ColumnSpan> &spans, const std::vector<const void *> &bands,
              const std::vector<BandStrides> &steps, size_t row0, size_t rows, size_t first);
 
@@ -41,6 +43,7 @@ private:
     std::vector<std::string> names_;
     ChannelsWriter &writer_;
     std::vector<std::vector<float>> row_values_; ///< per channel, one row
+    std::vector<float> no_values_; ///< per channel: what a missing value becomes
 };
 
 } // namespace sbrt

@@ -26,7 +26,8 @@ unsigned channel_type_bytes(ChannelType type);
 /// \brief One channel: its name and legend, and figures of its values.
 /// Values are raw numbers as the source stores them (float32 holds every
 /// value a channel may take exactly); what they mean is raw * scale +
-/// offset (CF's scale_factor and add_offset), the fill marks no value.
+/// offset (CF's scale_factor and add_offset), the fill and NaN mark no
+/// value.
 struct ChannelInfo {
     std::string name, long_name, unit;
     double scale = 1, offset = 0;
@@ -40,10 +41,9 @@ struct ChannelInfo {
     bool integer = true;     ///< every value (fill too) an integer
     uint64_t bytes = 0;      ///< on disk: compressed blocks and block table
 
-    bool is_fill(float v) const
-    {
-        return has_fill && (v == fill || (std::isnan(v) && std::isnan(fill)));
-    }
+    /// Whether `v` is no value: the fill, or NaN (never a value: a 3D
+    /// raster of it is null, so counts and views agree with -r).
+    bool is_fill(float v) const { return std::isnan(v) || (has_fill && v == fill); }
     double physical(float raw) const { return double(raw) * scale + offset; }
     /// The smallest type that holds every value and the fill exactly.
     ChannelType type() const;
