@@ -7,9 +7,11 @@
 #include "convert.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <future>
 
 #include "builders/band_import.hpp"
+#include "builders/cf_attributes.hpp"
 #include "builders/channel_bands.hpp"
 #include "builders/column_builder.hpp"
 #include "util/error.hpp"
@@ -92,16 +94,35 @@ open_properties(const char *file, const FileVariable &classes,
 sbrt::ChannelInfo channel_info(const FileVariable &v)
 {
     sbrt::ChannelInfo c;
-    c.name = v.base_name();
+    c.name = sbrt::valid_utf8(v.base_name());
     c.long_name = v.long_name();
     c.unit = v.units();
     c.scale = v.scale();
     c.offset = v.offset();
+    // the voxels the missing values mark are stored as the fill, or as NaN
+    // where the fill is not exact in float32 (it could be a value)
     if (!v.missing().exact.empty()) {
+        const double fill = v.missing().exact[0];
         c.has_fill = true;
-        c.fill = float(v.missing().exact[0]);
+        c.fill = double(float(fill)) == fill ? float(fill) : NAN;
     }
     return c;
+}
+
+/// A probability or percentage imported as classes gives a class per
+/// value (a legend of dozens of "classes"): say how to keep it instead.
+void warn_if_probability(const FileVariable &v, const sbrt::Classifier &classifier,
+                         size_t classes)
+{
+    if (classifier.has_rules())
+        return; // classes made on purpose
+    const std::string why =
+        sbrt::probability_hint(v.base_name(), v.long_name(), v.units(), classes);
+    if (!why.empty())
+        G_warning(_("Variable %s looks like a probability (%s): import it as a "
+                    "property channel with properties=%s beside a class variable"),
+                  sbrt::printable(v.name()).c_str(), sbrt::printable(why).c_str(),
+                  sbrt::printable(v.name()).c_str());
 }
 
 } // namespace
@@ -302,6 +323,7 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     if (model.stats().solid_intervals == 0)
         G_fatal_error(_("Variable '%s' of <%s> holds only missing values"), name,
                       file);
+    warn_if_probability(variable, classifier, model.materials().size() - 1);
     if (survey != "none")
         apply_preset(survey, model);
     model.set_vertical_datum(vertical_datum(variable));

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 namespace sbrt {
 
@@ -74,6 +75,7 @@ Classifier Classifier::parse(std::istream &in, const std::string &source)
         rule.id = int32_t(id);
         for (size_t i = 3; i < fields.size(); ++i)
             rule.label += (i > 3 ? ":" : "") + fields[i];
+        rule.label = valid_utf8(rule.label); // a label is text, whatever the file
         rules.push_back(rule);
     }
     if (rules.empty())
