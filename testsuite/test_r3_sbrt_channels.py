@@ -71,7 +71,7 @@ def write_netcdf(path, order=("x", "y", "z"), properties=PROPERTIES, extra_vars=
 
         def walk(level, at):
             if level == 3:
-                out.append(repr(f(at["x"], at["y"], at["z"])))
+                out.append(cdl_number(f(at["x"], at["y"], at["z"])))
                 return
             for t in range(sizes[order[level]]):
                 at[order[level]] = t
@@ -104,7 +104,23 @@ data:
 """
     with open(path + ".cdl", "w") as f:
         f.write(cdl)
-    subprocess.run(["ncgen", "-k", "nc4", "-o", path, path + ".cdl"], check=True)
+    subprocess.run(["ncgen", "-k", "nc4", "-o", path, path + ".cdl"], check=True,
+                   timeout=60)
+
+
+def cdl_number(v):
+    """A value as CDL writes it (ncgen reads NaN and Infinity)."""
+    if v != v:
+        return "NaN"
+    if v in (float("inf"), float("-inf")):
+        return "Infinity" if v > 0 else "-Infinity"
+    return repr(v)
+
+
+def failure_of(*args):
+    """A module run's return code and its messages on one line."""
+    run = subprocess.run(args, capture_output=True, text=True, timeout=120)
+    return run.returncode, " ".join(run.stderr.split())
 
 
 def span(i, j):
@@ -442,6 +458,112 @@ class TestChannels(TestCase, Raster3dCompare):
         self.assertNotEqual(code, 0)
         self.assertIn("not held exactly", err)
         self.assertNotIn("bad", gs.read_command("r3.sbrt.convert", flags="l"))
+
+    def test_bad_channel_attributes_are_refused_by_name(self):
+        """Packing and missing-value attributes that would give wrong
+        numbers (NaN or 0 scale, text, several values, infinities) fail
+        the import naming the variable and the attribute; nothing is
+        written."""
+        cases = [
+            ("kh:scale_factor = NaN ;", "attribute scale_factor is NaN"),
+            ("kh:scale_factor = 0. ;", "attribute scale_factor is 0"),
+            ('kh:scale_factor = "0.01" ;', "attribute scale_factor is text ('0.01')"),
+            ("kh:scale_factor = 0.01, 0.02 ;",
+             "attribute scale_factor is 2 values (0.01, 0.02)"),
+            ("kh:scale_factor = 0.01 ; kh:add_offset = Infinity ;",
+             "attribute add_offset is Infinity"),
+            ("kh:_FillValue = Infinityf ;", "attribute _FillValue is Infinity"),
+            ('kh:missing_value = "none" ;', "attribute missing_value is text ('none')"),
+            ("kh:missing_value = -Infinity ;", "attribute missing_value is -Infinity"),
+            ("kh:valid_range = 10s, -10s ;",
+             "attribute valid_range runs from 10 down to -10"),
+        ]
+        for n, (attributes, expected) in enumerate(cases):
+            path = os.path.join(self.tmp, f"bad_attribute_{n}.nc")
+            kind, f = ("float", porosity) if "Infinityf" in attributes else ("short", packed)
+            write_netcdf(path, properties={"kh": (kind, f, attributes)})
+            code, err = failure_of("r3.sbrt.convert", f"file={path}", "variable=lithok",
+                                   "properties=kh", f"output=bad_attribute_{n}",
+                                   "preset=none")
+            self.assertNotEqual(code, 0, attributes)
+            self.assertIn("variable 'kh'", err, attributes)
+            self.assertIn(expected, err, attributes)
+        listing = gs.read_command("r3.sbrt.convert", flags="l")
+        self.assertNotIn("bad_attribute", listing)
+
+    def test_infinite_channel_values_are_refused_by_name(self):
+        """A float channel holding Infinity inside a column's span fails
+        the import (a view would find no colour range for it)."""
+        i, j = 3, 4
+        lo = span(i, j)[0]
+        path = os.path.join(self.tmp, "infinite.nc")
+        write_netcdf(path, properties={"porosity": (
+            "float", lambda a, b, c: float("inf") if (a, b, c) == (i, j, lo) else
+            porosity(a, b, c), "")})
+        code, err = failure_of("r3.sbrt.convert", f"file={path}", "variable=lithok",
+                               "properties=porosity", "output=infinite", "preset=none")
+        self.assertNotEqual(code, 0)
+        self.assertIn("variable 'porosity' holds Infinity", err)
+        self.assertIn("valid_max", err)
+        self.assertNotIn("infinite", gs.read_command("r3.sbrt.convert", flags="l"))
+
+    def test_nan_voxels_are_no_value_in_counts_and_expansion(self):
+        """-g's valid count of a float channel with NaN voxels is what -r
+        property= expands as non-null (NaN is null in a 3D raster)."""
+        def holey(i, j, k):
+            return float("nan") if (i + 2 * j + k) % 11 == 0 else porosity(i, j, k)
+
+        path = os.path.join(self.tmp, "holey.nc")
+        write_netcdf(path, properties={"porosity": ("float", holey, "")})
+        self.assertModule("r3.sbrt.convert", file=path, variable="lithok",
+                          properties="porosity", output="holey", preset="none")
+        output = gs.read_command("r3.sbrt.convert", flags="g", sbrt="holey")
+        channel = shell_records(output, "channel")[0]
+        self.assertModule("r3.sbrt.convert", flags="r", sbrt="holey",
+                          property="porosity", output="holey_back")
+        stats = gs.parse_command("r3.univar", map="holey_back", flags="g")
+        self.assertEqual(int(channel["valid"]), int(stats["n"]))
+        self.assertLess(int(channel["valid"]), int(channel["voxels"]))
+        valid = [porosity(i, j, k) for i in range(NX) for j in range(NY)
+                 for k in range(*span(i, j)) if holey(i, j, k) == holey(i, j, k)]
+        self.assertEqual(int(channel["valid"]), len(valid))
+        self.assertEqual(float(channel["min"]), min(valid))
+        self.assertEqual(float(channel["max"]), max(valid))
+
+    def test_missing_value_and_valid_range_are_no_value(self):
+        """Voxels a channel's missing_value or valid_range marks are no
+        value, as its _FillValue's are."""
+        def marked(i, j, k):
+            return -999 if (i + j + k) % 7 == 0 else kans(i, j, k)
+
+        path = os.path.join(self.tmp, "marked.nc")
+        write_netcdf(path, properties={"kans_7": (
+            "short", marked, f"kans_7:_FillValue = {FILL}s ; kans_7:missing_value = "
+            "-999s ; kans_7:valid_max = 90s ;")})
+        self.assertModule("r3.sbrt.convert", file=path, variable="lithok",
+                          properties="kans_7", output="marked", preset="none")
+        self.expanded_equals(
+            "marked", "kans_7",
+            lambda i, j, k: FILL if marked(i, j, k) in (-999, FILL) or
+            marked(i, j, k) > 90 else marked(i, j, k), null_value=FILL)
+
+    def test_probability_imported_as_classes_warns(self):
+        """variable=kans_5 (units %) makes a class of every percentage: the
+        warning says to keep it as a channel with properties=."""
+        run = subprocess.run(
+            ["r3.sbrt.convert", f"file={self.file}", "variable=kans_5",
+             "output=kans_classes", "preset=none"],
+            capture_output=True, text=True, timeout=120)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        err = " ".join(run.stderr.split())
+        self.assertIn("Variable kans_5 looks like a probability", err)
+        self.assertIn("units %", err)
+        self.assertIn("properties=kans_5", err)
+        run = subprocess.run(
+            ["r3.sbrt.convert", f"file={self.file}", "variable=lithok",
+             "output=lithok_classes", "preset=none"],
+            capture_output=True, text=True, timeout=120)
+        self.assertNotIn("probability", run.stderr)
 
 
 if __name__ == "__main__":
