@@ -414,8 +414,8 @@ class TestWhatHostileInput(TestCase):
         cls.del_temp_region()
 
     def test_hostile_label_gives_valid_json_csv_and_plain(self):
-        # column 1 (+inf), column 2 (-inf), column 3 (0.5); classes 3, 2, 1
-        coords = [5, 55, 15, 55, 25, 55]
+        # column 3: a finite channel value; classes 3, 2, 1 from the top
+        coords = [25, 55]
         rc, out, err = what_bytes(input="hostile", coordinates=coords, format="json")
         self.assertEqual(rc, 0, err)
         points = strict_json(out)
