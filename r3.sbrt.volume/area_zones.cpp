@@ -1,16 +1,19 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.volume
  * PURPOSE:   The areas of a vector map, by category, as zones of the
- *            model's cells (cells whose centre lies inside an area)
+ *            model's cells (cells whose centre lies inside an area count
+ *            for each of its categories)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
 #include <map>
+#include <utility>
 
 extern "C" {
 #include <grass/vector.h>
 }
 
+#include "area_cover.hpp"
 #include "util/error.hpp"
 #include "volume.hpp"
 
@@ -67,6 +70,39 @@ private:
     struct line_pnts *points_ = nullptr;
 };
 
+/// \brief An area of the map and its categories in the layer.
+struct CategorisedArea {
+    int area;
+    std::vector<int> categories; ///< sorted, distinct
+};
+
+/// The live areas with a centroid, each with its centroid's categories in
+/// `field` (several where v.in.ogr cut overlapping polygons into one
+/// area); `without` counts those with none.
+std::vector<CategorisedArea> categorised_areas(struct Map_info *map, int field, int &without)
+{
+    std::vector<CategorisedArea> found;
+    struct line_cats *cats = Vect_new_cats_struct();
+    without = 0;
+    for (int area = 1, count = Vect_get_num_areas(map); area <= count; ++area) {
+        if (!Vect_area_alive(map, area) || Vect_get_area_cats(map, area, cats) != 0)
+            continue;
+        CategorisedArea a{area, {}};
+        for (int i = 0; i < cats->n_cats; ++i)
+            if (cats->field[i] == field)
+                a.categories.push_back(cats->cat[i]);
+        std::sort(a.categories.begin(), a.categories.end());
+        a.categories.erase(std::unique(a.categories.begin(), a.categories.end()),
+                           a.categories.end());
+        if (a.categories.empty())
+            ++without;
+        else
+            found.push_back(std::move(a));
+    }
+    Vect_destroy_cats_struct(cats);
+    return found;
+}
+
 } // namespace
 
 Zones area_zones(const sbrt::Model &model, const std::string &name, const std::string &layer,
@@ -75,39 +111,40 @@ Zones area_zones(const sbrt::Model &model, const std::string &name, const std::s
     AreaMap areas(name);
     struct Map_info *map = areas.map();
     const int field = Vect_get_field_number(map, layer.c_str());
-    const int count = Vect_get_num_areas(map);
-    // the categories present, in order: one zone each
-    std::map<int, int> zone_of;
     int without_category = 0;
-    for (int area = 1; area <= count; ++area) {
-        if (!Vect_area_alive(map, area) || !Vect_get_area_centroid(map, area))
-            continue;
-        const int cat = Vect_get_area_cat(map, area, field);
-        if (cat < 0)
-            ++without_category;
-        else
-            zone_of.emplace(cat, 0);
-    }
-    if (zone_of.empty())
+    const std::vector<CategorisedArea> found = categorised_areas(map, field, without_category);
+    if (found.empty())
         sbrt::fail("areas=", name, ": vector map <", Vect_get_full_name(map),
-                   "> has no areas with a category in layer ", layer, " (", count,
-                   " areas, ", Vect_get_num_primitives(map, GV_POINT), " points, ",
-                   Vect_get_num_primitives(map, GV_LINE), " lines); areas= needs "
-                   "boundaries closed around centroids");
+                   "> has no areas with a category in layer ", layer, " (",
+                   Vect_get_num_areas(map), " areas, ", Vect_get_num_primitives(map, GV_POINT),
+                   " points, ", Vect_get_num_primitives(map, GV_LINE),
+                   " lines); areas= needs boundaries closed around centroids");
     if (without_category)
         G_warning(_("%d areas of <%s> have no category in layer %s and are left out"),
                   without_category, name.c_str(), layer.c_str());
-    Zones zones{sbrt::CellZones::none(model.frame(), int(zone_of.size())), {}};
-    for (auto &[cat, zone] : zone_of) {
-        zone = int(zones.categories.size());
+    // the categories present, in order: one row each
+    std::map<int, int> index_of;
+    for (const CategorisedArea &a : found)
+        for (int cat : a.categories)
+            index_of.emplace(cat, 0);
+    Zones zones{region, {}, {}};
+    for (auto &[cat, index] : index_of) {
+        index = int(zones.categories.size());
         zones.categories.push_back(cat);
     }
-    for (int area = 1; area <= count; ++area) {
-        if (!Vect_area_alive(map, area) || !Vect_get_area_centroid(map, area))
-            continue;
-        const int cat = Vect_get_area_cat(map, area, field);
-        if (cat >= 0)
-            zones.cells.add_polygon(areas.polygon(area), zone_of[cat], &region);
+    // a cell counts for each category whose area holds its centre: areas
+    // of a category, or of several, may overlap (an area's isles are its
+    // holes; an island in a hole is an area of its own)
+    AreaCover cover(model.frame(), region);
+    std::vector<int> indices;
+    for (const CategorisedArea &a : found) {
+        indices.clear();
+        for (int cat : a.categories)
+            indices.push_back(index_of[cat]);
+        cover.add(areas.polygon(a.area), indices);
     }
+    zones.cells = cover.to_cell_zones();
+    for (int z = 0; z < cover.zones(); ++z)
+        zones.counts_for.push_back(cover.categories(z));
     return zones;
 }

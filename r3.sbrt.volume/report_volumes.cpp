@@ -4,6 +4,7 @@
  *            each area), measures the volumes and writes the report
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -34,7 +35,16 @@ public:
     FILE *get() const { return file_ ? file_ : stdout; }
     void close(const std::string &name)
     {
-        if (file_ && std::fclose(file_) != 0) {
+        // a full disk or a closed pipe is an error, not success
+        if (!file_) {
+            errno = 0;
+            if (std::fflush(stdout) != 0 || std::ferror(stdout))
+                sbrt::fail("cannot write to standard output: ",
+                           errno ? std::strerror(errno) : "a write failed",
+                           "; check the disk or the program reading it");
+            return;
+        }
+        if (std::fclose(file_) != 0) {
             file_ = nullptr;
             sbrt::fail("output=", name, ": writing the file failed (", std::strerror(errno),
                        ")");
@@ -45,6 +55,55 @@ public:
 private:
     FILE *file_ = nullptr;
 };
+
+/// The sums of the zones of cells folded into the report's rows (a zone
+/// of cells may count for several rows).
+sbrt::VolumeTable by_row(const Zones &zones, const sbrt::VolumeTable &table)
+{
+    if (zones.counts_for.empty())
+        return table;
+    sbrt::VolumeTable rows(table.sets(), int(zones.categories.size()));
+    for (int z = 0; z < table.zones(); ++z)
+        for (int row : zones.counts_for[size_t(z)])
+            for (size_t s = 0; s < table.sets(); ++s) {
+                const sbrt::Volume &v = table.at(z, s);
+                sbrt::Volume &sum = rows.at(row, s);
+                sum.volume += v.volume;
+                sum.thickness += v.thickness;
+                sum.cells += v.cells;
+            }
+    return rows;
+}
+
+std::vector<sbrt::ExpectedVolume> by_row(const Zones &zones,
+                                         const std::vector<sbrt::ExpectedVolume> &expected)
+{
+    if (zones.counts_for.empty())
+        return expected;
+    std::vector<sbrt::ExpectedVolume> rows(zones.categories.size());
+    for (size_t z = 0; z < expected.size(); ++z)
+        for (int row : zones.counts_for[z]) {
+            rows[size_t(row)].volume += expected[z].volume;
+            rows[size_t(row)].cells += expected[z].cells;
+        }
+    return rows;
+}
+
+/// A region that misses the model (a new location's default region) gives
+/// zeros: said, with how to set the region to the model.
+void warn_when_no_cell_counts(const std::string &input, const sbrt::Frame &frame,
+                              const sbrt::CellZones &in_region)
+{
+    const std::vector<int32_t> &zone = in_region.cell_zones();
+    if (std::any_of(zone.begin(), zone.end(),
+                    [](int32_t z) { return z != sbrt::CellZones::NO_ZONE; }))
+        return;
+    G_warning(_("The region holds no cell centre of SBRT <%s> (north %.15g, south %.15g, "
+                "east %.15g, west %.15g): every volume is 0; set the region to the "
+                "model with r3.sbrt.convert -s sbrt=%s, or with g.region"),
+              input.c_str(), frame.north, frame.south, frame.east, frame.west,
+              input.c_str());
+}
 
 } // namespace
 
@@ -70,19 +129,21 @@ void report_volumes(const VolumeRequest &request)
     const sbrt::CellZones in_region = sbrt::CellZones::in_window(
         model.frame(),
         {region.north, region.south, region.east, region.west, region.rows, region.cols});
-    Zones zones{in_region, {}};
+    warn_when_no_cell_counts(request.input, model.frame(), in_region);
+    Zones zones{in_region, {}, {}};
     if (!request.areas.empty())
         zones = area_zones(model, request.areas, request.layer, in_region);
     report.categories = zones.categories;
 
-    const sbrt::VolumeTable table =
-        sbrt::measure_volumes(model, report.sets, zones.cells, request.threads);
+    const sbrt::VolumeTable table = by_row(
+        zones, sbrt::measure_volumes(model, report.sets, zones.cells, request.threads));
     if (!request.probability.empty()) {
         const sbrt_grass::ProbabilityChannels p = sbrt_grass::read_probability_channels(
             request.input.c_str(), model, request.probability, "probability=");
         report.probability = request.probability;
-        report.expected = sbrt::expected_volumes(model, *p.channels, p.summed,
-                                                 zones.cells.cell_zones(), zones.cells.zones());
+        report.expected =
+            by_row(zones, sbrt::expected_volumes(model, *p.channels, p.summed,
+                                                 zones.cells.cell_zones(), zones.cells.zones()));
     }
     write_report(out.get(), request.format, report, table);
     out.close(request.output);

@@ -30,12 +30,16 @@ struct VolumeRequest {
     unsigned threads = 0;
 };
 
-/// \brief The zones of the cells counted: the region's, or one per
-/// category of the area map (cells in the region whose centre lies in an
-/// area of that category).
+/// \brief The zones of the cells counted, and the rows of the report:
+/// the region's (one zone, one row), or a row per category of the area
+/// map, which counts the cells in the region whose centre lies in an area
+/// of that category (a cell may count for several).
 struct Zones {
     sbrt::CellZones cells;
-    std::vector<int> categories; ///< per zone; empty for the region
+    std::vector<int> categories; ///< per row; empty for the region
+    /// per zone of `cells`, the rows (indices into categories) its cells
+    /// count for; empty: zone z is row z
+    std::vector<std::vector<int>> counts_for;
 };
 
 /// The areas of vector map `name` (layer `layer`) as zones of the model's
