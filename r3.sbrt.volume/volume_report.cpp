@@ -5,41 +5,57 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
+#include <cmath>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "util/safe_text.hpp"
 #include "volume.hpp"
 
 namespace {
 
-std::string json_string(const std::string &s)
-{
-    std::string out = "\"";
-    for (const char ch : s) {
-        const unsigned char c = static_cast<unsigned char>(ch);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += ch;
-        }
-        else if (c < 0x20) {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-            out += escaped;
-        }
-        else {
-            out += ch;
-        }
-    }
-    return out + "\"";
-}
+using Json = nlohmann::ordered_json;
 
-std::string csv_field(const std::string &s)
+/// A CSV field (RFC 4180): valid UTF-8 without control characters (a
+/// label's escape sequence must not reach a terminal), quoted where it
+/// holds a comma or a quote, each quote doubled.
+std::string csv_field(const std::string &text)
 {
-    if (s.find_first_of(",\"\n") == std::string::npos)
+    const std::string s = sbrt::printable(text);
+    if (s.find_first_of(",\"") == std::string::npos)
         return s;
     std::string out = "\"";
     for (const char c : s)
         out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
+}
+
+/// A number for CSV: 17 significant digits; nan, inf and -inf as such.
+std::string csv_number(double value)
+{
+    if (std::isnan(value))
+        return "nan";
+    if (std::isinf(value))
+        return value > 0 ? "inf" : "-inf";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+/// Characters (not bytes) of valid UTF-8 `text`, for aligning columns.
+size_t width_of(const std::string &text)
+{
+    return size_t(std::count_if(text.begin(), text.end(), [](char c) {
+        return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    }));
+}
+
+/// `text` padded with spaces to `width` characters.
+std::string padded(const std::string &text, size_t width)
+{
+    const size_t w = width_of(text);
+    return w >= width ? text : text + std::string(width - w, ' ');
 }
 
 /// Class ids and labels of a set, in the order of their ids.
@@ -65,65 +81,86 @@ SetNames names_of(const sbrt::Model &model, const sbrt::ClassSet &set)
 void write_plain(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
 {
     const bool areas = !r.categories.empty();
-    const std::string volume = "volume (cubic " + r.units + ")";
-    if (areas)
-        std::fprintf(out, "%-8s ", "area");
-    std::fprintf(out, "%-40s %24s %10s\n", "classes", volume.c_str(), "cells");
-    for (int z = 0; z < table.zones(); ++z)
+    // the rows' cells as text, for the widths of the columns
+    struct Row {
+        std::string area, classes;
+        double volume;
+        unsigned long long cells;
+    };
+    std::vector<Row> rows;
+    for (int z = 0; z < table.zones(); ++z) {
+        const std::string area = areas ? std::to_string(r.categories[size_t(z)]) : "";
         for (size_t s = 0; s < table.sets(); ++s) {
             const sbrt::Volume &v = table.at(z, s);
-            if (areas)
-                std::fprintf(out, "%-8d ", r.categories[size_t(z)]);
-            std::fprintf(out, "%-40s %24.3f %10llu\n", r.sets[s].describe(*r.model).c_str(),
-                         v.volume, (unsigned long long)v.cells);
-            if (s + 1 == table.sets() && !r.probability.empty()) {
-                const sbrt::ExpectedVolume &e = r.expected[size_t(z)];
-                if (areas)
-                    std::fprintf(out, "%-8d ", r.categories[size_t(z)]);
-                std::fprintf(out, "%-40s %24.3f %10llu\n",
-                             ("expected: " + r.probability).c_str(), e.volume,
-                             (unsigned long long)e.cells);
-            }
+            rows.push_back({area, sbrt::printable(r.sets[s].describe(*r.model)), v.volume,
+                            (unsigned long long)v.cells});
         }
+        if (!r.probability.empty()) {
+            const sbrt::ExpectedVolume &e = r.expected[size_t(z)];
+            rows.push_back({area, sbrt::printable("expected: " + r.probability), e.volume,
+                            (unsigned long long)e.cells});
+        }
+    }
+    size_t area_width = 8, classes_width = 40;
+    for (const Row &row : rows) {
+        area_width = std::max(area_width, width_of(row.area));
+        classes_width = std::max(classes_width, width_of(row.classes));
+    }
+    const std::string volume = "volume (cubic " + sbrt::printable(r.units) + ")";
+    if (areas)
+        std::fprintf(out, "%s ", padded("area", area_width).c_str());
+    std::fprintf(out, "%s %24s %10s\n", padded("classes", classes_width).c_str(),
+                 volume.c_str(), "cells");
+    for (const Row &row : rows) {
+        if (areas)
+            std::fprintf(out, "%s ", padded(row.area, area_width).c_str());
+        std::fprintf(out, "%s %24.3f %10llu\n", padded(row.classes, classes_width).c_str(),
+                     row.volume, row.cells);
+    }
+}
+
+/// A row of "volumes" or "expected", begun: its area, where there are areas.
+Json json_row(const VolumeReport &r, int zone)
+{
+    Json row = Json::object();
+    if (!r.categories.empty())
+        row["area"] = r.categories[size_t(zone)];
+    return row;
 }
 
 void write_json(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
 {
-    std::fprintf(out, "{\n  \"input\": %s,\n  \"units\": %s,\n  \"volumes\": [",
-                 json_string(r.input).c_str(), json_string(r.units).c_str());
-    const char *separator = "\n";
+    Json report = Json::object();
+    report["input"] = r.input;
+    report["units"] = r.units;
+    Json volumes = Json::array();
     for (int z = 0; z < table.zones(); ++z)
         for (size_t s = 0; s < table.sets(); ++s) {
             const sbrt::Volume &v = table.at(z, s);
             const SetNames names = names_of(*r.model, r.sets[s]);
-            std::string ids, labels;
-            for (size_t i = 0; i < names.ids.size(); ++i) {
-                ids += (i ? ", " : "") + std::to_string(names.ids[i]);
-                labels += (i ? ", " : "") + json_string(names.labels[i]);
-            }
-            std::fprintf(out, "%s    {", separator);
-            if (!r.categories.empty())
-                std::fprintf(out, "\"area\": %d, ", r.categories[size_t(z)]);
-            std::fprintf(out,
-                         "\"classes\": [%s], \"labels\": [%s], \"volume\": %.17g, "
-                         "\"cells\": %llu}",
-                         ids.c_str(), labels.c_str(), v.volume, (unsigned long long)v.cells);
-            separator = ",\n";
+            Json row = json_row(r, z);
+            row["classes"] = names.ids;
+            row["labels"] = names.labels;
+            row["volume"] = v.volume;
+            row["cells"] = v.cells;
+            volumes.push_back(std::move(row));
         }
-    std::fprintf(out, "\n  ]");
+    report["volumes"] = std::move(volumes);
     if (!r.probability.empty()) {
-        std::fprintf(out, ",\n  \"probability\": %s,\n  \"expected\": [",
-                     json_string(r.probability).c_str());
+        report["probability"] = r.probability;
+        Json expected = Json::array();
         for (size_t z = 0; z < r.expected.size(); ++z) {
-            std::fprintf(out, "%s\n    {", z ? "," : "");
-            if (!r.categories.empty())
-                std::fprintf(out, "\"area\": %d, ", r.categories[z]);
-            std::fprintf(out, "\"volume\": %.17g, \"cells\": %llu}", r.expected[z].volume,
-                         (unsigned long long)r.expected[z].cells);
+            Json row = json_row(r, int(z));
+            row["volume"] = r.expected[z].volume;
+            row["cells"] = r.expected[z].cells;
+            expected.push_back(std::move(row));
         }
-        std::fprintf(out, "\n  ]");
+        report["expected"] = std::move(expected);
     }
-    std::fprintf(out, "\n}\n");
+    // labels come from the model's file: bytes that are not UTF-8 become
+    // U+FFFD, control characters are escaped, nan and inf become null
+    const std::string text = report.dump(2, ' ', false, Json::error_handler_t::replace);
+    std::fprintf(out, "%s\n", text.c_str());
 }
 
 void write_csv(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
@@ -143,13 +180,15 @@ void write_csv(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
             }
             if (areas)
                 std::fprintf(out, "%d,", r.categories[size_t(z)]);
-            std::fprintf(out, "%s,%s,%.17g,%llu%s\n", ids.c_str(), csv_field(labels).c_str(),
-                         v.volume, (unsigned long long)v.cells, expected ? "," : "");
+            std::fprintf(out, "%s,%s,%s,%llu%s\n", ids.c_str(), csv_field(labels).c_str(),
+                         csv_number(v.volume).c_str(), (unsigned long long)v.cells,
+                         expected ? "," : "");
             if (s + 1 == table.sets() && expected) {
                 // the zone's expected volume: no classes, the probability named
                 if (areas)
                     std::fprintf(out, "%d,", r.categories[size_t(z)]);
-                std::fprintf(out, ",,%.17g,%llu,%s\n", r.expected[size_t(z)].volume,
+                std::fprintf(out, ",,%s,%llu,%s\n",
+                             csv_number(r.expected[size_t(z)].volume).c_str(),
                              (unsigned long long)r.expected[size_t(z)].cells,
                              csv_field(r.probability).c_str());
             }
