@@ -6,6 +6,7 @@
 #include "legend.hpp"
 
 #include "model/material_table.hpp"
+#include "raster_metadata.hpp"
 
 namespace sbrt_grass {
 
@@ -54,11 +55,13 @@ void make_colors(const std::vector<sbrt::Material> &materials,
 void make_cats(const std::vector<sbrt::Material> &materials,
                struct Categories *cats, const char *title)
 {
-    Rast_init_cats(title, cats);
+    // each label and the title one line that GRASS reads back whole
+    Rast_init_cats(metadata_line(title, MAX_TITLE_BYTES).c_str(), cats);
     for (size_t i = 1; i < materials.size(); ++i)
         if (!materials[i].label.empty()) {
             CELL id = materials[i].id;
-            Rast_set_c_cat(&id, &id, materials[i].label.c_str(), cats);
+            const std::string label = metadata_line(materials[i].label, MAX_LABEL_BYTES);
+            Rast_set_c_cat(&id, &id, label.c_str(), cats);
         }
 }
 

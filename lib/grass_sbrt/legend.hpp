@@ -20,12 +20,14 @@ void read_raster3d_legend(const char *name, const char *mapset,
 /// colour, else the default palette's, as a render draws it.
 void make_colors(const std::vector<sbrt::Material> &materials,
                  struct Colors *colors);
-/// Category labels of the materials.
+/// Category labels of the materials, titled `title`, each cut to what
+/// GRASS reads back (raster_metadata.hpp).
 void make_cats(const std::vector<sbrt::Material> &materials,
                struct Categories *cats, const char *title);
 
 /// Gives raster map `name` of the current mapset (class ids) the
-/// materials' colours (make_colors) and labels (make_cats, `title`).
+/// materials' colours (make_colors) and labels (make_cats), and the title
+/// `title` with them.
 void write_class_legend(const char *name, const std::vector<sbrt::Material> &materials,
                         const char *title);
 
