@@ -8,9 +8,11 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 namespace {
 
@@ -125,14 +128,23 @@ void print_shell(const sbrt::ProfileLine &line, const std::optional<ProfileGrid>
         columns.push_back(layout.plot_left + std::round(axes.x_of(t)));
     std::printf("elevation_tick_rows=%s\n", joined(rows).c_str());
     std::printf("distance_tick_columns=%s\n", joined(columns).c_str());
-    std::printf("distance_unit=%s\n", axes.distance_unit.c_str());
-    std::printf("elevation_title=%s\n", elevation_title(units).c_str());
+    // text (the datum comes from the model's file) as one shell word each
+    std::printf("distance_unit=%s\n", sbrt::shell_word(axes.distance_unit).c_str());
+    std::printf("elevation_title=%s\n", sbrt::shell_word(elevation_title(units)).c_str());
     std::printf("distance_title=%s\n",
-                distance_title(axes, line_name(line.vertices().size())).c_str());
+                sbrt::shell_word(distance_title(axes, line_name(line.vertices().size())))
+                    .c_str());
     std::string cut;
     for (int32_t id : layout.classes_cut)
         cut += (cut.empty() ? "" : ",") + std::to_string(id);
     std::printf("classes_cut=%s\n", cut.c_str());
+    // a full disk or a closed pipe: an error, not a silent success
+    errno = 0;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        const int cause = errno;
+        G_fatal_error(_("cannot write to standard output: %s"),
+                      cause ? std::strerror(cause) : _("a write failed"));
+    }
 }
 
 void run(const ProfileRequest &request)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "legend.hpp"
+#include "raster_metadata.hpp"
 
 int profile_columns(double length, double step)
 {
@@ -57,6 +58,16 @@ void write_profile_map(const std::string &name, const sbrt::ClassProfile &profil
                        const sbrt::Model &model, const std::string &input,
                        const std::string &line_text)
 {
+    // the metadata made first, cut to what GRASS keeps (a line of many
+    // vertices makes a long title), so that nothing fails once the map's
+    // rows are written
+    const std::string title =
+        sbrt_grass::metadata_line("Profile of " + input + " along " + line_text,
+                                  sbrt_grass::MAX_TITLE_BYTES);
+    sbrt_grass::MapHistory history;
+    history.data_source_1 = "SBRT " + input;
+    history.keywords = "x: distance along the line, y: elevation";
+
     ProfileGrid grid{profile.rows, profile.cols, profile.extent};
     struct Cell_head window = profile_window(grid, profile.length);
     Rast_set_output_window(&window);
@@ -73,13 +84,7 @@ void write_profile_map(const std::string &name, const sbrt::ClassProfile &profil
         Rast_put_c_row(fd, row.data());
     }
     Rast_close(fd);
-    sbrt_grass::write_class_legend(name.c_str(), model.materials(), input.c_str());
-    const std::string title = "Profile of " + input + " along " + line_text;
-    Rast_put_cell_title(name.c_str(), title.c_str());
-    struct History history;
-    Rast_short_history(name.c_str(), "raster", &history);
-    Rast_command_history(&history);
-    Rast_format_history(&history, HIST_DATSRC_1, "SBRT %s", input.c_str());
-    Rast_set_history(&history, HIST_KEYWRD, "x: distance along the line, y: elevation");
-    Rast_write_history(name.c_str(), &history);
+    // the title goes with the labels, in one write of the cats file
+    sbrt_grass::write_class_legend(name.c_str(), model.materials(), title.c_str());
+    sbrt_grass::write_raster_history(name.c_str(), history);
 }

@@ -37,7 +37,8 @@ struct Cell_head profile_window(const ProfileGrid &grid, double length);
 
 /// Writes `profile` as raster map `name` (CELL: class ids, null where
 /// nothing is) in its window, with the model's colours and labels, a
-/// title and history naming the SBRT and the line.
+/// title and history naming the SBRT and the line (cut to what GRASS
+/// keeps).
 void write_profile_map(const std::string &name, const sbrt::ClassProfile &profile,
                        const sbrt::Model &model, const std::string &input,
                        const std::string &line_text);

@@ -20,6 +20,7 @@ import grass.script as gs
 from PIL import Image
 
 from geomodel_fixture import run_in_new_location
+from shell_output import shell_values
 from test_r3_sbrt_what import write_cats
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -64,10 +65,6 @@ def run(*args):
     between words: GRASS wraps them)."""
     done = subprocess.run(list(args), capture_output=True, text=True)
     return done.returncode, done.stdout, " ".join(done.stderr.split())
-
-
-def shell_values(text):
-    return dict(line.split("=", 1) for line in text.splitlines() if "=" in line)
 
 
 def numbers(text):
@@ -277,7 +274,7 @@ class TestProfileOfAGeotopFile(TestCase):
             f"r3.sbrt.profile input=gt coordinates=13700,306100,15900,307700 png={png} -g 1>&2"])
         self.assertEqual(code, 0, message)
         self.assertIn("(relative to NAP)", message)
-        self.assertIn("elevation_title=Elevation (m NAP)", message)
+        self.assertIn("elevation_title='Elevation (m NAP)'", message)  # one shell word
         self.assertIn("Vertical exaggeration", message)
         self.assertTrue(os.path.exists(png))
 
