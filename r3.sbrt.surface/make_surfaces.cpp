@@ -33,6 +33,24 @@ sbrt::Model read_model(const SurfaceRequest &request, const struct Cell_head &re
     return sbrt_grass::read_sbrt_map(request.input.c_str(), options);
 }
 
+/// A warning where no cell centre of the region falls in the model (a new
+/// location's default region): every map would be null.
+void warn_if_outside(const std::string &input, const sbrt::Frame &frame,
+                     const struct Cell_head &region, const sbrt::CentreSampling &sampling)
+{
+    const auto inside = [](const std::vector<int> &cells) {
+        return std::any_of(cells.begin(), cells.end(), [](int c) { return c >= 0; });
+    };
+    if (inside(sampling.model_row) && inside(sampling.model_col))
+        return;
+    G_warning(_("The current region (n=%.15g s=%.15g e=%.15g w=%.15g) misses SBRT <%s>, "
+                "which covers n=%.15g s=%.15g e=%.15g w=%.15g: every cell of the maps is "
+                "null. Set the region to the SBRT with r3.sbrt.convert -s sbrt=%s (or "
+                "g.region to a part of it)"),
+              region.north, region.south, region.east, region.west, input.c_str(),
+              frame.north, frame.south, frame.east, frame.west, input.c_str());
+}
+
 } // namespace
 
 void make_surfaces(const SurfaceRequest &request)
@@ -58,7 +76,9 @@ void make_surfaces(const SurfaceRequest &request)
         model.frame(),
         {region.north, region.south, region.east, region.west, region.rows, region.cols});
 
-    SurfaceMaps maps(request, region.cols);
+    warn_if_outside(request.input, model.frame(), region, sampling);
+
+    SurfaceMaps maps(request, described, region.cols);
     const size_t cols = size_t(region.cols);
     const int block = block_rows(region.cols);
     std::vector<sbrt::MapFigures> figures(size_t(block) * cols);
@@ -97,5 +117,5 @@ void make_surfaces(const SurfaceRequest &request)
                          channels ? expected.data() + size_t(k) * cols : nullptr);
     }
     G_percent(1, 1, 1);
-    maps.close(request, described);
+    maps.close();
 }

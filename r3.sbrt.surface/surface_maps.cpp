@@ -8,6 +8,8 @@
 
 #include <cmath>
 
+#include "raster_metadata.hpp"
+
 namespace {
 
 /// Colour table `rules` over the map's range, from `low` where given.
@@ -47,7 +49,7 @@ void write_colors(const std::string &name, const char *rules, bool from_zero, bo
 
 } // namespace
 
-SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, int cols)
+SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, const std::string &set, int cols)
     : cols_(cols), dcells_(size_t(cols)), cells_(size_t(cols))
 {
     const std::pair<Figure, const std::string *> asked[] = {
@@ -59,9 +61,11 @@ SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, int cols)
         {Figure::expected, &request.expected_thickness}};
     for (const auto &[figure, name] : asked)
         if (!name->empty()) {
-            const int fd = Rast_open_new(name->c_str(),
-                                         figure == Figure::layers ? CELL_TYPE : DCELL_TYPE);
-            maps_.push_back({figure, *name, fd});
+            // the metadata first: nothing is left to fail once rows are written
+            Map map = metadata(figure, *name, request, set);
+            map.fd = Rast_open_new(name->c_str(),
+                                   figure == Figure::layers ? CELL_TYPE : DCELL_TYPE);
+            maps_.push_back(std::move(map));
         }
     open_ = true;
 }
@@ -123,58 +127,61 @@ void SurfaceMaps::put_row(const sbrt::MapFigures *figures, const unsigned char *
     }
 }
 
-void SurfaceMaps::close(const SurfaceRequest &request, const std::string &set)
+void SurfaceMaps::close()
 {
     for (const Map &map : maps_)
         Rast_close(map.fd);
     open_ = false;
-    for (const Map &map : maps_)
-        write_metadata(map, request, set);
+    for (const Map &map : maps_) {
+        write_colors(map.name, map.colors, map.colors_from_zero, map.figure == Figure::layers);
+        sbrt_grass::put_raster_title(map.name.c_str(), map.title);
+        sbrt_grass::write_raster_units(map.name.c_str(), map.units);
+        sbrt_grass::write_raster_history(map.name.c_str(), map.history);
+    }
 }
 
-void SurfaceMaps::write_metadata(const Map &map, const SurfaceRequest &request,
-                                 const std::string &set) const
+SurfaceMaps::Map SurfaceMaps::metadata(Figure figure, const std::string &name,
+                                       const SurfaceRequest &request, const std::string &set)
 {
+    Map map{figure, name, -1};
     const char *what = "";
-    switch (map.figure) {
+    switch (figure) {
     case Figure::top:
         what = "Elevation of the top";
-        write_colors(map.name, "elevation", false, false);
+        map.colors = "elevation";
         break;
     case Figure::base:
         what = "Elevation of the base";
-        write_colors(map.name, "elevation", false, false);
+        map.colors = "elevation";
         break;
     case Figure::thickness:
         what = "Thickness";
-        write_colors(map.name, "viridis", true, false);
+        map.colors = "viridis";
+        map.colors_from_zero = true;
         break;
     case Figure::layers:
         what = "Number of layers";
-        write_colors(map.name, "bcyr", false, true);
+        map.colors = "bcyr";
         break;
     case Figure::depth:
         what = "Depth below the model's surface of the top";
-        write_colors(map.name, "blues", true, false);
+        map.colors = "blues";
+        map.colors_from_zero = true;
         break;
     case Figure::expected:
         what = "Expected thickness";
-        write_colors(map.name, "viridis", true, false);
+        map.colors = "viridis";
+        map.colors_from_zero = true;
         break;
     }
-    const std::string of = map.figure == Figure::expected
-                               ? "probability " + request.probability
-                               : set;
-    const std::string title = std::string(what) + " of " + of + " in SBRT " + request.input;
-    Rast_put_cell_title(map.name.c_str(), title.c_str());
-    Rast_write_units(map.name.c_str(), map.figure == Figure::layers
-                                           ? "layers"
-                                           : G_database_unit_name(TRUE));
-    struct History history;
-    Rast_short_history(map.name.c_str(), "raster", &history);
-    Rast_command_history(&history);
-    Rast_format_history(&history, HIST_DATSRC_1, "SBRT %s", request.input.c_str());
-    Rast_format_history(&history, HIST_DATSRC_2, "%s%s",
-                        map.figure == Figure::expected ? "" : "classes ", of.c_str());
-    Rast_write_history(map.name.c_str(), &history);
+    const std::string of =
+        figure == Figure::expected ? "probability " + request.probability : set;
+    // the class labels can make these long: cut to what GRASS keeps
+    map.title = sbrt_grass::metadata_line(
+        std::string(what) + " of " + of + " in SBRT " + request.input,
+        sbrt_grass::MAX_TITLE_BYTES);
+    map.units = figure == Figure::layers ? "layers" : G_database_unit_name(TRUE);
+    map.history.data_source_1 = "SBRT " + request.input;
+    map.history.data_source_2 = (figure == Figure::expected ? "" : "classes ") + of;
+    return map;
 }

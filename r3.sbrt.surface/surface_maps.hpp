@@ -12,13 +12,16 @@
 
 #include "grass.hpp"
 #include "measure/column_figures.hpp"
+#include "raster_metadata.hpp"
 #include "surface.hpp"
 
 /// \brief The maps a request asks for, in the current region.
 class SurfaceMaps {
 public:
-    /// Opens the maps (fatal error where one cannot be opened).
-    SurfaceMaps(const SurfaceRequest &request, int cols);
+    /// Makes the maps' metadata (titles and history: `set` describes the
+    /// class set, "1 (Sand), 2 (Clay)"), then opens the maps (fatal error
+    /// where one cannot be opened).
+    SurfaceMaps(const SurfaceRequest &request, const std::string &set, int cols);
     SurfaceMaps(const SurfaceMaps &) = delete;
     SurfaceMaps &operator=(const SurfaceMaps &) = delete;
     /// Closes maps left open (an error on the way): they are not kept.
@@ -28,9 +31,8 @@ public:
     /// expected thickness of each (NaN: null), where it is asked for.
     void put_row(const sbrt::MapFigures *figures, const unsigned char *present,
                  const double *expected);
-    /// Closes the maps and writes their metadata; `set` describes the class
-    /// set ("1 (Sand), 2 (Clay)").
-    void close(const SurfaceRequest &request, const std::string &set);
+    /// Closes the maps and writes their metadata.
+    void close();
 
 private:
     enum class Figure { top, base, thickness, layers, depth, expected };
@@ -38,10 +40,15 @@ private:
         Figure figure;
         std::string name;
         int fd;
+        std::string title, units;      ///< cut to what GRASS keeps
+        sbrt_grass::MapHistory history;
+        const char *colors = "";       ///< GRASS colour rules, over the range
+        bool colors_from_zero = false; ///< the range from 0
     };
     static double value(Figure figure, const sbrt::MapFigures &f);
-    void write_metadata(const Map &map, const SurfaceRequest &request,
-                        const std::string &set) const;
+    /// Map `name` of `figure` with its metadata, not yet open.
+    static Map metadata(Figure figure, const std::string &name, const SurfaceRequest &request,
+                        const std::string &set);
 
     int cols_;
     std::vector<Map> maps_;
