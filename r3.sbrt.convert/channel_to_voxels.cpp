@@ -10,6 +10,7 @@
 #include <string>
 
 #include "grass.hpp"
+#include "raster_metadata.hpp"
 #include "measure/centre_sampling.hpp"
 #include "sbrt_store.hpp"
 
@@ -54,8 +55,10 @@ void channel_to_voxels(const char *input, const char *channel, const char *outpu
         output, RASTER3D_USE_CACHE_XY, &region, type, 32));
     if (!map)
         G_fatal_error(_("Unable to create 3D raster map <%s>"), output);
+    // the unit comes from the model's file: one line of what GRASS keeps
     if (!info.unit.empty())
-        Rast3d_set_unit(map, info.unit.c_str());
+        Rast3d_set_unit(map, sbrt_grass::metadata_line(info.unit, sbrt_grass::MAX_UNITS_BYTES)
+                                 .c_str());
 
     const sbrt::CentreSampling at = sbrt::sample_at_centres(
         f, {target.north, target.south, target.east, target.west, target.rows, target.cols});
@@ -87,12 +90,8 @@ void channel_to_voxels(const char *input, const char *channel, const char *outpu
     G_percent(1, 1, 1);
     if (!Rast3d_close(map))
         G_fatal_error(_("Unable to close 3D raster map <%s>"), output);
-    struct History history;
-    Rast_short_history(output, "raster3d", &history);
-    Rast_command_history(&history);
-    Rast_format_history(&history, HIST_DATSRC_1, "SBRT %s property channel %s", input,
-                        channel);
-    if (!info.long_name.empty())
-        Rast_format_history(&history, HIST_KEYWRD, "%s", info.long_name.c_str());
-    Rast3d_write_history(output, &history);
+    sbrt_grass::MapHistory history;
+    history.data_source_1 = std::string("SBRT ") + input + " property channel " + channel;
+    history.keywords = info.long_name;
+    sbrt_grass::write_raster3d_history(output, history);
 }

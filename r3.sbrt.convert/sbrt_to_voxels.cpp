@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "legend.hpp"
+#include "raster_metadata.hpp"
 #include "sbrt_store.hpp"
 #include "builders/voxel_expander.hpp"
 
@@ -66,9 +67,7 @@ void sbrt_to_voxels(const char *input, const char *output)
     sbrt_grass::make_cats(model.materials(), &cats, input);
     Rast3d_write_cats(output, &cats);
     Rast_free_cats(&cats);
-    struct History history;
-    Rast_short_history(output, "raster3d", &history);
-    Rast_command_history(&history);
-    Rast_format_history(&history, HIST_DATSRC_1, "SBRT %s", input);
-    Rast3d_write_history(output, &history);
+    sbrt_grass::MapHistory history;
+    history.data_source_1 = std::string("SBRT ") + input;
+    sbrt_grass::write_raster3d_history(output, history);
 }

@@ -10,16 +10,15 @@
 #include <cstdlib>
 
 #include "legend.hpp"
+#include "raster_metadata.hpp"
 
 namespace {
 
 void write_history(const std::string &name, const RenderRequest &request)
 {
-    struct History history;
-    Rast_short_history(name.c_str(), "raster", &history);
-    Rast_command_history(&history);
-    Rast_format_history(&history, HIST_DATSRC_1, "SBRT %s", request.input.c_str());
-    Rast_write_history(name.c_str(), &history);
+    sbrt_grass::MapHistory history;
+    history.data_source_1 = "SBRT " + request.input;
+    sbrt_grass::write_raster_history(name.c_str(), history);
 }
 
 } // namespace
@@ -199,9 +198,11 @@ void ImageMaps::close(const sbrt::Model &model, const sbrt::PropertyPaint *prope
         Rast_write_colors(map.name.c_str(), G_mapset(), &colors);
         Rast_free_colors(&colors);
         const sbrt::ChannelInfo &first = property->channels().info(property->summed()[0]);
+        // the channel's unit and name come from the model's file: cut to
+        // one line of what GRASS keeps
         if (!first.unit.empty())
-            Rast_write_units(map.name.c_str(), first.unit.c_str());
-        const std::string title = "property " + request_.property_title();
-        Rast_put_cell_title(map.name.c_str(), title.c_str());
+            sbrt_grass::write_raster_units(map.name.c_str(), first.unit);
+        sbrt_grass::put_raster_title(map.name.c_str(),
+                                     "property " + request_.property_title());
     }
 }
