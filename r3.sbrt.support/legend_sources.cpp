@@ -6,16 +6,19 @@
 #include "legend_sources.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iostream>
+#include <sstream>
 
 #include "grass.hpp"
-#include "model/legend_rules.hpp"
+#include "rule_counts.hpp"
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 namespace {
+
+/// The longest colour rule line: Rast_parse_color_rule copies the value
+/// and the colour into buffers of 80 bytes without a bound.
+constexpr size_t MAX_RULE_CHARS = 79;
 
 /// The smallest and largest class id (materials has at least one class).
 void id_range(const std::vector<sbrt::Material> &materials, CELL &low, CELL &high)
@@ -27,51 +30,84 @@ void id_range(const std::vector<sbrt::Material> &materials, CELL &low, CELL &hig
     }
 }
 
-/// Every class `colors` has a rule for gets that colour.
-void take_colors(struct Colors *colors, std::vector<sbrt::Material> &materials)
+/// Every class `colors` has a rule for gets that colour; returns how many
+/// classes changed.
+size_t take_colors(struct Colors *colors, std::vector<sbrt::Material> &materials)
 {
+    size_t changed = 0;
     for (size_t i = 1; i < materials.size(); ++i) {
         int red, green, blue;
         CELL id = materials[i].id;
         if (!Rast_get_c_color(&id, &red, &green, &blue, colors))
             continue; // no rule for this class: it keeps its colour
-        materials[i].red = uint8_t(red);
-        materials[i].green = uint8_t(green);
-        materials[i].blue = uint8_t(blue);
-        materials[i].has_color = true;
+        sbrt::Material &m = materials[i];
+        if (!m.has_color || m.red != red || m.green != green || m.blue != blue)
+            ++changed;
+        m.red = uint8_t(red);
+        m.green = uint8_t(green);
+        m.blue = uint8_t(blue);
+        m.has_color = true;
     }
+    return changed;
 }
 
-/// Reads colour rules line by line for Rast_read_color_rules, so that a
-/// bad line is reported with the file and its number (GRASS's own reader
-/// names neither).
+/// Says how many lines of `key`=`file` reached a class and `changed`
+/// classes; a warning names the lines that reached none.
+void report_counts(const char *key, const std::string &file, const char *sbrt_name,
+                   const RuleCounts &counts, size_t changed,
+                   const std::vector<int32_t> &ids)
+{
+    G_message(_("%s=%s: %zu of %zu lines applied, changing %zu of the %zu classes"), key,
+              file.c_str(), counts.lines - counts.unmatched, counts.lines, changed,
+              ids.size());
+    if (counts.unmatched)
+        G_warning(_("%s=%s: %zu of %zu lines named no class of SBRT <%s> and changed "
+                    "nothing (the first names %s; its %zu classes have ids %d to %d)"),
+                  key, file.c_str(), counts.unmatched, counts.lines, sbrt_name,
+                  counts.first_unmatched.c_str(), ids.size(), ids.front(), ids.back());
+}
+
+/// Hands colour rules from text to Rast_read_color_rules line by line, so
+/// that a bad line is reported with the file and its number (GRASS's own
+/// reader names neither), and keeps the value of each rule for the counts.
 struct RuleReader {
-    FILE *file;
+    RuleReader(const std::string &rules, const char *file) : text(rules), name(file) {}
+    std::istringstream text;
     const char *name;
     int line = 0;
+    std::vector<double> values; ///< of the value rules (not nv, default)
 };
 
 int read_rule(void *closure, DCELL min, DCELL max, DCELL *value, int *red,
               int *green, int *blue, int *norm, int *nval, int *dflt)
 {
     RuleReader *reader = static_cast<RuleReader *>(closure);
-    char buffer[1024];
     *norm = *nval = *dflt = 0;
-    while (std::fgets(buffer, sizeof buffer, reader->file)) {
+    std::string text;
+    while (std::getline(reader->text, text)) {
         ++reader->line;
-        buffer[std::strcspn(buffer, "\r\n")] = '\0';
-        G_strip(buffer);
-        if (*buffer == '\0' || *buffer == '#')
+        text.erase(std::min(text.find('\r'), text.size()));
+        std::vector<char> buffer(text.c_str(), text.c_str() + std::strlen(text.c_str()) + 1);
+        G_strip(buffer.data());
+        const std::string line = buffer.data();
+        if (line.empty() || line[0] == '#')
             continue;
-        if (std::strcmp(buffer, "end") == 0)
+        if (line == "end")
             return 0;
+        if (line.size() > MAX_RULE_CHARS)
+            G_fatal_error(_("rules=%s line %d: more than %zu characters, longer than "
+                            "any colour rule ('value colour')"),
+                          reader->name, reader->line, MAX_RULE_CHARS);
         const int status =
-            Rast_parse_color_rule(min, max, buffer, value, red, green, blue, norm, nval, dflt);
+            Rast_parse_color_rule(min, max, line.c_str(), value, red, green, blue, norm,
+                                  nval, dflt);
         if (status != 0)
             G_fatal_error(_("rules=%s line %d: %s (<%s>); a line is 'value colour', "
                             "the colour r:g:b or a name such as red"),
                           reader->name, reader->line, Rast_parse_color_rule_error(status),
-                          buffer);
+                          sbrt::printable(line).c_str());
+        if (*norm)
+            reader->values.push_back(*value);
         return 1;
     }
     return 0;
@@ -91,24 +127,22 @@ void colors_from_table(const char *name, std::vector<sbrt::Material> &materials)
     Rast_free_colors(&colors);
 }
 
-void colors_from_rules(const char *file, std::vector<sbrt::Material> &materials)
+void colors_from_rules(const RulesText &rules, const char *sbrt_name,
+                       std::vector<sbrt::Material> &materials)
 {
     CELL low, high;
     id_range(materials, low, high);
-    const bool standard_input = std::strcmp(file, "-") == 0;
-    FILE *in = standard_input ? stdin : std::fopen(file, "r");
-    if (!in)
-        G_fatal_error(_("rules=%s: unable to open this file"), file);
-    RuleReader reader{in, file};
+    RuleReader reader(rules.text, rules.file.c_str());
     struct Colors colors;
     Rast_init_colors(&colors);
     const int read = Rast_read_color_rules(&colors, low, high, read_rule, &reader);
-    if (!standard_input)
-        std::fclose(in);
     if (!read)
-        G_fatal_error(_("rules=%s: no colour rules in it"), file);
-    take_colors(&colors, materials);
+        G_fatal_error(_("rules=%s: no colour rules in it"), rules.file.c_str());
+    const size_t changed = take_colors(&colors, materials);
     Rast_free_colors(&colors);
+    const std::vector<int32_t> ids = class_ids(materials);
+    report_counts("rules", rules.file, sbrt_name, count_color_rules(reader.values, ids),
+                  changed, ids);
 }
 
 void legend_from_map(const char *name, bool three_d, std::vector<sbrt::Material> &materials)
@@ -130,8 +164,8 @@ void legend_from_map(const char *name, bool three_d, std::vector<sbrt::Material>
         for (size_t i = 1; i < materials.size(); ++i) {
             CELL id = materials[i].id;
             const char *label = Rast_get_c_cat(&id, &cats);
-            if (label && *label)
-                materials[i].label = label;
+            if (label && *label) // another user's map: any bytes (issue 48)
+                materials[i].label = sbrt::valid_utf8(label);
         }
         Rast_free_cats(&cats);
     }
@@ -139,21 +173,26 @@ void legend_from_map(const char *name, bool three_d, std::vector<sbrt::Material>
         G_fatal_error(_("<%s> has neither a colour table nor categories"), name);
 }
 
-void labels_from_rules(const char *file, std::vector<sbrt::Material> &materials)
+std::vector<sbrt::ClassStyle> parse_label_rules(const RulesText &rules)
 {
-    std::vector<sbrt::ClassStyle> rules;
+    std::vector<sbrt::ClassStyle> parsed;
     try {
-        if (std::strcmp(file, "-") == 0)
-            rules = sbrt::parse_category_rules(std::cin, "labels=-");
-        else {
-            std::ifstream in(file);
-            if (!in)
-                G_fatal_error(_("labels=%s: unable to open this file"), file);
-            rules = sbrt::parse_category_rules(in, std::string("labels=") + file);
-        }
+        std::istringstream in(rules.text);
+        parsed = sbrt::parse_category_rules(in, "labels=" + rules.file);
     }
     catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
+        G_fatal_error("%s", sbrt::printable(e.what()).c_str());
     }
-    sbrt::apply_styles(materials, rules);
+    for (sbrt::ClassStyle &rule : parsed)
+        rule.label = sbrt::valid_utf8(rule.label);
+    return parsed;
+}
+
+void apply_label_rules(const std::vector<sbrt::ClassStyle> &label_rules, const char *file,
+                       const char *sbrt_name, std::vector<sbrt::Material> &materials)
+{
+    const size_t changed = sbrt::apply_styles(materials, label_rules);
+    const std::vector<int32_t> ids = class_ids(materials);
+    report_counts("labels", file, sbrt_name, count_label_rules(label_rules, ids), changed,
+                  ids);
 }

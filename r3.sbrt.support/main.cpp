@@ -7,12 +7,16 @@
  *            presets
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <chrono>
 #include <cstdlib>
 #include <ctime>
+#include <optional>
 #include <string>
 
 #include "format/format.hpp"
+#include "format/sbrt_lock.hpp"
 #include "grass.hpp"
+#include "input_file.hpp"
 #include "legend_sources.hpp"
 #include "model/legend_rules.hpp"
 #include "model/survey_presets.hpp"
@@ -115,18 +119,45 @@ std::string history_line()
            G_recreate_command() + "\n";
 }
 
-void run(const Options &o)
+/// How long a change waits for another change of the same SBRT to end.
+constexpr std::chrono::seconds CHANGE_WAIT(30);
+
+/// The SBRT's writers' lock: changes made at once are made one after the
+/// other, so none is lost (issue 48, item 3); readers never take it.
+sbrt::SbrtLock lock_for_change(const std::string &dir, const char *name)
 {
-    const char *name = o.sbrt->answer;
-    const std::string dir = own_sbrt(name);
-    sbrt::Model model = sbrt_grass::read_sbrt_map(name);
-    std::vector<sbrt::Material> &materials = model.materials();
-    if (materials.size() < 2)
-        G_fatal_error(_("SBRT <%s> has no classes"), name);
+    try {
+        return sbrt::SbrtLock(dir, CHANGE_WAIT);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error(_("SBRT <%s> not changed: %s"), name, e.what());
+    }
+}
+
+/// The rules files, read whole before the SBRT is locked.
+struct Inputs {
+    std::optional<RulesText> color_rules;
+    std::vector<sbrt::ClassStyle> label_rules;
+};
+
+Inputs read_inputs(const Options &o)
+{
+    Inputs in;
+    if (o.rules->answer)
+        in.color_rules = RulesText{o.rules->answer, read_rules_file("rules", o.rules->answer)};
+    if (o.labels->answer)
+        in.label_rules =
+            parse_label_rules({o.labels->answer, read_rules_file("labels", o.labels->answer)});
+    return in;
+}
+
+void change_legend(const Options &o, const Inputs &in, const char *name,
+                   std::vector<sbrt::Material> &materials)
+{
     if (o.color->answer)
         colors_from_table(o.color->answer, materials);
-    else if (o.rules->answer)
-        colors_from_rules(o.rules->answer, materials);
+    else if (in.color_rules)
+        colors_from_rules(*in.color_rules, name, materials);
     else if (o.raster->answer || o.raster_3d->answer)
         legend_from_map(o.raster->answer ? o.raster->answer : o.raster_3d->answer,
                         o.raster_3d->answer != nullptr, materials);
@@ -141,7 +172,22 @@ void run(const Options &o)
         for (sbrt::Material &m : materials)
             m.has_color = false;
     if (o.labels->answer)
-        labels_from_rules(o.labels->answer, materials);
+        apply_label_rules(in.label_rules, o.labels->answer, name, materials);
+}
+
+void run(const Options &o)
+{
+    const char *name = o.sbrt->answer;
+    const std::string dir = own_sbrt(name);
+    const Inputs inputs = read_inputs(o);
+    // read -> change -> rewrite under the lock: a change made meanwhile
+    // by another process would otherwise be overwritten by ours
+    const sbrt::SbrtLock lock = lock_for_change(dir, name);
+    sbrt::Model model = sbrt_grass::read_sbrt_map(name);
+    std::vector<sbrt::Material> &materials = model.materials();
+    if (materials.size() < 2)
+        G_fatal_error(_("SBRT <%s> has no classes"), name);
+    change_legend(o, inputs, name, materials);
     sbrt::rewrite_legend(dir, model, history_line());
 }
 
