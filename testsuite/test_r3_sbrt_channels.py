@@ -479,17 +479,17 @@ class TestChannels(TestCase, Raster3dCompare):
              "attribute valid_range runs from 10 down to -10"),
         ]
         for n, (attributes, expected) in enumerate(cases):
-            path = os.path.join(self.tmp, f"bad_attribute_{n}.nc")
+            path = os.path.join(self.tmp, f"refused_attribute_{n}.nc")
             kind, f = ("float", porosity) if "Infinityf" in attributes else ("short", packed)
             write_netcdf(path, properties={"kh": (kind, f, attributes)})
             code, err = failure_of("r3.sbrt.convert", f"file={path}", "variable=lithok",
-                                   "properties=kh", f"output=bad_attribute_{n}",
+                                   "properties=kh", f"output=refused_attribute_{n}",
                                    "preset=none")
             self.assertNotEqual(code, 0, attributes)
             self.assertIn("variable 'kh'", err, attributes)
             self.assertIn(expected, err, attributes)
         listing = gs.read_command("r3.sbrt.convert", flags="l")
-        self.assertNotIn("bad_attribute", listing)
+        self.assertNotIn("refused_attribute", listing)
 
     def test_infinite_channel_values_are_refused_by_name(self):
         """A float channel holding Infinity inside a column's span fails
