@@ -137,6 +137,30 @@ class TestVolumeAreas(TestCase):
         self.assertEqual(int(table[1]["area"]), 2)
         self.assertEqual(int(table[1]["cells"]), 15 * 13)
 
+    def test_uncut_overlapping_areas_both_count(self):
+        """Boundaries that cross without a node (v.in.ascii, no cleaning):
+        two areas that overlap, the cells of the overlap count for both,
+        where v.to.rast gives them to one."""
+        text = ""
+        for cat, ring in ((1, RECT1), (2, RECT2)):
+            points = closed(ring)
+            text += f"B {len(points)}\n" + "".join(f" {x} {y}\n" for x, y in points)
+            # each centroid outside the other area
+            x, y = ring[0] if cat == 1 else (ring[2][0] - 2.6, ring[2][1] - 2.6)
+            text += f"C 1 1\n {x + 1.3} {y + 1.3}\n 1 {cat}\n"
+        gs.write_command("v.in.ascii", input="-", output="uncut", format="standard",
+                         flags="n", stdin=text, quiet=True)
+        out = run("input=geo", "areas=uncut", "format=json")
+        self.assertEqual(out.returncode, 0, out.stderr)
+        expected = expected_rows()
+        rows = json.loads(out.stdout)["volumes"]
+        self.assertEqual([(r["area"], r["classes"]) for r in rows],
+                         [(1, [1]), (1, [2]), (2, [1]), (2, [2])])
+        for row in rows:
+            volume, cells = expected[(row["area"], row["classes"][0])]
+            self.assertEqual(row["cells"], cells, row)
+            self.assertAlmostEqual(row["volume"], volume, places=6, msg=row)
+
     def test_full_standard_output_fails(self):
         if not os.path.exists("/dev/full"):
             self.skipTest("no /dev/full")
