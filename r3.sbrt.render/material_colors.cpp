@@ -21,8 +21,8 @@ void apply_color_option(const RenderRequest &request, sbrt::Model &model)
         low = std::min(low, materials[i].id);
         high = std::max(high, materials[i].id);
     }
-    struct Colors colors;
-    Rast_init_colors(&colors);
+    GrassColors table;
+    struct Colors &colors = *table.get();
     if (!request.color.empty())
         Rast_make_colors(&colors, request.color.c_str(), low, high); // fatal if unknown
     else {
@@ -44,5 +44,4 @@ void apply_color_option(const RenderRequest &request, sbrt::Model &model)
         materials[i].blue = uint8_t(blue);
         materials[i].has_color = true;
     }
-    Rast_free_colors(&colors);
 }

@@ -67,8 +67,8 @@ std::pair<double, double> property_range(const sbrt::PropertyChannels &channels,
 
 sbrt::ColorRamp property_ramp(const std::string &table, double low, double high)
 {
-    struct Colors colors;
-    Rast_init_colors(&colors);
+    GrassColors grass_colors;
+    struct Colors &colors = *grass_colors.get();
     const bool is_file = table.find('/') != std::string::npos || access(table.c_str(), R_OK) == 0;
     if (is_file) // read and checked by us, never by GRASS's reader
         set_grass_colors(
@@ -89,7 +89,6 @@ sbrt::ColorRamp property_ramp(const std::string &table, double low, double high)
             continue;
         rules.push_back({{v1, {r1, g1, b1}}, {v2, {r2, g2, b2}}});
     }
-    Rast_free_colors(&colors);
     if (rules.empty())
         bad_request(_("property_color=%s gives no colour rules"), table.c_str());
     return sbrt::ColorRamp(std::move(rules));

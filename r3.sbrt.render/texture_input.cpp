@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "grass.hpp"
+#include "grass_color_rules.hpp"
 #include "request_error.hpp"
 
 namespace {
@@ -62,7 +63,8 @@ sbrt::Texture read_texture(const std::vector<std::string> &maps)
     t.valid.assign(size_t(own.rows) * cols, 0);
     if (maps.size() == 1) {
         RasterInput in(maps[0]);
-        Colors colors;
+        GrassColors table; // freed whole, the lookup Rast_lookup_d_colors builds too
+        Colors &colors = *table.get();
         if (Rast_read_colors(maps[0].c_str(), in.mapset(), &colors) < 0)
             bad_request(_("texture=%s has no colour table"), maps[0].c_str());
         std::vector<DCELL> row(cols);
@@ -77,7 +79,6 @@ sbrt::Texture read_texture(const std::vector<std::string> &maps)
                 t.valid[i] = !Rast_is_d_null_value(&row[x]) && set[x];
             }
         }
-        Rast_free_colors(&colors);
     }
     else {
         std::fill(t.valid.begin(), t.valid.end(), 1);

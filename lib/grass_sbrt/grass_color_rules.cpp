@@ -5,11 +5,18 @@
  ****************************************************************************/
 #include "grass_color_rules.hpp"
 
+GrassColors::~GrassColors()
+{
+    Rast__color_free_fp_lookup(&colors_.fixed);
+    Rast__color_free_fp_lookup(&colors_.modular);
+    Rast_free_colors(&colors_);
+}
+
 void set_grass_colors(const sbrt::ColorRules &rules, double low, double high,
                       struct Colors *colors)
 {
     // as Rast_read_color_rules (lib/raster/color_rules.c) builds its table
-    Rast_init_colors(colors);
+    // (on a table just initialised: Rast_init_colors frees nothing)
     const std::vector<sbrt::ColorRule> &r = rules.rules;
     if (r.size() == 1)
         Rast_set_d_color(r[0].value_in(low, high), r[0].rgb[0], r[0].rgb[1], r[0].rgb[2],

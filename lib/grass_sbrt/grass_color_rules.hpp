@@ -12,7 +12,24 @@
 #include "grass.hpp"
 #include "model/color_rules.hpp"
 
-/// Fills `colors` (initialised here) with `rules` over the range [low,
+/// \brief A GRASS colour table (initialised), freed whole with its owner:
+/// Rast_free_colors of GRASS 8.2 (lib/raster/color_free.c) leaves the
+/// floating-point lookup that Rast__organize_colors builds on the first
+/// lookup, a leak per table in a long-running view server.
+class GrassColors {
+public:
+    GrassColors() { Rast_init_colors(&colors_); }
+    ~GrassColors();
+    GrassColors(const GrassColors &) = delete;
+    GrassColors &operator=(const GrassColors &) = delete;
+
+    struct Colors *get() { return &colors_; }
+
+private:
+    struct Colors colors_;
+};
+
+/// Fills `colors` (as Rast_init_colors left it) with `rules` over the range [low,
 /// high] of their % values, as Rast_read_color_rules does with a file's
 /// lines: each rule to the next, nv and default colours. Never fails.
 void set_grass_colors(const sbrt::ColorRules &rules, double low, double high,
