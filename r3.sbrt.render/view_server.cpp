@@ -19,6 +19,7 @@
 
 #include "format/format_v2.hpp"
 #include "image_memory.hpp"
+#include "reply_lines.hpp"
 #include "model/material_table.hpp"
 #include "render_session.hpp"
 #include "request_line.hpp"
@@ -30,8 +31,6 @@ namespace {
 /// The longest request line read whole: anything longer is answered with
 /// an error and skipped (a frame request is a few hundred bytes).
 constexpr size_t MAX_LINE = 1 << 16;
-/// The longest error reply (a message quotes values of the request).
-constexpr size_t MAX_REPLY = 2000;
 
 /// \brief The server's session and the replies it writes.
 class ViewServer {
@@ -107,25 +106,17 @@ void ViewServer::classes(const RenderRequest &request)
                  f.south, f.east, f.west, f.bottom, f.top, whole.zexag, int(voxels));
     std::fprintf(out_, "classes %zu\n", model.materials().size());
     // the colours a render draws (the palette's where a class has none)
-    for (uint32_t i = 0; i < model.materials().size(); ++i) {
-        const sbrt::Material &m = model.materials()[i];
-        std::string label = m.label;
-        std::replace(label.begin(), label.end(), '\n', ' ');
-        const std::array<uint8_t, 3> rgb = sbrt::material_color(model, i);
-        std::fprintf(out_, "%d %d %d %d %s\n", m.id, rgb[0], rgb[1], rgb[2], label.c_str());
-    }
+    for (uint32_t i = 0; i < model.materials().size(); ++i)
+        std::fputs(class_reply_line(model.materials()[i], sbrt::material_color(model, i))
+                       .c_str(),
+                   out_);
     // the property channels: least and greatest value as meant, then
     // name|unit|long name
     const sbrt::PropertyChannels *channels = session_.stored_channels(whole);
     const size_t count = channels ? channels->size() : 0;
     std::fprintf(out_, "channels %zu\n", count);
-    for (size_t c = 0; c < count; ++c) {
-        const sbrt::ChannelInfo &info = channels->info(c);
-        std::string text = info.name + "|" + info.unit + "|" + info.long_name;
-        std::replace(text.begin(), text.end(), '\n', ' ');
-        const double a = info.physical(float(info.min)), b = info.physical(float(info.max));
-        std::fprintf(out_, "%.9g %.9g %s\n", std::min(a, b), std::max(a, b), text.c_str());
-    }
+    for (size_t c = 0; c < count; ++c)
+        std::fputs(channel_reply_line(channels->info(c)).c_str(), out_);
     std::fflush(out_);
 }
 
@@ -175,10 +166,7 @@ void ViewServer::pick(RenderRequest request, int row, int col)
 
 void ViewServer::error(const std::string &message)
 {
-    std::string line = shortened(message, MAX_REPLY); // one line: the protocol's
-    std::replace(line.begin(), line.end(), '\n', ' ');
-    std::replace(line.begin(), line.end(), '\r', ' ');
-    std::fprintf(out_, "error %s\n", line.c_str());
+    std::fputs(error_reply_line(message).c_str(), out_);
     std::fflush(out_);
 }
 
