@@ -233,11 +233,21 @@ std::string subject_of(const Options &o)
 /// still there when the run ends.
 struct TemporaryFile {
     std::string path;
-    TemporaryFile() = default;
+    /// A G_fatal_error exits past the destructor: its handler removes a
+    /// half-written file too.
+    TemporaryFile() { G_add_error_handler(remove_file, this); }
     TemporaryFile(const TemporaryFile &) = delete;
     TemporaryFile &operator=(const TemporaryFile &) = delete;
     ~TemporaryFile()
     {
+        G_remove_error_handler(remove_file, this);
+        remove_file(this);
+    }
+
+private:
+    static void remove_file(void *self)
+    {
+        const std::string &path = static_cast<TemporaryFile *>(self)->path;
         if (!path.empty())
             std::remove(path.c_str());
     }

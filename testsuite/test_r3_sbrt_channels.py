@@ -123,6 +123,13 @@ def failure_of(*args):
     return run.returncode, " ".join(run.stderr.split())
 
 
+def temporary_files():
+    """The files of the mapset's .tmp (G_tempfile's folder)."""
+    env = gs.gisenv()
+    tmp = os.path.join(env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"], ".tmp")
+    return {os.path.join(d, f) for d, _, files in os.walk(tmp) for f in files}
+
+
 def span(i, j):
     """The voxels of column (i, j) that keep channel values."""
     solid = [k for k in range(NZ) if lithok(i, j, k) != FILL]
@@ -500,12 +507,15 @@ class TestChannels(TestCase, Raster3dCompare):
         write_netcdf(path, properties={"porosity": (
             "float", lambda a, b, c: float("inf") if (a, b, c) == (i, j, lo) else
             porosity(a, b, c), "")})
+        before = temporary_files()
         code, err = failure_of("r3.sbrt.convert", f"file={path}", "variable=lithok",
                                "properties=porosity", "output=infinite", "preset=none")
         self.assertNotEqual(code, 0)
         self.assertIn("variable 'porosity' holds Infinity", err)
         self.assertIn("valid_max", err)
         self.assertNotIn("infinite", gs.read_command("r3.sbrt.convert", flags="l"))
+        # nor the channels half written beside the import
+        self.assertEqual(temporary_files() - before, set())
 
     def test_nan_voxels_are_no_value_in_counts_and_expansion(self):
         """-g's valid count of a float channel with NaN voxels is what -r
