@@ -3,8 +3,9 @@
 # MODULE:    tools/run_tests.sh (r3.sbrt addon)
 # PURPOSE:   Runs every test: the C++ unit tests of lib/sbrt (also under
 #            ASan+UBSan), the fuzz targets of the SBRT reader (FUZZ_SECONDS,
-#            default 60) and of the view server's request lines
-#            (REQUEST_SECONDS, default 30), the stage order of lib/sbrt,
+#            default 60), of the view server's request lines
+#            (REQUEST_SECONDS, default 30) and of its rules files and
+#            legends (SERVER_SECONDS, default 30), the stage order of lib/sbrt,
 #            both modules under valgrind on a small model, and each
 #            gunittest file of testsuite/ in its own fresh mapset; ends with the line "N passed, N failed" (test
 #            cases, all kinds together)
@@ -80,6 +81,19 @@ else
     failed=$((failed + 1))
     grep -E "ERROR|==[0-9]+==|crash-|leak-|timeout-|exited" "$log/fuzz_requests.log" | head -20
     echo "fuzz (view server requests): failed (log $log/fuzz_requests.log)"
+fi
+
+# 3a'. what the view server reads besides its request lines (colour rules
+# files, hostile legends) fuzzed for SERVER_SECONDS (default 30): one test
+if make -s -C testsuite/fuzz run-server-inputs SERVER_SECONDS="${SERVER_SECONDS:-30}" \
+    >"$log/fuzz_server_inputs.log" 2>&1; then
+    passed=$((passed + 1))
+    lap
+    echo "fuzz (view server rules files and legends): passed, $(sed -n 's/^stat::number_of_executed_units: *//p' "$log/fuzz_server_inputs.log") inputs in ${SERVER_SECONDS:-30} s$took"
+else
+    failed=$((failed + 1))
+    grep -E "ERROR|==[0-9]+==|crash-|leak-|timeout-|exited" "$log/fuzz_server_inputs.log" | head -20
+    echo "fuzz (view server rules files and legends): failed (log $log/fuzz_server_inputs.log)"
 fi
 
 # 3b. lib/sbrt's stages include only themselves and the stages below: one test
