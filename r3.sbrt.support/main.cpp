@@ -119,15 +119,12 @@ std::string history_line()
            G_recreate_command() + "\n";
 }
 
-/// How long a change waits for another change of the same SBRT to end.
-constexpr std::chrono::seconds CHANGE_WAIT(30);
-
 /// The SBRT's writers' lock: changes made at once are made one after the
 /// other, so none is lost (issue 48, item 3); readers never take it.
 sbrt::SbrtLock lock_for_change(const std::string &dir, const char *name)
 {
     try {
-        return sbrt::SbrtLock(dir, CHANGE_WAIT);
+        return sbrt_grass::lock_for_writing(dir);
     }
     catch (const sbrt::Error &e) {
         G_fatal_error(_("SBRT <%s> not changed: %s"), name, e.what());

@@ -9,6 +9,7 @@ PURPOSE:   r3.sbrt.support on hostile input and at the same time as
            Every run has a time limit.
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
+import fcntl
 import os
 import shutil
 import subprocess
@@ -219,6 +220,39 @@ class TestSupportConcurrency(TestCase):
         cats = self.member(name, "cats").decode("utf-8")  # raises if not UTF-8
         self.assertIn("4:cl\ufffday", cats.splitlines())
         self.assertIn("7:gr\ufffdavel", cats.splitlines())
+
+    def test_every_writer_waits_for_the_lock(self):
+        """convert's output, manage's copy, rename and remove take the same
+        writers' lock as support: none of them changes the SBRT while
+        another writer holds it; each goes on once it is let go."""
+        writers = {
+            "convert --overwrite": ["r3.sbrt.convert", "input=conc_v", "output={name}",
+                                    "--overwrite"],
+            "manage copy": ["r3.sbrt.manage", "copy=conc_src,{name}", "--overwrite"],
+            "manage rename": ["r3.sbrt.manage", "rename={name},{name}_moved", "--overwrite"],
+            "manage remove": ["r3.sbrt.manage", "remove={name}", "-f"],
+        }
+        self.fresh("conc_src")
+        for label, words in writers.items():
+            name = self.fresh("conc_locked")
+            stacks = os.stat(os.path.join(self.element, name, "stacks")).st_ino
+            lock_path = os.path.join(self.element, f".{name}.lock")
+            with open(lock_path, "a+") as lock:
+                fcntl.flock(lock, fcntl.LOCK_EX)
+                writer = subprocess.Popen([w.format(name=name) for w in words],
+                                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+                with self.assertRaises(subprocess.TimeoutExpired, msg=label):
+                    writer.wait(timeout=2)
+                # held: the SBRT is as it was, a reader is not kept waiting
+                self.assertEqual(os.stat(os.path.join(self.element, name, "stacks")).st_ino,
+                                 stacks, label)
+                code, message = run(["r3.sbrt.convert", "-p", f"sbrt={name}"], timeout=LIMIT)
+                self.assertEqual(code, 0, message)
+                fcntl.flock(lock, fcntl.LOCK_UN)
+            self.assertEqual(writer.wait(timeout=60), 0, (label, writer.stderr.read()))
+            writer.stderr.close()
+            gs.run_command("r3.sbrt.manage", remove=f"{name}_moved", flags="f", quiet=True,
+                           errors="ignore")
 
 
 if __name__ == "__main__":

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <ctime>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "format/atomic_dir.hpp"
@@ -134,6 +135,7 @@ void copy_sbrt(const StoredSbrt &source, const std::string &target)
     // members relative to it, regular files only, never through a link
     const sbrt::MemberDirectory from(sbrt_directory(source.name, source.mapset));
     G_make_mapset_object_group(ELEMENT);
+    const sbrt::SbrtLock lock = lock_for_writing(sbrt_directory(target, G_mapset()));
     sbrt::AtomicDirectory staged(sbrt_directory(target, G_mapset()));
     for (const std::string &name : from.member_names()) {
         if (name == "hist")
@@ -157,15 +159,23 @@ void rename_sbrt(const std::string &from, const std::string &to)
     require_legal_name(from, "rename_sbrt");
     check_new_name(to.c_str(), true, "rename");
     const std::string old_path = sbrt_directory(from, G_mapset());
+    const std::string new_path = sbrt_directory(to, G_mapset());
+    // both writers' locks, in one order (by path) so that two renames
+    // the other way round cannot wait for each other
+    const auto [first, second] = std::minmax(old_path, new_path);
+    const sbrt::SbrtLock first_lock = lock_for_writing(first);
+    const std::optional<sbrt::SbrtLock> second_lock =
+        second != first ? std::optional<sbrt::SbrtLock>(lock_for_writing(second)) : std::nullopt;
     if (!has_entry(old_path))
         fail("rename_sbrt: no SBRT at ", old_path);
-    sbrt::replace_directory(old_path, sbrt_directory(to, G_mapset()));
+    sbrt::replace_directory(old_path, new_path);
 }
 
 void remove_sbrt(const std::string &name)
 {
     require_legal_name(name, "remove_sbrt");
     const std::string path = sbrt_directory(name, G_mapset());
+    const sbrt::SbrtLock lock = lock_for_writing(path);
     if (!has_entry(path))
         fail("remove_sbrt: no SBRT at ", path);
     sbrt::remove_directory(path);

@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "sbrt_store.hpp"
 
+#include <sys/stat.h>
+
 #include <cstdarg>
 #include <cstring>
 
@@ -32,6 +34,32 @@ namespace {
     const std::string message = text ? text : format;
     G_free(text);
     throw sbrt::Error(message);
+}
+
+/// The inode of directory `dir` (0 where it has none).
+ino_t inode_of(const std::string &dir)
+{
+    struct stat st;
+    return stat(dir.c_str(), &st) == 0 ? st.st_ino : 0;
+}
+
+/// `read(dir)`, read again where a writer replaced the directory while it
+/// was read: a rewrite swaps a new directory in and deletes the old one's
+/// members, so a reader between the two finds members missing. A reader
+/// never waits for a writer; it reads the new SBRT instead.
+template <typename Read>
+auto read_settled(const std::string &dir, const Read &read)
+{
+    for (int attempt = 1;; ++attempt) {
+        const ino_t before = inode_of(dir);
+        try {
+            return read(dir);
+        }
+        catch (const sbrt::Error &) {
+            if (attempt == 5 || inode_of(dir) == before)
+                throw;
+        }
+    }
 }
 
 } // namespace
@@ -77,7 +105,7 @@ sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options)
 {
     const std::string dir = find_sbrt(name);
     try {
-        return sbrt::read_sbrt(dir, options);
+        return read_settled(dir, [&](const std::string &d) { return sbrt::read_sbrt(d, options); });
     }
     catch (const sbrt::Error &e) {
         fail_with(_("SBRT <%s> is damaged or not an SBRT: %s. Convert "
@@ -91,7 +119,8 @@ std::shared_ptr<const sbrt::PropertyChannels> read_channels_map(const char *name
 {
     const std::string dir = find_sbrt(name);
     try {
-        return sbrt::read_channels(dir, model);
+        return read_settled(dir,
+                            [&](const std::string &d) { return sbrt::read_channels(d, model); });
     }
     catch (const sbrt::Error &e) {
         fail_with(_("The property channels of SBRT <%s> are damaged: %s. Import "
@@ -128,6 +157,11 @@ std::string new_sbrt_path(const char *name, bool overwrite)
     return path;
 }
 
+sbrt::SbrtLock lock_for_writing(const std::string &dir)
+{
+    return sbrt::SbrtLock(dir, std::chrono::seconds(30));
+}
+
 void write_sbrt_map(const char *name, const std::string &path,
                     const sbrt::Model &model, const std::string &source,
                     const std::string &channels_file)
@@ -140,6 +174,7 @@ void write_sbrt_map(const char *name, const std::string &path,
     history += "source: " + source + "\n";
     history += std::string("command: ") + G_recreate_command() + "\n";
     try {
+        const sbrt::SbrtLock lock = lock_for_writing(path);
         sbrt::write_sbrt(path, model, history, {}, channels_file);
     }
     catch (const sbrt::Error &e) {

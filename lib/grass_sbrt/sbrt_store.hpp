@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "format/format.hpp"
+#include "format/sbrt_lock.hpp"
 #include "model/model.hpp"
 
 namespace sbrt_grass {
@@ -47,6 +48,12 @@ struct ProbabilityChannels {
 ProbabilityChannels read_probability_channels(const char *name, const sbrt::Model &model,
                                               const std::string &probability,
                                               const char *option);
+/// The writers' lock of SBRT directory `dir` (sbrt::SbrtLock), waited for
+/// up to 30 s: every writer (support, convert's output, manage's copy,
+/// rename and remove) takes it, so that writes made at once happen one
+/// after the other and none is lost (issue 48, item 3); readers never take
+/// it. Throws sbrt::Error when another writer holds it all that time.
+sbrt::SbrtLock lock_for_writing(const std::string &dir);
 /// Checks the name and overwrite rules, then returns the directory of the
 /// new SBRT in the current mapset.
 std::string new_sbrt_path(const char *name, bool overwrite);
