@@ -1,13 +1,14 @@
 """
 MODULE:    testsuite/test_r3_sbrt_rules_files.py (r3.sbrt addon)
-PURPOSE:   Hostile colour rules files and PNG paths (issue 48, items 5, 6
-           and 13): a bad rules= or property_color= file fails on the
-           command line and is answered with an error by the view server,
-           which serves on; the message names the line number and never
-           quotes the line (the file may be /etc/passwd); /dev/zero and a
-           FIFO are refused at once; ten renders to one png= at once all
-           succeed and leave one valid PNG and no temporary file. Every
-           run has a time limit.
+PURPOSE:   Hostile colour rules files, legends and PNG paths (issue 48,
+           items 5, 6 and 13): a bad rules= or property_color= file fails
+           on the command line and is answered with an error by the view
+           server, which serves on; the message names the line number and
+           never quotes the line (the file may be /etc/passwd); /dev/zero
+           and a FIFO are refused at once; an SBRT's labels, unit and
+           title come back from the server as printable lines of intact
+           fields; ten renders to one png= at once all succeed and leave
+           one valid PNG and no temporary file. Every run has a time limit.
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
@@ -18,6 +19,7 @@ import time
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
+import grass.script as gs
 
 from test_r3_sbrt_render_requests import LIMIT, RawServer
 
@@ -46,6 +48,26 @@ class ServerWithErrors(RawServer):
     def close(self):
         super().close()
         self.stderr_file.close()
+
+    def legend(self, sbrt):
+        """The raw lines of the classes reply of SBRT `sbrt`, as bytes."""
+        self.process.stdin.write(b"classes input=%s\n" % sbrt.encode())
+        self.process.stdin.flush()
+        deadline = time.monotonic() + LIMIT
+        self._fill(lambda buffer: buffer.count(b"\n") >= 2, deadline)
+        lines = []
+        for _ in range(2):  # model, classes N
+            line, self.buffer = self.buffer.split(b"\n", 1)
+            lines.append(line)
+        for _ in range(int(lines[-1].split()[1]) + 1):  # classes, channels N
+            self._fill(lambda buffer: b"\n" in buffer, deadline)
+            line, self.buffer = self.buffer.split(b"\n", 1)
+            lines.append(line)
+        for _ in range(int(lines[-1].split()[1])):
+            self._fill(lambda buffer: b"\n" in buffer, deadline)
+            line, self.buffer = self.buffer.split(b"\n", 1)
+            lines.append(line)
+        return lines
 
 
 class TestRulesFiles(TestCase):
@@ -169,6 +191,42 @@ class TestRulesFiles(TestCase):
             messages = f.read().decode(errors="replace")
         self.assertNotIn("root:", messages)
         self.assertNotIn("nonsense_colour", messages)
+
+    def test_hostile_legend_texts(self):
+        """The classes reply quotes an SBRT's labels, unit and title (maybe
+        another user's) as printable lines; a channel's record keeps its
+        three fields name|unit|long name whatever '|' the texts hold."""
+        self.runModule("r3.support", map="rules_p", unit="m|s", title="P|sand")
+        subprocess.run(["r3.sbrt.convert", "input=rules_layers", "properties=rules_p",
+                        "output=rules_legend", "--overwrite", "--quiet"], check=True,
+                       timeout=60)
+        try:
+            env = gs.gisenv()
+            cats = os.path.join(env["GISDBASE"], env["LOCATION_NAME"], env["MAPSET"],
+                                "sbrt", "rules_legend", "cats")
+            with open(cats, "wb") as f:
+                f.write(b"1:Clay\rX\x1b[31m|y\n2:two\n3:three\n")
+            server = ServerWithErrors(os.path.join(self.dir, "legend.err"))
+            try:
+                lines = server.legend("rules_legend")
+            finally:
+                server.close()
+        finally:
+            subprocess.run(["r3.sbrt.manage", "remove=rules_legend", "-f", "--quiet"],
+                           timeout=60)
+        for line in lines:
+            self.assertNotIn(b"\r", line)
+            self.assertNotIn(b"\x1b", line)
+            line.decode()  # valid UTF-8
+        labels = [line.split(b" ", 4)[4] for line in lines if line.startswith(b"1 ")]
+        self.assertEqual(len(labels), 1, lines)
+        self.assertTrue(labels[0].startswith(b"Clay"), labels)
+        channel = lines[-1].decode().split(" ", 2)[2]
+        self.assertEqual(len(channel.split("|")), 3, channel)
+        name, unit, title = channel.split("|")
+        self.assertEqual(name, "rules_p")
+        self.assertIn("m", unit)
+        self.assertIn("sand", title)
 
     def test_parallel_renders_to_one_png(self):
         """Item 13: ten renders to one png= at once all succeed; the PNG
