@@ -18,6 +18,8 @@
 using sbrt_grass::Canvas;
 using sbrt_grass::LegendClass;
 using sbrt_grass::select_font;
+using sbrt_grass::show_text;
+using sbrt_grass::text_extents;
 using sbrt_grass::text_width;
 
 namespace {
@@ -103,10 +105,9 @@ void fill_plot(Canvas &canvas, const Placement &p, const sbrt::ClassProfile &pro
 void show_text_at(cairo_t *cr, const std::string &text, double x, double y, double align_x,
                   double align_y)
 {
-    cairo_text_extents_t e;
-    cairo_text_extents(cr, text.c_str(), &e);
+    const cairo_text_extents_t e = text_extents(cr, text);
     cairo_move_to(cr, x - align_x * e.x_advance, y - e.y_bearing - align_y * e.height);
-    cairo_show_text(cr, text.c_str());
+    show_text(cr, text);
 }
 
 /// The frame, ticks and their labels, the axes' titles, the vertices.
@@ -268,7 +269,7 @@ void draw_panel(cairo_t *cr, const Sizes &s, const Placement &p)
     select_font(cr, true);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, x, y);
-    cairo_show_text(cr, "Classes cut");
+    show_text(cr, "Classes cut");
     select_font(cr);
     for (const LegendClass *l : p.shown) {
         y += s.line;
@@ -277,7 +278,7 @@ void draw_panel(cairo_t *cr, const Sizes &s, const Placement &p)
     y += 2 * s.line;
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, x, y);
-    cairo_show_text(cr, p.zexag_text.c_str());
+    show_text(cr, p.zexag_text);
 }
 
 } // namespace

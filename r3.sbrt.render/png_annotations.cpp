@@ -21,6 +21,7 @@ using sbrt_grass::legend_text;
 using sbrt_grass::length_text;
 using sbrt_grass::nice_length;
 using sbrt_grass::select_font;
+using sbrt_grass::show_text;
 using sbrt_grass::text_width;
 
 namespace {
@@ -54,7 +55,7 @@ void draw_scale_bar(cairo_t *cr, const Layout &l, double length, const std::stri
     cairo_set_line_width(cr, 1);
     cairo_stroke(cr);
     cairo_move_to(cr, left, bottom - 0.4 * l.font);
-    cairo_show_text(cr, ("0 - " + text).c_str());
+    show_text(cr, "0 - " + text);
 }
 
 /// The panel's contents, measured before it is drawn.
@@ -159,7 +160,7 @@ void draw_title(cairo_t *cr, const PngAnnotations &a, double x, double y)
     select_font(cr, true);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, x, y);
-    cairo_show_text(cr, a.title.c_str());
+    show_text(cr, a.title);
     select_font(cr);
 }
 
@@ -173,11 +174,11 @@ void draw_color_bar(cairo_t *cr, const Layout &l, const PngAnnotations &a, const
     draw_title(cr, a, x, y);
     y += l.line;
     cairo_move_to(cr, x, y);
-    cairo_show_text(cr, Panel::bar_heading(b).c_str());
+    show_text(cr, Panel::bar_heading(b));
     if (!b.unit.empty()) {
         y += l.line;
         cairo_move_to(cr, x, y);
-        cairo_show_text(cr, Panel::bar_unit(b).c_str());
+        show_text(cr, Panel::bar_unit(b));
     }
     if (p.bar_height <= 0 || b.colors.empty())
         return;
@@ -196,9 +197,9 @@ void draw_color_bar(cairo_t *cr, const Layout &l, const PngAnnotations &a, const
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, x + width + l.pad, top + 0.8 * l.font);
-    cairo_show_text(cr, Panel::value_text(b.high).c_str());
+    show_text(cr, Panel::value_text(b.high));
     cairo_move_to(cr, x + width + l.pad, top + height);
-    cairo_show_text(cr, Panel::value_text(b.low).c_str());
+    show_text(cr, Panel::value_text(b.low));
     // no value
     const double swatch = std::round(l.font), row = top + height + l.line;
     cairo_rectangle(cr, std::round(x) + 0.5, std::round(row - 0.9 * l.font) + 0.5, swatch,
@@ -210,7 +211,7 @@ void draw_color_bar(cairo_t *cr, const Layout &l, const PngAnnotations &a, const
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, x + l.font + l.pad, row);
-    cairo_show_text(cr, "no value");
+    show_text(cr, "no value");
 }
 
 void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Panel &p,
@@ -237,7 +238,7 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
     if (p.more) {
         y += l.line;
         cairo_move_to(cr, x, y);
-        cairo_show_text(cr, p.more_text().c_str());
+        show_text(cr, p.more_text());
     }
     if (a.bar)
         draw_color_bar(cr, l, a, p, x, y);
@@ -245,7 +246,7 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
         y += l.line;
         cairo_set_source_rgb(cr, 0, 0, 0);
         cairo_move_to(cr, x, y);
-        cairo_show_text(cr, a.caption.c_str());
+        show_text(cr, a.caption);
     }
 
     // from the bottom up: scale bar, exaggeration, north arrow
@@ -257,7 +258,7 @@ void draw_panel(cairo_t *cr, const Layout &l, const PngAnnotations &a, const Pan
     if (!p.zexag.empty()) {
         cairo_set_source_rgb(cr, 0, 0, 0);
         cairo_move_to(cr, x, bottom - 0.3 * l.font);
-        cairo_show_text(cr, p.zexag.c_str());
+        show_text(cr, p.zexag);
         bottom -= l.line;
     }
     if (a.north)

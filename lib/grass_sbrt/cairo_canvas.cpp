@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 namespace sbrt_grass {
 
@@ -68,7 +69,7 @@ void draw_legend_entry(cairo_t *cr, const LegendClass &c, double x, double y, do
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, x + font + pad, y);
-    cairo_show_text(cr, legend_text(c).c_str());
+    show_text(cr, legend_text(c));
 }
 
 void select_font(cairo_t *cr, bool bold)
@@ -79,9 +80,19 @@ void select_font(cairo_t *cr, bool bold)
 
 double text_width(cairo_t *cr, const std::string &text)
 {
+    return text_extents(cr, text).x_advance;
+}
+
+void show_text(cairo_t *cr, const std::string &text)
+{
+    cairo_show_text(cr, sbrt::valid_utf8(text).c_str());
+}
+
+cairo_text_extents_t text_extents(cairo_t *cr, const std::string &text)
+{
     cairo_text_extents_t extents;
-    cairo_text_extents(cr, text.c_str(), &extents);
-    return extents.x_advance;
+    cairo_text_extents(cr, sbrt::valid_utf8(text).c_str(), &extents);
+    return extents;
 }
 
 void draw_north_arrow(cairo_t *cr, glm::dvec2 north, glm::dvec2 centre, double length,

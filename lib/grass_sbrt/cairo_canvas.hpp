@@ -59,6 +59,12 @@ void draw_legend_entry(cairo_t *cr, const LegendClass &c, double x, double y, do
 void select_font(cairo_t *cr, bool bold = false);
 /// How far `text` advances at the current font.
 double text_width(cairo_t *cr, const std::string &text);
+/// cairo_show_text of `text` made valid UTF-8 first: one bad byte puts the
+/// cairo context in an error state that draws nothing after it (issue 48,
+/// item 9), and labels come from files another user may have written.
+void show_text(cairo_t *cr, const std::string &text);
+/// cairo_text_extents of `text` made valid UTF-8 first (as show_text).
+cairo_text_extents_t text_extents(cairo_t *cr, const std::string &text);
 /// An arrow `length` pixels long centred on `centre`, pointing along `north`
 /// (unit, image directions: x right, y down): a shaft, a head, a bold N
 /// beyond its tip at `font` pixels; lines `scale` pixels wide times two.

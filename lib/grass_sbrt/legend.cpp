@@ -7,6 +7,7 @@
 
 #include "model/material_table.hpp"
 #include "raster_metadata.hpp"
+#include "util/safe_text.hpp"
 
 namespace sbrt_grass {
 
@@ -31,7 +32,7 @@ void read_raster3d_legend(const char *name, const char *mapset,
         if (have_cats && m.label.empty()) {
             const char *label = Rast_get_c_cat(&id, &cats);
             if (label)
-                m.label = label;
+                m.label = sbrt::valid_utf8(label);
         }
     }
     if (have_colors)
