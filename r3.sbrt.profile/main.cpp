@@ -8,11 +8,9 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -138,13 +136,7 @@ void print_shell(const sbrt::ProfileLine &line, const std::optional<ProfileGrid>
     for (int32_t id : layout.classes_cut)
         cut += (cut.empty() ? "" : ",") + std::to_string(id);
     std::printf("classes_cut=%s\n", cut.c_str());
-    // a full disk or a closed pipe: an error, not a silent success
-    errno = 0;
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        const int cause = errno;
-        G_fatal_error(_("cannot write to standard output: %s"),
-                      cause ? std::strerror(cause) : _("a write failed"));
-    }
+    // (a failed write fails the module in run_reporting_errors)
 }
 
 void run(const ProfileRequest &request)

@@ -57,14 +57,15 @@ void write_logs(const WhatRequest &request, const LogSource &source,
         write_csv_logs(out, source, logs);
     else
         write_plain_logs(out, source, logs);
-    // a full disk or /dev/full shows in the stream's error flag or in the
-    // last flush: the logs are incomplete, which must not end with status 0
+    // a full disk shows in the stream's error flag or in the close: the
+    // logs are incomplete, which must not end with status 0 (standard
+    // output is checked for every module by run_reporting_errors)
+    if (to_stdout)
+        return;
     errno = 0;
     const bool failed = std::ferror(out) != 0;
-    const bool unflushed = (to_stdout ? std::fflush(out) : std::fclose(out)) != 0;
-    if (failed || unflushed)
-        sbrt::fail("Unable to write the logs to ", to_stdout ? "standard output" : "file <",
-                   to_stdout ? "" : request.output, to_stdout ? "" : ">",
+    if (std::fclose(out) != 0 || failed)
+        sbrt::fail("Unable to write the logs to file <", request.output, ">",
                    errno ? std::string(": ") + std::strerror(errno) : std::string());
 }
 

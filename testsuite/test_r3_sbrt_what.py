@@ -494,7 +494,7 @@ class TestWhatHostileInput(TestCase):
                     what_args(input="hostile", coordinates=[5, 55], format=fmt),
                     stdout=full, stderr=subprocess.PIPE, text=True, timeout=120)
             self.assertNotEqual(run.returncode, 0, fmt)
-            self.assertIn("Unable to write the logs to standard output",
+            self.assertIn("Cannot write to standard output: No space left on device",
                           " ".join(run.stderr.split()))
 
 
