@@ -17,19 +17,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-/// A CSV field (RFC 4180): valid UTF-8 without control characters (a
-/// label's escape sequence must not reach a terminal), quoted where it
-/// holds a comma or a quote, each quote doubled.
-std::string csv_field(const std::string &text)
-{
-    const std::string s = sbrt::printable(text);
-    if (s.find_first_of(",\"") == std::string::npos)
-        return s;
-    std::string out = "\"";
-    for (const char c : s)
-        out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
+using sbrt::csv_field;
 
 /// A number for CSV: 17 significant digits; nan, inf and -inf as such.
 std::string csv_number(double value)

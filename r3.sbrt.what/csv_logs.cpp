@@ -12,20 +12,7 @@
 
 namespace {
 
-/// A text of the model (label, channel name) as a csv field: printable
-/// (valid UTF-8, control characters and line breaks U+FFFD: a csv read
-/// in a terminal takes no escape sequence from a label), then quoted,
-/// quotes doubled, where it holds a comma or a quote (RFC 4180).
-std::string csv_field(const std::string &text)
-{
-    const std::string safe = sbrt::printable(text);
-    if (safe.find_first_of(",\"\r\n") == std::string::npos)
-        return safe;
-    std::string out = "\"";
-    for (const char c : safe)
-        out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
+using sbrt::csv_field;
 
 /// A number as a csv field: empty where it is none (nan, +-inf).
 std::string csv_number(double value)

@@ -80,6 +80,16 @@ TEST(SafeText, ShellWordIsReadBackAndRunsNothing)
     EXPECT_EQ(shell_word("line\nbreak"), "'line" + FFFD + "break'");
 }
 
+TEST(SafeText, CsvFieldIsQuotedWhereItMustBe)
+{
+    EXPECT_EQ(csv_field("clay"), "clay");
+    EXPECT_EQ(csv_field("clay, stiff"), "\"clay, stiff\"");
+    EXPECT_EQ(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+    EXPECT_EQ(csv_field("a;b", ';'), "\"a;b\"");
+    EXPECT_EQ(csv_field("a,b", ';'), "a,b");
+    EXPECT_EQ(csv_field("line\nbreak\x1b"), "line" + FFFD + "break" + FFFD);
+}
+
 TEST(SafeText, FitBytesCutsOnACharacterBoundary)
 {
     EXPECT_EQ(fit_bytes("short", 10), "short");

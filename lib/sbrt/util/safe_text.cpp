@@ -144,6 +144,17 @@ std::string record_field(std::string_view text)
     return field;
 }
 
+std::string csv_field(std::string_view text, char separator)
+{
+    const std::string safe = printable(text);
+    if (safe.find(separator) == std::string::npos && safe.find('"') == std::string::npos)
+        return safe;
+    std::string field = "\"";
+    for (const char c : safe)
+        field += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return field + "\"";
+}
+
 std::string fit_bytes(std::string_view text, std::size_t max_bytes)
 {
     if (text.size() <= max_bytes)

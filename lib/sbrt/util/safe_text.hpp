@@ -41,6 +41,11 @@ std::string shell_word(std::string_view text);
 /// bar), so that splitting the record at '|' finds its fields.
 std::string record_field(std::string_view text);
 
+/// \brief `text` as one field of a CSV line (RFC 4180): printable (a
+/// label's escape sequence must not reach a terminal that shows the file),
+/// quoted where it holds `separator` or a quote, each quote doubled.
+std::string csv_field(std::string_view text, char separator = ',');
+
 /// \brief The longest prefix of valid UTF-8 `text` of at most `max_bytes`
 /// bytes that ends on a character boundary; "..." ends it when it was cut
 /// and there is room for it.
