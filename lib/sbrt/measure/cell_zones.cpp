@@ -50,11 +50,33 @@ CellZones CellZones::in_window(const Frame &frame, const GridWindow &window)
     return z;
 }
 
+CellZones CellZones::from_cells(const Frame &frame, int zones,
+                                std::vector<int32_t> zone_of_cell)
+{
+    CellZones z = none(frame, zones);
+    if (zone_of_cell.size() != z.zone_.size())
+        fail("CellZones::from_cells: ", zone_of_cell.size(), " zones for ", z.zone_.size(),
+             " cells");
+    for (const int32_t zone : zone_of_cell)
+        if (zone != NO_ZONE && (zone < 0 || zone >= zones))
+            fail("CellZones::from_cells: zone ", zone, " not in 0 .. ", zones - 1);
+    z.zone_ = std::move(zone_of_cell);
+    return z;
+}
+
 void CellZones::add_polygon(const Polygon &polygon, int32_t zone, const CellZones *within)
 {
     if (zone < 0 || zone >= zones_)
         fail("CellZones::add_polygon: zone ", zone, " not in 0 .. ", zones_ - 1);
-    const Frame &f = frame_;
+    for_each_cell_in_polygon(frame_, polygon, [&](size_t cell) {
+        if (!within || within->zone_[cell] != NO_ZONE)
+            zone_[cell] = zone;
+    });
+}
+
+void for_each_cell_in_polygon(const Frame &f, const Polygon &polygon,
+                              const std::function<void(size_t cell)> &visit)
+{
     const double ns = f.ns_res(), ew = f.ew_res();
     // the rows whose centre line may cross the polygon
     double low = INFINITY, high = -INFINITY;
@@ -86,11 +108,8 @@ void CellZones::add_polygon(const Polygon &polygon, int32_t zone, const CellZone
             const double c1 = std::ceil((crossings[k + 1] - f.west) / ew - 0.5);
             const int from = int(std::max(0.0, c0));
             const int to = int(std::min(double(f.cols), c1));
-            for (int c = from; c < to; ++c) {
-                const size_t cell = size_t(r) * size_t(f.cols) + size_t(c);
-                if (!within || within->zone_[cell] != NO_ZONE)
-                    zone_[cell] = zone;
-            }
+            for (int c = from; c < to; ++c)
+                visit(size_t(r) * size_t(f.cols) + size_t(c));
         }
     }
 }

@@ -9,6 +9,7 @@
 #define SBRT_CELL_ZONES_HPP
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "measure/centre_sampling.hpp"
@@ -24,6 +25,13 @@ struct RingPoint {
 /// not (the last point joins the first either way).
 using Polygon = std::vector<std::vector<RingPoint>>;
 
+/// \brief Calls `visit(cell)` for each cell of `frame` (row-major index)
+/// whose centre lies inside `polygon`, even-odd over all its rings (inside
+/// the outer ring, outside every hole), filled scanline by scanline over
+/// the polygon's rows only.
+void for_each_cell_in_polygon(const Frame &frame, const Polygon &polygon,
+                              const std::function<void(size_t cell)> &visit);
+
 /// \brief A zone (0 .. zones - 1) per model cell, or NO_ZONE where the
 /// cell does not count.
 class CellZones {
@@ -36,6 +44,9 @@ public:
     static CellZones in_window(const Frame &frame, const GridWindow &window);
     /// No cell counts yet; zones 0 .. zones - 1 to be drawn with add_polygon.
     static CellZones none(const Frame &frame, int zones);
+    /// Zone `zone_of_cell[cell]` (or NO_ZONE) for each cell of `frame`.
+    static CellZones from_cells(const Frame &frame, int zones,
+                                std::vector<int32_t> zone_of_cell);
 
     /// Cells whose centre lies inside `polygon` (even-odd over all its
     /// rings: inside the outer ring, outside every hole) and that count
