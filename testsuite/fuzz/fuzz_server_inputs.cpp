@@ -69,6 +69,7 @@ struct Server {
                 std::abort();
             close(fd);
             setenv("GISRC", path, 1);
+            std::atexit([] { unlink(path); });
         }
         G_no_gisinit();
         G_set_program_name("r3.sbrt.render");
