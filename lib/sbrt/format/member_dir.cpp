@@ -17,32 +17,15 @@
 #include <algorithm>
 
 #include "util/error.hpp"
+#include "util/user_file.hpp"
 
 namespace sbrt {
 
 namespace {
 
-/// What a file of type `mode` is, for "… is a FIFO, not a regular file".
-const char *kind_of(mode_t mode)
-{
-    if (S_ISLNK(mode))
-        return "a symbolic link";
-    if (S_ISDIR(mode))
-        return "a directory";
-    if (S_ISFIFO(mode))
-        return "a FIFO (named pipe)";
-    if (S_ISSOCK(mode))
-        return "a socket";
-    if (S_ISCHR(mode))
-        return "a character device";
-    if (S_ISBLK(mode))
-        return "a block device";
-    return "not a regular file";
-}
-
 [[noreturn]] void refuse(const std::string &what, mode_t mode)
 {
-    fail(what, ": ", kind_of(mode),
+    fail(what, ": ", file_kind(mode),
          ", not a regular file (an SBRT holds regular files only)");
 }
 

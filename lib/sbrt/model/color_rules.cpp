@@ -5,14 +5,10 @@
  ****************************************************************************/
 #include "model/color_rules.hpp"
 
-#include <sys/stat.h>
-
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 
-#include "format/member_dir.hpp"
+#include "util/user_file.hpp"
 #include "util/error.hpp"
 #include "util/safe_text.hpp"
 
@@ -39,24 +35,6 @@ constexpr const char *SYNTAX =
     "not a colour rule 'value colour' (value a number, a percentage such as 50%, nv "
     "or default; colour red:green:blue with components 0-255, #RRGGBB or a colour "
     "name such as red or grey)";
-
-/// What a file that is not a regular one is.
-const char *kind_of(mode_t mode)
-{
-    if (S_ISLNK(mode))
-        return "a symbolic link";
-    if (S_ISDIR(mode))
-        return "a directory";
-    if (S_ISFIFO(mode))
-        return "a FIFO (named pipe)";
-    if (S_ISSOCK(mode))
-        return "a socket";
-    if (S_ISCHR(mode))
-        return "a character device";
-    if (S_ISBLK(mode))
-        return "a block device";
-    return "not a regular file";
-}
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -235,49 +213,15 @@ ColorRules parse_color_rules(std::string_view text, const std::string &what_give
 ColorRules read_color_rules_file(const std::string &path, const std::string &what)
 {
     const std::string named = printable(what);
-    // a FIFO, device or link is refused before it is opened (opening a FIFO
-    // waits for a writer; reading /dev/zero never ends)
-    struct stat st;
-    if (lstat(path.c_str(), &st) != 0)
-        fail(named, ": cannot read: ", std::strerror(errno));
-    if (!S_ISREG(st.st_mode))
-        fail(named, ": ", kind_of(st.st_mode),
-             ", not a regular file: give a colour rules file");
-    // and checked again on what is opened (no link, no FIFO swapped in)
-    FileDescriptor fd = [&] {
-        try {
-            return open_regular_file(path);
-        }
-        catch (const Error &e) {
-            fail(named, ": ", e.what());
-        }
-    }();
-    const uint64_t size = regular_file_size(fd, named);
-    if (size > MAX_COLOR_RULES_BYTES)
-        fail(named, ": ", size, " bytes, larger than a colour rules file may be (",
-             MAX_COLOR_RULES_BYTES, " bytes)");
-    const std::vector<uint8_t> bytes = read_all(fd, named);
-    return parse_color_rules(
-        std::string_view(reinterpret_cast<const char *>(bytes.data()), bytes.size()), named);
+    // a FIFO, a device or a directory is refused at once, the size bounded
+    const std::string text = read_user_file(path, MAX_COLOR_RULES_BYTES, named);
+    return parse_color_rules(text, named);
 }
 
 ColorRules read_color_rules_stream(std::FILE *stream, const std::string &what)
 {
-    std::string text;
-    char buffer[1 << 16];
-    for (;;) {
-        const size_t n = std::fread(buffer, 1, sizeof buffer, stream);
-        text.append(buffer, n);
-        if (text.size() > MAX_COLOR_RULES_BYTES)
-            fail(printable(what), ": more than ", MAX_COLOR_RULES_BYTES,
-                 " bytes, more than a colour rules file may be");
-        if (n < sizeof buffer) {
-            if (std::ferror(stream))
-                fail(printable(what), ": cannot read");
-            break;
-        }
-    }
-    return parse_color_rules(text, what);
+    const std::string named = printable(what);
+    return parse_color_rules(read_to_end(fileno(stream), MAX_COLOR_RULES_BYTES, named), named);
 }
 
 } // namespace sbrt
