@@ -7,6 +7,8 @@
 
 #include <fnmatch.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 
@@ -60,6 +62,92 @@ bool parse_rgb(const std::string &text, ClassStyle &style)
     style.blue = uint8_t(channel[2]);
     style.has_color = true;
     return true;
+}
+
+bool same_text(const std::string &a, const std::string &b)
+{
+    return a.size() == b.size() &&
+           std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+/// "alias: ID NAME[, NAME...]": other names of class ID (its code, a short
+/// name); commas part them, as GRASS parts a list option's answers.
+void add_aliases(SurveyPreset &p, const std::string &rest, const std::string &what,
+                 int number)
+{
+    const auto gap = rest.find_first_of(" \t");
+    ClassAlias alias;
+    if (gap == std::string::npos || !parse_id(rest.substr(0, gap), alias.id))
+        fail(what, " line ", number, ": expected alias: ID NAME[, NAME...]");
+    const std::string names = rest.substr(gap) + ",";
+    for (size_t start = 0, comma; (comma = names.find(',', start)) != std::string::npos;
+         start = comma + 1) {
+        alias.name = trim(names.substr(start, comma - start));
+        int32_t number_name;
+        if (alias.name.empty() || alias.name.size() > MAX_ALIAS_BYTES ||
+            printable(alias.name) != alias.name || parse_id(alias.name, number_name))
+            fail(what, " line ", number, ": alias '", fit_bytes(printable(alias.name), 80),
+                 "' must be a name of 1 to ", MAX_ALIAS_BYTES,
+                 " printable bytes that is not a number");
+        p.aliases.push_back(alias);
+    }
+}
+
+/// Each alias names a class of the preset, and one class only: no other
+/// class has it as alias or label.
+void check_aliases(const SurveyPreset &p, const std::string &what)
+{
+    for (size_t i = 0; i < p.aliases.size(); ++i) {
+        const ClassAlias &a = p.aliases[i];
+        bool known = false;
+        for (const ClassStyle &s : p.classes) {
+            known = known || (s.low == a.id && s.high == a.id);
+            if (s.has_label && same_text(s.label, a.name) && s.low != a.id)
+                fail(what, ": alias ", a.name, " of class ", a.id, " is the label of class ",
+                     s.low);
+        }
+        if (!known)
+            fail(what, ": alias ", a.name, " names class ", a.id,
+                 ", which has no class line");
+        for (size_t j = 0; j < i; ++j)
+            if (same_text(p.aliases[j].name, a.name) && p.aliases[j].id != a.id)
+                fail(what, ": alias ", a.name, " names both class ", p.aliases[j].id,
+                     " and class ", a.id);
+    }
+}
+
+} // namespace
+
+namespace {
+
+/// "channel: PATTERN KIND [UNIT]" (issue 51): what the property channels
+/// whose names match PATTERN are; a probability is in %.
+ChannelRule parse_channel_rule(const std::string &rest, const std::string &what,
+                               int number)
+{
+    std::vector<std::string> words;
+    for (size_t at = 0; at < rest.size();) {
+        const size_t start = rest.find_first_not_of(" \t", at);
+        if (start == std::string::npos)
+            break;
+        at = std::min(rest.size(), rest.find_first_of(" \t", start));
+        words.push_back(rest.substr(start, at - start));
+    }
+    ChannelRule rule;
+    if (words.size() < 2 || words.size() > 3 || !parse_channel_kind(words[1], rule.kind))
+        fail(what, " line ", number, ": expected channel: PATTERN KIND [UNIT], KIND one of ",
+             channel_kind_names());
+    rule.pattern = words[0];
+    rule.unit = words.size() == 3 ? valid_utf8(words[2]) : "";
+    if (rule.kind == ChannelKind::probability) {
+        if (!rule.unit.empty() && rule.unit != "%")
+            fail(what, " line ", number, ": a probability is in %, not in ", rule.unit);
+        rule.unit = "%";
+    }
+    return rule;
 }
 
 } // namespace
@@ -123,9 +211,13 @@ SurveyPreset parse_preset(std::istream &in, const std::string &what)
                     fail(what, " line ", number, ": expected match: ATTRIBUTE PATTERN");
                 p.matches.emplace_back(rest.substr(0, gap), trim(rest.substr(gap)));
             }
+            else if (key == "channel")
+                p.channels.push_back(parse_channel_rule(rest, what, number));
+            else if (key == "alias")
+                add_aliases(p, rest, what, number);
             else
                 fail(what, " line ", number, ": unknown key ", key,
-                     " (name, title, reference, variable, match)");
+                     " (name, title, reference, variable, match, alias, channel)");
             continue;
         }
         // id red:green:blue label
@@ -142,6 +234,7 @@ SurveyPreset parse_preset(std::istream &in, const std::string &what)
     if (p.name.empty() || p.reference.empty() || p.classes.empty())
         fail(what, ": a preset needs name:, reference: (where its legend comes from) "
                    "and at least one class line");
+    check_aliases(p, what);
     return p;
 }
 

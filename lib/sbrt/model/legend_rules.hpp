@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "model/property_channel.hpp"
 
 namespace sbrt {
 
@@ -33,6 +34,25 @@ struct ClassStyle {
 /// sbrt::Error "what line N: ..." on the first bad line.
 std::vector<ClassStyle> parse_category_rules(std::istream &in, const std::string &what);
 
+/// \brief Another name of a preset's class (an "alias:" line): the
+/// survey's own code (TNO's "zf", "BX") or a short name ("fine sand").
+struct ClassAlias {
+    int32_t id = 0;
+    std::string name;
+};
+
+/// Longest alias a preset may give (bytes).
+constexpr size_t MAX_ALIAS_BYTES = 64;
+
+/// \brief What a preset says about property channels (a "channel:" line,
+/// issue 51): those whose name matches `pattern` (fnmatch) are of `kind`,
+/// in `unit`, where the file gives them no unit.
+struct ChannelRule {
+    std::string pattern;
+    ChannelKind kind = ChannelKind::other;
+    std::string unit; ///< "" where the line gives none ("%" for a probability)
+};
+
 /// \brief A survey's published legend, with how its files identify
 /// themselves.
 struct SurveyPreset {
@@ -44,12 +64,18 @@ struct SurveyPreset {
     /// whose variable is one of `variables` is this survey when any holds
     std::vector<std::pair<std::string, std::string>> matches;
     std::vector<ClassStyle> classes;
+    std::vector<ClassAlias> aliases; ///< alias: lines, in file order
+    std::vector<ChannelRule> channels; ///< channel: lines, in file order
 };
 
 /// Parses a preset: "key: value" lines (name, title, reference, variable,
-/// match "ATTRIBUTE PATTERN"), then class lines "id red:green:blue label";
-/// '#' comments. Throws sbrt::Error "what line N: ..." where a line is bad
-/// or name/reference/classes are missing.
+/// match "ATTRIBUTE PATTERN", alias "ID NAME[, NAME...]"), then class
+/// lines "id red:green:blue label"; '#' comments. An alias is at most
+/// MAX_ALIAS_BYTES of printable UTF-8, no comma, not a whole number, and
+/// names one class of the preset only. Throws sbrt::Error "what line N:
+/// ..." where a line is bad or name/reference/classes are missing.
+/// "channel: PATTERN KIND [UNIT]" lines say what property channels are
+/// (ChannelRule; KIND one of channel_kind_names(), a probability in %).
 SurveyPreset parse_preset(std::istream &in, const std::string &what);
 
 /// Whether a variable `variable` of a file with global string attributes

@@ -1,0 +1,216 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The names a model's classes answer to in list options
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "model/class_names.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdlib>
+
+#include "model/survey_presets.hpp"
+#include "util/error.hpp"
+#include "util/safe_text.hpp"
+
+namespace sbrt {
+
+namespace {
+
+/// The longest list of classes an error message holds (bytes).
+constexpr size_t MAX_LISTED_BYTES = 16000;
+
+std::string trim(const std::string &s)
+{
+    const auto first = s.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos)
+        return "";
+    return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+bool same_text(const std::string &a, const std::string &b)
+{
+    return a.size() == b.size() &&
+           std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+/// `text` without commas, each run of blanks one space, trimmed.
+std::string without_commas(const std::string &text)
+{
+    std::string out;
+    bool blank = false;
+    for (char ch : text) {
+        if (ch == ',')
+            continue;
+        if (ch == ' ' || ch == '\t') {
+            blank = true;
+            continue;
+        }
+        if (blank && !out.empty())
+            out += ' ';
+        blank = false;
+        out += ch;
+    }
+    return out;
+}
+
+/// The class id `name` spells, where it is a whole integer of 32 bits.
+bool parse_id(const std::string &name, int32_t &id)
+{
+    if (name.empty())
+        return false;
+    char *end = nullptr;
+    errno = 0;
+    const long long value = std::strtoll(name.c_str(), &end, 10);
+    if (*end != '\0' || errno == ERANGE || value < INT32_MIN || value > INT32_MAX ||
+        value == NULL_CLASS)
+        return false;
+    id = int32_t(value);
+    return true;
+}
+
+/// The aliases preset `p` gives a class of id `id` labelled `label`: its
+/// alias: lines where the preset's class `id` has this label.
+void add_preset_aliases(const SurveyPreset &p, int32_t id, const std::string &label,
+                        std::vector<std::string> &out)
+{
+    const auto style = std::find_if(p.classes.begin(), p.classes.end(),
+                                    [&](const ClassStyle &s) {
+                                        return s.low == id && s.high == id;
+                                    });
+    if (style == p.classes.end() || !style->has_label ||
+        !same_text(trim(style->label), trim(label)))
+        return;
+    for (const ClassAlias &a : p.aliases)
+        if (a.id == id &&
+            std::none_of(out.begin(), out.end(),
+                         [&](const std::string &o) { return same_text(o, a.name); }))
+            out.push_back(a.name);
+}
+
+} // namespace
+
+ClassNames::ClassNames(const std::vector<Material> &materials)
+    : ClassNames(materials, survey_presets())
+{
+}
+
+ClassNames::ClassNames(const std::vector<Material> &materials,
+                       const std::vector<SurveyPreset> &presets)
+    : materials_(materials), aliases_(materials.size())
+{
+    for (size_t m = 1; m < materials_.size(); ++m) {
+        const Material &material = materials_[m];
+        if (material.label.empty())
+            continue;
+        for (const SurveyPreset &p : presets)
+            add_preset_aliases(p, material.id, material.label, aliases_[m]);
+        label_commas_ = std::max(
+            label_commas_, size_t(std::count(material.label.begin(), material.label.end(), ',')));
+    }
+}
+
+uint32_t ClassNames::find_label(const std::string &label) const
+{
+    for (uint32_t m = 1; m < materials_.size(); ++m)
+        if (!materials_[m].label.empty() && same_text(trim(materials_[m].label), label))
+            return m;
+    return EMPTY;
+}
+
+uint32_t ClassNames::find(const std::string &given) const
+{
+    const std::string name = trim(given);
+    if (name.empty())
+        return EMPTY;
+    int32_t id = 0;
+    if (parse_id(name, id))
+        for (uint32_t m = 1; m < materials_.size(); ++m)
+            if (materials_[m].id == id)
+                return m;
+    for (uint32_t m = 1; m < materials_.size(); ++m)
+        for (const std::string &alias : aliases_[m])
+            if (same_text(alias, name))
+                return m;
+    if (const uint32_t m = find_label(name))
+        return m;
+    const std::string bare = without_commas(name);
+    for (uint32_t m = 1; m < materials_.size(); ++m)
+        if (!materials_[m].label.empty() && same_text(without_commas(materials_[m].label), bare))
+            return m;
+    return EMPTY;
+}
+
+std::vector<uint32_t> ClassNames::resolve(const std::vector<std::string> &names,
+                                          const std::string &option,
+                                          const std::string &what) const
+{
+    std::vector<uint32_t> out;
+    for (size_t i = 0; i < names.size();) {
+        // a label GRASS parted at its commas: the longest run of answers
+        // that makes one (no label has more parts than label_commas_ + 1)
+        size_t taken = 0;
+        const size_t last = std::min(names.size() - 1, i + label_commas_);
+        for (size_t j = last; j > i && !taken; --j) {
+            std::string joined = names[i];
+            for (size_t k = i + 1; k <= j; ++k)
+                joined += "," + names[k];
+            if (const uint32_t m = find_label(trim(joined))) {
+                out.push_back(m);
+                taken = j - i + 1;
+            }
+        }
+        if (!taken) {
+            out.push_back(resolve_one(names[i], option, what));
+            taken = 1;
+        }
+        i += taken;
+    }
+    return out;
+}
+
+uint32_t ClassNames::resolve_one(const std::string &name, const std::string &option,
+                                 const std::string &what) const
+{
+    if (const uint32_t m = find(name))
+        return m;
+    fail(option, "=", fit_bytes(printable(trim(name)), 200), ": no class of ", what,
+         " has this id, code, short name or label; a label that holds commas may be "
+         "given as it is (quoted) or without its commas. The classes by id, "
+         "[other names] and label: ",
+         accepted());
+}
+
+std::string ClassNames::accepted() const
+{
+    std::vector<uint32_t> order;
+    for (uint32_t m = 1; m < materials_.size(); ++m)
+        order.push_back(m);
+    if (order.empty())
+        return "none (the model is empty)";
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return materials_[a].id < materials_[b].id;
+    });
+    std::string out;
+    for (size_t i = 0; i < order.size(); ++i) {
+        const Material &m = materials_[order[i]];
+        std::string entry = std::to_string(m.id);
+        const std::vector<std::string> &aliases = aliases_[order[i]];
+        for (size_t k = 0; k < aliases.size(); ++k)
+            entry += (k ? ", " : " [") + printable(aliases[k]) +
+                     (k + 1 == aliases.size() ? "]" : "");
+        if (!m.label.empty())
+            entry += " " + fit_bytes(printable(m.label), 300);
+        if (out.size() + entry.size() > MAX_LISTED_BYTES)
+            return out + "; and " + std::to_string(order.size() - i) +
+                   " more (r3.sbrt.convert -p sbrt=NAME lists them all)";
+        out += (i ? "; " : "") + entry;
+    }
+    return out;
+}
+
+} // namespace sbrt
