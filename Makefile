@@ -2,7 +2,7 @@
 # lib/sbrt_gl, then the modules, into ./dist. Not Dir.make: its "pre" target writes into the
 # system GISBASE on Debian and its subdirs loop swallows failures
 # (GRASS-NOTES.md 1.7).
-MODULE_TOPDIR ?= /usr/lib/grass82
+include lib/grass_topdir.make
 
 # lib/sbrt and lib/sbrt_gl: GRASS-free, one rule for every consumer
 # (lib/static_lib.make); lib/grass_sbrt and the modules: GRASS make

@@ -3,7 +3,7 @@
 # lib/sbrt_gl with EGL (and OSMesa) when the module sets SBRT_USES_GL, and
 # GRASS's vector and database libraries when it sets SBRT_USES_VECTOR, and
 # what it names in SBRT_EXTRA_LIBES.
-MODULE_TOPDIR ?= /usr/lib/grass82
+# MODULE_TOPDIR: set by the module Makefile (../lib/grass_topdir.make)
 
 SBRT_DIR = ../lib/sbrt
 GRASS_SBRT_DIR = ../lib/grass_sbrt

@@ -13,7 +13,7 @@ packages=(
     libglm-dev                       # vector maths
     libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
     libgtest-dev                     # unit tests
-    clang libclang-rt-14-dev         # libFuzzer and the sanitizers' runtimes
+    clang libclang-rt-dev            # libFuzzer and the sanitizers' runtimes
     valgrind                         # memcheck of the modules
     libpng-dev                       # the PNG file of a render
     nlohmann-json3-dev               # JSON output written by a library: valid by construction
