@@ -116,7 +116,8 @@ std::string point_text(const Json &point)
     return text + "\n  }";
 }
 
-/// The layers of a point's column (gaps left out), top down.
+/// The layers of a point's column (gaps left out), top down, with the
+/// depths of their tops and bottoms below the surface.
 Json json_intervals(const sbrt::Model &model, const PointLog &p)
 {
     Json intervals = Json::array();
@@ -129,7 +130,9 @@ Json json_intervals(const sbrt::Model &model, const PointLog &p)
                                  {"label", json_text(m.label)},
                                  {"top", json_number(e.top)},
                                  {"bottom", json_number(e.bottom)},
-                                 {"thickness", json_number(e.thickness())}});
+                                 {"thickness", json_number(e.thickness())},
+                                 {"top_depth", json_number(*surface_of(p) - e.top)},
+                                 {"bottom_depth", json_number(*surface_of(p) - e.bottom)}});
         }
     return intervals;
 }
@@ -139,6 +142,10 @@ Json json_intervals(const sbrt::Model &model, const PointLog &p)
 Json json_voxels(const LogSource &source, const PointLog &p)
 {
     Json voxels = Json::array();
+    const std::optional<double> surface = surface_of(p);
+    const auto depth = [&](double height) {
+        return surface ? json_number(*surface - height) : Json(nullptr);
+    };
     for (const sbrt::VoxelValues &v : p.voxels) {
         Json values = Json::object();
         for (size_t c = 0; c < v.values.size(); ++c)
@@ -147,6 +154,8 @@ Json json_voxels(const LogSource &source, const PointLog &p)
             {{"level", v.level},
              {"top", json_number(v.top)},
              {"bottom", json_number(v.bottom)},
+             {"top_depth", depth(v.top)},
+             {"bottom_depth", depth(v.bottom)},
              {"class", v.material == sbrt::EMPTY
                            ? Json(nullptr)
                            : Json(material_of(source.model, v.material).id)},
@@ -167,6 +176,13 @@ Json json_point(const LogSource &source, size_t index, const PointLog &p)
     point["status"] = point_status(p);
     point["row"] = p.log ? Json(p.log->cell.row) : Json(nullptr);
     point["col"] = p.log ? Json(p.log->cell.col) : Json(nullptr);
+    // the heights' unit and datum (null where the model has none) and the
+    // surface the depths are measured from (null without layers)
+    point["elevation_unit"] = source.elevation_unit;
+    point["vertical_datum"] =
+        vertical_datum(source).empty() ? Json(nullptr) : json_text(vertical_datum(source));
+    const std::optional<double> surface = surface_of(p);
+    point["surface"] = surface ? json_number(*surface) : Json(nullptr);
     point["intervals"] = json_intervals(source.model, p);
     if (!source.channels.empty())
         point["voxels"] = json_voxels(source, p);

@@ -3,8 +3,8 @@
  * AUTHOR(S): r3.sbrt authors
  * PURPOSE:   Logs the column of an SBRT under points, as r.what queries
  *            rasters: every layer top to bottom with its class, label,
- *            top, bottom and thickness at the model's heights (a virtual
- *            borehole)
+ *            top, bottom and thickness at the model's heights with their
+ *            datum, and depths below the surface (a virtual borehole)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
@@ -69,14 +69,38 @@ void write_logs(const WhatRequest &request, const LogSource &source,
                    errno ? std::string(": ") + std::strerror(errno) : std::string());
 }
 
+/// The unit of the location's heights as the logs name it: "m", "ft",
+/// "ftUS"; "map units" in an XY location.
+std::string elevation_unit()
+{
+    if (G_projection() == PROJECTION_XY)
+        return "map units";
+    switch (G_database_unit()) {
+    case U_METERS:
+        return "m";
+    case U_FEET:
+        return "ft";
+    case U_USFEET:
+        return "ftUS";
+    default:
+        return G_database_unit_name(TRUE);
+    }
+}
+
 void run(const WhatRequest &request)
 {
     const std::vector<QueryPoint> points = query_points(request);
     const sbrt::Model model = read_model_under(request.input, points);
-    // the property channels, where the model has them: only the blocks
+    // the property channels, where the model has them and the output
+    // shows them (json always, plain and csv with -v): only the blocks
     // under the points are decoded
-    const auto channels = sbrt_grass::read_channels_map(request.input.c_str(), model);
+    const bool show_voxels = request.voxels || request.format == LogFormat::json;
+    const auto channels = show_voxels
+                              ? sbrt_grass::read_channels_map(request.input.c_str(), model)
+                              : nullptr;
     LogSource source{model, {}};
+    source.elevation_unit = elevation_unit();
+    source.voxel_rows = request.voxels;
     if (channels)
         source.channels = channels->infos();
     std::vector<PointLog> logs(points.size());
@@ -113,8 +137,9 @@ int main(int argc, char *argv[])
     module->description =
         _("Lists every layer of a stack-based terrain model (SBRT) under the "
           "given points, top to bottom, with class, label, top, bottom and "
-          "thickness at the model's heights, and the property channels voxel "
-          "by voxel where the model has them.");
+          "thickness at the model's heights (with their vertical datum) and "
+          "depths below the surface, and the property channels voxel by voxel "
+          "where the model has them.");
     const WhatOptions options = define_what_options();
     sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
     if (G_parser(argc, argv))

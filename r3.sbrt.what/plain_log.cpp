@@ -1,7 +1,8 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.what
  * PURPOSE:   format=plain: a log per point as a borehole log reads, top to
- *            bottom, with the gaps (caves, air under overhangs) in place
+ *            bottom, with the gaps (caves, air under overhangs) in place,
+ *            elevations with their datum and depths below the surface
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
@@ -25,8 +26,11 @@ int height_decimals(const sbrt::Frame &frame)
     return 9;
 }
 
-/// The point's first line: where it is and what its column holds.
-void write_heading(FILE *out, size_t index, const PointLog &p, int decimals)
+/// The point's first lines: where it is and what its column holds, from
+/// which height down to which; the heights' unit and datum and the
+/// surface the depths are measured from.
+void write_heading(FILE *out, const LogSource &source, size_t index, const PointLog &p,
+                   int decimals)
 {
     std::fprintf(out, "Point %zu at %s, %s", index + 1, number_text(p.point.x).c_str(),
                  number_text(p.point.y).c_str());
@@ -41,13 +45,19 @@ void write_heading(FILE *out, size_t index, const PointLog &p, int decimals)
         std::fprintf(out, ": empty (no layers)\n");
         return;
     }
+    // the datum is another mapset's text: printable
+    const std::string reference = sbrt::printable(elevation_reference(source));
     const size_t layers = p.log->layer_count();
     const size_t gaps = p.log->entries.size() - layers;
     std::fprintf(out, ": %zu layer%s", layers, layers == 1 ? "" : "s");
     if (gaps)
         std::fprintf(out, ", %zu gap%s", gaps, gaps == 1 ? "" : "s");
-    std::fprintf(out, " from %.*f down to %.*f\n", decimals, p.log->entries.front().top,
-                 decimals, p.log->entries.back().bottom);
+    std::fprintf(out, " from %.*f down to %.*f %s\n", decimals, p.log->entries.front().top,
+                 decimals, p.log->entries.back().bottom, reference.c_str());
+    std::fprintf(out, "Elevations in %s%s; depths below the surface at %.*f %s (the top "
+                 "of the highest layer)\n",
+                 reference.c_str(), vertical_datum(source).empty() ? " (no vertical datum)" : "",
+                 decimals, *surface_of(p), reference.c_str());
 }
 
 /// The point's voxels, top down: heights, class ("-" in a cave) and each
@@ -90,21 +100,23 @@ void write_plain_logs(FILE *out, const LogSource &source, const std::vector<Poin
         if (i)
             std::fputc('\n', out);
         const PointLog &p = logs[i];
-        write_heading(out, i, p, decimals);
+        write_heading(out, source, i, p, decimals);
         if (!p.log || p.log->is_empty())
             continue;
-        std::fprintf(out, "%*s %*s %*s %6s  %s\n", width, "top", width, "bottom", width,
-                     "thickness", "class", "label");
+        const double surface = *surface_of(p);
+        std::fprintf(out, "%*s %*s %*s %*s %*s %6s  %s\n", width, "top", width, "bottom", width,
+                     "thickness", width, "top depth", width, "bottom depth", "class", "label");
         for (const sbrt::LogEntry &e : p.log->entries) {
-            std::fprintf(out, "%*.*f %*.*f %*.*f ", width, decimals, e.top, width, decimals,
-                         e.bottom, width, decimals, e.thickness());
+            std::fprintf(out, "%*.*f %*.*f %*.*f %*.*f %*.*f ", width, decimals, e.top, width,
+                         decimals, e.bottom, width, decimals, e.thickness(), width, decimals,
+                         surface - e.top + 0.0, width, decimals, surface - e.bottom);
             if (e.is_gap())
                 std::fprintf(out, "%6s  %s\n", "", "(gap)");
             else
                 std::fprintf(out, "%6d  %s\n", material_of(model, e.material).id,
                              sbrt::printable(material_of(model, e.material).label).c_str());
         }
-        if (!p.voxels.empty())
+        if (source.voxel_rows && !p.voxels.empty())
             write_voxel_table(out, source, p, decimals);
     }
 }

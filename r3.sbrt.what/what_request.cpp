@@ -48,6 +48,15 @@ WhatOptions define_what_options()
     o.output->description = _("Name for output file (if omitted or \"-\" output to stdout)");
     o.output->guisection = _("Output");
 
+    o.voxels = G_define_flag();
+    o.voxels->key = 'v';
+    o.voxels->label = _("Print each property channel voxel by voxel");
+    o.voxels->description =
+        _("plain: a table of the voxels after each point's layers; csv: a row per voxel "
+          "after each point's layers, told apart by the column kind (json lists the "
+          "voxels whatever this flag says)");
+    o.voxels->guisection = _("Output");
+
     G_option_required(o.coordinates, o.points, NULL);
     G_option_exclusive(o.coordinates, o.points, NULL);
     G_option_requires(o.where, o.points, NULL);
@@ -68,5 +77,6 @@ WhatRequest read_what_request(const WhatOptions &o)
                : format == "csv" ? LogFormat::csv
                                  : LogFormat::plain;
     r.output = o.output->answer ? o.output->answer : "";
+    r.voxels = o.voxels->answer;
     return r;
 }

@@ -14,6 +14,7 @@
 /// \brief The options, as G_define_option made them.
 struct WhatOptions {
     Option *input, *coordinates, *points, *layer, *where, *format, *output;
+    Flag *voxels; ///< -v: the property channels voxel by voxel
 };
 
 /// \brief How the logs are written.
@@ -34,6 +35,9 @@ struct WhatRequest {
     std::string layer, where;
     LogFormat format = LogFormat::plain;
     std::string output; ///< a file; empty or "-": standard output
+    /// -v: the voxel rows of the property channels in plain and csv (json
+    /// lists them under their own key whatever -v says)
+    bool voxels = false;
 };
 
 WhatOptions define_what_options();

@@ -3,7 +3,10 @@ MODULE:    testsuite/test_r3_sbrt_what.py (r3.sbrt addon)
 PURPOSE:   r3.sbrt.what against GRASS's own tools: the log of every column
            of a voxel model (caves, an overhang, empty columns, a lens) at
            UTM coordinates equals the voxels that r3.to.rast slices and
-           r.what read there; json and csv parsed and compared; a horizon
+           r.what read there, with the heights' unit and datum and depths
+           below the surface; property channels voxel by voxel in plain and
+           csv only with -v (csv's kind column tells the rows apart); json
+           and csv parsed and compared; a horizon
            model's continuous tops equal r.what on the horizons; vector
            points with layer= and where=; bad input fails clearly; hostile
            input (labels with control characters, quotes, commas and bytes
@@ -49,6 +52,10 @@ LABELS = {1: "Gneiss", 2: "Sand, fine", 3: 'Clay "K"', 4: "Peat"}
 
 KEYS = ["point", "x", "y", "cat", "status", "row", "col"]
 INTERVAL_KEYS = ["class", "label", "top", "bottom", "thickness"]
+# json's and csv's: depths below the surface (the top of the highest layer)
+DEPTH_KEYS = ["top_depth", "bottom_depth"]
+# the heights' unit and vertical datum, on each json point and csv row
+DATUM_KEYS = ["elevation_unit", "vertical_datum"]
 
 
 def cell_centres():
@@ -89,24 +96,24 @@ def write_cats(name, labels):
             f.write(f"{k}:{label}\n")
 
 
-def what_args(**options):
-    return ["r3.sbrt.what"] + [
+def what_args(flags="", **options):
+    return ["r3.sbrt.what"] + (["-" + flags] if flags else []) + [
         f"{k}={','.join(map(str, v)) if isinstance(v, (list, tuple)) else v}"
         for k, v in options.items()
     ]
 
 
-def what(**options):
+def what(flags="", **options):
     """r3.sbrt.what's return code, standard output and messages."""
-    run = subprocess.run(what_args(**options), capture_output=True, text=True,
+    run = subprocess.run(what_args(flags, **options), capture_output=True, text=True,
                          timeout=120)
     # GRASS wraps its messages: one space between words
     return run.returncode, run.stdout, " ".join(run.stderr.split())
 
 
-def what_bytes(**options):
+def what_bytes(flags="", **options):
     """r3.sbrt.what's return code, standard output as bytes, messages."""
-    run = subprocess.run(what_args(**options), capture_output=True, timeout=120)
+    run = subprocess.run(what_args(flags, **options), capture_output=True, timeout=120)
     return run.returncode, run.stdout, " ".join(run.stderr.decode(errors="replace").split())
 
 
@@ -203,7 +210,13 @@ class TestWhatVoxelModel(TestCase):
         for k, (point, values) in enumerate(zip(points, self.voxels)):
             self.assertEqual(len(values), DEPTHS)
             ref = reference_log(values)
-            self.assertEqual(list(point.keys()), KEYS + ["intervals"])
+            self.assertEqual(list(point.keys()),
+                             KEYS + DATUM_KEYS + ["surface", "intervals"])
+            # an XY location, a model without a datum
+            self.assertEqual((point["elevation_unit"], point["vertical_datum"]),
+                             ("map units", None))
+            surface = ref[0][1] if ref else None
+            self.assertEqual(point["surface"], surface)
             self.assertEqual(point["point"], k + 1)
             self.assertEqual((point["row"], point["col"]), (k // COLS, k % COLS))
             self.assertEqual(point["status"], "ok" if ref else "empty")
@@ -211,12 +224,14 @@ class TestWhatVoxelModel(TestCase):
             got = point["intervals"]
             self.assertEqual(len(got), len(ref), f"point {k + 1}: {got} != {ref}")
             for interval, (cls_, top, bottom) in zip(got, ref):
-                self.assertEqual(list(interval.keys()), INTERVAL_KEYS)
+                self.assertEqual(list(interval.keys()), INTERVAL_KEYS + DEPTH_KEYS)
                 self.assertEqual(interval["class"], cls_, f"point {k + 1}")
                 self.assertEqual(interval["label"], LABELS[cls_])
                 self.assertAlmostEqual(interval["top"], top, places=9)
                 self.assertAlmostEqual(interval["bottom"], bottom, places=9)
                 self.assertAlmostEqual(interval["thickness"], top - bottom, places=9)
+                self.assertAlmostEqual(interval["top_depth"], surface - top, places=9)
+                self.assertAlmostEqual(interval["bottom_depth"], surface - bottom, places=9)
         self.assertEqual(statuses["empty"], 2)
 
     def test_plain_log_shows_gaps_and_empty_and_outside(self):
@@ -228,6 +243,17 @@ class TestWhatVoxelModel(TestCase):
         blocks = out.split("\n\n")
         self.assertEqual(len(blocks), 3)
         self.assertIn("row 2, col 3", blocks[0])
+        # the heights' unit and datum (an XY location, a model without one)
+        # and the surface the depths are measured from
+        lines = blocks[0].splitlines()
+        ref = reference_log(self.voxels[2 * COLS + 3])
+        surface = ref[0][1]
+        self.assertRegex(lines[0], r"from [-\d.]+ down to [-\d.]+ map units$")
+        self.assertEqual(lines[1], "Elevations in map units (no vertical datum); depths "
+                         f"below the surface at {surface:.3f} map units (the top of the "
+                         "highest layer)")
+        self.assertEqual(lines[2].split(), ["top", "bottom", "thickness", "top", "depth",
+                                            "bottom", "depth", "class", "label"])
         self.assertIn("(gap)", blocks[0])
         self.assertIn("1 gap", blocks[0])
         self.assertIn("empty (no layers)", blocks[1])
@@ -235,34 +261,39 @@ class TestWhatVoxelModel(TestCase):
         # the gap runs from the bottom of the layer above it to the top of
         # the layer below: voxels 25..30 (depth() from 1) are the cave
         gap = [line for line in blocks[0].splitlines() if "(gap)" in line][0]
-        top, bottom, thickness = map(float, gap.split()[:3])
+        top, bottom, thickness, top_depth, bottom_depth = map(float, gap.split()[:5])
         self.assertEqual((top, bottom), (BOTTOM + 30 * TB, BOTTOM + 24 * TB))
         self.assertEqual(thickness, 3.0)
-        # the layers of the plain log are the json's, top to bottom
-        layers = [
-            line.split() for line in blocks[0].splitlines()[2:] if "(gap)" not in line
-        ]
-        ref = reference_log(self.voxels[2 * COLS + 3])
-        self.assertEqual([int(f[3]) for f in layers], [r[0] for r in ref])
+        self.assertEqual((top_depth, bottom_depth), (surface - top, surface - bottom))
+        # the layers of the plain log are the json's, top to bottom, each
+        # with the depths of its top and bottom
+        layers = [line.split() for line in lines[3:] if "(gap)" not in line]
+        self.assertEqual([int(f[5]) for f in layers], [r[0] for r in ref])
         self.assertEqual([float(f[0]) for f in layers], [r[1] for r in ref])
+        self.assertEqual([(float(f[3]), float(f[4])) for f in layers],
+                         [(surface - r[1], surface - r[2]) for r in ref])
 
     def test_csv_has_a_row_per_layer_with_the_json_keys(self):
         coords = flat(cell_centres()[:16] + [(0, 0)])
         rc, out, err = what(input="what3d", coordinates=coords, format="csv")
         self.assertEqual(rc, 0, err)
         rows = list(csv.DictReader(io.StringIO(out)))
-        self.assertEqual(list(rows[0].keys()), KEYS + INTERVAL_KEYS)
+        self.assertEqual(list(rows[0].keys()), KEYS + INTERVAL_KEYS + DEPTH_KEYS + DATUM_KEYS)
+        self.assertEqual({(r["elevation_unit"], r["vertical_datum"]) for r in rows},
+                         {("map units", "")})
         points = self.json_logs(coordinates=coords)
         expected = []
         for p in points:
             head = [str(p["point"]), p["status"]]
             if not p["intervals"]:
-                expected.append(head + ["", "", "", ""])
+                expected.append(head + ["", "", "", "", "", ""])
             for i in p["intervals"]:
-                expected.append(head + [str(i["class"]), i["label"], i["top"], i["bottom"]])
+                expected.append(head + [str(i["class"]), i["label"], i["top"], i["bottom"],
+                                        i["top_depth"], i["bottom_depth"]])
+        number = lambda text: float(text) if text else ""  # noqa: E731
         got = [
-            [r["point"], r["status"], r["class"], r["label"],
-             float(r["top"]) if r["top"] else "", float(r["bottom"]) if r["bottom"] else ""]
+            [r["point"], r["status"], r["class"], r["label"], number(r["top"]),
+             number(r["bottom"]), number(r["top_depth"]), number(r["bottom_depth"])]
             for r in rows
         ]
         self.assertEqual(got, expected)
@@ -309,20 +340,42 @@ class TestWhatVoxelModel(TestCase):
         # the cave of row 3 has values, no class
         cave = points[2 * COLS + 3]["voxels"]
         self.assertIn(None, [v["class"] for v in cave])
-        # csv: the layer rows as before, then a row per voxel
+        # the voxels' depths below the column's surface
+        surface = points[2 * COLS + 3]["surface"]
+        self.assertEqual([(v["top_depth"], v["bottom_depth"]) for v in cave],
+                         [(surface - v["top"], surface - v["bottom"]) for v in cave])
+        # csv without -v: the layer rows alone, one kind of row
         one = flat(cell_centres()[2 * COLS + 3:2 * COLS + 4])
+        layer_count = len(reference_log(self.voxels[2 * COLS + 3]))
         rc, out, err = what(input="what3dp", format="csv", coordinates=one)
+        self.assertEqual(rc, 0, err)
         rows = list(csv.DictReader(io.StringIO(out)))
-        self.assertEqual(list(rows[0].keys()), KEYS + INTERVAL_KEYS + ["level", "whatp"])
-        voxel_rows = [r for r in rows if r["level"]]
+        self.assertEqual(list(rows[0].keys()), KEYS + INTERVAL_KEYS + DEPTH_KEYS + DATUM_KEYS)
+        self.assertEqual(len(rows), layer_count)
+        # csv with -v: the layer rows, then a row per voxel, told by "kind"
+        rc, out, err = what("v", input="what3dp", format="csv", coordinates=one)
+        self.assertEqual(rc, 0, err)
+        rows = list(csv.DictReader(io.StringIO(out)))
+        self.assertEqual(list(rows[0].keys()), KEYS + INTERVAL_KEYS + DEPTH_KEYS + DATUM_KEYS
+                         + ["kind", "level", "whatp"])
+        self.assertEqual([r["kind"] for r in rows],
+                         ["layer"] * layer_count + ["voxel"] * len(cave))
+        voxel_rows = [r for r in rows if r["kind"] == "voxel"]
+        self.assertTrue(all(r["level"] for r in voxel_rows))
+        self.assertFalse(any(r["level"] or r["whatp"] for r in rows if r["kind"] == "layer"))
         self.assertEqual([int(r["level"]) for r in voxel_rows],
                          [v["level"] for v in cave])
         self.assertEqual([float(r["whatp"]) if r["whatp"] else None for r in voxel_rows],
                          [v["values"]["whatp"] for v in cave])
-        self.assertEqual(len(rows) - len(voxel_rows),
-                         len(reference_log(self.voxels[2 * COLS + 3])))
-        # plain: a voxel table with the channel's name, * for no value
+        self.assertEqual([float(r["top_depth"]) for r in voxel_rows],
+                         [v["top_depth"] for v in cave])
+        # plain without -v: the layers alone
         rc, out, err = what(input="what3dp", coordinates=one)
+        self.assertEqual(rc, 0, err)
+        self.assertNotIn("Voxels", out)
+        self.assertEqual(len(out.splitlines()), 3 + layer_count + 1)  # and a gap
+        # plain with -v: a voxel table with the channel's name, * for no value
+        rc, out, err = what("v", input="what3dp", coordinates=one)
         self.assertIn("Voxels with their property channels", out)
         table = out.split("Voxels with their property channels, top down:\n")[1]
         lines = table.splitlines()
@@ -428,7 +481,7 @@ class TestWhatHostileInput(TestCase):
         text = out.decode("utf-8")
         self.assertIsNone(CONTROL.search(text), text)
         rows = list(csv.DictReader(io.StringIO(text, newline="")))
-        layer_rows = [r for r in rows if not r["level"] and r["point"] == "1"]
+        layer_rows = [r for r in rows if r["point"] == "1"]
         self.assertEqual([r["label"] for r in layer_rows],
                          ["Clay", self.HOSTILE_PRINTABLE, "Sand, fine"])
         rc, out, err = what_bytes(input="hostile", coordinates=coords)
@@ -444,9 +497,10 @@ class TestWhatHostileInput(TestCase):
         points = strict_json(out)
         values = [{v["values"]["hostile_p"] for v in p["voxels"]} for p in points]
         self.assertEqual(values, [{None}, {None}, {5e307}])
-        rc, out, err = what_bytes(input="hostile", coordinates=coords, format="csv")
+        rc, out, err = what_bytes("v", input="hostile", coordinates=coords, format="csv")
         self.assertEqual(rc, 0, err)
-        rows = [r for r in csv.DictReader(io.StringIO(out.decode("utf-8"))) if r["level"]]
+        rows = [r for r in csv.DictReader(io.StringIO(out.decode("utf-8")))
+                if r["kind"] == "voxel"]
         by_point = {}
         for r in rows:
             by_point.setdefault(r["point"], set()).add(r["hostile_p"])
