@@ -3,7 +3,10 @@
  * PURPOSE:   Property channels (issue 29): the `channels` member round
  *            trip is bit-exact (integers, floats, NaN, fills), blocks are
  *            decoded only when a cell of theirs is asked for, and a
- *            damaged or mismatched file is refused by name
+ *            damaged or mismatched file is refused by name; each channel's
+ *            kind (issue 51) is stored, derived from the unit in files of
+ *            1.0, set again with the blocks untouched, and set on import
+ *            by a survey preset's channel lines
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <cmath>
@@ -11,15 +14,20 @@
 #include <fstream>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "format/atomic_dir.hpp"
+#include "format/byte_io.hpp"
 #include "format/channels_file.hpp"
+#include "format/channels_rewrite.hpp"
 #include "format/format.hpp"
 #include "format/mapped_file.hpp"
+#include "model/legend_rules.hpp"
+#include "model/survey_presets.hpp"
 #include "test_support.hpp"
 #include "util/error.hpp"
 
@@ -299,4 +307,219 @@ TEST(PendingValues, HoldEveryValueBitExactlyWhileWideningAsValuesNeed)
     pending.floats(got);
     ASSERT_EQ(got.size(), 1u);
     EXPECT_TRUE(std::signbit(got[0]));
+}
+
+// ------------------------------------------------------- kinds (issue 51)
+
+namespace {
+
+/// `bytes` as channels file version 1.`minor` with its directory's last
+/// `drop` bytes removed and checksums made right again (a file as another
+/// writer would have written it).
+std::vector<uint8_t> resealed(std::vector<uint8_t> bytes, uint16_t minor, size_t drop)
+{
+    bytes.resize(bytes.size() - drop);
+    const uint64_t dir_at = load_le(&bytes[32], 8);
+    store_le(&bytes[10], minor, 2);
+    store_le(&bytes[40], bytes.size(), 8);
+    store_le(&bytes[48], crc32_of(bytes.data() + dir_at, bytes.size() - dir_at), 4);
+    store_le(&bytes[60], crc32_of(bytes.data(), 60), 4);
+    return bytes;
+}
+
+PropertyChannels open_channels(const std::string &path, const std::vector<uint8_t> &bytes,
+                               const Model &model)
+{
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+    return PropertyChannels(std::make_shared<const MappedFile>(path), path, model);
+}
+
+} // namespace
+
+TEST(ChannelKinds, AreStoredOrTakenFromTheUnit)
+{
+    const std::string dir = sbrt_test::temp_dir("channel_kinds");
+    Fixture fx = fixture(11, 9, 13, 20);
+    fx.infos[1].kind = ChannelKind::uncertainty;
+    fx.infos[2].kind = ChannelKind::probability; // set: stored whatever the unit
+    fx.infos[3].unit = "m";                      // unset, not "%": other
+    write_channels(dir + "/c", fx.model, fx.source, fx.infos, 8);
+    const PropertyChannels channels(std::make_shared<const MappedFile>(dir + "/c"),
+                                    dir + "/c", fx.model);
+    EXPECT_EQ(channels.info(0).kind, ChannelKind::probability); // unset, unit "%"
+    EXPECT_EQ(channels.info(1).kind, ChannelKind::uncertainty);
+    EXPECT_EQ(channels.info(2).kind, ChannelKind::probability);
+    EXPECT_EQ(channels.info(3).kind, ChannelKind::other);
+    // names both ways
+    for (const char *name : {"probability", "percentage", "uncertainty", "other"}) {
+        ChannelKind k = ChannelKind::unset;
+        ASSERT_TRUE(parse_channel_kind(name, k)) << name;
+        EXPECT_STREQ(channel_kind_name(k), name);
+    }
+    ChannelKind k = ChannelKind::unset;
+    EXPECT_FALSE(parse_channel_kind("", k));
+    EXPECT_FALSE(parse_channel_kind("Probability", k));
+    remove_tree(dir);
+}
+
+TEST(ChannelKinds, FilesOfVersionOneZeroAreReadWithKindsFromTheirUnits)
+{
+    const std::string dir = sbrt_test::temp_dir("channel_kinds_v10");
+    Fixture fx = fixture(12, 10, 11, 20);
+    fx.infos[0].kind = ChannelKind::percentage; // lost: 1.0 has no kinds
+    fx.infos[1].unit = "%";
+    write_channels(dir + "/c", fx.model, fx.source, fx.infos, 8);
+    const std::vector<uint8_t> bytes = read_file_bytes(dir + "/c");
+    EXPECT_EQ(load_le(&bytes[10], 2), 1u); // written as 1.1
+    // 1.0: the same without the kinds after the last channel
+    const PropertyChannels old =
+        open_channels(dir + "/v10", resealed(bytes, 0, fx.infos.size()), fx.model);
+    EXPECT_EQ(old.info(0).kind, ChannelKind::probability); // unit "%"
+    EXPECT_EQ(old.info(1).kind, ChannelKind::probability);
+    EXPECT_EQ(old.info(2).kind, ChannelKind::other);
+    float a = 0, b = 0;
+    const PropertyChannels now(std::make_shared<const MappedFile>(dir + "/c"), dir + "/c",
+                               fx.model);
+    for (uint64_t cell = 0; cell < fx.model.frame().cells(); ++cell)
+        if (now.span(cell).size()) {
+            ASSERT_TRUE(old.value(2, cell, now.span(cell).lo, a));
+            ASSERT_TRUE(now.value(2, cell, now.span(cell).lo, b));
+            EXPECT_EQ(a, b);
+        }
+    // a later 1.x with more after the kinds: read, the rest ignored
+    std::vector<uint8_t> later = bytes;
+    later.insert(later.end(), {7, 7, 7});
+    EXPECT_EQ(open_channels(dir + "/v12", resealed(later, 2, 0), fx.model).info(0).kind,
+              ChannelKind::percentage);
+    remove_tree(dir);
+}
+
+TEST(ChannelKinds, AnUnknownOrMissingKindIsRefusedByName)
+{
+    const std::string dir = sbrt_test::temp_dir("channel_kinds_bad");
+    const Fixture fx = fixture(13, 8, 9, 16);
+    write_channels(dir + "/c", fx.model, fx.source, fx.infos, 8);
+    const std::vector<uint8_t> bytes = read_file_bytes(dir + "/c");
+    for (const uint8_t bad : {uint8_t(0), uint8_t(LAST_CHANNEL_KIND + 1), uint8_t(255)}) {
+        std::vector<uint8_t> b = bytes;
+        b[b.size() - 2] = bad; // the third channel's (wide)
+        try {
+            open_channels(dir + "/d", resealed(b, 1, 0), fx.model);
+            ADD_FAILURE() << "kind " << int(bad) << " read";
+        }
+        catch (const Error &e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(dir + "/d"), std::string::npos) << what;
+            EXPECT_NE(what.find("wide has kind " + std::to_string(bad)), std::string::npos)
+                << what;
+        }
+    }
+    // 1.1 cut before its kinds: the directory ends too soon
+    EXPECT_THROW(open_channels(dir + "/d", resealed(bytes, 1, 2), fx.model), Error);
+    remove_tree(dir);
+}
+
+TEST(ChannelKinds, ARewriteChangesLegendsNotValues)
+{
+    const std::string dir = sbrt_test::temp_dir("channel_kinds_rewrite");
+    const Fixture fx = fixture(14, 17, 19, 24);
+    write_channels(dir + "/staged", fx.model, fx.source, fx.infos, 64);
+    write_sbrt(dir + "/m", fx.model, "first\n", {}, dir + "/staged");
+    const Model model = read_sbrt(dir + "/m");
+    const auto before = read_channels(dir + "/m", model);
+    const std::vector<uint8_t> stacks = read_file_bytes(dir + "/m/stacks");
+    std::vector<ChannelInfo> infos = before->infos();
+    infos[1].unit = "%";
+    infos[1].kind = ChannelKind::probability;
+    infos[3].kind = ChannelKind::uncertainty;
+    infos[3].long_name = "onzekerheid";
+    rewrite_channels(dir + "/m", *before, infos, "second\n");
+    const auto after = read_channels(dir + "/m", read_sbrt(dir + "/m"));
+    ASSERT_TRUE(after);
+    EXPECT_EQ(after->info(1).unit, "%");
+    EXPECT_EQ(after->info(1).kind, ChannelKind::probability);
+    EXPECT_EQ(after->info(3).kind, ChannelKind::uncertainty);
+    EXPECT_EQ(after->info(3).long_name, "onzekerheid");
+    EXPECT_EQ(after->info(0).kind, ChannelKind::probability);
+    EXPECT_EQ(after->info(2).kind, ChannelKind::other);
+    for (size_t ch = 0; ch < 4; ++ch) {
+        EXPECT_EQ(after->info(ch).valid, before->info(ch).valid);
+        EXPECT_EQ(after->info(ch).max, before->info(ch).max);
+        for (uint64_t cell = 0; cell < model.frame().cells(); ++cell) {
+            const ColumnSpan span = after->span(cell);
+            for (uint32_t z = span.lo; z < span.hi; ++z) {
+                float a = 0, b = 0;
+                ASSERT_TRUE(before->value(ch, cell, z, a));
+                ASSERT_TRUE(after->value(ch, cell, z, b));
+                ASSERT_TRUE(same_bits(a, b)) << ch << " " << cell << " " << z;
+            }
+        }
+    }
+    const std::vector<uint8_t> hist = read_file_bytes(dir + "/m/hist");
+    EXPECT_EQ(std::string(hist.begin(), hist.end()), "first\nsecond\n");
+    EXPECT_EQ(read_file_bytes(dir + "/m/stacks"), stacks);
+    // another count or another name: refused, the SBRT as it was
+    std::vector<ChannelInfo> fewer(infos.begin(), infos.end() - 1);
+    EXPECT_THROW(rewrite_channels(dir + "/m", *after, fewer, "x\n"), Error);
+    std::vector<ChannelInfo> renamed = infos;
+    renamed[2].name = "other";
+    EXPECT_THROW(rewrite_channels(dir + "/m", *after, renamed, "x\n"), Error);
+    EXPECT_EQ(read_channels(dir + "/m", read_sbrt(dir + "/m"))->info(3).long_name,
+              "onzekerheid");
+    remove_tree(dir);
+}
+
+TEST(ChannelKinds, PresetChannelLinesSetKindsWhereTheFileGaveNoUnit)
+{
+    std::istringstream in("name: t\nreference: r\n"
+                          "channel: kans_* probability\n"
+                          "channel: onz_* uncertainty\n"
+                          "channel: p?   percentage   %\n"
+                          "1 1:2:3 one\n");
+    const SurveyPreset preset = parse_preset(in, "t.rules");
+    ASSERT_EQ(preset.channels.size(), 3u);
+    EXPECT_EQ(preset.channels[0].unit, "%"); // a probability is in %
+    EXPECT_EQ(preset.channels[1].unit, "");
+    std::vector<ChannelInfo> infos(6);
+    const char *names[6] = {"kans_5", "kans_6", "onz_lk", "p1", "other", "kans_7"};
+    for (size_t i = 0; i < 6; ++i)
+        infos[i].name = names[i];
+    infos[1].unit = "1"; // the file's own unit, another than the line's
+    infos[4].unit = "%";
+    infos[5].unit = "%";
+    EXPECT_EQ(apply_channel_rules(preset, infos), 4u);
+    EXPECT_EQ(infos[0].unit, "%");
+    EXPECT_EQ(infos[0].kind, ChannelKind::probability);
+    EXPECT_EQ(infos[1].unit, "1");
+    EXPECT_EQ(infos[1].known_kind(), ChannelKind::other);
+    EXPECT_EQ(infos[2].kind, ChannelKind::uncertainty);
+    EXPECT_EQ(infos[2].unit, "");
+    EXPECT_EQ(infos[3].kind, ChannelKind::percentage);
+    EXPECT_EQ(infos[4].kind, ChannelKind::unset);
+    EXPECT_EQ(infos[5].kind, ChannelKind::probability);
+    // GeoTOP's presets say what kans_* and onz_* are
+    for (const char *name : {"geotop_lithoclass", "geotop_strat"}) {
+        std::vector<ChannelInfo> geotop(2);
+        geotop[0].name = "kans_5";
+        geotop[1].name = "onz_ls";
+        apply_channel_rules(find_preset(name), geotop);
+        EXPECT_EQ(geotop[0].kind, ChannelKind::probability) << name;
+        EXPECT_EQ(geotop[0].unit, "%") << name;
+        EXPECT_EQ(geotop[1].kind, ChannelKind::uncertainty) << name;
+    }
+    // bad lines: named
+    for (const char *bad : {"channel: kans_*\n", "channel: kans_* likely\n",
+                            "channel: kans_* probability 1\n",
+                            "channel: a b c d\n"}) {
+        std::istringstream b(std::string("name: t\nreference: r\n") + bad + "1 1:2:3 x\n");
+        try {
+            parse_preset(b, "t.rules");
+            ADD_FAILURE() << bad;
+        }
+        catch (const Error &e) {
+            EXPECT_NE(std::string(e.what()).find("t.rules line 3"), std::string::npos)
+                << e.what();
+        }
+    }
 }

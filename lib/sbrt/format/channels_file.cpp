@@ -200,6 +200,64 @@ std::string read_string(ByteReader &in, const std::string &what)
     return s;
 }
 
+/// One channel's entry of the directory, up to its blocks.
+void write_channel_entry(ByteWriter &dir, const ChannelInfo &c)
+{
+    write_string(dir, c.name);
+    write_string(dir, c.long_name);
+    write_string(dir, c.unit);
+    dir.f64(c.scale);
+    dir.f64(c.offset);
+    dir.u8(c.has_fill ? 1 : 0);
+    dir.f32(c.fill);
+    dir.u64(c.voxels);
+    dir.u64(c.valid);
+    dir.f64(c.min);
+    dir.f64(c.max);
+    dir.u8(c.integer ? 1 : 0);
+    dir.u64(c.bytes);
+}
+
+void write_block_entry(ByteWriter &dir, uint64_t offset, uint32_t compressed, uint32_t raw,
+                       uint32_t crc)
+{
+    dir.u64(offset);
+    dir.u32(compressed);
+    dir.u32(raw);
+    dir.u32(crc);
+}
+
+/// The kinds after the last channel (1.1): unset ones as the unit says.
+void write_kinds(ByteWriter &dir, const std::vector<ChannelInfo> &channels)
+{
+    for (const ChannelInfo &c : channels)
+        dir.u8(uint8_t(c.known_kind()));
+}
+
+/// The header of a file whose directory (checksum `dir_crc`) lies at
+/// `dir_at`, up to its `end`.
+ByteWriter header_bytes(int rows, int cols, int block_size, size_t channels,
+                        uint64_t dir_at, uint64_t end, uint32_t dir_crc)
+{
+    ByteWriter h;
+    h.raw(CHANNELS_MAGIC, sizeof CHANNELS_MAGIC);
+    h.u16(CHANNELS_MAJOR);
+    h.u16(CHANNELS_MINOR);
+    h.u32(CHANNELS_HEADER_SIZE);
+    h.u32(uint32_t(rows));
+    h.u32(uint32_t(cols));
+    h.u32(uint32_t(block_size));
+    h.u32(uint32_t(channels));
+    h.u64(dir_at);
+    h.u64(end);
+    h.u32(dir_crc);
+    h.u32(0);
+    h.u32(0);
+    h.u32(crc32_of(h.bytes().data(), h.size()));
+    SBRT_CHECK_EQ(h.size(), size_t(CHANNELS_HEADER_SIZE), "channels header");
+    return h;
+}
+
 } // namespace
 
 // --------------------------------------------------------------- writer
@@ -404,45 +462,15 @@ void ChannelsWriter::finish()
         fail("channels: ", row_, " rows of ", rows_, " came");
     ByteWriter dir;
     for (size_t ch = 0; ch < channels_.size(); ++ch) {
-        const ChannelInfo &c = channels_[ch];
-        write_string(dir, c.name);
-        write_string(dir, c.long_name);
-        write_string(dir, c.unit);
-        dir.f64(c.scale);
-        dir.f64(c.offset);
-        dir.u8(c.has_fill ? 1 : 0);
-        dir.f32(c.fill);
-        dir.u64(c.voxels);
-        dir.u64(c.valid);
-        dir.f64(c.min);
-        dir.f64(c.max);
-        dir.u8(c.integer ? 1 : 0);
-        dir.u64(c.bytes);
-        for (const BlockEntry &e : table_[ch]) {
-            dir.u64(e.offset);
-            dir.u32(e.compressed);
-            dir.u32(e.raw);
-            dir.u32(e.crc);
-        }
+        write_channel_entry(dir, channels_[ch]);
+        for (const BlockEntry &e : table_[ch])
+            write_block_entry(dir, e.offset, e.compressed, e.raw, e.crc);
     }
+    write_kinds(dir, channels_);
     const uint64_t dir_at = sink_.size();
     sink_.append(dir.bytes().data(), dir.size());
-    ByteWriter h;
-    h.raw(CHANNELS_MAGIC, sizeof CHANNELS_MAGIC);
-    h.u16(CHANNELS_MAJOR);
-    h.u16(CHANNELS_MINOR);
-    h.u32(CHANNELS_HEADER_SIZE);
-    h.u32(uint32_t(rows_));
-    h.u32(uint32_t(cols_));
-    h.u32(uint32_t(block_size_));
-    h.u32(uint32_t(channels_.size()));
-    h.u64(dir_at);
-    h.u64(sink_.size());
-    h.u32(crc32_of(dir.bytes().data(), dir.size()));
-    h.u32(0);
-    h.u32(0);
-    h.u32(crc32_of(h.bytes().data(), h.size()));
-    SBRT_CHECK_EQ(h.size(), size_t(CHANNELS_HEADER_SIZE), "channels header");
+    ByteWriter h = header_bytes(rows_, cols_, block_size_, channels_.size(), dir_at,
+                                sink_.size(), crc32_of(dir.bytes().data(), dir.size()));
     sink_.overwrite(0, h.bytes().data(), h.size());
 }
 
@@ -466,7 +494,9 @@ PropertyChannels::PropertyChannels(std::shared_ptr<const MappedFile> file, std::
     ByteReader h(data, CHANNELS_HEADER_SIZE, what_);
     h.seek(8);
     const uint16_t major = h.u16();
-    h.u16(); // minor: later fields would come before the header checksum
+    // minor: later fields come before the header checksum, or after the
+    // directory's channels (1.1: the kinds)
+    const uint16_t minor = h.u16();
     if (major != CHANNELS_MAJOR)
         fail(what_, ": channels format ", major, ".x needs a newer r3.sbrt");
     const uint32_t header_size = h.u32();
@@ -530,6 +560,19 @@ PropertyChannels::PropertyChannels(std::shared_ptr<const MappedFile> file, std::
         }
         channels_.push_back(std::move(c));
     }
+    for (ChannelInfo &c : channels_) {
+        if (minor < 1) { // 1.0: what the unit says, as it was read then
+            c.kind = kind_of_unit(c.unit);
+            continue;
+        }
+        const uint8_t kind = in.u8();
+        if (kind < 1 || kind > LAST_CHANNEL_KIND)
+            fail(what_, ": channel ", c.name, " has kind ", int(kind),
+                 ", not one this reader knows (corrupt file?)");
+        c.kind = ChannelKind(kind);
+    }
+    blocks_begin_ = header_size;
+    blocks_end_ = dir_at;
 
     // where each cell's span lies in its block
     slots_.resize(size_t(f.cells()));
@@ -627,6 +670,48 @@ ChannelValues PropertyChannels::column(size_t channel, uint64_t cell) const
     if (s.hi == s.lo)
         return {};
     return block_values(channel, block_of(cell)).part(s.at, s.hi - s.lo);
+}
+
+void PropertyChannels::write_with(const std::vector<ChannelInfo> &infos,
+                                  ByteSink &sink) const
+{
+    if (infos.size() != channels_.size())
+        fail(what_, ": ", infos.size(), " channels given for the file's ",
+             channels_.size());
+    for (size_t ch = 0; ch < infos.size(); ++ch)
+        if (infos[ch].name != channels_[ch].name)
+            fail(what_, ": channel ", ch + 1, " is ", channels_[ch].name, ", not ",
+                 infos[ch].name);
+    if (sink.size() != 0)
+        fail(what_, ": channels written again into a sink that is not empty");
+    // the header last (as the writer does), the blocks as they are, moved
+    // by the difference in header sizes
+    const std::vector<uint8_t> zeros(CHANNELS_HEADER_SIZE, 0);
+    sink.append(zeros.data(), zeros.size());
+    const int64_t shift = int64_t(CHANNELS_HEADER_SIZE) - int64_t(blocks_begin_);
+    const uint8_t *data = file_->data();
+    constexpr uint64_t PIECE = uint64_t(1) << 24;
+    for (uint64_t at = blocks_begin_; at < blocks_end_; at += PIECE)
+        sink.append(data + at, size_t(std::min(PIECE, blocks_end_ - at)));
+    ByteWriter dir;
+    for (size_t ch = 0; ch < channels_.size(); ++ch) {
+        ChannelInfo c = channels_[ch]; // the figures as they are
+        c.long_name = infos[ch].long_name;
+        c.unit = infos[ch].unit;
+        c.kind = infos[ch].known_kind();
+        write_channel_entry(dir, c);
+        for (size_t b = 0; b < blocks_; ++b) {
+            const Block &block = blocks_data_[ch * blocks_ + b];
+            write_block_entry(dir, uint64_t(int64_t(block.offset) + shift),
+                              block.compressed, block.raw, block.crc);
+        }
+    }
+    write_kinds(dir, infos);
+    const uint64_t dir_at = sink.size();
+    sink.append(dir.bytes().data(), dir.size());
+    ByteWriter h = header_bytes(rows_, cols_, block_size_, channels_.size(), dir_at,
+                                sink.size(), crc32_of(dir.bytes().data(), dir.size()));
+    sink.overwrite(0, h.bytes().data(), h.size());
 }
 
 } // namespace sbrt

@@ -28,9 +28,10 @@ namespace sbrt {
 
 class MappedFile;
 
-/// Version 1.0 of the `channels` member.
+/// Version 1.1 of the `channels` member (1.0 is read: its kinds are what
+/// the units say).
 constexpr uint16_t CHANNELS_MAJOR = 1;
-constexpr uint16_t CHANNELS_MINOR = 0;
+constexpr uint16_t CHANNELS_MINOR = 1;
 constexpr uint32_t CHANNELS_HEADER_SIZE = 64;
 
 /// Layout (little-endian):
@@ -50,7 +51,8 @@ constexpr uint32_t CHANNELS_HEADER_SIZE = 64;
 ///   f64 scale offset, u8 has fill, f32 fill, u64 voxels valid, f64 min
 ///   max, u8 integer, u64 bytes, then per block: u64 offset, u32
 ///   compressed size, u32 uncompressed size, u32 crc32 of the compressed
-///   bytes.
+///   bytes; after the last channel (1.1 on, where a 1.0 reader stops
+///   reading), per channel: u8 kind (ChannelKind, 1 to 4).
 ///
 /// \brief Values of one channel's block waiting for the rest of its rows,
 /// held in the narrowest of int8, int16 and float32 that holds each
@@ -248,11 +250,18 @@ public:
     uint64_t blocks_decoded() const { return decoded_; }
     uint64_t block_count() const { return uint64_t(blocks_) * channels_.size(); }
 
+    /// Writes this channels file again (in the current version) into the
+    /// empty `sink` with the long names, units and kinds of `infos`, one
+    /// for each channel in order under the same name; the blocks are
+    /// copied as they are. Throws sbrt::Error where `infos` does not match.
+    void write_with(const std::vector<ChannelInfo> &infos, ByteSink &sink) const;
+
 private:
     struct Block;
 
     std::shared_ptr<const MappedFile> file_;
     std::string what_;
+    uint64_t blocks_begin_ = 0, blocks_end_ = 0; ///< the blocks' bytes in the file
     int rows_ = 0, cols_ = 0, block_size_ = 0, block_cols_ = 0;
     size_t blocks_ = 0;
     std::vector<ChannelInfo> channels_;

@@ -33,9 +33,13 @@ std::vector<size_t> probability_channels(const PropertyChannels &channels,
         if (std::find(out.begin(), out.end(), size_t(index)) != out.end())
             fail("probability=", probability, ": channel '", name, "' is named twice");
         const ChannelInfo &info = channels.info(size_t(index));
-        if (info.unit != "%")
+        // what the channel is (issue 51): its kind, set on import (unit
+        // "%" or a survey preset) or by r3.sbrt.support, not the unit alone
+        if (info.known_kind() != ChannelKind::probability)
             fail("probability=", probability, ": channel '", name, "' is in '", info.unit,
-                 "', not a probability in %");
+                 "' and of kind ", channel_kind_name(info.known_kind()),
+                 ", not a probability in %; where it is one, say so: r3.sbrt.support "
+                 "channel=", name, " unit=% kind=probability");
         out.push_back(size_t(index));
     }
     if (out.empty())

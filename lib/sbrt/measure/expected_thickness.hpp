@@ -17,8 +17,9 @@
 namespace sbrt {
 
 /// The channels a probability names ("kans_5+kans_6+kans_7", spaces
-/// allowed), each once and each in %; throws sbrt::Error naming an unknown
-/// channel (with the model's), one given twice, or one in another unit.
+/// allowed), each once and each of kind probability (in %); throws
+/// sbrt::Error naming an unknown channel (with the model's), one given
+/// twice, or one of another kind (saying how to set it).
 std::vector<size_t> probability_channels(const PropertyChannels &channels,
                                          const std::string &probability);
 

@@ -43,6 +43,43 @@ unsigned channel_type_bytes(ChannelType type)
     return 4;
 }
 
+const char *channel_kind_name(ChannelKind kind)
+{
+    switch (kind) {
+    case ChannelKind::probability:
+        return "probability";
+    case ChannelKind::percentage:
+        return "percentage";
+    case ChannelKind::uncertainty:
+        return "uncertainty";
+    case ChannelKind::other:
+        return "other";
+    case ChannelKind::unset:
+        break;
+    }
+    return "";
+}
+
+const char *channel_kind_names()
+{
+    return "probability,percentage,uncertainty,other";
+}
+
+bool parse_channel_kind(const std::string &name, ChannelKind &kind)
+{
+    for (uint8_t k = 1; k <= LAST_CHANNEL_KIND; ++k)
+        if (name == channel_kind_name(ChannelKind(k))) {
+            kind = ChannelKind(k);
+            return true;
+        }
+    return false;
+}
+
+ChannelKind kind_of_unit(const std::string &unit)
+{
+    return unit == "%" ? ChannelKind::probability : ChannelKind::other;
+}
+
 ChannelType ChannelInfo::type() const
 {
     if (!integer)

@@ -23,6 +23,30 @@ const char *channel_type_name(ChannelType type);
 /// Bytes of one value of `type`.
 unsigned channel_type_bytes(ChannelType type);
 
+/// \brief What a channel's values are (issue 51), so that a measure knows
+/// which it may take: the expected thickness sums probabilities only.
+/// Stored as a byte (channels file 1.1); `unset` only before writing: the
+/// writer stores what the unit says (kind_of_unit), as files before 1.1
+/// are read.
+enum class ChannelKind : uint8_t {
+    unset = 0,
+    probability = 1, ///< a probability in % (0-100), e.g. GeoTOP's kans_*
+    percentage = 2,  ///< a share in % that is no probability
+    uncertainty = 3, ///< a measure of uncertainty, e.g. GeoTOP's onz_*
+    other = 4,       ///< any other quantity
+};
+/// The largest kind a file may store.
+constexpr uint8_t LAST_CHANNEL_KIND = 4;
+/// "probability", "percentage", "uncertainty", "other" ("" for unset).
+const char *channel_kind_name(ChannelKind kind);
+/// Every kind's name, comma-separated (for option lists and messages).
+const char *channel_kind_names();
+/// The kind called `name` (one of channel_kind_names()), or false.
+bool parse_channel_kind(const std::string &name, ChannelKind &kind);
+/// The kind a unit says where nothing else does (as before kinds were
+/// stored): "%" a probability, anything else other.
+ChannelKind kind_of_unit(const std::string &unit);
+
 /// \brief One channel: its name and legend, and figures of its values.
 /// Values are raw numbers as the source stores them (float32 holds every
 /// value a channel may take exactly); what they mean is raw * scale +
@@ -30,6 +54,7 @@ unsigned channel_type_bytes(ChannelType type);
 /// value.
 struct ChannelInfo {
     std::string name, long_name, unit;
+    ChannelKind kind = ChannelKind::unset; ///< as read: never unset
     double scale = 1, offset = 0;
     bool has_fill = false;
     float fill = 0;
@@ -45,6 +70,11 @@ struct ChannelInfo {
     /// raster of it is null, so counts and views agree with -r).
     bool is_fill(float v) const { return std::isnan(v) || (has_fill && v == fill); }
     double physical(float raw) const { return double(raw) * scale + offset; }
+    /// The kind, or where it is unset what the unit says.
+    ChannelKind known_kind() const
+    {
+        return kind == ChannelKind::unset ? kind_of_unit(unit) : kind;
+    }
     /// The smallest type that holds every value and the fill exactly.
     ChannelType type() const;
 };

@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "model/survey_presets.hpp"
 
+#include <fnmatch.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <sstream>
@@ -57,6 +59,24 @@ const SurveyPreset *identify_preset(
         if (preset_matches(p, variable, attributes))
             return &p;
     return nullptr;
+}
+
+size_t apply_channel_rules(const SurveyPreset &preset, std::vector<ChannelInfo> &channels)
+{
+    size_t set = 0;
+    for (ChannelInfo &c : channels)
+        for (const ChannelRule &rule : preset.channels) {
+            if (fnmatch(rule.pattern.c_str(), c.name.c_str(), 0) != 0)
+                continue;
+            if (c.unit.empty() || rule.unit.empty() || rule.unit == c.unit) {
+                if (c.unit.empty())
+                    c.unit = rule.unit;
+                c.kind = rule.kind;
+                ++set;
+            }
+            break; // the first line that names the channel
+        }
+    return set;
 }
 
 } // namespace sbrt

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/legend_rules.hpp"
+#include "model/property_channel.hpp"
 
 namespace sbrt {
 
@@ -27,6 +28,13 @@ std::string preset_names();
 const SurveyPreset *identify_preset(
     const std::string &variable,
     const std::vector<std::pair<std::string, std::string>> &attributes);
+
+/// Applies the channel lines of `preset` (issue 51) to `channels` as a
+/// file gave them: the first line whose pattern matches a channel's name
+/// sets its kind, and its unit where the file gave none; a channel the
+/// file gave another unit than the line's keeps what its unit says.
+/// Returns how many channels it set.
+size_t apply_channel_rules(const SurveyPreset &preset, std::vector<ChannelInfo> &channels);
 
 } // namespace sbrt
 
