@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "property_colors.hpp"
 #include "shading/shading.hpp"
 
 namespace {
@@ -61,7 +62,8 @@ PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model 
             bar.long_name = first.long_name;
         else
             bar.long_name = "sum of " + std::to_string(summed.size()) + " channels";
-        bar.unit = first.unit;
+        // "%" for a sum of probabilities, whatever unit the file gives
+        bar.unit = property_unit(property->channels(), summed);
         const sbrt::ColorRamp &ramp = property->ramp();
         bar.low = ramp.low();
         bar.high = ramp.high();

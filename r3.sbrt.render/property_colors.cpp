@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "grass_color_rules.hpp"
+#include "shading/property_paint.hpp"
 #include "request_error.hpp"
 
 std::vector<size_t> property_channels(const RenderRequest &request,
@@ -46,23 +47,34 @@ std::vector<size_t> property_channels(const RenderRequest &request,
     return summed;
 }
 
+bool probability_family(const sbrt::PropertyChannels &channels,
+                        const std::vector<size_t> &summed)
+{
+    for (size_t c : summed)
+        if (channels.info(c).known_kind() != sbrt::ChannelKind::probability)
+            return false;
+    return !summed.empty();
+}
+
 std::pair<double, double> property_range(const sbrt::PropertyChannels &channels,
                                          const std::vector<size_t> &summed)
 {
+    if (probability_family(channels, summed))
+        return {0.0, 100.0};
     double low = 0, high = 0;
-    bool percent = true;
-    for (size_t c : summed) {
-        const sbrt::ChannelInfo &info = channels.info(c);
-        const double a = info.physical(float(info.min)), b = info.physical(float(info.max));
-        low += std::min(a, b);
-        high += std::max(a, b);
-        percent = percent && info.unit == "%";
-    }
-    if (percent)
-        high = std::min(high, 100.0);
+    if (!sbrt::sum_range(channels, summed, low, high))
+        low = high = 0; // no value anywhere: every hit the no-value colour
     if (!(high > low))
         high = low + 1; // one value: a ramp all the same
     return {low, high};
+}
+
+std::string property_unit(const sbrt::PropertyChannels &channels,
+                          const std::vector<size_t> &summed)
+{
+    if (probability_family(channels, summed))
+        return "%";
+    return summed.empty() ? std::string() : channels.info(summed[0]).unit;
 }
 
 sbrt::ColorRamp property_ramp(const std::string &table, double low, double high)

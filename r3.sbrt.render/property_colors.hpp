@@ -8,6 +8,7 @@
 #ifndef R3_SBRT_PROPERTY_COLORS_HPP
 #define R3_SBRT_PROPERTY_COLORS_HPP
 
+#include <string>
 #include <vector>
 
 #include "format/channels_file.hpp"
@@ -20,10 +21,23 @@
 std::vector<size_t> property_channels(const RenderRequest &request,
                                       const sbrt::PropertyChannels *channels);
 
-/// The range of the shown property: the sum of the channels' least and
-/// greatest values (as meant), at most 100 where all are in %.
+/// Whether the channels summed are a family of probabilities (issue 51):
+/// each a probability in % (its kind, or where a file has none its unit
+/// "%"), so that the probabilities of one voxel sum to 100 at most.
+bool probability_family(const sbrt::PropertyChannels &channels,
+                        const std::vector<size_t> &summed);
+
+/// The range of the shown property (the colour ramp's, the legend's ends):
+/// 0 to 100 for a family of probabilities, whatever values are present;
+/// else the least and greatest value the property takes (as meant: a sum's
+/// per voxel, not the sum of the channels' ranges).
 std::pair<double, double> property_range(const sbrt::PropertyChannels &channels,
                                          const std::vector<size_t> &summed);
+
+/// The unit of the shown property: "%" for a family of probabilities
+/// (whatever unit the file gives), else the channels' (one unit).
+std::string property_unit(const sbrt::PropertyChannels &channels,
+                          const std::vector<size_t> &summed);
 
 /// The ramp of property_color= over [low, high] (GRASS's colour tables
 /// stretch over the range; a rules file's % values are of the range).

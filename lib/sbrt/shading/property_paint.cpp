@@ -180,6 +180,44 @@ WholeValues whole_values(const PropertyChannels &channels, const std::vector<siz
     return {low, size_t(high - low) + 1};
 }
 
+bool sum_range(const PropertyChannels &channels, const std::vector<size_t> &summed,
+               double &low, double &high)
+{
+    if (summed.size() == 1) { // its stated range (0 to 0 where it has no value)
+        const ChannelInfo &info = channels.info(summed[0]);
+        const double a = info.physical(float(info.min)), b = info.physical(float(info.max));
+        low = std::min(a, b);
+        high = std::max(a, b);
+        return info.valid > 0;
+    }
+    // the blocks that hold values: those of the cells with a span (a model
+    // read for an area has none elsewhere, and its blocks are not decoded)
+    std::vector<bool> holds(channels.blocks(), false);
+    for (uint64_t cell = 0; cell < channels.cells(); ++cell)
+        if (channels.span(cell).size() > 0)
+            holds[channels.block_of(cell)] = true;
+    low = std::numeric_limits<double>::infinity();
+    high = -low;
+    std::vector<ChannelValues> values(summed.size());
+    for (size_t b = 0; b < holds.size(); ++b) {
+        if (!holds[b])
+            continue;
+        for (size_t k = 0; k < summed.size(); ++k)
+            values[k] = channels.block_values(summed[k], b);
+        for (size_t i = 0, n = values[0].size(); i < n; ++i) {
+            double sum;
+            if (sum_at(channels, summed, values.data(), i, sum) && !std::isnan(sum)) {
+                low = std::min(low, sum);
+                high = std::max(high, sum);
+            }
+        }
+    }
+    if (low <= high)
+        return true;
+    low = high = 0;
+    return false;
+}
+
 bool property_at_hit(const Model &model, const PropertyChannels &channels,
                      const std::vector<size_t> &summed, const Hit &hit, double &out)
 {

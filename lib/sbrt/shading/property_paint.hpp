@@ -47,6 +47,14 @@ bool property_at_voxel(const PropertyChannels &channels, const std::vector<size_
 bool sum_at(const PropertyChannels &channels, const std::vector<size_t> &summed,
             const ChannelValues *values, size_t i, double &out);
 
+/// The least and greatest sum of `summed` channels over every voxel that
+/// has one (fills skipped): the range of the values the property takes,
+/// not the sum of the channels' ranges. One channel's is its stated range;
+/// a sum decodes every block that holds values. False where no voxel has a
+/// value.
+bool sum_range(const PropertyChannels &channels, const std::vector<size_t> &summed,
+               double &low, double &high);
+
 /// \brief The whole numbers low, low + 1, ..., low + count - 1: the values
 /// a property takes where they are few (GeoTOP's percentages), so that a
 /// colour per value can be made once; count 0 where they are not.
