@@ -16,9 +16,14 @@ class ServerError(Exception):
     """The server stopped (its last messages) or refused a request."""
 
 
+# legend: a property view's PropertyLegend (None for a view of the classes)
 Frame = collections.namedtuple(
-    "Frame", "width height ms azimuth elevation distance target rgb words"
+    "Frame", "width height ms azimuth elevation distance target rgb words legend",
+    defaults=(None,)
 )
+# the colour ramp's ends and the unit of a property view, as its legend
+# shows them (0 to 100 % for a sum of probabilities)
+PropertyLegend = collections.namedtuple("PropertyLegend", "low high unit")
 Stratum = collections.namedtuple("Stratum", "id rgb label")
 # a property channel: its name, unit, long name and range (as meant)
 Channel = collections.namedtuple("Channel", "name unit long_name low high")
@@ -111,6 +116,9 @@ class ViewServer:
         head = self._ask("render", words)
         width, height = int(head[1]), int(head[2])
         values = [float(v) for v in head[3:10]]
+        legend = None
+        if len(head) >= 13 and head[10] == "property":  # the unit last, maybe with spaces
+            legend = PropertyLegend(float(head[11]), float(head[12]), " ".join(head[13:]))
         return Frame(
             width,
             height,
@@ -121,6 +129,7 @@ class ViewServer:
             tuple(values[4:7]),
             self._read(width * height * 3),
             list(words),
+            legend,
         )
 
     def strata(self, sbrt):

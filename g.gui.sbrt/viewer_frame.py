@@ -21,7 +21,7 @@ from gui_core.gselect import ColumnSelect, Select
 from column_profile import ProfileError, read_column, show_profile
 from render_thread import RenderThread
 from section_profile import SectionProfileFrame, profile_png_path
-from view_client import ServerError
+from view_client import PropertyLegend, ServerError
 from strata_panel import StrataPanel
 from view_canvas import ViewCanvas
 from view_dialogs import RecordOrbitDialog, SaveViewDialog
@@ -59,6 +59,9 @@ class ViewerFrame(wx.Frame):
         self._times = []
         self._logged_widgets = False
         self._closing = False
+        # the legend the server sent with the last property frame:
+        # (property, view_client.PropertyLegend)
+        self._frame_legend = None
 
         self._make_toolbar()
         body = wx.BoxSizer(wx.HORIZONTAL)
@@ -245,17 +248,32 @@ class ViewerFrame(wx.Frame):
         self.fade.Bind(wx.EVT_CHOICE, self._on_property)
 
     def property_range(self, expression):
-        """The range of a property: the sum of its channels' ranges, at
-        most 0..100 where all are in %; None for an unknown channel."""
+        """The range of a property: 0..100 where all its channels are in %
+        (probabilities: those of a voxel sum to 100 at most), else the sum
+        of its channels' ranges (a bound; the legend takes the range the
+        server sends with a frame); None for an unknown channel."""
         by_name = {c.name: c for c in self.channels}
         parts = [p.strip() for p in expression.split("+")]
         if not all(p in by_name for p in parts):
             return None
+        if all(by_name[p].unit == "%" for p in parts):
+            return 0.0, 100.0
         low = sum(by_name[p].low for p in parts)
         high = sum(by_name[p].high for p in parts)
-        if all(by_name[p].unit == "%" for p in parts):
-            low, high = max(0.0, low), min(100.0, high)
         return low, max(high, low)
+
+    def property_legend(self, expression):
+        """The ends and unit of the legend of a property: those the server
+        sent with its last frame (the ramp it drew with), else what the
+        channels say; None for an unknown channel."""
+        if self._frame_legend and self._frame_legend[0] == expression:
+            return self._frame_legend[1]
+        limits = self.property_range(expression)
+        if not limits:
+            return None
+        first = expression.split("+")[0].strip()
+        unit = next(c.unit for c in self.channels if c.name == first)
+        return PropertyLegend(limits[0], limits[1], unit)
 
     def _fit_threshold(self, limits):
         """The threshold slider over a property's range (whole numbers)."""
@@ -385,6 +403,7 @@ class ViewerFrame(wx.Frame):
         if self.state.distance is None and framed:
             self.state.adopt_camera(frame)
         self.canvas.show(frame)
+        self._adopt_legend(frame)
         now = time.monotonic()
         self._times = [t for t in self._times if now - t < 1.0] + [now]
         self.SetStatusText(
@@ -392,10 +411,25 @@ class ViewerFrame(wx.Frame):
                                          "" if full else _(" (moving)")), 0)
         self.SetStatusText(_("%d frames/s") % len(self._times), 1)
         self.log.write("frame", number=number, full=full, width=frame.width,
-                       height=frame.height, ms=frame.ms, words=frame.words)
+                       height=frame.height, ms=frame.ms, words=frame.words,
+                       legend=list(frame.legend) if frame.legend else None)
         if full and not self._logged_widgets:
             self._logged_widgets = True
             self._log_widgets()
+
+    def _adopt_legend(self, frame):
+        """The legend of a property frame as the server drew it (its ramp's
+        ends and unit: a sum of probabilities 0 to 100 %, another sum the
+        range of its values)."""
+        if not frame.legend:
+            return
+        words = [w for w in frame.words if w.startswith("property=")]
+        if not words:
+            return
+        legend = (words[-1][len("property="):], frame.legend)
+        if legend != self._frame_legend:
+            self._frame_legend = legend
+            self._update_legend()
 
     def _log_widgets(self):
         def rect(window):
@@ -421,20 +455,19 @@ class ViewerFrame(wx.Frame):
 
     # controls -----------------------------------------------------------
     def _update_legend(self):
-        limits = (self.property_range(self.state.property)
+        legend = (self.property_legend(self.state.property)
                   if self.state.property and self.state.color_by_property else None)
-        if limits:
+        if legend:
             # the property's colour bar: r3.sbrt.render's default ramp
             # (viridis) over the property's range, highest first
             from matplotlib import colormaps
 
             ramp = colormaps["viridis"]
-            unit = self.channels[[c.name for c in self.channels].index(
-                self.state.property.split("+")[0].strip())].unit
             self.canvas.legend = [
                 (tuple(int(round(255 * c)) for c in ramp(share)[:3]),
-                 "%s %g %s" % (self.state.property if share == 1.0 else "",
-                               limits[0] + share * (limits[1] - limits[0]), unit))
+                 ("%s %g %s" % (self.state.property if share == 1.0 else "",
+                                legend.low + share * (legend.high - legend.low),
+                                legend.unit)).strip())
                 for share in (1.0, 0.75, 0.5, 0.25, 0.0)]
             self.canvas.Refresh(eraseBackground=False)
             return

@@ -21,10 +21,12 @@
 #include "image_memory.hpp"
 #include "reply_lines.hpp"
 #include "model/material_table.hpp"
+#include "property_colors.hpp"
 #include "render_session.hpp"
 #include "request_line.hpp"
 #include "request_error.hpp"
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 namespace {
 
@@ -82,9 +84,20 @@ void ViewServer::render(RenderRequest request)
         azimuth += 360;
     azimuth += 0.0; // never -0
     const double elevation = std::asin(std::clamp(-forward.z, -1.0, 1.0)) * 180 / M_PI;
-    std::fprintf(out_, "frame %d %d %.3f %.17g %.17g %.17g %.17g %.17g %.17g\n", cols, rows,
+    std::fprintf(out_, "frame %d %d %.3f %.17g %.17g %.17g %.17g %.17g %.17g", cols, rows,
                  ms, azimuth, elevation, glm::length(at - eye), target.x, target.y,
                  target.z);
+    // a property view's legend: the ramp's ends and the unit, as the PNG's
+    // colour bar shows them (the unit last: it may hold spaces)
+    const sbrt::PropertyPaint *property = session_.property();
+    if (property && !request.property.empty()) {
+        const sbrt::ColorRamp &ramp = property->ramp();
+        std::fprintf(out_, " property %.17g %.17g %s", ramp.low(), ramp.high(),
+                     sbrt::record_field(property_unit(property->channels(),
+                                                      property->summed()))
+                         .c_str());
+    }
+    std::fputc('\n', out_);
     std::fwrite(rgb.data(), 1, rgb.size(), out_);
     std::fflush(out_);
 }

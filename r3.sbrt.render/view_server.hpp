@@ -16,6 +16,8 @@
 /// (r3.sbrt.render --serve; the protocol is in g.gui.sbrt's manual):
 ///
 ///     render key=value... -flags  ->  "frame W H MS AZ EL DIST TX TY TZ\n"
+///                                     (property=: "... TZ property LOW HIGH
+///                                     UNIT\n", the legend's ramp and unit)
 ///                                     and W*H*3 bytes of RGB, rows from the top
 ///     classes input=NAME          ->  "model N S E W BOTTOM TOP\n",
 ///                                     "classes COUNT\n" and per class
