@@ -1,7 +1,7 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.surface
- * PURPOSE:   The output maps with title, units, history and colours (as
- *            r.series writes its maps)
+ * PURPOSE:   The output maps with title, units, vertical datum, history and
+ *            colours (as r.series writes its maps)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "surface_maps.hpp"
@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "raster_metadata.hpp"
+#include "sbrt_store.hpp"
 
 namespace {
 
@@ -47,6 +48,38 @@ void write_colors(const std::string &name, const char *rules, bool from_zero, bo
     Rast_free_colors(&colors);
 }
 
+/// The unit of the location's heights as the maps' units give it: "m",
+/// "ft", "ftUS"; "map units" in an XY location.
+std::string length_unit()
+{
+    if (G_projection() == PROJECTION_XY)
+        return "map units";
+    switch (G_database_unit()) {
+    case U_METERS:
+        return "m";
+    case U_FEET:
+        return "ft";
+    case U_USFEET:
+        return "ftUS";
+    default:
+        return G_database_unit_name(TRUE);
+    }
+}
+
+/// The vertical datum of SBRT `input` ("NAP"; empty where it has none),
+/// read from its header: no block is decoded.
+std::string vertical_datum_of(const std::string &input)
+{
+    sbrt::ReadOptions options;
+    options.points.emplace(); // no points: no stacks
+    return sbrt_grass::read_sbrt_map(input.c_str(), options).vertical_datum();
+}
+
+/// What a depth map's vertical datum says (r.info: "Vertical datum: model
+/// surface"): depths are measured down from the model's surface (the top
+/// of each column's highest layer), not from the datum of its elevations.
+constexpr const char *DEPTH_DATUM = "model surface";
+
 } // namespace
 
 SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, const std::string &set, int cols)
@@ -59,10 +92,12 @@ SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, const std::string &set, 
         {Figure::layers, &request.layers},
         {Figure::depth, &request.depth},
         {Figure::expected, &request.expected_thickness}};
+    // the elevations' datum, read before any map is opened
+    const std::string datum = vertical_datum_of(request.input);
     for (const auto &[figure, name] : asked)
         if (!name->empty()) {
             // the metadata first: nothing is left to fail once rows are written
-            Map map = metadata(figure, *name, request, set);
+            Map map = metadata(figure, *name, request, set, datum);
             map.fd = Rast_open_new(name->c_str(),
                                    figure == Figure::layers ? CELL_TYPE : DCELL_TYPE);
             maps_.push_back(std::move(map));
@@ -136,12 +171,15 @@ void SurfaceMaps::close()
         write_colors(map.name, map.colors, map.colors_from_zero, map.figure == Figure::layers);
         sbrt_grass::put_raster_title(map.name.c_str(), map.title);
         sbrt_grass::write_raster_units(map.name.c_str(), map.units);
+        if (!map.vertical_datum.empty())
+            Rast_write_vdatum(map.name.c_str(), map.vertical_datum.c_str());
         sbrt_grass::write_raster_history(map.name.c_str(), map.history);
     }
 }
 
 SurfaceMaps::Map SurfaceMaps::metadata(Figure figure, const std::string &name,
-                                       const SurfaceRequest &request, const std::string &set)
+                                       const SurfaceRequest &request, const std::string &set,
+                                       const std::string &datum)
 {
     Map map{figure, name, -1};
     const char *what = "";
@@ -176,11 +214,23 @@ SurfaceMaps::Map SurfaceMaps::metadata(Figure figure, const std::string &name,
     }
     const std::string of =
         figure == Figure::expected ? "probability " + request.probability : set;
+    // elevations with their unit and datum: "Elevation (m NAP) of the top"
+    std::string described = what;
+    if (figure == Figure::top || figure == Figure::base)
+        described.insert(std::string("Elevation").size(),
+                         " (" + length_unit() + (datum.empty() ? "" : " " + datum) + ")");
     // the class labels can make these long: cut to what GRASS keeps
     map.title = sbrt_grass::metadata_line(
-        std::string(what) + " of " + of + " in SBRT " + request.input,
+        described + " of " + of + " in SBRT " + request.input,
         sbrt_grass::MAX_TITLE_BYTES);
-    map.units = figure == Figure::layers ? "layers" : G_database_unit_name(TRUE);
+    map.units = figure == Figure::layers ? "layers" : length_unit();
+    // elevations relative to the model's datum (another mapset's text: one
+    // printable line); depths from the model's surface; thicknesses and
+    // counts have none
+    if (figure == Figure::top || figure == Figure::base)
+        map.vertical_datum = sbrt_grass::metadata_line(datum, sbrt_grass::MAX_UNITS_BYTES);
+    else if (figure == Figure::depth)
+        map.vertical_datum = DEPTH_DATUM;
     map.history.data_source_1 = "SBRT " + request.input;
     map.history.data_source_2 = (figure == Figure::expected ? "" : "classes ") + of;
     return map;

@@ -1,7 +1,8 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.surface
  * PURPOSE:   The output maps: opened together, written row by row, closed
- *            with title, units, history and a colour table that suits each
+ *            with title, units, vertical datum, history and a colour table
+ *            that suits each
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef R3_SBRT_SURFACE_MAPS_HPP
@@ -41,6 +42,7 @@ private:
         std::string name;
         int fd;
         std::string title, units;      ///< cut to what GRASS keeps
+        std::string vertical_datum;    ///< of elevations and depths; empty: none
         sbrt_grass::MapHistory history;
         const char *colors = "";       ///< GRASS colour rules, over the range
         bool colors_from_zero = false; ///< the range from 0
@@ -48,7 +50,7 @@ private:
     static double value(Figure figure, const sbrt::MapFigures &f);
     /// Map `name` of `figure` with its metadata, not yet open.
     static Map metadata(Figure figure, const std::string &name, const SurfaceRequest &request,
-                        const std::string &set);
+                        const std::string &set, const std::string &datum);
 
     int cols_;
     std::vector<Map> maps_;
