@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <thread>
 
 #include "animation_options.hpp"
@@ -141,12 +142,15 @@ RenderOptions define_render_options()
     o->rules->label = _("Colour rules for the materials (as r3.colors rules=)");
 
     o->hide = define("hide", TYPE_STRING,
-                     _("Classes not drawn: class ids or labels"), _("Strata"));
+                     _("A label that holds commas as it is, or without its commas"),
+                     _("Strata"));
+    o->hide->label = _("Classes not drawn: class ids, codes, short names or labels");
     o->hide->multiple = YES;
     o->hide->key_desc = "class";
     o->opacity = define("opacity", TYPE_STRING,
-                        _("Translucent classes: class id or label and the share "
-                          "of light (0-1) it absorbs over opacity_length"),
+                        _("Translucent classes: class id, code, short name or "
+                          "label and the share of light (0-1) it absorbs over "
+                          "opacity_length"),
                         _("Strata"));
     o->opacity->multiple = YES;
     o->opacity->key_desc = "class:alpha";
@@ -449,8 +453,13 @@ RenderRequest read_render_options(const RenderOptions &options)
             bad_request(_("plane= and section= give more than %d planes"),
                           sbrt::MAX_CLIP_PLANES);
     }
+    // a class label that holds commas reaches here in parts (G_parser
+    // parts answers at commas): a part with no colon is joined to the next
+    std::string pair;
     for (char **a = o->opacity->answers; a && *a; ++a) {
-        const std::string pair = *a;
+        pair += (pair.empty() ? "" : ",") + std::string(*a);
+        if (!std::strchr(*a, ':') && a[1])
+            continue;
         const size_t colon = pair.rfind(':');
         char *end = nullptr;
         const double alpha = colon == std::string::npos
@@ -462,6 +471,7 @@ RenderRequest read_render_options(const RenderOptions &options)
                             "(invisible) to 1 (opaque)"),
                           pair.c_str());
         r.opacity.emplace_back(pair.substr(0, colon), alpha);
+        pair.clear();
     }
     if (o->opacity_length->answer) {
         r.opacity_length = read_double(o->opacity_length);

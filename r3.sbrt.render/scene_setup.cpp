@@ -6,42 +6,31 @@
 #include "scene_setup.hpp"
 
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <string>
 
 #include <glm/geometric.hpp>
 
+#include "model/class_names.hpp"
 #include "scene/scene_parts.hpp"
-#include "request_error.hpp"
 
-uint32_t find_class(const sbrt::Model &model, const std::string &name,
-                    const char *option, const std::string &input)
+namespace {
+
+/// "SBRT <input>", as the module names the model in its messages.
+std::string model_name(const RenderRequest &request)
 {
-    const std::vector<sbrt::Material> &materials = model.materials();
-    char *end = nullptr;
-    const long id = std::strtol(name.c_str(), &end, 10);
-    const bool numeric = !name.empty() && *end == '\0';
-    for (uint32_t i = 1; i < materials.size(); ++i)
-        if ((numeric && materials[i].id == id) ||
-            G_strcasecmp(materials[i].label.c_str(), name.c_str()) == 0)
-            return i;
-    std::string classes;
-    for (uint32_t i = 1; i < materials.size(); ++i)
-        classes += (i > 1 ? ", " : "") + std::to_string(materials[i].id) +
-                   (materials[i].label.empty() ? "" : " (" + materials[i].label + ")");
-    bad_request(_("%s=%s: SBRT <%s> has no class with this id or label; its "
-                    "classes are %s"),
-                  option, name.c_str(), input.c_str(), classes.c_str());
+    return "SBRT <" + request.input + ">";
 }
+
+} // namespace
 
 std::vector<uint32_t> hidden_materials(const RenderRequest &request,
                                        const sbrt::Model &model)
 {
-    std::vector<uint32_t> hidden;
-    for (const std::string &name : request.hide)
-        hidden.push_back(find_class(model, name, "hide", request.input));
-    return hidden;
+    if (request.hide.empty())
+        return {};
+    return sbrt::ClassNames(model.materials()).resolve(request.hide, "hide",
+                                                       model_name(request));
 }
 
 sbrt::Translucency translucency(const RenderRequest &request,
@@ -50,9 +39,10 @@ sbrt::Translucency translucency(const RenderRequest &request,
     if (request.opacity.empty())
         return {};
     const sbrt::Frame &f = model.frame();
+    const sbrt::ClassNames names(model.materials());
     std::vector<std::pair<uint32_t, double>> alphas;
     for (const auto &[name, alpha] : request.opacity)
-        alphas.emplace_back(find_class(model, name, "opacity", request.input), alpha);
+        alphas.emplace_back(names.resolve_one(name, "opacity", model_name(request)), alpha);
     return sbrt::make_translucency(
         model, alphas, request.opacity_length.value_or(std::sqrt(f.ew_res() * f.ns_res())));
 }

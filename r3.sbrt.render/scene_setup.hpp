@@ -1,7 +1,7 @@
 /****************************************************************************
  * MODULE:    r3.sbrt.render
  * PURPOSE:   The scene's visual operations from the request: hidden
- *            and translucent classes (ids or labels) and clip planes
+ *            and translucent classes (ids, aliases or labels) and clip planes
  *            (plane=, section=)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
@@ -14,12 +14,9 @@
 #include "render_options.hpp"
 #include "scene/scene.hpp"
 
-/// Material index of a class given by id or label in `option`; a fatal
-/// error lists the classes when none matches.
-uint32_t find_class(const sbrt::Model &model, const std::string &name,
-                    const char *option, const std::string &input);
-
-/// Material indices of hide=; a fatal error names an unknown class.
+/// Material indices of hide= (class ids, aliases or labels:
+/// sbrt::ClassNames); an error names an unknown class and lists the names
+/// of every class by id.
 std::vector<uint32_t> hidden_materials(const RenderRequest &request,
                                        const sbrt::Model &model);
 

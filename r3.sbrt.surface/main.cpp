@@ -42,8 +42,9 @@ Options define_options()
     o.classes->key_desc = "class";
     o.classes->multiple = YES;
     o.classes->required = NO;
-    o.classes->label = _("Classes of the set: class ids or labels");
-    o.classes->description = _("Labels are compared without regard to case");
+    o.classes->label = _("Classes of the set: class ids, codes, short names or labels");
+    o.classes->description = _("Names are compared without regard to case; a label that "
+                               "holds commas as it is, or without its commas");
 
     o.top = define_output("top", _("Elevation of the highest top of the set"));
     o.base = define_output("base", _("Elevation of the lowest bottom of the set"));

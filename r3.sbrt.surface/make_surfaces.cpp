@@ -13,6 +13,7 @@
 #include "measure/class_set.hpp"
 #include "measure/column_figures.hpp"
 #include "measure/expected_thickness.hpp"
+#include "model/class_names.hpp"
 #include "sbrt_store.hpp"
 #include "surface.hpp"
 #include "surface_maps.hpp"
@@ -59,8 +60,13 @@ void make_surfaces(const SurfaceRequest &request)
     G_get_window(&region);
     const sbrt::Model model = read_model(request, region);
     const bool by_classes = !request.classes.empty();
+    // classes= by id, code, short name or label (sbrt::ClassNames)
     const sbrt::ClassSet set =
-        by_classes ? sbrt::ClassSet::named(model, request.classes) : sbrt::ClassSet();
+        by_classes ? sbrt::ClassSet::of_materials(
+                         model, sbrt::ClassNames(model.materials())
+                                    .resolve(request.classes, "classes",
+                                             "SBRT <" + request.input + ">"))
+                   : sbrt::ClassSet();
     const std::string described = by_classes ? set.describe(model) : "";
     if (by_classes)
         G_verbose_message(_("Classes of the set: %s"), described.c_str());

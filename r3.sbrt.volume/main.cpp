@@ -31,8 +31,10 @@ Options define_options()
     o.classes->key_desc = "class";
     o.classes->multiple = YES;
     o.classes->required = NO;
-    o.classes->label = _("Classes of one set, measured together: class ids or labels");
-    o.classes->description = _("Default: every class, one row each");
+    o.classes->label = _("Classes of one set, measured together: class ids, codes, "
+                         "short names or labels");
+    o.classes->description = _("Default: every class, one row each. A label that holds "
+                               "commas as it is, or without its commas");
 
     o.probability = sbrt_grass::define_probability(
         _("Probability whose expected volume to report too (e.g. beside classes=5,6,7, "

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "model/class_names.hpp"
 #include "sbrt_store.hpp"
 #include "util/error.hpp"
 #include "volume.hpp"
@@ -117,9 +118,13 @@ void report_volumes(const VolumeRequest &request)
     report.input = request.input;
     report.units = G_database_unit_name(TRUE);
     report.model = &model;
+    // classes= by id, code, short name or label (sbrt::ClassNames)
     report.sets = request.classes.empty()
                       ? sbrt::every_class(model)
-                      : std::vector<sbrt::ClassSet>{sbrt::ClassSet::named(model, request.classes)};
+                      : std::vector<sbrt::ClassSet>{sbrt::ClassSet::of_materials(
+                            model, sbrt::ClassNames(model.materials())
+                                       .resolve(request.classes, "classes",
+                                                "SBRT <" + request.input + ">"))};
     // the model's cells whose centre lies in the region, in an area where asked
     const sbrt::CellZones in_region = sbrt::CellZones::in_window(
         model.frame(),
