@@ -125,6 +125,25 @@ void warn_if_probability(const FileVariable &v, const sbrt::Classifier &classifi
                   sbrt::printable(v.name()).c_str());
 }
 
+/// The kinds (and units, where the file gave none) that the survey's
+/// preset gives the property channels (issue 51: GeoTOP delivers its
+/// kans_* without units).
+void apply_preset_channels(const std::string &survey, std::vector<sbrt::ChannelInfo> &infos)
+{
+    const sbrt::SurveyPreset &preset = sbrt::find_preset(survey);
+    if (sbrt::apply_channel_rules(preset, infos) == 0)
+        return;
+    std::string kinds;
+    for (const sbrt::ChannelInfo &c : infos)
+        if (c.kind != sbrt::ChannelKind::unset)
+            kinds += (kinds.empty() ? "" : ", ") + sbrt::printable(c.name) + " " +
+                     sbrt::channel_kind_name(c.kind) +
+                     (c.unit.empty() ? "" : " in " + sbrt::printable(c.unit));
+    G_message(_("Preset %s says what the property channels are: %s (change it with "
+                "r3.sbrt.support channel= unit= kind=)"),
+              preset.name.c_str(), kinds.c_str());
+}
+
 } // namespace
 
 std::vector<std::string> same_grid_variables(const char *file, const char *variable)
@@ -252,6 +271,8 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
             grids.push_back(p->band_grid());
             names.push_back(p->name());
         }
+        if (survey != "none")
+            apply_preset_channels(survey, infos);
         channel_sink = std::make_unique<sbrt::FileSink>(channels_file);
         channel_writer = std::make_unique<sbrt::ChannelsWriter>(
             *channel_sink, frame.rows, frame.cols, sbrt::StacksV2Options{}.block_size,

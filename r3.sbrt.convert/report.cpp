@@ -48,7 +48,9 @@ void print_channels(const sbrt::PropertyChannels &channels, bool shell)
             // and the scalars above stay set (no pipeline of assignments)
             fprintf(stdout, "channel=%s\n",
                     sbrt::shell_word(sbrt::record_field(c.name) + numbers + "unit=" +
-                                     sbrt::record_field(c.unit) + "|long_name=" +
+                                     sbrt::record_field(c.unit) + "|kind=" +
+                                     sbrt::channel_kind_name(c.known_kind()) +
+                                     "|long_name=" +
                                      sbrt::record_field(c.long_name))
                         .c_str());
             continue;
@@ -57,10 +59,11 @@ void print_channels(const sbrt::PropertyChannels &channels, bool shell)
         if (c.has_fill)
             std::snprintf(fill, sizeof fill, "fill %.9g", double(c.fill));
         fprintf(stdout, "  %-12s %-4s %9.6g .. %-9.6g %s, %5.1f %% valid, %.3f bytes "
-                        "per voxel%s%s%s%s\n",
+                        "per voxel, %s%s%s%s%s\n",
                 sbrt::printable(c.name).c_str(), sbrt::channel_type_name(c.type()), c.min,
                 c.max, fill, c.voxels ? 100.0 * double(c.valid) / double(c.voxels) : 0.0,
-                per_voxel, c.unit.empty() ? "" : ", unit ", sbrt::printable(c.unit).c_str(),
+                per_voxel, sbrt::channel_kind_name(c.known_kind()),
+                c.unit.empty() ? "" : " in ", sbrt::printable(c.unit).c_str(),
                 c.long_name.empty() ? "" : ": ", sbrt::printable(c.long_name).c_str());
         if (c.scale != 1 || c.offset != 0)
             fprintf(stdout, "  %-12s value = stored * %.9g + %.9g\n", "", c.scale,

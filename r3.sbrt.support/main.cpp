@@ -4,7 +4,7 @@
  * PURPOSE:   Sets the labels and colours of an SBRT's classes after import,
  *            as r3.colors and r.category do for maps: GRASS colour tables,
  *            colour rules, another map's table, category rules, survey
- *            presets
+ *            presets; and the unit and kind of property channels
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <chrono>
@@ -13,6 +13,8 @@
 #include <optional>
 #include <string>
 
+#include "channel_changes.hpp"
+#include "format/channels_rewrite.hpp"
 #include "format/format.hpp"
 #include "format/sbrt_lock.hpp"
 #include "grass.hpp"
@@ -29,6 +31,7 @@ namespace {
 
 struct Options {
     Option *sbrt, *color, *rules, *raster, *raster_3d, *preset, *labels;
+    Option *channel, *unit, *kind;
     Flag *remove;
 };
 
@@ -89,9 +92,44 @@ Options define_options()
         _("Remove the classes' own colours (the default palette draws them)");
     o.remove->guisection = _("Colours");
 
+    // issue 51: what a property channel is (GeoTOP's kans_* come without units)
+    o.channel = G_define_option();
+    o.channel->key = "channel";
+    o.channel->type = TYPE_STRING;
+    o.channel->key_desc = "name";
+    o.channel->required = NO;
+    o.channel->multiple = YES;
+    o.channel->description = _("Property channels whose unit and kind to set");
+    o.channel->guisection = _("Channels");
+
+    o.unit = G_define_option();
+    o.unit->key = "unit";
+    o.unit->type = TYPE_STRING;
+    o.unit->required = NO;
+    o.unit->label = _("Unit of the channels ('none' removes it)");
+    o.unit->description = _("E.g. % for a probability in percent");
+    o.unit->guisection = _("Channels");
+
+    o.kind = G_define_option();
+    o.kind->key = "kind";
+    o.kind->type = TYPE_STRING;
+    o.kind->required = NO;
+    o.kind->options = sbrt::channel_kind_names();
+    o.kind->label = _("What the channels' values are");
+    o.kind->description = _("probability= of r3.sbrt.surface and r3.sbrt.volume sums "
+                            "channels of kind probability (in %)");
+    o.kind->descriptions = _("probability;a probability in % (0-100);"
+                             "percentage;a share in % that is no probability;"
+                             "uncertainty;a measure of uncertainty;"
+                             "other;any other quantity");
+    o.kind->guisection = _("Channels");
+
     G_option_exclusive(o.color, o.rules, o.raster, o.raster_3d, o.preset, o.remove, NULL);
     G_option_required(o.color, o.rules, o.raster, o.raster_3d, o.preset, o.labels,
-                      o.remove, NULL);
+                      o.remove, o.channel, NULL);
+    G_option_requires(o.channel, o.unit, o.kind, NULL);
+    G_option_requires(o.unit, o.channel, NULL);
+    G_option_requires(o.kind, o.channel, NULL);
     return o;
 }
 
@@ -110,12 +148,13 @@ std::string own_sbrt(const char *name)
     return dir;
 }
 
-std::string history_line()
+/// "WHAT changed: DATE by USER: COMMAND", a line of `hist`.
+std::string history_line(const char *what = "legend")
 {
     const time_t now = time(nullptr);
     char date[64];
     strftime(date, sizeof date, "%a %b %d %H:%M:%S %Y", localtime(&now));
-    return std::string("legend changed: ") + date + " by " + G_whoami() + ": " +
+    return std::string(what) + " changed: " + date + " by " + G_whoami() + ": " +
            G_recreate_command() + "\n";
 }
 
@@ -172,20 +211,43 @@ void change_legend(const Options &o, const Inputs &in, const char *name,
         apply_label_rules(in.label_rules, o.labels->answer, name, materials);
 }
 
+/// Whether the options change the legend (not only channels).
+bool changes_legend(const Options &o)
+{
+    return o.color->answer || o.rules->answer || o.raster->answer || o.raster_3d->answer ||
+           o.preset->answer || o.labels->answer || o.remove->answer;
+}
+
 void run(const Options &o)
 {
     const char *name = o.sbrt->answer;
     const std::string dir = own_sbrt(name);
     const Inputs inputs = read_inputs(o);
+    std::optional<ChannelChange> channel_change;
+    if (o.channel->answers)
+        channel_change = read_channel_change(o.channel->answers, o.unit->answer,
+                                             o.kind->answer);
     // read -> change -> rewrite under the lock: a change made meanwhile
     // by another process would otherwise be overwritten by ours
     const sbrt::SbrtLock lock = lock_for_change(dir, name);
     sbrt::Model model = sbrt_grass::read_sbrt_map(name);
-    std::vector<sbrt::Material> &materials = model.materials();
-    if (materials.size() < 2)
-        G_fatal_error(_("SBRT <%s> has no classes"), name);
-    change_legend(o, inputs, name, materials);
-    sbrt::rewrite_legend(dir, model, history_line());
+    // the channels' change checked before the legend is written: all or
+    // nothing of a bad command
+    std::shared_ptr<const sbrt::PropertyChannels> channels;
+    std::vector<sbrt::ChannelInfo> infos;
+    if (channel_change) {
+        channels = sbrt_grass::read_channels_map(name, model);
+        infos = changed_channels(channels.get(), *channel_change, name);
+    }
+    if (changes_legend(o)) {
+        std::vector<sbrt::Material> &materials = model.materials();
+        if (materials.size() < 2)
+            G_fatal_error(_("SBRT <%s> has no classes"), name);
+        change_legend(o, inputs, name, materials);
+        sbrt::rewrite_legend(dir, model, history_line());
+    }
+    if (channel_change)
+        sbrt::rewrite_channels(dir, *channels, infos, history_line("channels"));
 }
 
 } // namespace
@@ -201,7 +263,8 @@ int main(int argc, char *argv[])
     G_add_keyword(_("SBRT"));
     module->description =
         _("Sets the labels and colours of the classes of a stack-based "
-          "representation of terrains (SBRT).");
+          "representation of terrains (SBRT), and the unit and kind of its "
+          "property channels.");
     const Options options = define_options();
     sbrt_grass::offer_own_sbrts_in_dialog(options.sbrt, argc, argv);
     if (G_parser(argc, argv))

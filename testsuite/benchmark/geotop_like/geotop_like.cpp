@@ -14,8 +14,10 @@
  *            100 in every valid voxel, 0 in class-0 voxels, kans_4 0
  *            everywhere), onz_lk = round(100 H(p) / ln K) (K the classes
  *            possible in the voxel's unit) and onz_ls (0..30), int16 with
- *            _FillValue -127, on the same dims. Or reads the variables once
- *            through the netCDF library (the import's baseline)
+ *            _FillValue -127, on the same dims, Dutch long_names and no
+ *            units, as TNO delivers them (issue 51). Or reads the
+ *            variables once through the netCDF library (the import's
+ *            baseline)
  * USAGE:     geotop_like write FILE NX NY NZ [properties] |
  *            geotop_like read FILE [VARIABLE...]
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
@@ -200,10 +202,9 @@ int write_file(const char *path, size_t nx, size_t ny, size_t nz, bool propertie
     define("lithok", &vl);
     for (int p = 0; properties && p < PROPERTIES; ++p) {
         define(PROPERTY_NAMES[p], &vp[p]);
-        if (p < 9) {
+        // as TNO delivers them (issue 51): a Dutch long_name, no units
+        if (p < 9)
             text(vp[p], "long_name", "kans op lithoklasse " + std::to_string(p + 1));
-            text(vp[p], "units", "%");
-        }
         else
             text(vp[p], "long_name", p == 9 ? "onzekerheid lithoklasse"
                                             : "onzekerheid stratigrafische eenheid");
