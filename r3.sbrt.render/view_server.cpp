@@ -14,6 +14,7 @@
 #include <optional>
 #include <new>
 #include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -118,8 +119,15 @@ void ViewServer::classes(const RenderRequest &request)
     std::fprintf(out_, "model %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d\n", f.north,
                  f.south, f.east, f.west, f.bottom, f.top, whole.zexag, int(voxels));
     std::fprintf(out_, "classes %zu\n", model.materials().size());
-    // the colours a render draws (the palette's where a class has none)
-    for (uint32_t i = 0; i < model.materials().size(); ++i)
+    // the colours a render draws (the palette's where a class has none),
+    // by class id (a GeoTOP file lists its classes in its own order)
+    std::vector<uint32_t> by_id(model.materials().size());
+    for (uint32_t i = 0; i < by_id.size(); ++i)
+        by_id[i] = i;
+    std::stable_sort(by_id.begin(), by_id.end(), [&](uint32_t a, uint32_t b) {
+        return model.materials()[a].id < model.materials()[b].id;
+    });
+    for (const uint32_t i : by_id)
         std::fputs(class_reply_line(model.materials()[i], sbrt::material_color(model, i))
                        .c_str(),
                    out_);

@@ -125,6 +125,25 @@ class TestViewServer(TestCase):
         for s in strata:
             self.assertEqual(len(s.rgb), 3)
 
+    def test_classes_come_by_id(self):
+        """The classes reply lists the classes by id, whatever order the
+        model holds them in (a GeoTOP file: 3, 6, 2, 7, 8, 5, 0, 1)."""
+        self.use_temp_region()
+        self.runModule("g.region", n=40, s=0, w=0, e=40, b=0, t=30, res=10, res3=10,
+                       tbres=10)
+        # met top down 9, 2, 5 (and bottom up 5, 2, 9): neither is by id
+        self.runModule("r3.mapcalc", overwrite=True,
+                       expression="vs_order = if(depth() == 3, 9, if(depth() == 2, 2, 5))")
+        subprocess.run(["r3.sbrt.convert", "input=vs_order", "output=vs_order",
+                        "--overwrite", "--quiet"], check=True, timeout=120)
+        try:
+            _extent, strata = self.server.strata("vs_order")
+        finally:
+            self.runModule("g.remove", flags="f", type="raster_3d", name="vs_order")
+            self.runModule("r3.sbrt.manage", flags="f", remove="vs_order")
+        ids = [s.id for s in strata if s.id != -2**31]  # the empty material's
+        self.assertEqual(ids, [2, 5, 9])
+
     def test_bad_requests(self):
         """A word the module does not know, and a value it refuses, are
         answered with the module's message and the server goes on
