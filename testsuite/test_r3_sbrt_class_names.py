@@ -117,9 +117,10 @@ class TestClassNames(TestCase):
                           opacity=f"{LOAM}:0.5,zf:0", backend="cpu", overwrite=True)
 
     def test_unknown_name_lists_the_names_sorted_by_id(self):
-        listed = ("2 [k, clay] clay (klei); 3 [kz, loam, clayey sand, sandy clay] " + LOAM +
-                  "; 5 [zf, fine sand] fine sand (zand fijn); 6 [zm, medium sand] medium "
-                  "sand (zand midden); 8 [g, gravel] gravel (grind)")
+        listed = ("2 (clay (klei); also k, clay), 3 (" + LOAM + "; also kz, loam, clayey "
+                  "sand, sandy clay), 5 (fine sand (zand fijn); also zf, fine sand), 6 "
+                  "(medium sand (zand midden); also zm, medium sand), 8 (gravel (grind); "
+                  "also g, gravel)")
         for module, option in (("r3.sbrt.volume", "classes"), ("r3.sbrt.surface", "classes"),
                                ("r3.sbrt.render", "hide")):
             extra = ["thickness=cn_x"] if module == "r3.sbrt.surface" else (
@@ -127,14 +128,15 @@ class TestClassNames(TestCase):
                 else [])
             rc, err = error_of(module, "input=cn_litho", f"{option}=g,granite", *extra)
             self.assertNotEqual(rc, 0, module)
-            self.assertIn(f"{option}=granite: no class of SBRT <cn_litho> has this id, "
+            self.assertIn(f"{option}: no class of SBRT <cn_litho> is named 'granite' (an id, "
                           "code, short name or label", err)
             self.assertIn("without its commas", err)
             self.assertIn(listed, err)
         rc, err = error_of("r3.sbrt.render", "input=cn_strat", "output=cn_x", "view=top",
                            "backend=cpu", "hide=BXX")
-        self.assertIn("1090 [NIHO] NIHO Formatie van Nieuwkoop, Hollandveen Laagpakket; "
-                      "2010 [EC] EC Formatie van Echteld; 3100 [BX] BX Formatie van Boxtel",
+        self.assertIn("1090 (NIHO Formatie van Nieuwkoop, Hollandveen Laagpakket; also NIHO), "
+                      "2010 (EC Formatie van Echteld; also EC), 3100 (BX Formatie van Boxtel; "
+                      "also BX)",
                       err)
 
     def test_relabelled_class_keeps_no_preset_names(self):
@@ -152,7 +154,7 @@ class TestClassNames(TestCase):
                              ["5 8"])
             rc, err = error_of("r3.sbrt.volume", "input=cn_own", "classes=g")
             self.assertNotEqual(rc, 0)
-            self.assertIn("8 my gravel", err)
+            self.assertIn("8 (my gravel)", err)
         finally:
             gs.run_command("g.remove", flags="f", type="raster_3d", name="cn_own",
                            quiet=True)

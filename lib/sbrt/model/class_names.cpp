@@ -178,10 +178,9 @@ uint32_t ClassNames::resolve_one(const std::string &name, const std::string &opt
 {
     if (const uint32_t m = find(name))
         return m;
-    fail(option, "=", fit_bytes(printable(trim(name)), 200), ": no class of ", what,
-         " has this id, code, short name or label; a label that holds commas may be "
-         "given as it is (quoted) or without its commas. The classes by id, "
-         "[other names] and label: ",
+    fail(option, ": no class of ", what, " is named '", fit_bytes(printable(trim(name)), 200),
+         "' (an id, code, short name or label; a label that holds commas may be "
+         "given as it is, quoted, or without its commas); the classes by id: ",
          accepted());
 }
 
@@ -198,17 +197,15 @@ std::string ClassNames::accepted() const
     std::string out;
     for (size_t i = 0; i < order.size(); ++i) {
         const Material &m = materials_[order[i]];
-        std::string entry = std::to_string(m.id);
+        std::string names = m.label.empty() ? "" : fit_bytes(printable(m.label), 300);
         const std::vector<std::string> &aliases = aliases_[order[i]];
         for (size_t k = 0; k < aliases.size(); ++k)
-            entry += (k ? ", " : " [") + printable(aliases[k]) +
-                     (k + 1 == aliases.size() ? "]" : "");
-        if (!m.label.empty())
-            entry += " " + fit_bytes(printable(m.label), 300);
+            names += (k ? ", " : names.empty() ? "also " : "; also ") + printable(aliases[k]);
+        const std::string entry = std::to_string(m.id) + (names.empty() ? "" : " (" + names + ")");
         if (out.size() + entry.size() > MAX_LISTED_BYTES)
-            return out + "; and " + std::to_string(order.size() - i) +
+            return out + ", and " + std::to_string(order.size() - i) +
                    " more (r3.sbrt.convert -p sbrt=NAME lists them all)";
-        out += (i ? "; " : "") + entry;
+        out += (i ? ", " : "") + entry;
     }
     return out;
 }

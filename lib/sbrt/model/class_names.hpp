@@ -45,8 +45,8 @@ public:
     /// Material index of the class `name` names, or EMPTY (0) for none.
     uint32_t find(const std::string &name) const;
     /// Material indices of a list option's answers, in their order (a
-    /// label's parts joined again); throws sbrt::Error
-    /// "OPTION=NAME: no class of WHAT ...; the classes: ..." on the first
+    /// label's parts joined again); throws sbrt::Error "OPTION: no class
+    /// of WHAT is named 'NAME' (...); the classes by id: ..." on the first
     /// name no class answers to.
     std::vector<uint32_t> resolve(const std::vector<std::string> &names,
                                   const std::string &option,
@@ -60,7 +60,7 @@ public:
     {
         return aliases_.at(material);
     }
-    /// Every class by id with its names: "ID [ALIAS, ...] LABEL; ...",
+    /// Every class by id with its names: "ID (LABEL; also ALIAS, ...), ...",
     /// cut past about 16000 bytes with how many more there are.
     std::string accepted() const;
 
