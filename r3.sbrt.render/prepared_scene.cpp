@@ -58,8 +58,10 @@ sbrt::Shading make_shading(const RenderRequest &request, const sbrt::Drape *drap
                            const sbrt::UncertaintyFade *fade)
 {
     sbrt::Shading shading;
-    shading.light = sbrt::Shading::light_from(request.light_azimuth,
-                                              request.light_elevation);
+    // a top view is a map: lit from straight above, its flat tops in the
+    // legend's colours (issue 51, item 4)
+    shading.light = sbrt::Shading::light_of_view(request.view.kind, request.light_azimuth,
+                                                 request.light_elevation);
     shading.ambient = request.ambient;
     shading.background = request.background;
     shading.normals = request.normals;

@@ -25,6 +25,13 @@ glm::dvec3 Shading::light_from(double azimuth, double elevation)
             std::sin(el)};
 }
 
+glm::dvec3 Shading::light_of_view(ViewKind kind, double azimuth, double elevation)
+{
+    if (kind == ViewKind::top)
+        return {0, 0, 1};
+    return light_from(azimuth, elevation);
+}
+
 namespace {
 
 /// lround for 0 <= c <= 255 (half away from zero), without a libm call

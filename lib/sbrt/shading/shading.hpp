@@ -14,6 +14,7 @@
 
 #include "model/material_table.hpp"
 #include "output/band.hpp"
+#include "scene/view.hpp"
 #include "tracing/hit_image.hpp"
 
 namespace sbrt {
@@ -38,6 +39,11 @@ struct Shading {
 
     /// Direction from azimuth (degrees clockwise from north) and elevation.
     static glm::dvec3 light_from(double azimuth, double elevation);
+    /// The light of a view of `kind`: a top view (a map) is lit from
+    /// straight above, so that L.N = 1 on an upward face and a flat top
+    /// shows its legend colour exactly (whatever the ambient share), as
+    /// a map's legend promises; the other views from azimuth, elevation.
+    static glm::dvec3 light_of_view(ViewKind kind, double azimuth, double elevation);
 };
 
 /// \brief Per-pixel outputs, row-major, row 0 at the top of the image.
