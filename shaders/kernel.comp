@@ -111,9 +111,10 @@ float seen_depth(int r, int c, float fx, float fy)
     return 1.0 + moved > 0.0 ? d / (1.0 + moved) : INF;
 }
 
-// KernelNormals::normal: the unit vectors towards the kernel's cells that
-// lie in front of the surface seen where they project; false (the face
-// normal stays) where none does
+// KernelNormals::normal: the unit vectors (in voxel steps) towards the
+// kernel's cells that lie in front of the surface seen where they
+// project, taken to map space; false (the face normal stays) where none
+// does
 bool kernel_normal(vec3 point, float depth, out vec3 n)
 {
     uint cols = grid.z, rows = grid.w;
@@ -140,10 +141,12 @@ bool kernel_normal(vec3 point, float depth, out vec3 n)
         if (z < seen_depth(int(r), int(c), at_c - c - 0.5, at_r - r - 0.5) - tolerance)
             sum += cell.xyz; // in front of the surface: empty
     }
-    float length_of_sum = length(sum);
-    if (!(length_of_sum > 0.0))
+    // from voxel steps to map space (the inverse transpose of the scaling)
+    vec3 normal = sum / kernel_voxel.xyz;
+    float length_of_normal = length(normal);
+    if (!(length_of_normal > 0.0))
         return false;
-    n = sum / length_of_sum;
+    n = normal / length_of_normal;
     return true;
 }
 

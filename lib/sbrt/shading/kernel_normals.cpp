@@ -16,7 +16,8 @@ KernelNormals::KernelNormals(const Tracer &tracer, const Camera &camera, int k)
     : tracer_(tracer), rows_(camera.rows()), cols_(camera.cols()),
       parallel_(camera.parallel()), origin_(camera.origin()),
       forward_(camera.forward()), du_(camera.du()), dv_(camera.dv()),
-      du2_(glm::dot(du_, du_)), dv2_(glm::dot(dv_, dv_)),
+      voxel_(tracer.frame().voxel_size()), du2_(glm::dot(du_, du_)),
+      dv2_(glm::dot(dv_, dv_)),
       on_surface_(0.05 * std::min({tracer.frame().voxel_size().x,
                                    tracer.frame().voxel_size().y,
                                    tracer.frame().voxel_size().z}))
@@ -25,11 +26,10 @@ KernelNormals::KernelNormals(const Tracer &tracer, const Camera &camera, int k)
         fail("kernel size ", k, " must be odd, from 3 to 11");
     if (camera.is_window())
         fail("kernel normals need the whole image, not a window of its rows");
-    const glm::dvec3 voxel = tracer.frame().voxel_size();
     const int h = k / 2;
     auto cell = [&](int a, int b, int c) {
-        const glm::dvec3 off = glm::dvec3(a, b, c) * voxel;
-        return Cell{glm::normalize(off), glm::dot(off, du_), glm::dot(off, dv_),
+        const glm::dvec3 steps(a, b, c), off = steps * voxel_;
+        return Cell{glm::normalize(steps), glm::dot(off, du_), glm::dot(off, dv_),
                     glm::dot(off, forward_)};
     };
     for (int a = -h; a <= h; ++a)

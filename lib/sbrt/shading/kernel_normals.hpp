@@ -31,9 +31,14 @@ namespace sbrt {
 /// not a slope, nor is a crease), of the reciprocal depth in perspective
 /// (affine over the image on a plane). So the centres on a flat top's own
 /// level count neither way, as they should, instead of by where in their
-/// pixels they fall (a blotchy top). The normal is the normalised sum of the unit
-/// vectors towards the empty centres. The face normal stays where the
-/// kernel finds no empty centre.
+/// pixels they fall (a blotchy top). The normal is the sum of the unit
+/// vectors towards the empty centres in voxel steps (the paper's cubic
+/// voxels), taken to map space (divided by the voxel's sides: a normal
+/// transforms by the inverse of the scaling) and normalised. Summed in map
+/// space instead, the cells beside the centre of a flat voxel (100 m x
+/// 100 m x 10 m: GeoTOP at zexag=20) point nearly sideways and a step of
+/// one level in the kernel tilts a flat top by tens of degrees (issue 51,
+/// item 6). The face normal stays where the kernel finds no empty centre.
 class KernelNormals {
 public:
     /// `k` odd, 3..11; `camera` the whole image (not a window of it).
@@ -58,7 +63,7 @@ public:
 
     /// A kernel cell's offset from the centre in the camera's terms.
     struct Cell {
-        glm::dvec3 unit; ///< unit vector from the centre (map space)
+        glm::dvec3 unit; ///< unit vector from the centre, in voxel steps
         double along_du, along_dv, along_forward;
     };
     /// The k^3 - 1 cells around the centre (what the GPU's pass reads).
@@ -66,6 +71,9 @@ public:
     /// The depth tolerance's part that does not grow with the depth: a
     /// twentieth of the voxel's least side (exaggerated map units).
     double tolerance_voxel() const { return on_surface_; }
+    /// The voxel's sides (exaggerated map units): a sum of cells' unit
+    /// vectors divided by them is a map-space normal.
+    const glm::dvec3 &voxel() const { return voxel_; }
 
     /// The depth of the surface seen at pixel (r, c), at (fx, fy) pixels
     /// from its centre (x right, y down, -0.5..0.5).
@@ -77,7 +85,7 @@ private:
     const Tracer &tracer_;
     int rows_, cols_;
     bool parallel_;
-    glm::dvec3 origin_, forward_, du_, dv_;
+    glm::dvec3 origin_, forward_, du_, dv_, voxel_;
     double du2_, dv2_, on_surface_;
     std::vector<Cell> cells_;
     Cell corners_[8]; ///< the extreme cells: their images bound every cell's
@@ -109,10 +117,12 @@ bool KernelNormals::normal(const Hit &hit, double depth, const DepthAt &depth_at
                     tolerance)
             sum += cell.unit; // in front of the surface: empty
     }
-    const double length = glm::length(sum);
+    // from voxel steps to map space (the inverse transpose of the scaling)
+    const glm::dvec3 normal = sum / voxel_;
+    const double length = glm::length(normal);
     if (!(length > 0))
         return false;
-    out = sum / length;
+    out = normal / length;
     return true;
 }
 
