@@ -10,6 +10,7 @@
 #include <cstdlib>
 
 #include "legend.hpp"
+#include "property_colors.hpp"
 #include "raster_metadata.hpp"
 
 namespace {
@@ -197,11 +198,12 @@ void ImageMaps::close(const sbrt::Model &model, const sbrt::PropertyPaint *prope
                                   rule.high.rgb[1], rule.high.rgb[2], &colors);
         Rast_write_colors(map.name.c_str(), G_mapset(), &colors);
         Rast_free_colors(&colors);
-        const sbrt::ChannelInfo &first = property->channels().info(property->summed()[0]);
-        // the channel's unit and name come from the model's file: cut to
-        // one line of what GRASS keeps
-        if (!first.unit.empty())
-            sbrt_grass::write_raster_units(map.name.c_str(), first.unit);
+        // the unit the legend shows ("%" for a sum of probabilities); it
+        // and the name come from the model's file: cut to one line of what
+        // GRASS keeps
+        const std::string unit = property_unit(property->channels(), property->summed());
+        if (!unit.empty())
+            sbrt_grass::write_raster_units(map.name.c_str(), unit);
         sbrt_grass::put_raster_title(map.name.c_str(),
                                      "property " + request_.property_title());
     }

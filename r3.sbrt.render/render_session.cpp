@@ -149,7 +149,11 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
             asked.property = {request.fade};
             const std::vector<size_t> channel = property_channels(asked, &all);
             const sbrt::ChannelInfo &info = all.info(channel[0]);
-            double low = 0, high = info.unit == "%" ? 100 : info.physical(float(info.max));
+            // a channel in % (its unit or its kind) fades over 0-100
+            const sbrt::ChannelKind kind = info.known_kind();
+            const bool in_percent = info.unit == "%" || kind == sbrt::ChannelKind::probability ||
+                                    kind == sbrt::ChannelKind::percentage;
+            double low = 0, high = in_percent ? 100 : info.physical(float(info.max));
             if (request.fade_range) {
                 low = (*request.fade_range)[0];
                 high = (*request.fade_range)[1];
