@@ -129,9 +129,13 @@ void print_shell(const sbrt::ProfileLine &line, const std::optional<ProfileGrid>
     // text (the datum comes from the model's file) as one shell word each
     std::printf("distance_unit=%s\n", sbrt::shell_word(axes.distance_unit).c_str());
     std::printf("elevation_title=%s\n", sbrt::shell_word(elevation_title(units)).c_str());
-    std::printf("distance_title=%s\n",
-                sbrt::shell_word(distance_title(axes, line_name(line.vertices().size())))
-                    .c_str());
+    // the titles as the figure draws them: fitted to its width
+    std::printf("title=%s\n", sbrt::shell_word(layout.title).c_str());
+    std::printf("distance_title=%s\n", sbrt::shell_word(layout.distance_title).c_str());
+    std::string lettered;
+    for (size_t k : layout.lettered)
+        lettered += (lettered.empty() ? "" : ",") + std::to_string(k);
+    std::printf("lettered_vertices=%s\n", lettered.c_str());
     std::string cut;
     for (int32_t id : layout.classes_cut)
         cut += (cut.empty() ? "" : ",") + std::to_string(id);
@@ -181,6 +185,8 @@ void run(const ProfileRequest &request)
         return;
     FigureContent content;
     content.title = "Profile " + line_name(line.vertices().size()) + " of " + request.input;
+    content.short_title =
+        "Profile " + short_line_name(line.vertices().size()) + " of " + request.input;
     content.model = &model;
     content.line = &line;
     content.units = units;

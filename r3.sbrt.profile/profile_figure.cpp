@@ -14,6 +14,7 @@
 #include "output/png_file.hpp"
 #include "util/axis_ticks.hpp"
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 using sbrt_grass::Canvas;
 using sbrt_grass::LegendClass;
@@ -110,9 +111,88 @@ void show_text_at(cairo_t *cr, const std::string &text, double x, double y, doub
     show_text(cr, text);
 }
 
-/// The frame, ticks and their labels, the axes' titles, the vertices.
+/// `text` at the current font cut to at most `width` pixels on a
+/// character boundary, ending in an ellipsis where it was cut (nothing
+/// where not even that fits).
+std::string fit_text(cairo_t *cr, const std::string &text, double width)
+{
+    const std::string valid = sbrt::valid_utf8(text);
+    if (text_width(cr, valid) <= width)
+        return valid;
+    const std::string ellipsis = "\u2026";
+    // the ends of its characters; the longest prefix that fits, by halves
+    std::vector<size_t> ends{0};
+    for (size_t i = 1; i < valid.size(); ++i)
+        if ((static_cast<unsigned char>(valid[i]) & 0xc0) != 0x80)
+            ends.push_back(i);
+    size_t low = 0, high = ends.size() - 1; // ends[low] fits, ends[high + 1] not
+    if (text_width(cr, ellipsis) > width)
+        return "";
+    while (low < high) {
+        const size_t mid = (low + high + 1) / 2;
+        if (text_width(cr, valid.substr(0, ends[mid]) + ellipsis) <= width)
+            low = mid;
+        else
+            high = mid - 1;
+    }
+    return valid.substr(0, ends[low]) + ellipsis;
+}
+
+/// \brief Where a letter is drawn, in image pixels.
+struct LetterBox {
+    double x0, y0, x1, y1;
+};
+
+/// Whether `a` and `b` are at least `gap` pixels apart.
+bool apart(const LetterBox &a, const LetterBox &b, double gap)
+{
+    return a.x1 + gap <= b.x0 || b.x1 + gap <= a.x0 || a.y1 + gap <= b.y0 ||
+           b.y1 + gap <= a.y0;
+}
+
+/// Whether the letters `chosen` of each set of boxes are apart by `gap`.
+bool letters_apart(const std::vector<size_t> &chosen,
+                   const std::vector<const std::vector<LetterBox> *> &sets, double gap)
+{
+    for (const std::vector<LetterBox> *boxes : sets)
+        for (size_t i = 0; i < chosen.size(); ++i)
+            for (size_t j = i + 1; j < chosen.size(); ++j)
+                if (!apart((*boxes)[chosen[i]], (*boxes)[chosen[j]], gap))
+                    return false;
+    return true;
+}
+
+/// The vertices to letter: every k-th with the least k at which the
+/// letters of each set of boxes lie apart, the last always (the k-th
+/// before it left out where the two would touch); the first and the last
+/// alone where no k lets more fit.
+std::vector<size_t> lettered_vertices(const std::vector<const std::vector<LetterBox> *> &sets,
+                                      size_t n, double gap)
+{
+    if (n <= 2) {
+        std::vector<size_t> all;
+        for (size_t k = 0; k < n; ++k)
+            all.push_back(k);
+        return all;
+    }
+    for (size_t k = 1; k + 1 < n; ++k) {
+        std::vector<size_t> chosen;
+        for (size_t v = 0; v + 1 < n; v += k)
+            chosen.push_back(v);
+        if (chosen.size() > 1 &&
+            !letters_apart({chosen.back(), n - 1}, sets, gap))
+            chosen.pop_back();
+        chosen.push_back(n - 1);
+        if (letters_apart(chosen, sets, gap))
+            return chosen;
+    }
+    return {0, n - 1};
+}
+
+/// The frame, ticks and their labels, the axes' titles, the vertices
+/// (`layout`'s letters and titles).
 void draw_axes(cairo_t *cr, const Sizes &s, const Placement &p, const FigureAxes &a,
-               const FigureContent &c)
+               const FigureContent &c, const FigureLayout &layout)
 {
     const double x0 = p.left, y0 = p.top, w = a.plot_width, h = a.plot_height;
     cairo_set_source_rgb(cr, 0, 0, 0);
@@ -134,22 +214,37 @@ void draw_axes(cairo_t *cr, const Sizes &s, const Placement &p, const FigureAxes
         show_text_at(cr, number_text(t / a.distance_scale), x, y0 + h + s.tick + s.pad / 2, 0.5,
                      0);
     }
-    const std::string name = line_name(c.line->vertices().size());
-    show_text_at(cr, distance_title(a, name), x0 + w / 2, y0 + h + s.tick + s.pad / 2 + s.line,
+    show_text_at(cr, layout.distance_title, x0 + w / 2, y0 + h + s.tick + s.pad / 2 + s.line,
                  0.5, 0);
-    // the elevation's title, turned to read upwards
+    // the elevation's title, turned to read upwards, cut to the figure's
+    // height about the plot's middle
+    const double centre = y0 + h / 2;
+    const double room = 2 * std::min(centre, p.height - centre) - 2 * s.pad;
     cairo_save(cr);
-    cairo_translate(cr, s.pad, y0 + h / 2);
+    cairo_translate(cr, s.pad, centre);
     cairo_rotate(cr, -M_PI / 2);
-    show_text_at(cr, elevation_title(c.units), 0, 0, 0.5, 0);
+    show_text_at(cr, fit_text(cr, elevation_title(c.units), room), 0, 0, 0.5, 0);
     cairo_restore(cr);
 
-    // vertices: letters above the plot, bends as dashed lines through it
+    // vertices: letters above the plot where they fit, a short tick
+    // above it at every vertex, bends of lettered vertices as dashed lines
+    // through it
     const auto &distances = c.line->vertex_distances();
+    std::vector<bool> lettered(distances.size());
+    for (size_t k : layout.lettered)
+        lettered[k] = true;
     select_font(cr, true);
     for (size_t k = 0; k < distances.size(); ++k) {
         const double x = std::round(x0 + a.x_of(distances[k])) + 0.5;
-        show_text_at(cr, vertex_name(k), x, y0 - s.pad / 2, 0.5, 1);
+        if (!lettered[k]) {
+            cairo_move_to(cr, x, y0 - 0.5);
+            cairo_line_to(cr, x, y0 - 0.5 - s.tick);
+            cairo_stroke(cr);
+            continue;
+        }
+        // on one baseline (a J's descender below it), as high as an A
+        cairo_move_to(cr, x - text_width(cr, vertex_name(k)) / 2, y0 - s.pad / 2);
+        show_text(cr, vertex_name(k));
         if (k == 0 || k + 1 == distances.size())
             continue;
         const double dash = 4 * s.scale;
@@ -162,7 +257,7 @@ void draw_axes(cairo_t *cr, const Sizes &s, const Placement &p, const FigureAxes
         cairo_set_source_rgb(cr, 0, 0, 0);
     }
     // the title above the letters
-    show_text_at(cr, c.title, x0, s.pad, 0, 0);
+    show_text_at(cr, layout.title, x0, s.pad, 0, 0);
     select_font(cr);
 }
 
@@ -206,10 +301,30 @@ struct LocationFrame {
     sbrt::Frame model;
 };
 
+/// Where the location map at (x, y) puts the letter of each vertex (the
+/// bold font at the figure's size selected): up and right of it, kept
+/// inside the map.
+std::vector<LetterBox> location_letters(cairo_t *cr, const Sizes &s, const FigureContent &c,
+                                        double x, double y)
+{
+    const LocationFrame l(c.model->frame(), *c.line, s.inset, s.scale);
+    std::vector<LetterBox> boxes;
+    for (size_t k = 0; k < c.line->vertices().size(); ++k) {
+        const glm::dvec2 v = c.line->vertices()[k];
+        const double px = x + (v.x - l.west) * l.scale, py = y + (l.north - v.y) * l.scale;
+        const double left = std::clamp(px + 0.3 * s.font, x, x + l.w - s.font);
+        const double top = std::clamp(py - 1.2 * s.font, y, y + l.h - s.font);
+        const cairo_text_extents_t e = text_extents(cr, vertex_name(k));
+        boxes.push_back({left, top, left + e.x_advance, top + e.height});
+    }
+    return boxes;
+}
+
 /// The model's outline and the cells with layers (grey) over an area
-/// holding the model and the line, the line in red with its vertices'
-/// letters; a north arrow beside it.
-void draw_location(cairo_t *cr, const Sizes &s, const FigureContent &c, double x, double y)
+/// holding the model and the line, the line in red with the letters of
+/// the vertices `lettered`; a north arrow beside it.
+void draw_location(cairo_t *cr, const Sizes &s, const FigureContent &c, double x, double y,
+                   const std::vector<size_t> &lettered)
 {
     const sbrt::Frame &f = c.model->frame();
     const LocationFrame l(f, *c.line, s.inset, s.scale);
@@ -248,11 +363,9 @@ void draw_location(cairo_t *cr, const Sizes &s, const FigureContent &c, double x
     cairo_restore(cr);
     select_font(cr, true);
     cairo_set_source_rgb(cr, 0, 0, 0);
-    for (size_t k = 0; k < c.line->vertices().size(); ++k) {
-        const glm::dvec2 p = at(c.line->vertices()[k]);
-        show_text_at(cr, vertex_name(k), std::clamp(p.x + 0.3 * s.font, x, x + w - s.font),
-                     std::clamp(p.y - 1.2 * s.font, y, y + h - s.font), 0, 0);
-    }
+    const std::vector<LetterBox> boxes = location_letters(cr, s, c, x, y);
+    for (size_t k : lettered)
+        show_text_at(cr, vertex_name(k), boxes[k].x0, boxes[k].y0, 0, 0);
     select_font(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, 1);
@@ -260,6 +373,39 @@ void draw_location(cairo_t *cr, const Sizes &s, const FigureContent &c, double x
     cairo_stroke(cr);
     sbrt_grass::draw_north_arrow(cr, {0, -1}, {x + w + s.pad + s.arrow / 2, y + s.font + s.arrow / 2},
                                  s.arrow, s.font, s.scale);
+}
+
+/// The titles fitted to the figure (the title from the plot's left edge
+/// to the figure's right one, the distance's to the plot's width: the
+/// location map may lie beside it) and the vertices to letter, measured
+/// at the figure's fonts.
+void lay_out_text(cairo_t *cr, const Sizes &s, const Placement &p, const FigureAxes &a,
+                  const FigureContent &c, double inset_top, FigureLayout &layout)
+{
+    cairo_set_font_size(cr, s.font);
+    select_font(cr, true);
+    const double title_room = p.width - p.left - s.pad;
+    layout.title = text_width(cr, c.title) <= title_room || c.short_title.empty()
+                       ? fit_text(cr, c.title, title_room)
+                       : fit_text(cr, c.short_title, title_room);
+    // the vertices' letters: on the plot's top edge, centred on each
+    // vertex, and in the location map
+    const size_t n = c.line->vertices().size();
+    std::vector<LetterBox> top;
+    for (size_t k = 0; k < n; ++k) {
+        const double x = std::round(p.left + a.x_of(c.line->vertex_distances()[k])) + 0.5;
+        const double half = text_width(cr, vertex_name(k)) / 2;
+        top.push_back({x - half, 0, x + half, s.font});
+    }
+    const std::vector<LetterBox> map = location_letters(cr, s, c, p.panel_left, inset_top);
+    layout.lettered = lettered_vertices({&top, &map}, n, 0.4 * s.font);
+    select_font(cr);
+    const double distance_room = a.plot_width;
+    const std::string full = distance_title(a, line_name(n));
+    layout.distance_title =
+        text_width(cr, full) <= distance_room
+            ? full
+            : fit_text(cr, distance_title(a, short_line_name(n)), distance_room);
 }
 
 void draw_panel(cairo_t *cr, const Sizes &s, const Placement &p)
@@ -311,6 +457,13 @@ std::string line_name(size_t vertices)
     for (size_t k = 0; k < vertices; ++k)
         name += (k ? "\u2013" : "") + vertex_name(k);
     return name;
+}
+
+std::string short_line_name(size_t vertices)
+{
+    if (vertices <= 3)
+        return line_name(vertices);
+    return vertex_name(0) + "\u2013\u2026\u2013" + vertex_name(vertices - 1);
 }
 
 std::string vertex_name(size_t k)
@@ -383,11 +536,15 @@ FigureLayout draw_profile_figure(const FigureAxes &axes, const sbrt::ClassProfil
             shown.push_back(found->second);
 
     const Sizes s(axes.plot_width);
-    const Placement p(Canvas(1, 1).cr(), s, axes, shown);
+    Canvas measure(1, 1);
+    cairo_t *m = measure.cr();
+    const Placement p(m, s, axes, shown);
     layout.width = p.width;
     layout.height = p.height;
     layout.plot_left = p.left;
     layout.plot_top = p.top;
+    const double inset_top = p.top + s.line * double(shown.size() + 3) + s.pad;
+    lay_out_text(m, s, p, axes, content, inset_top, layout);
     if (png.empty())
         return layout;
 
@@ -398,10 +555,9 @@ FigureLayout draw_profile_figure(const FigureAxes &axes, const sbrt::ClassProfil
     cairo_paint(cr);
     fill_plot(canvas, p, profile, colors);
     cairo_set_font_size(cr, s.font);
-    draw_axes(cr, s, p, axes, content);
+    draw_axes(cr, s, p, axes, content, layout);
     draw_panel(cr, s, p);
-    const double inset_top = p.top + s.line * double(shown.size() + 3) + s.pad;
-    draw_location(cr, s, content, p.panel_left, inset_top);
+    draw_location(cr, s, content, p.panel_left, inset_top, layout.lettered);
     std::vector<uint8_t> rgb(size_t(p.width) * size_t(p.height) * 3);
     canvas.store(rgb.data(), p.height, p.width);
     file.write_rows(rgb.data(), p.height);

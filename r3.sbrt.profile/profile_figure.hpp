@@ -57,6 +57,9 @@ FigureAxes figure_axes(double length, sbrt::ProfileExtent solid, std::optional<d
 /// \brief Everything the figure shows beside its axes.
 struct FigureContent {
     std::string title;
+    /// The title where `title` is too wide for the figure (the line named
+    /// by its first and last vertex); cut to the width where it is too.
+    std::string short_title;
     const sbrt::Model *model = nullptr;        ///< cut and shown in the location map
     const sbrt::ProfileLine *line = nullptr;
     std::vector<sbrt_grass::LegendClass> classes; ///< every class, by material
@@ -68,6 +71,12 @@ struct FigureLayout {
     int width = 0, height = 0;
     int plot_left = 0, plot_top = 0;
     std::vector<int32_t> classes_cut; ///< ids, ascending
+    /// The titles as drawn: fitted to the figure's width
+    std::string title, distance_title;
+    /// The vertices whose letters are drawn (on the plot's top edge and in
+    /// the location map): every k-th where the letters of all would
+    /// overlap, the first and the last always
+    std::vector<size_t> lettered;
 };
 
 /// Lays the figure out and, where `png` is not empty, draws it into that
@@ -90,5 +99,8 @@ std::string distance_title(const FigureAxes &axes, const std::string &line_name)
 
 /// "A\u2013B\u2013C": the letters of a line of `vertices` vertices.
 std::string line_name(size_t vertices);
+/// "A\u2013\u2026\u2013H2": a line of `vertices` vertices by its first and
+/// last (line_name where it has at most three).
+std::string short_line_name(size_t vertices);
 
 #endif

@@ -5,8 +5,10 @@ PURPOSE:   r3.sbrt.profile against GRASS's own reading of the voxels
            profile map along a three-vertex line cell by cell, its window
            (distance by elevation, a row per layer), labels and colours;
            the figure's plot pixel by pixel, its ticks where the axes put
-           them; the same line from a vector map; the vertical datum of a
-           GeoTOP-like file on the elevation axis; bad input
+           them; the same line from a vector map; a line of 60 vertices
+           (titles inside the image, every k-th vertex lettered); the
+           vertical datum of a GeoTOP-like file on the elevation axis; bad
+           input
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import math
@@ -240,6 +242,35 @@ class TestProfileAgainstVoxels(TestCase):
         units = "map units" if int(gs.region()["projection"]) == 0 else "m"
         self.assertEqual(g["elevation_title"], f"Elevation ({units})")
         self.assertEqual(g["distance_title"], f"Distance along A\u2013B\u2013C ({units})")
+        self.assertEqual(g["title"], "Profile A\u2013B\u2013C of prof3d")
+        self.assertEqual(g["lettered_vertices"], "0,1,2")
+
+    def test_many_vertices_fit_the_figure(self):
+        """A line of 60 vertices (a zigzag across the model): the titles
+        name it by its ends and stay inside the image (no dark pixel on its
+        left or right edge), and only every k-th vertex is lettered (the
+        first and the last always), the letters apart on the plot's edge."""
+        line = [(W + 5 + k * 4.9, S + (30 if k % 2 == 0 else 170)) for k in range(60)]
+        png = os.path.join(self.tmp, "zigzag.png")
+        g, _ = self.profile(self.coordinates(line), f"png={png}")
+        self.assertEqual(g["title"], "Profile A\u2013\u2026\u2013H2 of prof3d")
+        self.assertTrue(g["distance_title"].startswith("Distance along A\u2013\u2026\u2013H2 ("),
+                        g["distance_title"])
+        image = Image.open(png).convert("L")
+        width, height = image.size
+        for x in (0, width - 1):
+            dark = [y for y in range(height) if image.getpixel((x, y)) < 128]
+            self.assertEqual(dark, [], f"dark pixels on column {x}: text runs off")
+        lettered = [int(v) for v in g["lettered_vertices"].split(",")]
+        self.assertEqual((lettered[0], lettered[-1]), (0, 59))
+        step = lettered[1] - lettered[0]
+        self.assertGreater(step, 1)
+        self.assertEqual(lettered[:-1], list(range(0, 59, step))[:len(lettered) - 1])
+        distances = numbers(g["vertex_distances"])
+        left, plot_width = int(g["plot_left"]), int(g["plot_width"])
+        columns = [left + distances[k] / distances[-1] * plot_width for k in lettered]
+        gaps = [b - a for a, b in zip(columns, columns[1:])]
+        self.assertGreaterEqual(min(gaps), 20, gaps)  # two letters of a 13-pixel font
 
     def test_bad_input_fails_clearly(self):
         far = [(W + 5000, S + 5000), (W + 6000, S + 6000)]
