@@ -209,3 +209,23 @@ TEST(ClassNames, AliasesFromTheGivenPresets)
     const ClassNames unlabelled({Material{}, material(7, "")}, {p});
     EXPECT_EQ(unlabelled.find("BX"), EMPTY);
 }
+
+TEST(ClassNames, LongListsAndManyCommasStayCheap)
+{
+    std::string many = "a";
+    for (int i = 0; i < 40; ++i)
+        many += ", a";
+    std::vector<Material> materials = {Material{}, material(1, many)};
+    for (int32_t id = 2; id < 20000; ++id)
+        materials.push_back(material(id, "class " + std::to_string(id)));
+    const ClassNames names(materials);
+    // 20000 answers against 20000 classes: hash look-ups, a bounded join
+    const std::vector<std::string> list(20000, "class 19999");
+    EXPECT_EQ(names.resolve(list, "classes").size(), 20000u);
+    // past 32 commas a label is named without them
+    EXPECT_EQ(names.find(std::string(41, 'a')), EMPTY);
+    std::string bare = "a";
+    for (int i = 0; i < 40; ++i)
+        bare += " a";
+    EXPECT_EQ(names.find(bare), 1u);
+}

@@ -20,6 +20,9 @@ namespace {
 
 /// The longest list of classes an error message holds (bytes).
 constexpr size_t MAX_LISTED_BYTES = 16000;
+/// The most commas of a label a list's parts are joined again for (a
+/// label with more is named without its commas): bounds resolve()'s work.
+constexpr size_t MAX_JOINED_COMMAS = 32;
 
 std::string trim(const std::string &s)
 {
@@ -36,6 +39,14 @@ bool same_text(const std::string &a, const std::string &b)
                return std::tolower(static_cast<unsigned char>(x)) ==
                       std::tolower(static_cast<unsigned char>(y));
            });
+}
+
+/// `text` with ASCII letters in lower case (as same_text compares).
+std::string lower(std::string text)
+{
+    for (char &ch : text)
+        ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    return text;
 }
 
 /// `text` without commas, each run of blanks one space, trimmed.
@@ -103,23 +114,32 @@ ClassNames::ClassNames(const std::vector<Material> &materials,
                        const std::vector<SurveyPreset> &presets)
     : materials_(materials), aliases_(materials.size())
 {
-    for (size_t m = 1; m < materials_.size(); ++m) {
+    // the first material of a name wins (emplace keeps what is there)
+    for (uint32_t m = 1; m < materials_.size(); ++m) {
         const Material &material = materials_[m];
+        by_id_.emplace(material.id, m);
         if (material.label.empty())
             continue;
         for (const SurveyPreset &p : presets)
             add_preset_aliases(p, material.id, material.label, aliases_[m]);
-        label_commas_ = std::max(
-            label_commas_, size_t(std::count(material.label.begin(), material.label.end(), ',')));
+        by_label_.emplace(lower(trim(material.label)), m);
+        by_bare_label_.emplace(lower(without_commas(material.label)), m);
+        const size_t commas = size_t(std::count(material.label.begin(), material.label.end(), ','));
+        if (commas) {
+            // what a label's first part is, to the most commas after it
+            size_t &most = label_heads_[lower(trim(material.label.substr(0, material.label.find(','))))];
+            most = std::min(MAX_JOINED_COMMAS, std::max(most, commas));
+        }
     }
+    for (uint32_t m = 1; m < materials_.size(); ++m)
+        for (const std::string &alias : aliases_[m])
+            by_alias_.emplace(lower(alias), m);
 }
 
 uint32_t ClassNames::find_label(const std::string &label) const
 {
-    for (uint32_t m = 1; m < materials_.size(); ++m)
-        if (!materials_[m].label.empty() && same_text(trim(materials_[m].label), label))
-            return m;
-    return EMPTY;
+    const auto found = by_label_.find(lower(label));
+    return found == by_label_.end() ? EMPTY : found->second;
 }
 
 uint32_t ClassNames::find(const std::string &given) const
@@ -128,21 +148,18 @@ uint32_t ClassNames::find(const std::string &given) const
     if (name.empty())
         return EMPTY;
     int32_t id = 0;
-    if (parse_id(name, id))
-        for (uint32_t m = 1; m < materials_.size(); ++m)
-            if (materials_[m].id == id)
-                return m;
-    for (uint32_t m = 1; m < materials_.size(); ++m)
-        for (const std::string &alias : aliases_[m])
-            if (same_text(alias, name))
-                return m;
+    if (parse_id(name, id)) {
+        const auto found = by_id_.find(id);
+        if (found != by_id_.end())
+            return found->second;
+    }
+    const auto alias = by_alias_.find(lower(name));
+    if (alias != by_alias_.end())
+        return alias->second;
     if (const uint32_t m = find_label(name))
         return m;
-    const std::string bare = without_commas(name);
-    for (uint32_t m = 1; m < materials_.size(); ++m)
-        if (!materials_[m].label.empty() && same_text(without_commas(materials_[m].label), bare))
-            return m;
-    return EMPTY;
+    const auto bare = by_bare_label_.find(lower(without_commas(name)));
+    return bare == by_bare_label_.end() ? EMPTY : bare->second;
 }
 
 std::vector<uint32_t> ClassNames::resolve(const std::vector<std::string> &names,
@@ -151,10 +168,12 @@ std::vector<uint32_t> ClassNames::resolve(const std::vector<std::string> &names,
 {
     std::vector<uint32_t> out;
     for (size_t i = 0; i < names.size();) {
-        // a label GRASS parted at its commas: the longest run of answers
-        // that makes one (no label has more parts than label_commas_ + 1)
+        // a label GRASS parted at its commas: the longest run of answers,
+        // from one that begins a label with commas, that makes one
         size_t taken = 0;
-        const size_t last = std::min(names.size() - 1, i + label_commas_);
+        const auto head = label_heads_.find(lower(trim(names[i])));
+        const size_t last =
+            head == label_heads_.end() ? i : std::min(names.size() - 1, i + head->second);
         for (size_t j = last; j > i && !taken; --j) {
             std::string joined = names[i];
             for (size_t k = i + 1; k <= j; ++k)

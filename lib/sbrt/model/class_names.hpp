@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "model/legend_rules.hpp"
@@ -32,7 +33,8 @@ namespace sbrt {
 ///     (kleiig zand zandige klei en leem)"), spaces and case aside.
 /// A list's names (resolve()) may also give a label with its commas as it
 /// is: GRASS parts an option's answer at commas, and the parts that make a
-/// label together are joined again.
+/// label together are joined again (a label of up to 32 commas; one with
+/// more is named without them).
 class ClassNames {
 public:
     /// Names of `materials` (index 0, EMPTY, has none), aliases from the
@@ -65,13 +67,18 @@ public:
     std::string accepted() const;
 
 private:
-    /// Material index of the class whose label is `label` (exactly, case
+    /// Material index of the class whose label is `label` (trimmed, case
     /// aside), or EMPTY.
     uint32_t find_label(const std::string &label) const;
 
     std::vector<Material> materials_;
     std::vector<std::vector<std::string>> aliases_;
-    size_t label_commas_ = 0; ///< most commas of one label
+    // material by id, and by lower-case alias, label, label without commas
+    std::unordered_map<int32_t, uint32_t> by_id_;
+    std::unordered_map<std::string, uint32_t> by_alias_, by_label_, by_bare_label_;
+    /// first part of each label with commas (lower case) -> its most
+    /// commas (at most 32)
+    std::unordered_map<std::string, size_t> label_heads_;
 };
 
 } // namespace sbrt
