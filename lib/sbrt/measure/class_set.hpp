@@ -20,10 +20,10 @@ namespace sbrt {
 class ClassSet {
 public:
     ClassSet() = default;
-    /// The classes `names` names: each a class id or a label (labels
-    /// compared without regard to case, ids first, as r3.sbrt.render's
-    /// hide= reads them); throws sbrt::Error naming the first unknown one
-    /// and listing the model's classes. Duplicates count once.
+    /// The classes `names` names, as every list option names them
+    /// (sbrt::ClassNames: an id, a preset's code or short name, a label);
+    /// throws sbrt::Error naming the first unknown one and listing the
+    /// model's classes. Duplicates count once.
     static ClassSet named(const Model &model, const std::vector<std::string> &names);
     /// The set of material indices `materials` (each 1 .. materials - 1).
     static ClassSet of_materials(const Model &model, const std::vector<uint32_t> &materials);
@@ -41,14 +41,6 @@ private:
     std::vector<uint8_t> member_;
     std::vector<uint32_t> materials_;
 };
-
-/// Material index of the class `name` (class id or label); throws
-/// sbrt::Error naming it and listing the model's classes.
-uint32_t find_class(const Model &model, const std::string &name);
-/// "id (label)" of a material, "id" where it has no label.
-std::string class_name(const Model &model, uint32_t material);
-/// Every class of the model by id: "1 (Sand), 2 (Clay), ...".
-std::string list_classes(const Model &model);
 
 } // namespace sbrt
 
