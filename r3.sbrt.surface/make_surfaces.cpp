@@ -84,7 +84,7 @@ void make_surfaces(const SurfaceRequest &request)
 
     warn_if_outside(request.input, model.frame(), region, sampling);
 
-    SurfaceMaps maps(request, described, region.cols);
+    SurfaceMaps maps(request, described, model.vertical_datum(), region.cols);
     const size_t cols = size_t(region.cols);
     const int block = block_rows(region.cols);
     std::vector<sbrt::MapFigures> figures(size_t(block) * cols);

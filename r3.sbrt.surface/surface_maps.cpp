@@ -9,7 +9,6 @@
 #include <cmath>
 
 #include "raster_metadata.hpp"
-#include "sbrt_store.hpp"
 
 namespace {
 
@@ -66,15 +65,6 @@ std::string length_unit()
     }
 }
 
-/// The vertical datum of SBRT `input` ("NAP"; empty where it has none),
-/// read from its header: no block is decoded.
-std::string vertical_datum_of(const std::string &input)
-{
-    sbrt::ReadOptions options;
-    options.points.emplace(); // no points: no stacks
-    return sbrt_grass::read_sbrt_map(input.c_str(), options).vertical_datum();
-}
-
 /// What a depth map's vertical datum says (r.info: "Vertical datum: model
 /// surface"): depths are measured down from the model's surface (the top
 /// of each column's highest layer), not from the datum of its elevations.
@@ -82,7 +72,8 @@ constexpr const char *DEPTH_DATUM = "model surface";
 
 } // namespace
 
-SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, const std::string &set, int cols)
+SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, const std::string &set,
+                         const std::string &datum, int cols)
     : cols_(cols), dcells_(size_t(cols)), cells_(size_t(cols))
 {
     const std::pair<Figure, const std::string *> asked[] = {
@@ -92,8 +83,6 @@ SurfaceMaps::SurfaceMaps(const SurfaceRequest &request, const std::string &set, 
         {Figure::layers, &request.layers},
         {Figure::depth, &request.depth},
         {Figure::expected, &request.expected_thickness}};
-    // the elevations' datum, read before any map is opened
-    const std::string datum = vertical_datum_of(request.input);
     for (const auto &[figure, name] : asked)
         if (!name->empty()) {
             // the metadata first: nothing is left to fail once rows are written
@@ -181,7 +170,9 @@ SurfaceMaps::Map SurfaceMaps::metadata(Figure figure, const std::string &name,
                                        const SurfaceRequest &request, const std::string &set,
                                        const std::string &datum)
 {
-    Map map{figure, name, -1};
+    Map map;
+    map.figure = figure;
+    map.name = name;
     const char *what = "";
     switch (figure) {
     case Figure::top:

@@ -20,9 +20,11 @@
 class SurfaceMaps {
 public:
     /// Makes the maps' metadata (titles and history: `set` describes the
-    /// class set, "1 (Sand), 2 (Clay)"), then opens the maps (fatal error
-    /// where one cannot be opened).
-    SurfaceMaps(const SurfaceRequest &request, const std::string &set, int cols);
+    /// class set, "1 (Sand), 2 (Clay)"; `datum` is the model's vertical
+    /// datum, "NAP" or empty), then opens the maps (fatal error where one
+    /// cannot be opened).
+    SurfaceMaps(const SurfaceRequest &request, const std::string &set,
+                const std::string &datum, int cols);
     SurfaceMaps(const SurfaceMaps &) = delete;
     SurfaceMaps &operator=(const SurfaceMaps &) = delete;
     /// Closes maps left open (an error on the way): they are not kept.
@@ -38,9 +40,9 @@ public:
 private:
     enum class Figure { top, base, thickness, layers, depth, expected };
     struct Map {
-        Figure figure;
+        Figure figure = Figure::top;
         std::string name;
-        int fd;
+        int fd = -1;
         std::string title, units;      ///< cut to what GRASS keeps
         std::string vertical_datum;    ///< of elevations and depths; empty: none
         sbrt_grass::MapHistory history;
