@@ -198,7 +198,10 @@ void change_legend(const Options &o, const Inputs &in, const char *name,
         legend_from_map(o.raster->answer ? o.raster->answer : o.raster_3d->answer,
                         o.raster_3d->answer != nullptr, materials);
     else if (o.preset->answer) {
-        const sbrt::SurveyPreset &preset = sbrt::find_preset(o.preset->answer);
+        // the name held by a named string: GCC 14's -Wdangling-reference
+        // takes a reference found from a temporary for one into it
+        const std::string preset_name = o.preset->answer;
+        const sbrt::SurveyPreset &preset = sbrt::find_preset(preset_name);
         const size_t changed = sbrt::apply_styles(materials, preset.classes);
         G_message(_("Preset %s (%s; from %s): %zu of %zu classes set"),
                   preset.name.c_str(), preset.title.c_str(), preset.reference.c_str(),
