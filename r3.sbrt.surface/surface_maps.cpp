@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "location_units.hpp"
 #include "raster_metadata.hpp"
 
 namespace {
@@ -45,24 +46,6 @@ void write_colors(const std::string &name, const char *rules, bool from_zero, bo
     Rast_make_fp_colors(&colors, rules, min, max);
     Rast_write_colors(name.c_str(), mapset, &colors);
     Rast_free_colors(&colors);
-}
-
-/// The unit of the location's heights as the maps' units give it: "m",
-/// "ft", "ftUS"; "map units" in an XY location.
-std::string length_unit()
-{
-    if (G_projection() == PROJECTION_XY)
-        return "map units";
-    switch (G_database_unit()) {
-    case U_METERS:
-        return "m";
-    case U_FEET:
-        return "ft";
-    case U_USFEET:
-        return "ftUS";
-    default:
-        return G_database_unit_name(TRUE);
-    }
 }
 
 /// What a depth map's vertical datum says (r.info: "Vertical datum: model
@@ -206,15 +189,16 @@ SurfaceMaps::Map SurfaceMaps::metadata(Figure figure, const std::string &name,
     const std::string of =
         figure == Figure::expected ? "probability " + request.probability : set;
     // elevations with their unit and datum: "Elevation (m NAP) of the top"
+    const std::string unit = sbrt_grass::location_length_unit();
     std::string described = what;
     if (figure == Figure::top || figure == Figure::base)
         described.insert(std::string("Elevation").size(),
-                         " (" + length_unit() + (datum.empty() ? "" : " " + datum) + ")");
+                         " (" + unit + (datum.empty() ? "" : " " + datum) + ")");
     // the class labels can make these long: cut to what GRASS keeps
     map.title = sbrt_grass::metadata_line(
         described + " of " + of + " in SBRT " + request.input,
         sbrt_grass::MAX_TITLE_BYTES);
-    map.units = figure == Figure::layers ? "layers" : length_unit();
+    map.units = figure == Figure::layers ? "layers" : unit;
     // elevations relative to the model's datum (another mapset's text: one
     // printable line); depths from the model's surface; thicknesses and
     // counts have none

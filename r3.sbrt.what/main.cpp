@@ -13,6 +13,7 @@
 #include <cstring>
 #include <vector>
 
+#include "location_units.hpp"
 #include "log_writers.hpp"
 #include "query_points.hpp"
 #include "sbrt_choices.hpp"
@@ -69,24 +70,6 @@ void write_logs(const WhatRequest &request, const LogSource &source,
                    errno ? std::string(": ") + std::strerror(errno) : std::string());
 }
 
-/// The unit of the location's heights as the logs name it: "m", "ft",
-/// "ftUS"; "map units" in an XY location.
-std::string elevation_unit()
-{
-    if (G_projection() == PROJECTION_XY)
-        return "map units";
-    switch (G_database_unit()) {
-    case U_METERS:
-        return "m";
-    case U_FEET:
-        return "ft";
-    case U_USFEET:
-        return "ftUS";
-    default:
-        return G_database_unit_name(TRUE);
-    }
-}
-
 void run(const WhatRequest &request)
 {
     const std::vector<QueryPoint> points = query_points(request);
@@ -99,7 +82,7 @@ void run(const WhatRequest &request)
                               ? sbrt_grass::read_channels_map(request.input.c_str(), model)
                               : nullptr;
     LogSource source{model, {}};
-    source.elevation_unit = elevation_unit();
+    source.elevation_unit = sbrt_grass::location_length_unit();
     source.voxel_rows = request.voxels;
     if (channels)
         source.channels = channels->infos();

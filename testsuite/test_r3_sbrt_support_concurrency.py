@@ -174,8 +174,8 @@ class TestSupportConcurrency(TestCase):
         big = os.path.join(self.tmp, "big")
         with open(big, "wb") as f:
             f.truncate(17 << 20)  # sparse: 17 MiB that take no room
-        cases = [("/dev/zero", "a device"), (fifo, "a FIFO (named pipe)"),
-                 (directory, "a directory"), (big, "more than the 16 MiB")]
+        cases = [("/dev/zero", "a character device"), (fifo, "a FIFO (named pipe)"),
+                 (directory, "a directory"), (big, f"{17 << 20} bytes, more than")]
         for key in ("rules", "labels"):
             for path, what in cases:
                 code, message = run(["r3.sbrt.support", f"sbrt={name}", f"{key}={path}"],
