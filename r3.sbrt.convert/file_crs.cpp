@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "grass.hpp"
+#include "util/safe_text.hpp"
 extern "C" {
 #include <grass/gprojects.h>
 }
@@ -146,5 +147,12 @@ std::string vertical_datum(const FileVariable &variable)
         if (datum.size() > n && datum.compare(datum.size() - n, n, suffix) == 0)
             datum.erase(datum.size() - n);
     }
-    return datum.size() <= sbrt::MAX_DATUM_CHARS ? datum : std::string();
+    // a CRS name is the file's text: one printable line, or no datum
+    if (datum.size() > sbrt::MAX_DATUM_CHARS || sbrt::printable(datum) != datum) {
+        G_warning(_("The vertical CRS's name of the file (%s) is no short line of "
+                    "printable text: the model gets no vertical datum"),
+                  sbrt::printable(sbrt::fit_bytes(datum, sbrt::MAX_DATUM_CHARS)).c_str());
+        return {};
+    }
+    return datum;
 }

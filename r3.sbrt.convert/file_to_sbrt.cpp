@@ -95,8 +95,9 @@ sbrt::ChannelInfo channel_info(const FileVariable &v)
 {
     sbrt::ChannelInfo c;
     c.name = sbrt::valid_utf8(v.base_name());
-    c.long_name = v.long_name();
-    c.unit = v.units();
+    // a file's attributes may be longer than a channel keeps: cut
+    c.long_name = sbrt::fit_bytes(v.long_name(), sbrt::MAX_CHANNEL_TEXT);
+    c.unit = sbrt::fit_bytes(v.units(), sbrt::MAX_CHANNEL_TEXT);
     c.scale = v.scale();
     c.offset = v.offset();
     // the voxels the missing values mark are stored as the fill, or as NaN

@@ -37,13 +37,16 @@ public:
             G_fatal_error(_("Unable to open 3D raster map <%s>"), name.c_str());
         info_.name = name.substr(0, name.find('@'));
         const char *unit = Rast3d_get_unit(map_);
-        info_.unit = unit && std::string(unit) != "none" ? sbrt::valid_utf8(unit) : "";
+        info_.unit = unit && std::string(unit) != "none"
+                         ? sbrt::fit_bytes(sbrt::valid_utf8(unit), sbrt::MAX_CHANNEL_TEXT)
+                         : "";
         // the title (r3.support title=) is kept in the map's history
         struct History history;
         if (Rast3d_read_history(name.c_str(), mapset, &history) >= 0) {
             const char *title = Rast_get_history(&history, HIST_TITLE);
             if (title && std::string(title) != name.substr(0, name.find('@')))
-                info_.long_name = sbrt::valid_utf8(title);
+                info_.long_name =
+                    sbrt::fit_bytes(sbrt::valid_utf8(title), sbrt::MAX_CHANNEL_TEXT);
             Rast_free_history(&history);
         }
         choose_fill();

@@ -15,6 +15,7 @@
 #include "measure/expected_thickness.hpp"
 #include "model/class_names.hpp"
 #include "sbrt_store.hpp"
+#include "util/safe_text.hpp"
 #include "surface.hpp"
 #include "surface_maps.hpp"
 #include "util/parallel.hpp"
@@ -69,7 +70,7 @@ void make_surfaces(const SurfaceRequest &request)
                    : sbrt::ClassSet();
     const std::string described = by_classes ? set.describe(model) : "";
     if (by_classes)
-        G_verbose_message(_("Classes of the set: %s"), described.c_str());
+        G_verbose_message(_("Classes of the set: %s"), sbrt::printable(described).c_str());
     // expected_thickness=: the probability's channels (only their blocks
     // under the region are decoded)
     sbrt_grass::ProbabilityChannels probability;

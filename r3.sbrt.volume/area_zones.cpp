@@ -14,6 +14,7 @@ extern "C" {
 }
 
 #include "area_cover.hpp"
+#include "vector_map.hpp"
 #include "util/error.hpp"
 #include "volume.hpp"
 
@@ -110,7 +111,7 @@ Zones area_zones(const sbrt::Model &model, const std::string &name, const std::s
 {
     AreaMap areas(name);
     struct Map_info *map = areas.map();
-    const int field = Vect_get_field_number(map, layer.c_str());
+    const int field = sbrt_grass::layer_number(*map, layer);
     int without_category = 0;
     const std::vector<CategorisedArea> found = categorised_areas(map, field, without_category);
     if (found.empty())

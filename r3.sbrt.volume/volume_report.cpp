@@ -22,10 +22,9 @@ using sbrt::csv_field;
 /// A number for CSV: 17 significant digits; nan, inf and -inf as such.
 std::string csv_number(double value)
 {
-    if (std::isnan(value))
-        return "nan";
-    if (std::isinf(value))
-        return value > 0 ? "inf" : "-inf";
+    // no number (nan, +-inf): an empty field, as r3.sbrt.what writes it
+    if (!std::isfinite(value))
+        return "";
     char text[32];
     std::snprintf(text, sizeof text, "%.17g", value);
     return text;
@@ -147,7 +146,8 @@ void write_json(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table
     }
     // labels come from the model's file: bytes that are not UTF-8 become
     // U+FFFD, control characters are escaped, nan and inf become null
-    const std::string text = report.dump(2, ' ', false, Json::error_handler_t::replace);
+    const std::string text = sbrt::escape_json_controls(
+        report.dump(2, ' ', false, Json::error_handler_t::replace));
     std::fprintf(out, "%s\n", text.c_str());
 }
 

@@ -42,35 +42,6 @@ Json json_text(const std::string &text)
     return sbrt::valid_utf8(text);
 }
 
-/// `dumped` with DEL and the C1 controls (U+0080..U+009F, CSI among
-/// them, which some terminals obey in UTF-8) escaped as \u007f..\u009f:
-/// the library escapes only U+0000..U+001F, and a json printed to a
-/// terminal must not drive it. Both occur only inside strings, where the
-/// escape means the same character; in valid UTF-8 the byte C2 always
-/// leads a character of two bytes.
-std::string escape_controls(const std::string &dumped)
-{
-    std::string out;
-    out.reserve(dumped.size());
-    char escaped[8];
-    for (size_t i = 0; i < dumped.size(); ++i) {
-        const auto c = static_cast<unsigned char>(dumped[i]);
-        const auto next = i + 1 < dumped.size() ? static_cast<unsigned char>(dumped[i + 1]) : 0;
-        if (c == 0x7f) {
-            out += "\\u007f";
-        }
-        else if (c == 0xc2 && next >= 0x80 && next <= 0x9f) {
-            std::snprintf(escaped, sizeof escaped, "\\u%04x", unsigned(next));
-            out += escaped;
-            ++i;
-        }
-        else {
-            out += char(c);
-        }
-    }
-    return out;
-}
-
 /// `value` written by the library on one line, ", " and ": " between
 /// items as the manual shows them; a byte that is no UTF-8 (none is left
 /// after json_text) would become U+FFFD, never be written raw; no
@@ -78,7 +49,7 @@ std::string escape_controls(const std::string &dumped)
 std::string one_line(const Json &value)
 {
     const auto dump = [](const Json &v) {
-        return escape_controls(v.dump(-1, ' ', false, Json::error_handler_t::replace));
+        return sbrt::escape_json_controls(v.dump(-1, ' ', false, Json::error_handler_t::replace));
     };
     if (value.is_object() && !value.empty()) {
         std::string text = "{";

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "util/error.hpp"
+#include "vector_map.hpp"
 extern "C" {
 #include <grass/dbmi.h>
 #include <grass/vector.h>
@@ -88,29 +89,6 @@ std::vector<int> selected_categories(Map_info &map, int layer, const std::string
     return selected;
 }
 
-/// The layer number that layer= names: a number as it is (-1: every
-/// layer), else the name of one of the map's layers (its database links,
-/// as v.db.connect -p lists them). Vect_get_field_number would take any
-/// other text as layer 0 (atoi) and so log every point; GRASS's modules
-/// refuse such a layer, and so does this.
-int layer_number(Map_info &map, const std::string &layer)
-{
-    errno = 0;
-    char *end = nullptr;
-    const long number = std::strtol(layer.c_str(), &end, 10);
-    if (!layer.empty() && *end == '\0' && errno == 0) {
-        if (number < -1 || number > 2147483647L)
-            sbrt::fail("layer=", layer, ": not a layer (a number from 1 up, -1 for every "
-                       "layer, or the name of a layer of the map)");
-        return int(number);
-    }
-    if (const field_info *info = Vect_get_field_by_name(&map, layer.c_str()))
-        return info->number;
-    sbrt::fail("layer=", layer, ": vector map <", Vect_get_full_name(&map),
-               "> has no layer of that name (v.db.connect -p map=", Vect_get_full_name(&map),
-               " lists its layers; give a layer's number or name, or -1 for every layer)");
-}
-
 /// Refuses a point that is no position (coordinates=nan,nan or inf, a
 /// vector map holding nan): it would be logged as outside, with
 /// coordinates that json cannot hold.
@@ -139,7 +117,7 @@ std::vector<QueryPoint> query_points(const WhatRequest &request)
         return request.coordinates;
     }
     PointMap vector(request.points, request.layer);
-    const int layer = layer_number(vector.map(), request.layer);
+    const int layer = sbrt_grass::layer_number(vector.map(), request.layer);
     std::vector<int> selected;
     if (!request.where.empty())
         selected = selected_categories(vector.map(), layer, request.where);

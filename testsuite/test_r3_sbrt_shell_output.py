@@ -36,14 +36,14 @@ WKT = (
     'PARAMETER["central_meridian",5.38763888888889],PARAMETER["scale_factor",0.9999079],'
     'PARAMETER["false_easting",155000],PARAMETER["false_northing",463000],'
     'UNIT["metre",1]],VERT_CS["{d} height",VERT_DATUM["Normaal Amsterdams Peil",2005],'
-    'UNIT["metre",1],AXIS["Up",UP]]]').replace("{d}", DATUM)
+    'UNIT["metre",1],AXIS["Up",UP]]]')
 
 
 def cdl_string(text):
     return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
 
 
-def write_hostile_netcdf(path):
+def write_hostile_netcdf(path, datum=DATUM, long_name=LONG_NAME):
     """A GeoTOP-shaped file whose attributes are shell code."""
     column = [1, 1, 2, 2, 3]
     n = NX * NY
@@ -54,11 +54,11 @@ variables:
   int x(x) ; x:standard_name = "projection_x_coordinate" ; x:units = "m" ;
   int y(y) ; y:standard_name = "projection_y_coordinate" ; y:units = "m" ;
   float z(z) ; z:positive = "up" ; z:units = "m" ;
-  int crs ; crs:crs_wkt = {cdl_string(WKT)} ;
+  int crs ; crs:crs_wkt = {cdl_string(WKT.replace("{d}", datum))} ;
   short lithok(x, y, z) ; lithok:_FillValue = -127s ; lithok:grid_mapping = "crs" ;
     lithok:long_name = {cdl_string(LONG_NAME)} ;
   short kans_5(x, y, z) ; kans_5:_FillValue = -127s ; kans_5:grid_mapping = "crs" ;
-    kans_5:units = {cdl_string(UNIT)} ; kans_5:long_name = {cdl_string(LONG_NAME)} ;
+    kans_5:units = {cdl_string(UNIT)} ; kans_5:long_name = {cdl_string(long_name)} ;
   float poro(x, y, z) ; poro:grid_mapping = "crs" ;
     poro:long_name = {cdl_string(TICK_NAME)} ; poro:units = {cdl_string("m" + chr(10) + "3")} ;
 data:
@@ -154,6 +154,25 @@ class TestShellOutputIsSafeToEval(TestCase):
         lithok = [v for v in variables if v["variable"] == "lithok"][0]
         self.assertEqual((lithok["long_name"], lithok["sizes"]),
                          (LONG_NAME, f"{NX},{NY},{NZ}"))
+
+    def test_texts_an_sbrt_cannot_hold_are_made_to_fit(self):
+        """A vertical CRS named over two lines gave an SBRT that nothing
+        could read, a long name of 5000 bytes one whose channels nothing
+        could read: the import gives no datum (with a warning) and cuts
+        the long name, and the SBRT reads."""
+        path = os.path.join(self.tmp, "unholdable.nc")
+        write_hostile_netcdf(path, datum="NAP\nsecond line", long_name="x" * 5000)
+        run = subprocess.run(["r3.sbrt.convert", "-o", f"file={path}", "variable=lithok",
+                              "properties=kans_5", "output=unholdable", "preset=none",
+                              "--overwrite"], capture_output=True, text=True, timeout=120)
+        self.assertEqual(run.returncode, 0, run.stderr[-2000:])
+        self.assertIn("no vertical datum", " ".join(run.stderr.split()))
+        output = gs.read_command("r3.sbrt.convert", flags="g", sbrt="unholdable")
+        self.assertEqual(shell_values(output)["vertical_datum"], "")
+        kans = shell_records(output, "channel")[0]
+        self.assertEqual(len(kans["long_name"].encode()), 4096)
+        self.assertTrue(kans["long_name"].endswith("..."))
+        gs.run_command("r3.sbrt.manage", remove="unholdable", flags="f", quiet=True)
 
     def test_labels_reach_no_terminal_with_control_characters(self):
         point = f"coordinates={X0 + 50},{Y0 + 50}"

@@ -13,6 +13,7 @@
 
 #include "grass.hpp"
 #include "util/error.hpp"
+#include "util/safe_text.hpp"
 
 namespace sbrt_grass {
 
@@ -40,15 +41,18 @@ void run_reporting_errors(const char *doing, const std::string &subject,
     try {
         job();
     }
+    // messages quote untrusted text (another mapset's channel names and
+    // units, a file's attributes): no control character reaches a terminal
     catch (const sbrt::Error &e) {
-        G_fatal_error("%s", e.what());
+        G_fatal_error("%s", sbrt::printable_lines(e.what()).c_str());
     }
     catch (const std::bad_alloc &) {
         G_fatal_error(_("Out of memory while %s <%s>: %s"), doing, subject.c_str(),
                       memory_hint);
     }
     catch (const std::exception &e) {
-        G_fatal_error(_("Failed while %s <%s>: %s"), doing, subject.c_str(), e.what());
+        G_fatal_error(_("Failed while %s <%s>: %s"), doing, subject.c_str(),
+                      sbrt::printable_lines(e.what()).c_str());
     }
     check_standard_output();
 }

@@ -11,6 +11,8 @@
 #include <cstring>
 
 #include <algorithm>
+#include <chrono>
+#include <thread>
 #include <ctime>
 
 #include "util/error.hpp"
@@ -56,8 +58,14 @@ auto read_settled(const std::string &dir, const Read &read)
             return read(dir);
         }
         catch (const sbrt::Error &) {
-            if (attempt == 5 || inode_of(dir) == before)
+            // the same directory, there all along: it is damaged. Else it
+            // was swapped (or, where the file system has no rename
+            // exchange, is between two renames: no inode): read again
+            // after a moment
+            const ino_t after = inode_of(dir);
+            if (attempt == 5 || (after == before && after != 0))
                 throw;
+            std::this_thread::sleep_for(std::chrono::milliseconds(10 * attempt));
         }
     }
 }

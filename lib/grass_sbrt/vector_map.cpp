@@ -5,6 +5,9 @@
  ****************************************************************************/
 #include "vector_map.hpp"
 
+#include <cerrno>
+#include <cstdlib>
+
 #include "util/error.hpp"
 
 namespace sbrt_grass {
@@ -44,6 +47,24 @@ int VectorMap::next()
     if (type == -1)
         sbrt::fail(_("Unable to read vector map"), " <", Vect_get_full_name(&map_), ">");
     return type < 0 ? 0 : type;
+}
+
+int layer_number(Map_info &map, const std::string &layer)
+{
+    errno = 0;
+    char *end = nullptr;
+    const long number = std::strtol(layer.c_str(), &end, 10);
+    if (!layer.empty() && *end == '\0' && errno == 0) {
+        if (number < -1 || number > 2147483647L)
+            sbrt::fail("layer=", layer, ": not a layer (a number from 1 up, -1 for every "
+                       "layer, or the name of a layer of the map)");
+        return int(number);
+    }
+    if (const field_info *info = Vect_get_field_by_name(&map, layer.c_str()))
+        return info->number;
+    sbrt::fail("layer=", layer, ": vector map <", Vect_get_full_name(&map),
+               "> has no layer of that name (v.db.connect -p map=", Vect_get_full_name(&map),
+               " lists its layers; give a layer's number or name, or -1 for every layer)");
 }
 
 } // namespace sbrt_grass

@@ -41,6 +41,13 @@ private:
     line_cats *cats_;
 };
 
+/// The layer number that `layer` (a layer= option's answer) names in
+/// `map`: a number as it is (-1: every layer), else the name of one of the
+/// map's layers (its database links, as v.db.connect -p lists them).
+/// Vect_get_field_number would take any other text as layer 0 (atoi);
+/// GRASS's modules refuse such a layer, and so does this (sbrt::Error).
+int layer_number(Map_info &map, const std::string &layer);
+
 } // namespace sbrt_grass
 
 #endif

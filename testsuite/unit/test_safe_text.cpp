@@ -60,6 +60,7 @@ TEST(SafeText, PrintableHasNoControlCharacters)
     EXPECT_EQ(printable("a\tb\nc\x7f"), "a" + FFFD + "b" + FFFD + "c" + FFFD);
     EXPECT_EQ(printable("c1 \xC2\x9B" "31m"), "c1 " + FFFD + "31m"); // C1 CSI
     EXPECT_EQ(printable("klei \xC3\xA9\xC2\xA0"), "klei \xC3\xA9\xC2\xA0"); // NBSP stays
+    EXPECT_EQ(printable_lines("one\x1b[2J\ntwo\r"), "one" + FFFD + "[2J\ntwo" + FFFD);
 }
 
 TEST(SafeText, ShellWordIsReadBackAndRunsNothing)
@@ -88,6 +89,12 @@ TEST(SafeText, CsvFieldIsQuotedWhereItMustBe)
     EXPECT_EQ(csv_field("a;b", ';'), "\"a;b\"");
     EXPECT_EQ(csv_field("a,b", ';'), "a,b");
     EXPECT_EQ(csv_field("line\nbreak\x1b"), "line" + FFFD + "break" + FFFD);
+}
+
+TEST(SafeText, JsonControlsEscaped)
+{
+    EXPECT_EQ(escape_json_controls("{\"a\": \"x\x7fy\xC2\x9B" "31m\xC3\xBC\"}"),
+              "{\"a\": \"x\\u007fy\\u009b31m\xC3\xBC\"}");
 }
 
 TEST(SafeText, FitBytesCutsOnACharacterBoundary)

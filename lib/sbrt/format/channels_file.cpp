@@ -185,6 +185,10 @@ DecodedCodes decode_block(std::unique_ptr<uint8_t[]> raw, size_t size, const Cel
 
 void write_string(ByteWriter &out, const std::string &s)
 {
+    // what read_string refuses is never written: a file nothing can read
+    if (s.size() > MAX_CHANNEL_TEXT)
+        fail("channels: a channel's text of ", s.size(), " bytes (at most ", MAX_CHANNEL_TEXT,
+             ")");
     out.u32(uint32_t(s.size()));
     out.raw(s.data(), s.size());
 }
@@ -192,8 +196,8 @@ void write_string(ByteWriter &out, const std::string &s)
 std::string read_string(ByteReader &in, const std::string &what)
 {
     const uint32_t n = in.u32();
-    if (n > 4096)
-        fail(what, ": a channel's text of ", n, " bytes (at most 4096)");
+    if (n > MAX_CHANNEL_TEXT)
+        fail(what, ": a channel's text of ", n, " bytes (at most ", MAX_CHANNEL_TEXT, ")");
     std::string s(n, '\0');
     for (uint32_t i = 0; i < n; ++i)
         s[i] = char(in.u8());

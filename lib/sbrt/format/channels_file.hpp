@@ -26,6 +26,10 @@
 
 namespace sbrt {
 
+/// The longest name, long name or unit of a channel the channels member
+/// holds (a reader refuses longer texts as damage).
+constexpr size_t MAX_CHANNEL_TEXT = 4096;
+
 class MappedFile;
 
 /// Version 1.1 of the `channels` member (1.0 is read: its kinds are what

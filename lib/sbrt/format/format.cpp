@@ -109,8 +109,25 @@ void decode_colors(const std::string &text, Model &model, const std::string &wha
     }
 }
 
+namespace {
+
+/// A vertical datum as the datum member holds it: one line of printable,
+/// valid UTF-8, at most MAX_DATUM_CHARS bytes; else throws naming `what`.
+void check_datum(const std::string &datum, const std::string &what)
+{
+    if (datum.size() > MAX_DATUM_CHARS)
+        fail(what, ": a vertical datum of more than ", MAX_DATUM_CHARS, " characters");
+    if (printable(datum) != datum)
+        fail(what, ": the vertical datum is not one line of printable text");
+}
+
+} // namespace
+
 std::string encode_datum(const Model &model)
 {
+    // what the reader would refuse is never written (an import would
+    // leave an SBRT nothing can read)
+    check_datum(model.vertical_datum(), "the vertical datum");
     return model.vertical_datum() + "\n";
 }
 
@@ -119,11 +136,7 @@ void decode_datum(const std::string &text, Model &model, const std::string &what
     std::string datum = text;
     while (!datum.empty() && (datum.back() == '\n' || datum.back() == '\r'))
         datum.pop_back();
-    if (datum.size() > MAX_DATUM_CHARS)
-        fail(what, ": a vertical datum of more than ", MAX_DATUM_CHARS, " characters");
-    for (char ch : datum)
-        if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f)
-            fail(what, ": the vertical datum is not one line of text");
+    check_datum(datum, what);
     model.set_vertical_datum(datum);
 }
 

@@ -24,12 +24,13 @@ namespace {
 
 /// The lock file open for locking: created where missing, never through a
 /// symbolic link, never a FIFO or device (O_NONBLOCK: opening one does
-/// not wait).
+/// not wait). Open for writing: on NFS flock(2) is an fcntl lock, whose
+/// exclusive form needs a file open for writing (flock(2), NOTES).
 FileDescriptor open_lock_file(const std::string &path)
 {
     const int fd = open(path.c_str(),
-                        O_RDONLY | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY,
-                        0644);
+                        O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY,
+                        0664);
     if (fd < 0) {
         if (errno == ELOOP)
             fail(path, ": a symbolic link, not a lock file; remove it");

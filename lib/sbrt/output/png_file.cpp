@@ -8,6 +8,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <fcntl.h>
+
 #include <cerrno>
 #include <csetjmp>
 #include <cstdlib>
@@ -136,7 +138,7 @@ void PngFile::open_temporary()
     // a name of its own in the folder of the file (rename() stays in one
     // file system): processes writing one path never share a temporary
     temp_ = path_ + ".XXXXXX.tmp";
-    const int fd = mkstemps(temp_.data(), 4);
+    const int fd = mkostemps(temp_.data(), 4, O_CLOEXEC);
     if (fd < 0) {
         const int error = errno;
         discard();
@@ -144,8 +146,7 @@ void PngFile::open_temporary()
              std::strerror(error));
     }
     // as fopen() would make it: 0666 less the umask (mkstemp makes 0600)
-    fchmod(fd, 0666 & ~process_umask());
-    file_ = fdopen(fd, "wb");
+    file_ = fchmod(fd, 0666 & ~process_umask()) == 0 ? fdopen(fd, "wb") : nullptr;
     if (!file_) {
         const int error = errno;
         close(fd);

@@ -7,6 +7,7 @@
 #include "util/safe_text.hpp"
 
 #include <cstdint>
+#include <cstdio>
 
 namespace sbrt {
 
@@ -114,6 +115,13 @@ std::string printable(std::string_view text)
     });
 }
 
+std::string printable_lines(std::string_view text)
+{
+    return filtered(text, [&](std::size_t at, std::size_t length) {
+        return text[at] == '\n' || !is_control(text, at, length);
+    });
+}
+
 std::string shell_word(std::string_view text)
 {
     const std::string safe = printable(text);
@@ -153,6 +161,28 @@ std::string csv_field(std::string_view text, char separator)
     for (const char c : safe)
         field += c == '"' ? std::string("\"\"") : std::string(1, c);
     return field + "\"";
+}
+
+std::string escape_json_controls(std::string_view dumped)
+{
+    std::string out;
+    out.reserve(dumped.size());
+    char escaped[8];
+    for (std::size_t i = 0; i < dumped.size(); ++i) {
+        const auto c = static_cast<unsigned char>(dumped[i]);
+        const auto next = i + 1 < dumped.size() ? static_cast<unsigned char>(dumped[i + 1]) : 0;
+        if (c == 0x7f)
+            out += "\\u007f";
+        else if (c == 0xc2 && next >= 0x80 && next <= 0x9f) {
+            // in valid UTF-8 the byte C2 always leads a character of two
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", unsigned(next));
+            out += escaped;
+            ++i;
+        }
+        else
+            out += char(c);
+    }
+    return out;
 }
 
 std::string fit_bytes(std::string_view text, std::size_t max_bytes)

@@ -29,6 +29,10 @@ std::string valid_utf8(std::string_view text);
 /// replaced by U+FFFD, so that no escape sequence reaches a terminal.
 std::string printable(std::string_view text);
 
+/// \brief As printable, but line breaks ('\n') are kept: a message of
+/// several lines that quotes untrusted text.
+std::string printable_lines(std::string_view text);
+
 /// \brief `text` as one word a POSIX shell reads back unchanged and never
 /// runs: as it is when made only of characters with no meaning to the
 /// shell (letters, digits and _ . , : / + % @ = -), else single-quoted with
@@ -45,6 +49,14 @@ std::string record_field(std::string_view text);
 /// label's escape sequence must not reach a terminal that shows the file),
 /// quoted where it holds `separator` or a quote, each quote doubled.
 std::string csv_field(std::string_view text, char separator = ',');
+
+/// \brief JSON text `dumped` (as a JSON library writes it, valid UTF-8)
+/// with DEL and the C1 controls (U+0080..U+009F, CSI among them, which
+/// some terminals obey in UTF-8) escaped as \u007f..\u009f: libraries
+/// escape only U+0000..U+001F, and JSON printed to a terminal must not
+/// drive it. Both occur only inside strings, where the escape means the
+/// same character.
+std::string escape_json_controls(std::string_view dumped);
 
 /// \brief The longest prefix of valid UTF-8 `text` of at most `max_bytes`
 /// bytes that ends on a character boundary; "..." ends it when it was cut
