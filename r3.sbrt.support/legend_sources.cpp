@@ -6,19 +6,15 @@
 #include "legend_sources.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <sstream>
 
 #include "grass.hpp"
+#include "grass_color_rules.hpp"
 #include "rule_counts.hpp"
 #include "util/error.hpp"
 #include "util/safe_text.hpp"
 
 namespace {
-
-/// The longest colour rule line: Rast_parse_color_rule copies the value
-/// and the colour into buffers of 80 bytes without a bound.
-constexpr size_t MAX_RULE_CHARS = 79;
 
 /// The smallest and largest class id (materials has at least one class).
 void id_range(const std::vector<sbrt::Material> &materials, CELL &low, CELL &high)
@@ -67,52 +63,6 @@ void report_counts(const char *key, const std::string &file, const char *sbrt_na
                   counts.first_unmatched.c_str(), ids.size(), ids.front(), ids.back());
 }
 
-/// Hands colour rules from text to Rast_read_color_rules line by line, so
-/// that a bad line is reported with the file and its number (GRASS's own
-/// reader names neither), and keeps the value of each rule for the counts.
-struct RuleReader {
-    RuleReader(const std::string &rules, const char *file) : text(rules), name(file) {}
-    std::istringstream text;
-    const char *name;
-    int line = 0;
-    std::vector<double> values; ///< of the value rules (not nv, default)
-};
-
-int read_rule(void *closure, DCELL min, DCELL max, DCELL *value, int *red,
-              int *green, int *blue, int *norm, int *nval, int *dflt)
-{
-    RuleReader *reader = static_cast<RuleReader *>(closure);
-    *norm = *nval = *dflt = 0;
-    std::string text;
-    while (std::getline(reader->text, text)) {
-        ++reader->line;
-        text.erase(std::min(text.find('\r'), text.size()));
-        std::vector<char> buffer(text.c_str(), text.c_str() + std::strlen(text.c_str()) + 1);
-        G_strip(buffer.data());
-        const std::string line = buffer.data();
-        if (line.empty() || line[0] == '#')
-            continue;
-        if (line == "end")
-            return 0;
-        if (line.size() > MAX_RULE_CHARS)
-            G_fatal_error(_("rules=%s line %d: more than %zu characters, longer than "
-                            "any colour rule ('value colour')"),
-                          reader->name, reader->line, MAX_RULE_CHARS);
-        const int status =
-            Rast_parse_color_rule(min, max, line.c_str(), value, red, green, blue, norm,
-                                  nval, dflt);
-        if (status != 0)
-            G_fatal_error(_("rules=%s line %d: %s (<%s>); a line is 'value colour', "
-                            "the colour r:g:b or a name such as red"),
-                          reader->name, reader->line, Rast_parse_color_rule_error(status),
-                          sbrt::printable(line).c_str());
-        if (*norm)
-            reader->values.push_back(*value);
-        return 1;
-    }
-    return 0;
-}
-
 } // namespace
 
 void colors_from_table(const char *name, std::vector<sbrt::Material> &materials)
@@ -132,17 +82,25 @@ void colors_from_rules(const RulesText &rules, const char *sbrt_name,
 {
     CELL low, high;
     id_range(materials, low, high);
-    RuleReader reader(rules.text, rules.file.c_str());
-    struct Colors colors;
-    Rast_init_colors(&colors);
-    const int read = Rast_read_color_rules(&colors, low, high, read_rule, &reader);
-    if (!read)
-        G_fatal_error(_("rules=%s: no colour rules in it"), rules.file.c_str());
-    const size_t changed = take_colors(&colors, materials);
-    Rast_free_colors(&colors);
+    // read and checked by the project's reader (never GRASS's, which ends
+    // the process on a bad line and prints it): an error names the line's
+    // number, never its content
+    sbrt::ColorRules parsed;
+    try {
+        parsed = sbrt::parse_color_rules(rules.text, "rules=" + rules.file);
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error("%s", sbrt::printable(e.what()).c_str());
+    }
+    GrassColors colors;
+    set_grass_colors(parsed, low, high, colors.get());
+    const size_t changed = take_colors(colors.get(), materials);
+    std::vector<double> values;
+    for (const sbrt::ColorRule &rule : parsed.rules)
+        values.push_back(rule.value_in(low, high));
     const std::vector<int32_t> ids = class_ids(materials);
-    report_counts("rules", rules.file, sbrt_name, count_color_rules(reader.values, ids),
-                  changed, ids);
+    report_counts("rules", rules.file, sbrt_name, count_color_rules(values, ids), changed,
+                  ids);
 }
 
 void legend_from_map(const char *name, bool three_d, std::vector<sbrt::Material> &materials)

@@ -202,6 +202,8 @@ ColorRules parse_color_rules(std::string_view text, const std::string &what_give
         text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
         if (line.empty() || line.front() == '#')
             continue;
+        if (same_words(line, "end")) // as r.colors' rules= ends
+            break;
         read_line(line, number_of_line, what, rules);
     }
     if (rules.rules.empty())

@@ -51,7 +51,7 @@ struct ColorRules {
 /// lines "value colour", value a number, a percentage (0-100%), "nv" or
 /// "default"; colour R:G:B (or R G B, separators , : ; and blanks), #RRGGBB
 /// or a GRASS colour name (red, grey, ...); blank lines and lines starting
-/// with # are skipped. Stricter than GRASS: the whole value and the whole
+/// with # are skipped; a line "end" ends the rules. Stricter than GRASS: the whole value and the whole
 /// colour must parse, values must be finite. Throws sbrt::Error
 /// "<what>: line N: <what is wrong>", never quoting the line; also where
 /// no line is a rule. `what` names the source (e.g. "rules=/path").
