@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cstdlib>
 
 #include "model/survey_presets.hpp"
+#include "model/class_words.hpp"
 #include "util/error.hpp"
 #include "util/safe_text.hpp"
 
@@ -23,23 +23,6 @@ constexpr size_t MAX_LISTED_BYTES = 16000;
 /// The most commas of a label a list's parts are joined again for (a
 /// label with more is named without its commas): bounds resolve()'s work.
 constexpr size_t MAX_JOINED_COMMAS = 32;
-
-std::string trim(const std::string &s)
-{
-    const auto first = s.find_first_not_of(" \t\r\n");
-    if (first == std::string::npos)
-        return "";
-    return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
-
-bool same_text(const std::string &a, const std::string &b)
-{
-    return a.size() == b.size() &&
-           std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
 
 /// `text` with ASCII letters in lower case (as same_text compares).
 std::string lower(std::string text)
@@ -67,21 +50,6 @@ std::string without_commas(const std::string &text)
         out += ch;
     }
     return out;
-}
-
-/// The class id `name` spells, where it is a whole integer of 32 bits.
-bool parse_id(const std::string &name, int32_t &id)
-{
-    if (name.empty())
-        return false;
-    char *end = nullptr;
-    errno = 0;
-    const long long value = std::strtoll(name.c_str(), &end, 10);
-    if (*end != '\0' || errno == ERANGE || value < INT32_MIN || value > INT32_MAX ||
-        value == NULL_CLASS)
-        return false;
-    id = int32_t(value);
-    return true;
 }
 
 /// The aliases preset `p` gives a class of id `id` labelled `label`: its
@@ -148,7 +116,7 @@ uint32_t ClassNames::find(const std::string &given) const
     if (name.empty())
         return EMPTY;
     int32_t id = 0;
-    if (parse_id(name, id)) {
+    if (parse_class_id(name, id)) {
         const auto found = by_id_.find(id);
         if (found != by_id_.end())
             return found->second;

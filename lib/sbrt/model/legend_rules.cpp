@@ -8,39 +8,14 @@
 #include <fnmatch.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
-#include <cstdlib>
 
+#include "model/class_words.hpp"
 #include "util/error.hpp"
 #include "util/safe_text.hpp"
 
 namespace sbrt {
 
 namespace {
-
-std::string trim(const std::string &s)
-{
-    const auto first = s.find_first_not_of(" \t\r");
-    if (first == std::string::npos)
-        return "";
-    return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
-
-/// A whole decimal integer in int32 range, or false.
-bool parse_id(const std::string &text, int32_t &id)
-{
-    const std::string t = trim(text);
-    if (t.empty())
-        return false;
-    char *end = nullptr;
-    errno = 0;
-    const long long v = std::strtoll(t.c_str(), &end, 10);
-    if (errno || *end || v < INT32_MIN || v > INT32_MAX || v == NULL_CLASS)
-        return false;
-    id = int32_t(v);
-    return true;
-}
 
 /// "r:g:b", each 0-255, or false.
 bool parse_rgb(const std::string &text, ClassStyle &style)
@@ -52,7 +27,7 @@ bool parse_rgb(const std::string &text, ClassStyle &style)
         if (colon == std::string::npos)
             return false;
         int32_t v;
-        if (!parse_id(text.substr(start, colon - start), v) || v < 0 || v > 255)
+        if (!parse_class_id(text.substr(start, colon - start), v) || v < 0 || v > 255)
             return false;
         channel[k] = v;
         start = colon + 1;
@@ -64,15 +39,6 @@ bool parse_rgb(const std::string &text, ClassStyle &style)
     return true;
 }
 
-bool same_text(const std::string &a, const std::string &b)
-{
-    return a.size() == b.size() &&
-           std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
-
 /// "alias: ID NAME[, NAME...]": other names of class ID (its code, a short
 /// name); commas part them, as GRASS parts a list option's answers.
 void add_aliases(SurveyPreset &p, const std::string &rest, const std::string &what,
@@ -80,7 +46,7 @@ void add_aliases(SurveyPreset &p, const std::string &rest, const std::string &wh
 {
     const auto gap = rest.find_first_of(" \t");
     ClassAlias alias;
-    if (gap == std::string::npos || !parse_id(rest.substr(0, gap), alias.id))
+    if (gap == std::string::npos || !parse_class_id(rest.substr(0, gap), alias.id))
         fail(what, " line ", number, ": expected alias: ID NAME[, NAME...]");
     const std::string names = rest.substr(gap) + ",";
     for (size_t start = 0, comma; (comma = names.find(',', start)) != std::string::npos;
@@ -88,7 +54,7 @@ void add_aliases(SurveyPreset &p, const std::string &rest, const std::string &wh
         alias.name = trim(names.substr(start, comma - start));
         int32_t number_name;
         if (alias.name.empty() || alias.name.size() > MAX_ALIAS_BYTES ||
-            printable(alias.name) != alias.name || parse_id(alias.name, number_name))
+            printable(alias.name) != alias.name || parse_class_id(alias.name, number_name))
             fail(what, " line ", number, ": alias '", fit_bytes(printable(alias.name), 80),
                  "' must be a name of 1 to ", MAX_ALIAS_BYTES,
                  " printable bytes that is not a number");
@@ -163,13 +129,13 @@ std::vector<ClassStyle> parse_category_rules(std::istream &in, const std::string
         // id:label, or low:high:label where the second field is an id
         ClassStyle s;
         const auto colon = t.find(':');
-        if (colon == std::string::npos || !parse_id(t.substr(0, colon), s.low))
+        if (colon == std::string::npos || !parse_class_id(t.substr(0, colon), s.low))
             fail(what, " line ", number, ": expected id:label or low:high:label");
         s.high = s.low;
         std::string rest = t.substr(colon + 1);
         const auto second = rest.find(':');
         int32_t high;
-        if (second != std::string::npos && parse_id(rest.substr(0, second), high)) {
+        if (second != std::string::npos && parse_class_id(rest.substr(0, second), high)) {
             if (high < s.low)
                 fail(what, " line ", number, ": range ", s.low, ":", high, " runs backwards");
             s.high = high;
@@ -224,7 +190,7 @@ SurveyPreset parse_preset(std::istream &in, const std::string &what)
         ClassStyle s;
         const auto gap = rest.find_first_of(" \t");
         const std::string color = rest.substr(0, gap);
-        if (!parse_id(head, s.low) || !parse_rgb(color, s))
+        if (!parse_class_id(head, s.low) || !parse_rgb(color, s))
             fail(what, " line ", number, ": expected id red:green:blue label");
         s.high = s.low;
         s.label = gap == std::string::npos ? "" : valid_utf8(trim(rest.substr(gap)));
