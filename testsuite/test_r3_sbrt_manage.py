@@ -100,11 +100,20 @@ class ManageFixture(TestCase):
         run.messages = " ".join(run.stderr.split())
         return run
 
+    @staticmethod
+    def is_lock(name):
+        """A writers' lock file, `.NAME.lock` beside SBRT NAME: empty, kept
+        (a lock file removed would let two writers lock two files)."""
+        return name.startswith(".") and name.endswith(".lock")
+
     def snapshot(self, mapset):
-        """Every file of the mapset's sbrt element with its bytes."""
+        """Every file of the mapset's sbrt element with its bytes (the
+        writers' lock files aside)."""
         files = {}
         for top, _, names in os.walk(self.path(mapset)):
             for name in names:
+                if top == self.path(mapset) and self.is_lock(name):
+                    continue
                 path = os.path.join(top, name)
                 with open(path, "rb") as f:
                     files[os.path.relpath(path, self.path(mapset))] = f.read()
@@ -123,8 +132,12 @@ class ManageFixture(TestCase):
             )
 
     def assertEntries(self, mapset, names):
-        """Exactly `names` in the sbrt element: no leftover, hidden or not."""
-        self.assertEqual(sorted(os.listdir(self.path(mapset))), sorted(names))
+        """Exactly `names` in the sbrt element: no leftover, hidden or not
+        (the writers' lock files aside, each empty)."""
+        entries = os.listdir(self.path(mapset))
+        for lock in filter(self.is_lock, entries):
+            self.assertEqual(os.path.getsize(os.path.join(self.path(mapset), lock)), 0)
+        self.assertEqual(sorted(e for e in entries if not self.is_lock(e)), sorted(names))
 
 
 class TestManageList(ManageFixture):
