@@ -14,6 +14,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 
@@ -152,6 +153,25 @@ void sweep_stale_temporaries(const std::string &target)
 }
 
 } // namespace
+
+std::string stage_other_members(const MemberDirectory &dir, AtomicDirectory &out,
+                                const std::vector<std::string> &replaced)
+{
+    std::string hist;
+    for (const std::string &name : dir.member_names()) {
+        if (std::find(replaced.begin(), replaced.end(), name) != replaced.end())
+            continue;
+        const FileDescriptor member = dir.open_regular(name); // no links, no FIFOs
+        if (name == "hist") {
+            const std::vector<uint8_t> bytes = read_all(member, dir.member_path(name));
+            hist.assign(bytes.begin(), bytes.end());
+            continue;
+        }
+        if (linkat(dir.fd(), name.c_str(), AT_FDCWD, out.file_path(name).c_str(), 0) != 0)
+            out.copy_file(name, member, dir.member_path(name));
+    }
+    return hist;
+}
 
 bool remove_tree(const std::string &path)
 {

@@ -48,6 +48,16 @@ private:
     bool committed_ = false;
 };
 
+class MemberDirectory;
+
+/// \brief Stages in `out` every member of SBRT `dir` but those named in
+/// `replaced` and "hist": hard links where the file system allows (nothing
+/// ever writes into a member in place), copies else. Returns the text of
+/// the history member, to which a rewrite adds its line. Throws
+/// sbrt::Error where a member is no regular file.
+std::string stage_other_members(const MemberDirectory &dir, AtomicDirectory &out,
+                                const std::vector<std::string> &replaced);
+
 /// Removes a directory tree; returns false if something could not be removed.
 bool remove_tree(const std::string &path);
 

@@ -5,8 +5,6 @@
  ****************************************************************************/
 #include "format/channels_rewrite.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
 
 #include "format/atomic_dir.hpp"
 #include "format/byte_sink.hpp"
@@ -20,20 +18,7 @@ void rewrite_channels(const std::string &directory, const PropertyChannels &chan
 {
     const MemberDirectory dir(directory);
     AtomicDirectory out(directory);
-    std::string hist;
-    for (const std::string &name : dir.member_names()) {
-        if (name == "channels")
-            continue;
-        const FileDescriptor member = dir.open_regular(name); // no links, no FIFOs
-        if (name == "hist") {
-            const std::vector<uint8_t> bytes = read_all(member, dir.member_path(name));
-            hist.assign(bytes.begin(), bytes.end());
-            continue;
-        }
-        // the same inode: nothing ever writes into a member in place
-        if (linkat(dir.fd(), name.c_str(), AT_FDCWD, out.file_path(name).c_str(), 0) != 0)
-            out.copy_file(name, member, dir.member_path(name));
-    }
+    const std::string hist = stage_other_members(dir, out, {"channels"});
     {
         FileSink sink(out.file_path("channels"));
         channels.write_with(infos, sink);

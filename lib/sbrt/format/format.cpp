@@ -8,9 +8,7 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdio>
-#include <fcntl.h>
 #include <sstream>
-#include <unistd.h>
 
 #include "format/atomic_dir.hpp"
 #include "format/byte_sink.hpp"
@@ -222,20 +220,7 @@ void rewrite_legend(const std::string &directory, const Model &model,
 {
     const MemberDirectory dir(directory);
     AtomicDirectory out(directory);
-    std::string hist;
-    for (const std::string &name : dir.member_names()) {
-        if (name == "cats" || name == "colors")
-            continue;
-        const FileDescriptor member = dir.open_regular(name); // no links, no FIFOs
-        if (name == "hist") {
-            const std::vector<uint8_t> bytes = read_all(member, dir.member_path(name));
-            hist.assign(bytes.begin(), bytes.end());
-            continue;
-        }
-        // the same inode: nothing ever writes into a member in place
-        if (linkat(dir.fd(), name.c_str(), AT_FDCWD, out.file_path(name).c_str(), 0) != 0)
-            out.copy_file(name, member, dir.member_path(name));
-    }
+    const std::string hist = stage_other_members(dir, out, {"cats", "colors"});
     out.write_file("cats", encode_cats(model));
     out.write_file("colors", encode_colors(model));
     out.write_file("hist", hist + history);
