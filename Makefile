@@ -33,7 +33,11 @@ $(filter r3.%,$(MODULEDIRS)): $(LIBDIRS)
 install:
 	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) install || exit 1; done
 
-# Set-up of a fresh Debian machine, the demo and the whole test suite.
+# Set-up of a fresh Debian machine, the demo and the tests: `make test` the
+# tests for people (unit tests, short fuzzing, the stage order, the
+# gunittest files, the notebook), `make check` the deep ones (the unit tests
+# under ASan+UBSan, longer fuzzing, valgrind of the modules, the gunittest
+# files on GRASS 8.4 in a Debian 13 root). CI runs both.
 setup:
 	@tools/setup.sh
 
@@ -43,7 +47,11 @@ demo: setup
 
 test: setup
 	@$(MAKE) --no-print-directory default
-	@tools/run_tests.sh
+	@tools/run_tests.sh test
+
+check: setup
+	@$(MAKE) --no-print-directory default
+	@tools/run_tests.sh check
 
 clean:
 	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) clean; done
@@ -53,4 +61,4 @@ clean:
 	$(MAKE) -C testsuite/benchmark/geotop_like clean
 	rm -rf dist testreport
 
-.PHONY: default install setup demo test clean $(SUBDIRS)
+.PHONY: default install setup demo test check clean $(SUBDIRS)
