@@ -7,18 +7,20 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <cstdlib>
-#include <cstring>
 
 #include "sbrt_choices.hpp"
 #include "util/error.hpp"
 #include "volume.hpp"
 #include "module_errors.hpp"
 #include "module_options.hpp"
+#include "output_format.hpp"
 
 namespace {
 
+using sbrt_grass::OutputFormat;
+
 struct Options {
-    Option *input, *classes, *probability, *areas, *layer, *format, *output, *nprocs;
+    Option *input, *classes, *probability, *areas, *layer, *format, *separator, *output, *nprocs;
 };
 
 Options define_options()
@@ -49,15 +51,11 @@ Options define_options()
     o.layer = G_define_standard_option(G_OPT_V_FIELD);
     o.layer->guisection = _("Areas");
 
-    o.format = G_define_option();
-    o.format->key = "format";
-    o.format->type = TYPE_STRING;
-    o.format->required = YES;
-    o.format->options = "plain,json,csv";
-    o.format->answer = const_cast<char *>("plain");
-    o.format->description = _("Output format");
-    o.format->descriptions = _("plain;Table for people;json;JSON;csv;Comma-separated values");
+    o.format = sbrt_grass::define_format_option(
+        {OutputFormat::plain, OutputFormat::json, OutputFormat::csv});
     o.format->guisection = _("Output");
+    o.separator = sbrt_grass::define_separator_option();
+    o.separator->guisection = _("Output");
     o.output = G_define_standard_option(G_OPT_F_OUTPUT);
     o.output->required = NO;
     o.output->description = _("Name of the output file (default: standard output)");
@@ -77,9 +75,8 @@ VolumeRequest read_options(const Options &o)
     r.areas = o.areas->answer ? o.areas->answer : "";
     r.probability = o.probability->answer ? o.probability->answer : "";
     r.layer = o.layer->answer ? o.layer->answer : "1";
-    r.format = std::strcmp(o.format->answer, "json") == 0  ? ReportFormat::json
-               : std::strcmp(o.format->answer, "csv") == 0 ? ReportFormat::csv
-                                                           : ReportFormat::plain;
+    r.format = sbrt_grass::read_output_format(o.format);
+    r.separator = sbrt_grass::read_csv_separator(o.separator, r.format);
     r.output = o.output->answer ? o.output->answer : "";
     r.threads = sbrt_grass::read_nprocs(o.nprocs);
     return r;

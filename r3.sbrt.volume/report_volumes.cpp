@@ -145,6 +145,6 @@ void report_volumes(const VolumeRequest &request)
             by_row(zones, sbrt::expected_volumes(model, *p.channels, p.summed,
                                                  zones.cells.cell_zones(), zones.cells.zones()));
     }
-    write_report(out.get(), request.format, report, table);
+    write_report(out.get(), request.format, request.separator, report, table);
     out.close(request.output);
 }

@@ -16,8 +16,7 @@
 #include "measure/class_set.hpp"
 #include "measure/expected_thickness.hpp"
 #include "measure/volumes.hpp"
-
-enum class ReportFormat { plain, json, csv };
+#include "output_format.hpp"
 
 /// \brief Options read.
 struct VolumeRequest {
@@ -25,7 +24,8 @@ struct VolumeRequest {
     std::vector<std::string> classes; ///< empty: every class, one row each
     std::string probability;          ///< channels in % (a+b): expected volumes
     std::string areas, layer;         ///< areas empty: the region
-    ReportFormat format = ReportFormat::plain;
+    sbrt_grass::OutputFormat format = sbrt_grass::OutputFormat::plain;
+    char separator = ','; ///< of csv
     std::string output; ///< empty or "-": standard output
     unsigned threads = 0;
 };
@@ -58,8 +58,8 @@ struct VolumeReport {
     std::vector<sbrt::ExpectedVolume> expected; ///< its volume per zone
 };
 
-/// Writes `table` to `out` in `format`.
-void write_report(FILE *out, ReportFormat format, const VolumeReport &report,
+/// Writes `table` to `out` in `format` (plain, json or csv with `separator`).
+void write_report(FILE *out, sbrt_grass::OutputFormat format, char separator, const VolumeReport &report,
                   const sbrt::VolumeTable &table);
 
 /// Reads the SBRT, measures and writes the report (throws sbrt::Error).

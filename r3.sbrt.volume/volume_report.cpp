@@ -10,14 +10,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "output_format.hpp"
 #include "util/safe_text.hpp"
 #include "volume.hpp"
 
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-using sbrt::csv_field;
 
 /// A number for CSV: 17 significant digits; nan, inf and -inf as such.
 std::string csv_number(double value)
@@ -146,17 +145,26 @@ void write_json(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table
     }
     // labels come from the model's file: bytes that are not UTF-8 become
     // U+FFFD, control characters are escaped, nan and inf become null
-    const std::string text = sbrt::escape_json_controls(
-        report.dump(2, ' ', false, Json::error_handler_t::replace));
-    std::fprintf(out, "%s\n", text.c_str());
+    std::fprintf(out, "%s\n", sbrt_grass::json_text(report).c_str());
 }
 
-void write_csv(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
+void write_csv(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table,
+               char separator)
 {
     const bool areas = !r.categories.empty();
     const bool expected = !r.probability.empty();
-    std::fprintf(out, "%sclasses,labels,volume,cells%s\n", areas ? "area," : "",
-                 expected ? ",probability" : "");
+    // a record with the area's category first where there are areas
+    const auto write = [&](int zone, std::vector<std::string> fields) {
+        if (areas)
+            fields.insert(fields.begin(),
+                          zone < 0 ? std::string("area")
+                                   : std::to_string(r.categories[size_t(zone)]));
+        std::fputs(sbrt_grass::csv_record(fields, separator).c_str(), out);
+    };
+    std::vector<std::string> header = {"classes", "labels", "volume", "cells"};
+    if (expected)
+        header.push_back("probability");
+    write(-1, header);
     for (int z = 0; z < table.zones(); ++z)
         for (size_t s = 0; s < table.sets(); ++s) {
             const sbrt::Volume &v = table.at(z, s);
@@ -166,37 +174,32 @@ void write_csv(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table)
                 ids += (i ? " " : "") + std::to_string(names.ids[i]);
                 labels += (i ? ";" : "") + names.labels[i];
             }
-            if (areas)
-                std::fprintf(out, "%d,", r.categories[size_t(z)]);
-            std::fprintf(out, "%s,%s,%s,%llu%s\n", ids.c_str(), csv_field(labels).c_str(),
-                         csv_number(v.volume).c_str(), (unsigned long long)v.cells,
-                         expected ? "," : "");
-            if (s + 1 == table.sets() && expected) {
+            std::vector<std::string> row = {ids, labels, csv_number(v.volume),
+                                            std::to_string(v.cells)};
+            if (expected)
+                row.emplace_back();
+            write(z, row);
+            if (s + 1 == table.sets() && expected)
                 // the zone's expected volume: no classes, the probability named
-                if (areas)
-                    std::fprintf(out, "%d,", r.categories[size_t(z)]);
-                std::fprintf(out, ",,%s,%llu,%s\n",
-                             csv_number(r.expected[size_t(z)].volume).c_str(),
-                             (unsigned long long)r.expected[size_t(z)].cells,
-                             csv_field(r.probability).c_str());
-            }
+                write(z, {"", "", csv_number(r.expected[size_t(z)].volume),
+                          std::to_string(r.expected[size_t(z)].cells), r.probability});
         }
 }
 
 } // namespace
 
-void write_report(FILE *out, ReportFormat format, const VolumeReport &report,
-                  const sbrt::VolumeTable &table)
+void write_report(FILE *out, sbrt_grass::OutputFormat format, char separator,
+                  const VolumeReport &report, const sbrt::VolumeTable &table)
 {
     switch (format) {
-    case ReportFormat::plain:
-        write_plain(out, report, table);
-        break;
-    case ReportFormat::json:
+    case sbrt_grass::OutputFormat::json:
         write_json(out, report, table);
         break;
-    case ReportFormat::csv:
-        write_csv(out, report, table);
+    case sbrt_grass::OutputFormat::csv:
+        write_csv(out, report, table, separator);
+        break;
+    default:
+        write_plain(out, report, table);
         break;
     }
 }

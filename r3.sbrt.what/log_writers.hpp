@@ -34,6 +34,7 @@ struct LogSource {
     std::vector<sbrt::ChannelInfo> channels;
     std::string elevation_unit = "m"; ///< the location's: "m", "ft", "map units"
     bool voxel_rows = false;
+    char separator = ','; ///< between csv fields (separator=)
 };
 
 /// The model's vertical datum ("NAP"), empty where it has none.
@@ -77,8 +78,9 @@ void write_plain_logs(FILE *out, const LogSource &source, const std::vector<Poin
 /// is none (nan, +-inf), labels made valid UTF-8 and escaped.
 void write_json_logs(FILE *out, const LogSource &source, const std::vector<PointLog> &logs);
 /// A csv row per layer (gaps left out), one row for a point outside or an
-/// empty column; a header row first. RFC 4180: labels printable and
-/// quoted where they hold a comma or a quote; an empty field for a number
+/// empty column; a header row first. RFC 4180: fields parted by
+/// `separator` (a comma unless separator= says otherwise), labels printable and
+/// quoted where they hold the separator or a quote; an empty field for a number
 /// that is none (nan, +-inf). The depths and the heights' unit and datum
 /// follow thickness. With voxel_rows, the column "kind" (layer or voxel)
 /// follows and, with channels, "level" and one column per channel, empty

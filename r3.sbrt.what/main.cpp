@@ -84,6 +84,7 @@ void run(const WhatRequest &request)
     LogSource source{model, {}};
     source.elevation_unit = sbrt_grass::location_length_unit();
     source.voxel_rows = request.voxels;
+    source.separator = request.separator;
     if (channels)
         source.channels = channels->infos();
     std::vector<PointLog> logs(points.size());

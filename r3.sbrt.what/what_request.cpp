@@ -7,6 +7,7 @@
  ****************************************************************************/
 #include "what_request.hpp"
 #include "module_options.hpp"
+#include "output_format.hpp"
 
 #include <cstdlib>
 #include <cstring>
@@ -32,17 +33,15 @@ WhatOptions define_what_options()
     o.where = G_define_standard_option(G_OPT_DB_WHERE);
     o.where->guisection = _("Points");
 
-    o.format = G_define_option();
-    o.format->key = "format";
-    o.format->type = TYPE_STRING;
-    o.format->required = YES;
-    o.format->options = "plain,json,csv";
-    o.format->answer = const_cast<char *>("plain");
-    o.format->label = _("Output format");
+    o.format = sbrt_grass::define_format_option({sbrt_grass::OutputFormat::plain,
+                                                 sbrt_grass::OutputFormat::json,
+                                                 sbrt_grass::OutputFormat::csv});
     o.format->descriptions = _("plain;A log per point, top to bottom (readable);"
                                "json;A list of points, each with its intervals;"
-                               "csv;One row per interval (comma separated, with a header)");
+                               "csv;One row per interval (with a header)");
     o.format->guisection = _("Output");
+    o.separator = sbrt_grass::define_separator_option();
+    o.separator->guisection = _("Output");
     o.output = G_define_standard_option(G_OPT_F_OUTPUT);
     o.output->required = NO;
     o.output->description = _("Name for output file (if omitted or \"-\" output to stdout)");
@@ -72,10 +71,8 @@ WhatRequest read_what_request(const WhatOptions &o)
     r.points = o.points->answer ? o.points->answer : "";
     r.layer = o.layer->answer ? o.layer->answer : "1";
     r.where = o.where->answer ? o.where->answer : "";
-    const std::string format = o.format->answer;
-    r.format = format == "json" ? LogFormat::json
-               : format == "csv" ? LogFormat::csv
-                                 : LogFormat::plain;
+    r.format = sbrt_grass::read_output_format(o.format);
+    r.separator = sbrt_grass::read_csv_separator(o.separator, r.format);
     r.output = o.output->answer ? o.output->answer : "";
     r.voxels = o.voxels->answer;
     return r;

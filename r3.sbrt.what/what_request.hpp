@@ -10,15 +10,16 @@
 #include <vector>
 
 #include "grass.hpp"
+#include "output_format.hpp"
 
 /// \brief The options, as G_define_option made them.
 struct WhatOptions {
-    Option *input, *coordinates, *points, *layer, *where, *format, *output;
+    Option *input, *coordinates, *points, *layer, *where, *format, *separator, *output;
     Flag *voxels; ///< -v: the property channels voxel by voxel
 };
 
-/// \brief How the logs are written.
-enum class LogFormat { plain, json, csv };
+/// \brief How the logs are written: plain, json or csv.
+using LogFormat = sbrt_grass::OutputFormat;
 
 /// \brief A point to query: map coordinates, and its category where it
 /// comes from points= (-1 otherwise).
@@ -34,6 +35,7 @@ struct WhatRequest {
     std::string points;                  ///< a vector map, or empty
     std::string layer, where;
     LogFormat format = LogFormat::plain;
+    char separator = ','; ///< of csv
     std::string output; ///< a file; empty or "-": standard output
     /// -v: the voxel rows of the property channels in plain and csv (json
     /// lists them under their own key whatever -v says)
