@@ -1,110 +1,193 @@
 #!/usr/bin/env bash
 ############################################################################
 # MODULE:    testsuite/benchmark/cluster_benchmark.sh (r3.sbrt addon)
-# PURPOSE:   The speed-up of the manual's orbit recipe on a one-node Slurm
-#            cluster (tools/slurm_cluster.sh; issue 33's target: >= 1.8x
-#            from 1 to 2 CPUs): a 24-frame orbit of model B at 800 x 600
-#            as a job array of 4 tasks (6 frames each, one CPU a task, each
-#            in a GRASS session and mapset of its own) on a cluster of 1 CPU
-#            and of 2 CPUs, beside the same orbit in one process on 1 and on
-#            2 threads; wall-clock times of one run each, as root (the
-#            job array's from its first task's start to its last task's
-#            end), and the tasks' own times summed, which leave out Slurm's
-#            waits between tasks; and what this machine gives two
-#            independent processes: the orbit on one thread alone, then two
-#            such processes at once (each its own mapset), and the same for
-#            GRASS sessions that run nothing (the start-up every task pays).
-#            Checks that the frames equal the one-process frames; never
-#            fails on time.
-# USAGE:     make && testsuite/benchmark/cluster_benchmark.sh [MODEL] (B)
+# PURPOSE:   The speed-up of the manual's poster recipe on a one-node Slurm
+#            cluster (tools/slurm_cluster.sh; issue 52's target: >= 1.8x
+#            from 1 to 2 CPUs on render-bound tasks): a 4224 x 3536 poster
+#            of model C cut into TILES tiles, rendered as a Slurm job array
+#            (a tile a task, one CPU a task: --cpus-per-task=1 and
+#            nprocs=$SLURM_CPUS_PER_TASK, each task in a GRASS session and
+#            mapset of its own) on a node of 1 CPU, then of 2 CPUs (the
+#            node's CPUs= in slurm.conf: Slurm runs as many tasks at once
+#            as the node has CPUs); beside the whole poster in one process
+#            on 1 and on 2 threads (what the machine itself gives).
+#            Prints, all from one run: each task's render seconds (the
+#            render's own "Streamed: ... ms in all"), its process and its
+#            GRASS session; Slurm's launch overhead (the CPU time a task
+#            costs beyond its own script); the wall times and the 1 -> 2
+#            CPU ratios. Checks that the two job arrays' mosaics and both
+#            whole-poster renders are the same pixels (exit 1 if not);
+#            never fails on time. Stops the cluster it started.
+# USAGE:     make && testsuite/benchmark/cluster_benchmark.sh [MODEL] (C)
+#            MODEL: T S A B C (tools/bench_model.sh; C, 800 x 1000 x 800
+#            voxels, takes ~10 min to make once, kept in SBRT_BENCH_DATA)
+#            SIZE=4224,3536 the poster; TILES=4x4 its tiles, rows x
+#            columns (tiles of 884 x 1056 pixels); TIMEOUT=3600 seconds
+#            at most for each render and each job array. Small settings
+#            check the script itself: SIZE=640,480 TILES=2x2 ... S
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../tools/grass_env.sh"
-model=${1:-B}
+model=${1:-C}
+size=${SIZE:-4224,3536}
+grid=${TILES:-4x4}
+limit=${TIMEOUT:-3600}
 data=${SBRT_BENCH_DATA:-/tmp/r3sbrt_bench}
+IFS=, read -r width height <<<"$size"
+IFS=x read -r tile_rows tile_cols <<<"$grid"
+tasks=$((tile_rows * tile_cols))
+cluster=$SBRT_ROOT/tools/slurm_cluster.sh
+say() { echo "cluster geo_$model: $*"; }
+say "command: SIZE=$size TILES=$grid TIMEOUT=$limit SBRT_BENCH_DATA=$data $0 $model"
+say "load before: $(uptime)"
+
 sbrt_location "$data"
-in_grass PERMANENT bash -c ". '$SBRT_ROOT/tools/bench_model.sh' && bench_model $model '$SBRT_ROOT/tools'" >/dev/null 2>&1
+timeout "$limit" grass "$data/loc/PERMANENT" --exec bash -c \
+    ". '$SBRT_ROOT/tools/bench_model.sh' && bench_model $model '$SBRT_ROOT/tools'" >/dev/null 2>&1 ||
+    { echo "cluster: model $model could not be made (tools/bench_model.sh)" >&2; exit 1; }
+# a short path: Slurm's sockets lie in it (108 bytes at most)
 work=$(mktemp -d /tmp/r3sbrt_cluster.XXXXXX)
-trap '"$SBRT_ROOT/tools/slurm_cluster.sh" stop "$work/slurm" >/dev/null 2>&1 || true
-      rm -rf "$work" "$data"/loc/cjob*' EXIT
-frames=24 tasks=4 size=800,600
-view="input=geo_$model@PERMANENT frames=$frames size=$size backend=cpu"
-seconds() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }'; }
+trap '"$cluster" stop "$work/slurm" >/dev/null 2>&1 || true
+      rm -rf "$work" "$data"/loc/cjob* "$data"/loc/cluster_bench' EXIT
+trap 'exit 130' INT TERM
+view="input=geo_$model@PERMANENT size=$size backend=cpu"
 
-# one process, 1 and 2 threads
-declare -A one
-for threads in 1 2; do
-    mkdir -p "$work/one$threads"
-    start=$(date +%s.%N)
-    in_grass cluster_bench r3.sbrt.render --q $view nprocs="$threads" \
-        png="$work/one$threads/orbit_%04d.png" >/dev/null 2>&1
-    one[$threads]=$(seconds "$start" "$(date +%s.%N)")
-done
-
-# the machine's own limit: one single-threaded orbit alone, then two at once
-mkdir -p "$work/pair_a" "$work/pair_b"
-start=$(date +%s.%N)
-in_grass cluster_bench_a r3.sbrt.render --q $view nprocs=1 png="$work/pair_a/orbit_%04d.png" >/dev/null 2>&1 &
-in_grass cluster_bench_b r3.sbrt.render --q $view nprocs=1 png="$work/pair_b/orbit_%04d.png" >/dev/null 2>&1 &
-wait
-pair=$(seconds "$start" "$(date +%s.%N)")
-
-# what the tasks' GRASS start-up gets from two CPUs: a session that runs
-# nothing (the grass launcher: Python and a dozen processes), 10 times
-# alone, then 10 times in each of two mapsets at once
-sessions() { for _ in $(seq 10); do grass "$data/loc/$1" --exec true >/dev/null 2>&1; done; }
-start=$(date +%s.%N)
-sessions cluster_bench_a
-middle=$(date +%s.%N)
-sessions cluster_bench_a &
-sessions cluster_bench_b &
-wait
-startup_one=$(seconds "$start" "$middle")
-startup_pair=$(seconds "$middle" "$(date +%s.%N)")
-rm -rf "$data"/loc/cluster_bench_a "$data"/loc/cluster_bench_b
-
-# the job array on a cluster of 1 CPU, then of 2
-cat >"$work/orbit.sh" <<EOS
+# one render inside a GRASS session: render.sh PNG THREADS [TASK]; with a
+# task, only that tile (row by row, as the manual's recipe numbers them);
+# prints when the render started and ended, and its own time
+cat >"$work/render.sh" <<EOS
+#!/bin/bash
+png=\$1 threads=\$2 task=\${3:-}
+tile=; plain=-n
+if [ -n "\$task" ]; then
+    r=\$((task / $tile_cols)) c=\$((task % $tile_cols))
+    y=\$((r * $height / $tile_rows)) x=\$((c * $width / $tile_cols))
+    tile=tile=\$y,\$x,\$(((r + 1) * $height / $tile_rows - y)),\$(((c + 1) * $width / $tile_cols - x))
+    plain=
+fi
+echo "render_start \$(date +%s.%N)"
+timeout -k 30 $limit r3.sbrt.render --verbose $view \$tile \$plain nprocs=\$threads png=\$png \\
+    >"\$png.log" 2>&1 || { tail -5 "\$png.log"; exit 1; }
+echo "render_end \$(date +%s.%N)"
+# "Streamed: ... 1234.5 ms in all": the tracing, shading and writing
+sed -n 's/.*; \([0-9.]*\) ms in all.*/render_ms \1/p' "\$png.log"
+EOS
+# a task of the job array: the manual's recipe, with times
+cat >"$work/task.sh" <<EOS
 #!/bin/bash
 #SBATCH --cpus-per-task=1
 echo "start \$(date +%s.%N)"
-first=\$((SLURM_ARRAY_TASK_ID * $((frames / tasks)) + 1))
 mapset=$data/loc/cjob\$SLURM_ARRAY_TASK_ID
 new=; [ -d \$mapset ] || new=-c
-grass \$new \$mapset --exec r3.sbrt.render $view nprocs=\$SLURM_CPUS_PER_TASK \\
-    range=\$first-\$((first + $((frames / tasks - 1)))) png=\$1/orbit_%04d.png
+grass \$new \$mapset --exec $work/render.sh \$1/tile_\$SLURM_ARRAY_TASK_ID.png \\
+    \$SLURM_CPUS_PER_TASK \$SLURM_ARRAY_TASK_ID || exit 1
 echo "end \$(date +%s.%N)"
 EOS
-declare -A array busy
+chmod +x "$work/render.sh" "$work/task.sh"
+seconds() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }'; }
+ratio() { awk -v a="$1" -v b="$2" -v k="${3:-1}" 'BEGIN { printf "%.2f", k * a / b }'; }
+
+# the whole poster in one process, on 1 and 2 threads
+declare -A whole whole_render
+for threads in 1 2; do
+    start=$(date +%s.%N)
+    in_grass cluster_bench "$work/render.sh" "$work/whole$threads.png" "$threads" \
+        >"$work/whole$threads.out" 2>&1 ||
+        { cat "$work/whole$threads.out" >&2; echo "cluster: the whole poster failed" >&2; exit 1; }
+    whole[$threads]=$(seconds "$start" "$(date +%s.%N)")
+    whole_render[$threads]=$(awk '$1 == "render_start" { s = $2 } $1 == "render_end" { e = $2 }
+                                  END { printf "%.2f", e - s }' "$work/whole$threads.out")
+done
+
+# the job array on a node of 1 CPU, then of 2
+declare -A wall first_last submitted
 for cpus in 1 2; do
-    "$SBRT_ROOT/tools/slurm_cluster.sh" start "$work/slurm" "$cpus" >/dev/null
+    "$cluster" start "$work/slurm" "$cpus" >/dev/null
     mkdir -p "$work/array$cpus"
     rm -rf "$data"/loc/cjob*
-    rm -f "$work"/task_*.out
+    submitted[$cpus]=$(date +%s.%N)
     job=$(SLURM_CONF=$work/slurm/slurm.conf sbatch --parsable --array=0-$((tasks - 1)) \
         --export=PATH,HOME,GRASS_ADDON_BASE,GRASS_SKIP_MAPSET_OWNER_CHECK \
-        --output="$work/task_%a.out" "$work/orbit.sh" "$work/array$cpus")
-    "$SBRT_ROOT/tools/slurm_cluster.sh" wait "$work/slurm" "${job%%;*}"
-    array[$cpus]=$(cat "$work"/task_*.out | awk '$1 == "start" && (!s || $2 < s) { s = $2 }
-                                                 $1 == "end" && $2 > e { e = $2 }
-                                                 END { printf "%.2f", e - s }')
-    # each task's own time, start to end, summed
-    busy[$cpus]=$(cat "$work"/task_*.out | awk '$1 == "start" { s += $2 } $1 == "end" { e += $2 }
-                                                END { printf "%.2f", e - s }')
-    "$SBRT_ROOT/tools/slurm_cluster.sh" stop "$work/slurm"
-    for k in $(seq -f %04g 1 $frames); do
-        cmp -s "$work/array$cpus/orbit_$k.png" "$work/one1/orbit_$k.png" ||
-            echo "cluster: WARNING: frame $k of the $cpus-CPU job array differs from one process"
-    done
+        --output="$work/array$cpus/task_%a.out" "$work/task.sh" "$work/array$cpus")
+    SLURM_CONF=$work/slurm/slurm.conf timeout "$limit" "$cluster" wait "$work/slurm" "${job%%;*}" || {
+        tail -n 5 "$work/array$cpus"/task_*.out >&2
+        echo "cluster: the job array on $cpus CPUs failed or took over $limit s" >&2
+        exit 1
+    }
+    "$cluster" stop "$work/slurm"
+    # a line a task: start end render_start render_end render_ms
+    for t in $(seq 0 $((tasks - 1))); do
+        awk '{ v[$1] = $2 } END { print v["start"], v["end"], v["render_start"], v["render_end"], v["render_ms"] }' \
+            "$work/array$cpus/task_$t.out"
+    done >"$work/times$cpus"
+    wall[$cpus]=$(awk -v s="${submitted[$cpus]}" '$2 > e { e = $2 } END { printf "%.2f", e - s }' "$work/times$cpus")
+    first_last[$cpus]=$(awk '!s || $1 < s { s = $1 } $2 > e { e = $2 } END { printf "%.2f", e - s }' "$work/times$cpus")
 done
-ratio() { awk -v a="$1" -v b="$2" -v k="${3:-1}" 'BEGIN { printf "%.2f", k * a / b }'; }
-echo "cluster geo_$model: orbit of $frames frames at $size, $(nproc) cores here"
-echo "cluster geo_$model: one process, 1 thread: ${one[1]} s; 2 threads: ${one[2]} s ($(ratio "${one[1]}" "${one[2]}")x)"
-echo "cluster geo_$model: two independent 1-thread processes at once: ${pair} s for twice the frames: $(ratio "${one[1]}" "$pair" 2)x the throughput of one"
-echo "cluster geo_$model: GRASS start-up alone (10 sessions running nothing): ${startup_one} s; two at once: ${startup_pair} s for twice the sessions: $(ratio "$startup_one" "$startup_pair" 2)x"
-echo "cluster geo_$model: job array of $tasks tasks, 1-CPU cluster: ${array[1]} s; 2-CPU cluster: ${array[2]} s"
-echo "cluster geo_$model: speed-up from 1 to 2 CPUs: $(ratio "${array[1]}" "${array[2]}")x (target >= 1.8)"
-echo "cluster geo_$model: the tasks' own time (start to end), summed: 1-CPU cluster ${busy[1]} s; 2-CPU cluster ${busy[2]} s: two CPUs give the tasks $(ratio "${busy[1]}" "${busy[2]}" 2)x; Slurm's waits between tasks: $(awk -v w="${array[1]}" -v b="${busy[1]}" 'BEGIN { printf "%.2f", w - b }') s and $(awk -v w="${array[2]}" -v b="${busy[2]}" 'BEGIN { printf "%.2f", w - b / 2 }') s"
-echo "cluster geo_$model: job array on 2 CPUs / one process on 2 threads: $(ratio "${array[2]}" "${one[2]}")"
+
+# the same poster every time: the tiles' mosaics and the whole renders
+check=$(python3 - "$width" "$height" "$tile_rows" "$tile_cols" "$work" <<'EOF'
+import sys
+from PIL import Image
+
+width, height, rows, cols = map(int, sys.argv[1:5])
+work = sys.argv[5]
+
+def pixels(image):
+    return image.size, image.convert("RGBA").tobytes()
+
+def mosaic(folder):
+    whole = Image.new("RGBA", (width, height))
+    for t in range(rows * cols):
+        r, c = divmod(t, cols)
+        with Image.open(f"{folder}/tile_{t}.png") as tile:
+            whole.paste(tile.convert("RGBA"), (c * width // cols, r * height // rows))
+    return pixels(whole)
+
+want = mosaic(f"{work}/array1")
+differ = []
+if mosaic(f"{work}/array2") != want:
+    differ.append("the 2-CPU job array's mosaic")
+for threads in (1, 2):
+    with Image.open(f"{work}/whole{threads}.png") as image:
+        if pixels(image) != want:
+            differ.append(f"the whole poster on {threads} thread(s)")
+print("; ".join(differ) if differ else "same")
+EOF
+)
+
+# per task: render (its own time), process, GRASS session, script
+stats() { # FILE CPUS WALL
+    awk -v cpus="$2" -v wall="$3" '
+        { ms = $5 / 1000; proc = $4 - $3; task = $2 - $1
+          render += ms; procs += proc; tasks += task; n++
+          if (!lo || ms < lo) lo = ms; if (ms > hi) hi = ms }
+        END { printf "%.2f %.2f %.2f %.2f %.2f %.2f %.2f\n", lo, render / n, hi, procs / n,
+                     (tasks - procs) / n, tasks / n, (cpus * wall - tasks) / n }' "$1"
+}
+read -r lo1 mean1 hi1 proc1 session1 task1 lost1 < <(stats "$work/times1" 1 "${wall[1]}")
+read -r lo2 mean2 hi2 proc2 session2 task2 lost2 < <(stats "$work/times2" 2 "${wall[2]}")
+# on one CPU the tasks run one after another: Slurm's launch is the gap
+# from sbatch, or from a task's end, to the next task's start
+gaps=$(sort -n -k1 "$work/times1" | awk '
+    NR > 1 { g = $1 - e; sum += g; if (g > hi) hi = g; n++ } { e = $2 }
+    END { printf "%.2f %.2f", n ? sum / n : 0, hi }')
+read -r gap_mean gap_hi <<<"$gaps"
+first_wait() { awk -v s="${submitted[$1]}" 'BEGIN { m = 1e18 } $1 < m { m = $1 } END { printf "%.2f", m - s }' "$work/times$1"; }
+
+say "poster $width x $height in $tasks tiles ($grid) of about $((width / tile_cols)) x $((height / tile_rows)) pixels, $(nproc) cores here"
+say "one process, whole poster: 1 thread ${whole[1]} s (render ${whole_render[1]} s); 2 threads ${whole[2]} s (render ${whole_render[2]} s): $(ratio "${whole[1]}" "${whole[2]}")x"
+say "per task, 1-CPU node: render $lo1 / $mean1 / $hi1 s (least / mean / most), the render's process $proc1 s, its GRASS session $session1 s more: $task1 s a task's script"
+say "per task, 2-CPU node: render $lo2 / $mean2 / $hi2 s, process $proc2 s, GRASS session $session2 s more: $task2 s (two at once: $(ratio "$mean1" "$mean2" 2)x the throughput of one)"
+say "Slurm's launch overhead: 1-CPU node: $gap_mean s mean, $gap_hi s most from a task's end to the next task's start; CPU time a task costs beyond its script: $lost1 s (1 CPU), $lost2 s (2 CPUs, the last tasks' imbalance included); sbatch to the first task's start: $(first_wait 1) s and $(first_wait 2) s"
+say "job array (sbatch to the last task's end): 1-CPU node ${wall[1]} s; 2-CPU node ${wall[2]} s (first start to last end: ${first_last[1]} s and ${first_last[2]} s)"
+say "speed-up from 1 to 2 CPUs: job array $(ratio "${wall[1]}" "${wall[2]}")x (target >= 1.8); one process $(ratio "${whole[1]}" "${whole[2]}")x"
+say "job array on 2 CPUs / one process on 2 threads: $(ratio "${wall[2]}" "${whole[2]}")"
+say "load after: $(uptime)"
+if [ "$check" = same ]; then
+    say "check: both job arrays' mosaics and both whole-poster renders are the same $width x $height pixels"
+else
+    say "ERROR: differs from the 1-CPU job array's mosaic: $check"
+    exit 1
+fi
