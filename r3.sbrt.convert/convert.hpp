@@ -12,6 +12,7 @@
 #include "builders/classifier.hpp"
 #include "format/format.hpp"
 #include "model/model.hpp"
+#include "output_format.hpp"
 
 /// Frame of the current 3D region.
 sbrt::Frame current_frame();
@@ -77,11 +78,20 @@ bool same_grid(const sbrt::Frame &a, const sbrt::Frame &b);
 void warn_if_other_grid(const char *name, const sbrt::Frame &model,
                         const sbrt::Frame &region);
 
-/// Prints the metadata and Table 1 figures (plain or key=value).
-/// The papers' Table 1 figures in memory and the stacks file on disk.
-/// With `channels`, the property channels after them.
+/// Prints the metadata and Table 1 figures (plain, shell: key=value, or
+/// json): the papers' Table 1 figures in memory and the stacks file on
+/// disk. With `channels`, the property channels after them.
 void print_report(const char *name, const sbrt::Model &model,
-                  const sbrt::StacksFileInfo &file, bool shell,
+                  const sbrt::StacksFileInfo &file, sbrt_grass::OutputFormat format,
                   const sbrt::PropertyChannels *channels = nullptr);
+/// print_report's json: -g's keys and the classes and channels.
+void print_report_json(const char *name, const sbrt::Model &model,
+                       const sbrt::StacksFileInfo &file,
+                       const sbrt::PropertyChannels *channels);
+/// The variables of a file as a json list (print_file_variables' fields).
+void print_file_variables_json(const char *file);
+/// -l in json: the SBRTs of the search path, each with name, mapset and
+/// fullname as g.list writes them.
+void print_sbrt_list_json();
 
 #endif

@@ -23,7 +23,7 @@ namespace {
 
 struct Options {
     Option *input, *sbrt, *file, *variable, *output, *horizons, *materials,
-        *bottom, *rules, *memory, *preset, *properties, *property;
+        *bottom, *rules, *memory, *preset, *properties, *property, *format;
     Flag *reverse, *print, *shell, *list, *override_crs, *set_region, *all_properties;
 };
 
@@ -173,6 +173,12 @@ Options define_options()
     o.shell->key = 'g';
     o.shell->description = _("Print metadata in shell script style");
     o.shell->guisection = _("Print");
+    o.format = sbrt_grass::define_format_option({sbrt_grass::OutputFormat::plain,
+                                                 sbrt_grass::OutputFormat::shell,
+                                                 sbrt_grass::OutputFormat::json});
+    o.format->label = _("Output format of -p, -g and -l");
+    o.format->description = _("shell: as -g; shell or json without -p: print as -p does");
+    o.format->guisection = _("Print");
     o.list = G_define_flag();
     o.list->key = 'l';
     o.list->description = _("List the SBRTs in the search path and exit");
@@ -271,12 +277,20 @@ std::vector<int> integers_of(const Option *opt)
 
 void run(const Options &o)
 {
+    // -g is format=shell; format=shell or json asks for the report as -p does
+    const sbrt_grass::OutputFormat format = sbrt_grass::read_output_format(o.format, o.shell);
     if (o.list->answer) {
-        for (const std::string &name : sbrt_grass::list_sbrts())
-            fprintf(stdout, "%s\n", name.c_str());
+        if (format == sbrt_grass::OutputFormat::json)
+            print_sbrt_list_json();
+        else if (format == sbrt_grass::OutputFormat::shell)
+            G_fatal_error(_("-l lists names, one a line (format=plain) or as JSON "
+                            "(format=json): it has no shell style"));
+        else
+            for (const std::string &name : sbrt_grass::list_sbrts())
+                fprintf(stdout, "%s\n", name.c_str());
         return;
     }
-    const bool report = o.print->answer || o.shell->answer;
+    const bool report = o.print->answer || format != sbrt_grass::OutputFormat::plain;
     const char *input = o.input->answer;
     const char *output = o.output->answer;
     const bool overwrite = G_check_overwrite(0, nullptr);
@@ -307,7 +321,10 @@ void run(const Options &o)
         if (!report)
             G_fatal_error(_("Nothing to do: give output= (and variable=) to "
                             "import file=, or -p to list its variables"));
-        print_file_variables(o.file->answer, o.shell->answer);
+        if (format == sbrt_grass::OutputFormat::json)
+            print_file_variables_json(o.file->answer);
+        else
+            print_file_variables(o.file->answer, format == sbrt_grass::OutputFormat::shell);
         return;
     }
     if (!output) {
@@ -320,8 +337,7 @@ void run(const Options &o)
             set_region_to(sbrt, model.frame());
         if (report)
             print_report(sbrt, model,
-                         sbrt::stacks_file_info(sbrt_grass::find_sbrt(sbrt)),
-                         o.shell->answer,
+                         sbrt::stacks_file_info(sbrt_grass::find_sbrt(sbrt)), format,
                          sbrt_grass::read_channels_map(sbrt, model).get());
         return;
     }
@@ -384,7 +400,7 @@ void run(const Options &o)
                             "step: r3.sbrt.convert -s sbrt=%s"),
                           output);
     if (report)
-        print_report(output, model, sbrt::stacks_file_info(path), o.shell->answer,
+        print_report(output, model, sbrt::stacks_file_info(path), format,
                      sbrt_grass::read_channels_map(output, model).get());
 }
 

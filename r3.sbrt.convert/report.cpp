@@ -74,9 +74,14 @@ void print_channels(const sbrt::PropertyChannels &channels, bool shell)
 } // namespace
 
 void print_report(const char *name, const sbrt::Model &model,
-                  const sbrt::StacksFileInfo &file, bool shell,
+                  const sbrt::StacksFileInfo &file, sbrt_grass::OutputFormat format,
                   const sbrt::PropertyChannels *channels)
 {
+    if (format == sbrt_grass::OutputFormat::json) {
+        print_report_json(name, model, file, channels);
+        return;
+    }
+    const bool shell = format == sbrt_grass::OutputFormat::shell;
     const sbrt::Frame &f = model.frame();
     const sbrt::Stats s = model.stats();
     const double mib = 1024.0 * 1024.0;
