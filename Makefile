@@ -1,7 +1,7 @@
 # r3.sbrt addon: builds the static libraries lib/sbrt, lib/grass_sbrt and
 # lib/sbrt_gl, then the modules, into ./dist. Not Dir.make: its "pre" target writes into the
 # system GISBASE on Debian and its subdirs loop swallows failures
-# (GRASS-NOTES.md 1.7).
+# (docs/BUILD-NOTES.md 5).
 include lib/grass_topdir.make
 
 # lib/sbrt and lib/sbrt_gl: GRASS-free, one rule for every consumer

@@ -1,5 +1,5 @@
 # Shared rules of the r3.sbrt modules, included by each module Makefile after it names its program.
-# Links the static libraries lib/grass_sbrt and lib/sbrt (GRASS-NOTES 1.3),
+# Links the static libraries lib/grass_sbrt and lib/sbrt (docs/BUILD-NOTES.md 2),
 # lib/sbrt_gl with EGL (and OSMesa) when the module sets SBRT_USES_GL, and
 # GRASS's vector and database libraries when it sets SBRT_USES_VECTOR, and
 # what it names in SBRT_EXTRA_LIBES.

@@ -5,7 +5,7 @@
 SBRT_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 export GRASS_ADDON_BASE=$SBRT_ROOT/dist
 export GRASS_SKIP_MAPSET_OWNER_CHECK=1
-# GRASS-NOTES 1.7/11: use the system python, whatever pyenv puts first
+# docs/BUILD-NOTES.md 7: use the system python, whatever pyenv puts first
 export PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin
 sbrt_location() {
     SBRT_GISDBASE=$1

@@ -75,8 +75,8 @@ r3.colors --quiet map="$name" rules=- <<'COLORS'
 16 20:20:20
 COLORS
 
-# category labels: 8.2's r3.support raster= cannot copy them (GRASS-NOTES
-# 3.2), so the 3D raster's cats file is written in GRASS's own cats format
+# category labels: 8.2's r3.support raster= cannot copy them (docs/BUILD-NOTES.md
+# 8), so the 3D raster's cats file is written in GRASS's own cats format
 mapset=$(g.gisenv get=MAPSET)
 dir="$(g.gisenv get=GISDBASE)/$(g.gisenv get=LOCATION_NAME)/$mapset/grid3/$name"
 cat >"$dir/cats" <<'CATS'
