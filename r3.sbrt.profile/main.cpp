@@ -14,11 +14,14 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "line_input.hpp"
 #include "model/material_table.hpp"
 #include "module_errors.hpp"
 #include "profile_figure.hpp"
 #include "profile_map.hpp"
+#include "output_format.hpp"
 #include "profile_request.hpp"
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
@@ -26,6 +29,8 @@
 #include "util/safe_text.hpp"
 
 namespace {
+
+using Json = nlohmann::ordered_json;
 
 AxisUnits axis_units(const std::string &datum)
 {
@@ -143,6 +148,62 @@ void print_shell(const sbrt::ProfileLine &line, const std::optional<ProfileGrid>
     // (a failed write fails the module in run_reporting_errors)
 }
 
+/// `values` as a json array, -0 as 0 (as joined writes them).
+Json json_numbers(const std::vector<double> &values)
+{
+    Json list = Json::array();
+    for (double v : values)
+        list.push_back(v + 0.0);
+    return list;
+}
+
+/// format=json: print_shell's keys, numbers as numbers and lists as
+/// arrays, through nlohmann::json (the titles and the datum are valid UTF-8
+/// whatever the model's file holds).
+void print_json(const sbrt::ProfileLine &line, const std::optional<ProfileGrid> &grid,
+                const FigureAxes &axes, const AxisUnits &units, const FigureLayout &layout)
+{
+    Json p;
+    p["length"] = line.length();
+    p["vertex_distances"] = json_numbers(line.vertex_distances());
+    if (grid) {
+        const struct Cell_head w = profile_window(*grid, line.length());
+        p["map_west"] = w.west;
+        p["map_east"] = w.east;
+        p["map_south"] = w.south;
+        p["map_north"] = w.north;
+        p["map_rows"] = w.rows;
+        p["map_cols"] = w.cols;
+        p["map_ewres"] = w.ew_res;
+        p["map_nsres"] = w.ns_res;
+    }
+    p["zexag"] = axes.zexag;
+    p["figure_width"] = layout.width;
+    p["figure_height"] = layout.height;
+    p["plot_left"] = layout.plot_left;
+    p["plot_top"] = layout.plot_top;
+    p["plot_width"] = axes.plot_width;
+    p["plot_height"] = axes.plot_height;
+    p["plot_bottom"] = axes.extent.bottom;
+    p["plot_top_elevation"] = axes.extent.top;
+    p["elevation_ticks"] = json_numbers(axes.elevation_ticks);
+    p["distance_ticks"] = json_numbers(axes.distance_ticks);
+    Json rows = Json::array(), columns = Json::array();
+    for (double t : axes.elevation_ticks)
+        rows.push_back(int(layout.plot_top + std::round(axes.y_of(t))));
+    for (double t : axes.distance_ticks)
+        columns.push_back(int(layout.plot_left + std::round(axes.x_of(t))));
+    p["elevation_tick_rows"] = rows;
+    p["distance_tick_columns"] = columns;
+    p["distance_unit"] = axes.distance_unit;
+    p["elevation_title"] = elevation_title(units);
+    p["title"] = layout.title;
+    p["distance_title"] = layout.distance_title;
+    p["lettered_vertices"] = layout.lettered;
+    p["classes_cut"] = layout.classes_cut;
+    std::printf("%s\n", sbrt_grass::json_text(p).c_str());
+}
+
 void run(const ProfileRequest &request)
 {
     if (G_projection() == PROJECTION_LL)
@@ -181,7 +242,7 @@ void run(const ProfileRequest &request)
                     "%.6g %s thick; give zexag= to choose another)"),
                   axes.zexag, line.length(), units.length.c_str(), solid->top - solid->bottom,
                   units.length.c_str());
-    if (request.png.empty() && !request.shell)
+    if (request.png.empty() && request.print == sbrt_grass::OutputFormat::none)
         return;
     FigureContent content;
     content.title = "Profile " + line_name(line.vertices().size()) + " of " + request.input;
@@ -196,8 +257,10 @@ void run(const ProfileRequest &request)
     const sbrt::ClassProfile plot =
         sbrt::class_profile(model, line, axes.plot_width, axes.plot_height, axes.extent);
     const FigureLayout layout = draw_profile_figure(axes, plot, content, request.png);
-    if (request.shell)
+    if (request.print == sbrt_grass::OutputFormat::shell)
         print_shell(line, grid, axes, units, layout);
+    else if (request.print == sbrt_grass::OutputFormat::json)
+        print_json(line, grid, axes, units, layout);
 }
 
 } // namespace

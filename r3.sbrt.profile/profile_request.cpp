@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "module_options.hpp"
+#include "output_format.hpp"
 
 ProfileOptions define_profile_options()
 {
@@ -76,7 +77,12 @@ ProfileOptions define_profile_options()
     G_option_required(o.coordinates, o.line, NULL);
     G_option_exclusive(o.coordinates, o.line, NULL);
     G_option_requires(o.cat, o.line, NULL);
-    G_option_required(o.output, o.png, o.shell, NULL);
+    o.format = sbrt_grass::define_format_option(
+        {sbrt_grass::OutputFormat::shell, sbrt_grass::OutputFormat::json}, false);
+    o.format->label = _("Print the map's window and the figure's axes in this format");
+    o.format->description = _("shell: as -g");
+
+    G_option_required(o.output, o.png, o.shell, o.format, NULL);
     return o;
 }
 
@@ -107,6 +113,6 @@ ProfileRequest read_profile_request(const ProfileOptions &o)
     r.png = o.png->answer ? o.png->answer : "";
     r.zexag = positive_number(o.zexag);
     r.width = std::atoi(o.width->answer);
-    r.shell = o.shell->answer;
+    r.print = sbrt_grass::read_output_format(o.format, o.shell);
     return r;
 }

@@ -13,9 +13,11 @@
 #include <glm/vec2.hpp>
 
 #include "grass.hpp"
+#include "output_format.hpp"
 
 struct ProfileOptions {
-    Option *input, *coordinates, *line, *cat, *output, *resolution, *png, *zexag, *width;
+    Option *input, *coordinates, *line, *cat, *output, *resolution, *png, *zexag, *width,
+        *format;
     Flag *shell;
 };
 
@@ -30,7 +32,8 @@ struct ProfileRequest {
     std::string png;                  ///< the figure, or empty
     std::optional<double> zexag;      ///< the figure's
     int width = 1000;                 ///< the figure's plot, in pixels
-    bool shell = false;               ///< -g: the figure's and map's geometry
+    /// -g or format=: the figure's and map's geometry (shell or json), or none
+    sbrt_grass::OutputFormat print = sbrt_grass::OutputFormat::none;
 };
 
 ProfileOptions define_profile_options();
