@@ -6,7 +6,10 @@
  ****************************************************************************/
 #include <cstdio>
 
+#include <nlohmann/json.hpp>
+
 #include "manage.hpp"
+#include "output_format.hpp"
 #include "sbrt_manage.hpp"
 #include "sbrt_store.hpp"
 
@@ -42,10 +45,28 @@ std::vector<std::string> mapsets_to_list(const Option *mapset)
     return mapsets;
 }
 
-void print_sbrts(const std::vector<std::string> &mapsets, bool qualified)
+void print_sbrts(const std::vector<std::string> &mapsets, bool qualified,
+                 sbrt_grass::OutputFormat format, char separator)
 {
     const std::vector<sbrt_grass::StoredSbrt> sbrts =
         sbrt_grass::list_stored_sbrts(mapsets);
+    if (format == sbrt_grass::OutputFormat::json) {
+        nlohmann::ordered_json list = nlohmann::ordered_json::array();
+        for (const sbrt_grass::StoredSbrt &sbrt : sbrts)
+            list.push_back(
+                {{"name", sbrt.name}, {"mapset", sbrt.mapset}, {"fullname", sbrt.qualified()}});
+        fprintf(stdout, "%s\n", sbrt_grass::json_text(list).c_str());
+        return;
+    }
+    if (format == sbrt_grass::OutputFormat::csv) {
+        fputs(sbrt_grass::csv_record({"name", "mapset", "fullname"}, separator).c_str(),
+              stdout);
+        for (const sbrt_grass::StoredSbrt &sbrt : sbrts)
+            fputs(sbrt_grass::csv_record({sbrt.name, sbrt.mapset, sbrt.qualified()}, separator)
+                      .c_str(),
+                  stdout);
+        return;
+    }
     for (size_t i = 0; i < sbrts.size(); ++i) {
         // a bare name must say which SBRT it is: g.list adds the mapset to
         // a name that several of the listed mapsets hold

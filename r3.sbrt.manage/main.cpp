@@ -11,13 +11,14 @@
 
 #include "util/error.hpp"
 #include "manage.hpp"
+#include "output_format.hpp"
 #include "sbrt_choices.hpp"
 #include "module_errors.hpp"
 
 namespace {
 
 struct Options {
-    Option *copy, *rename, *remove, *mapset;
+    Option *copy, *rename, *remove, *mapset, *format, *separator;
     Flag *list, *qualified, *force;
 };
 
@@ -80,10 +81,19 @@ Options define_options()
         _("'.' for current mapset; '*' for all mapsets in location");
     o.mapset->guisection = _("List");
 
+    o.format = sbrt_grass::define_format_option({sbrt_grass::OutputFormat::plain,
+                                                 sbrt_grass::OutputFormat::json,
+                                                 sbrt_grass::OutputFormat::csv});
+    o.format->label = _("Output format of -l");
+    o.format->guisection = _("List");
+    o.separator = sbrt_grass::define_separator_option();
+    o.separator->guisection = _("List");
+
     G_option_required(o.list, o.copy, o.rename, o.remove, NULL);
     G_option_exclusive(o.list, o.copy, o.rename, o.remove, NULL);
     G_option_requires(o.qualified, o.list, NULL);
     G_option_requires(o.mapset, o.list, NULL);
+    G_option_requires(o.separator, o.list, NULL);
     G_option_requires(o.force, o.remove, NULL);
     return o;
 }
@@ -91,8 +101,11 @@ Options define_options()
 void run(const Options &o)
 {
     const bool overwrite = G_check_overwrite(0, nullptr);
-    if (o.list->answer)
-        print_sbrts(mapsets_to_list(o.mapset), o.qualified->answer);
+    if (o.list->answer) {
+        const sbrt_grass::OutputFormat format = sbrt_grass::read_output_format(o.format);
+        print_sbrts(mapsets_to_list(o.mapset), o.qualified->answer, format,
+                    sbrt_grass::read_csv_separator(o.separator, format));
+    }
     else if (o.copy->answers)
         copy_sbrts(o.copy, overwrite);
     else if (o.rename->answers)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "grass.hpp"
+#include "output_format.hpp"
 
 /// How messages name an SBRT: the description of the ELEMENT_LIST line
 /// (sbrt:sbrt:SBRT model:SBRT model(s)), so that r3.sbrt.manage and the
@@ -22,10 +23,13 @@ constexpr const char *SBRT_DESCRIPTION = "SBRT model";
 /// of a mapset of the current location.
 std::vector<std::string> mapsets_to_list(const Option *mapset);
 
-/// Prints the SBRTs of `mapsets`, one a line, sorted as g.list sorts: the
-/// name alone, with @mapset where `qualified` or where the same name is in
-/// several of the mapsets.
-void print_sbrts(const std::vector<std::string> &mapsets, bool qualified);
+/// Prints the SBRTs of `mapsets` sorted as g.list sorts. plain: one a
+/// line, the name alone, with @mapset where `qualified` or where the same
+/// name is in several of the mapsets; json: a list of objects with name,
+/// mapset and fullname (as g.list of GRASS 8.5 writes them); csv: those
+/// columns parted by `separator`, with a header.
+void print_sbrts(const std::vector<std::string> &mapsets, bool qualified,
+                 sbrt_grass::OutputFormat format, char separator);
 
 /// copy=from,to[,from,to...] into the current mapset, as g.copy.
 void copy_sbrts(const Option *copy, bool overwrite);
