@@ -116,7 +116,10 @@ double packing_value(const GDALIHasAttribute &holder, const char *key, double dr
                      bool &has, double none, const std::string &where,
                      const std::string &variable, const std::string &path)
 {
-    const sbrt::AttributeRule &rule = sbrt::attribute_rule(key);
+    // the key held by a named string: GCC 14's -Wdangling-reference takes
+    // a reference found from a temporary for one into it
+    const std::string key_name = key;
+    const sbrt::AttributeRule &rule = sbrt::attribute_rule(key_name);
     const sbrt::FileAttribute attribute = file_attribute(holder, key);
     if (attribute.present) {
         has = true;
