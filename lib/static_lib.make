@@ -34,8 +34,8 @@ compile_cxx = $(CXX) $(FLAGS) $(INCLUDES) -MMD -MP -c -o $@ $<
 
 default: $(STLIB)
 
-$(STLIB): $(OBJECTS) $(EXTRA_OBJECTS)
-	rm -f $@ && $(AR) crs $@ $^
+$(STLIB): $(OBJECTS) $(EXTRA_OBJECTS) $(OUT)/sources
+	rm -f $@ && $(AR) crs $@ $(OBJECTS) $(EXTRA_OBJECTS)
 
 # objects keep their stage folder (format/reader.o), so equal file names in
 # two folders do not collide; a file moved between folders simply builds in
@@ -54,6 +54,15 @@ $(shell mkdir -p $(OUT) && { echo '$(build_cmd)' | cmp -s - $(OUT)/flags || \
                              echo '$(build_cmd)' >$(OUT)/flags; })
 endif
 $(OUT)/flags: ;
+
+# the list of sources, rewritten when it changes (a file added or removed,
+# another STAGES=): the archive is made again, nothing is recompiled
+sources_list = $(sort $(SOURCES))
+ifeq ($(findstring n,$(firstword -$(MAKEFLAGS))),)
+$(shell mkdir -p $(OUT) && { echo '$(sources_list)' | cmp -s - $(OUT)/sources || \
+                             echo '$(sources_list)' >$(OUT)/sources; })
+endif
+$(OUT)/sources: ;
 
 -include $(OBJECTS:.o=.d) $(EXTRA_OBJECTS:.o=.d)
 
