@@ -43,5 +43,6 @@ include $(MODULE_TOPDIR)/include/Make/Module.make
 LINK = $(CXX)
 CXXFLAGS += -std=c++17 -Wall -Wextra -O2 -pthread
 LIBES := $(SBRT_STLIBS) $(LIBES) $(SBRT_GL_LIBS) -lpng $(ZSTDLIB) $(ZLIB) -pthread
+include ../lib/manual_links.make
 
 default: cmd
