@@ -123,7 +123,7 @@ int main(int argc, char *argv[])
     module->description =
         _("Renders a stack-based terrain model (SBRT) with an exact ray "
           "caster into raster maps.");
-    const RenderOptions options = define_render_options();
+    const OptionTable options = define_render_options();
     if (argc == 2 && std::strcmp(argv[1], "--serve") == 0) {
         // g.gui.sbrt's view server: requests on stdin, frames on stdout
         try {
@@ -134,10 +134,10 @@ int main(int argc, char *argv[])
         }
         exit(EXIT_SUCCESS);
     }
-    sbrt_grass::offer_sbrts_in_dialog(options.input, argc, argv);
+    sbrt_grass::offer_sbrts_in_dialog(options.option("input"), argc, argv);
     if (G_parser(argc, argv))
         exit(EXIT_FAILURE);
-    const ParsedRequest parsed = parse_render_request(options);
+    const ParsedRequest parsed = parse_render_request(options, options.parsed_words());
     if (!parsed.request)
         G_fatal_error("%s", parsed.error.c_str());
     const RenderRequest &request = *parsed.request;

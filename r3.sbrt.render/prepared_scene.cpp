@@ -30,7 +30,7 @@ PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
     }
     PreparedScene prepared{std::move(model), {}};
     sbrt::Scene &scene = prepared.scene;
-    scene.planes = clip_planes(request, camera);
+    scene.planes = request.clip_planes(camera);
     if (!request.boreholes.empty()) {
         scene.boreholes = make_boreholes(request, hidden.empty() ? prepared.model : original,
                                          prepared.model, hidden);

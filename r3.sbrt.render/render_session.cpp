@@ -25,63 +25,28 @@
 
 namespace {
 
-/// What the model as read depends on, in one string.
+/// The key of each stage: the keys of the request's parts it consumes
+/// (each part keys itself beside its options, *_part.cpp).
+
+/// The model as read: its input and colours, and where only the blocks
+/// under the region are read, the region.
 std::string model_key(const RenderRequest &request, const struct Cell_head &region)
 {
     std::ostringstream key;
-    key << std::hexfloat << request.input << '\n' << request.color << '\n' << request.rules;
-    if (sees_only_the_region(request)) // only the blocks under the region
-        key << '\n' << region.north << ' ' << region.south << ' ' << region.east << ' '
+    key << std::hexfloat << key_of<InputPart, ColorsPart>(request);
+    if (sees_only_the_region(request))
+        key << region.north << ' ' << region.south << ' ' << region.east << ' '
             << region.west;
     return key.str();
 }
 
-/// What the property view depends on (the model's key comes first).
-std::string property_key(const RenderRequest &request)
-{
-    std::ostringstream key;
-    key << std::hexfloat << request.property_title() << '\n' << request.property_color
-        << '\n' << request.fade;
-    if (request.fade_range)
-        key << ' ' << (*request.fade_range)[0] << ' ' << (*request.fade_range)[1];
-    return key.str();
-}
-
-/// What the drape depends on.
-std::string drape_key(const RenderRequest &request)
-{
-    std::ostringstream key;
-    key << std::hexfloat << request.texture_blend;
-    for (const std::string &map : request.texture)
-        key << ',' << map;
-    return key.str();
-}
-
-/// What the prepared scene depends on, the camera's share included (the
-/// planes of section= and the split direction of -m face it), exact
-/// (hexadecimal floats). Camera, light and outputs are not in it: the
-/// shading is set for every frame.
+/// The prepared scene, the camera's share included (the planes of
+/// section= and the split direction of -m face it). Camera, light and
+/// outputs are not in it: the shading is set for every frame.
 std::string scene_key(const RenderRequest &r, const sbrt::Camera &camera)
 {
-    std::ostringstream key;
-    key << std::hexfloat << r.zexag << '\n' << r.backend << ' ' << r.gpu_layout << ' '
-        << r.threads << ' ' << r.walk_every_cell << '\n';
-    for (const std::string &name : r.hide)
-        key << "hide " << name << '\n';
-    for (const auto &[name, alpha] : r.opacity)
-        key << "opacity " << name << ' ' << alpha << '\n';
-    key << "length " << r.opacity_length.value_or(-1) << '\n';
-    for (const sbrt::ClipPlane &p : clip_planes(r, camera))
-        key << "plane " << p.point.x << ' ' << p.point.y << ' ' << p.point.z << ' '
-            << p.normal.x << ' ' << p.normal.y << ' ' << p.normal.z << '\n';
-    key << "select " << r.select << '\n';
-    key << "fence " << r.fence << "\nboreholes " << r.boreholes << ' ' << r.layer << ' '
-        << r.where << ' ' << r.borehole_radius.value_or(-1) << ' ' << r.boreholes_only
-        << ' ' << r.log_top << ' ' << r.log_bottom << ' ' << r.log_class << ' '
-        << int(r.log_reference) << ' ' << r.split_logs << '\n';
-    if (r.split_logs)
-        key << camera.du().x << ' ' << camera.du().y << '\n';
-    return key.str();
+    return key_of<ExaggerationPart, BackendPart, StrataPart, SelectionPart>(r) +
+           r.SectionsPart::key(camera) + '\n' + r.BoreholesPart::key(camera);
 }
 
 } // namespace
@@ -126,8 +91,19 @@ std::vector<sbrt::Camera> RenderSession::cameras(const RenderRequest &request,
 void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &camera,
                             bool one_view)
 {
+    prepare_drape(request);
+    prepare_property(request);
+    prepare_selection(request);
+    prepare_scene_for(request, camera, one_view);
+    if (renderer_)
+        renderer_->set_shading(
+            make_shading(request, drape_.get(), property_.get(), fade_.get()));
+}
+
+void RenderSession::prepare_drape(const RenderRequest &request)
+{
     // the drape of texture=
-    const std::string drape = drape_key(request);
+    const std::string drape = key_of<DrapePart>(request);
     if (drape != drape_key_) {
         drop_scene();
         drape_.reset();
@@ -137,8 +113,12 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
                                                    request.texture_blend);
         drape_key_ = drape;
     }
+}
+
+void RenderSession::prepare_property(const RenderRequest &request)
+{
     // the property of property=, over the model as read
-    const std::string property = property_key(request);
+    const std::string property = key_of<PropertyPart>(request);
     if (property != property_key_) {
         property_.reset();
         fade_.reset();
@@ -174,8 +154,13 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
         }
         property_key_ = property;
     }
+}
+
+void RenderSession::prepare_selection(const RenderRequest &request)
+{
     // select=: only the voxels meeting the condition are solid
-    if (request.select != selection_key_) {
+    const std::string selection = key_of<SelectionPart>(request);
+    if (selection != selection_key_) {
         drop_scene();
         selected_.reset();
         selection_key_.clear();
@@ -195,19 +180,25 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
                               request.select.c_str(), (unsigned long long)s.solid_intervals,
                               (unsigned long long)model_->stats().solid_intervals);
         }
-        selection_key_ = request.select;
+        selection_key_ = selection;
     }
+}
+
+void RenderSession::prepare_scene_for(const RenderRequest &request, const sbrt::Camera &camera,
+                                      bool one_view)
+{
     const std::string key = scene_key(request, camera);
     if (!renderer_ || key != scene_key_) {
         drop_scene();
         // hidden strata, planes, boreholes, fence, translucency
         PreparedScene prepared =
             prepare_scene(request, selected_ ? *selected_ : *model_, camera);
-        if (request.backend != context_key_) {
+        const std::string context = key_of<BackendPart>(request);
+        if (context != context_key_) {
             context_.reset(); // before another on the same display
             context_key_.clear();
             context_ = choose_gl_context(request);
-            context_key_ = request.backend;
+            context_key_ = context;
         }
         // on a GPU what no ray of a single view reaches is not uploaded
         // (the CPU never reads it anyway)
@@ -230,9 +221,6 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
         }
         scene_key_ = key;
     }
-    if (renderer_)
-        renderer_->set_shading(
-            make_shading(request, drape_.get(), property_.get(), fade_.get()));
 }
 
 const sbrt::PropertyChannels *RenderSession::stored_channels(const RenderRequest &request)

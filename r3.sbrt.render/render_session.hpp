@@ -67,6 +67,12 @@ public:
     const sbrt::PropertyChannels *stored_channels(const RenderRequest &request);
 
 private:
+    // the stages of prepare(), each rebuilt where its key changed
+    void prepare_drape(const RenderRequest &request);
+    void prepare_property(const RenderRequest &request);
+    void prepare_selection(const RenderRequest &request);
+    void prepare_scene_for(const RenderRequest &request, const sbrt::Camera &camera,
+                           bool one_view);
     /// Forgets the prepared scene, its renderer and backend.
     void drop_scene();
     void build_renderer(sbrt::Model model, sbrt::Scene scene);

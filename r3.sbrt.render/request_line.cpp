@@ -20,11 +20,6 @@ const char *const OUTPUT_KEYS[] = {"output", "material", "hit_elevation", "depth
 
 } // namespace
 
-RequestLineReader::RequestLineReader(const RenderOptions &options)
-    : options_(options), answers_(options.input, options.plain_png)
-{
-}
-
 RequestLine RequestLineReader::read(const std::string &line)
 {
     if (line.find('\0') != std::string::npos)
@@ -66,10 +61,7 @@ RequestLine RequestLineReader::read(const std::string &line)
                 bad_request(_("%s= names an output of the command line; the view "
                               "server's frame is its reply"),
                             key);
-    answers_.answer(words);
-    if (!options_.input->answer)
-        bad_request(_("the request names no input="));
-    ParsedRequest parsed = parse_render_request(options_);
+    ParsedRequest parsed = parse_render_request(options_, words);
     if (!parsed.request)
         throw sbrt::Error(parsed.error);
     // one frame of a view: what makes sequences and tiles, and rules from

@@ -12,7 +12,6 @@
 
 #include <string>
 
-#include "option_answers.hpp"
 #include "render_options.hpp"
 
 /// \brief What a request line asks for.
@@ -22,11 +21,11 @@ struct RequestLine {
     int pick_row = 0, pick_col = 0; ///< with pick: the pixel of the view
 };
 
-/// \brief Reads request lines against the module's options (their answers
-/// replaced line by line).
+/// \brief Reads request lines against the module's options (nothing of
+/// GRASS's parser state is written: each line is parsed as words).
 class RequestLineReader {
 public:
-    explicit RequestLineReader(const RenderOptions &options);
+    explicit RequestLineReader(const OptionTable &options) : options_(options) {}
 
     /// The request of `line` (its end of line taken off); throws
     /// sbrt::Error naming what is wrong: a NUL byte, an empty line, an
@@ -37,8 +36,7 @@ public:
     RequestLine read(const std::string &line);
 
 private:
-    const RenderOptions &options_;
-    OptionAnswers answers_;
+    const OptionTable &options_;
 };
 
 #endif

@@ -46,16 +46,3 @@ sbrt::Translucency translucency(const RenderRequest &request,
     return sbrt::make_translucency(
         model, alphas, request.opacity_length.value_or(std::sqrt(f.ew_res() * f.ns_res())));
 }
-
-std::vector<sbrt::ClipPlane> clip_planes(const RenderRequest &request,
-                                         const sbrt::Camera &camera)
-{
-    std::vector<sbrt::ClipPlane> planes;
-    for (const auto &p : request.planes)
-        planes.push_back({{p[0], p[1], p[2]}, {p[3], p[4], p[5]}});
-    if (request.section) {
-        const auto &s = *request.section;
-        planes.push_back(sbrt::section_plane({s[0], s[1]}, {s[2], s[3]}, camera));
-    }
-    return planes;
-}

@@ -2,7 +2,7 @@
  * MODULE:    r3.sbrt.render
  * PURPOSE:   The scene's visual operations from the request: hidden
  *            and translucent classes (ids, aliases or labels) and clip planes
- *            (plane=, section=)
+ *            (SectionsPart::clip_planes)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef R3_SBRT_SCENE_SETUP_HPP
@@ -24,10 +24,5 @@ std::vector<uint32_t> hidden_materials(const RenderRequest &request,
 /// cell) and the materials' colours; empty without opacity=.
 sbrt::Translucency translucency(const RenderRequest &request,
                                 const sbrt::Model &model);
-
-/// plane= as given, and section= with its normal turned towards the
-/// camera (the side facing the camera is removed, so the cut shows).
-std::vector<sbrt::ClipPlane> clip_planes(const RenderRequest &request,
-                                         const sbrt::Camera &camera);
 
 #endif

@@ -193,7 +193,7 @@ void ViewServer::error(const std::string &message)
 
 } // namespace
 
-void serve_views(const RenderOptions &options, FILE *in, FILE *out)
+void serve_views(const OptionTable &options, FILE *in, FILE *out)
 {
     RequestLineReader reader(options);
     ViewServer server(out);

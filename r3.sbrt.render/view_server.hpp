@@ -34,6 +34,6 @@
 /// camera as azimuth=, elevation=, distance= and target= (the defaults
 /// resolved). Every line gets a reply: a frame, the classes or an error,
 /// after which the server goes on.
-void serve_views(const RenderOptions &options, FILE *in, FILE *out);
+void serve_views(const OptionTable &options, FILE *in, FILE *out);
 
 #endif

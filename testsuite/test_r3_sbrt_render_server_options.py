@@ -324,6 +324,21 @@ class TestEveryOptionThroughTheServer(TestCase):
             with self.assertRaisesRegex(AssertionError, "error ", msg=key):
                 self.server.render(BASE + [word])
 
+    def test_the_command_lines_rules_hold_in_the_server(self):
+        """What G_parser refuses of option pairs on the command line (-b
+        without boreholes=, color= with rules=, ...) the server refuses
+        too: both read a request through the same parts."""
+        for words in (["-b"], ["color=grey", "rules={rules}"], ["log_class=cls"],
+                      ["boreholes=so_bh", "log_class=cls", "log_top=dtop"],
+                      ["boreholes=so_bh", "-m"]):
+            words = self.words(BASE + words)
+            with self.assertRaisesRegex(AssertionError, "error ", msg=" ".join(words)):
+                self.server.render(words)
+            run = subprocess.run(["r3.sbrt.render"] + words + ["png=" + os.path.join(
+                self.work, "refused.png"), "--overwrite"], capture_output=True,
+                timeout=LIMIT)
+            self.assertNotEqual(run.returncode, 0, " ".join(words))
+
     def test_every_option_changes_the_frame_as_a_fresh_process(self):
         """For each case: A, B, A again from one server; B as a fresh
         process draws it, A again as A. Every problem of every option is
