@@ -3,28 +3,32 @@
 # MODULE:    testsuite/benchmark/cluster_benchmark.sh (r3.sbrt addon)
 # PURPOSE:   The speed-up of the manual's poster recipe on a one-node Slurm
 #            cluster (tools/slurm_cluster.sh; issue 52's target: >= 1.8x
-#            from 1 to 2 CPUs on render-bound tasks): a 4224 x 3536 poster
-#            of model C cut into TILES tiles, rendered as a Slurm job array
-#            (a tile a task, one CPU a task: --cpus-per-task=1 and
-#            nprocs=$SLURM_CPUS_PER_TASK, each task in a GRASS session and
-#            mapset of its own) on a node of 1 CPU, then of 2 CPUs (the
-#            node's CPUs= in slurm.conf: Slurm runs as many tasks at once
-#            as the node has CPUs); beside the whole poster in one process
-#            on 1 and on 2 threads (what the machine itself gives).
+#            from 1 to 2 CPUs on render-bound tasks, each task several
+#            seconds of rendering): a 4224 x 3536 poster of model C (a
+#            close view, eight strata translucent) cut into TILES tiles,
+#            rendered as a Slurm job array (a tile a task, one CPU a task:
+#            --cpus-per-task=1 and nprocs=$SLURM_CPUS_PER_TASK, each task in
+#            a GRASS session and mapset of its own) on a node of 1 CPU, then
+#            of 2 CPUs (the node's CPUs= in slurm.conf: Slurm runs as many
+#            tasks at once as the node has CPUs); beside the whole poster in
+#            one process on 1 and on 2 threads (what the machine gives).
 #            Prints, all from one run: each task's render seconds (the
 #            render's own "Streamed: ... ms in all"), its process and its
-#            GRASS session; Slurm's launch overhead (the CPU time a task
-#            costs beyond its own script); the wall times and the 1 -> 2
-#            CPU ratios. Checks that the two job arrays' mosaics and both
-#            whole-poster renders are the same pixels (exit 1 if not);
-#            never fails on time. Stops the cluster it started.
+#            GRASS session; Slurm's launch overhead (the gaps between tasks
+#            on one CPU; the CPU time a task costs beyond its own script);
+#            the wall times and the 1 -> 2 CPU ratios; the command and the
+#            load before and after. Checks that the two job arrays' mosaics
+#            and both whole-poster renders are the same pixels (exit 1 if
+#            not); never fails on time. Stops the cluster it started.
 # USAGE:     make && testsuite/benchmark/cluster_benchmark.sh [MODEL] (C)
 #            MODEL: T S A B C (tools/bench_model.sh; C, 800 x 1000 x 800
-#            voxels, takes ~10 min to make once, kept in SBRT_BENCH_DATA)
-#            SIZE=4224,3536 the poster; TILES=4x4 its tiles, rows x
-#            columns (tiles of 884 x 1056 pixels); TIMEOUT=3600 seconds
-#            at most for each render and each job array. Small settings
-#            check the script itself: SIZE=640,480 TILES=2x2 ... S
+#            voxels, takes 10-20 min to make once, kept in SBRT_BENCH_DATA)
+#            SIZE=4224,3536 the poster; TILES=1x8 its tiles, rows x
+#            columns (strips of 528 x 3536 pixels: each crosses the same
+#            mix of near and far model, so the tasks take about as long);
+#            VIEW= the render options of the view; TIMEOUT=3600 seconds at
+#            most for each render and each job array. Small settings check
+#            the script itself: SIZE=640,480 TILES=2x2 ... S
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
@@ -32,7 +36,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../tools/grass_env.sh"
 model=${1:-C}
 size=${SIZE:-4224,3536}
-grid=${TILES:-4x4}
+grid=${TILES:-1x8}
+# a close view that the model fills, its upper eight strata translucent:
+# each ray walks hundreds of cells (the opaque view of the whole poster
+# takes about 3 s on one thread: tiles of well under a second)
+look=${VIEW:-elevation=60 distance=2000 opacity=13:0.01,12:0.01,11:0.01,10:0.01,9:0.01,8:0.01,7:0.01,6:0.01}
 limit=${TIMEOUT:-3600}
 data=${SBRT_BENCH_DATA:-/tmp/r3sbrt_bench}
 IFS=, read -r width height <<<"$size"
@@ -40,7 +48,7 @@ IFS=x read -r tile_rows tile_cols <<<"$grid"
 tasks=$((tile_rows * tile_cols))
 cluster=$SBRT_ROOT/tools/slurm_cluster.sh
 say() { echo "cluster geo_$model: $*"; }
-say "command: SIZE=$size TILES=$grid TIMEOUT=$limit SBRT_BENCH_DATA=$data $0 $model"
+say "command: SIZE=$size TILES=$grid VIEW='$look' TIMEOUT=$limit SBRT_BENCH_DATA=$data $0 $model"
 say "load before: $(uptime)"
 
 sbrt_location "$data"
@@ -52,7 +60,7 @@ work=$(mktemp -d /tmp/r3sbrt_cluster.XXXXXX)
 trap '"$cluster" stop "$work/slurm" >/dev/null 2>&1 || true
       rm -rf "$work" "$data"/loc/cjob* "$data"/loc/cluster_bench' EXIT
 trap 'exit 130' INT TERM
-view="input=geo_$model@PERMANENT size=$size backend=cpu"
+view="input=geo_$model@PERMANENT size=$size backend=cpu $look"
 
 # one render inside a GRASS session: render.sh PNG THREADS [TASK]; with a
 # task, only that tile (row by row, as the manual's recipe numbers them);
@@ -71,8 +79,9 @@ echo "render_start \$(date +%s.%N)"
 timeout -k 30 $limit r3.sbrt.render --verbose $view \$tile \$plain nprocs=\$threads png=\$png \\
     >"\$png.log" 2>&1 || { tail -5 "\$png.log"; exit 1; }
 echo "render_end \$(date +%s.%N)"
-# "Streamed: ... 1234.5 ms in all": the tracing, shading and writing
-sed -n 's/.*; \([0-9.]*\) ms in all.*/render_ms \1/p' "\$png.log"
+# "Streamed: ... 1234.5 ms in all": the tracing, shading and writing (GRASS
+# wraps its messages: the lines joined first)
+tr -s '\n ' '  ' <"\$png.log" | sed -n 's/.*; \([0-9.]*\) ms in all.*/render_ms \1\n/p'
 EOS
 # a task of the job array: the manual's recipe, with times
 cat >"$work/task.sh" <<EOS
