@@ -246,7 +246,7 @@ class TestEveryOptionThroughTheServer(TestCase):
                     "2, 2, 8, 4, 6, 8", "3, 15, 5, 20, 16, 8"):
             cls.runModule("db.execute", sql=f"INSERT INTO so_log VALUES ({row})")
         cls.runModule("v.db.connect", map="so_bh", table="so_log", layer=1, key="cat",
-                      flags="o", quiet=True)
+                      overwrite=True, quiet=True)
         cls.work = tempfile.mkdtemp(prefix="so_options_")
         cls.files = {"rules": os.path.join(cls.work, "rules.txt"),
                      "keys": os.path.join(cls.work, "keys.txt"),

@@ -20,7 +20,7 @@ make_geology_inputs() {
         db.execute sql="INSERT INTO wells_log VALUES ($n, $((20 + 3 * n)), $((90 + 5 * n)), 12)"
         db.execute sql="INSERT INTO wells_log VALUES ($n, $((90 + 5 * n)), 400, 11)"
     done
-    v.db.connect --q -o map=wells table=wells_log layer=1 key=cat 2>/dev/null
+    v.db.connect --q --o map=wells table=wells_log layer=1 key=cat 2>/dev/null
     # a fence diagram: a zig-zag across the anticline and a line along it
     v.in.ascii --q --o -n format=standard input=- output=fence_lines <<'FENCE'
 L 4
