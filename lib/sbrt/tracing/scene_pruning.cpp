@@ -5,6 +5,10 @@
  ****************************************************************************/
 #include "tracing/scene_pruning.hpp"
 
+#include <glm/geometric.hpp>
+
+#include "scene/overlay_geometry.hpp"
+
 namespace sbrt {
 
 bool outside_view(const Camera &camera, glm::dvec3 low, glm::dvec3 high)
@@ -30,12 +34,15 @@ bool outside_view(const Camera &camera, glm::dvec3 low, glm::dvec3 high)
            (behind == 0 && (left == 8 || right == 8 || below == 8 || above == 8));
 }
 
-Pruning prune_for_view(const Tracer &tracer, const Camera &camera)
+namespace {
+
+/// Which non-empty stacks are cut away: with the tracer's pyramid, its
+/// level 0 (empty where the tracer will never draw the column).
+template <typename CutAway>
+Pruning prune(const Model &model, const CoordinateFrame &frame, const Camera &camera,
+              const CutAway &cut_away)
 {
-    const Model &model = tracer.model();
     const Frame &f = model.frame();
-    const MinMaxPyramid &pyramid = tracer.pyramid();
-    const CoordinateFrame &frame = tracer.frame();
     Pruning out;
     std::vector<uint32_t> sizes(f.cells(), 0);
     IntervalArray kept = model.intervals().visit([&](const auto *records) {
@@ -48,7 +55,7 @@ Pruning prune_for_view(const Tracer &tracer, const Camera &camera)
                 const uint32_t size = model.stack_size(cell);
                 const int y = f.rows - 1 - row;
                 Pruned *left_out = nullptr;
-                if (size && pyramid.levels() && pyramid.node(0, col, y).empty())
+                if (size && cut_away(cell, col, y))
                     left_out = &out.cut_away;
                 else if (size) {
                     const double top = model.intervals()[model.stack_end(cell) - 1].top;
@@ -76,10 +83,101 @@ Pruning prune_for_view(const Tracer &tracer, const Camera &camera)
     return out;
 }
 
+/// Cells (row-major, row 0 north) a borehole or fence panel of `scene`
+/// touches: the tracer draws them whatever the planes cut.
+std::vector<bool> overlay_cells(const Frame &f, const Scene &scene)
+{
+    std::vector<bool> touched(scene.boreholes.empty() && scene.fence.empty() ? 0 : f.cells());
+    for (const Borehole &b : scene.boreholes)
+        for (uint64_t c : cells_near_segment(f, {b.x, b.y}, {b.x, b.y}, scene.borehole_radius))
+            touched[c] = true;
+    for (const FencePanel &panel : scene.fence)
+        for (uint64_t c : cells_near_segment(f, panel.a, panel.b, 0))
+            touched[c] = true;
+    return touched;
+}
+
+/// A clip plane in the local frame: f(l) = n . l + c, removed where f > 0
+/// (Tracer::LocalPlane without its shading normal).
+struct LocalCut {
+    glm::dvec3 n;
+    double c;
+};
+
+std::vector<LocalCut> local_cuts(const CoordinateFrame &frame,
+                                 const std::vector<ClipPlane> &planes)
+{
+    const Frame &f = frame.grid();
+    const glm::dvec3 base(f.west, f.south, f.bottom);
+    std::vector<LocalCut> cuts;
+    for (const ClipPlane &plane : planes) {
+        const glm::dvec3 n(plane.normal.x, plane.normal.y, plane.normal.z / frame.zexag());
+        const double length = glm::length(n);
+        cuts.push_back({n / frame.scale() / length,
+                        glm::dot(n, base - frame.exaggerate(plane.point)) / length});
+    }
+    return cuts;
+}
+
+/// The cell's drawn z-range as the pyramid's level 0 holds it: from the
+/// top of its leading EMPTY intervals (0 without) to its top; empty where
+/// it holds no material.
+template <typename Record>
+ZRange solid_range(const Record *first, const Record *last)
+{
+    const Record *solid = first;
+    while (solid != last && solid->material == EMPTY)
+        ++solid;
+    if (solid == last)
+        return {};
+    return {solid == first ? 0.0f : float((solid - 1)->top), float((last - 1)->top)};
+}
+
+/// Whether a plane leaves the whole column x, y over `range` on its
+/// removed side (the test Tracer::build_pyramid makes).
+bool removed_by_a_plane(const std::vector<LocalCut> &cuts, int x, int y, ZRange range)
+{
+    for (const LocalCut &cut : cuts) {
+        bool removed = true;
+        for (int k = 0; k < 8 && removed; ++k) {
+            const glm::dvec3 l(x + (k & 1), y + ((k >> 1) & 1), k & 4 ? range.high : range.low);
+            removed = glm::dot(cut.n, l) + cut.c > 0;
+        }
+        if (removed)
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+Pruning prune_for_view(const Tracer &tracer, const Camera &camera)
+{
+    const MinMaxPyramid &pyramid = tracer.pyramid();
+    return prune(tracer.model(), tracer.frame(), camera, [&](uint64_t, int x, int y) {
+        return pyramid.levels() && pyramid.node(0, x, y).empty();
+    });
+}
+
 Pruning prune_for_view(const Model &model, double zexag, const Scene &scene,
                        const Camera &camera)
 {
-    return prune_for_view(Tracer(model, zexag, scene), camera);
+    // only level 0 of the tracer's pyramid matters: no tracer is built
+    // (the renderer builds the one of the pruned model)
+    const CoordinateFrame frame = CoordinateFrame::of(model, zexag);
+    const bool skipping = scene.skip_empty_space && scene.draw_model;
+    const std::vector<bool> overlays = skipping ? overlay_cells(model.frame(), scene)
+                                                : std::vector<bool>();
+    const std::vector<LocalCut> cuts = local_cuts(frame, scene.planes);
+    return model.intervals().visit([&](const auto *records) {
+        return prune(model, frame, camera, [&](uint64_t cell, int x, int y) {
+            if (!skipping || (!overlays.empty() && overlays[cell]))
+                return false;
+            const StackRange stack = model.stack(cell);
+            const ZRange range = solid_range(records + stack.begin, records + stack.end);
+            return range.empty() || removed_by_a_plane(cuts, x, y, range);
+        });
+    });
 }
 
 } // namespace sbrt

@@ -35,7 +35,10 @@ bool outside_view(const Camera &camera, glm::dvec3 low, glm::dvec3 high);
 
 /// Linear in the cells and intervals; the tracer must draw the model.
 Pruning prune_for_view(const Tracer &tracer, const Camera &camera);
-/// The same for `scene` drawn with `zexag` (its pyramid built here).
+/// The same for `scene` drawn with `zexag`, without a tracer: the columns
+/// its pyramid would hold as empty are found from the stacks, the planes
+/// and the overlays (the renderer then builds the one tracer, of the
+/// pruned model).
 Pruning prune_for_view(const Model &model, double zexag, const Scene &scene,
                        const Camera &camera);
 
