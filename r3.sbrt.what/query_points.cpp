@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "layer_table.hpp"
 #include "util/error.hpp"
 #include "vector_map.hpp"
 extern "C" {
@@ -64,31 +65,6 @@ private:
     line_cats *cats_;
 };
 
-/// The sorted categories of the rows of `layer`'s table that `where`
-/// selects.
-std::vector<int> selected_categories(Map_info &map, int layer, const std::string &where)
-{
-    field_info *info = Vect_get_field(&map, layer);
-    if (!info)
-        sbrt::fail("where=: vector map <", Vect_get_full_name(&map),
-                   "> has no attribute table in layer ", layer,
-                   " (connect one with v.db.connect, or choose layer=)");
-    dbDriver *driver =
-        db_start_driver_open_database(info->driver, Vect_subst_var(info->database, &map));
-    if (!driver)
-        sbrt::fail("Unable to open database <", info->database, "> by driver <", info->driver,
-                   ">");
-    int *cats = nullptr;
-    const int n = db_select_int(driver, info->table, info->key, where.c_str(), &cats);
-    db_close_database_shutdown_driver(driver);
-    if (n < 0)
-        sbrt::fail("where=", where, ": the query failed on table <", info->table, ">");
-    std::vector<int> selected(cats, cats + n);
-    G_free(cats);
-    std::sort(selected.begin(), selected.end());
-    return selected;
-}
-
 /// Refuses a point that is no position (coordinates=nan,nan or inf, a
 /// vector map holding nan): it would be logged as outside, with
 /// coordinates that json cannot hold.
@@ -119,8 +95,10 @@ std::vector<QueryPoint> query_points(const WhatRequest &request)
     PointMap vector(request.points, request.layer);
     const int layer = sbrt_grass::layer_number(vector.map(), request.layer);
     std::vector<int> selected;
-    if (!request.where.empty())
-        selected = selected_categories(vector.map(), layer, request.where);
+    if (!request.where.empty()) {
+        sbrt_grass::LayerTable table(vector.map(), layer, "where=");
+        selected = sbrt_grass::selected_categories(table, request.where);
+    }
     std::vector<QueryPoint> points;
     size_t others = 0;
     while (const int type = vector.next()) {
