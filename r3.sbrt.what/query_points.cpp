@@ -15,55 +15,8 @@
 #include "layer_table.hpp"
 #include "util/error.hpp"
 #include "vector_map.hpp"
-extern "C" {
-#include <grass/dbmi.h>
-#include <grass/vector.h>
-}
 
 namespace {
-
-/// An open vector map at level 1 (no topology needed), closed on scope exit.
-class PointMap {
-public:
-    PointMap(const std::string &name, const std::string &layer)
-        : points_(Vect_new_line_struct()), cats_(Vect_new_cats_struct())
-    {
-        // Vect_open_old2 ends the process on a missing map: looked up first
-        if (!G_find_vector2(name.c_str(), ""))
-            sbrt::fail("Vector map <", name, "> not found (points=): g.list vector lists the maps");
-        Vect_set_open_level(1);
-        if (Vect_open_old2(&map_, name.c_str(), "", layer.c_str()) < 0)
-            sbrt::fail("Unable to open vector map <", name, ">");
-        open_ = true;
-    }
-    ~PointMap()
-    {
-        Vect_destroy_line_struct(points_);
-        Vect_destroy_cats_struct(cats_);
-        if (open_)
-            Vect_close(&map_);
-    }
-    PointMap(const PointMap &) = delete;
-    PointMap &operator=(const PointMap &) = delete;
-
-    /// The next feature's type (0 at the end); its points and categories.
-    int next()
-    {
-        const int type = Vect_read_next_line(&map_, points_, cats_);
-        if (type == -1)
-            sbrt::fail("Unable to read vector map <", Vect_get_full_name(&map_), ">");
-        return type < 0 ? 0 : type;
-    }
-    const line_pnts &points() const { return *points_; }
-    line_cats *cats() { return cats_; }
-    Map_info &map() { return map_; }
-
-private:
-    Map_info map_;
-    bool open_ = false;
-    line_pnts *points_;
-    line_cats *cats_;
-};
 
 /// Refuses a point that is no position (coordinates=nan,nan or inf, a
 /// vector map holding nan): it would be logged as outside, with
@@ -92,7 +45,7 @@ std::vector<QueryPoint> query_points(const WhatRequest &request)
         check_finite(request.coordinates, request);
         return request.coordinates;
     }
-    PointMap vector(request.points, request.layer);
+    sbrt_grass::VectorMap vector(request.points, request.layer.c_str(), "points");
     const int layer = sbrt_grass::layer_number(vector.map(), request.layer);
     std::vector<int> selected;
     if (!request.where.empty()) {

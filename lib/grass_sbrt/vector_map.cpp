@@ -23,10 +23,13 @@ std::string quoted(const std::string &name)
 
 } // namespace
 
-VectorMap::VectorMap(const std::string &name, const char *layer)
+VectorMap::VectorMap(const std::string &name, const char *layer, const char *option)
 {
+    // Vect_open_old2 ends the process on a missing map: looked up first
     if (!G_find_vector2(name.c_str(), ""))
-        sbrt::fail(_("Vector map"), " <", quoted(name), "> ", _("not found"));
+        sbrt::fail(_("Vector map"), " <", quoted(name), "> ", _("not found"),
+                   option ? std::string(" (") + option + "=)" : std::string(), ": ",
+                   _("g.list vector lists the maps"));
     Vect_set_open_level(1);
     if (Vect_open_old2(&map_, name.c_str(), "", layer) < 0)
         sbrt::fail(_("Unable to open vector map"), " <", quoted(name), ">");

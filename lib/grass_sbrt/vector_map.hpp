@@ -23,8 +23,10 @@ namespace sbrt_grass {
 /// process).
 class VectorMap {
 public:
-    /// `layer`: as Vect_open_old2 takes it ("-1" for every layer).
-    VectorMap(const std::string &name, const char *layer);
+    /// `layer`: as Vect_open_old2 takes it ("-1" for every layer);
+    /// `option`: the option that names the map, for the message (none: no
+    /// option named).
+    VectorMap(const std::string &name, const char *layer, const char *option = nullptr);
     ~VectorMap();
     VectorMap(const VectorMap &) = delete;
     VectorMap &operator=(const VectorMap &) = delete;
