@@ -11,7 +11,6 @@ PURPOSE:   Hostile render requests (issue 28, items 4, 5, 7 and 9): every
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
-import select
 import subprocess
 import time
 
@@ -19,66 +18,9 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
+from server_fixture import RawServer
+
 LIMIT = 5  # seconds: issue 28's bound on any hang
-
-
-class RawServer:
-    """r3.sbrt.render --serve over pipes: one reply line per request, the
-    frame's bytes read and counted."""
-
-    def __init__(self):
-        self.process = subprocess.Popen(
-            ["r3.sbrt.render", "--serve"], stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
-        self.buffer = b""
-
-    def _fill(self, enough, deadline):
-        """Reads until enough(buffer) holds, or fails at the deadline."""
-        while not enough(self.buffer):
-            left = deadline - time.monotonic()
-            if left <= 0:
-                raise TimeoutError("no whole reply within %d s" % LIMIT)
-            ready, _, _ = select.select([self.process.stdout], [], [], left)
-            if ready:
-                chunk = os.read(self.process.stdout.fileno(), 1 << 20)
-                if not chunk:
-                    raise EOFError("the server closed its output")
-                self.buffer += chunk
-
-    def _read_line(self, deadline):
-        self._fill(lambda buffer: b"\n" in buffer, deadline)
-        line, self.buffer = self.buffer.split(b"\n", 1)
-        return line.decode(errors="replace")
-
-    def _read_bytes(self, count, deadline):
-        self._fill(lambda buffer: len(buffer) >= count, deadline)
-        data, self.buffer = self.buffer[:count], self.buffer[count:]
-        return data
-
-    def ask(self, line):
-        """The reply's first line to the raw bytes `line` (a frame's and the
-        classes' further lines read too)."""
-        self.process.stdin.write(line)
-        self.process.stdin.flush()
-        deadline = time.monotonic() + LIMIT
-        head = self._read_line(deadline)
-        if head.startswith("frame "):
-            width, height = (int(v) for v in head.split()[1:3])
-            self._read_bytes(width * height * 3, deadline)
-        elif head.startswith("model "):
-            count = int(self._read_line(deadline).split()[1])
-            for _ in range(count):
-                self._read_line(deadline)
-        return head
-
-    def close(self):
-        try:
-            self.process.stdin.write(b"quit\n")
-            self.process.stdin.flush()
-            self.process.wait(LIMIT)
-        except (BrokenPipeError, subprocess.TimeoutExpired):
-            self.process.kill()
-            self.process.wait()
 
 
 class TestHostileRequests(TestCase):
@@ -107,7 +49,7 @@ class TestHostileRequests(TestCase):
         cls.del_temp_region()
 
     def setUp(self):
-        self.server = RawServer()
+        self.server = RawServer(LIMIT)
 
     def tearDown(self):
         self.server.close()

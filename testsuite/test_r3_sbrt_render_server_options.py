@@ -12,13 +12,10 @@ PURPOSE:   Every option and flag of r3.sbrt.render through the view server
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
-import select
-import shlex
 import shutil
 import struct
 import subprocess
 import tempfile
-import time
 import xml.etree.ElementTree as ET
 import zlib
 
@@ -26,7 +23,9 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-from geomodel_fixture import CHANNEL_REGION, set_up_channel_model
+from server_fixture import RawServer
+
+from geomodel_fixture import set_up_channel_model
 
 LIMIT = 60  # seconds for any one reply or process (a loaded CI machine)
 
@@ -159,53 +158,6 @@ def read_png(path):
     return width, height, b"".join(rows)
 
 
-class RawServer:
-    """r3.sbrt.render --serve over pipes, never restarted (a server that
-    exits fails the test): render requests answered with (width, height,
-    RGB bytes)."""
-
-    def __init__(self):
-        self.process = subprocess.Popen(["r3.sbrt.render", "--serve"], stdin=subprocess.PIPE,
-                                        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
-        self.buffer = b""
-
-    def _fill(self, enough, deadline):
-        while not enough(self.buffer):
-            left = deadline - time.monotonic()
-            if left <= 0:
-                raise TimeoutError("no whole reply within %d s" % LIMIT)
-            ready, _, _ = select.select([self.process.stdout], [], [], left)
-            if ready:
-                chunk = os.read(self.process.stdout.fileno(), 1 << 20)
-                if not chunk:
-                    raise EOFError("the view server exited")
-                self.buffer += chunk
-
-    def render(self, words):
-        self.process.stdin.write(("render " + shlex.join(words) + "\n").encode())
-        self.process.stdin.flush()
-        deadline = time.monotonic() + LIMIT
-        self._fill(lambda buffer: b"\n" in buffer, deadline)
-        head, self.buffer = self.buffer.split(b"\n", 1)
-        head = head.decode(errors="replace")
-        if not head.startswith("frame "):
-            raise AssertionError("%s: %s" % (" ".join(words), head))
-        width, height = (int(v) for v in head.split()[1:3])
-        size = width * height * 3
-        self._fill(lambda buffer: len(buffer) >= size, deadline)
-        rgb, self.buffer = self.buffer[:size], self.buffer[size:]
-        return width, height, rgb
-
-    def close(self):
-        try:
-            self.process.stdin.write(b"quit\n")
-            self.process.stdin.flush()
-            self.process.wait(LIMIT)
-        except (BrokenPipeError, subprocess.TimeoutExpired):
-            self.process.kill()
-            self.process.wait()
-
-
 def merged(words, change):
     """`words` with `change` (key=value or -flag) replacing the word of its
     key."""
@@ -257,7 +209,7 @@ class TestEveryOptionThroughTheServer(TestCase):
             f.write("1800 -600 80 600 500 10\n1900 1600 80 600 500 10\n")
         with open(cls.files["keys2"], "w") as f:
             f.write("-600 1600 60 600 500 10 30\n-600 -600 60 600 500 10\n")
-        cls.server = RawServer()
+        cls.server = RawServer(LIMIT)
 
     @classmethod
     def vector(cls, name, text):
