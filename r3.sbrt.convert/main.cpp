@@ -13,6 +13,7 @@
 #include "convert.hpp"
 #include "util/error.hpp"
 #include "grass.hpp"
+#include "module_options.hpp"
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "model/survey_presets.hpp"
@@ -36,15 +37,10 @@ Options define_options()
         _("3D raster map to convert (with -r, or -p/-g without output: an "
           "SBRT, as sbrt=)");
 
-    o.sbrt = G_define_option();
-    o.sbrt->key = "sbrt";
-    o.sbrt->type = TYPE_STRING;
-    o.sbrt->key_desc = "name";
+    o.sbrt = sbrt_grass::define_sbrt_option(
+        "sbrt", _("Existing SBRT to expand into the 3D raster output= (-r) or to "
+                  "describe (-p, -g)"));
     o.sbrt->required = NO;
-    o.sbrt->gisprompt = "old,sbrt,sbrt";
-    o.sbrt->description =
-        _("Existing SBRT to expand into the 3D raster output= (-r) or to "
-          "describe (-p, -g)");
 
     o.file = G_define_standard_option(G_OPT_F_INPUT);
     o.file->key = "file";

@@ -12,6 +12,7 @@
 #include "util/error.hpp"
 #include "manage.hpp"
 #include "output_format.hpp"
+#include "module_options.hpp"
 #include "sbrt_choices.hpp"
 #include "module_errors.hpp"
 
@@ -48,14 +49,10 @@ Options define_options()
                                   _("SBRT(s) of the current mapset to rename"));
     o.rename->guisection = _("Rename");
 
-    o.remove = G_define_option();
-    o.remove->key = "remove";
-    o.remove->type = TYPE_STRING;
-    o.remove->key_desc = "name";
+    o.remove = sbrt_grass::define_sbrt_option("remove",
+                                              _("SBRT(s) of the current mapset to remove"));
     o.remove->multiple = YES;
     o.remove->required = NO;
-    o.remove->gisprompt = "old,sbrt,sbrt";
-    o.remove->description = _("SBRT(s) of the current mapset to remove");
     o.remove->guisection = _("Remove");
     o.force = G_define_flag();
     o.force->key = 'f';

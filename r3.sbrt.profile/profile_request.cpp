@@ -14,7 +14,7 @@
 ProfileOptions define_profile_options()
 {
     ProfileOptions o;
-    o.input = sbrt_grass::define_sbrt_input(_("Name of the SBRT to cut (from r3.sbrt.convert)"));
+    o.input = sbrt_grass::define_sbrt_option("input", _("Name of the SBRT to cut (from r3.sbrt.convert)"));
 
     o.coordinates = G_define_standard_option(G_OPT_M_COORDS);
     o.coordinates->multiple = YES;

@@ -22,6 +22,7 @@
 #include "legend_sources.hpp"
 #include "model/legend_rules.hpp"
 #include "model/survey_presets.hpp"
+#include "module_options.hpp"
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "util/error.hpp"
@@ -38,13 +39,8 @@ struct Options {
 Options define_options()
 {
     Options o;
-    o.sbrt = G_define_option();
-    o.sbrt->key = "sbrt";
-    o.sbrt->type = TYPE_STRING;
-    o.sbrt->key_desc = "name";
-    o.sbrt->required = YES;
-    o.sbrt->gisprompt = "old,sbrt,sbrt";
-    o.sbrt->description = _("SBRT of the current mapset whose labels and colours to set");
+    o.sbrt = sbrt_grass::define_sbrt_option(
+        "sbrt", _("SBRT of the current mapset whose labels and colours to set"));
 
     o.color = G_define_standard_option(G_OPT_M_COLR);
     o.color->description =

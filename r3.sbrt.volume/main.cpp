@@ -26,7 +26,7 @@ struct Options {
 Options define_options()
 {
     Options o;
-    o.input = sbrt_grass::define_sbrt_input(_("Name of the input SBRT"));
+    o.input = sbrt_grass::define_sbrt_option("input", _("Name of the input SBRT"));
     o.classes = G_define_option();
     o.classes->key = "classes";
     o.classes->type = TYPE_STRING;

@@ -16,7 +16,7 @@ WhatOptions define_what_options()
 {
     WhatOptions o;
     o.input =
-        sbrt_grass::define_sbrt_input(_("Name of the SBRT to query (from r3.sbrt.convert)"));
+        sbrt_grass::define_sbrt_option("input", _("Name of the SBRT to query (from r3.sbrt.convert)"));
 
     o.coordinates = G_define_standard_option(G_OPT_M_COORDS);
     o.coordinates->multiple = YES;

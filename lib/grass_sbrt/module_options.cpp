@@ -9,10 +9,10 @@
 
 namespace sbrt_grass {
 
-Option *define_sbrt_input(const char *description)
+Option *define_sbrt_option(const char *key, const char *description)
 {
     Option *o = G_define_option();
-    o->key = "input";
+    o->key = key;
     o->type = TYPE_STRING;
     o->key_desc = "name";
     o->required = YES;

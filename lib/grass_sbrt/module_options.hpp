@@ -15,8 +15,10 @@
 
 namespace sbrt_grass {
 
-/// input=: an existing SBRT (the dialogs offer them: offer_sbrts_in_dialog).
-Option *define_sbrt_input(const char *description);
+/// `key`=: an existing SBRT, required (a caller may make it optional or
+/// multiple); the one definition every module's SBRT option has (the
+/// dialogs offer the SBRTs: offer_sbrts_in_dialog, offer_own_sbrts_in_dialog).
+Option *define_sbrt_option(const char *key, const char *description);
 
 /// probability=: property channels in %, one or a sum (kans_5+kans_6+
 /// kans_7); `label` says what the module makes of it.
