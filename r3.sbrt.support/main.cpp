@@ -9,7 +9,6 @@
  ****************************************************************************/
 #include <chrono>
 #include <cstdlib>
-#include <ctime>
 #include <optional>
 #include <string>
 
@@ -23,6 +22,7 @@
 #include "model/legend_rules.hpp"
 #include "model/survey_presets.hpp"
 #include "module_options.hpp"
+#include "raster_metadata.hpp"
 #include "sbrt_choices.hpp"
 #include "sbrt_store.hpp"
 #include "util/error.hpp"
@@ -147,11 +147,8 @@ std::string own_sbrt(const char *name)
 /// "WHAT changed: DATE by USER: COMMAND", a line of `hist`.
 std::string history_line(const char *what = "legend")
 {
-    const time_t now = time(nullptr);
-    char date[64];
-    strftime(date, sizeof date, "%a %b %d %H:%M:%S %Y", localtime(&now));
-    return std::string(what) + " changed: " + date + " by " + G_whoami() + ": " +
-           G_recreate_command() + "\n";
+    return std::string(what) + " changed: " + sbrt_grass::history_date() + " by " +
+           G_whoami() + ": " + G_recreate_command() + "\n";
 }
 
 /// The SBRT's writers' lock: changes made at once are made one after the

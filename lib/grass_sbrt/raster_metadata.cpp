@@ -6,6 +6,8 @@
  ****************************************************************************/
 #include "raster_metadata.hpp"
 
+#include <ctime>
+
 #include "util/safe_text.hpp"
 
 namespace sbrt_grass {
@@ -28,6 +30,14 @@ void fill_history(struct History *history, const MapHistory &fields)
 std::string metadata_line(std::string_view text, std::size_t max_bytes)
 {
     return sbrt::fit_bytes(sbrt::printable(text), max_bytes);
+}
+
+std::string history_date()
+{
+    const time_t now = time(nullptr);
+    char date[64];
+    strftime(date, sizeof date, "%a %b %d %H:%M:%S %Y", localtime(&now));
+    return date;
 }
 
 void set_history_field(struct History *history, int field, std::string_view text)

@@ -8,7 +8,6 @@
 #include <sys/stat.h>
 
 #include <algorithm>
-#include <ctime>
 #include <filesystem>
 #include <optional>
 #include <set>
@@ -18,6 +17,7 @@
 #include "util/error.hpp"
 #include "grass.hpp"
 #include "map_names.hpp"
+#include "raster_metadata.hpp"
 #include "sbrt_store.hpp"
 
 namespace sbrt_grass {
@@ -56,10 +56,7 @@ std::string history_of_copy(const sbrt::MemberDirectory &from,
             sbrt::read_all(*hist, from.member_path("hist"));
         history.assign(bytes.begin(), bytes.end());
     }
-    const time_t now = time(nullptr);
-    char date[64];
-    strftime(date, sizeof date, "%a %b %d %H:%M:%S %Y", localtime(&now));
-    history += std::string("copied: ") + date + "\n";
+    history += "copied: " + history_date() + "\n";
     history += "copied from: " + source.qualified() + "\n";
     history += std::string("copied by: ") + G_whoami() + "\n";
     history += std::string("copy command: ") + G_recreate_command() + "\n";

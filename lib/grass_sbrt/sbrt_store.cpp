@@ -13,12 +13,12 @@
 #include <algorithm>
 #include <chrono>
 #include <thread>
-#include <ctime>
 
 #include "util/error.hpp"
 #include "format/format.hpp"
 #include "measure/expected_thickness.hpp"
 #include "grass.hpp"
+#include "raster_metadata.hpp"
 #include "sbrt_manage.hpp"
 
 namespace sbrt_grass {
@@ -174,10 +174,7 @@ void write_sbrt_map(const char *name, const std::string &path,
                     const sbrt::Model &model, const std::string &source,
                     const std::string &channels_file)
 {
-    const time_t now = time(nullptr);
-    char date[64];
-    strftime(date, sizeof date, "%a %b %d %H:%M:%S %Y", localtime(&now));
-    std::string history = std::string("created: ") + date + "\n";
+    std::string history = "created: " + history_date() + "\n";
     history += std::string("creator: ") + G_whoami() + "\n";
     history += "source: " + source + "\n";
     history += std::string("command: ") + G_recreate_command() + "\n";
