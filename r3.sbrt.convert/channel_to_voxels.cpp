@@ -5,6 +5,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "convert.hpp"
+#include "grass_window.hpp"
 
 #include <cmath>
 #include <string>
@@ -41,7 +42,7 @@ void channel_to_voxels(const char *input, const char *channel, const char *outpu
                       channel, channel_names(*channels).c_str());
     const sbrt::ChannelInfo &info = channels->info(size_t(index));
     const sbrt::Frame &f = model.frame();
-    const sbrt::Frame target = current_frame();
+    const sbrt::Frame target = sbrt_grass::current_frame();
     warn_if_other_grid(input, f, target);
     RASTER3D_Region region;
     Rast3d_get_window(&region);

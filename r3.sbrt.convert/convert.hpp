@@ -14,9 +14,6 @@
 #include "model/model.hpp"
 #include "output_format.hpp"
 
-/// Frame of the current 3D region.
-sbrt::Frame current_frame();
-
 /// 3D raster (current 3D region) -> SBRT.
 sbrt::Model voxels_to_sbrt(const char *input, sbrt::Classifier &classifier);
 

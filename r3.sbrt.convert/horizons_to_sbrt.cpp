@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "builders/horizon_builder.hpp"
+#include "grass_window.hpp"
 #include "legend.hpp"
 
 namespace {
@@ -48,15 +49,9 @@ private:
 /// The 2D grid of the 3D region, so horizons are resampled onto it.
 void use_3d_grid_for_2d_reads(const sbrt::Frame &f)
 {
-    struct Cell_head window;
-    G_get_window(&window);
-    window.north = f.north;
-    window.south = f.south;
-    window.east = f.east;
-    window.west = f.west;
-    window.rows = f.rows;
-    window.cols = f.cols;
-    G_adjust_Cell_head(&window, 1, 1);
+    struct Cell_head current;
+    G_get_window(&current);
+    Cell_head window = sbrt_grass::window_of(f, current);
     Rast_set_window(&window);
 }
 
@@ -70,7 +65,7 @@ sbrt::Model horizons_to_sbrt(const std::vector<std::string> &horizons,
         G_fatal_error(_("%zu horizons but %zu materials: give one material "
                         "id per horizon, top to bottom"),
                       horizons.size(), materials.size());
-    const sbrt::Frame frame = current_frame();
+    const sbrt::Frame frame = sbrt_grass::current_frame();
     use_3d_grid_for_2d_reads(frame);
 
     std::vector<sbrt::Material> units;

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "grass.hpp"
+#include "grass_window.hpp"
 
 namespace {
 
@@ -22,19 +23,9 @@ bool near(double a, double b, double resolution)
 
 void set_region_to(const char *name, const sbrt::Frame &frame)
 {
-    struct Cell_head window;
-    G_get_window(&window);
-    window.north = frame.north;
-    window.south = frame.south;
-    window.east = frame.east;
-    window.west = frame.west;
-    window.top = frame.top;
-    window.bottom = frame.bottom;
-    window.rows = window.rows3 = frame.rows;
-    window.cols = window.cols3 = frame.cols;
-    window.depths = frame.depths;
-    // resolutions (2D and 3D) from the counts
-    G_adjust_Cell_head3(&window, 1, 1, 1);
+    struct Cell_head current;
+    G_get_window(&current);
+    Cell_head window = sbrt_grass::window_of(frame, current);
     if (G_put_window(&window) < 0)
         G_fatal_error(_("Unable to write the current region"));
     // this process goes on in it too (-s with -r)

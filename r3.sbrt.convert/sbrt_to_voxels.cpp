@@ -4,6 +4,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "convert.hpp"
+#include "grass_window.hpp"
 
 #include <cstdlib>
 
@@ -15,7 +16,7 @@
 void sbrt_to_voxels(const char *input, const char *output)
 {
     const sbrt::Model model = sbrt_grass::read_sbrt_map(input);
-    const sbrt::Frame target = current_frame();
+    const sbrt::Frame target = sbrt_grass::current_frame();
     warn_if_other_grid(input, model.frame(), target);
     RASTER3D_Region region;
     Rast3d_get_window(&region);

@@ -6,28 +6,10 @@
 #include "convert.hpp"
 
 #include "util/error.hpp"
+#include "grass_window.hpp"
 #include "legend.hpp"
 #include "raster3d_slices.hpp"
 #include "builders/voxel_builder.hpp"
-
-sbrt::Frame current_frame()
-{
-    RASTER3D_Region region;
-    Rast3d_get_window(&region);
-    sbrt::Frame f;
-    f.north = region.north;
-    f.south = region.south;
-    f.east = region.east;
-    f.west = region.west;
-    f.top = region.top;
-    f.bottom = region.bottom;
-    f.rows = region.rows;
-    f.cols = region.cols;
-    f.depths = region.depths;
-    f.proj = region.proj;
-    f.zone = region.zone;
-    return f;
-}
 
 std::vector<sbrt::Material> rule_legend(const sbrt::Classifier &classifier)
 {
@@ -48,7 +30,7 @@ sbrt::Model voxels_to_sbrt(const char *input, sbrt::Classifier &classifier)
         G_fatal_error(_("3D raster map <%s> not found"), input);
     RASTER3D_Region window;
     Rast3d_get_window(&window);
-    const sbrt::Frame frame = current_frame();
+    const sbrt::Frame frame = sbrt_grass::current_frame();
     Raster3dSlices slices(input, mapset, window);
     G_verbose_message(slices.reads_tiles()
                           ? _("Reading whole tiles (region = map's region)")
