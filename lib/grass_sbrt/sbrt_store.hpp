@@ -33,7 +33,8 @@ std::string find_sbrt(const char *name);
 /// naming the map and what to do.
 sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options = {});
 /// The property channels of SBRT `name` whose model (as read) is `model`;
-/// nullptr where it has none. A damaged channels member is a fatal error.
+/// nullptr where it has none. A damaged channels member throws
+/// sbrt::Error naming the map and what to do.
 std::shared_ptr<const sbrt::PropertyChannels> read_channels_map(const char *name,
                                                                 const sbrt::Model &model);
 /// \brief The channels of an SBRT and those a probability= sums.
