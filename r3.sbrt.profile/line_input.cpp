@@ -5,7 +5,7 @@
  ****************************************************************************/
 #include "line_input.hpp"
 
-#include "util/error.hpp"
+#include "module_errors.hpp"
 #include "vector_map.hpp"
 
 namespace {
@@ -37,11 +37,13 @@ std::vector<glm::dvec2> read_line_vertices(const ProfileRequest &request)
         }
     }
     if (lines == 0 && request.cat)
-        sbrt::fail("line=", request.line, " has no line of category ", *request.cat,
-                   " in layer 1 (v.category option=print lists them)");
+        sbrt_grass::fail_with(_("line=%s has no line of category %d in layer 1 (v.category "
+                                "option=print lists them)"),
+                              request.line.c_str(), *request.cat);
     if (lines == 0)
-        sbrt::fail("line=", request.line, " has no lines: the profile needs a vector map of "
-                   "lines (v.in.ascii, v.digit) or coordinates=");
+        sbrt_grass::fail_with(_("line=%s has no lines: the profile needs a vector map of lines "
+                                "(v.in.ascii, v.digit) or coordinates="),
+                              request.line.c_str());
     if (lines > 1)
         G_warning(_("line=%s has %zu lines%s: the profile follows the first%s"),
                   request.line.c_str(), lines, request.cat ? " of that category" : "",

@@ -207,8 +207,10 @@ void print_json(const sbrt::ProfileLine &line, const std::optional<ProfileGrid> 
 void run(const ProfileRequest &request)
 {
     if (G_projection() == PROJECTION_LL)
-        sbrt::fail("A profile measures distances along its line in map units, which a "
-                   "latitude-longitude location does not have: use a projected location");
+        sbrt_grass::fail_with(
+            _("A profile measures distances along its line in map units, which a "
+              "latitude-longitude location does not have: use a projected "
+              "location"));
     const sbrt::ProfileLine line(read_line_vertices(request));
     // the map's columns at its step (the model's finer resolution unless given)
     const sbrt::Frame frame = read_frame(request.input);
@@ -223,9 +225,11 @@ void run(const ProfileRequest &request)
     if (!solid && grid)
         solid = grid->extent;
     if (!solid)
-        sbrt::fail("The line meets no layer of SBRT <", request.input, "> (",
-                   line_text(line), "; the model covers ", frame.west, " to ", frame.east,
-                   " east, ", frame.south, " to ", frame.north, " north)");
+        sbrt_grass::fail_with(
+            _("The line meets no layer of SBRT <%s> (%s; the model covers %g to %g "
+              "east, %g to %g north)"),
+            request.input.c_str(), line_text(line).c_str(), frame.west, frame.east, frame.south,
+            frame.north);
     if (!request.output.empty()) {
         const ProfileGrid g = grid ? *grid : ProfileGrid{1, map_cols, *solid};
         const sbrt::ClassProfile profile =

@@ -12,6 +12,8 @@
 
 #include "frame/fitting_exaggeration.hpp"
 #include "output/png_file.hpp"
+#include "grass.hpp"
+#include "module_errors.hpp"
 #include "util/axis_ticks.hpp"
 #include "util/error.hpp"
 #include "util/safe_text.hpp"
@@ -490,9 +492,10 @@ FigureAxes figure_axes(double length, sbrt::ProfileExtent solid, std::optional<d
     a.extent = {std::floor(solid.bottom / step) * step, std::ceil(solid.top / step) * step};
     const double height = (a.extent.top - a.extent.bottom) * a.zexag * width / length;
     if (height > MAX_PLOT_HEIGHT)
-        sbrt::fail("The profile would be ", std::lround(height), " pixels high (more than ",
-                   MAX_PLOT_HEIGHT, ") at vertical exaggeration ", a.zexag,
-                   ": give a smaller zexag= or width=");
+        sbrt_grass::fail_with(
+            _("The profile would be %ld pixels high (more than %d) at vertical "
+              "exaggeration %g: give a smaller zexag= or width="),
+            std::lround(height), MAX_PLOT_HEIGHT, a.zexag);
     a.plot_height = std::max(1, int(std::lround(height)));
     a.elevation_ticks = sbrt::ticks(a.extent.bottom, a.extent.top, step);
 

@@ -15,7 +15,7 @@ extern "C" {
 
 #include "area_cover.hpp"
 #include "vector_map.hpp"
-#include "util/error.hpp"
+#include "module_errors.hpp"
 #include "volume.hpp"
 
 namespace {
@@ -37,11 +37,13 @@ public:
     {
         // Vect_open_old2 ends the process on a missing map: looked up first
         if (!G_find_vector2(name.c_str(), ""))
-            sbrt::fail("areas=", name, ": vector map <", name, "> not found");
+            sbrt_grass::fail_with(_("areas=%s: vector map <%s> not found"), name.c_str(),
+                                  name.c_str());
         Vect_set_open_level(2);
         if (Vect_open_old(&map_, name.c_str(), "") < 2)
-            sbrt::fail("areas=", name, ": vector map <", name,
-                       "> has no topology; build it with v.build");
+            sbrt_grass::fail_with(_("areas=%s: vector map <%s> has no topology; build it with "
+                                    "v.build"),
+                                  name.c_str(), name.c_str());
         points_ = Vect_new_line_struct();
     }
     ~AreaMap()
@@ -115,11 +117,13 @@ Zones area_zones(const sbrt::Model &model, const std::string &name, const std::s
     int without_category = 0;
     const std::vector<CategorisedArea> found = categorised_areas(map, field, without_category);
     if (found.empty())
-        sbrt::fail("areas=", name, ": vector map <", Vect_get_full_name(map),
-                   "> has no areas with a category in layer ", layer, " (",
-                   Vect_get_num_areas(map), " areas, ", Vect_get_num_primitives(map, GV_POINT),
-                   " points, ", Vect_get_num_primitives(map, GV_LINE),
-                   " lines); areas= needs boundaries closed around centroids");
+        sbrt_grass::fail_with(
+            _("areas=%s: vector map <%s> has no areas with a category in layer %s "
+              "(%d areas, %d points, %d lines); areas= needs boundaries "
+              "closed around centroids"),
+            name.c_str(), Vect_get_full_name(map), layer.c_str(), int(Vect_get_num_areas(map)),
+            int(Vect_get_num_primitives(map, GV_POINT)),
+            int(Vect_get_num_primitives(map, GV_LINE)));
     if (without_category)
         G_warning(_("%d areas of <%s> have no category in layer %s and are left out"),
                   without_category, name.c_str(), layer.c_str());

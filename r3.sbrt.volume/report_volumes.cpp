@@ -10,7 +10,7 @@
 
 #include "model/class_names.hpp"
 #include "sbrt_store.hpp"
-#include "util/error.hpp"
+#include "module_errors.hpp"
 #include "volume.hpp"
 
 namespace {
@@ -24,7 +24,8 @@ public:
             return;
         file_ = std::fopen(name.c_str(), "w");
         if (!file_)
-            sbrt::fail("output=", name, ": cannot write the file (", std::strerror(errno), ")");
+            sbrt_grass::fail_with(_("output=%s: cannot write the file (%s)"), name.c_str(),
+                                  std::strerror(errno));
     }
     ~OutputFile()
     {
@@ -42,8 +43,8 @@ public:
             return;
         if (std::fclose(file_) != 0) {
             file_ = nullptr;
-            sbrt::fail("output=", name, ": writing the file failed (", std::strerror(errno),
-                       ")");
+            sbrt_grass::fail_with(_("output=%s: writing the file failed (%s)"), name.c_str(),
+                                  std::strerror(errno));
         }
         file_ = nullptr;
     }

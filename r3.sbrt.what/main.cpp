@@ -50,8 +50,8 @@ void write_logs(const WhatRequest &request, const LogSource &source,
     const bool to_stdout = request.output.empty() || request.output == "-";
     FILE *out = to_stdout ? stdout : std::fopen(request.output.c_str(), "w");
     if (!out)
-        sbrt::fail("Unable to open file <", request.output, "> for writing: ",
-                   std::strerror(errno));
+        sbrt_grass::fail_with(_("Unable to open file <%s> for writing: %s"),
+                              request.output.c_str(), std::strerror(errno));
     if (request.format == LogFormat::json)
         write_json_logs(out, source, logs);
     else if (request.format == LogFormat::csv)
@@ -66,8 +66,9 @@ void write_logs(const WhatRequest &request, const LogSource &source,
     errno = 0;
     const bool failed = std::ferror(out) != 0;
     if (std::fclose(out) != 0 || failed)
-        sbrt::fail("Unable to write the logs to file <", request.output, ">",
-                   errno ? std::string(": ") + std::strerror(errno) : std::string());
+        sbrt_grass::fail_with(_("Unable to write the logs to file <%s>%s"),
+                              request.output.c_str(),
+                              errno ? (std::string(": ") + std::strerror(errno)).c_str() : "");
 }
 
 void run(const WhatRequest &request)

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "layer_table.hpp"
-#include "util/error.hpp"
+#include "module_errors.hpp"
 #include "vector_map.hpp"
 
 namespace {
@@ -28,12 +28,15 @@ void check_finite(const std::vector<QueryPoint> &points, const WhatRequest &requ
         if (std::isfinite(p.x) && std::isfinite(p.y))
             continue;
         if (request.points.empty())
-            sbrt::fail("coordinates=: point ", i + 1, " (", p.x, ",", p.y,
-                       ") is not a position: give finite numbers");
-        sbrt::fail("points=", request.points, ": point ", i + 1,
-                   p.cat >= 0 ? " (cat " + std::to_string(p.cat) + ")" : std::string(),
-                   " lies at ", p.x, ",", p.y,
-                   ", not a position: correct it (v.edit) or leave it out with where=");
+            sbrt_grass::fail_with(
+                _("coordinates=: point %zu (%g,%g) is not a position: give finite "
+                  "numbers"),
+                i + 1, p.x, p.y);
+        const std::string cat = p.cat >= 0 ? " (cat " + std::to_string(p.cat) + ")" : "";
+        sbrt_grass::fail_with(
+            _("points=%s: point %zu%s lies at %g,%g, not a position: correct it "
+              "(v.edit) or leave it out with where="),
+            request.points.c_str(), i + 1, cat.c_str(), p.x, p.y);
     }
 }
 
@@ -79,10 +82,12 @@ std::vector<QueryPoint> query_points(const WhatRequest &request)
         points.push_back(p);
     }
     if (points.empty())
-        sbrt::fail("points=", request.points, " has no points in layer ", request.layer,
-                   request.where.empty() ? "" : " that where= selects", " (it holds ", others,
-                   " lines, boundaries, centroids or faces): points= needs a vector map of points (layer=-1 "
-                   "takes points without categories too)");
+        sbrt_grass::fail_with(
+            _("points=%s has no points in layer %s%s (it holds %zu lines, "
+              "boundaries, centroids or faces): points= needs a vector map of "
+              "points (layer=-1 takes points without categories too)"),
+            request.points.c_str(), request.layer.c_str(),
+            request.where.empty() ? "" : _(" that where= selects"), others);
     if (others)
         G_warning(_("points=%s: %zu features that are not points skipped"),
                   request.points.c_str(), others);

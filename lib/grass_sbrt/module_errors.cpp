@@ -6,6 +6,7 @@
 #include "module_errors.hpp"
 
 #include <cerrno>
+#include <cstdarg>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -34,6 +35,18 @@ void check_standard_output()
 }
 
 } // namespace
+
+void fail_with(const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    char *text = nullptr;
+    G_vasprintf(&text, format, args);
+    va_end(args);
+    const std::string message = text ? text : format;
+    G_free(text);
+    throw sbrt::Error(message);
+}
 
 void run_reporting_errors(const char *doing, const std::string &subject,
                           const char *memory_hint, const std::function<void()> &job)

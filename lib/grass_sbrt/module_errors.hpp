@@ -19,6 +19,11 @@ namespace sbrt_grass {
 /// <doing> <subject>: <what>". Then what the job printed must have reached
 /// standard output (flushed, no write failed): else a fatal error, so that
 /// `module > /dev/full` never exits 0.
+/// Throws sbrt::Error with the message a printf `format` makes: for the
+/// translatable messages (`_("...")`) that modules throw to
+/// run_reporting_errors or to the view server, which answers them.
+[[noreturn]] void fail_with(const char *format, ...) __attribute__((format(printf, 1, 2)));
+
 void run_reporting_errors(const char *doing, const std::string &subject,
                           const char *memory_hint, const std::function<void()> &job);
 

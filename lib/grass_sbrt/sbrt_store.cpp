@@ -7,7 +7,6 @@
 
 #include <sys/stat.h>
 
-#include <cstdarg>
 #include <cstring>
 
 #include <algorithm>
@@ -18,25 +17,13 @@
 #include "format/format.hpp"
 #include "measure/expected_thickness.hpp"
 #include "grass.hpp"
+#include "module_errors.hpp"
 #include "raster_metadata.hpp"
 #include "sbrt_manage.hpp"
 
 namespace sbrt_grass {
 
 namespace {
-
-/// sbrt::fail with a printf-style (translatable) message.
-[[noreturn]] void fail_with(const char *format, ...)
-{
-    va_list args;
-    va_start(args, format);
-    char *text = nullptr;
-    G_vasprintf(&text, format, args);
-    va_end(args);
-    const std::string message = text ? text : format;
-    G_free(text);
-    throw sbrt::Error(message);
-}
 
 /// The inode of directory `dir` (0 where it has none).
 ino_t inode_of(const std::string &dir)
