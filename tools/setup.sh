@@ -4,12 +4,15 @@
 # PURPOSE:   Installs, through apt-get, the Debian packages the addon needs
 #            to build, run its demo and its tests; does nothing when they
 #            are all there. Never writes into the GRASS installation.
+#            One list for Debian 12 (GRASS 8.2) and Debian 13 (GRASS 8.4):
+#            every name exists in both (tools/grass84_root.sh installs it
+#            in a Debian 13 root).
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
 packages=(
     make g++ pkg-config zlib1g-dev libzstd-dev
-    grass-core grass-dev             # GRASS 8.2 and its headers/make system
+    grass-core grass-dev             # GRASS (8.2 or 8.4) and its headers/make system
     libglm-dev                       # vector maths
     libegl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
     libgtest-dev                     # unit tests
