@@ -28,9 +28,12 @@ std::string channel_names(const sbrt::PropertyChannels &channels)
 
 } // namespace
 
-void channel_to_voxels(const char *input, const char *channel, const char *output)
+void channel_to_voxels(const char *input, const char *channel, const char *output,
+                       unsigned threads)
 {
-    const sbrt::Model model = sbrt_grass::read_sbrt_map(input);
+    sbrt::ReadOptions reading;
+    reading.threads = threads;
+    const sbrt::Model model = sbrt_grass::read_sbrt_map(input, reading);
     const auto channels = sbrt_grass::read_channels_map(input, model);
     if (!channels)
         G_fatal_error(_("SBRT <%s> has no property channels: property=%s cannot be "

@@ -21,7 +21,8 @@ sbrt::Model voxels_to_sbrt(const char *input, sbrt::Classifier &classifier);
 /// channels of `model` (made from class map `input`), written into the new
 /// file `channels_file`.
 void raster3d_channels(const std::vector<std::string> &properties, const char *input,
-                       const sbrt::Model &model, const std::string &channels_file);
+                       const sbrt::Model &model, const std::string &channels_file,
+                       unsigned threads);
 
 /// The rules' classes with their labels, as a legend.
 std::vector<sbrt::Material> rule_legend(const sbrt::Classifier &classifier);
@@ -37,7 +38,7 @@ sbrt::Model file_to_sbrt(const char *file, const char *variable,
                          sbrt::Classifier &classifier, bool override_crs,
                          size_t band_bytes, const char *preset,
                          const std::vector<std::string> &properties = {},
-                         const std::string &channels_file = {});
+                         const std::string &channels_file = {}, unsigned threads = 0);
 
 /// The other 3D variables of `file` on the grid of `variable` (-a).
 std::vector<std::string> same_grid_variables(const char *file, const char *variable);
@@ -55,12 +56,13 @@ sbrt::Model horizons_to_sbrt(const std::vector<std::string> &horizons,
                              const char *bottom);
 
 /// SBRT -> 3D raster in the current 3D region, with colours and labels.
-void sbrt_to_voxels(const char *input, const char *output);
+void sbrt_to_voxels(const char *input, const char *output, unsigned threads);
 
 /// One property channel of an SBRT -> 3D raster in the current 3D region:
 /// its values as stored (times scale plus offset where the source packed
 /// them), the fill and voxels outside the spans null.
-void channel_to_voxels(const char *input, const char *channel, const char *output);
+void channel_to_voxels(const char *input, const char *channel, const char *output,
+                       unsigned threads);
 
 /// Sets the current region, 2D and 3D (as g.region raster_3d= does), to
 /// the grid `frame` of SBRT `name`, in the mapset and in this process.

@@ -181,7 +181,7 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
                          sbrt::Classifier &classifier, bool override_crs,
                          size_t band_bytes, const char *preset,
                          const std::vector<std::string> &properties,
-                         const std::string &channels_file)
+                         const std::string &channels_file, unsigned threads)
 {
     // a classic file's length first: the netCDF library reads what a
     // truncated one lacks as zeros
@@ -277,7 +277,7 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
         channel_sink = std::make_unique<sbrt::FileSink>(channels_file);
         channel_writer = std::make_unique<sbrt::ChannelsWriter>(
             *channel_sink, frame.rows, frame.cols, sbrt::StacksV2Options{}.block_size,
-            infos);
+            infos, threads);
         channel_bands = std::make_unique<sbrt::ChannelBands>(grids, names, *channel_writer);
         G_message(_("With %zu property channels: %s%s"), props.size(),
                   props[0]->name().c_str(), props.size() > 1 ? ", ..." : "");

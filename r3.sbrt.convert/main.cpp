@@ -24,7 +24,7 @@ namespace {
 
 struct Options {
     Option *input, *sbrt, *file, *variable, *output, *horizons, *materials,
-        *bottom, *rules, *memory, *preset, *properties, *property, *format;
+        *bottom, *rules, *memory, *preset, *properties, *property, *format, *nprocs;
     Flag *reverse, *print, *shell, *list, *override_crs, *set_region, *all_properties;
 };
 
@@ -201,6 +201,7 @@ Options define_options()
     G_option_requires(o.bottom, o.horizons, NULL);
     G_option_excludes(o.reverse, o.horizons, o.rules, o.file, NULL);
     G_option_exclusive(o.print, o.shell, NULL);
+    o.nprocs = sbrt_grass::define_nprocs();
     return o;
 }
 
@@ -275,6 +276,9 @@ void run(const Options &o)
 {
     // -g is format=shell; format=shell or json asks for the report as -p does
     const sbrt_grass::OutputFormat format = sbrt_grass::read_output_format(o.format, o.shell);
+    const unsigned threads = sbrt_grass::read_nprocs(o.nprocs);
+    sbrt::ReadOptions reading;
+    reading.threads = threads;
     if (o.list->answer) {
         if (format == sbrt_grass::OutputFormat::json)
             print_sbrt_list_json();
@@ -301,11 +305,11 @@ void run(const Options &o)
         sbrt_grass::check_new_name(output, false, "output");
         sbrt_grass::check_new_raster3d(output, overwrite);
         if (set_region)
-            set_region_to(sbrt, sbrt_grass::read_sbrt_map(sbrt).frame());
+            set_region_to(sbrt, sbrt_grass::read_sbrt_map(sbrt, reading).frame());
         if (o.property->answer)
-            channel_to_voxels(sbrt, o.property->answer, output);
+            channel_to_voxels(sbrt, o.property->answer, output, threads);
         else
-            sbrt_to_voxels(sbrt, output);
+            sbrt_to_voxels(sbrt, output, threads);
         return;
     }
     if (o.sbrt->answer && output)
@@ -328,7 +332,7 @@ void run(const Options &o)
             G_fatal_error(_("Nothing to do: give output= to convert, -p/-g "
                             "with sbrt= to describe an SBRT, or -s with sbrt= "
                             "to set the region to it"));
-        const sbrt::Model model = sbrt_grass::read_sbrt_map(sbrt);
+        const sbrt::Model model = sbrt_grass::read_sbrt_map(sbrt, reading);
         if (set_region)
             set_region_to(sbrt, model.frame());
         if (report)
@@ -363,7 +367,7 @@ void run(const Options &o)
             channels_file.path = G_tempfile();
         model = file_to_sbrt(o.file->answer, o.variable->answer, classifier,
                              o.override_crs->answer, size_t(megabytes) << 20,
-                             o.preset->answer, properties, channels_file.path);
+                             o.preset->answer, properties, channels_file.path, threads);
         source = std::string("file ") + o.file->answer + " variable " +
                  o.variable->answer;
     }
@@ -381,14 +385,14 @@ void run(const Options &o)
         const std::vector<std::string> properties = answers_of(o.properties);
         if (!properties.empty()) {
             channels_file.path = G_tempfile();
-            raster3d_channels(properties, input, model, channels_file.path);
+            raster3d_channels(properties, input, model, channels_file.path, threads);
             source += " with properties " + std::string(o.properties->answer);
         }
     }
     const std::string preset = o.preset->answer;
     if (!o.file->answer && preset != "auto" && preset != "none")
         apply_preset(preset, model);
-    sbrt_grass::write_sbrt_map(output, path, model, source, channels_file.path);
+    sbrt_grass::write_sbrt_map(output, path, model, source, channels_file.path, threads);
     if (set_region)
         set_region_to(output, model.frame());
     else if (o.file->answer)

@@ -116,7 +116,8 @@ private:
 } // namespace
 
 void raster3d_channels(const std::vector<std::string> &properties, const char *input,
-                       const sbrt::Model &model, const std::string &channels_file)
+                       const sbrt::Model &model, const std::string &channels_file,
+                       unsigned threads)
 {
     RASTER3D_Region window;
     Rast3d_get_window(&window);
@@ -134,7 +135,7 @@ void raster3d_channels(const std::vector<std::string> &properties, const char *i
     }
     sbrt::FileSink sink(channels_file);
     sbrt::ChannelsWriter writer(sink, frame.rows, frame.cols,
-                                sbrt::StacksV2Options{}.block_size, infos);
+                                sbrt::StacksV2Options{}.block_size, infos, threads);
     G_message(_("Reading %zu property channels (%s%s) over the columns' solid spans..."),
               maps.size(), infos[0].name.c_str(), maps.size() > 1 ? ", ..." : "");
     std::vector<sbrt::ColumnSpan> spans(size_t(frame.cols));

@@ -13,9 +13,11 @@
 #include "sbrt_store.hpp"
 #include "builders/voxel_expander.hpp"
 
-void sbrt_to_voxels(const char *input, const char *output)
+void sbrt_to_voxels(const char *input, const char *output, unsigned threads)
 {
-    const sbrt::Model model = sbrt_grass::read_sbrt_map(input);
+    sbrt::ReadOptions reading;
+    reading.threads = threads;
+    const sbrt::Model model = sbrt_grass::read_sbrt_map(input, reading);
     const sbrt::Frame target = sbrt_grass::current_frame();
     warn_if_other_grid(input, model.frame(), target);
     RASTER3D_Region region;

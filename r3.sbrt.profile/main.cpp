@@ -73,9 +73,10 @@ sbrt::Frame read_frame(const std::string &input)
 /// blocks that hold them.
 sbrt::Model read_model_along(const std::string &input, const sbrt::Frame &frame,
                              const sbrt::ProfileLine &line, const std::vector<int> &columns,
-                             int plot_width)
+                             int plot_width, unsigned threads)
 {
     sbrt::ReadOptions options;
+    options.threads = threads;
     options.points.emplace();
     for (int cols : columns)
         for (int c = 0; c < cols; ++c) {
@@ -218,7 +219,8 @@ void run(const ProfileRequest &request)
         request.resolution.value_or(std::min(frame.ew_res(), frame.ns_res()));
     const int map_cols = profile_columns(line.length(), step);
     const sbrt::Model model =
-        read_model_along(request.input, frame, line, {map_cols, request.width}, request.width);
+        read_model_along(request.input, frame, line, {map_cols, request.width}, request.width,
+                         request.threads);
 
     const std::optional<ProfileGrid> grid = profile_grid(model, line, map_cols);
     auto solid = sbrt::solid_extent(model, line, request.width);

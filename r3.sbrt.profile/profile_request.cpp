@@ -81,6 +81,7 @@ ProfileOptions define_profile_options()
         {sbrt_grass::OutputFormat::shell, sbrt_grass::OutputFormat::json}, false);
     o.format->label = _("Print the map's window and the figure's axes in this format");
     o.format->description = _("shell: as -g");
+    o.nprocs = sbrt_grass::define_nprocs();
 
     G_option_required(o.output, o.png, o.shell, o.format, NULL);
     return o;
@@ -114,5 +115,6 @@ ProfileRequest read_profile_request(const ProfileOptions &o)
     r.zexag = positive_number(o.zexag);
     r.width = std::atoi(o.width->answer);
     r.print = sbrt_grass::read_output_format(o.format, o.shell);
+    r.threads = sbrt_grass::read_nprocs(o.nprocs);
     return r;
 }

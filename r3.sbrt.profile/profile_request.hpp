@@ -17,7 +17,7 @@
 
 struct ProfileOptions {
     Option *input, *coordinates, *line, *cat, *output, *resolution, *png, *zexag, *width,
-        *format;
+        *format, *nprocs;
     Flag *shell;
 };
 
@@ -34,6 +34,7 @@ struct ProfileRequest {
     int width = 1000;                 ///< the figure's plot, in pixels
     /// -g or format=: the figure's and map's geometry (shell or json), or none
     sbrt_grass::OutputFormat print = sbrt_grass::OutputFormat::none;
+    unsigned threads = 1; ///< nprocs= (reading the SBRT)
 };
 
 ProfileOptions define_profile_options();

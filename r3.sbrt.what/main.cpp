@@ -27,9 +27,11 @@ namespace {
 /// The SBRT with only the stacks of the points' cells, decoded from the
 /// blocks that hold them (1000 points scattered over a national model
 /// need about 4 in 10 of its blocks, and no other cell's intervals).
-sbrt::Model read_model_under(const std::string &name, const std::vector<QueryPoint> &points)
+sbrt::Model read_model_under(const std::string &name, const std::vector<QueryPoint> &points,
+                             unsigned threads)
 {
     sbrt::ReadOptions options;
+    options.threads = threads;
     sbrt::ReadReport report;
     options.report = &report;
     options.points.emplace();
@@ -74,7 +76,7 @@ void write_logs(const WhatRequest &request, const LogSource &source,
 void run(const WhatRequest &request)
 {
     const std::vector<QueryPoint> points = query_points(request);
-    const sbrt::Model model = read_model_under(request.input, points);
+    const sbrt::Model model = read_model_under(request.input, points, request.threads);
     // the property channels, where the model has them and the output
     // shows them (json always, plain and csv with -v): only the blocks
     // under the points are decoded

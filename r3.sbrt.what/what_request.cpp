@@ -56,6 +56,8 @@ WhatOptions define_what_options()
           "voxels whatever this flag says)");
     o.voxels->guisection = _("Output");
 
+    o.nprocs = sbrt_grass::define_nprocs();
+
     G_option_required(o.coordinates, o.points, NULL);
     G_option_exclusive(o.coordinates, o.points, NULL);
     G_option_requires(o.where, o.points, NULL);
@@ -75,5 +77,6 @@ WhatRequest read_what_request(const WhatOptions &o)
     r.separator = sbrt_grass::read_csv_separator(o.separator, r.format);
     r.output = o.output->answer ? o.output->answer : "";
     r.voxels = o.voxels->answer;
+    r.threads = sbrt_grass::read_nprocs(o.nprocs);
     return r;
 }

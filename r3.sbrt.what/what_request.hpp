@@ -14,7 +14,7 @@
 
 /// \brief The options, as G_define_option made them.
 struct WhatOptions {
-    Option *input, *coordinates, *points, *layer, *where, *format, *separator, *output;
+    Option *input, *coordinates, *points, *layer, *where, *format, *separator, *output, *nprocs;
     Flag *voxels; ///< -v: the property channels voxel by voxel
 };
 
@@ -40,6 +40,7 @@ struct WhatRequest {
     /// -v: the voxel rows of the property channels in plain and csv (json
     /// lists them under their own key whatever -v says)
     bool voxels = false;
+    unsigned threads = 1; ///< nprocs= (reading the SBRT)
 };
 
 WhatOptions define_what_options();

@@ -5,7 +5,10 @@
  ****************************************************************************/
 #include "module_options.hpp"
 
+#include <algorithm>
 #include <cstdlib>
+
+#include "util/parallel.hpp"
 
 namespace sbrt_grass {
 
@@ -39,17 +42,19 @@ Option *define_nprocs()
 {
     Option *o = G_define_standard_option(G_OPT_M_NPROCS);
     o->answer = const_cast<char *>("0");
-    o->description = _("Number of threads (0: all cores)");
+    o->description = _("Number of threads (0: all cores, a negative number: all but that "
+                       "many)");
     return o;
 }
 
 unsigned read_nprocs(const Option *nprocs)
 {
-    const int threads = std::atoi(nprocs->answer);
-    if (threads < 0)
-        G_fatal_error(_("nprocs=%s: a number of threads, 0 for all cores"),
-                      nprocs->answer);
-    return unsigned(threads);
+    const int threads = nprocs->answer ? std::atoi(nprocs->answer) : 0;
+    if (threads > 0)
+        return unsigned(threads);
+    // as GRASS 8.4's G_set_omp_num_threads: 0 all cores, -n all but n
+    const int cores = int(sbrt::thread_count(0));
+    return unsigned(std::max(1, cores + threads));
 }
 
 std::vector<glm::dvec2> read_coordinate_pairs(const Option *coordinates)

@@ -24,9 +24,13 @@ Option *define_sbrt_option(const char *key, const char *description);
 /// kans_7); `label` says what the module makes of it.
 Option *define_probability(const char *label);
 
-/// nprocs=: threads, 0 (the default) for all cores.
+/// nprocs=: GRASS's G_OPT_M_NPROCS with GRASS 8.4's meaning, the one
+/// definition of every module that uses more than one core: a number of
+/// threads, 0 (the default) for all cores, a negative number for all but
+/// that many.
 Option *define_nprocs();
-/// Its answer; a fatal error for a negative number.
+/// Its answer as a number of threads: at least 1, all cores for 0, all
+/// but -n for a negative n (at least 1 where that leaves none).
 unsigned read_nprocs(const Option *nprocs);
 
 /// The east,north pairs of a coordinates= option (G_OPT_M_COORDS with

@@ -159,7 +159,7 @@ sbrt::SbrtLock lock_for_writing(const std::string &dir)
 
 void write_sbrt_map(const char *name, const std::string &path,
                     const sbrt::Model &model, const std::string &source,
-                    const std::string &channels_file)
+                    const std::string &channels_file, unsigned threads)
 {
     std::string history = "created: " + history_date() + "\n";
     history += std::string("creator: ") + G_whoami() + "\n";
@@ -167,7 +167,9 @@ void write_sbrt_map(const char *name, const std::string &path,
     history += std::string("command: ") + G_recreate_command() + "\n";
     try {
         const sbrt::SbrtLock lock = lock_for_writing(path);
-        sbrt::write_sbrt(path, model, history, {}, channels_file);
+        sbrt::StacksV2Options options;
+        options.threads = threads;
+        sbrt::write_sbrt(path, model, history, options, channels_file);
     }
     catch (const sbrt::Error &e) {
         G_fatal_error(_("Unable to write SBRT <%s>: %s"), name, e.what());

@@ -59,10 +59,10 @@ sbrt::SbrtLock lock_for_writing(const std::string &dir);
 /// new SBRT in the current mapset.
 std::string new_sbrt_path(const char *name, bool overwrite);
 /// Writes SBRT `name` atomically to `path` (from new_sbrt_path), with
-/// history.
+/// history, compressing on `threads` threads (0: all cores).
 void write_sbrt_map(const char *name, const std::string &path,
                     const sbrt::Model &model, const std::string &source,
-                    const std::string &channels_file = {});
+                    const std::string &channels_file = {}, unsigned threads = 0);
 /// "name@mapset" of every SBRT in the search path, mapset by mapset.
 std::vector<std::string> list_sbrts();
 /// Fatal error if a 3D raster `name` exists in the current mapset and
