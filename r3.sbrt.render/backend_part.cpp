@@ -4,10 +4,8 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "backend_part.hpp"
+#include "module_options.hpp"
 
-#include <algorithm>
-#include <cstdlib>
-#include <thread>
 
 void BackendPart::define(OptionTable &table)
 {
@@ -24,9 +22,7 @@ void BackendPart::define(OptionTable &table)
         _("ssbo;two storage buffers, cell offsets and intervals (5-SSBO);"
           "textures;an index texture over the grid and the intervals packed "
           "into a 2D texture (1-Textures; grids up to the largest texture)"));
-    Option *nprocs = table.add(G_define_standard_option(G_OPT_M_NPROCS));
-    nprocs->answer = const_cast<char *>("0");
-    nprocs->description = _("Number of threads (0: all cores)");
+    Option *nprocs = table.add(sbrt_grass::define_nprocs());
     nprocs->guisection = _("Settings");
     table.define_flag('e',
                       _("Walk every cell: no empty-space skipping (the same image, "
@@ -39,9 +35,7 @@ void BackendPart::read(const Answers &a)
     backend = a.text("backend", "auto");
     gpu_layout = a.text("layout", "ssbo");
     walk_every_cell = a.flag('e');
-    threads = std::atoi(a.text("nprocs", "0").c_str());
-    if (threads < 0)
-        threads = std::max(1, int(std::thread::hardware_concurrency()) + threads);
+    threads = int(sbrt_grass::read_nprocs(a.text("nprocs", "0")));
 }
 
 std::string BackendPart::key() const

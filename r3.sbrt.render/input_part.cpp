@@ -6,6 +6,7 @@
 #include "input_part.hpp"
 
 #include "request_error.hpp"
+#include "module_options.hpp"
 
 void check_map_name(const char *key, const std::string &name)
 {
@@ -16,13 +17,8 @@ void check_map_name(const char *key, const std::string &name)
 
 void InputPart::define(OptionTable &table)
 {
-    Option *o = table.add(G_define_option());
-    o->key = "input";
-    o->type = TYPE_STRING;
-    o->required = YES;
-    o->key_desc = "name";
-    o->gisprompt = "old,sbrt,sbrt";
-    o->description = _("Name of the SBRT to render (from r3.sbrt.convert)");
+    table.add(sbrt_grass::define_sbrt_option(
+        "input", _("Name of the SBRT to render (from r3.sbrt.convert)")));
 }
 
 void InputPart::read(const Answers &a)

@@ -13,7 +13,7 @@
 
 #include "shading/drape.hpp"
 
-/// The texture of texture=; a fatal error names a missing map.
+/// The texture of texture=; throws (bad_request) naming a missing map.
 sbrt::Texture read_texture(const std::vector<std::string> &maps);
 
 #endif

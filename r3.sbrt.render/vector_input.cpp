@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "grass.hpp"
+#include "layer_table.hpp"
 #include "request_error.hpp"
 #include "vector_map.hpp"
 extern "C" {
@@ -16,40 +17,11 @@ extern "C" {
 #include <grass/vector.h>
 }
 
+using sbrt_grass::LayerTable;
 using sbrt_grass::VectorMap;
+using sbrt_grass::selected_categories;
 
 namespace {
-
-/// A database driver open on a layer's table, shut down on scope exit.
-class LayerTable {
-public:
-    LayerTable(Map_info &map, int layer, const char *what)
-    {
-        info_ = Vect_get_field(&map, layer);
-        if (!info_)
-            bad_request(_("%s: vector map <%s> has no attribute table in layer "
-                            "%d (connect one with v.db.connect)"),
-                          what, Vect_get_full_name(&map), layer);
-        driver_ = db_start_driver_open_database(info_->driver,
-                                                Vect_subst_var(info_->database, &map));
-        if (!driver_)
-            bad_request(_("Unable to open database <%s> by driver <%s>"),
-                          info_->database, info_->driver);
-    }
-    ~LayerTable()
-    {
-        db_close_database_shutdown_driver(driver_);
-        G_free(info_); // its strings live as long as the module, as in GRASS's own modules
-    }
-    LayerTable(const LayerTable &) = delete;
-    LayerTable &operator=(const LayerTable &) = delete;
-    dbDriver *driver() { return driver_; }
-    const field_info &info() const { return *info_; }
-
-private:
-    field_info *info_ = nullptr;
-    dbDriver *driver_ = nullptr;
-};
 
 /// A number from a fetched column (integer or floating point), or false
 /// for NULL.
@@ -69,21 +41,6 @@ bool column_number(dbTable *table, int k, const char *name, double &out)
     default:
         bad_request(_("Column <%s> is not numeric"), name);
     }
-}
-
-/// The sorted categories of the table's rows that `where` selects.
-std::vector<int> selected_categories(LayerTable &table, const std::string &where)
-{
-    int *cats = nullptr;
-    const int n = db_select_int(table.driver(), table.info().table, table.info().key,
-                                where.c_str(), &cats);
-    if (n < 0)
-        bad_request(_("where=%s: the query failed on table <%s>"), where.c_str(),
-                      table.info().table);
-    std::vector<int> selected(cats, cats + n);
-    G_free(cats);
-    std::sort(selected.begin(), selected.end());
-    return selected;
 }
 
 /// The rows of log_top=, log_bottom=, log_class= grouped by category.
@@ -135,7 +92,7 @@ std::map<int, std::vector<LogRow>> logged_intervals(LayerTable &table,
 
 BoreholeInput read_boreholes(const RenderRequest &request)
 {
-    VectorMap vector(request.boreholes, request.layer.c_str());
+    VectorMap vector(request.boreholes, request.layer.c_str(), "boreholes");
     const int layer = Vect_get_field_number(&vector.map(), request.layer.c_str());
     BoreholeInput in;
     in.is_3d = Vect_is_3d(&vector.map());
@@ -181,7 +138,7 @@ BoreholeInput read_boreholes(const RenderRequest &request)
 
 std::vector<glm::dvec3> read_path_line(const std::string &name, bool &is_3d)
 {
-    VectorMap vector(name, "-1");
+    VectorMap vector(name, "-1", "path_map");
     is_3d = Vect_is_3d(&vector.map());
     size_t lines = 0;
     std::vector<glm::dvec3> line;
@@ -206,7 +163,7 @@ std::vector<glm::dvec3> read_path_line(const std::string &name, bool &is_3d)
 
 std::vector<sbrt::FencePanel> read_fence(const std::string &name)
 {
-    VectorMap vector(name, "-1");
+    VectorMap vector(name, "-1", "fence");
     std::vector<sbrt::FencePanel> panels;
     size_t points = 0;
     while (const int type = vector.next()) {

@@ -36,15 +36,15 @@ struct BoreholeInput {
     std::map<int, std::vector<LogRow>> logs;
 };
 
-/// The boreholes of the request; a fatal error where the map holds no
-/// such points or the logs cannot be read.
+/// The boreholes of the request; throws (bad_request) where the map holds
+/// no such points or the logs cannot be read.
 BoreholeInput read_boreholes(const RenderRequest &request);
 
 /// The vertices of the first line of `name` (z 0 where the map is 2D,
-/// `is_3d` says which); a fatal error without lines.
+/// `is_3d` says which); throws (bad_request) without lines.
 std::vector<glm::dvec3> read_path_line(const std::string &name, bool &is_3d);
 
-/// The segments of the lines of fence=; a fatal error without lines.
+/// The segments of the lines of fence=; throws (bad_request) without lines.
 std::vector<sbrt::FencePanel> read_fence(const std::string &name);
 
 #endif

@@ -49,7 +49,12 @@ Option *define_nprocs()
 
 unsigned read_nprocs(const Option *nprocs)
 {
-    const int threads = nprocs->answer ? std::atoi(nprocs->answer) : 0;
+    return read_nprocs(nprocs->answer ? nprocs->answer : "0");
+}
+
+unsigned read_nprocs(const std::string &answer)
+{
+    const int threads = std::atoi(answer.c_str());
     if (threads > 0)
         return unsigned(threads);
     // as GRASS 8.4's G_set_omp_num_threads: 0 all cores, -n all but n

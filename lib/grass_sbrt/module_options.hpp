@@ -7,6 +7,7 @@
 #ifndef SBRT_MODULE_OPTIONS_HPP
 #define SBRT_MODULE_OPTIONS_HPP
 
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -32,6 +33,8 @@ Option *define_nprocs();
 /// Its answer as a number of threads: at least 1, all cores for 0, all
 /// but -n for a negative n (at least 1 where that leaves none).
 unsigned read_nprocs(const Option *nprocs);
+/// The same for the option's answer as text (a view server's request word).
+unsigned read_nprocs(const std::string &answer);
 
 /// The east,north pairs of a coordinates= option (G_OPT_M_COORDS with
 /// multiple answers), in order; none where it has no answer.
