@@ -3,7 +3,9 @@
 # MODULE:    tools/valgrind_modules.sh (r3.sbrt addon)
 # PURPOSE:   Runs the modules under valgrind's memcheck on the small T
 #            model (convert both ways, list and copy the SBRT, render with
-#            every operation on the CPU backend, a profile along a line):
+#            every operation on the CPU backend, a profile along a line,
+#            support, what, surface, volume, and the view server that
+#            g.gui.sbrt drives):
 #            any invalid read or write, use of uninitialised memory or bad
 #            free fails the run.
 #            Leaks are not counted: GRASS modules leave their allocations
@@ -59,6 +61,14 @@ count memcheck render_boreholes r3.sbrt.render input=geo output=img_wells size=6
 count memcheck render_fence r3.sbrt.render input=geo output=img_fence size=64,48 backend=cpu fence=fence
 count memcheck profile r3.sbrt.profile input=geo line=fence output=prof width=200 \
     png="$(g.gisenv get=GISDBASE)/vg_profile.png"
+count memcheck support r3.sbrt.support sbrt=geo_copy color=viridis
+count memcheck what r3.sbrt.what input=geo coordinates=525,1225,1475,1975 format=json
+count memcheck surface r3.sbrt.surface input=geo classes=3 top=s_top thickness=s_thick
+count memcheck volume r3.sbrt.volume input=geo format=csv
+# g.gui.sbrt's native part: the view server it talks to, a frame and a pick
+requests="$(g.gisenv get=GISDBASE)/vg_requests.txt"
+printf 'render input=geo size=64,48 backend=cpu azimuth=30\npick 10 10 input=geo size=64,48 backend=cpu\nquit\n' >"$requests"
+count memcheck view_server r3.sbrt.render --serve <"$requests"
 echo "valgrind: $passed passed, $failed failed"
 EOS
 in_grass PERMANENT bash "$SBRT_GISDBASE/valgrind_job.sh" "$SBRT_ROOT/tools" 2>&1 |
