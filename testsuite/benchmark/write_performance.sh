@@ -34,7 +34,7 @@ ALL=(
     "peers_benchmark.sh A B"
     "error_benchmark.sh A"
     "viewer_benchmark.sh B"
-    "cluster_benchmark.sh B"
+    "cluster_benchmark.sh"
 )
 
 # The machine in one line: CPU, cores, memory, GPU where nvidia-smi names
