@@ -41,16 +41,20 @@ install:
 setup:
 	@tools/setup.sh
 
+# demo, test and check build on every core (make -j, whatever they were
+# called with): the libraries side by side, then the modules
+BUILD_JOBS := $(shell nproc)
+
 demo: setup
-	@$(MAKE) --no-print-directory default
+	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) default
 	@tools/demo.sh
 
 test: setup
-	@$(MAKE) --no-print-directory default
+	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) default
 	@tools/run_tests.sh test
 
 check: setup
-	@$(MAKE) --no-print-directory default
+	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) default
 	@tools/run_tests.sh check
 
 clean:
