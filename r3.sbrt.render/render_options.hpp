@@ -56,7 +56,6 @@ std::string key_of(const RenderRequest &request)
 
 /// The options of the module, as its parts define them (in the order of
 /// the dialog and the manual).
-using RenderOptions = OptionTable;
 OptionTable define_render_options();
 
 /// \brief A request, or why the answers are not one (errors as values: the

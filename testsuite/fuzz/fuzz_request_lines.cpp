@@ -25,10 +25,10 @@ namespace {
 
 /// The module's options, defined once as main() defines them.
 struct Protocol {
-    RenderOptions options;
+    OptionTable options;
     RequestLineReader reader;
     Protocol() : options(define()), reader(options) {}
-    static RenderOptions define()
+    static OptionTable define()
     {
         // GRASS's messages read their settings from a gisrc file: a
         // throw-away one (no location is opened: nothing here reads one)

@@ -42,7 +42,7 @@ constexpr const char SECRET[] = "qzxjv_secret";
 
 /// The module's options and the rules file the inputs are written to.
 struct Server {
-    RenderOptions options;
+    OptionTable options;
     RequestLineReader reader;
     std::string rules_path;
     int rules_fd = -1;
@@ -57,7 +57,7 @@ struct Server {
         rules_path = path;
         std::atexit([] { unlink(path); });
     }
-    static RenderOptions define()
+    static OptionTable define()
     {
         // GRASS's messages read their settings from a gisrc file: a
         // throw-away one (no location is opened: nothing here reads one)
