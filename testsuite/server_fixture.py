@@ -15,13 +15,13 @@ import time
 class RawServer:
     """r3.sbrt.render --serve over pipes, never restarted: a reply line per
     request, a frame's bytes read after its line; `limit` seconds for any
-    one reply."""
+    one reply; its standard error to `stderr` (a file, or none)."""
 
-    def __init__(self, limit):
+    def __init__(self, limit, stderr=subprocess.DEVNULL):
         self.limit = limit
         self.process = subprocess.Popen(
             ["r3.sbrt.render", "--serve"], stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
+            stdout=subprocess.PIPE, stderr=stderr)
         self.buffer = b""
 
     def _fill(self, enough, deadline):

@@ -21,7 +21,8 @@ from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 import grass.script as gs
 
-from test_r3_sbrt_render_requests import LIMIT, RawServer
+from server_fixture import RawServer
+from test_r3_sbrt_render_requests import LIMIT
 
 MODEL = "rules_model"
 CHANNEL_MODEL = "rules_channel_model"
@@ -40,10 +41,7 @@ class ServerWithErrors(RawServer):
 
     def __init__(self, stderr_path):
         self.stderr_file = open(stderr_path, "wb")
-        self.process = subprocess.Popen(
-            ["r3.sbrt.render", "--serve"], stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE, stderr=self.stderr_file)
-        self.buffer = b""
+        super().__init__(LIMIT, stderr=self.stderr_file)
 
     def close(self):
         super().close()
