@@ -13,6 +13,7 @@ COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
 import shutil
+import signal
 import subprocess
 import tempfile
 import time
@@ -202,14 +203,37 @@ class TestCluster(TestCase):
                            cols * rows // 5)
 
     @staticmethod
-    def lock_holder_alive(lock):
-        """Whether GRASS's mapset lock `lock` names a running process."""
+    def lock_holder(lock):
+        """The process GRASS's mapset lock `lock` names while it runs (not
+        once it is a zombie), else None."""
         try:
             with open(lock) as f:
-                os.kill(int(f.read().split()[0]), 0)
-            return True
+                pid = int(f.read().split()[0])
+            with open(f"/proc/{pid}/stat") as f:
+                state = f.read().rsplit(")", 1)[1].split()[0]
+            return None if state in ("Z", "X") else pid
         except (OSError, ValueError, IndexError):
-            return False
+            return None
+
+    def wait_for_lock_release(self, lock):
+        """Waits until no running process holds GRASS's mapset lock `lock`:
+        the killed session's GRASS may outlive the job's place in the queue
+        by a moment, and one that Slurm's kill did not reach (seen in a
+        chroot) is ended as scancel would have; the lock of a process that
+        is gone is removed, as GRASS would take it over (a zombie's too,
+        which GRASS's own check still counts as running)."""
+        settle = time.time() + 60
+        while self.lock_holder(lock) and time.time() < settle:
+            time.sleep(0.1)
+        pid = self.lock_holder(lock)
+        if pid:
+            os.kill(pid, signal.SIGKILL)
+            settle = time.time() + 10
+            while self.lock_holder(lock) and time.time() < settle:
+                time.sleep(0.1)
+        self.assertIsNone(self.lock_holder(lock), "the killed task's GRASS still runs")
+        if os.path.exists(lock):
+            os.remove(lock)
 
     def test_a_task_killed_halfway_is_run_again(self):
         png = "/data/killed/orbit_%04d.png"
@@ -226,12 +250,9 @@ class TestCluster(TestCase):
         while subprocess.run(["squeue", "--noheader", "-j", job], capture_output=True, text=True,
                              env=self.env).stdout.strip() and time.time() < deadline:
             time.sleep(0.1)
-        # the killed session's GRASS may outlive the job's place in the
-        # queue by a moment, and GRASS refuses a mapset whose lock names a
-        # live process: wait for it (the rerun is what is tested)
-        lock = os.path.join(self.location, "job0", ".gislock")
-        while self.lock_holder_alive(lock) and time.time() < deadline:
-            time.sleep(0.1)
+        # GRASS refuses a mapset whose lock names a live process: the
+        # killed session's lock goes first (the rerun is what is tested)
+        self.wait_for_lock_release(os.path.join(self.location, "job0", ".gislock"))
         done = [k for k in range(1, FRAMES + 1) if os.path.exists(got % k)]
         self.assertGreaterEqual(len(done), 3)
         self.assertLess(len(done), FRAMES, "the task ended before it was killed")
