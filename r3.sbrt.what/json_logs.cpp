@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "log_writers.hpp"
+#include "output_format.hpp"
 #include "util/safe_text.hpp"
 
 namespace {
@@ -48,9 +49,7 @@ Json json_text(const std::string &text)
 /// control character left unescaped.
 std::string one_line(const Json &value)
 {
-    const auto dump = [](const Json &v) {
-        return sbrt::escape_json_controls(v.dump(-1, ' ', false, Json::error_handler_t::replace));
-    };
+    const auto dump = [](const Json &v) { return sbrt_grass::json_text(v, -1); };
     if (value.is_object() && !value.empty()) {
         std::string text = "{";
         for (auto item = value.begin(); item != value.end(); ++item)
