@@ -9,11 +9,14 @@ PURPOSE:   Figures of g.gui.sbrt (issue 19), in a GRASS session, one run:
               dragging and the time from the last mouse move to the refined
               frame on screen, from the viewer's event log.
            Figures only: never part of pass/fail.
-USAGE:     viewer_benchmark.py SBRT [WIDTH HEIGHT]
+USAGE:     viewer_benchmark.py SBRT [WIDTH HEIGHT [r3.sbrt.render options...]]
+           VIEWER_FIGURES=path also writes the figures as one JSON object
+           (national_views.sh reads them)
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import json
 import os
+import re
 import shutil
 import statistics
 import subprocess
@@ -25,6 +28,19 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "g.gui.sbrt"))
 from view_client import ViewServer  # noqa: E402
 
+# what VIEWER_FIGURES gets: ms, frames a second, kB
+FIGURES = {}
+
+
+def peak_rss_kb(pid):
+    """VmHWM of process `pid` in kB (0 where /proc does not say)."""
+    try:
+        with open("/proc/%d/status" % pid) as status:
+            match = re.search(r"^VmHWM:\s+(\d+)", status.read(), re.M)
+            return int(match.group(1)) if match else 0
+    except OSError:
+        return 0
+
 
 def renderer_alone(sbrt, width, height, extra=()):
     server = ViewServer()
@@ -32,6 +48,7 @@ def renderer_alone(sbrt, width, height, extra=()):
     start = time.perf_counter()
     server.render(["input=" + sbrt, "size=%d,%d" % (width, height)] + extra)
     first = (time.perf_counter() - start) * 1000
+    FIGURES["renderer_first_ms"] = first
     for label, size in (("full", (width, height)),
                         ("reduced", (width // 2, height // 2))):
         times, served = [], []
@@ -44,6 +61,7 @@ def renderer_alone(sbrt, width, height, extra=()):
             times.append((time.perf_counter() - start) * 1000)
             served.append(frame.ms)
         median = statistics.median(times)
+        FIGURES["renderer_%s_ms" % label] = median
         print("renderer %-7s %4d x %-4d: median %.1f ms a frame (server %.1f ms, "
               "pipe and client the rest), %.1f frames/s" %
               (label, size[0], size[1], median, statistics.median(served), 1000 / median))
@@ -53,9 +71,13 @@ def renderer_alone(sbrt, width, height, extra=()):
     start = time.perf_counter()
     server.render(["input=" + sbrt, "size=%d,%d" % (width, height),
                    "hide=%d" % hidden] + extra)
+    FIGURES["renderer_hide_ms"] = (time.perf_counter() - start) * 1000
+    FIGURES["renderer_hide_id"] = hidden
     print("renderer scene change (hide=%d, prepared again) + frame: %.1f ms"
-          % (hidden, (time.perf_counter() - start) * 1000))
+          % (hidden, FIGURES["renderer_hide_ms"]))
     print("renderer first frame (process start, model read, scene): %.1f ms" % first)
+    FIGURES["renderer_rss_kb"] = peak_rss_kb(server._process.pid)
+    print("renderer peak RSS: %.0f MB" % (FIGURES["renderer_rss_kb"] / 1024))
     server.close()
 
 
@@ -68,6 +90,7 @@ def viewer(sbrt, width, height, extra=()):
     env = dict(os.environ, DISPLAY=display, GRASS_SBRT_VIEWER_LOG=log, NO_AT_BRIDGE="1")
     # of the extra words, the viewer takes property= (it colours by it)
     options = [w for w in extra if w.startswith("property=")]
+    started = time.monotonic()  # the viewer's log times are the same clock
     gui = subprocess.Popen(["g.gui.sbrt", "input=" + sbrt, "size=%d,%d" % (width, height)]
                            + options,
                            cwd=work, env=env, stderr=subprocess.DEVNULL)
@@ -84,6 +107,10 @@ def viewer(sbrt, width, height, extra=()):
                 raise RuntimeError("g.gui.sbrt did not start")
             time.sleep(0.2)
         canvas = [e["rect"] for e in events() if e.get("name") == "canvas"][0]
+        first = [e["t"] for e in events() if e["event"] == "frame"][0]
+        FIGURES["viewer_first_s"] = first - started
+        print("viewer first frame shown: %.2f s after g.gui.sbrt started" % (first - started))
+        FIGURES["viewer_fps"], FIGURES["viewer_refined_ms"] = [], []
         x, y, w, h = canvas
         for drag in range(3):
             count = len(events())
@@ -94,12 +121,23 @@ def viewer(sbrt, width, height, extra=()):
             time.sleep(1.0)  # the mouse rests, the button still down
             subprocess.run(["xdotool", "mouseup", "1"], env=env, check=True)
             time.sleep(0.5)
-            new = events()[count:]
-            drags = [e["t"] for e in new if e["event"] == "drag"]
-            frames = [e for e in new if e["event"] == "frame"]
+            # a large model's exact frame may come later: wait for it (30 s)
+            deadline = time.time() + 30
+            while True:
+                new = events()[count:]
+                drags = [e["t"] for e in new if e["event"] == "drag"]
+                if not drags:
+                    raise RuntimeError("g.gui.sbrt logged no drag (xdotool reached no canvas)")
+                frames = [e for e in new if e["event"] == "frame"]
+                refined = [f["t"] for f in frames if f["full"] and f["t"] > drags[-1]]
+                if refined or time.time() > deadline:
+                    break
+                time.sleep(0.2)
             during = [f for f in frames if drags[0] <= f["t"] <= drags[-1]]
             reduced = [f for f in during if not f["full"]]
-            refined = [f["t"] for f in frames if f["full"] and f["t"] > drags[-1]]
+            FIGURES["viewer_fps"].append(len(during) / (drags[-1] - drags[0]))
+            if refined:
+                FIGURES["viewer_refined_ms"].append((refined[0] - drags[-1]) * 1000)
             print("viewer drag %d: %d mouse moves in %.2f s; %d frames shown while "
                   "dragging (%d reduced %d x %d): %.1f frames/s; refined %.0f ms "
                   "after the last move" % (
@@ -123,8 +161,17 @@ def main():
     extra = sys.argv[4:]
     print("g.gui.sbrt on <%s>, %d x %d, %d cores%s" % (
         sbrt, width, height, os.cpu_count(), (" with " + " ".join(extra)) if extra else ""))
-    renderer_alone(sbrt, width, height, extra)
-    viewer(sbrt, width, height, extra)
+    FIGURES.update(sbrt=sbrt, size=[width, height])
+    try:
+        renderer_alone(sbrt, width, height, extra)
+        viewer(sbrt, width, height, extra)
+    except Exception as error:  # the figures so far, and why the rest are missing
+        FIGURES["error"] = "%s: %s" % (type(error).__name__, error)
+        raise
+    finally:
+        if os.environ.get("VIEWER_FIGURES"):
+            with open(os.environ["VIEWER_FIGURES"], "w") as out:
+                json.dump(FIGURES, out)
 
 
 if __name__ == "__main__":
