@@ -9,8 +9,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "convert.hpp"
+#include "report.hpp"
 #include "util/error.hpp"
 #include "grass.hpp"
 #include "module_options.hpp"
@@ -272,6 +274,38 @@ std::vector<int> integers_of(const Option *opt)
     return out;
 }
 
+/// The grid of SBRT `name`: from its header where it has block summaries,
+/// else from its model read whole.
+sbrt::Frame frame_of(const char *name, const sbrt::ReadOptions &reading)
+{
+    if (const auto summary = sbrt_grass::read_sbrt_summary_map(name))
+        return summary->frame;
+    return sbrt_grass::read_sbrt_map(name, reading).frame();
+}
+
+/// -p, -g, format= and -s of existing SBRT `name`: from its block
+/// summaries where it has them (format 2.1; a report of property channels
+/// needs the model's spans), no block decoded; else from its model.
+void describe(const char *name, bool report, bool set_region,
+              sbrt_grass::OutputFormat format, const sbrt::ReadOptions &reading)
+{
+    const std::optional<sbrt::ModelSummary> summary = sbrt_grass::read_sbrt_summary_map(name);
+    if (summary && !(report && summary->has_channels)) {
+        if (set_region)
+            set_region_to(name, summary->frame);
+        if (report)
+            print_description(name, description_of(*summary),
+                              sbrt::stacks_file_info(sbrt_grass::find_sbrt(name)), format);
+        return;
+    }
+    const sbrt::Model model = sbrt_grass::read_sbrt_map(name, reading);
+    if (set_region)
+        set_region_to(name, model.frame());
+    if (report)
+        print_report(name, model, sbrt::stacks_file_info(sbrt_grass::find_sbrt(name)), format,
+                     sbrt_grass::read_channels_map(name, model).get());
+}
+
 void run(const Options &o)
 {
     // -g is format=shell; format=shell or json asks for the report as -p does
@@ -305,7 +339,7 @@ void run(const Options &o)
         sbrt_grass::check_new_name(output, false, "output");
         sbrt_grass::check_new_raster3d(output, overwrite);
         if (set_region)
-            set_region_to(sbrt, sbrt_grass::read_sbrt_map(sbrt, reading).frame());
+            set_region_to(sbrt, frame_of(sbrt, reading));
         if (o.property->answer)
             channel_to_voxels(sbrt, o.property->answer, output, threads);
         else
@@ -332,13 +366,7 @@ void run(const Options &o)
             G_fatal_error(_("Nothing to do: give output= to convert, -p/-g "
                             "with sbrt= to describe an SBRT, or -s with sbrt= "
                             "to set the region to it"));
-        const sbrt::Model model = sbrt_grass::read_sbrt_map(sbrt, reading);
-        if (set_region)
-            set_region_to(sbrt, model.frame());
-        if (report)
-            print_report(sbrt, model,
-                         sbrt::stacks_file_info(sbrt_grass::find_sbrt(sbrt)), format,
-                         sbrt_grass::read_channels_map(sbrt, model).get());
+        describe(sbrt, report, set_region, format, reading);
         return;
     }
     // checked before the work, written after it

@@ -3,6 +3,8 @@
  * PURPOSE:   Metadata and the memory comparison of the papers' Table 1
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include "report.hpp"
+
 #include "convert.hpp"
 
 #include <algorithm>
@@ -73,17 +75,34 @@ void print_channels(const sbrt::PropertyChannels &channels, bool shell)
 
 } // namespace
 
+ModelDescription description_of(const sbrt::Model &model)
+{
+    return {model.frame(), model.materials(), model.vertical_datum(), model.stats()};
+}
+
+ModelDescription description_of(const sbrt::ModelSummary &summary)
+{
+    return {summary.frame, summary.materials, summary.vertical_datum, summary.stats};
+}
+
 void print_report(const char *name, const sbrt::Model &model,
                   const sbrt::StacksFileInfo &file, sbrt_grass::OutputFormat format,
                   const sbrt::PropertyChannels *channels)
 {
+    print_description(name, description_of(model), file, format, channels);
+}
+
+void print_description(const char *name, const ModelDescription &model,
+                       const sbrt::StacksFileInfo &file, sbrt_grass::OutputFormat format,
+                       const sbrt::PropertyChannels *channels)
+{
     if (format == sbrt_grass::OutputFormat::json) {
-        print_report_json(name, model, file, channels);
+        print_description_json(name, model, file, channels);
         return;
     }
     const bool shell = format == sbrt_grass::OutputFormat::shell;
-    const sbrt::Frame &f = model.frame();
-    const sbrt::Stats s = model.stats();
+    const sbrt::Frame &f = model.frame;
+    const sbrt::Stats &s = model.stats;
     const double mib = 1024.0 * 1024.0;
     const double file_per_interval =
         s.intervals ? double(file.bytes) / double(s.intervals) : 0;
@@ -103,7 +122,7 @@ void print_report(const char *name, const sbrt::Model &model,
                 "memory_bytes_per_interval=%.4f\nmemory_index_bytes_per_cell=%.4f\n",
                 sbrt::shell_word(name).c_str(), f.north, f.south, f.east, f.west, f.top, f.bottom,
                 f.rows, f.cols, f.depths, f.ns_res(), f.ew_res(), f.tb_res(),
-                model.materials().size() - 1, (unsigned long long)s.voxels,
+                model.materials.size() - 1, (unsigned long long)s.voxels,
                 (unsigned long long)s.voxel_bytes,
                 (unsigned long long)s.sbrt_bytes,
                 (unsigned long long)s.intervals,
@@ -115,7 +134,7 @@ void print_report(const char *name, const sbrt::Model &model,
                 unsigned(file.major), unsigned(file.minor),
                 (unsigned long long)file.bytes, file_per_interval, file_compression);
         fprintf(stdout, "vertical_datum=%s\n",
-                sbrt::shell_word(model.vertical_datum()).c_str());
+                sbrt::shell_word(model.vertical_datum).c_str());
         if (channels)
             print_channels(*channels, true);
         return;
@@ -124,24 +143,24 @@ void print_report(const char *name, const sbrt::Model &model,
     fprintf(stdout, "Extent:        N %.10g  S %.10g  E %.10g  W %.10g\n",
             f.north, f.south, f.east, f.west);
     fprintf(stdout, "Vertical:      T %.10g  B %.10g%s\n", f.top, f.bottom,
-            model.vertical_datum().empty()
+            model.vertical_datum.empty()
                 ? ""
-                : ("  (relative to " + sbrt::printable(model.vertical_datum()) + ")").c_str());
+                : ("  (relative to " + sbrt::printable(model.vertical_datum) + ")").c_str());
     fprintf(stdout, "Grid:          %d rows x %d cols x %d depths\n", f.rows,
             f.cols, f.depths);
     fprintf(stdout, "Resolution:    ns %.10g  ew %.10g  tb %.10g\n",
             f.ns_res(), f.ew_res(), f.tb_res());
-    fprintf(stdout, "Materials:     %zu\n", model.materials().size() - 1);
+    fprintf(stdout, "Materials:     %zu\n", model.materials.size() - 1);
     // by class id, with the colours a render draws (own or the palette's)
     std::vector<uint32_t> order;
-    for (uint32_t i = 1; i < model.materials().size(); ++i)
+    for (uint32_t i = 1; i < model.materials.size(); ++i)
         order.push_back(i);
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        return model.materials()[a].id < model.materials()[b].id;
+        return model.materials[a].id < model.materials[b].id;
     });
     for (const uint32_t i : order) {
-        const sbrt::Material &m = model.materials()[i];
-        const auto rgb = sbrt::material_color(model, i);
+        const sbrt::Material &m = model.materials[i];
+        const auto rgb = sbrt::material_color(model.materials, i);
         fprintf(stdout, "  %11d  %3d:%3d:%3d  %s\n", m.id, rgb[0], rgb[1], rgb[2],
                 sbrt::printable(m.label).c_str());
     }

@@ -7,6 +7,8 @@
  *            attributes or a model's labels hold
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include "report.hpp"
+
 #include "convert.hpp"
 
 #include <algorithm>
@@ -30,18 +32,18 @@ void print_json(const Json &value)
 }
 
 /// The classes by id, with the colours a render draws.
-Json classes_json(const sbrt::Model &model)
+Json classes_json(const std::vector<sbrt::Material> &materials)
 {
     std::vector<uint32_t> order;
-    for (uint32_t i = 1; i < model.materials().size(); ++i)
+    for (uint32_t i = 1; i < materials.size(); ++i)
         order.push_back(i);
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        return model.materials()[a].id < model.materials()[b].id;
+        return materials[a].id < materials[b].id;
     });
     Json classes = Json::array();
     for (const uint32_t i : order) {
-        const sbrt::Material &m = model.materials()[i];
-        const auto rgb = sbrt::material_color(model, i);
+        const sbrt::Material &m = materials[i];
+        const auto rgb = sbrt::material_color(materials, i);
         classes.push_back({{"class", m.id},
                            {"label", m.label},
                            {"color", {int(rgb[0]), int(rgb[1]), int(rgb[2])}}});
@@ -77,8 +79,15 @@ void print_report_json(const char *name, const sbrt::Model &model,
                        const sbrt::StacksFileInfo &file,
                        const sbrt::PropertyChannels *channels)
 {
-    const sbrt::Frame &f = model.frame();
-    const sbrt::Stats s = model.stats();
+    print_description_json(name, description_of(model), file, channels);
+}
+
+void print_description_json(const char *name, const ModelDescription &model,
+                            const sbrt::StacksFileInfo &file,
+                            const sbrt::PropertyChannels *channels)
+{
+    const sbrt::Frame &f = model.frame;
+    const sbrt::Stats &s = model.stats;
     Json r;
     // the keys of -g, in its order
     r["name"] = name;
@@ -94,7 +103,7 @@ void print_report_json(const char *name, const sbrt::Model &model,
     r["nsres"] = f.ns_res();
     r["ewres"] = f.ew_res();
     r["tbres"] = f.tb_res();
-    r["materials"] = model.materials().size() - 1;
+    r["materials"] = model.materials.size() - 1;
     r["voxels"] = s.voxels;
     r["voxel_bytes"] = s.voxel_bytes;
     r["sbrt_bytes"] = s.sbrt_bytes;
@@ -112,9 +121,9 @@ void print_report_json(const char *name, const sbrt::Model &model,
     r["file_compression"] =
         s.voxel_bytes ? 100.0 * (1.0 - double(file.bytes) / double(s.voxel_bytes)) : 0.0;
     r["vertical_datum"] =
-        model.vertical_datum().empty() ? Json(nullptr) : Json(model.vertical_datum());
+        model.vertical_datum.empty() ? Json(nullptr) : Json(model.vertical_datum);
     // and what only -p shows: the classes with their labels and colours
-    r["classes"] = classes_json(model);
+    r["classes"] = classes_json(model.materials);
     r["channels"] = channels ? channels_json(*channels) : Json::array();
     print_json(r);
 }

@@ -109,6 +109,20 @@ sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options)
     }
 }
 
+std::optional<sbrt::ModelSummary> read_sbrt_summary_map(const char *name)
+{
+    const std::string dir = find_sbrt(name);
+    try {
+        return read_settled(dir, [](const std::string &d) { return sbrt::read_sbrt_summary(d); });
+    }
+    catch (const sbrt::Error &e) {
+        // the blocks may be whole: only an import writes the stacks again
+        fail_with(_("SBRT <%s> is damaged or not an SBRT: %s. Import its source "
+                    "again with r3.sbrt.convert to rewrite it"),
+                  name, e.what());
+    }
+}
+
 std::shared_ptr<const sbrt::PropertyChannels> read_channels_map(const char *name,
                                                                 const sbrt::Model &model)
 {

@@ -8,6 +8,7 @@
 #define SBRT_STORE_HPP
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,12 @@ std::string find_sbrt(const char *name);
 /// or one with a member that is no regular file, throws sbrt::Error
 /// naming the map and what to do.
 sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options = {});
+/// Describes SBRT `name` from its header, materials and block summaries
+/// (sbrt::read_sbrt_summary): milliseconds, no block decoded. Nothing
+/// where its stacks have no summaries (written before format 2.1: read
+/// the model instead); a damaged summary throws sbrt::Error naming the
+/// map and what to do.
+std::optional<sbrt::ModelSummary> read_sbrt_summary_map(const char *name);
 /// The property channels of SBRT `name` whose model (as read) is `model`;
 /// nullptr where it has none. A damaged channels member throws
 /// sbrt::Error naming the map and what to do.

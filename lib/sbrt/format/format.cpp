@@ -53,6 +53,26 @@ std::string encode_cats(const Model &model)
 
 void decode_cats(const std::string &text, Model &model, const std::string &what)
 {
+    decode_cats(text, model.materials(), what);
+}
+
+namespace {
+
+/// Material index whose class id is `id` (EMPTY excluded), or -1: as
+/// Model::find_material.
+int64_t find_material(const std::vector<Material> &materials, int32_t id)
+{
+    for (size_t i = 1; i < materials.size(); ++i)
+        if (materials[i].id == id)
+            return int64_t(i);
+    return -1;
+}
+
+} // namespace
+
+void decode_cats(const std::string &text, std::vector<Material> &materials,
+                 const std::string &what)
+{
     std::istringstream in(text);
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
@@ -64,9 +84,9 @@ void decode_cats(const std::string &text, Model &model, const std::string &what)
         if (colon == std::string::npos || end != line.c_str() + colon ||
             id < INT32_MIN || id > INT32_MAX)
             fail(what, " line ", number, ": expected id:label");
-        const int64_t m = model.find_material(int32_t(id));
+        const int64_t m = find_material(materials, int32_t(id));
         if (m > 0)
-            model.materials()[size_t(m)].label = valid_utf8(line.substr(colon + 1));
+            materials[size_t(m)].label = valid_utf8(line.substr(colon + 1));
     }
 }
 
@@ -83,7 +103,13 @@ std::string encode_colors(const Model &model)
 
 void decode_colors(const std::string &text, Model &model, const std::string &what)
 {
-    for (Material &m : model.materials())
+    decode_colors(text, model.materials(), what);
+}
+
+void decode_colors(const std::string &text, std::vector<Material> &materials,
+                   const std::string &what)
+{
+    for (Material &m : materials)
         m.has_color = false;
     std::istringstream in(text);
     std::string line;
@@ -96,9 +122,9 @@ void decode_colors(const std::string &text, Model &model, const std::string &wha
             size_t(used) != line.size() || id < INT32_MIN || id > INT32_MAX || r < 0 ||
             r > 255 || g < 0 || g > 255 || b < 0 || b > 255)
             fail(what, " line ", number, ": expected id red:green:blue");
-        const int64_t m = model.find_material(int32_t(id));
+        const int64_t m = find_material(materials, int32_t(id));
         if (m > 0) {
-            Material &material = model.materials()[size_t(m)];
+            Material &material = materials[size_t(m)];
             material.red = uint8_t(r);
             material.green = uint8_t(g);
             material.blue = uint8_t(b);
@@ -129,13 +155,23 @@ std::string encode_datum(const Model &model)
     return model.vertical_datum() + "\n";
 }
 
-void decode_datum(const std::string &text, Model &model, const std::string &what)
+namespace {
+
+/// The datum member's one line, checked (throws naming `what`).
+std::string datum_of(const std::string &text, const std::string &what)
 {
     std::string datum = text;
     while (!datum.empty() && (datum.back() == '\n' || datum.back() == '\r'))
         datum.pop_back();
     check_datum(datum, what);
-    model.set_vertical_datum(datum);
+    return datum;
+}
+
+} // namespace
+
+void decode_datum(const std::string &text, Model &model, const std::string &what)
+{
+    model.set_vertical_datum(datum_of(text, what));
 }
 
 std::string encode_header(const Model &model, size_t channels)
@@ -239,6 +275,34 @@ std::shared_ptr<const PropertyChannels> read_channels(const std::string &directo
         std::make_shared<const MappedFile>(*member, path), path, model);
 }
 
+namespace {
+
+/// The labels and colours of `cats` and `colors` into `materials`, and
+/// the vertical datum of `datum`, where the SBRT directory has them.
+void read_legend_members(const MemberDirectory &dir, std::vector<Material> &materials,
+                         std::string &datum_text)
+{
+    if (const auto cats = dir.open_regular_if_present("cats")) {
+        const std::string cats_path = dir.member_path("cats");
+        const std::vector<uint8_t> bytes = read_all(*cats, cats_path);
+        decode_cats(std::string(bytes.begin(), bytes.end()), materials, cats_path);
+    }
+    if (const auto colors = dir.open_regular_if_present("colors")) {
+        const std::string colors_path = dir.member_path("colors");
+        const std::vector<uint8_t> bytes = read_all(*colors, colors_path);
+        decode_colors(std::string(bytes.begin(), bytes.end()), materials, colors_path);
+    }
+    if (const auto datum = dir.open_regular_if_present("datum")) {
+        const std::string datum_path = dir.member_path("datum");
+        const std::vector<uint8_t> bytes = read_all(*datum, datum_path);
+        if (bytes.size() > 2 * MAX_DATUM_CHARS)
+            fail(datum_path, ": a vertical datum of more than ", MAX_DATUM_CHARS, " characters");
+        datum_text = datum_of(std::string(bytes.begin(), bytes.end()), datum_path);
+    }
+}
+
+} // namespace
+
 Model read_sbrt(const std::string &directory, const ReadOptions &options)
 {
     // members relative to the directory: no links, no FIFOs (issue 28)
@@ -248,24 +312,26 @@ Model read_sbrt(const std::string &directory, const ReadOptions &options)
         std::make_shared<const MappedFile>(dir.open_regular("stacks"), stacks_path);
     Model model =
         decode_stacks(file->data(), file->size(), stacks_path, file, options);
-    if (const auto cats = dir.open_regular_if_present("cats")) {
-        const std::string cats_path = dir.member_path("cats");
-        const std::vector<uint8_t> bytes = read_all(*cats, cats_path);
-        decode_cats(std::string(bytes.begin(), bytes.end()), model, cats_path);
-    }
-    if (const auto colors = dir.open_regular_if_present("colors")) {
-        const std::string colors_path = dir.member_path("colors");
-        const std::vector<uint8_t> bytes = read_all(*colors, colors_path);
-        decode_colors(std::string(bytes.begin(), bytes.end()), model, colors_path);
-    }
-    if (const auto datum = dir.open_regular_if_present("datum")) {
-        const std::string datum_path = dir.member_path("datum");
-        const std::vector<uint8_t> bytes = read_all(*datum, datum_path);
-        if (bytes.size() > 2 * MAX_DATUM_CHARS)
-            fail(datum_path, ": a vertical datum of more than ", MAX_DATUM_CHARS, " characters");
-        decode_datum(std::string(bytes.begin(), bytes.end()), model, datum_path);
-    }
+    std::string datum;
+    read_legend_members(dir, model.materials(), datum);
+    model.set_vertical_datum(datum);
     return model;
+}
+
+std::optional<ModelSummary> read_sbrt_summary(const std::string &directory)
+{
+    const MemberDirectory dir(directory);
+    const std::string stacks_path = dir.member_path("stacks");
+    std::optional<ModelSummary> summary;
+    {
+        const MappedFile file(dir.open_regular("stacks"), stacks_path);
+        summary = read_stacks_summary(file.data(), file.size(), stacks_path);
+    }
+    if (!summary)
+        return summary;
+    read_legend_members(dir, summary->materials, summary->vertical_datum);
+    summary->has_channels = dir.open_regular_if_present("channels").has_value();
+    return summary;
 }
 
 } // namespace sbrt

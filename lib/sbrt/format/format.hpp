@@ -10,9 +10,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "format/block_summary.hpp"
 #include "format/channels_file.hpp"
 #include "format/format_v1.hpp"
 #include "format/format_v2.hpp"
@@ -34,6 +36,9 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
 /// Text `cats`: one "id:label" line per material with a label.
 std::string encode_cats(const Model &model);
 void decode_cats(const std::string &text, Model &model, const std::string &what);
+/// The same into a material table (EMPTY first).
+void decode_cats(const std::string &text, std::vector<Material> &materials,
+                 const std::string &what);
 
 /// Text `colors`: one "id red:green:blue" line per material with a colour
 /// of its own. Where an SBRT has this member it is the truth (classes not
@@ -41,6 +46,8 @@ void decode_cats(const std::string &text, Model &model, const std::string &what)
 /// `stacks`.
 std::string encode_colors(const Model &model);
 void decode_colors(const std::string &text, Model &model, const std::string &what);
+void decode_colors(const std::string &text, std::vector<Material> &materials,
+                   const std::string &what);
 /// `datum`: the model's vertical datum, one line ("NAP"); decoding takes
 /// at most MAX_DATUM_CHARS printable characters, else throws naming `what`.
 constexpr size_t MAX_DATUM_CHARS = 80;
@@ -70,6 +77,12 @@ void rewrite_legend(const std::string &directory, const Model &model,
                     const std::string &history);
 /// Reads and validates an SBRT directory.
 Model read_sbrt(const std::string &directory, const ReadOptions &options = {});
+/// Describes an SBRT directory without decoding its model: the header,
+/// materials (with `cats` and `colors`), vertical datum and block
+/// summaries of a format 2.1 `stacks`, the Table 1 figures read_sbrt's
+/// model would give. Nothing where its stacks have no summaries (v1, 2.0:
+/// read_sbrt it instead); a damaged member throws sbrt::Error naming it.
+std::optional<ModelSummary> read_sbrt_summary(const std::string &directory);
 /// \brief What a `stacks` file is on disk.
 struct StacksFileInfo {
     uint16_t major = 0, minor = 0;

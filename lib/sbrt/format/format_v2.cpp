@@ -17,15 +17,13 @@
 #include "format/byte_io.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
+#include "format/block_summary.hpp"
 #include "format/stacks_fields.hpp"
+#include "format/stacks_v2_layout.hpp"
 
 namespace sbrt {
 
 namespace {
-
-constexpr uint8_t COMPRESSION_ZSTD = 1;
-constexpr size_t BLOCK_ENTRY_BYTES = 24;
-constexpr uint32_t MAX_BLOCK_SIZE = 4096;
 
 struct CompressContext {
     void operator()(ZSTD_CCtx *c) const { ZSTD_freeCCtx(c); }
@@ -35,43 +33,6 @@ struct DecompressContext {
 };
 using CompressorPtr = std::unique_ptr<ZSTD_CCtx, CompressContext>;
 using DecompressorPtr = std::unique_ptr<ZSTD_DCtx, DecompressContext>;
-
-/// \brief The blocks of a grid: square tiles of cells, row by row.
-struct BlockGrid {
-    int rows, cols, size;
-    // in 64 bits: rows + size - 1 may pass INT32_MAX
-    int block_rows() const { return int((int64_t(rows) + size - 1) / size); }
-    int block_cols() const { return int((int64_t(cols) + size - 1) / size); }
-    /// At most rows * cols <= 2^31 - 1 (Frame::validate).
-    int count() const { return int(int64_t(block_rows()) * block_cols()); }
-    int first_row(int block) const { return block / block_cols() * size; }
-    int first_col(int block) const { return block % block_cols() * size; }
-    int height(int block) const { return std::min(size, rows - first_row(block)); }
-    int width(int block) const { return std::min(size, cols - first_col(block)); }
-    uint64_t cells(int block) const { return uint64_t(height(block)) * uint64_t(width(block)); }
-    /// Calls visit(cell) for the cells of `block` (indices row by row of
-    /// the whole grid), in the order the block stores them.
-    template <typename Visit>
-    void for_each_cell(int block, const Visit &visit) const
-    {
-        const int r0 = first_row(block), c0 = first_col(block);
-        for (int r = r0; r < r0 + height(block); ++r)
-            for (int c = c0; c < c0 + width(block); ++c)
-                visit(uint64_t(r) * uint64_t(cols) + uint64_t(c));
-    }
-};
-
-/// \brief One block as stored in the block table.
-struct BlockEntry {
-    uint64_t offset = 0;
-    uint32_t compressed = 0, raw = 0, intervals = 0, crc = 0;
-};
-
-uint64_t raw_block_size(const StacksV2Widths &w, uint64_t cells, uint64_t intervals)
-{
-    const uint64_t top_bytes = w.tops == TopEncoding::VoxelBoundaries ? 2 : 4;
-    return cells * w.count_bytes + intervals * (w.material_bytes + top_bytes);
-}
 
 /// The uncompressed bytes of one block (counts, materials, tops) into
 /// `raw`; returns the block's interval count.
@@ -108,100 +69,6 @@ uint32_t encode_block(const Model &model, const BlockGrid &grid, int block,
         }
     });
     return uint32_t(intervals);
-}
-
-/// \brief The fields of a v2 header that a reader needs.
-struct HeaderV2 {
-    uint16_t minor = FORMAT_V2_MINOR;
-    uint32_t header_size = STACKS_V2_HEADER_SIZE;
-    uint32_t required = 0, optional = 0;
-    Frame frame;
-    uint32_t materials = 0;
-    uint64_t intervals = 0;
-    uint32_t block_size = 0;
-    StacksV2Widths widths;
-    uint8_t compression = COMPRESSION_ZSTD;
-    uint64_t materials_at = 0, table_at = 0, end = 0;
-    uint32_t crc_materials = 0, crc_table = 0;
-};
-
-std::vector<uint8_t> encode_header(const HeaderV2 &h)
-{
-    const Frame &f = h.frame;
-    ByteWriter out;
-    out.reserve(STACKS_V2_HEADER_SIZE);
-    out.raw(STACKS_MAGIC, sizeof STACKS_MAGIC);
-    out.u16(FORMAT_V2_MAJOR);
-    out.u16(h.minor);
-    out.u32(h.header_size);
-    out.u32(h.required);
-    out.u32(h.optional);
-    write_frame(out, f);
-    out.u32(h.materials);
-    out.u64(h.intervals);
-    out.u32(h.block_size);
-    out.u32(h.block_size);
-    out.u8(h.widths.count_bytes);
-    out.u8(h.widths.material_bytes);
-    out.u8(uint8_t(h.widths.tops));
-    out.u8(h.compression);
-    out.u64(h.materials_at);
-    out.u64(h.table_at);
-    out.u64(h.end);
-    out.u32(h.crc_materials);
-    out.u32(h.crc_table);
-    out.u32(crc32_of(out.bytes().data(), out.size()));
-    SBRT_CHECK_EQ(out.size(), size_t(STACKS_V2_HEADER_SIZE), "format v2 header");
-    return std::move(out.bytes());
-}
-
-/// Reads the header by prefix: the fields of 2.0, then skips what a later
-/// minor version put before the header checksum.
-HeaderV2 decode_header(const uint8_t *data, size_t size, const std::string &what)
-{
-    ByteReader in(data, size, what);
-    in.seek(sizeof STACKS_MAGIC);
-    if (in.u16() != FORMAT_V2_MAJOR)
-        fail(what, ": not a format 2 stacks file");
-    HeaderV2 h;
-    h.minor = in.u16();
-    h.header_size = in.u32();
-    if (h.header_size < STACKS_V2_HEADER_SIZE || h.header_size > (1u << 20))
-        fail(what, ": header size ", h.header_size, " not in ",
-             STACKS_V2_HEADER_SIZE, "..", 1u << 20, " (corrupt file)");
-    if (size < h.header_size)
-        fail(what, ": truncated header (", size, " of ", h.header_size, " bytes)");
-    if (crc32_of(data, h.header_size - 4) !=
-        ByteReader(data + h.header_size - 4, 4, what).u32())
-        fail(what, ": header checksum mismatch (corrupt file)");
-    h.required = in.u32();
-    h.optional = in.u32();
-    if (h.required & ~V2_KNOWN_REQUIRED_FEATURES)
-        fail(what, ": written by a newer r3.sbrt (format 2.", h.minor,
-             ", features 0x", std::hex, h.required & ~V2_KNOWN_REQUIRED_FEATURES,
-             std::dec, " not known here); update r3.sbrt to read it");
-    h.frame = read_frame(in, what);
-    h.materials = in.u32();
-    h.intervals = in.u64();
-    h.block_size = in.u32();
-    if (in.u32() != h.block_size || h.block_size == 0 || h.block_size > MAX_BLOCK_SIZE)
-        fail(what, ": block size not square or not in 1..", MAX_BLOCK_SIZE);
-    h.widths.count_bytes = in.u8();
-    h.widths.material_bytes = in.u8();
-    const uint8_t tops = in.u8();
-    h.compression = in.u8();
-    if ((h.widths.count_bytes != 1 && h.widths.count_bytes != 2 &&
-         h.widths.count_bytes != 4) ||
-        (h.widths.material_bytes != 1 && h.widths.material_bytes != 2) ||
-        tops > uint8_t(TopEncoding::Float32) || h.compression != COMPRESSION_ZSTD)
-        fail(what, ": unknown field widths or compression (corrupt file)");
-    h.widths.tops = TopEncoding(tops);
-    h.materials_at = in.u64();
-    h.table_at = in.u64();
-    h.end = in.u64();
-    h.crc_materials = in.u32();
-    h.crc_table = in.u32();
-    return h;
 }
 
 /// Whether `block` holds a cell within one cell of `area` (all, without).
@@ -275,7 +142,8 @@ void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &
         fail("write_stacks_v2: block size ", options.block_size, " not in 1..",
              MAX_BLOCK_SIZE);
     HeaderV2 h;
-    h.optional = options.optional_features;
+    h.optional = options.optional_features | (options.summary ? V2_OPTIONAL_SUMMARY : 0);
+    h.minor = options.summary ? FORMAT_V2_MINOR : 0;
     h.frame = f;
     h.materials = uint32_t(model.materials().size());
     h.intervals = model.intervals().size();
@@ -295,6 +163,7 @@ void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &
     const unsigned threads = thread_count(options.threads);
     const int batch = int(threads) * 4;
     std::vector<BlockEntry> entries(size_t(grid.count()));
+    std::vector<BlockSummary> summaries(options.summary ? size_t(grid.count()) : 0);
     std::vector<std::vector<uint8_t>> compressed(static_cast<size_t>(batch));
     for (int first = 0; first < grid.count(); first += batch) {
         const int last = std::min(grid.count(), first + batch);
@@ -317,12 +186,21 @@ void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &
             e.raw = uint32_t(raw.size());
             e.crc = crc32_of(out.data(), n);
             e.intervals = intervals;
+            if (options.summary) {
+                BlockSummarizer summary(model.materials().size());
+                grid.for_each_cell(block, [&](uint64_t cell) { summary.add_stack(model, cell); });
+                summaries[size_t(block)] = summary.finish();
+            }
         });
         for (int block = first; block < last; ++block) {
             const std::vector<uint8_t> &out = compressed[size_t(block - first)];
             entries[size_t(block)].offset = sink.size() - start;
             sink.append(out.data(), out.size());
         }
+    }
+    if (options.summary) {
+        const std::vector<uint8_t> section = encode_block_summaries(summaries);
+        sink.append(section.data(), section.size());
     }
     ByteWriter table;
     for (const BlockEntry &e : entries) {
@@ -336,7 +214,7 @@ void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &
     h.crc_table = crc32_of(table.bytes().data(), table.size());
     sink.append(table.bytes().data(), table.size());
     h.end = sink.size() - start;
-    const std::vector<uint8_t> header = encode_header(h);
+    const std::vector<uint8_t> header = encode_header_v2(h);
     sink.overwrite(start, header.data(), header.size());
 }
 
@@ -351,52 +229,15 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
                        const ReadOptions &options)
 {
     const unsigned threads = options.threads;
-    if (size < sizeof STACKS_MAGIC + 8 || std::memcmp(data, STACKS_MAGIC, sizeof STACKS_MAGIC) != 0)
-        fail(what, ": not an SBRT stacks file (bad magic number)");
-    const HeaderV2 h = decode_header(data, size, what);
+    // header, materials and block table checked; the 2.1 summaries are
+    // not needed to decode
+    StacksV2Layout layout = open_stacks_v2(data, size, what);
+    const HeaderV2 &h = layout.header;
     const Frame &f = h.frame;
-    if (h.materials == 0 || h.materials > MAX_MATERIALS ||
-        (h.widths.material_bytes == 1 && h.materials > 0x100))
-        fail(what, ": material count ", h.materials, " not in 1..",
-             h.widths.material_bytes == 1 ? 0x100 : MAX_MATERIALS);
-    if (h.end != size)
-        fail(what, ": file has ", size, " bytes, its header describes ", h.end,
-             h.end > size ? " (truncated)" : "");
-    const BlockGrid grid{f.rows, f.cols, int(h.block_size)};
-    const uint64_t blocks = uint64_t(grid.block_rows()) * uint64_t(grid.block_cols());
-    const uint64_t materials_end = h.materials_at + uint64_t(h.materials) * MATERIAL_RECORD_BYTES;
-    if (blocks > INT32_MAX || h.materials_at != h.header_size ||
-        materials_end > h.table_at || h.table_at > size ||
-        size - h.table_at != blocks * BLOCK_ENTRY_BYTES)
-        fail(what, ": section offsets do not match the counts (corrupt file)");
-    if (crc32_of(data + h.materials_at, materials_end - h.materials_at) !=
-            h.crc_materials ||
-        crc32_of(data + h.table_at, size - h.table_at) != h.crc_table)
-        fail(what, ": data checksum mismatch (corrupt file)");
-
-    ByteReader in(data, size, what);
-    in.seek(h.materials_at);
-    std::vector<Material> materials = read_materials(in, h.materials);
-
-    in.seek(h.table_at);
-    std::vector<BlockEntry> entries(blocks);
-    uint64_t total = 0;
-    for (size_t b = 0; b < entries.size(); ++b) {
-        BlockEntry &e = entries[b];
-        e.offset = in.u64();
-        e.compressed = in.u32();
-        e.raw = in.u32();
-        e.intervals = in.u32();
-        e.crc = in.u32();
-        if (e.offset < materials_end || e.offset > h.table_at ||
-            e.compressed > h.table_at - e.offset ||
-            e.raw != raw_block_size(h.widths, grid.cells(int(b)), e.intervals))
-            fail(what, ": block ", b, " lies outside the data or has the wrong "
-                 "size (corrupt file)");
-        total += e.intervals;
-    }
-    if (total != h.intervals)
-        fail(what, ": blocks hold ", total, " intervals, header says ", h.intervals);
+    const BlockGrid &grid = layout.grid;
+    const std::vector<BlockEntry> &entries = layout.entries;
+    const uint64_t blocks = entries.size();
+    std::vector<Material> materials = std::move(layout.materials);
     std::vector<char> wanted = blocks_meeting(grid, f, options.area);
     // with points: only the blocks that hold one, and of them only the
     // points' cells where the SBRT has no property channels (their values

@@ -22,10 +22,11 @@
 
 namespace sbrt {
 
-/// Version 2.0. A reader takes any 2.x file whose required features it
-/// knows; fields a later minor version adds go after those of 2.0.
+/// Version 2.1 (2.0 with the block summaries). A reader takes any 2.x
+/// file whose required features it knows; fields a later minor version
+/// adds go after those of 2.0.
 constexpr uint16_t FORMAT_V2_MAJOR = 2;
-constexpr uint16_t FORMAT_V2_MINOR = 0;
+constexpr uint16_t FORMAT_V2_MINOR = 1;
 /// Size of the 2.0 header (magic to header checksum).
 constexpr uint32_t STACKS_V2_HEADER_SIZE = 152;
 /// Required feature bits this build understands (none yet: 2.0 files set
@@ -35,6 +36,11 @@ constexpr uint32_t V2_KNOWN_REQUIRED_FEATURES = 0;
 /// Optional feature: the SBRT has a `channels` member (per-voxel property
 /// channels, issue 29); readers that do not know it read the classes.
 constexpr uint32_t V2_OPTIONAL_CHANNELS = 1u << 0;
+/// Optional feature (2.1): a section of per-block summaries lies between
+/// the last block and the block table (format/block_summary.hpp); 2.0
+/// readers skip it, readers of 2.1 describe the model from it without
+/// decoding a block.
+constexpr uint32_t V2_OPTIONAL_SUMMARY = 1u << 1;
 
 /// How tops are stored in a block.
 enum class TopEncoding : uint8_t {
@@ -48,6 +54,9 @@ struct StacksV2Options {
     int zstd_level = 3;
     unsigned threads = 0; ///< 0: all cores
     uint32_t optional_features = 0; ///< V2_OPTIONAL_* bits
+    /// Writes the block summaries (2.1); false writes a 2.0 file, as
+    /// earlier versions did (for tests of older files).
+    bool summary = true;
 };
 
 /// \brief The field widths a model needs (smallest exact ones).
@@ -69,6 +78,8 @@ StacksV2Widths widths_for(const Model &model);
 ///   blocks, row by row of blocks: one zstd frame each holding the
 ///   counts of its cells (row by row), then the materials of its
 ///   intervals, then their tops;
+///   2.1, with V2_OPTIONAL_SUMMARY: the block summaries
+///   (encode_block_summaries), ending where the block table begins;
 ///   block table: u64 offset, u32 compressed size, u32 uncompressed size,
 ///   u32 intervals, u32 crc32 of the compressed bytes, per block.
 void write_stacks_v2(ByteSink &sink, const Model &model,
