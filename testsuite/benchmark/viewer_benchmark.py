@@ -111,6 +111,7 @@ def viewer(sbrt, width, height, extra=()):
         FIGURES["viewer_first_s"] = first - started
         print("viewer first frame shown: %.2f s after g.gui.sbrt started" % (first - started))
         FIGURES["viewer_fps"], FIGURES["viewer_refined_ms"] = [], []
+        FIGURES["viewer_refined_server_ms"], FIGURES["viewer_refined_options"] = [], []
         x, y, w, h = canvas
         for drag in range(3):
             count = len(events())
@@ -129,7 +130,8 @@ def viewer(sbrt, width, height, extra=()):
                 if not drags:
                     raise RuntimeError("g.gui.sbrt logged no drag (xdotool reached no canvas)")
                 frames = [e for e in new if e["event"] == "frame"]
-                refined = [f["t"] for f in frames if f["full"] and f["t"] > drags[-1]]
+                exact = [f for f in frames if f["full"] and f["t"] > drags[-1]]
+                refined = [f["t"] for f in exact]
                 if refined or time.time() > deadline:
                     break
                 time.sleep(0.2)
@@ -138,14 +140,21 @@ def viewer(sbrt, width, height, extra=()):
             FIGURES["viewer_fps"].append(len(during) / (drags[-1] - drags[0]))
             if refined:
                 FIGURES["viewer_refined_ms"].append((refined[0] - drags[-1]) * 1000)
+                FIGURES["viewer_refined_server_ms"].append(exact[0]["ms"])
+                # the options that set the exact frame apart (normals=kernel
+                # on a model of voxel steps)
+                FIGURES["viewer_refined_options"] = sorted(
+                    w for w in exact[0]["words"] if w.startswith(("normals=", "smooth=", "kernel=")))
             print("viewer drag %d: %d mouse moves in %.2f s; %d frames shown while "
                   "dragging (%d reduced %d x %d): %.1f frames/s; refined %.0f ms "
-                  "after the last move" % (
+                  "after the last move%s" % (
                       drag + 1, len(drags), drags[-1] - drags[0], len(during),
                       len(reduced), reduced[0]["width"] if reduced else 0,
                       reduced[0]["height"] if reduced else 0,
                       len(during) / (drags[-1] - drags[0]),
-                      (refined[0] - drags[-1]) * 1000 if refined else float("nan")))
+                      (refined[0] - drags[-1]) * 1000 if refined else float("nan"),
+                      " (server %.0f ms%s)" % (exact[0]["ms"], "".join(
+                          " " + w for w in FIGURES["viewer_refined_options"])) if exact else ""))
     finally:
         gui.terminate()
         gui.wait(timeout=10)
