@@ -6,24 +6,42 @@
 #include "model/interval_array.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace sbrt {
 
+namespace {
+
+/// The records packed to 4 bytes, or nothing where one does not fit.
+std::optional<CompactIntervals> compacted(const Interval *first, const Interval *last)
+{
+    if (!std::all_of(first, last, fits_compact))
+        return std::nullopt;
+    CompactIntervals compact(size_t(last - first));
+    for (size_t i = 0; i < compact.size(); ++i)
+        compact[i] = voxel_interval<CompactInterval>(first[i].material, uint32_t(first[i].top));
+    return compact;
+}
+
+} // namespace
+
 IntervalArray IntervalArray::packed(Intervals wide)
 {
-    if (!std::all_of(wide.begin(), wide.end(), fits_compact))
+    std::optional<CompactIntervals> compact = compacted(wide.data(), wide.data() + wide.size());
+    if (!compact)
         return IntervalArray(std::move(wide));
-    CompactIntervals compact(wide.size());
-    for (size_t i = 0; i < wide.size(); ++i)
-        compact[i] = voxel_interval<CompactInterval>(wide[i].material, uint32_t(wide[i].top));
-    return IntervalArray(std::move(compact));
+    Intervals().swap(wide); // released before the compact array is kept
+    return IntervalArray(std::move(*compact));
 }
 
 IntervalArray IntervalArray::packed() &&
 {
-    if (is_compact_ || keep_)
+    if (is_compact_ || !owned_wide_)
         return std::move(*this);
-    return packed(std::move(wide_));
+    std::optional<CompactIntervals> compact = compacted(view_, view_ + size_);
+    if (!compact)
+        return std::move(*this);
+    return IntervalArray(std::move(*compact));
 }
 
 } // namespace sbrt

@@ -65,14 +65,25 @@ inline bool fits_compact(const Interval &iv)
            float(uint16_t(iv.top)) == iv.top;
 }
 
-/// \brief Read-only intervals: compact (owned) or wide (owned, or a view
-/// that keeps alive what holds its memory, `keep`: the mapped file);
-/// copies share a view.
+/// \brief Read-only intervals: compact or wide, owned or a view that keeps
+/// alive what holds its memory (`keep`: the mapped file). Copies share the
+/// records (they are never written after construction): a model copied
+/// for a scene costs its index, not its intervals.
 class IntervalArray {
 public:
     IntervalArray() = default;
-    IntervalArray(Intervals owned) : wide_(std::move(owned)) {}
-    IntervalArray(CompactIntervals owned) : compact_(std::move(owned)), is_compact_(true) {}
+    IntervalArray(Intervals owned)
+        : IntervalArray(std::make_shared<const Intervals>(std::move(owned)))
+    {
+    }
+    IntervalArray(CompactIntervals owned)
+    {
+        auto shared = std::make_shared<const CompactIntervals>(std::move(owned));
+        compact_view_ = shared->data();
+        size_ = shared->size();
+        keep_ = std::move(shared);
+        is_compact_ = true;
+    }
     IntervalArray(std::shared_ptr<const void> keep, const Interval *data, size_t size)
         : keep_(std::move(keep)), view_(data), size_(size)
     {
@@ -84,33 +95,28 @@ public:
     /// view (the mapped file, no copy) or a compact array as it is.
     IntervalArray packed() &&;
 
-    size_t size() const
-    {
-        return is_compact_ ? compact_.size() : keep_ ? size_ : wide_.size();
-    }
+    size_t size() const { return size_; }
     bool empty() const { return size() == 0; }
     /// Whether the intervals are 4-byte CompactIntervals.
     bool is_compact() const { return is_compact_; }
     /// The records, of the kind held (the other is null).
     const CompactInterval *compact_data() const
     {
-        return is_compact_ ? compact_.data() : nullptr;
+        return is_compact_ ? compact_view_ : nullptr;
     }
-    const Interval *wide_data() const
-    {
-        return is_compact_ ? nullptr : keep_ ? view_ : wide_.data();
-    }
+    const Interval *wide_data() const { return is_compact_ ? nullptr : view_; }
     /// Interval i, widened where held compact.
     Interval operator[](size_t i) const
     {
         if (is_compact_)
-            return {compact_[i].material, float(compact_[i].top)};
-        return wide_data()[i];
+            return {compact_view_[i].material, float(compact_view_[i].top)};
+        return view_[i];
     }
     /// Bytes per interval in memory: 4 compact, 8 wide.
     unsigned record_bytes() const { return is_compact_ ? 4 : 8; }
-    /// Whether the intervals are a view of memory held elsewhere.
-    bool is_view() const { return keep_ != nullptr; }
+    /// Whether the intervals are a view of memory held elsewhere (a
+    /// mapped file), not records of their own.
+    bool is_view() const { return keep_ != nullptr && !owned_wide_ && !is_compact_; }
 
     /// Calls f with the records' first pointer (const CompactInterval * or
     /// const Interval *): hot loops are compiled once per kind.
@@ -118,17 +124,25 @@ public:
     decltype(auto) visit(F &&f) const
     {
         if (is_compact_)
-            return f(compact_.data());
-        return f(wide_data());
+            return f(compact_view_);
+        return f(view_);
     }
 
 private:
-    Intervals wide_;
-    CompactIntervals compact_;
-    bool is_compact_ = false;
+    explicit IntervalArray(std::shared_ptr<const Intervals> owned)
+        : owned_wide_(owned), view_(owned->data()), size_(owned->size())
+    {
+        keep_ = std::move(owned);
+    }
+
+    /// what holds the records: owned arrays (shared by copies) or the file
     std::shared_ptr<const void> keep_;
+    /// the owned wide records, where these are they (packed() reads them)
+    std::shared_ptr<const Intervals> owned_wide_;
     const Interval *view_ = nullptr;
+    const CompactInterval *compact_view_ = nullptr;
     size_t size_ = 0;
+    bool is_compact_ = false;
 };
 
 } // namespace sbrt
