@@ -138,25 +138,32 @@ std::string record_problem(const BlockSummary &s, uint64_t cells, uint32_t inter
 
 } // namespace
 
+uint64_t find_block_summaries(const uint8_t *data, uint64_t blocks_end, uint64_t end,
+                              size_t blocks, const std::string &what)
+{
+    const std::string where = what + " block summaries";
+    // the trailer: count, checksum, the section's size
+    if (end < blocks_end || end - blocks_end < TRAILER_BYTES)
+        fail(where, ": missing (corrupt file)");
+    ByteReader trailer(data + end - TRAILER_BYTES, TRAILER_BYTES, where);
+    const uint32_t count = trailer.u32(), crc = trailer.u32();
+    const uint64_t bytes = trailer.u64();
+    if (count != blocks || bytes < TRAILER_BYTES + blocks * RECORD_BYTES ||
+        bytes > end - blocks_end)
+        fail(where, ": size does not match the ", blocks, " blocks (corrupt file)");
+    if (crc32_of(data + end - bytes, size_t(bytes) - TRAILER_BYTES) != crc)
+        fail(where, ": checksum mismatch (corrupt file)");
+    return end - bytes;
+}
+
 std::vector<BlockSummary> decode_block_summaries(const uint8_t *data, uint64_t begin,
                                                  uint64_t end, const SummaryBounds &bounds,
                                                  const std::string &what)
 {
     const std::string where = what + " block summaries";
     const size_t blocks = bounds.cells.size();
-    // the trailer: count, checksum, the section's size
-    if (end < begin || end - begin < TRAILER_BYTES)
-        fail(where, ": missing (corrupt file)");
-    ByteReader trailer(data + end - TRAILER_BYTES, TRAILER_BYTES, where);
-    const uint32_t count = trailer.u32(), crc = trailer.u32();
-    const uint64_t bytes = trailer.u64();
-    if (count != blocks || bytes < TRAILER_BYTES + blocks * RECORD_BYTES ||
-        bytes > end - begin)
-        fail(where, ": size does not match the ", blocks, " blocks (corrupt file)");
-    const uint8_t *records = data + end - bytes;
-    const size_t records_bytes = size_t(bytes) - TRAILER_BYTES;
-    if (crc32_of(records, records_bytes) != crc)
-        fail(where, ": checksum mismatch (corrupt file)");
+    const uint8_t *records = data + begin;
+    const size_t records_bytes = size_t(end - begin) - TRAILER_BYTES;
 
     // the records, each checked against its block
     ByteReader in(records, records_bytes, where);
@@ -225,14 +232,10 @@ std::optional<ModelSummary> read_stacks_summary(const uint8_t *data, size_t size
     if (!(h.optional & V2_OPTIONAL_SUMMARY))
         return std::nullopt;
 
-    // the section lies after every block, up to the block table
-    uint64_t blocks_end = layout.materials_end;
     SummaryBounds bounds;
     for (size_t b = 0; b < layout.entries.size(); ++b) {
-        const BlockEntry &e = layout.entries[b];
-        blocks_end = std::max(blocks_end, e.offset + e.compressed);
         bounds.cells.push_back(layout.grid.cells(int(b)));
-        bounds.intervals.push_back(e.intervals);
+        bounds.intervals.push_back(layout.entries[b].intervals);
     }
     bounds.materials = h.materials;
     bounds.depths = h.frame.depths;
@@ -240,7 +243,7 @@ std::optional<ModelSummary> read_stacks_summary(const uint8_t *data, size_t size
     bounds.all_compact = h.widths.tops == TopEncoding::VoxelBoundaries &&
                          voxel_tops_fit_compact(h.frame.depths);
     ModelSummary out;
-    out.blocks = decode_block_summaries(data, blocks_end, h.table_at, bounds, what);
+    out.blocks = decode_block_summaries(data, layout.summary_at, h.table_at, bounds, what);
     out.frame = h.frame;
     out.materials = layout.materials;
     out.block_size = int(h.block_size);

@@ -81,10 +81,16 @@ struct SummaryBounds {
     bool all_compact = false;        ///< every interval must be compact
 };
 
-/// Reads the summary section that ends at `end` (the block table's
-/// offset) and begins at or after `begin` (the end of the last block);
-/// checks its size, checksum and every record against `bounds`; throws
-/// sbrt::Error naming `what` where any does not hold.
+/// Where the summary section of `blocks` blocks that ends at `end` (the
+/// block table's offset) begins: at or after `blocks_end` (the end of the
+/// last block), its size and checksum checked; throws sbrt::Error naming
+/// `what` otherwise.
+uint64_t find_block_summaries(const uint8_t *data, uint64_t blocks_end, uint64_t end,
+                              size_t blocks, const std::string &what);
+
+/// Reads the section [begin, end) that find_block_summaries found and
+/// checks every record against `bounds`; throws sbrt::Error naming `what`
+/// where one does not hold.
 std::vector<BlockSummary> decode_block_summaries(const uint8_t *data, uint64_t begin,
                                                  uint64_t end, const SummaryBounds &bounds,
                                                  const std::string &what);

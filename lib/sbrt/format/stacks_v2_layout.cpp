@@ -9,6 +9,7 @@
 #include <cstring>
 #include <ios>
 
+#include "format/block_summary.hpp"
 #include "format/byte_io.hpp"
 #include "format/stacks_fields.hpp"
 #include "util/error.hpp"
@@ -135,7 +136,7 @@ StacksV2Layout open_stacks_v2(const uint8_t *data, size_t size, const std::strin
 
     in.seek(h.table_at);
     out.entries.resize(blocks);
-    uint64_t total = 0;
+    uint64_t total = 0, blocks_end = out.materials_end;
     for (size_t b = 0; b < out.entries.size(); ++b) {
         BlockEntry &e = out.entries[b];
         e.offset = in.u64();
@@ -149,9 +150,14 @@ StacksV2Layout open_stacks_v2(const uint8_t *data, size_t size, const std::strin
             fail(what, ": block ", b, " lies outside the data or has the wrong "
                  "size (corrupt file)");
         total += e.intervals;
+        blocks_end = std::max(blocks_end, e.offset + e.compressed);
     }
     if (total != h.intervals)
         fail(what, ": blocks hold ", total, " intervals, header says ", h.intervals);
+    // the summaries lie after every block, up to the table
+    if (h.optional & V2_OPTIONAL_SUMMARY)
+        out.summary_at =
+            find_block_summaries(data, blocks_end, h.table_at, out.entries.size(), what);
     return out;
 }
 

@@ -81,12 +81,17 @@ struct StacksV2Layout {
     BlockGrid grid{1, 1, 1};
     std::vector<BlockEntry> entries;
     uint64_t materials_end = 0; ///< where the blocks may begin
+    /// Where the 2.1 block summaries begin (they end at the table); 0
+    /// where the file has none.
+    uint64_t summary_at = 0;
 };
 
 /// Opens untrusted bytes of a v2 file: the header (read by prefix: the
 /// fields of 2.0, what a later minor version adds skipped), the section
 /// offsets and counts, the checksums of header, materials and block table,
-/// every table entry's place and size; throws sbrt::Error naming `what`.
+/// every table entry's place and size, and (2.1) the block summaries'
+/// place, size and checksum, so that no byte of the file goes unchecked;
+/// throws sbrt::Error naming `what`.
 StacksV2Layout open_stacks_v2(const uint8_t *data, size_t size, const std::string &what);
 
 } // namespace sbrt
