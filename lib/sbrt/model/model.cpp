@@ -111,6 +111,58 @@ Stats Model::stats() const
     return s;
 }
 
+namespace {
+
+/// Whether a stack keeps every invariant: material indices in range, tops
+/// rising within the depths, no two adjacent intervals of one material,
+/// no trailing EMPTY. Branch-free over the intervals (the hot path of
+/// every model read); list_stack_problems says what is wrong.
+template <typename Record>
+bool stack_is_sound(const Record *first, const Record *last, uint32_t materials,
+                    float depth_limit)
+{
+    float below = 0;
+    uint32_t previous = UINT32_MAX;
+    bool bad = false;
+    for (const Record *r = first; r != last; ++r) {
+        const uint32_t material = r->material;
+        const float top = float(r->top);
+        bad |= material >= materials;
+        bad |= !(top > below) || !(top <= depth_limit);
+        bad |= material == previous;
+        below = top;
+        previous = material;
+    }
+    return !bad && previous != EMPTY;
+}
+
+/// Each broken invariant of the stack of `cell`, in words, to `add`.
+template <typename Record, typename Add>
+void list_stack_problems(uint64_t cell, const Record *first, const Record *last,
+                         uint32_t materials, float depth_limit, const Add &add)
+{
+    const std::string at = "cell " + std::to_string(cell);
+    float below = 0;
+    uint32_t previous = UINT32_MAX;
+    for (const Record *r = first; r != last; ++r) {
+        const uint32_t material = r->material;
+        const float top = float(r->top);
+        if (material >= materials)
+            add(at + ": material index " + std::to_string(material) + " out of range");
+        if (!(top > below) || !(top <= depth_limit))
+            add(at + ": interval top " + std::to_string(top) + " not in (" +
+                std::to_string(below) + ", " + std::to_string(depth_limit) + "]");
+        if (material == previous)
+            add(at + ": adjacent intervals of one material");
+        below = top;
+        previous = material;
+    }
+    if (previous == EMPTY)
+        add(at + ": trailing EMPTY interval");
+}
+
+} // namespace
+
 void Model::validate() const
 {
     frame_.validate("SBRT model");
@@ -141,6 +193,7 @@ void Model::validate() const
         found[0].add("material count " + std::to_string(materials_.size()) + " not in 1.." +
                      std::to_string(MAX_MATERIALS));
     const float depth_limit = float(frame_.depths);
+    const uint32_t material_count = uint32_t(materials_.size());
     intervals_.visit([&](const auto *records) {
         for_each_row(runs, 0, [&](int run) {
             Problems &problems = found[size_t(run) + 1];
@@ -149,27 +202,12 @@ void Model::validate() const
             uint64_t i = index_.range(first).begin;
             for (uint64_t c = first; c < last; ++c) {
                 const uint64_t end = i + index_.size(c);
-                float below = 0;
-                uint32_t previous = UINT32_MAX;
-                for (; i < end; ++i) {
-                    const uint32_t material = records[i].material;
-                    const float top = float(records[i].top);
-                    if (material >= materials_.size())
-                        problems.add("cell " + std::to_string(c) + ": material index " +
-                                     std::to_string(material) + " out of range");
-                    if (!(top > below) || !(top <= depth_limit))
-                        problems.add("cell " + std::to_string(c) + ": interval top " +
-                                     std::to_string(top) + " not in (" +
-                                     std::to_string(below) + ", " +
-                                     std::to_string(depth_limit) + "]");
-                    if (material == previous)
-                        problems.add("cell " + std::to_string(c) +
-                                     ": adjacent intervals of one material");
-                    below = top;
-                    previous = material;
-                }
-                if (previous == EMPTY)
-                    problems.add("cell " + std::to_string(c) + ": trailing EMPTY interval");
+                if (!stack_is_sound(records + i, records + end, material_count, depth_limit))
+                    list_stack_problems(c, records + i, records + end, material_count,
+                                        depth_limit, [&](const std::string &text) {
+                                            problems.add(text);
+                                        });
+                i = end;
             }
         });
     });
