@@ -11,7 +11,8 @@ import wx
 
 class ViewCanvas(wx.Window):
     """Shows frames (scaled up while reduced) and reports the mouse to
-    `owner`: on_drag(mode, dx, dy), on_zoom(steps), on_still(),
+    `owner`: on_press(mode) (a button down), on_drag(mode, dx, dy),
+    on_zoom(steps), on_still() (the button released after a drag),
     on_click(x, y) (a left click that moved nothing), on_resize(); mode
     is "orbit", "pan" or "section"."""
 
@@ -103,6 +104,7 @@ class ViewCanvas(wx.Window):
         if not self.HasCapture():
             self.CaptureMouse()
         self.SetFocus()
+        self._owner.on_press(self._mode)
 
     def _on_motion(self, event):
         if self._mode is None or not event.Dragging():

@@ -56,7 +56,7 @@ class ViewState:
         self.target = None  # (x, y, z), real map units
         self.zexag = extent.zexag  # fitted to the model by r3.sbrt.render
         # kernel normals: smooth light on a voxel model's stairs (frames
-        # while something moves keep face normals: a kernel costs more)
+        # until the view rests keep face normals: a kernel costs more)
         self.smooth_shading = extent.voxels
         self.hidden = set()  # class ids
         self.opacity = {}  # class id: share of light absorbed (< 1)
@@ -182,7 +182,8 @@ class ViewState:
     # the options --------------------------------------------------------
     def words(self, width, height, moving=False):
         """r3.sbrt.render's options of this view in a width x height image
-        (`moving`: a reduced frame while the user moves something)."""
+        (`moving`: a frame while the user moves something or before the
+        view rests, lit with face normals: kernel normals cost more)."""
         words = [
             "input=" + self.sbrt,
             "size=%d,%d" % (width, height),

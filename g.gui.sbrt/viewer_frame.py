@@ -28,7 +28,14 @@ from view_dialogs import RecordOrbitDialog, SaveViewDialog
 from view_state import ViewState, ZexagScale, number
 
 REDUCTION = 2  # while the camera moves: 1/REDUCTION of the size each way
-REFINE_MS = 40  # the full frame once the mouse rests this long
+REFINE_MS = 40  # the full frame (face normals) once the mouse rests this long
+# the smooth frame (kernel normals) once nothing has changed this long and
+# no mouse button is held: longer than the pauses within a gesture (wheel
+# steps, slider moves, a hand resting on a drag: tens of ms to a couple
+# hundred), so that the kernel frame, which keeps the server busy for
+# seconds on the CPU (it cannot be interrupted), is asked for only once
+# the user has let go, never mid-gesture; short enough to feel immediate
+SMOOTH_MS = 300
 
 
 class EventLog:
@@ -86,6 +93,8 @@ class ViewerFrame(wx.Frame):
 
         self.refine = wx.Timer(self)
         self.Bind(wx.EVT_TIMER, lambda event: self.request_frame(True), self.refine)
+        self.rest = wx.Timer(self)  # SMOOTH_MS without a change: the smooth frame
+        self.Bind(wx.EVT_TIMER, self._on_rest, self.rest)
         self.Bind(wx.EVT_CLOSE, self._on_close)
         self.thread = RenderThread(
             server, lambda tag, frame, error: wx.CallAfter(self._on_frame, tag, frame, error)
@@ -145,8 +154,8 @@ class ViewerFrame(wx.Frame):
         self.smooth = wx.CheckBox(parent, label=_("Smooth shading (kernel normals)"))
         self.smooth.SetValue(self.state.smooth_shading)
         self.smooth.SetToolTip(_("Light voxel stairs as the slopes they make (on by "
-                                 "default for voxel models; frames while moving "
-                                 "use face normals)"))
+                                 "default for voxel models; frames use face normals "
+                                 "until the view rests, then the smooth one follows)"))
         view.Add(self.smooth)
         self.legend = wx.CheckBox(parent, label=_("Legend"))
         self.legend.SetValue(True)
@@ -341,16 +350,45 @@ class ViewerFrame(wx.Frame):
                        voxels=len(column.get("voxels", [])))
 
     # requests -----------------------------------------------------------
-    def request_frame(self, full):
+    def request_frame(self, full, smooth=False):
+        """Asks for a frame: reduced (not `full`), full size with face
+        normals, or (`smooth`) full size as r3.sbrt.render draws it, kernel
+        normals where smooth shading is on. Every request but a smooth one
+        is a change: it restarts the wait for the smooth frame."""
         width, height = self.canvas.GetClientSize()
         if width < 2 or height < 2:
             return
         if not full:
             width, height = max(1, width // REDUCTION), max(1, height // REDUCTION)
         self._sent += 1
-        words = self.state.words(width, height, moving=not full)
-        self.thread.request(words, (self._sent, full))
+        kind = "smooth" if smooth else "full" if full else "reduced"
+        words = self.state.words(width, height, moving=not smooth)
+        self.thread.request(words, (self._sent, kind))
+        self.log.write("request", number=self._sent, kind=kind, held=self._held())
         self.command.SetValue(self.state.command(*self.canvas.GetClientSize()))
+        if not smooth:
+            self._wait_for_rest()
+
+    def _held(self):
+        """Whether a mouse button is held: a drag on the view or a slider's
+        thumb (a gesture going on)."""
+        mouse = wx.GetMouseState()
+        return self.canvas.dragging() or mouse.LeftIsDown() or mouse.MiddleIsDown()
+
+    def _wait_for_rest(self):
+        """The smooth frame SMOOTH_MS from now, where smooth shading is on
+        (a pending one is cancelled: something changed)."""
+        self.rest.Stop()
+        if self.state.smooth_shading and not self.canvas.dragging():
+            self.rest.StartOnce(SMOOTH_MS)
+
+    def _on_rest(self, event):
+        if not self.state.smooth_shading or self._closing:
+            return
+        if self._held():  # a slider's thumb held still: wait for its release
+            self.rest.StartOnce(SMOOTH_MS)
+            return
+        self.request_frame(True, smooth=True)
 
     def _moving(self):
         """A change while the user moves something: a reduced frame now,
@@ -375,7 +413,15 @@ class ViewerFrame(wx.Frame):
         self.state.zoom(steps)
         self._moving()
 
+    def on_press(self, mode):
+        """A button down on the view: a gesture begins; no smooth frame
+        until it ends (on_still, on_click)."""
+        self.log.write("press", mode=mode)
+        self.rest.Stop()
+
     def on_still(self):
+        """The button released: the exact frame (face normals) at once, the
+        smooth one after SMOOTH_MS without a change."""
         self.log.write("still")
         self.refine.Stop()
         self.request_frame(True)
@@ -395,8 +441,12 @@ class ViewerFrame(wx.Frame):
             self.SetStatusText(error, 0)
             self.log.write("error", message=error)
             return
-        number, full = tag
+        number, kind = tag
+        full, smooth = kind != "reduced", kind == "smooth"
         if number < self._shown:
+            return
+        if smooth and number < self._sent:  # the view changed since: a stale frame
+            self.log.write("stale", number=number, ms=frame.ms)
             return
         self._shown = number
         framed = not any(w.startswith("distance=") for w in frame.words)
@@ -406,12 +456,17 @@ class ViewerFrame(wx.Frame):
         self._adopt_legend(frame)
         now = time.monotonic()
         self._times = [t for t in self._times if now - t < 1.0] + [now]
-        self.SetStatusText(
-            _("%d x %d in %.0f ms%s") % (frame.width, frame.height, frame.ms,
-                                         "" if full else _(" (moving)")), 0)
+        if not full:
+            note = _(" (moving)")
+        elif smooth:
+            note = _(", smooth shading") if self.state.smooth_shading else ""
+        else:
+            note = _(", face normals") if self.state.smooth_shading else ""
+        self.SetStatusText(_("%d x %d in %.0f ms%s") % (frame.width, frame.height,
+                                                        frame.ms, note), 0)
         self.SetStatusText(_("%d frames/s") % len(self._times), 1)
-        self.log.write("frame", number=number, full=full, width=frame.width,
-                       height=frame.height, ms=frame.ms, words=frame.words,
+        self.log.write("frame", number=number, full=full, smooth=smooth,
+                       width=frame.width, height=frame.height, ms=frame.ms, words=frame.words,
                        legend=list(frame.legend) if frame.legend else None)
         if full and not self._logged_widgets:
             self._logged_widgets = True
@@ -491,7 +546,11 @@ class ViewerFrame(wx.Frame):
 
     def _on_smooth(self, event):
         self.state.smooth_shading = self.smooth.GetValue()
-        self.request_frame(True)
+        if self.state.smooth_shading:  # the face frame is on the screen
+            self.command.SetValue(self.state.command(*self.canvas.GetClientSize()))
+            self._wait_for_rest()
+        else:
+            self.request_frame(True)
 
     def _show_zexag(self):
         self.zexag_label.SetLabel(_("Vertical exaggeration: %s") % number(self.state.zexag))
@@ -613,5 +672,6 @@ class ViewerFrame(wx.Frame):
     def _on_close(self, event):
         self._closing = True
         self.refine.Stop()
+        self.rest.Stop()
         self.thread.stop()
         self.Destroy()

@@ -138,7 +138,12 @@ class ViewerSession:
                 header_end += 1
         return ppm[header_end + 1:]
 
-    def full_frame_after(self, count, word=None):
+    def full_frame_after(self, count, word=None, smooth=False):
+        """The first full-size frame after event `count` (with `word` among
+        its options where given): face normals at once, or with `smooth`
+        the smooth frame (kernel normals) that follows once the view rests
+        (voxel models, smooth shading on)."""
         return self.wait_for(
             lambda e: e["event"] == "frame" and e["full"] and
-            (word is None or word in e["words"]), after=count)
+            (word is None or word in e["words"]) and
+            (not smooth or e.get("smooth")), after=count)
