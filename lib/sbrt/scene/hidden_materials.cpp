@@ -6,44 +6,83 @@
 #include "scene/hidden_materials.hpp"
 
 #include "util/error.hpp"
+#include "util/parallel.hpp"
 
 namespace sbrt {
 
+namespace {
+
+/// The stack [first, last) with hidden materials made EMPTY, runs merged
+/// and a trailing EMPTY run dropped, written from `out` on (nullptr: only
+/// counted); returns its size. A run is written once it ends, so nothing
+/// lands beyond the stack's own size.
+template <typename Record>
+uint32_t hidden_stack(const Record *first, const Record *last,
+                      const std::vector<char> &is_hidden, Record *out)
+{
+    uint32_t size = 0;
+    Record run{};
+    bool open = false;
+    for (const Record *r = first; r != last; ++r) {
+        Record iv = *r;
+        if (is_hidden[iv.material])
+            iv.material = EMPTY;
+        if (open && run.material == iv.material) {
+            run.top = iv.top; // extend the run
+            continue;
+        }
+        if (open) {
+            if (out)
+                out[size] = run;
+            ++size;
+        }
+        run = iv;
+        open = true;
+    }
+    if (open && run.material != EMPTY) { // an EMPTY run on top: nothing visible above
+        if (out)
+            out[size] = run;
+        ++size;
+    }
+    return size;
+}
+
+} // namespace
+
 Model hide_materials(const Model &model, const std::vector<uint32_t> &hidden)
 {
-    std::vector<bool> is_hidden(model.materials().size(), false);
+    std::vector<char> is_hidden(model.materials().size(), 0);
     for (uint32_t m : hidden) {
         if (m == EMPTY || m >= is_hidden.size())
             fail("hide_materials: no material with index ", m);
-        is_hidden[m] = true;
+        is_hidden[m] = 1;
     }
-    const uint64_t cells = model.frame().cells();
+    const Frame &f = model.frame();
+    const uint64_t cells = f.cells();
     std::vector<uint32_t> sizes(cells, 0);
-    // the intervals of the kind the model holds
+    // the intervals of the kind the model holds, row by row on all cores:
+    // the stacks' sizes first, then each row's into its place
     IntervalArray kept = model.intervals().visit([&](const auto *records) {
         using Record = RecordOf<decltype(records)>;
-        std::vector<Record, UnfilledAllocator<Record>> intervals;
-        intervals.reserve(model.intervals().size());
-        for (uint64_t c = 0; c < cells; ++c) {
-            const size_t stack_start = intervals.size();
-            const StackRange stack = model.stack(c);
-            for (uint64_t i = stack.begin; i < stack.end; ++i) {
-                Record iv = records[i];
-                if (is_hidden[iv.material])
-                    iv.material = EMPTY;
-                if (intervals.size() > stack_start &&
-                    intervals.back().material == iv.material)
-                    intervals.back().top = iv.top; // extend the run
-                else
-                    intervals.push_back(iv);
+        for_each_row(f.rows, 0, [&](int row) {
+            for (uint64_t c = model.cell_index(row, 0); c < model.cell_index(row + 1, 0); ++c) {
+                const StackRange stack = model.stack(c);
+                sizes[c] = hidden_stack<Record>(records + stack.begin, records + stack.end,
+                                                is_hidden, nullptr);
             }
-            if (intervals.size() > stack_start && intervals.back().material == EMPTY)
-                intervals.pop_back(); // nothing visible above
-            sizes[c] = uint32_t(intervals.size() - stack_start);
-        }
+        });
+        const StackIndex index = StackIndex::from_sizes(sizes.data(), cells);
+        std::vector<Record, UnfilledAllocator<Record>> intervals(index.total());
+        for_each_row(f.rows, 0, [&](int row) {
+            for (uint64_t c = model.cell_index(row, 0); c < model.cell_index(row + 1, 0); ++c) {
+                const StackRange stack = model.stack(c);
+                hidden_stack<Record>(records + stack.begin, records + stack.end, is_hidden,
+                                     intervals.data() + index.range(c).begin);
+            }
+        });
         return IntervalArray(std::move(intervals));
     });
-    return Model(model.frame(), model.materials(), StackIndex::from_sizes(sizes.data(), cells),
+    return Model(f, model.materials(), StackIndex::from_sizes(sizes.data(), cells),
                  std::move(kept));
 }
 
