@@ -5,8 +5,8 @@ PURPOSE:   g.gui.sbrt's smooth shading (kernel normals) never stalls a
            delay and than the rest delay) gets full frames with face normals
            while the button is held and no kernel frame is asked for; once
            released, the face frame comes first and the smooth one replaces
-           it; the wheel and a scene change likewise; no smooth frame where
-           smooth shading is off
+           it; the wheel, a slider (its thumb held still) and a scene change
+           likewise
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import time
@@ -107,6 +107,25 @@ class TestViewerSmoothShading(TestCase, ViewerSession):
         count = len(self.events())
         self.click("smooth", x_offset=8)
         self.wait_for(kernel, after=count)
+
+    def test_4_slider_held(self):
+        self.smooth_after(0)
+        count = len(self.events())
+        x, y, width, height = self.widgets["zexag"]
+        # the thumb follows the pointer from the trough on, held still
+        self.xdotool("mousemove", x + width // 4, y + height // 2, "mousedown", 1,
+                     "sleep", 0.1, "mousemove_relative", "--", 10, 0, "sleep", 0.1,
+                     "mousemove_relative", "--", 10, 0)
+        face = self.wait_for(lambda e: e["event"] == "frame" and e["full"], after=count)
+        self.assertNotIn(KERNEL, face["words"])
+        time.sleep(HOLD_S)
+        held = self.events()[count:]
+        self.xdotool("mouseup", 1)
+        self.assertEqual([e for e in held if kernel(e)], [])
+        self.assertEqual([e for e in held if e["event"] == "request" and
+                          e["kind"] == "smooth"], [])
+        smooth, faces = self.smooth_after(count)
+        self.assertIn(face["number"], [e["number"] for e in faces])
 
 
 if __name__ == "__main__":
