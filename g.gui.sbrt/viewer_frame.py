@@ -8,7 +8,6 @@ COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 
 import json
 import shlex
-import shutil
 import subprocess
 import threading
 import time
@@ -22,7 +21,7 @@ from gui_core.gselect import ColumnSelect, Select
 from column_profile import ProfileError, read_column, show_profile
 from render_thread import RenderThread
 from section_profile import SectionProfileFrame, profile_png_path
-from view_client import PropertyLegend, ServerError, ViewServer
+from view_client import PropertyLegend, ServerError
 from strata_panel import StrataPanel
 from view_canvas import ViewCanvas
 from view_dialogs import RecordOrbitDialog, SaveViewDialog
@@ -37,15 +36,6 @@ REFINE_MS = 40  # the full frame (face normals) once the mouse rests this long
 # seconds on the CPU (it cannot be interrupted), is asked for only once
 # the user has let go, never mid-gesture; short enough to feel immediate
 SMOOTH_MS = 300
-# the smooth frames' own view server, at a lower priority: a kernel frame
-# being drawn when a gesture begins (a server cannot be interrupted) holds
-# up none of the gesture's frames and takes little of their CPU (niceness
-# 10: about a tenth of a core's share against the frames of the gesture,
-# not 19: other programs' work would starve it), and is dropped when it
-# comes (stale); it holds a second copy of the model, started at the first
-# smooth frame (voxel models only)
-SMOOTH_SERVER = (["nice", "-n", "10"] if shutil.which("nice") else []) + [
-    "r3.sbrt.render", "--serve"]
 
 
 class EventLog:
@@ -106,13 +96,10 @@ class ViewerFrame(wx.Frame):
         self.rest = wx.Timer(self)  # SMOOTH_MS without a change: the smooth frame
         self.Bind(wx.EVT_TIMER, self._on_rest, self.rest)
         self.Bind(wx.EVT_CLOSE, self._on_close)
-        def deliver(tag, frame, error):
-            wx.CallAfter(self._on_frame, tag, frame, error)
-
-        self.thread = RenderThread(server, deliver)
+        self.thread = RenderThread(
+            server, lambda tag, frame, error: wx.CallAfter(self._on_frame, tag, frame, error)
+        )
         self.thread.start()
-        self.smooth_thread = RenderThread(ViewServer(SMOOTH_SERVER), deliver)
-        self.smooth_thread.start()
         self._update_legend()
         self.request_frame(True)
 
@@ -376,7 +363,7 @@ class ViewerFrame(wx.Frame):
         self._sent += 1
         kind = "smooth" if smooth else "full" if full else "reduced"
         words = self.state.words(width, height, moving=not smooth)
-        (self.smooth_thread if smooth else self.thread).request(words, (self._sent, kind))
+        self.thread.request(words, (self._sent, kind))
         self.log.write("request", number=self._sent, kind=kind, held=self._held())
         self.command.SetValue(self.state.command(*self.canvas.GetClientSize()))
         if not smooth:
@@ -687,5 +674,4 @@ class ViewerFrame(wx.Frame):
         self.refine.Stop()
         self.rest.Stop()
         self.thread.stop()
-        self.smooth_thread.stop()
         self.Destroy()
