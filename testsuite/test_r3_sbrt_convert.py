@@ -105,7 +105,7 @@ class TestConvertExactFigures(TestCase, Raster3dCompare):
         self.assertAlmostEqual(float(f["memory_index_bytes_per_cell"]), 312 / 200)
         # on disk: format 2, the stacks file's own size, far below memory
         stacks = os.path.join(sbrt_dir("known_s"), "stacks")
-        self.assertEqual(f["format"], "2.0")
+        self.assertEqual(f["format"], "2.1")
         self.assertEqual(int(f["file_bytes"]), os.path.getsize(stacks))
         self.assertLess(int(f["file_bytes"]), int(f["sbrt_bytes"]) / 4)
         self.assertAlmostEqual(

@@ -196,30 +196,20 @@ std::vector<BlockSummary> decode_block_summaries(const uint8_t *data, uint64_t b
 Stats summary_stats(const Frame &frame, size_t material_count,
                     const std::vector<BlockSummary> &blocks)
 {
-    // as Model::stats() of the model decode_stacks_v2 makes: its index
-    // (StackIndex: counts of the width the longest stack needs, padded to
-    // groups of 16 cells, and a u64 offset a group) and its intervals (4
-    // bytes where every one is compact, else 8)
-    Stats s;
+    // as Model::stats() of the model decode_stacks_v2 makes: intervals of
+    // 4 bytes where every one is compact, else 8
+    uint64_t intervals = 0, solid = 0;
+    uint32_t longest = 0;
     bool compact = true;
     for (const BlockSummary &b : blocks) {
-        s.intervals += b.intervals;
-        s.solid_intervals += b.solid_intervals;
-        s.max_stack = std::max(s.max_stack, b.longest_stack);
+        intervals += b.intervals;
+        solid += b.solid_intervals;
+        longest = std::max(longest, b.longest_stack);
         compact = compact && b.compact;
     }
-    const uint64_t cells = frame.cells();
-    const uint64_t groups = (cells + 15) / 16;
-    const uint64_t count_bytes = s.max_stack <= UINT8_MAX ? 1 : s.max_stack <= UINT16_MAX ? 2 : 4;
-    s.voxels = frame.voxels();
-    s.voxel_bytes = s.voxels * 4;
-    s.index_bytes = groups * 16 * count_bytes + groups * sizeof(uint64_t);
-    s.interval_bytes = s.intervals * (compact ? 4 : 8);
-    s.sbrt_bytes = s.index_bytes + s.interval_bytes + material_count * 8;
-    s.mean_stack = cells ? double(s.intervals) / cells : 0;
-    s.compression_percent =
-        s.voxel_bytes ? 100.0 * (1.0 - double(s.sbrt_bytes) / s.voxel_bytes) : 0;
-    return s;
+    return stats_of(frame, intervals, solid, longest,
+                    StackIndex::bytes_for(frame.cells(), longest), compact ? 4 : 8,
+                    material_count);
 }
 
 std::optional<ModelSummary> read_stacks_summary(const uint8_t *data, size_t size,

@@ -90,25 +90,34 @@ int64_t Model::find_material(int32_t id) const
     return -1;
 }
 
-Stats Model::stats() const
+Stats stats_of(const Frame &frame, uint64_t intervals, uint64_t solid_intervals,
+               uint32_t max_stack, uint64_t index_bytes, unsigned record_bytes,
+               size_t materials)
 {
     Stats s;
-    s.voxels = frame_.voxels();
+    s.voxels = frame.voxels();
     s.voxel_bytes = s.voxels * 4;
-    s.intervals = intervals_.size();
-    s.index_bytes = index_.bytes();
-    s.interval_bytes = s.intervals * intervals_.record_bytes();
-    s.sbrt_bytes = s.index_bytes + s.interval_bytes + materials_.size() * 8;
-    intervals_.visit([&](const auto *records) {
-        for (size_t i = 0; i < s.intervals; ++i)
-            s.solid_intervals += records[i].material != EMPTY;
-    });
-    s.max_stack = index_.max_size();
-    s.mean_stack = frame_.cells() ? double(s.intervals) / frame_.cells() : 0;
+    s.intervals = intervals;
+    s.solid_intervals = solid_intervals;
+    s.index_bytes = index_bytes;
+    s.interval_bytes = intervals * record_bytes;
+    s.sbrt_bytes = s.index_bytes + s.interval_bytes + materials * 8;
+    s.max_stack = max_stack;
+    s.mean_stack = frame.cells() ? double(intervals) / frame.cells() : 0;
     s.compression_percent =
-        s.voxel_bytes ? 100.0 * (1.0 - double(s.sbrt_bytes) / s.voxel_bytes)
-                      : 0;
+        s.voxel_bytes ? 100.0 * (1.0 - double(s.sbrt_bytes) / s.voxel_bytes) : 0;
     return s;
+}
+
+Stats Model::stats() const
+{
+    uint64_t solid = 0;
+    intervals_.visit([&](const auto *records) {
+        for (size_t i = 0; i < intervals_.size(); ++i)
+            solid += records[i].material != EMPTY;
+    });
+    return stats_of(frame_, intervals_.size(), solid, index_.max_size(), index_.bytes(),
+                    intervals_.record_bytes(), materials_.size());
 }
 
 namespace {

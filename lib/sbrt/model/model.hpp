@@ -77,6 +77,13 @@ struct Stats {
     double compression_percent = 0;
 };
 
+/// The figures of Stats that follow from the frame and these counts (what
+/// Model::stats() gives, and a stored summary without decoding):
+/// `record_bytes` per interval, `index_bytes` of the stack index.
+Stats stats_of(const Frame &frame, uint64_t intervals, uint64_t solid_intervals,
+               uint32_t max_stack, uint64_t index_bytes, unsigned record_bytes,
+               size_t materials);
+
 /// \brief The whole model: frame, one stack per cell, materials.
 class Model {
 public:

@@ -13,7 +13,7 @@ void StackIndex::allocate(uint64_t cells, uint32_t max_size)
 {
     cells_ = cells;
     max_size_ = max_size;
-    count_bytes_ = max_size <= UINT8_MAX ? 1 : max_size <= UINT16_MAX ? 2 : 4;
+    count_bytes_ = count_width(max_size);
     const uint64_t groups = (cells + GROUP - 1) / GROUP;
     counts_.resize(groups * GROUP * count_bytes_);
     // the padding of the last group counts nothing

@@ -51,6 +51,18 @@ public:
     {
         return counts_.size() + bases_.size() * sizeof(uint64_t);
     }
+    /// Bytes an index of `cells` cells whose longest stack holds
+    /// `max_size` intervals takes (what bytes() will say once built).
+    static uint64_t bytes_for(uint64_t cells, uint32_t max_size)
+    {
+        const uint64_t groups = (cells + GROUP - 1) / GROUP;
+        return groups * GROUP * count_width(max_size) + groups * sizeof(uint64_t);
+    }
+    /// Bytes per count where the longest stack holds `max_size` intervals.
+    static unsigned count_width(uint32_t max_size)
+    {
+        return max_size <= UINT8_MAX ? 1 : max_size <= UINT16_MAX ? 2 : 4;
+    }
     /// Counts, count_bytes() each (host order), padded with zeros to whole
     /// groups; and the offset of every group.
     const uint8_t *count_data() const { return counts_.data(); }
