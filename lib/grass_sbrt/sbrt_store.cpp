@@ -16,6 +16,7 @@
 #include "util/error.hpp"
 #include "format/format.hpp"
 #include "measure/expected_thickness.hpp"
+#include "scene/level_of_detail.hpp"
 #include "grass.hpp"
 #include "module_errors.hpp"
 #include "raster_metadata.hpp"
@@ -109,6 +110,20 @@ sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options)
     }
 }
 
+std::optional<sbrt::CoarseLevel> read_sbrt_lod_map(const char *name)
+{
+    const std::string dir = find_sbrt(name);
+    try {
+        return read_settled(dir, [](const std::string &d) { return sbrt::read_sbrt_lod(d); });
+    }
+    catch (const sbrt::Error &e) {
+        fail_with(_("The coarse level of detail of SBRT <%s> is damaged: %s. Render "
+                    "with detail=exact, or import the source again with "
+                    "r3.sbrt.convert to rewrite it"),
+                  name, e.what());
+    }
+}
+
 std::optional<sbrt::ModelSummary> read_sbrt_summary_map(const char *name)
 {
     const std::string dir = find_sbrt(name);
@@ -183,7 +198,16 @@ void write_sbrt_map(const char *name, const std::string &path,
         const sbrt::SbrtLock lock = lock_for_writing(path);
         sbrt::StacksV2Options options;
         options.threads = threads;
-        sbrt::write_sbrt(path, model, history, options, channels_file);
+        // the coarse level for frames drawn while the camera moves
+        const int factor = sbrt::level_of_detail_factor(model.frame());
+        std::optional<sbrt::Model> coarse;
+        if (factor > 1) {
+            coarse = sbrt::coarsened(model, factor);
+            G_verbose_message(_("Coarse level of detail: %d x %d cells (1 in %d a side)"),
+                              coarse->frame().rows, coarse->frame().cols, factor);
+        }
+        sbrt::write_sbrt(path, model, history, options, channels_file,
+                         coarse ? &*coarse : nullptr);
     }
     catch (const sbrt::Error &e) {
         G_fatal_error(_("Unable to write SBRT <%s>: %s"), name, e.what());

@@ -33,6 +33,12 @@ std::string find_sbrt(const char *name);
 /// or one with a member that is no regular file, throws sbrt::Error
 /// naming the map and what to do.
 sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options = {});
+/// The coarse level of detail of SBRT `name` (member stacks_lod: a level
+/// for frames drawn while the camera moves, never for exact output) with
+/// the frame of its exact model; nothing where the SBRT has none (written
+/// before r3.sbrt stored one, or under 512 x 512 cells). A damaged member
+/// throws sbrt::Error naming it and what to do.
+std::optional<sbrt::CoarseLevel> read_sbrt_lod_map(const char *name);
 /// Describes SBRT `name` from its header, materials and block summaries
 /// (sbrt::read_sbrt_summary): milliseconds, no block decoded. Nothing
 /// where its stacks have no summaries (written before format 2.1: read
@@ -66,7 +72,9 @@ sbrt::SbrtLock lock_for_writing(const std::string &dir);
 /// new SBRT in the current mapset.
 std::string new_sbrt_path(const char *name, bool overwrite);
 /// Writes SBRT `name` atomically to `path` (from new_sbrt_path), with
-/// history, compressing on `threads` threads (0: all cores).
+/// history, compressing on `threads` threads (0: all cores); with its
+/// coarse level of detail (member stacks_lod) where the model is large
+/// enough to have one (sbrt::level_of_detail_factor).
 void write_sbrt_map(const char *name, const std::string &path,
                     const sbrt::Model &model, const std::string &source,
                     const std::string &channels_file = {}, unsigned threads = 0);

@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "format/format.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "format/mapped_file.hpp"
 #include "format/member_dir.hpp"
 #include "format/stacks_fields.hpp"
+#include "format/stacks_v2_layout.hpp"
 
 namespace sbrt {
 
@@ -220,7 +222,7 @@ std::vector<uint8_t> read_file_bytes(const std::string &path)
 
 void write_sbrt(const std::string &directory, const Model &model,
                 const std::string &history, const StacksV2Options &options,
-                const std::string &channels_file)
+                const std::string &channels_file, const Model *coarse)
 {
     model.validate();
     AtomicDirectory out(directory);
@@ -242,6 +244,16 @@ void write_sbrt(const std::string &directory, const Model &model,
     FileSink stacks(out.file_path("stacks"));
     write_stacks_v2(stacks, model, stacks_options);
     stacks.finish();
+    if (coarse) {
+        // a complete stacks file of its own (no channels: those are the
+        // exact model's)
+        StacksV2Options coarse_options = options;
+        coarse_options.optional_features &= ~V2_OPTIONAL_CHANNELS;
+        coarse->validate();
+        FileSink lod(out.file_path("stacks_lod"));
+        write_stacks_v2(lod, *coarse, coarse_options);
+        lod.finish();
+    }
     out.write_file("header", encode_header(model, channels));
     out.write_file("cats", encode_cats(model));
     out.write_file("colors", encode_colors(model));
@@ -316,6 +328,53 @@ Model read_sbrt(const std::string &directory, const ReadOptions &options)
     read_legend_members(dir, model.materials(), datum);
     model.set_vertical_datum(datum);
     return model;
+}
+
+int CoarseLevel::factor() const
+{
+    const double rows = double(exact.rows) / model.frame().rows;
+    const double cols = double(exact.cols) / model.frame().cols;
+    return int(std::lround(std::max(rows, cols)));
+}
+
+std::optional<CoarseLevel> read_sbrt_lod(const std::string &directory)
+{
+    const MemberDirectory dir(directory);
+    const auto member = dir.open_regular_if_present("stacks_lod");
+    if (!member)
+        return std::nullopt;
+    const std::string path = dir.member_path("stacks_lod");
+    CoarseLevel level;
+    {
+        const std::string stacks_path = dir.member_path("stacks");
+        const MappedFile file(dir.open_regular("stacks"), stacks_path);
+        if (stacks_major_version(file.data(), file.size()) != FORMAT_V2_MAJOR)
+            fail(path, ": a coarse level beside stacks of format 1");
+        if (const auto summary = read_stacks_summary(file.data(), file.size(), stacks_path)) {
+            level.exact = summary->frame;
+            level.exact_top_local = 0;
+            for (const BlockSummary &block : summary->blocks)
+                if (!block.is_empty())
+                    level.exact_top_local = std::max(level.exact_top_local, double(block.z_high));
+        }
+        else
+            level.exact = open_stacks_v2(file.data(), file.size(), stacks_path).header.frame;
+    }
+    const Frame &exact = level.exact;
+    const auto file = std::make_shared<const MappedFile>(*member, path);
+    Model model = decode_stacks(file->data(), file->size(), path, file);
+    const Frame &f = model.frame();
+    if (f.north != exact.north || f.south != exact.south || f.east != exact.east ||
+        f.west != exact.west || f.bottom != exact.bottom || f.top != exact.top ||
+        f.depths != exact.depths || f.rows > exact.rows || f.cols > exact.cols)
+        fail(path, ": its extent (", f.rows, " x ", f.cols, " cells) is not that of the "
+             "stacks (", exact.rows, " x ", exact.cols, ")");
+    // the labels, colours and datum of the exact model's members
+    std::string datum;
+    read_legend_members(dir, model.materials(), datum);
+    model.set_vertical_datum(datum);
+    level.model = std::move(model);
+    return level;
 }
 
 std::optional<ModelSummary> read_sbrt_summary(const std::string &directory)

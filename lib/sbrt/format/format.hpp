@@ -9,6 +9,7 @@
 #define SBRT_FORMAT_HPP
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -61,9 +62,12 @@ std::string encode_header(const Model &model, size_t channels = 0);
 /// stacks in format v2, streamed block by block into the file. Where
 /// `channels_file` is given, that finished channels file (written for this
 /// model with the stacks' block size) is moved in as member `channels`.
+/// Where `coarse` is given (the model's coarse level of detail,
+/// scene/level_of_detail.hpp), it is written beside the stacks, with the
+/// same writer, as member `stacks_lod`.
 void write_sbrt(const std::string &directory, const Model &model,
                 const std::string &history, const StacksV2Options &options = {},
-                const std::string &channels_file = {});
+                const std::string &channels_file = {}, const Model *coarse = nullptr);
 /// The property channels of the SBRT directory whose model (as read) is
 /// `model`; nullptr where it has none.
 std::shared_ptr<const PropertyChannels> read_channels(const std::string &directory,
@@ -77,6 +81,25 @@ void rewrite_legend(const std::string &directory, const Model &model,
                     const std::string &history);
 /// Reads and validates an SBRT directory.
 Model read_sbrt(const std::string &directory, const ReadOptions &options = {});
+/// \brief The coarse level of detail of an SBRT and the frame of its
+/// exact model.
+struct CoarseLevel {
+    Model model;
+    Frame exact;
+    /// The exact model's highest top (local units, from its block
+    /// summaries), so that a coarse frame is framed and exaggerated as the
+    /// exact one; NaN where its stacks have no summaries.
+    double exact_top_local = std::numeric_limits<double>::quiet_NaN();
+    /// Fine cells a side per coarse cell (rounded).
+    int factor() const;
+};
+/// The model of member `stacks_lod` of an SBRT directory (a coarse level
+/// of detail for frames drawn while the camera moves, never for exact
+/// output), with the frame of its `stacks`; nothing where the SBRT has no
+/// such member (written before it existed, or too small to need one). A
+/// damaged member, or one whose extent is not that of `stacks`, throws
+/// sbrt::Error naming it.
+std::optional<CoarseLevel> read_sbrt_lod(const std::string &directory);
 /// Describes an SBRT directory without decoding its model: the header,
 /// materials (with `cats` and `colors`), vertical datum and block
 /// summaries of a format 2.1 `stacks`, the Table 1 figures read_sbrt's
