@@ -19,6 +19,8 @@ void write_history(const std::string &name, const RenderRequest &request)
 {
     sbrt_grass::MapHistory history;
     history.data_source_1 = "SBRT " + request.input;
+    // a coarse frame is never written as if it were exact
+    history.data_source_2 = request.coarse_note();
     sbrt_grass::write_raster_history(name.c_str(), history);
 }
 

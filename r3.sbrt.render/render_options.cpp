@@ -23,6 +23,7 @@ OptionTable define_render_options()
     DrapePart::define(table);
     PropertyPart::define(table); // and SelectionPart's select=
     BackendPart::define(table);
+    DetailPart::define(table);
     AnimationPart::define(table);
     // the command line's outputs (a view server's frame is its reply)
     G_option_required(table.option("output"), table.option("png"), table.option("value"),
@@ -51,6 +52,7 @@ RenderRequest read_request(const Answers &answers)
     r.PropertyPart::read(answers);
     r.SelectionPart::read(answers);
     r.BackendPart::read(answers);
+    r.DetailPart::read(answers);
     r.AnimationPart::read(answers);
     // what a part refuses of the others
     r.ShadingPart::check(r);

@@ -2,7 +2,7 @@
  * MODULE:    r3.sbrt.render
  * PURPOSE:   A render request as its parts: each part (input, outputs,
  *            camera, shading, strata, sections, boreholes, drape, property,
- *            backend, animation) defines its options, reads and checks its
+ *            backend, detail, animation) defines its options, reads and checks its
  *            answers and gives the key of what it holds beside the set-up
  *            code that consumes it; one parse of a request's words serves
  *            the command line (G_parser's answers) and the view server
@@ -19,6 +19,7 @@
 #include "backend_part.hpp"
 #include "boreholes_part.hpp"
 #include "camera_part.hpp"
+#include "detail_part.hpp"
 #include "drape_part.hpp"
 #include "input_part.hpp"
 #include "option_table.hpp"
@@ -43,6 +44,7 @@ struct RenderRequest : InputPart,
                        PropertyPart,
                        SelectionPart,
                        BackendPart,
+                       DetailPart,
                        AnimationPart {
 };
 

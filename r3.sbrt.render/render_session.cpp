@@ -6,6 +6,7 @@
  ****************************************************************************/
 #include "render_session.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "frame_cameras.hpp"
@@ -34,6 +35,7 @@ std::string model_key(const RenderRequest &request, const struct Cell_head &regi
 {
     std::ostringstream key;
     key << std::hexfloat << key_of<InputPart, ColorsPart>(request);
+    // (detail= is not in it: the session keeps a level of each detail)
     if (sees_only_the_region(request))
         key << region.north << ' ' << region.south << ' ' << region.east << ' '
             << region.west;
@@ -54,33 +56,82 @@ std::string scene_key(const RenderRequest &r, const sbrt::Camera &camera)
 void RenderSession::load(RenderRequest &request, const struct Cell_head &region)
 {
     const std::string key = model_key(request, region);
-    if (!model_ || key != model_key_) {
-        drop_scene();
-        drape_.reset();
-        property_.reset();
-        fade_.reset();
-        selected_.reset();
-        selection_key_.clear();
-        channels_.reset();
-        frame_.reset();
-        drape_key_.clear();
-        property_key_.clear();
-        model_key_.clear();
-        model_ = std::make_unique<sbrt::Model>(read_model(request, region));
-        apply_color_option(request, *model_);
-        fitted_zexag_ = sbrt::fitting_exaggeration(*model_); // once a model
-        model_key_ = key;
+    request.drawn_factor = 1;
+    at_ = &levels_[0];
+    if (request.coarse && use_coarse_level(request, key))
+        at_ = &levels_[1];
+    else if (!at_->model || key != at_->model_key) {
+        drop_level(*at_);
+        at_->model = std::make_unique<sbrt::Model>(read_model(request, region));
+        apply_color_option(request, *at_->model);
+        fit(*at_, sbrt::highest_top_local(*at_->model)); // once a model
+        at_->model_key = key;
     }
     if (request.zexag_fitted)
-        request.zexag = fitted_zexag_;
-    if (!frame_ || frame_->zexag() != request.zexag)
-        frame_ = sbrt::CoordinateFrame::of(*model_, request.zexag);
+        request.zexag = at_->fitted_zexag;
+    if (!at_->frame || at_->frame->zexag() != request.zexag)
+        at_->frame.emplace(at_->model->frame(), request.zexag, at_->top_local);
+}
+
+bool RenderSession::use_coarse_level(RenderRequest &request, const std::string &key)
+{
+    // the property channels are stored for the exact model's columns
+    if (!request.property.empty() || !request.select.empty() || !request.fade.empty()) {
+        G_important_message(_("detail=coarse: property=, select= and fade= draw the "
+                              "exact model (its property channels are the exact "
+                              "model's): this frame is exact"));
+        return false;
+    }
+    Level &coarse = levels_[1];
+    if (!coarse.model || coarse.model_key != key) {
+        if (key == no_coarse_key_)
+            return false;
+        drop_level(coarse);
+        std::optional<sbrt::CoarseLevel> level =
+            sbrt_grass::read_sbrt_lod_map(request.input.c_str());
+        if (!level) {
+            G_important_message(_("SBRT <%s> has no coarse level of detail (under 512 x 512 "
+                                  "cells, or imported before r3.sbrt stored one): "
+                                  "detail=coarse draws the exact model"),
+                                request.input.c_str());
+            no_coarse_key_ = key;
+            return false;
+        }
+        coarse.factor = level->factor();
+        coarse.model = std::make_unique<sbrt::Model>(std::move(level->model));
+        apply_color_option(request, *coarse.model);
+        fit(coarse, std::isfinite(level->exact_top_local)
+                        ? level->exact_top_local
+                        : sbrt::highest_top_local(*coarse.model));
+        coarse.model_key = key;
+        G_important_message(_("detail=coarse: a coarse frame of SBRT <%s>, 1 cell in %d a "
+                              "side (%d x %d cells), not exact"),
+                            request.input.c_str(), coarse.factor, coarse.model->frame().rows,
+                            coarse.model->frame().cols);
+    }
+    request.drawn_factor = coarse.factor;
+    return true;
+}
+
+void RenderSession::fit(Level &level, double top_local)
+{
+    // fitting_exaggeration(model) of the exact model
+    const sbrt::Frame &f = level.model->frame();
+    level.top_local = top_local;
+    level.fitted_zexag = sbrt::fitting_exaggeration(f.cols * f.ew_res(), f.rows * f.ns_res(),
+                                                    top_local * f.tb_res());
+}
+
+void RenderSession::drop_level(Level &level)
+{
+    drop_scene(level);
+    level = Level{};
 }
 
 std::vector<sbrt::Camera> RenderSession::cameras(const RenderRequest &request,
                                                  const struct Cell_head &region) const
 {
-    std::vector<sbrt::Camera> cameras = frame_cameras(request, *model_, *frame_, region);
+    std::vector<sbrt::Camera> cameras = frame_cameras(request, *at_->model, *at_->frame, region);
     if (request.tile)
         for (sbrt::Camera &camera : cameras)
             camera = camera.window((*request.tile)[0], (*request.tile)[2],
@@ -95,23 +146,23 @@ void RenderSession::prepare(const RenderRequest &request, const sbrt::Camera &ca
     prepare_property(request);
     prepare_selection(request);
     prepare_scene_for(request, camera, one_view);
-    if (renderer_)
-        renderer_->set_shading(
-            make_shading(request, drape_.get(), property_.get(), fade_.get()));
+    if (at_->renderer)
+        at_->renderer->set_shading(
+            make_shading(request, at_->drape.get(), at_->property.get(), at_->fade.get()));
 }
 
 void RenderSession::prepare_drape(const RenderRequest &request)
 {
     // the drape of texture=
     const std::string drape = key_of<DrapePart>(request);
-    if (drape != drape_key_) {
+    if (drape != at_->drape_key) {
         drop_scene();
-        drape_.reset();
-        drape_key_.clear();
+        at_->drape.reset();
+        at_->drape_key.clear();
         if (!request.texture.empty())
-            drape_ = std::make_unique<sbrt::Drape>(*model_, read_texture(request.texture),
+            at_->drape = std::make_unique<sbrt::Drape>(*at_->model, read_texture(request.texture),
                                                    request.texture_blend);
-        drape_key_ = drape;
+        at_->drape_key = drape;
     }
 }
 
@@ -119,10 +170,10 @@ void RenderSession::prepare_property(const RenderRequest &request)
 {
     // the property of property=, over the model as read
     const std::string property = key_of<PropertyPart>(request);
-    if (property != property_key_) {
-        property_.reset();
-        fade_.reset();
-        property_key_.clear();
+    if (property != at_->property_key) {
+        at_->property.reset();
+        at_->fade.reset();
+        at_->property_key.clear();
         if (!request.fade.empty()) {
             const sbrt::PropertyChannels &all = *channels(request);
             RenderRequest asked = request;
@@ -141,18 +192,18 @@ void RenderSession::prepare_property(const RenderRequest &request)
             if (!(high > low))
                 bad_request(_("fade=%s: its values go up to %g only; give fade_range=low,high"),
                             request.fade.c_str(), high);
-            fade_ = std::make_unique<sbrt::UncertaintyFade>(*model_, channels_, channel[0],
+            at_->fade = std::make_unique<sbrt::UncertaintyFade>(*at_->model, at_->channels, channel[0],
                                                             low, high);
         }
         if (!request.property.empty()) {
             const std::vector<size_t> summed = property_channels(request, channels(request));
-            const auto [low, high] = property_range(*channels_, summed);
-            property_ = std::make_unique<sbrt::PropertyPaint>(
-                *model_, channels_, summed,
+            const auto [low, high] = property_range(*at_->channels, summed);
+            at_->property = std::make_unique<sbrt::PropertyPaint>(
+                *at_->model, at_->channels, summed,
                 property_ramp(request.property_color, low, high));
-            property_frames_ = 0;
+            at_->property_frames = 0;
         }
-        property_key_ = property;
+        at_->property_key = property;
     }
 }
 
@@ -160,10 +211,10 @@ void RenderSession::prepare_selection(const RenderRequest &request)
 {
     // select=: only the voxels meeting the condition are solid
     const std::string selection = key_of<SelectionPart>(request);
-    if (selection != selection_key_) {
+    if (selection != at_->selection_key) {
         drop_scene();
-        selected_.reset();
-        selection_key_.clear();
+        at_->selected.reset();
+        at_->selection_key.clear();
         if (!request.select.empty()) {
             const sbrt::PropertyChannels &all = *channels(request);
             sbrt::Selection selection;
@@ -173,14 +224,14 @@ void RenderSession::prepare_selection(const RenderRequest &request)
             catch (const sbrt::Error &e) {
                 bad_request(_("select=%s: %s"), request.select.c_str(), e.what());
             }
-            selected_ = std::make_unique<sbrt::Model>(
-                sbrt::select_voxels(*model_, all, selection, unsigned(request.threads)));
-            const sbrt::Stats s = selected_->stats();
+            at_->selected = std::make_unique<sbrt::Model>(
+                sbrt::select_voxels(*at_->model, all, selection, unsigned(request.threads)));
+            const sbrt::Stats s = at_->selected->stats();
             G_verbose_message(_("select=%s: %llu solid intervals of %llu"),
                               request.select.c_str(), (unsigned long long)s.solid_intervals,
-                              (unsigned long long)model_->stats().solid_intervals);
+                              (unsigned long long)at_->model->stats().solid_intervals);
         }
-        selection_key_ = selection;
+        at_->selection_key = selection;
     }
 }
 
@@ -188,13 +239,16 @@ void RenderSession::prepare_scene_for(const RenderRequest &request, const sbrt::
                                       bool one_view)
 {
     const std::string key = scene_key(request, camera);
-    if (!renderer_ || key != scene_key_) {
+    if (!at_->renderer || key != at_->scene_key) {
         drop_scene();
         // hidden strata, planes, boreholes, fence, translucency
         PreparedScene prepared =
-            prepare_scene(request, selected_ ? *selected_ : *model_, camera);
+            prepare_scene(request, at_->selected ? *at_->selected : *at_->model, camera);
         const std::string context = key_of<BackendPart>(request);
         if (context != context_key_) {
+            for (Level &level : levels_) // their backends use the context
+                if (&level != at_)
+                    drop_scene(level);
             context_.reset(); // before another on the same display
             context_key_.clear();
             context_ = choose_gl_context(request);
@@ -209,25 +263,25 @@ void RenderSession::prepare_scene_for(const RenderRequest &request, const sbrt::
             report_pruning(pruning, scene.planes.size());
             prepared.model = std::move(pruning.model);
         }
-        request_ = std::make_unique<RenderRequest>(request);
+        at_->request = std::make_unique<RenderRequest>(request);
         const bool sweep = request.frames > 1 && request.path == sbrt::PathKind::sweep;
         if (sweep) { // each frame's renderer moves the plane (sweep_to)
-            prepared_model_ = std::make_unique<sbrt::Model>(std::move(prepared.model));
-            prepared_scene_ = std::move(prepared.scene);
+            at_->prepared_model = std::make_unique<sbrt::Model>(std::move(prepared.model));
+            at_->prepared_scene = std::move(prepared.scene);
         }
         else {
             build_renderer(std::move(prepared.model), std::move(prepared.scene));
-            report_pyramid(renderer_->tracer().pyramid(), renderer_->model());
+            report_pyramid(at_->renderer->tracer().pyramid(), at_->renderer->model());
         }
-        scene_key_ = key;
+        at_->scene_key = key;
     }
 }
 
 const sbrt::PropertyChannels *RenderSession::stored_channels(const RenderRequest &request)
 {
-    if (!channels_)
-        channels_ = sbrt_grass::read_channels_map(request.input.c_str(), *model_);
-    return channels_.get();
+    if (!at_->channels)
+        at_->channels = sbrt_grass::read_channels_map(request.input.c_str(), *at_->model);
+    return at_->channels.get();
 }
 
 const sbrt::PropertyChannels *RenderSession::channels(const RenderRequest &request)
@@ -237,47 +291,52 @@ const sbrt::PropertyChannels *RenderSession::channels(const RenderRequest &reque
                       "SBRT imported with properties= (r3.sbrt.convert file=... "
                       "properties=...)"),
                     request.input.c_str());
-    return channels_.get();
+    return at_->channels.get();
 }
 
 void RenderSession::sweep_to(int k)
 {
-    if (!prepared_model_)
+    if (!at_->prepared_model)
         bad_request(_("Internal error: a sweep's frame without a sweep"));
-    sbrt::Scene swept = prepared_scene_;
+    sbrt::Scene swept = at_->prepared_scene;
     // the sweep moves the first plane= (else section=) across the box of
     // the model as prepared
     const sbrt::CoordinateFrame box =
-        sbrt::CoordinateFrame::of(*prepared_model_, request_->zexag);
+        sbrt::CoordinateFrame::of(*at_->prepared_model, at_->request->zexag);
     swept.planes.front() =
-        sbrt::swept_plane(prepared_scene_.planes.front(), box, k, request_->frames);
-    backend_.reset(); // it refers to the previous frame's renderer
-    renderer_.reset();
-    build_renderer(*prepared_model_, std::move(swept));
+        sbrt::swept_plane(at_->prepared_scene.planes.front(), box, k, at_->request->frames);
+    at_->backend.reset(); // it refers to the previous frame's renderer
+    at_->renderer.reset();
+    build_renderer(*at_->prepared_model, std::move(swept));
 }
 
 void RenderSession::drop_scene()
 {
-    backend_.reset(); // it refers to the renderer
-    renderer_.reset();
-    prepared_model_.reset();
-    scene_key_.clear();
+    drop_scene(*at_);
+}
+
+void RenderSession::drop_scene(Level &level)
+{
+    level.backend.reset(); // it refers to the renderer
+    level.renderer.reset();
+    level.prepared_model.reset();
+    level.scene_key.clear();
 }
 
 void RenderSession::build_renderer(sbrt::Model model, sbrt::Scene scene)
 {
-    renderer_ = std::make_unique<sbrt::Renderer>(
-        std::move(model), request_->zexag, std::move(scene),
-        make_shading(*request_, drape_.get(), property_.get(), fade_.get()),
-        sbrt::RenderSettings{unsigned(request_->threads), true, 0});
-    backend_ = std::make_unique<Backend>(*request_, *renderer_, context_.get());
+    at_->renderer = std::make_unique<sbrt::Renderer>(
+        std::move(model), at_->request->zexag, std::move(scene),
+        make_shading(*at_->request, at_->drape.get(), at_->property.get(), at_->fade.get()),
+        sbrt::RenderSettings{unsigned(at_->request->threads), true, 0});
+    at_->backend = std::make_unique<Backend>(*at_->request, *at_->renderer, context_.get());
 }
 
 void RenderSession::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
                            const sbrt::BandSink &sink)
 {
     // a property's sums are kept per block once a second frame shows it
-    if (property_ && property_frames_++ > 0)
-        property_->keep_block_sums();
-    backend_->render(camera, outputs, sink);
+    if (at_->property && at_->property_frames++ > 0)
+        at_->property->keep_block_sums();
+    at_->backend->render(camera, outputs, sink);
 }

@@ -37,11 +37,14 @@ public:
     /// Reads the model of `request` (a top view of one frame: only the
     /// blocks under `region`), where its input, colours or area changed;
     /// a request without zexag= gets the model's fitting exaggeration.
+    /// detail=coarse: the SBRT's coarse level where it has one (each level
+    /// is kept: going back to the other reads nothing), said by
+    /// request.drawn_factor and an important message.
     void load(RenderRequest &request, const struct Cell_head &region);
     /// The model as read and its frame at the request's exaggeration: what
     /// cameras frame (the view stays put while strata are hidden or cut).
-    const sbrt::Model &model() const { return *model_; }
-    const sbrt::CoordinateFrame &frame() const { return *frame_; }
+    const sbrt::Model &model() const { return *at_->model; }
+    const sbrt::CoordinateFrame &frame() const { return *at_->frame; }
     /// The cameras of the request's frames (one for a single view).
     std::vector<sbrt::Camera> cameras(const RenderRequest &request,
                                       const struct Cell_head &region) const;
@@ -57,51 +60,77 @@ public:
     void render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
                 const sbrt::BandSink &sink);
     /// The prepared model and scene.
-    const sbrt::Renderer &renderer() const { return *renderer_; }
+    const sbrt::Renderer &renderer() const { return *at_->renderer; }
     /// The property shown (property=), or null.
-    const sbrt::PropertyPaint *property() const { return property_.get(); }
+    const sbrt::PropertyPaint *property() const { return at_->property.get(); }
     /// The uncertainty fade (fade=), or null.
-    const sbrt::UncertaintyFade *fade() const { return fade_.get(); }
+    const sbrt::UncertaintyFade *fade() const { return at_->fade.get(); }
     /// The property channels of the loaded model (read once), or null for
     /// a model without them.
     const sbrt::PropertyChannels *stored_channels(const RenderRequest &request);
 
 private:
+    /// \brief The model of one level of detail (exact or coarse) and every
+    /// stage built on it: the session keeps one of each, so that a view
+    /// server switching between coarse frames while the camera moves and
+    /// the exact frame when it rests reads and prepares neither again.
+    struct Level {
+        std::string model_key;
+        std::unique_ptr<sbrt::Model> model;
+        int factor = 1;           ///< fine cells a side per cell (1: exact)
+        /// The exact model's highest top (local units): a coarse level is
+        /// framed and exaggerated as the exact model
+        double top_local = 0;
+        double fitted_zexag = 1; ///< of model: what a request without zexag= gets
+        std::optional<sbrt::CoordinateFrame> frame;
+        std::string drape_key;
+        std::unique_ptr<sbrt::Drape> drape;
+        std::shared_ptr<const sbrt::PropertyChannels> channels; ///< of the model as read
+        /// select=: the model with only the voxels meeting the condition
+        std::string selection_key;
+        std::unique_ptr<sbrt::Model> selected;
+        std::string property_key;
+        std::unique_ptr<sbrt::PropertyPaint> property;
+        int property_frames = 0; ///< frames that showed property
+        std::unique_ptr<sbrt::UncertaintyFade> fade;
+        // the prepared scene; the backend refers to the request and renderer
+        std::string scene_key;
+        std::unique_ptr<RenderRequest> request;
+        std::unique_ptr<sbrt::Model> prepared_model; ///< kept for a sweep
+        sbrt::Scene prepared_scene;
+        std::unique_ptr<sbrt::Renderer> renderer;
+        std::unique_ptr<Backend> backend;
+    };
+
     // the stages of prepare(), each rebuilt where its key changed
     void prepare_drape(const RenderRequest &request);
     void prepare_property(const RenderRequest &request);
     void prepare_selection(const RenderRequest &request);
     void prepare_scene_for(const RenderRequest &request, const sbrt::Camera &camera,
                            bool one_view);
-    /// Forgets the prepared scene, its renderer and backend.
+    /// Whether `request` (detail=coarse) is drawn from the coarse level of
+    /// model `key` (read where it is not held); sets request.drawn_factor.
+    bool use_coarse_level(RenderRequest &request, const std::string &key);
+    /// The level's box top (`top_local`) and the exaggeration a request
+    /// without zexag= gets, from its model's extent and that top.
+    static void fit(Level &level, double top_local);
+    /// Forgets the level's model and every stage built on it.
+    static void drop_level(Level &level);
+    /// Forgets the prepared scene, its renderer and backend (of `level`;
+    /// by default the level drawn).
     void drop_scene();
+    static void drop_scene(Level &level);
     void build_renderer(sbrt::Model model, sbrt::Scene scene);
-
-    std::string model_key_;
-    std::unique_ptr<sbrt::Model> model_;
-    double fitted_zexag_ = 1; ///< of model_: what a request without zexag= gets
-    std::optional<sbrt::CoordinateFrame> frame_;
-    std::string drape_key_;
-    std::unique_ptr<sbrt::Drape> drape_;
-    std::shared_ptr<const sbrt::PropertyChannels> channels_; ///< of the model as read
-    /// select=: the model with only the voxels meeting the condition
-    std::string selection_key_;
-    std::unique_ptr<sbrt::Model> selected_;
     /// The channels of the model as read (read once; bad_request without).
     const sbrt::PropertyChannels *channels(const RenderRequest &request);
-    std::string property_key_;
-    std::unique_ptr<sbrt::PropertyPaint> property_;
-    int property_frames_ = 0; ///< frames that showed property_
-    std::unique_ptr<sbrt::UncertaintyFade> fade_;
+
     std::string context_key_;
     std::unique_ptr<sbrt_gl::GlContext> context_;
-    // the prepared scene; the backend refers to the request and renderer
-    std::string scene_key_;
-    std::unique_ptr<RenderRequest> request_;
-    std::unique_ptr<sbrt::Model> prepared_model_; ///< kept for a sweep
-    sbrt::Scene prepared_scene_;
-    std::unique_ptr<sbrt::Renderer> renderer_;
-    std::unique_ptr<Backend> backend_;
+    /// exact, coarse; after the context (their backends use it)
+    Level levels_[2];
+    Level *at_ = &levels_[0]; ///< the level drawn
+    /// The model key whose SBRT was found without a coarse level.
+    std::string no_coarse_key_;
 };
 
 #endif

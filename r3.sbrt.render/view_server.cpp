@@ -109,6 +109,7 @@ void ViewServer::classes(const RenderRequest &request)
     G_get_window(&region);
     RenderRequest whole = request; // every block, whatever the view
     whole.view.kind = sbrt::ViewKind::perspective;
+    whole.coarse = false; // the exact model's extent, classes and channels
     session_.load(whole, region);
     const sbrt::Model &model = session_.model();
     const sbrt::Frame &f = model.frame();
@@ -147,6 +148,7 @@ void ViewServer::pick(RenderRequest request, int row, int col)
     // image, and the pick traces one pixel of it
     request.normals = sbrt::Normals::face;
     request.smooth = 0;
+    request.coarse = false; // what the exact model holds there
     struct Cell_head region;
     G_get_window(&region);
     session_.load(request, region);
