@@ -14,12 +14,13 @@
 #include "util/error.hpp"
 #include "module_errors.hpp"
 #include "module_options.hpp"
+#include "sbrt_bands.hpp"
 
 namespace {
 
 struct Options {
     Option *input, *classes, *top, *base, *thickness, *layers, *depth, *probability,
-        *expected_thickness, *nprocs;
+        *expected_thickness, *nprocs, *memory;
 };
 
 Option *define_output(const char *key, const char *description)
@@ -62,6 +63,7 @@ Options define_options()
                                 "probability / 100 times the voxel height"));
     o.expected_thickness->guisection = _("Probability");
     o.nprocs = sbrt_grass::define_nprocs();
+    o.memory = sbrt_grass::define_memory();
     G_option_required(o.top, o.base, o.thickness, o.layers, o.depth, o.expected_thickness,
                       NULL);
     G_option_requires(o.expected_thickness, o.probability, NULL);
@@ -91,6 +93,7 @@ SurfaceRequest read_options(const Options &o)
     r.probability = answer(o.probability);
     r.expected_thickness = answer(o.expected_thickness);
     r.threads = sbrt_grass::read_nprocs(o.nprocs);
+    r.memory = sbrt_grass::read_memory(o.memory);
     return r;
 }
 

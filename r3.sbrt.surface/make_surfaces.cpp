@@ -7,6 +7,7 @@
  ****************************************************************************/
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "measure/centre_sampling.hpp"
@@ -14,6 +15,7 @@
 #include "measure/column_figures.hpp"
 #include "measure/expected_thickness.hpp"
 #include "model/class_names.hpp"
+#include "sbrt_bands.hpp"
 #include "sbrt_store.hpp"
 #include "util/safe_text.hpp"
 #include "surface.hpp"
@@ -59,42 +61,66 @@ void make_surfaces(const SurfaceRequest &request)
 {
     struct Cell_head region;
     G_get_window(&region);
-    const sbrt::Model model = read_model(request, region);
+    // expected_thickness= reads the model whole (its channels lie by the
+    // spans of every column); otherwise band by band within memory=
+    std::optional<sbrt::Model> whole;
+    std::optional<sbrt_grass::SbrtBands> bands;
+    if (!request.expected_thickness.empty())
+        whole = read_model(request, region);
+    else
+        bands.emplace(request.input, request.memory, request.threads,
+                      sbrt::MapArea{region.north, region.south, region.east, region.west});
+    const sbrt::Frame frame = whole ? whole->frame() : bands->frame();
+    const std::vector<sbrt::Material> &materials = whole ? whole->materials() : bands->materials();
     const bool by_classes = !request.classes.empty();
     // classes= by id, code, short name or label (sbrt::ClassNames)
     const sbrt::ClassSet set =
         by_classes ? sbrt::ClassSet::of_materials(
-                         model, sbrt::ClassNames(model.materials())
-                                    .resolve(request.classes, "classes",
-                                             "SBRT <" + request.input + ">"))
+                         materials, sbrt::ClassNames(materials)
+                                        .resolve(request.classes, "classes",
+                                                 "SBRT <" + request.input + ">"))
                    : sbrt::ClassSet();
-    const std::string described = by_classes ? set.describe(model) : "";
+    const std::string described = by_classes ? set.describe(materials) : "";
     if (by_classes)
         G_verbose_message(_("Classes of the set: %s"), sbrt::printable(described).c_str());
     // expected_thickness=: the probability's channels (only their blocks
     // under the region are decoded)
     sbrt_grass::ProbabilityChannels probability;
-    if (!request.expected_thickness.empty())
+    if (whole)
         probability = sbrt_grass::read_probability_channels(
-            request.input.c_str(), model, request.probability, "expected_thickness=");
+            request.input.c_str(), *whole, request.probability, "expected_thickness=");
     const sbrt::PropertyChannels *channels = probability.channels.get();
     const std::vector<size_t> &summed = probability.summed;
     const sbrt::CentreSampling sampling = sbrt::sample_at_centres(
-        model.frame(),
-        {region.north, region.south, region.east, region.west, region.rows, region.cols});
+        frame, {region.north, region.south, region.east, region.west, region.rows, region.cols});
 
-    warn_if_outside(request.input, model.frame(), region, sampling);
+    warn_if_outside(request.input, frame, region, sampling);
 
-    SurfaceMaps maps(request, described, model.vertical_datum(), region.cols);
+    SurfaceMaps maps(request, described,
+                     whole ? whole->vertical_datum() : bands->vertical_datum(), region.cols);
     const size_t cols = size_t(region.cols);
     const int block = block_rows(region.cols);
     std::vector<sbrt::MapFigures> figures(size_t(block) * cols);
     std::vector<unsigned char> present(size_t(block) * cols);
     std::vector<double> expected(channels ? size_t(block) * cols : 0);
-    const double voxel_height = model.frame().tb_res();
-    for (int first = 0; first < region.rows; first += block) {
+    const double voxel_height = frame.tb_res();
+    for (int first = 0, rows = 0; first < region.rows; first += rows) {
         G_percent(first, region.rows, 2);
-        const int rows = std::min(block, region.rows - first);
+        rows = std::min(block, region.rows - first);
+        // the model's rows of this pass, within one band
+        const sbrt::Model *model = whole ? &*whole : nullptr;
+        if (bands) {
+            const auto row_of = [&](int k) { return sampling.model_row[size_t(k)]; };
+            int k = first;
+            while (k < first + rows && row_of(k) < 0)
+                ++k;
+            if (k < first + rows) {
+                model = &bands->band_at(row_of(k));
+                while (k < first + rows && row_of(k) < bands->band_end())
+                    ++k;
+                rows = k - first;
+            }
+        }
         sbrt::for_each_row(rows, request.threads, [&](int k) {
             const int model_row = sampling.model_row[size_t(first + k)];
             for (size_t c = 0; c < cols; ++c) {
@@ -105,18 +131,18 @@ void make_surfaces(const SurfaceRequest &request)
                     expected[at] = NAN;
                 if (model_row < 0 || model_col < 0)
                     continue;
-                const uint64_t cell = model.cell_index(model_row, model_col);
+                const uint64_t cell = bands ? bands->band_cell(model_row, model_col)
+                                            : model->cell_index(model_row, model_col);
                 if (channels)
                     expected[at] = sbrt::expected_thickness(*channels, summed, cell,
                                                             voxel_height);
                 if (!by_classes)
                     continue;
-                const sbrt::ColumnFigures f =
-                    sbrt::column_figures(model, cell, set);
+                const sbrt::ColumnFigures f = sbrt::column_figures(*model, cell, set);
                 if (!f.present())
                     continue;
                 present[at] = 1;
-                figures[at] = sbrt::map_figures(model.frame(), f);
+                figures[at] = sbrt::map_figures(frame, f);
             }
         });
         for (int k = 0; k < rows; ++k)
@@ -124,5 +150,8 @@ void make_surfaces(const SurfaceRequest &request)
                          channels ? expected.data() + size_t(k) * cols : nullptr);
     }
     G_percent(1, 1, 1);
+    if (bands)
+        G_verbose_message(_("Read in %d band(s), the largest %.1f MB in memory"),
+                          bands->bands_read(), double(bands->largest_band_bytes()) / (1 << 20));
     maps.close();
 }

@@ -7,6 +7,7 @@
 #ifndef R3_SBRT_SURFACE_HPP
 #define R3_SBRT_SURFACE_HPP
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct SurfaceRequest {
     /// expected_thickness= of probability= (channels in %, summed)
     std::string probability, expected_thickness;
     unsigned threads = 0; ///< 0: all cores
+    /// memory= in bytes: the model is read band by band within it
+    /// (expected_thickness= reads it whole: its channels lie by columns)
+    uint64_t memory = uint64_t(300) << 20;
 };
 
 /// Reads the SBRT, measures the class set in every region cell (sampled

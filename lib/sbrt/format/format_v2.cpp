@@ -225,6 +225,22 @@ std::vector<uint8_t> encode_stacks_v2(const Model &model, const StacksV2Options 
     return std::move(sink.bytes());
 }
 
+Frame frame_rows(const Frame &frame, int first, int count)
+{
+    if (first < 0 || count < 1 || first > frame.rows - count)
+        fail("rows ", first, " to ", int64_t(first) + count - 1, " are not rows of a model of ",
+             frame.rows, " rows");
+    Frame out = frame;
+    out.rows = count;
+    // the frame's own edges where the rows reach them (no rounding there)
+    const double height = frame.north - frame.south;
+    if (first > 0)
+        out.north = frame.north - height * first / frame.rows;
+    if (first + count < frame.rows)
+        out.south = frame.north - height * (first + count) / frame.rows;
+    return out;
+}
+
 Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what,
                        const ReadOptions &options)
 {
@@ -239,6 +255,16 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     const uint64_t blocks = entries.size();
     std::vector<Material> materials = std::move(layout.materials);
     std::vector<char> wanted = blocks_meeting(grid, f, options.area);
+    // rows=: the model of those rows alone (all of them without)
+    const Frame out = options.rows ? frame_rows(f, options.rows->first, options.rows->count) : f;
+    const uint64_t first_cell = options.rows ? uint64_t(options.rows->first) * uint64_t(f.cols) : 0;
+    const uint64_t end_cell = first_cell + out.cells();
+    if (options.rows)
+        for (size_t b = 0; b < wanted.size(); ++b) {
+            const int top_row = grid.first_row(int(b));
+            wanted[b] = wanted[b] && top_row < options.rows->first + options.rows->count &&
+                        top_row + grid.height(int(b)) > options.rows->first;
+        }
     // with points: only the blocks that hold one, and of them only the
     // points' cells where the SBRT has no property channels (their values
     // lie by the spans of every column of a block)
@@ -258,7 +284,9 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         if (whole_blocks)
             keep.clear();
     }
-    const auto decoded = [&](uint64_t cell) { return keep.empty() || keep[cell]; };
+    const auto decoded = [&](uint64_t cell) {
+        return cell >= first_cell && cell < end_cell && (keep.empty() || keep[cell]);
+    };
     uint64_t wanted_intervals = 0, wanted_blocks = 0;
     for (size_t b = 0; b < entries.size(); ++b)
         if (wanted[b]) {
@@ -276,7 +304,7 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     // the points' own, known after pass 1)
     const double interval_bytes = compact ? sizeof(CompactInterval) : sizeof(Interval);
     const auto check_memory = [&](uint64_t intervals) {
-        const double needed = double(f.cells()) * (4 + h.widths.count_bytes + 0.5) +
+        const double needed = double(out.cells()) * (4 + h.widths.count_bytes + 0.5) +
                               double(keep.size()) + double(intervals) * interval_bytes;
         if (needed > double(limit))
             fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
@@ -285,7 +313,7 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     check_memory(keep.empty() ? wanted_intervals : 0);
 
     // pass 1: each block's counts (the head of its frame) give the index
-    std::vector<uint32_t> sizes(f.cells(), 0);
+    std::vector<uint32_t> sizes(out.cells(), 0);
     for_each_row(int(blocks), threads, [&](int block) {
         if (!wanted[size_t(block)])
             return;
@@ -304,14 +332,15 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
         grid.for_each_cell(block, [&](uint64_t cell) {
             const uint64_t n = load_le(p, h.widths.count_bytes);
             p += h.widths.count_bytes;
-            sizes[cell] = decoded(cell) ? uint32_t(n) : 0;
+            if (decoded(cell))
+                sizes[cell - first_cell] = uint32_t(n);
             sum += n;
         });
         if (sum != e.intervals)
             fail(where, ": stack sizes sum to ", sum, ", block table says ",
                  e.intervals, " (corrupt file)");
     });
-    StackIndex index = StackIndex::from_sizes(sizes.data(), f.cells());
+    StackIndex index = StackIndex::from_sizes(sizes.data(), out.cells());
     std::vector<uint32_t>().swap(sizes);
     if (!keep.empty())
         check_memory(index.total());
@@ -344,7 +373,7 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
                 top += stack_size * top_bytes;
                 return;
             }
-            const StackRange stack = index.range(cell);
+            const StackRange stack = index.range(cell - first_cell);
             uint32_t below = 0;
             for (uint64_t i = stack.begin; i < stack.end; ++i) {
                 const uint32_t m = uint32_t(load_le(material, h.widths.material_bytes));
@@ -373,7 +402,7 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     });
     IntervalArray intervals = compact ? IntervalArray(std::move(packed))
                                       : IntervalArray(std::move(wide));
-    return validated_model(f, std::move(materials), std::move(index),
+    return validated_model(out, std::move(materials), std::move(index),
                            std::move(intervals), what);
 }
 

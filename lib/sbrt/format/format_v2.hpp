@@ -113,8 +113,21 @@ struct ReadOptions {
     /// those blocks (its channels lie by each column's span). v1 files are
     /// read whole.
     std::optional<std::vector<std::array<double, 2>>> points;
+    /// Where given, only the model's rows [first, first + count) are
+    /// decoded, as a model of their own: its frame cut to them (full
+    /// width), its cells theirs alone; so a module can walk a model band
+    /// by band in bounded memory. v1 files are refused with it.
+    struct Rows {
+        int first = 0, count = 0;
+    };
+    std::optional<Rows> rows;
     ReadReport *report = nullptr; ///< filled where given
 };
+
+/// The frame of rows [first, first + count) of `frame` (full width); the
+/// edges are the frame's own where the rows reach them. Throws
+/// sbrt::Error where the rows are not within the frame.
+Frame frame_rows(const Frame &frame, int first, int count);
 
 /// Decodes untrusted bytes (checks sizes, offsets, checksums, every
 /// block's sizes and every model invariant; throws sbrt::Error naming

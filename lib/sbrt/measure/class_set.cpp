@@ -20,8 +20,14 @@ ClassSet ClassSet::named(const Model &model, const std::vector<std::string> &nam
 
 ClassSet ClassSet::of_materials(const Model &model, const std::vector<uint32_t> &materials)
 {
+    return of_materials(model.materials(), materials);
+}
+
+ClassSet ClassSet::of_materials(const std::vector<Material> &table,
+                                const std::vector<uint32_t> &materials)
+{
     ClassSet set;
-    set.member_.assign(model.materials().size(), 0);
+    set.member_.assign(table.size(), 0);
     for (uint32_t m : materials) {
         if (m == EMPTY || m >= set.member_.size())
             fail("ClassSet: material index ", m, " is no class of the model (1 .. ",
@@ -36,14 +42,19 @@ ClassSet ClassSet::of_materials(const Model &model, const std::vector<uint32_t> 
 
 std::string ClassSet::describe(const Model &model) const
 {
+    return describe(model.materials());
+}
+
+std::string ClassSet::describe(const std::vector<Material> &table) const
+{
     // "id (label), ..." in the order of the class ids
     std::vector<uint32_t> materials = materials_;
     std::sort(materials.begin(), materials.end(), [&](uint32_t a, uint32_t b) {
-        return model.materials()[a].id < model.materials()[b].id;
+        return table[a].id < table[b].id;
     });
     std::string out;
     for (const uint32_t i : materials) {
-        const Material &m = model.materials()[i];
+        const Material &m = table[i];
         out += (out.empty() ? "" : ", ") + std::to_string(m.id) +
                (m.label.empty() ? "" : " (" + m.label + ")");
     }

@@ -27,6 +27,10 @@ public:
     static ClassSet named(const Model &model, const std::vector<std::string> &names);
     /// The set of material indices `materials` (each 1 .. materials - 1).
     static ClassSet of_materials(const Model &model, const std::vector<uint32_t> &materials);
+    /// The same from the model's material table alone (a model read band
+    /// by band has it before any band).
+    static ClassSet of_materials(const std::vector<Material> &table,
+                                 const std::vector<uint32_t> &materials);
 
     bool contains(uint32_t material) const
     {
@@ -36,6 +40,7 @@ public:
     const std::vector<uint32_t> &materials() const { return materials_; }
     /// "id (label), ..." of the set's classes by id, for messages and reports.
     std::string describe(const Model &model) const;
+    std::string describe(const std::vector<Material> &table) const;
 
 private:
     std::vector<uint8_t> member_;
