@@ -12,8 +12,14 @@
 namespace sbrt_gl {
 
 GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &renderer,
+                         const GpuOptions &options, ProgramCache cache)
+    : renderer_(renderer), gpu_(context, renderer.tracer(), options, std::move(cache))
+{
+}
+
+GpuRenderer::GpuRenderer(const GlContext &context, const sbrt::Renderer &renderer,
                          sbrt::GpuLayout layout, ProgramCache cache)
-    : renderer_(renderer), gpu_(context, renderer.tracer(), layout, std::move(cache))
+    : GpuRenderer(context, renderer, GpuOptions::from_environment(layout), std::move(cache))
 {
 }
 

@@ -40,6 +40,10 @@ struct GpuFrameReport {
 class GpuRenderer {
 public:
     GpuRenderer(const GlContext &context, const sbrt::Renderer &renderer,
+                const GpuOptions &options,
+                ProgramCache cache = ProgramCache::from_environment());
+    /// The same with GpuOptions::from_environment(layout).
+    GpuRenderer(const GlContext &context, const sbrt::Renderer &renderer,
                 sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo,
                 ProgramCache cache = ProgramCache::from_environment());
     GpuRenderer(const GpuRenderer &) = delete;

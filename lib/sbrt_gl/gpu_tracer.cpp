@@ -66,15 +66,22 @@ GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 
 GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
                      sbrt::GpuLayout layout, ProgramCache cache)
+    : GpuTracer(context, tracer, GpuOptions::from_environment(layout), std::move(cache))
+{
+}
+
+GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
+                     const GpuOptions &options, ProgramCache cache)
     : created_(Clock::now()), tracer_(tracer), gl_(context), cache_(std::move(cache)),
-      max_block_bytes_(check_version(gl_, context.name())), layout_(layout),
-      memory_(sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl_))),
+      max_block_bytes_(check_version(gl_, context.name())), layout_(options.layout),
+      memory_(sbrt::gpu_memory(tracer.model(), layout_, max_texture_side(gl_))),
       materials_(material_buffer(gl_, tracer)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
       pyramid_(pyramid_buffer(gl_, tracer.pyramid(), max_block_bytes_)),
-      bands_(gl_, max_block_bytes_, !is_software_renderer(gl_renderer())), timer_(gl_),
-      host_shader_(tracer.model())
+      bands_(gl_, max_block_bytes_, sbrt_gl::staged_bands(options, gl_renderer())), timer_(gl_),
+      host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer()))
 {
+    const sbrt::GpuLayout layout = layout_;
     if (&tracer.model_pyramid() != &tracer.pyramid())
         model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
     const sbrt::Model &model = tracer.model();
@@ -112,10 +119,6 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
     }
     gl_.Finish();
     check_gl(gl_, "uploading the model");
-    // llvmpipe ends an invocation after 65,535 loop iterations; a GPU does
-    // not: its rays run to the end
-    if (!is_software_renderer(gl_renderer()))
-        loop_budget_ = UINT32_MAX;
     stats_.upload_ms = ms_since(created_); // with compiling the shader
 }
 

@@ -19,6 +19,7 @@
 
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
+#include "gpu_options.hpp"
 #include "mapped_bands.hpp"
 #include "gpu/gpu_layout.hpp"
 #include "tracing/cpu_tracing.hpp"
@@ -79,9 +80,12 @@ const char *pass_name(int k);
 class GpuTracer {
 public:
     /// Needs the context current on this thread; uploads the model in
-    /// `layout`. Programs are compiled when first used, or loaded from
-    /// `cache` (by default where SBRT_PROGRAM_CACHE or the user's cache
-    /// directory says).
+    /// `options.layout`. Programs are compiled when first used, or loaded
+    /// from `cache` (by default where SBRT_PROGRAM_CACHE or the user's
+    /// cache directory says).
+    GpuTracer(const GlContext &context, const sbrt::Tracer &tracer, const GpuOptions &options,
+              ProgramCache cache = ProgramCache::from_environment());
+    /// The same with GpuOptions::from_environment(layout).
     GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
               sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo,
               ProgramCache cache = ProgramCache::from_environment());
@@ -145,12 +149,13 @@ public:
     {
         return host_shader_.of(shading);
     }
-    /// The loop budget of this GL: llvmpipe's (GPU_LOOP_BUDGET), none on
-    /// a GPU.
+    /// The loop budget of the shaded bands and the kernel passes
+    /// (GpuOptions::loop_budget: by default llvmpipe's GPU_LOOP_BUDGET,
+    /// none on a GPU).
     uint32_t loop_budget() const { return loop_budget_; }
-    /// Another loop budget for the shaded bands (tests: rays over it come
-    /// back to the host).
-    void set_loop_budget(uint32_t budget) { loop_budget_ = budget; }
+    /// Whether the shading pass writes bands into GPU memory, copied to the
+    /// host by the GPU (GpuOptions::bands: by default on a GPU).
+    bool staged_bands() const { return bands_.staged(); }
     /// The shading program (compiled by the first shade_rows; the one with
     /// the drape where there was one), or 0.
     GLuint shade_program() const
@@ -301,7 +306,7 @@ private:
     std::optional<GlBuffer> drape_;
     const sbrt::Drape *drape_on_gpu_ = nullptr;
     mutable GpuStats stats_; ///< mutable: the hit records' program is built when first used
-    uint32_t loop_budget_ = sbrt::GPU_LOOP_BUDGET;
+    uint32_t loop_budget_;
 };
 
 } // namespace sbrt_gl

@@ -6,7 +6,6 @@
 #include "mapped_bands.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstring>
 
 #include "gpu_internal.hpp"
@@ -17,13 +16,6 @@ namespace sbrt_gl {
 MappedBands::MappedBands(const GlApi &gl, size_t max_bytes, bool staged)
     : gl_(gl), max_bytes_(max_bytes), staged_(staged)
 {
-    // a measurement's choice over the GPU's
-    if (const char *bands = std::getenv("SBRT_GPU_BANDS")) {
-        if (std::strcmp(bands, "staged") == 0)
-            staged_ = true;
-        else if (std::strcmp(bands, "direct") == 0)
-            staged_ = false;
-    }
 }
 
 void MappedBands::begin_frame()

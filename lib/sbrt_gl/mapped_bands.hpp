@@ -27,7 +27,7 @@ namespace sbrt_gl {
 /// H100 a 4224 x 3536 frame took 2.6 ms so, 3.1 ms with the shader
 /// writing across PCIe); on a software renderer, whose GPU memory is host
 /// memory, the shading pass writes the mapped buffer itself.
-/// SBRT_GPU_BANDS=staged or direct overrides (measurements). Band k of a
+/// The GPU tracer's options choose (GpuOptions::bands). Band k of a
 /// frame lies in the next slot: the renderer has at most
 /// sbrt::RowTracer::SINK_BANDS bands out, the one being filled among them,
 /// so while band k is handed over the sink holds at most band k - 1, and
@@ -48,6 +48,7 @@ public:
 
     /// `max_bytes`: the GPU's largest storage buffer binding.
     MappedBands(const GlApi &gl, size_t max_bytes, bool staged);
+    bool staged() const { return staged_; }
 
     /// A new frame: what was dispatched ahead for the last one is dropped
     /// (its slot is written again only by commands queued after it).

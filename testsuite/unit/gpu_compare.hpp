@@ -9,6 +9,10 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -33,6 +37,72 @@ inline std::unique_ptr<sbrt_gl::GlContext> make_context(const char *backend)
         ADD_FAILURE() << "no GL context (" << backend << "): " << e.what();
         return nullptr;
     }
+}
+
+/// \brief The GL a GPU test runs on and the branches of the GPU path it
+/// takes: the ones that GL calls for (llvmpipe: bands written in place, a
+/// loop budget), or a GPU's forced (bands staged in GPU memory and copied
+/// by the GPU, no loop budget), so that llvmpipe runs them too.
+struct GpuVariant {
+    const char *backend = "egl";
+    GpuLayout layout = GpuLayout::ssbo;
+    sbrt_gl::BandStaging bands = sbrt_gl::BandStaging::automatic;
+    bool unbounded = false;
+
+    sbrt_gl::GpuOptions options() const
+    {
+        sbrt_gl::GpuOptions o;
+        o.layout = layout;
+        o.bands = bands;
+        if (unbounded)
+            o.loop_budget = sbrt_gl::UNBOUNDED_LOOP_BUDGET;
+        return o;
+    }
+    /// The same with a loop budget of `budget`.
+    sbrt_gl::GpuOptions options(uint32_t budget) const
+    {
+        sbrt_gl::GpuOptions o = options();
+        o.loop_budget = budget;
+        return o;
+    }
+    /// e.g. egl_ssbo, egl_textures_staged_unbounded
+    std::string name() const
+    {
+        std::string n = std::string(backend) + "_" + gpu_layout_name(layout);
+        if (bands == sbrt_gl::BandStaging::staged)
+            n += "_staged";
+        if (bands == sbrt_gl::BandStaging::direct)
+            n += "_direct";
+        return unbounded ? n + "_unbounded" : n;
+    }
+};
+
+/// Every GL backend in both layouts as the GL calls for, then on EGL
+/// (llvmpipe in CI) a GPU's branches: staged bands, no loop budget, both.
+inline std::vector<GpuVariant> gpu_variants()
+{
+    using sbrt_gl::BandStaging;
+    std::vector<GpuVariant> out;
+    std::vector<const char *> backends = {"egl"};
+#ifdef SBRT_HAVE_OSMESA
+    backends.push_back("osmesa");
+#endif
+    for (const char *backend : backends)
+        for (GpuLayout layout : {GpuLayout::ssbo, GpuLayout::textures})
+            out.push_back({backend, layout});
+    out.push_back({"egl", GpuLayout::ssbo, BandStaging::staged, false});
+    out.push_back({"egl", GpuLayout::ssbo, BandStaging::automatic, true});
+    out.push_back({"egl", GpuLayout::textures, BandStaging::staged, true});
+    return out;
+}
+
+/// How GoogleTest prints a variant.
+inline void PrintTo(const GpuVariant &variant, std::ostream *out) { *out << variant.name(); }
+
+/// The test name of a variant parameter.
+inline std::string variant_name(const ::testing::TestParamInfo<GpuVariant> &info)
+{
+    return info.param.name();
 }
 
 /// Pixels agree when both rays hit the same material at depths within
@@ -63,13 +133,14 @@ inline Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
     return a;
 }
 
-/// The same with the tolerance: 1e-4 of the model's size.
+/// The same with the tolerance: 1e-4 of the model's size; by
+/// default the tracer's loop budget (its options').
 inline Agreement compare(sbrt_gl::GpuTracer &gpu, const Tracer &tracer,
                          const Camera &camera, size_t *over_budget = nullptr,
-                  uint32_t budget = GPU_LOOP_BUDGET)
+                         std::optional<uint32_t> budget = std::nullopt)
 {
     return compare(gpu, tracer, camera, 1e-4 * 2 * tracer.frame().radius(), over_budget,
-                   budget);
+                   budget.value_or(gpu.loop_budget()));
 }
 
 /// Where and how large the cells of geology() are.
@@ -131,12 +202,13 @@ inline void expect_agreement(const Agreement &a, const char *view)
 /// elevation and depth within float rounding of the model's size but on
 /// `far_allowed` pixels (a ray along a cell's edge, in float, may meet the
 /// material of the cell beside); more than one pixel in `hits_in` a hit.
-inline void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context, GpuLayout layout,
-                               const Renderer &renderer, const Camera &camera,
-                               const std::string &what, size_t far_allowed = 0,
-                               size_t hits_in = 10)
+inline void expect_gpu_shading_as_cpu(const sbrt_gl::GlContext &context,
+                                      const sbrt_gl::GpuOptions &options,
+                                      const Renderer &renderer, const Camera &camera,
+                                      const std::string &what, size_t far_allowed = 0,
+                                      size_t hits_in = 10)
 {
-    sbrt_gl::GpuRenderer on_gpu(context, renderer, layout);
+    sbrt_gl::GpuRenderer on_gpu(context, renderer, options);
     const sbrt_gl::GpuTracer &gpu = on_gpu.gpu();
     const Outputs all{true, true, true};
     const Image want = renderer.render_image(camera, all);

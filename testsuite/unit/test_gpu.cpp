@@ -39,31 +39,22 @@ using namespace sbrt_test;
 
 namespace {
 
-/// Each test runs on every GL backend and in both GPU memory layouts.
-class Gpu : public ::testing::TestWithParam<std::tuple<const char *, GpuLayout>> {
+/// Each test runs on every GL backend and in both GPU memory layouts, and
+/// on EGL with a GPU's branches (gpu_variants).
+class Gpu : public ::testing::TestWithParam<GpuVariant> {
 protected:
     void SetUp() override
     {
-        context_ = make_context(std::get<0>(GetParam()));
+        context_ = make_context(GetParam().backend);
         if (!context_)
             GTEST_FAIL();
     }
-    GpuLayout layout() const { return std::get<1>(GetParam()); }
+    GpuLayout layout() const { return GetParam().layout; }
+    sbrt_gl::GpuOptions options() const { return GetParam().options(); }
     std::unique_ptr<sbrt_gl::GlContext> context_;
 };
 
-INSTANTIATE_TEST_SUITE_P(
-    Backends, Gpu,
-    ::testing::Combine(::testing::Values("egl"
-#ifdef SBRT_HAVE_OSMESA
-                                         , "osmesa"
-#endif
-                                         ),
-                       ::testing::Values(GpuLayout::ssbo, GpuLayout::textures)),
-    [](const auto &info) {
-        return std::string(std::get<0>(info.param)) + "_" +
-               gpu_layout_name(std::get<1>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(Backends, Gpu, ::testing::ValuesIn(gpu_variants()), variant_name);
 
 } // namespace
 
@@ -71,7 +62,7 @@ TEST_P(Gpu, ReportsItsVersionAndRenderer)
 {
     const Model m = geology(8, 8, 6);
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    sbrt_gl::GpuTracer gpu(*context_, tracer, options());
     EXPECT_NE(gpu.gl_version().find("4."), std::string::npos) << gpu.gl_version();
     EXPECT_FALSE(gpu.gl_renderer().empty());
 }
@@ -81,7 +72,7 @@ TEST_P(Gpu, BlockLayoutMatchesTheShader)
     // wide intervals: the shader's Interval struct mirrors the model's
     const Model m = widened(geology(4, 4, 4));
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    sbrt_gl::GpuTracer gpu(*context_, tracer, options());
     const sbrt_gl::GlApi &gl = gpu.gl();
     auto offset_of = [&](GLenum interface, const char *name) {
         const GLuint index = gl.GetProgramResourceIndex(gpu.program(), interface, name);
@@ -146,7 +137,7 @@ TEST_P(Gpu, CompactIntervalsAndTheStackIndexGoUpAsTheModelHoldsThem)
     const Model m = geology(4, 4, 4);
     ASSERT_TRUE(m.intervals().is_compact());
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    sbrt_gl::GpuTracer gpu(*context_, tracer, options());
     const sbrt_gl::GlApi &gl = gpu.gl();
     auto stride_of = [&](const char *name) {
         const GLuint index =
@@ -191,7 +182,7 @@ TEST_P(Gpu, AgreesWithTheCpuOnStacksLongerThanACountByte)
     ASSERT_EQ(m.index().count_bytes(), 2u);
     ASSERT_GT(m.index().max_size(), 255u);
     const Tracer tracer(m, 0.2);
-    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    sbrt_gl::GpuTracer gpu(*context_, tracer, options());
     const glm::dvec3 c = tracer.frame().centre();
     const double size = 2 * tracer.frame().radius();
     for (const glm::dvec3 &from : {glm::dvec3(-0.6, -0.7, 0.5), glm::dvec3(0.5, 0.4, 0.3)}) {
@@ -212,7 +203,7 @@ TEST_P(Gpu, AgreesWithTheCpuTracerFromManyCameras)
     for (double zexag : {1.0, 3.0}) {
         const Model &m = zexag == 1.0 ? compact : wide;
         const Tracer tracer(m, zexag);
-        sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+        sbrt_gl::GpuTracer gpu(*context_, tracer, options());
         const glm::dvec3 c = tracer.frame().centre(), lo = tracer.frame().corner(0),
                          hi = tracer.frame().corner(7);
         const double size = glm::length(hi - lo);
@@ -268,7 +259,7 @@ TEST_P(Gpu, AgreesWithClipPlanesAndHiddenMaterials)
     };
     for (size_t n = 1; n <= planes.size(); ++n) {
         const Tracer tracer(m, 2.0, {planes.begin(), planes.begin() + n});
-        sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+        sbrt_gl::GpuTracer gpu(*context_, tracer, options());
         const glm::dvec3 c = tracer.frame().centre();
         const double size = 2 * tracer.frame().radius();
         size_t over = 0;
@@ -297,7 +288,7 @@ TEST_P(Gpu, AgreesOnTranslucentStrata)
     }
     for (double zexag : {1.0, 3.0}) {
         const Tracer tracer(m, zexag, Scene{{}, tr, {}, 0, {}, {}, true});
-        sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+        sbrt_gl::GpuTracer gpu(*context_, tracer, options());
         const glm::dvec3 c = tracer.frame().centre();
         const double size = 2 * tracer.frame().radius();
         for (const Camera &camera :
@@ -326,7 +317,7 @@ TEST_P(Gpu, AgreesOnRandomModels)
         const auto v = sbrt_test::random_voxels(seed, 20 + seed, 17 + 2 * seed, 25);
         const Model m = sbrt_test::build_model(v);
         const Tracer tracer(m, 2.0);
-        sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+        sbrt_gl::GpuTracer gpu(*context_, tracer, options());
         const glm::dvec3 c = tracer.frame().centre();
         const double size = 2 * tracer.frame().radius();
         for (double az = 0.3; az < 6.28; az += 1.1) {
@@ -360,7 +351,7 @@ TEST_P(Gpu, LongestRayStaysWithinTheLoopBudget)
                 v.classes[(size_t(z) * rows + r) * cols + c] = 1 + z;
     const Model m = sbrt_test::build_model(v);
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    sbrt_gl::GpuTracer gpu(*context_, tracer, options());
     const Camera camera = Camera::orthographic({-10, 2, 2.5}, {cols, 2, 2.5}, 1.0, 3, 3);
     size_t over = 0;
     const Agreement a = compare(gpu, tracer, camera, &over);
@@ -380,7 +371,7 @@ TEST_P(Gpu, TheFirstPassBoundsTheTilesAsTheCpuDoes)
     // the float margin
     const Model m = hide_materials(geology(48, 64, 30), {1, 2, 3});
     const Tracer tracer(m, 2.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    sbrt_gl::GpuTracer gpu(*context_, tracer, options());
     const glm::dvec3 c = tracer.frame().centre();
     const double size = 2 * tracer.frame().radius();
     const Camera camera = Camera::perspective(c + glm::dvec3(-0.5, -0.6, 0.4) * size, c, 40,
@@ -429,8 +420,8 @@ TEST_P(Gpu, SkipsEmptySpaceWithThePyramidAndKeepsTheImage)
     plain.skip_empty_space = false;
     const Tracer skipping(m, 2.0), walking(m, 2.0, plain);
     ASSERT_GT(skipping.pyramid().levels(), 3);
-    sbrt_gl::GpuTracer gpu_skipping(*context_, skipping, layout());
-    sbrt_gl::GpuTracer gpu_walking(*context_, walking, layout());
+    sbrt_gl::GpuTracer gpu_skipping(*context_, skipping, options());
+    sbrt_gl::GpuTracer gpu_walking(*context_, walking, options());
     const glm::dvec3 c = skipping.frame().centre();
     const double size = 2 * skipping.frame().radius();
     const Camera cameras[] = {
@@ -460,7 +451,7 @@ TEST_P(Gpu, RaysOverTheBudgetAreTracedOnTheCpu)
 {
     const Model m = geology(40, 50, 20);
     const Tracer tracer(m, 1.0);
-    sbrt_gl::GpuTracer gpu(*context_, tracer, layout());
+    sbrt_gl::GpuTracer gpu(*context_, tracer, options());
     const glm::dvec3 c = tracer.frame().centre();
     const double size = 2 * tracer.frame().radius();
     const Camera camera = Camera::perspective(c + glm::dvec3(-0.4, -0.5, 0.3) * size,
@@ -569,10 +560,11 @@ namespace {
 
 /// The GPU's shaded image of `renderer` from `camera`, its programs from
 /// `cache`; `from_cache` tells whether the shading program came from it.
-Image gpu_image(const sbrt_gl::GlContext &context, GpuLayout layout, const Renderer &renderer,
-                const Camera &camera, const sbrt_gl::ProgramCache &cache, bool &from_cache)
+Image gpu_image(const sbrt_gl::GlContext &context, const sbrt_gl::GpuOptions &options,
+                const Renderer &renderer, const Camera &camera,
+                const sbrt_gl::ProgramCache &cache, bool &from_cache)
 {
-    sbrt_gl::GpuRenderer on_gpu(context, renderer, layout, cache);
+    sbrt_gl::GpuRenderer on_gpu(context, renderer, options, cache);
     Image image = on_gpu.render_image(camera, {true, true, true}, 2);
     from_cache = on_gpu.gpu().shade_program_from_cache();
     return image;
@@ -602,7 +594,7 @@ TEST_P(Gpu, ASecondRunLoadsItsProgramsFromTheCache)
                                               t.frame().centre(), 40, 31, 37);
     const sbrt_gl::ProgramCache cache(sbrt_test::temp_dir("programs") + "/cache");
     bool from_cache = true;
-    const Image first = gpu_image(*context_, layout(), renderer, camera, cache, from_cache);
+    const Image first = gpu_image(*context_, options(), renderer, camera, cache, from_cache);
     EXPECT_FALSE(from_cache) << "an empty cache gave a program";
     // a file a program (the first pass's and the shading one); the next
     // tracer loads them
@@ -610,7 +602,7 @@ TEST_P(Gpu, ASecondRunLoadsItsProgramsFromTheCache)
     for (const auto &entry : std::filesystem::directory_iterator(cache.directory()))
         files.push_back(entry.path());
     ASSERT_EQ(files.size(), 2u);
-    const Image second = gpu_image(*context_, layout(), renderer, camera, cache, from_cache);
+    const Image second = gpu_image(*context_, options(), renderer, camera, cache, from_cache);
     EXPECT_TRUE(from_cache) << "the cached binary was not used";
     EXPECT_EQ(second.rgb, first.rgb);
     EXPECT_EQ(second.material, first.material);
@@ -635,7 +627,7 @@ TEST_P(Gpu, ASecondRunLoadsItsProgramsFromTheCache)
         damage_all([&](std::vector<uint8_t> &b) {
             damage == 0 ? flip(b) : damage == 1 ? cut(b) : foreign(b);
         });
-        EXPECT_EQ(gpu_image(*context_, layout(), renderer, camera, cache, from_cache).rgb,
+        EXPECT_EQ(gpu_image(*context_, options(), renderer, camera, cache, from_cache).rgb,
                   first.rgb);
         EXPECT_FALSE(from_cache) << "damage " << damage;
         for (size_t k = 0; k < files.size(); ++k)
@@ -685,26 +677,26 @@ TEST_P(Gpu, ShadesOnTheGpuAsTheCpuDoes)
     const Tracer &t = plain.tracer();
     for (double azimuth : {30.0, 210.0}) {
         const glm::dvec3 dir(std::sin(azimuth * M_PI / 180), std::cos(azimuth * M_PI / 180), 0.6);
-        expect_gpu_shading_as_cpu(*context_, layout(), plain,
+        expect_gpu_shading_as_cpu(*context_, options(), plain,
                                   Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() * dir,
                                                       t.frame().centre(), 40, 61, 83),
                                   "view " + std::to_string(azimuth));
     }
     // parallel rays from above
     const glm::dvec3 c = t.frame().centre();
-    expect_gpu_shading_as_cpu(*context_, layout(), plain,
+    expect_gpu_shading_as_cpu(*context_, options(), plain,
                               Camera::orthographic(c + glm::dvec3(300, -400, 500), c,
                                                    1.5 * t.frame().radius(), 47, 64),
                               "orthographic");
     // clip planes (their shading normals) and translucent strata (the veil)
     const Renderer cut(m, 2.0, sbrt_test::cut_and_translucent_scene(m), lit, {2, true, 16});
     const glm::dvec3 dir(0.8, -0.3, 0.5);
-    expect_gpu_shading_as_cpu(*context_, layout(), cut,
+    expect_gpu_shading_as_cpu(*context_, options(), cut,
                               Camera::perspective(c + 2.2 * t.frame().radius() * dir, c, 40, 61, 83),
                               "planes and translucency");
     // the camera inside the model (faces none)
     const glm::dvec3 inside = c + glm::dvec3(0, 0, -0.1 * t.frame().radius());
-    expect_gpu_shading_as_cpu(*context_, layout(), plain,
+    expect_gpu_shading_as_cpu(*context_, options(), plain,
                               Camera::perspective(inside, inside + glm::dvec3(1, 0.3, -0.2),
                                                   70, 40, 50),
                               "inside");
@@ -722,12 +714,12 @@ TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
         const Tracer &t = renderer.tracer();
         const glm::dvec3 c = t.frame().centre();
         const std::string what = "kernel " + std::to_string(k);
-        expect_gpu_shading_as_cpu(*context_, layout(), renderer,
+        expect_gpu_shading_as_cpu(*context_, options(), renderer,
                                   Camera::perspective(c + 2.2 * t.frame().radius() *
                                                               glm::normalize(glm::dvec3(0.6, -0.5, 0.6)),
                                                       c, 40, 61, 83),
                                   what);
-        expect_gpu_shading_as_cpu(*context_, layout(), renderer,
+        expect_gpu_shading_as_cpu(*context_, options(), renderer,
                                   Camera::orthographic(c + glm::dvec3(300, -400, 500), c,
                                                        1.5 * t.frame().radius(), 47, 64),
                                   what + " orthographic");
@@ -741,7 +733,7 @@ TEST_P(Gpu, FindsKernelNormalsOnTheGpuAsTheCpuDoes)
         smooth.smooth = sigma;
         const Renderer renderer(m, 2.0, Scene{}, smooth, {2, true, 16});
         const Tracer &t = renderer.tracer();
-        expect_gpu_shading_as_cpu(*context_, layout(), renderer,
+        expect_gpu_shading_as_cpu(*context_, options(), renderer,
                                   Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() *
                                                                       glm::normalize(glm::dvec3(-0.5, -0.7, 0.5)),
                                                       t.frame().centre(), 40, 61, 83),
@@ -815,7 +807,7 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
     const Camera camera = Camera::perspective(
         t.frame().centre() + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)), t.frame().centre(),
         40, 61, 83);
-    expect_gpu_shading_as_cpu(*context_, layout(), renderer, camera, "boreholes");
+    expect_gpu_shading_as_cpu(*context_, options(), renderer, camera, "boreholes");
     // the boreholes show: the image differs from the model's alone
     const Image want = renderer.render_image(camera, {});
     const Renderer plain(m, 2.0, Scene{}, Shading{}, {2, true, 16});
@@ -830,7 +822,7 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
     const Camera low = Camera::perspective(
         t.frame().centre() + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(0.5, -0.9, 0.25)),
         t.frame().centre(), 40, 61, 83);
-    expect_gpu_shading_as_cpu(*context_, layout(), towers, low, "logs above the surface");
+    expect_gpu_shading_as_cpu(*context_, options(), towers, low, "logs above the surface");
     // split cylinders through gaps in their logs, and a translucent material
     Scene split = split_through_gaps(scene);
     split.translucency = sbrt_test::cut_and_translucent_scene(m).translucency;
@@ -840,11 +832,11 @@ TEST_P(Gpu, DrawsBoreholesWithTheModelAsTheCpuDoes)
     const Renderer halves(m, 2.0, split, Shading{}, {2, true, 16});
     const Camera close = Camera::perspective(
         axis + glm::dvec3(7 * f.ew_res(), 8 * f.ns_res(), 3 * f.ew_res()), axis, 40, 61, 83);
-    expect_gpu_shading_as_cpu(*context_, layout(), halves, close, "split cylinders");
-    expect_gpu_shading_as_cpu(*context_, layout(), halves, camera, "split cylinders, far");
+    expect_gpu_shading_as_cpu(*context_, options(), halves, close, "split cylinders");
+    expect_gpu_shading_as_cpu(*context_, options(), halves, camera, "split cylinders, far");
 
     // hit records: the CPU's pixels are the CPU's hits exactly, and only a part
-    sbrt_gl::GpuTracer gpu(*context_, t, layout());
+    sbrt_gl::GpuTracer gpu(*context_, t, options());
     sbrt_gl::GpuRowTracer rows(gpu, camera, 2);
     ASSERT_TRUE(rows.cpu_pixels());
     const auto &rects = *rows.cpu_pixels();
@@ -891,7 +883,7 @@ TEST_P(Gpu, ShadesADrapeOnTheGpuAsTheCpuDoes)
     const Tracer &t = renderer.tracer();
     // from above (tops) and low from the south-west (the staircase's walls)
     for (const glm::dvec3 dir : {glm::dvec3(0.3, -0.4, 1.2), glm::dvec3(-0.7, -0.6, 0.5)})
-        expect_gpu_shading_as_cpu(*context_, layout(), renderer,
+        expect_gpu_shading_as_cpu(*context_, options(), renderer,
                                   Camera::perspective(t.frame().centre() + 2.2 * t.frame().radius() *
                                                                        glm::normalize(dir),
                                                       t.frame().centre(), 40, 61, 83),
@@ -929,11 +921,11 @@ TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
         Camera::perspective(c + glm::dvec3(-0.45 * (f.east - f.west), -0.2 * (f.north - f.south), 0),
                             c + glm::dvec3(0, 0, -50), 70, 40, 50)};
     for (size_t k = 0; k < std::size(views); ++k)
-        expect_gpu_shading_as_cpu(*context_, layout(), alone, views[k],
+        expect_gpu_shading_as_cpu(*context_, options(), alone, views[k],
                                   "boreholes and fence, view " + std::to_string(k), 0, 30);
     {
         // the overlays' buffers as the shader reads them (gpu_overlays.hpp)
-        sbrt_gl::GpuRenderer on_gpu(*context_, alone, layout());
+        sbrt_gl::GpuRenderer on_gpu(*context_, alone, options());
         on_gpu.render_image(views[0], {}, 2);
         const sbrt_gl::GlApi &gl = on_gpu.gpu().gl();
         const GLuint program = on_gpu.gpu().shade_program();
@@ -970,7 +962,7 @@ TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
         for (int col = 0; col < close.cols(); ++col)
             on_split += halves.tracer().trace(close.ray(row, col)).face == Face::split;
     EXPECT_GT(on_split, 20u);
-    expect_gpu_shading_as_cpu(*context_, layout(), halves, close, "split cylinders");
+    expect_gpu_shading_as_cpu(*context_, options(), halves, close, "split cylinders");
     // a clip plane and a translucent material (the curtains' alpha)
     Scene veiled = sbrt_test::cut_and_translucent_scene(m);
     const Scene overlays = overlays_alone(m);
@@ -979,7 +971,7 @@ TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
     veiled.fence = overlays.fence;
     veiled.draw_model = false;
     const Renderer translucent(m, 2.0, veiled, lit, {2, true, 16});
-    expect_gpu_shading_as_cpu(*context_, layout(), translucent, views[1], "plane and veil", 0, 30);
+    expect_gpu_shading_as_cpu(*context_, options(), translucent, views[1], "plane and veil", 0, 30);
     // more overlays than the CPU meets directly (it walks the cells then)
     Scene many;
     for (int row = 0; row < 40; row += 2)
@@ -990,14 +982,14 @@ TEST_P(Gpu, DrawsBoreholesAndCurtainsAloneOnTheGpuAsTheCpuDoes)
     many.borehole_radius = 0.6 * f.ew_res();
     many.draw_model = false;
     const Renderer forest(m, 2.0, many, lit, {2, true, 16});
-    expect_gpu_shading_as_cpu(*context_, layout(), forest, views[0], "280 boreholes");
+    expect_gpu_shading_as_cpu(*context_, options(), forest, views[0], "280 boreholes");
     // a fence wholly outside the model: nothing to draw, not the model
     Scene outside;
     outside.fence = {{{f.east + 100, f.south}, {f.east + 300, f.north}}};
     outside.draw_model = false;
     const Renderer nothing(m, 2.0, outside, lit, {2, true, 16});
     ASSERT_FALSE(nothing.tracer().has_overlays());
-    sbrt_gl::GpuRenderer on_gpu(*context_, nothing, layout());
+    sbrt_gl::GpuRenderer on_gpu(*context_, nothing, options());
     const Image image = on_gpu.render_image(views[0], {true, false, false}, 2);
     EXPECT_EQ(std::count(image.material.begin(), image.material.end(), NULL_CLASS),
               long(image.material.size()));

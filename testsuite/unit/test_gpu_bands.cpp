@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 
@@ -21,6 +22,8 @@
 #include "gpu/gpu_overlays.hpp"
 #include "tracing/cpu_tracing.hpp"
 #include "gpu_compare.hpp"
+#include "gl_context.hpp"
+#include "gpu_options.hpp"
 #include "gpu_renderer.hpp"
 #include "renderer.hpp"
 #include "test_support.hpp"
@@ -89,24 +92,79 @@ void expect_images_agree(const Image &want, const Image &got, double tolerance,
     EXPECT_EQ(far, 0u) << what;
 }
 
-class GpuBands : public ::testing::TestWithParam<const char *> {
+/// Each GL backend as it calls for, and EGL in both band modes and without
+/// a loop budget.
+TEST(GpuOptions, TheBandsComeFromTheEnvironmentWhereSet)
+{
+    // SBRT_GPU_BANDS (measurements: device_run.sh) over the GL's choice
+    const char *was = std::getenv("SBRT_GPU_BANDS");
+    const std::string kept = was ? was : "";
+    const auto bands_with = [](const char *value) {
+        if (value)
+            setenv("SBRT_GPU_BANDS", value, 1);
+        else
+            unsetenv("SBRT_GPU_BANDS");
+        return sbrt_gl::GpuOptions::from_environment(GpuLayout::textures);
+    };
+    EXPECT_EQ(bands_with(nullptr).bands, sbrt_gl::BandStaging::automatic);
+    EXPECT_EQ(bands_with("staged").bands, sbrt_gl::BandStaging::staged);
+    EXPECT_EQ(bands_with("direct").bands, sbrt_gl::BandStaging::direct);
+    EXPECT_EQ(bands_with("sideways").bands, sbrt_gl::BandStaging::automatic);
+    EXPECT_EQ(bands_with(nullptr).layout, GpuLayout::textures);
+    EXPECT_FALSE(bands_with(nullptr).loop_budget.has_value());
+    EXPECT_TRUE(sbrt_gl::staged_bands({}, "NVIDIA H200/PCIe/SSE2"));
+    EXPECT_FALSE(sbrt_gl::staged_bands({}, "llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_EQ(sbrt_gl::loop_budget({}, "NVIDIA H200/PCIe/SSE2"), sbrt_gl::UNBOUNDED_LOOP_BUDGET);
+    EXPECT_EQ(sbrt_gl::loop_budget({}, "llvmpipe (LLVM 15.0.6, 256 bits)"), GPU_LOOP_BUDGET);
+    if (was)
+        setenv("SBRT_GPU_BANDS", kept.c_str(), 1);
+    else
+        unsetenv("SBRT_GPU_BANDS");
+}
+
+class GpuBands : public ::testing::TestWithParam<GpuVariant> {
 protected:
     void SetUp() override
     {
-        context_ = make_context(GetParam());
+        context_ = make_context(GetParam().backend);
         if (!context_)
             GTEST_FAIL();
     }
+    sbrt_gl::GpuOptions options() const { return GetParam().options(); }
     std::unique_ptr<sbrt_gl::GlContext> context_;
 };
 
-INSTANTIATE_TEST_SUITE_P(Backends, GpuBands,
-                         ::testing::Values("egl"
+std::vector<GpuVariant> band_variants()
+{
+    using sbrt_gl::BandStaging;
+    std::vector<GpuVariant> out = {{"egl"}};
 #ifdef SBRT_HAVE_OSMESA
-                                           ,
-                                           "osmesa"
+    out.push_back({"osmesa"});
 #endif
-                                           ));
+    out.push_back({"egl", GpuLayout::ssbo, BandStaging::staged});
+    out.push_back({"egl", GpuLayout::ssbo, BandStaging::direct, true});
+    return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, GpuBands, ::testing::ValuesIn(band_variants()), variant_name);
+
+TEST_P(GpuBands, TheOptionsChooseTheBandsAndTheLoopBudget)
+{
+    // what the variant asks for, else what the GL calls for: llvmpipe's
+    // bands written in place and a loop budget, a GPU's staged and none
+    const Model m = geology(8, 8, 6);
+    const Tracer tracer(m, 1.0);
+    const GpuVariant &v = GetParam();
+    const sbrt_gl::GpuTracer gpu(*context_, tracer, v.options());
+    const bool software = sbrt_gl::is_software_renderer(gpu.gl_renderer());
+    const bool staged = v.bands == sbrt_gl::BandStaging::automatic
+                            ? !software
+                            : v.bands == sbrt_gl::BandStaging::staged;
+    EXPECT_EQ(gpu.staged_bands(), staged);
+    EXPECT_EQ(gpu.loop_budget(), v.unbounded || !software ? sbrt_gl::UNBOUNDED_LOOP_BUDGET
+                                                          : GPU_LOOP_BUDGET);
+    EXPECT_EQ(sbrt_gl::GpuTracer(*context_, tracer, v.options(7)).loop_budget(), 7u);
+}
 
 TEST_P(GpuBands, MappedBandsOfAnyWidthAndHeightAreTheCpusImage)
 {
@@ -118,7 +176,7 @@ TEST_P(GpuBands, MappedBandsOfAnyWidthAndHeightAreTheCpusImage)
     for (int band_rows : {1, 5, 16, 0}) {
         const Renderer renderer(m, 2.0, Scene{}, lit, {2, true, band_rows});
         const Tracer &t = renderer.tracer();
-        sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+        sbrt_gl::GpuRenderer on_gpu(*context_, renderer, options());
         const double tolerance = 2e-5 * 2 * t.frame().radius();
         for (int cols : {37, 38, 39, 40}) {
             const glm::dvec3 c = t.frame().centre();
@@ -154,8 +212,8 @@ TEST_P(GpuBands, ShadedRaysOverTheLoopBudgetAreTracedAndShadedOnTheHost)
     const Model m = geology(40, 50, 20);
     const Renderer renderer(m, 1.0, Scene{}, Shading{}, {2, true, 8});
     const Tracer &t = renderer.tracer();
-    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
-    on_gpu.gpu().set_loop_budget(4); // many rays give up on the GPU
+    // a budget of 4: many rays give up on the GPU
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, GetParam().options(4));
     const glm::dvec3 c = t.frame().centre();
     const Camera camera =
         Camera::perspective(c + glm::dvec3(-0.4, -0.5, 0.3) * 2.0 * t.frame().radius(), c, 40,
@@ -174,7 +232,7 @@ TEST_P(GpuBands, AnRgbFrameHandsTheHostThreeBytesAPixel)
 {
     const Model m = geology(30, 44, 24);
     const Renderer renderer(m, 2.0, Scene{}, Shading{}, {2, true, 0});
-    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, options());
     const Tracer &t = renderer.tracer();
     const glm::dvec3 c = t.frame().centre();
     const Camera camera =
@@ -347,7 +405,7 @@ TEST_P(GpuBands, BoreholesAreShadedAgainOnlyWhereTheirPixelsLie)
     const Model m = geology(40, 56, 30);
     const Renderer renderer(m, 2.0, two_boreholes(m), Shading{}, {2, true, 16});
     const Tracer &t = renderer.tracer();
-    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, options());
     const Camera camera = Camera::perspective(
         t.frame().centre() + 2.2 * t.frame().radius() * glm::normalize(glm::dvec3(0.4, -0.9, 0.7)),
         t.frame().centre(), 40, 83, 61);
@@ -426,7 +484,7 @@ TEST_P(GpuBands, TheGpuListsTheTilesTheHostsHullsAndDepthsWould)
     const Renderer renderer(m, 2.0, boreholes_at(m, cells), Shading{}, {2, true, 16});
     const Tracer &t = renderer.tracer();
     const Tracer model_alone(m, 2.0, Scene{});
-    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, options());
     const Outputs all{true, true, true};
     const glm::dvec3 c = t.frame().centre();
     const double r = t.frame().radius();
@@ -477,15 +535,16 @@ TEST_P(GpuBands, BandsWhoseEveryTileABoreholeReachesAndRaysOverTheBudget)
     const Scene scene = two_boreholes(m);
     const Renderer renderer(m, 2.0, scene, Shading{}, {2, true, 4});
     const Tracer &t = renderer.tracer();
-    sbrt_gl::GpuRenderer on_gpu(*context_, renderer);
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, options());
     const Borehole &b = scene.boreholes.front();
     const glm::dvec3 axis = t.frame().exaggerate(glm::dvec3(b.x, b.y, t.frame().centre().z));
     const Outputs all{true, true, true};
     const double tolerance = 2e-5 * 2 * t.frame().radius();
-    const auto render = [&](const Camera &camera, const std::string &what) {
+    const auto render = [&](const Camera &camera, const std::string &what,
+                            sbrt_gl::GpuRenderer *gpu = nullptr) {
         Image got = empty_image(camera, all);
-        const sbrt_gl::GpuFrameReport r =
-            on_gpu.render(camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
+        const sbrt_gl::GpuFrameReport r = (gpu ? *gpu : on_gpu).render(
+            camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
         expect_images_agree(renderer.render_image(camera, all), got, tolerance, what);
         EXPECT_LE(r.gpu.over_budget, size_t(camera.rows()) * size_t(camera.cols())) << what;
         return r;
@@ -504,9 +563,9 @@ TEST_P(GpuBands, BandsWhoseEveryTileABoreholeReachesAndRaysOverTheBudget)
     // and the model pass ran for each band all the same: the boreholes'
     // pass reads its hits
     EXPECT_EQ(r.gpu.model_pass_bands, r.gpu.bands);
-    on_gpu.gpu().set_loop_budget(4);
-    EXPECT_GT(render(far, "budget of 4").gpu.over_budget, 0u);
-    render(close, "close-up, budget of 4");
+    sbrt_gl::GpuRenderer budget_4(*context_, renderer, GetParam().options(4));
+    EXPECT_GT(render(far, "budget of 4", &budget_4).gpu.over_budget, 0u);
+    render(close, "close-up, budget of 4", &budget_4);
 }
 
 } // namespace

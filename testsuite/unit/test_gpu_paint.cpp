@@ -69,20 +69,24 @@ ColorRamp ramp()
     return ColorRamp::through({{30, 0, 90}, {20, 160, 140}, {250, 230, 30}}, 0, 180);
 }
 
-class GpuPaint : public ::testing::TestWithParam<GpuLayout> {
+/// EGL in both layouts, and with a GPU's branches (staged bands, no loop
+/// budget).
+class GpuPaint : public ::testing::TestWithParam<GpuVariant> {
 protected:
     void SetUp() override
     {
-        context_ = make_context("egl");
+        context_ = make_context(GetParam().backend);
         if (!context_)
             GTEST_FAIL();
     }
     std::unique_ptr<sbrt_gl::GlContext> context_;
 };
 
-INSTANTIATE_TEST_SUITE_P(Layouts, GpuPaint,
-                         ::testing::Values(GpuLayout::ssbo, GpuLayout::textures),
-                         [](const auto &info) { return gpu_layout_name(info.param); });
+INSTANTIATE_TEST_SUITE_P(
+    Layouts, GpuPaint,
+    ::testing::Values(GpuVariant{"egl", GpuLayout::ssbo}, GpuVariant{"egl", GpuLayout::textures},
+                      GpuVariant{"egl", GpuLayout::ssbo, sbrt_gl::BandStaging::staged, true}),
+    variant_name);
 
 /// Cameras from above, low from the south-west and from the north-east.
 std::vector<Camera> cameras(const Tracer &t)
@@ -121,7 +125,7 @@ TEST_P(GpuPaint, APropertySumIsColouredOnTheGpuAsTheCpuDoes)
     shading.property = &paint;
     const Renderer renderer(fx.model, 2.0, Scene{}, shading, {2, true, 16});
     for (const Camera &camera : cameras(renderer.tracer()))
-        expect_gpu_shading_as_cpu(*context_, GetParam(), renderer, camera, "property", 2);
+        expect_gpu_shading_as_cpu(*context_, GetParam().options(), renderer, camera, "property", 2);
     // the colours are the property's, not the classes'
     Shading classes = shading;
     classes.property = nullptr;
@@ -140,7 +144,7 @@ TEST_P(GpuPaint, AFadeIsColouredOnTheGpuAsTheCpuDoes)
     shading.fade = &fade;
     const Renderer renderer(fx.model, 2.0, Scene{}, shading, {2, true, 16});
     for (const Camera &camera : cameras(renderer.tracer()))
-        expect_gpu_shading_as_cpu(*context_, GetParam(), renderer, camera, "fade", 2);
+        expect_gpu_shading_as_cpu(*context_, GetParam().options(), renderer, camera, "fade", 2);
 }
 
 TEST_P(GpuPaint, AtAVoxelsEdgeTheGpuColoursWhereDoubleOrBothSidesSettleIt)
@@ -171,7 +175,7 @@ TEST_P(GpuPaint, AtAVoxelsEdgeTheGpuColoursWhereDoubleOrBothSidesSettleIt)
     shading.property = &paint;
     const Renderer renderer(model, 2.0, Scene{}, shading, {2, true, 16});
     const Tracer &t = renderer.tracer();
-    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, GetParam());
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, GetParam().options());
     size_t sent_back = 0;
     for (const glm::dvec3 dir : {glm::dvec3(0.3, -0.4, 1.2), glm::dvec3(-0.7, -0.6, 0.5)}) {
         const Camera camera = Camera::perspective(
@@ -217,7 +221,7 @@ TEST_P(GpuPaint, CutsAndHiddenStrataShowTheValuesOfTheModelAsRead)
     cut.planes = {{mid, {1, -0.6, 0.2}}, {mid + glm::dvec3(0, 8 * f.ns_res(), 0), {0, 1, 0}}};
     const Renderer sections(hide_materials(fx.model, {2}), 2.0, cut, shading, {2, true, 16});
     for (const Camera &camera : cameras(sections.tracer()))
-        expect_gpu_shading_as_cpu(*context_, GetParam(), sections, camera, "cuts", 2);
+        expect_gpu_shading_as_cpu(*context_, GetParam().options(), sections, camera, "cuts", 2);
 }
 
 TEST_P(GpuPaint, WhatTheGpuDoesNotColourTheHostDoes)
@@ -228,7 +232,7 @@ TEST_P(GpuPaint, WhatTheGpuDoesNotColourTheHostDoes)
     shading.property = &paint;
     const Renderer renderer(fx.model, 2.0, Scene{}, shading, {2, true, 16});
     const Camera camera = cameras(renderer.tracer())[1];
-    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, GetParam());
+    sbrt_gl::GpuRenderer on_gpu(*context_, renderer, GetParam().options());
     EXPECT_TRUE(on_gpu.shades_on_gpu(camera));
     // value=: the property at each hit, which the GPU does not write
     Outputs value;

@@ -1,0 +1,55 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   How the GPU path runs on the GL it meets: the model's layout,
+ *            where the shading pass writes a band, the loop budget; by
+ *            default as that GL calls for (a GPU or llvmpipe), settable so
+ *            that llvmpipe runs a GPU's branches too (tests)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GL_GPU_OPTIONS_HPP
+#define SBRT_GL_GPU_OPTIONS_HPP
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "gpu/gpu_layout.hpp"
+#include "gpu/gpu_memory_layout.hpp"
+
+namespace sbrt_gl {
+
+/// Where the shading pass writes a band (MappedBands).
+enum class BandStaging {
+    automatic, ///< staged on a GPU, direct on a software renderer
+    staged,    ///< into GPU memory, copied into the mapped buffer by the GPU
+    direct     ///< into the mapped buffer itself
+};
+
+/// A loop budget without a bound: a ray runs to its end.
+constexpr uint32_t UNBOUNDED_LOOP_BUDGET = UINT32_MAX;
+
+/// \brief The choices of a GpuTracer (and GpuRenderer) made at its
+/// construction. The defaults are what the GL met calls for.
+struct GpuOptions {
+    sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo;
+    BandStaging bands = BandStaging::automatic;
+    /// Loop iterations a ray of the shaded bands and of the kernel passes
+    /// may take before the host traces it again; unset: llvmpipe's
+    /// (sbrt::GPU_LOOP_BUDGET: llvmpipe ends an invocation after 65,535),
+    /// UNBOUNDED_LOOP_BUDGET on a GPU.
+    std::optional<uint32_t> loop_budget;
+
+    /// The defaults in `layout`, the bands as SBRT_GPU_BANDS says where it
+    /// is set ("staged" or "direct": measurements, device_run.sh); the one
+    /// place that reads it.
+    static GpuOptions from_environment(sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo);
+};
+
+/// Whether bands are staged on a GL whose GL_RENDERER is `renderer`.
+bool staged_bands(const GpuOptions &options, const std::string &renderer);
+/// The loop budget on a GL whose GL_RENDERER is `renderer`.
+uint32_t loop_budget(const GpuOptions &options, const std::string &renderer);
+
+} // namespace sbrt_gl
+
+#endif
