@@ -25,7 +25,7 @@ import grass.script as gs
 
 from server_fixture import RawServer
 
-from geomodel_fixture import set_up_channel_model
+from geomodel_fixture import CHANNEL_REGION, set_up_channel_model
 
 LIMIT = 60  # seconds for any one reply or process (a loaded CI machine)
 
@@ -81,6 +81,9 @@ CASES = {
     "select": [([], "select=so_prob>=50", "differs")],
     "fade": [([], "fade=so_prob", "differs")],
     "fade_range": [(["fade=so_prob"], "fade_range=20,60", "differs")],
+    # a model with a coarse level draws it; one without draws the exact one
+    "detail": [(["input=so_big"], "detail=coarse", "differs"),
+               ([], "detail=coarse", "same")],
     "backend": [([], "backend=egl", None)],
     "layout": [(["backend=egl"], "layout=textures", None)],
     "nprocs": [([], "nprocs=1", "same")],
@@ -165,6 +168,14 @@ def merged(words, change):
     return [w for w in words if not w.startswith(key)] + [change]
 
 
+def with_context(words, context):
+    """`words` with each word of `context` merged in (a context may name
+    another input=)."""
+    for word in context:
+        words = merged(words, word)
+    return words
+
+
 class TestEveryOptionThroughTheServer(TestCase):
     @classmethod
     def setUpClass(cls):
@@ -175,6 +186,14 @@ class TestEveryOptionThroughTheServer(TestCase):
                                  "1 + (depth() + row()) % 3)")
         subprocess.run(["r3.sbrt.convert", "input=so_other", "output=so_other",
                         "--overwrite", "--quiet"], check=True, timeout=LIMIT)
+        # the same extent in 500 x 600 cells: an SBRT with a coarse level
+        cls.runModule("g.region", **dict(CHANNEL_REGION, res=2, res3=2, tbres=6))
+        cls.runModule("r3.mapcalc", overwrite=True,
+                      expression="so_big = if(depth() > 1 + (row() / 40 + col() / 70) % 4, "
+                                 "null(), 1 + (row() / 23 + col() / 31 + depth()) % 3)")
+        subprocess.run(["r3.sbrt.convert", "input=so_big", "output=so_big",
+                        "--overwrite", "--quiet"], check=True, timeout=LIMIT)
+        cls.runModule("g.region", **CHANNEL_REGION)
         cls.runModule("r.mapcalc", overwrite=True,
                       expression="so_tex = (row() * 37 + col() * 91) % 200")
         cls.runModule("r.colors", map="so_tex", color="rainbow")
@@ -220,10 +239,10 @@ class TestEveryOptionThroughTheServer(TestCase):
     def tearDownClass(cls):
         cls.server.close()
         shutil.rmtree(cls.work, ignore_errors=True)
-        for name in ("so_lith", "so_other"):
+        for name in ("so_lith", "so_other", "so_big"):
             cls.runModule("r3.sbrt.manage", flags="f", remove=name)
         cls.runModule("g.remove", flags="f", type="raster_3d",
-                      name="so_lith,so_prob,so_other")
+                      name="so_lith,so_prob,so_other,so_big")
         cls.runModule("g.remove", flags="f", type="raster", name="so_tex")
         cls.runModule("g.remove", flags="f", type="vector",
                       name="so_fence,so_path,so_path2,so_bh")
@@ -298,8 +317,8 @@ class TestEveryOptionThroughTheServer(TestCase):
         problems, bases = [], {}
         for key in sorted(CASES):
             for context, change, expect in CASES[key]:
-                a_words = self.words(BASE + context)
-                b_words = self.words(merged(BASE + context, change))
+                a_words = self.words(with_context(BASE, context))
+                b_words = self.words(merged(with_context(BASE, context), change))
                 a = self.server.render(a_words)
                 if tuple(a_words) not in bases:
                     wrong = self.difference(a, self.fresh(a_words))
