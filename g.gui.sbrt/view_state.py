@@ -180,10 +180,12 @@ class ViewState:
             self.section = (direction, min(0.98, max(-0.98, offset + share)))
 
     # the options --------------------------------------------------------
-    def words(self, width, height, moving=False):
+    def words(self, width, height, moving=False, reduced=False):
         """r3.sbrt.render's options of this view in a width x height image
         (`moving`: a frame while the user moves something or before the
-        view rests, lit with face normals: kernel normals cost more)."""
+        view rests, lit with face normals: kernel normals cost more;
+        `reduced`: the reduced frame drawn while the user moves, from the
+        SBRT's coarse level of detail where it has one, never exact)."""
         words = [
             "input=" + self.sbrt,
             "size=%d,%d" % (width, height),
@@ -201,6 +203,8 @@ class ViewState:
         words.append("zexag=" + number(self.zexag))  # the command says it
         if self.smooth_shading and not moving:
             words.append("normals=kernel")
+        if reduced:
+            words.append("detail=coarse")
         if self.hidden:
             words.append("hide=" + ",".join(str(i) for i in sorted(self.hidden)))
         translucent = sorted(i for i in self.opacity if i not in self.hidden)
