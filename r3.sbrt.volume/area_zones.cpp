@@ -108,7 +108,7 @@ std::vector<CategorisedArea> categorised_areas(struct Map_info *map, int field, 
 
 } // namespace
 
-Zones area_zones(const sbrt::Model &model, const std::string &name, const std::string &layer,
+Zones area_zones(const sbrt::Frame &frame, const std::string &name, const std::string &layer,
                  const sbrt::CellZones &region)
 {
     AreaMap areas(name);
@@ -140,7 +140,7 @@ Zones area_zones(const sbrt::Model &model, const std::string &name, const std::s
     // a cell counts for each category whose area holds its centre: areas
     // of a category, or of several, may overlap (an area's isles are its
     // holes; an island in a hole is an area of its own)
-    AreaCover cover(model.frame(), region);
+    AreaCover cover(frame, region);
     std::vector<int> indices;
     for (const CategorisedArea &a : found) {
         indices.clear();

@@ -13,6 +13,7 @@
 #include "volume.hpp"
 #include "module_errors.hpp"
 #include "module_options.hpp"
+#include "sbrt_bands.hpp"
 #include "output_format.hpp"
 
 namespace {
@@ -20,7 +21,7 @@ namespace {
 using sbrt_grass::OutputFormat;
 
 struct Options {
-    Option *input, *classes, *probability, *areas, *layer, *format, *separator, *output, *nprocs;
+    Option *input, *classes, *probability, *areas, *layer, *format, *separator, *output, *nprocs, *memory;
 };
 
 Options define_options()
@@ -61,6 +62,7 @@ Options define_options()
     o.output->description = _("Name of the output file (default: standard output)");
     o.output->guisection = _("Output");
     o.nprocs = sbrt_grass::define_nprocs();
+    o.memory = sbrt_grass::define_memory();
     // no G_option_requires(layer, areas): pygrass and the GUI pass the
     // default layer=1 with every call
     return o;
@@ -79,6 +81,7 @@ VolumeRequest read_options(const Options &o)
     r.separator = sbrt_grass::read_csv_separator(o.separator, r.format);
     r.output = o.output->answer ? o.output->answer : "";
     r.threads = sbrt_grass::read_nprocs(o.nprocs);
+    r.memory = sbrt_grass::read_memory(o.memory);
     return r;
 }
 

@@ -5,53 +5,17 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
-#include <cerrno>
 #include <cstring>
+#include <optional>
 
 #include "model/class_names.hpp"
+#include "report_file.hpp"
+#include "sbrt_bands.hpp"
 #include "sbrt_store.hpp"
 #include "module_errors.hpp"
 #include "volume.hpp"
 
 namespace {
-
-/// \brief The report's file, standard output for "" and "-".
-class OutputFile {
-public:
-    explicit OutputFile(const std::string &name)
-    {
-        if (name.empty() || name == "-")
-            return;
-        file_ = std::fopen(name.c_str(), "w");
-        if (!file_)
-            sbrt_grass::fail_with(_("output=%s: cannot write the file (%s)"), name.c_str(),
-                                  std::strerror(errno));
-    }
-    ~OutputFile()
-    {
-        if (file_)
-            std::fclose(file_);
-    }
-    OutputFile(const OutputFile &) = delete;
-    OutputFile &operator=(const OutputFile &) = delete;
-    FILE *get() const { return file_ ? file_ : stdout; }
-    void close(const std::string &name)
-    {
-        // a full disk is an error, not success (standard output is checked
-        // for every module by run_reporting_errors)
-        if (!file_)
-            return;
-        if (std::fclose(file_) != 0) {
-            file_ = nullptr;
-            sbrt_grass::fail_with(_("output=%s: writing the file failed (%s)"), name.c_str(),
-                                  std::strerror(errno));
-        }
-        file_ = nullptr;
-    }
-
-private:
-    FILE *file_ = nullptr;
-};
 
 /// The sums of the zones of cells folded into the report's rows (a zone
 /// of cells may count for several rows).
@@ -107,45 +71,63 @@ void warn_when_no_cell_counts(const std::string &input, const sbrt::Frame &frame
 void report_volumes(const VolumeRequest &request)
 {
     // the output is checked before the model is read
-    OutputFile out(request.output);
+    sbrt_grass::ReportFile out(request.output);
     struct Cell_head region;
     G_get_window(&region);
-    sbrt::ReadOptions options;
-    options.threads = request.threads;
-    options.area = sbrt::MapArea{region.north, region.south, region.east, region.west};
-    const sbrt::Model model = sbrt_grass::read_sbrt_map(request.input.c_str(), options);
+    const sbrt::MapArea area{region.north, region.south, region.east, region.west};
+    // probability= reads the model whole (its channels lie by the spans of
+    // every column); otherwise band by band within memory=
+    std::optional<sbrt::Model> whole;
+    std::optional<sbrt_grass::SbrtBands> bands;
+    if (!request.probability.empty()) {
+        sbrt::ReadOptions options;
+        options.threads = request.threads;
+        options.area = area;
+        whole = sbrt_grass::read_sbrt_map(request.input.c_str(), options);
+    }
+    else
+        bands.emplace(request.input, request.memory, request.threads, area);
+    const sbrt::Frame frame = whole ? whole->frame() : bands->frame();
+    const std::vector<sbrt::Material> &materials = whole ? whole->materials() : bands->materials();
 
     VolumeReport report;
     report.input = request.input;
     report.units = G_database_unit_name(TRUE);
-    report.model = &model;
+    report.materials = &materials;
     // classes= by id, code, short name or label (sbrt::ClassNames)
     report.sets = request.classes.empty()
-                      ? sbrt::every_class(model)
+                      ? sbrt::every_class(materials)
                       : std::vector<sbrt::ClassSet>{sbrt::ClassSet::of_materials(
-                            model, sbrt::ClassNames(model.materials())
-                                       .resolve(request.classes, "classes",
-                                                "SBRT <" + request.input + ">"))};
+                            materials, sbrt::ClassNames(materials)
+                                           .resolve(request.classes, "classes",
+                                                    "SBRT <" + request.input + ">"))};
     // the model's cells whose centre lies in the region, in an area where asked
     const sbrt::CellZones in_region = sbrt::CellZones::in_window(
-        model.frame(),
-        {region.north, region.south, region.east, region.west, region.rows, region.cols});
-    warn_when_no_cell_counts(request.input, model.frame(), in_region);
+        frame, {region.north, region.south, region.east, region.west, region.rows, region.cols});
+    warn_when_no_cell_counts(request.input, frame, in_region);
     Zones zones{in_region, {}, {}};
     if (!request.areas.empty())
-        zones = area_zones(model, request.areas, request.layer, in_region);
+        zones = area_zones(frame, request.areas, request.layer, in_region);
     report.categories = zones.categories;
 
-    const sbrt::VolumeTable table = by_row(
-        zones, sbrt::measure_volumes(model, report.sets, zones.cells, request.threads));
-    if (!request.probability.empty()) {
+    sbrt::VolumeSums sums(frame, materials.size(), report.sets, zones.cells, request.threads);
+    if (whole)
+        sums.add_band(*whole, 0);
+    else {
+        for (int row = 0; row < frame.rows; row = bands->band_end())
+            sums.add_band(bands->band_at(row), row);
+        G_verbose_message(_("Read in %d band(s), the largest %.1f MB in memory"),
+                          bands->bands_read(), double(bands->largest_band_bytes()) / (1 << 20));
+    }
+    const sbrt::VolumeTable table = by_row(zones, sums.table());
+    if (whole) {
         const sbrt_grass::ProbabilityChannels p = sbrt_grass::read_probability_channels(
-            request.input.c_str(), model, request.probability, "probability=");
+            request.input.c_str(), *whole, request.probability, "probability=");
         report.probability = request.probability;
         report.expected =
-            by_row(zones, sbrt::expected_volumes(model, *p.channels, p.summed,
+            by_row(zones, sbrt::expected_volumes(*whole, *p.channels, p.summed,
                                                  zones.cells.cell_zones(), zones.cells.zones()));
     }
     write_report(out.get(), request.format, request.separator, report, table);
-    out.close(request.output);
+    out.commit();
 }

@@ -28,6 +28,9 @@ struct VolumeRequest {
     char separator = ','; ///< of csv
     std::string output; ///< empty or "-": standard output
     unsigned threads = 0;
+    /// memory= in bytes: the model is read band by band within it
+    /// (probability= reads it whole: its channels lie by columns)
+    uint64_t memory = uint64_t(300) << 20;
 };
 
 /// \brief The zones of the cells counted, and the rows of the report:
@@ -44,7 +47,7 @@ struct Zones {
 
 /// The areas of vector map `name` (layer `layer`) as zones of the model's
 /// cells within `region`; throws sbrt::Error for a map without areas.
-Zones area_zones(const sbrt::Model &model, const std::string &name, const std::string &layer,
+Zones area_zones(const sbrt::Frame &frame, const std::string &name, const std::string &layer,
                  const sbrt::CellZones &region);
 
 /// \brief What the report shows.
@@ -53,7 +56,7 @@ struct VolumeReport {
     std::string units;                 ///< map units, plural ("meters")
     std::vector<sbrt::ClassSet> sets;  ///< a row each
     std::vector<int> categories;       ///< zones' categories, empty: region
-    const sbrt::Model *model = nullptr;
+    const std::vector<sbrt::Material> *materials = nullptr; ///< the model's table
     std::string probability;                    ///< probability=, or empty
     std::vector<sbrt::ExpectedVolume> expected; ///< its volume per zone
 };

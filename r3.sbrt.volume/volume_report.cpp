@@ -50,12 +50,12 @@ struct SetNames {
     std::vector<std::string> labels;
 };
 
-SetNames names_of(const sbrt::Model &model, const sbrt::ClassSet &set)
+SetNames names_of(const std::vector<sbrt::Material> &table, const sbrt::ClassSet &set)
 {
     SetNames names;
     std::vector<std::pair<int, std::string>> classes;
     for (uint32_t m : set.materials())
-        classes.emplace_back(model.materials()[m].id, model.materials()[m].label);
+        classes.emplace_back(table[m].id, table[m].label);
     std::sort(classes.begin(), classes.end());
     for (const auto &[id, label] : classes) {
         names.ids.push_back(id);
@@ -78,7 +78,7 @@ void write_plain(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &tabl
         const std::string area = areas ? std::to_string(r.categories[size_t(z)]) : "";
         for (size_t s = 0; s < table.sets(); ++s) {
             const sbrt::Volume &v = table.at(z, s);
-            rows.push_back({area, sbrt::printable(r.sets[s].describe(*r.model)), v.volume,
+            rows.push_back({area, sbrt::printable(r.sets[s].describe(*r.materials)), v.volume,
                             (unsigned long long)v.cells});
         }
         if (!r.probability.empty()) {
@@ -123,7 +123,7 @@ void write_json(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table
     for (int z = 0; z < table.zones(); ++z)
         for (size_t s = 0; s < table.sets(); ++s) {
             const sbrt::Volume &v = table.at(z, s);
-            const SetNames names = names_of(*r.model, r.sets[s]);
+            const SetNames names = names_of(*r.materials, r.sets[s]);
             Json row = json_row(r, z);
             row["classes"] = names.ids;
             row["labels"] = names.labels;
@@ -168,7 +168,7 @@ void write_csv(FILE *out, const VolumeReport &r, const sbrt::VolumeTable &table,
     for (int z = 0; z < table.zones(); ++z)
         for (size_t s = 0; s < table.sets(); ++s) {
             const sbrt::Volume &v = table.at(z, s);
-            const SetNames names = names_of(*r.model, r.sets[s]);
+            const SetNames names = names_of(*r.materials, r.sets[s]);
             std::string ids, labels;
             for (size_t i = 0; i < names.ids.size(); ++i) {
                 ids += (i ? " " : "") + std::to_string(names.ids[i]);

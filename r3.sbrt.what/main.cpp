@@ -8,7 +8,6 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -21,6 +20,7 @@
 #include "util/error.hpp"
 #include "what_request.hpp"
 #include "module_errors.hpp"
+#include "report_file.hpp"
 
 namespace {
 
@@ -49,28 +49,17 @@ sbrt::Model read_model_under(const std::string &name, const std::vector<QueryPoi
 void write_logs(const WhatRequest &request, const LogSource &source,
                 const std::vector<PointLog> &logs)
 {
-    const bool to_stdout = request.output.empty() || request.output == "-";
-    FILE *out = to_stdout ? stdout : std::fopen(request.output.c_str(), "w");
-    if (!out)
-        sbrt_grass::fail_with(_("Unable to open file <%s> for writing: %s"),
-                              request.output.c_str(), std::strerror(errno));
+    sbrt_grass::ReportFile out(request.output);
     if (request.format == LogFormat::json)
-        write_json_logs(out, source, logs);
+        write_json_logs(out.get(), source, logs);
     else if (request.format == LogFormat::csv)
-        write_csv_logs(out, source, logs);
+        write_csv_logs(out.get(), source, logs);
     else
-        write_plain_logs(out, source, logs);
-    // a full disk shows in the stream's error flag or in the close: the
-    // logs are incomplete, which must not end with status 0 (standard
-    // output is checked for every module by run_reporting_errors)
-    if (to_stdout)
-        return;
-    errno = 0;
-    const bool failed = std::ferror(out) != 0;
-    if (std::fclose(out) != 0 || failed)
-        sbrt_grass::fail_with(_("Unable to write the logs to file <%s>%s"),
-                              request.output.c_str(),
-                              errno ? (std::string(": ") + std::strerror(errno)).c_str() : "");
+        write_plain_logs(out.get(), source, logs);
+    // a full disk shows in the flush or the close: the logs are
+    // incomplete, which must not end with status 0 nor leave a file
+    // (standard output is checked for every module by run_reporting_errors)
+    out.commit();
 }
 
 void run(const WhatRequest &request)

@@ -46,8 +46,42 @@ private:
 VolumeTable measure_volumes(const Model &model, const std::vector<ClassSet> &sets,
                             const CellZones &zones, unsigned threads = 0);
 
+/// \brief The sums of measure_volumes made band by band: a model read in
+/// bands of whole rows (any split) gives the table of the whole model,
+/// figure for figure (each row block's rows are added in row order).
+class VolumeSums {
+public:
+    /// For a model of `frame` with `materials` materials; `zones` of its
+    /// cells (the whole frame's).
+    VolumeSums(const Frame &frame, size_t materials, const std::vector<ClassSet> &sets,
+               const CellZones &zones, unsigned threads = 0);
+    /// Adds `band`: the whole model's rows from `first_row` on (full
+    /// width); bands in any order, each row once.
+    void add_band(const Model &band, int first_row);
+    VolumeTable table() const;
+
+private:
+    /// Sums in local units (exact integers for voxel models), per zone
+    /// and set, of one row block.
+    struct Sums {
+        std::vector<double> thickness;
+        std::vector<uint64_t> cells;
+    };
+    template <typename Record>
+    void add_rows(const Model &band, const Record *records, int band_first, int first,
+                  int last, Sums &sums) const;
+
+    Frame frame_;
+    std::vector<ClassSet> sets_;
+    const CellZones &zones_;
+    unsigned threads_;
+    std::vector<std::vector<uint32_t>> sets_of_;
+    std::vector<Sums> block_sums_;
+};
+
 /// One set per class of the model, in the order of the class ids.
 std::vector<ClassSet> every_class(const Model &model);
+std::vector<ClassSet> every_class(const std::vector<Material> &table);
 
 } // namespace sbrt
 

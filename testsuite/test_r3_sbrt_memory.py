@@ -1,18 +1,22 @@
 """
-MODULE:    testsuite/test_r3_sbrt_surface_memory.py (r3.sbrt addon)
-PURPOSE:   r3.sbrt.surface memory=: the model read band by band (rows of
-           blocks, sized by the 2.1 block summaries; a row of blocks a
-           band for 2.0 stacks) gives the maps of a single band cell for
-           cell; a budget below one row of blocks is a clear error that
-           leaves no map behind
+MODULE:    testsuite/test_r3_sbrt_memory.py (r3.sbrt addon)
+PURPOSE:   memory= of r3.sbrt.surface and r3.sbrt.volume: the model read
+           band by band (rows of blocks, sized by the 2.1 block summaries;
+           a row of blocks a band for 2.0 stacks) gives the maps and the
+           volumes of a single band, cell for cell and digit for digit; a
+           budget below one row of blocks is a clear error that leaves no
+           output behind
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
+import os
 import re
 import shutil
 import subprocess
+import tempfile
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
+import grass.script as gs
 
 from stacks_fixture import as_format_20, copy_sbrt, sbrt_dir
 
@@ -29,7 +33,14 @@ def surface(sbrt, suffix, memory):
         capture_output=True, text=True, timeout=120)
 
 
-class TestSurfaceInBands(TestCase):
+def volume(sbrt, memory, output):
+    """r3.sbrt.volume of every class of `sbrt` as csv into `output`."""
+    return subprocess.run(
+        ["r3.sbrt.volume", "--v", "input=" + sbrt, "format=csv", "memory=%d" % memory,
+         "output=" + output], capture_output=True, text=True, timeout=120)
+
+
+class TestInBands(TestCase):
     @classmethod
     def setUpClass(cls):
         cls.use_temp_region()
@@ -76,6 +87,24 @@ class TestSurfaceInBands(TestCase):
         # the maps hold the classes: a column is 3 to 5 levels of 1 and 2
         self.assertRasterMinMax("thickness_bands21_m2", refmin=3, refmax=5)
 
+    def test_volumes_of_bands_are_those_of_one_band(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            tables = {}
+            for sbrt, memory in (("bands21", 2), ("bands21", 1000), ("bands20", 2)):
+                path = os.path.join(tmp, "%s_%d.csv" % (sbrt, memory))
+                self.bands_read(volume(sbrt, memory, path))
+                with open(path) as f:
+                    tables[sbrt, memory] = f.read()
+            self.assertEqual(tables["bands21", 2], tables["bands21", 1000])
+            self.assertEqual(tables["bands21", 2], tables["bands20", 2])
+            # both classes, over the whole grid: cells of class 1 and 2
+            lines = tables["bands21", 2].splitlines()
+            self.assertEqual(lines[0], "classes,labels,volume,cells")
+            self.assertEqual([line.split(",")[0] for line in lines[1:]], ["1", "2"])
+            self.assertEqual(sum(int(line.split(",")[2]) for line in lines[1:]),
+                             int(gs.read_command("r3.univar", flags="g", map="two")
+                                 .split("n=")[1].split()[0]))
+
     def test_budget_below_a_row_of_blocks_is_a_clear_error(self):
         run = surface("bands21", "m1", 1)
         self.assertNotEqual(run.returncode, 0)
@@ -86,6 +115,12 @@ class TestSurfaceInBands(TestCase):
             self.assertFalse(subprocess.run(
                 ["g.findfile", "element=cell", "file=%s_m1" % m], capture_output=True,
                 timeout=30).returncode == 0, m + " left behind")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "volumes.csv")
+            run = volume("bands21", 1, path)
+            self.assertNotEqual(run.returncode, 0)
+            self.assertIn("more than memory=1", " ".join(run.stderr.split()))
+            self.assertFalse(os.path.exists(path), "volumes.csv left behind")
 
 
 if __name__ == "__main__":
