@@ -362,7 +362,7 @@ class ViewerFrame(wx.Frame):
             width, height = max(1, width // REDUCTION), max(1, height // REDUCTION)
         self._sent += 1
         kind = "smooth" if smooth else "full" if full else "reduced"
-        words = self.state.words(width, height, moving=not smooth)
+        words = self.state.words(width, height, moving=not smooth, reduced=not full)
         self.thread.request(words, (self._sent, kind))
         self.log.write("request", number=self._sent, kind=kind, held=self._held())
         self.command.SetValue(self.state.command(*self.canvas.GetClientSize()))
