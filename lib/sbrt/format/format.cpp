@@ -29,6 +29,9 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
     if (major == 0)
         fail(what, ": not an SBRT stacks file (bad magic number)");
     if (major == FORMAT_V1_VERSION) {
+        if (options.rows) // read in place, whole: never a band of rows
+            fail(what, ": a format 1 stacks file is read whole, not by rows; "
+                 "convert its source again to get format 2");
         if (options.report)
             *options.report = ReadReport{};
         return decode_stacks_v1(data, size, what, std::move(keep));
