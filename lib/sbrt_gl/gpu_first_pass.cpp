@@ -48,7 +48,7 @@ sbrt::GpuView GpuTracer::traced_view(const sbrt::Camera &camera, uint32_t loop_b
                              checked_bytes(bytes, max_block_bytes_, "first pass's tiles"));
     view_.upload(&view, sizeof view);
     view_.bind(0);
-    pyramid_.bind(4);
+    model_.bind_pyramid();
     tile_starts_->bind(8);
     run_pass(Pass::first_pass, first_pass_program_, int(tile_cols), int(tile_rows));
     check_gl(gl_, "the first pass");

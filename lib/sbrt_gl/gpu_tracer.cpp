@@ -36,32 +36,6 @@ size_t check_version(const GlApi &gl, const std::string &context)
     return size_t(std::max<GLint64>(block, 0));
 }
 
-/// The largest width and height of a 2D texture.
-int max_texture_side(const GlApi &gl)
-{
-    GLint side = 0;
-    gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &side);
-    return std::max(side, 1);
-}
-
-/// An empty-space pyramid (binding 4).
-GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::MinMaxPyramid &pyramid, size_t limit)
-{
-    const std::vector<uint32_t> words = sbrt::make_gpu_pyramid(pyramid);
-    return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER,
-                    checked_bytes(words.size() * sizeof(uint32_t), limit,
-                                  "empty-space pyramid"),
-                    words.data());
-}
-
-/// How each material looks (binding 3).
-GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
-{
-    const std::vector<sbrt::GpuMaterial> table = sbrt::make_gpu_materials(tracer);
-    return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER,
-                    table.size() * sizeof(sbrt::GpuMaterial), table.data());
-}
-
 } // namespace
 
 GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
@@ -73,53 +47,13 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
 GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
                      const GpuOptions &options, ProgramCache cache)
     : created_(Clock::now()), tracer_(tracer), gl_(context), cache_(std::move(cache)),
-      max_block_bytes_(check_version(gl_, context.name())), layout_(options.layout),
-      memory_(sbrt::gpu_memory(tracer.model(), layout_, max_texture_side(gl_))),
-      materials_(material_buffer(gl_, tracer)),
+      max_block_bytes_(check_version(gl_, context.name())),
+      model_(gl_, tracer, options.layout, max_block_bytes_),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
-      pyramid_(pyramid_buffer(gl_, tracer.pyramid(), max_block_bytes_)),
       bands_(gl_, max_block_bytes_, sbrt_gl::staged_bands(options, gl_renderer())), timer_(gl_),
       host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer()))
 {
-    const sbrt::GpuLayout layout = layout_;
-    if (&tracer.model_pyramid() != &tracer.pyramid())
-        model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
-    const sbrt::Model &model = tracer.model();
-    if (layout == sbrt::GpuLayout::ssbo) {
-        // the model's own compact arrays go up as they are: counts and
-        // intervals; only the group offsets narrow to 32 bits. The shader
-        // reads their bytes as little-endian words.
-        static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
-                      "the GL path uploads the model's arrays as they lie in memory");
-        const std::vector<uint32_t> groups = sbrt::group_offset_words(model);
-        group_offsets_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                               checked_bytes(groups.size() * sizeof(uint32_t),
-                                             max_block_bytes_, "stack offsets"),
-                               groups.data());
-        const sbrt::StackIndex &index = model.index();
-        counts_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                        checked_bytes(index.count_data_bytes(), max_block_bytes_,
-                                      "stack counts"),
-                        index.count_data());
-        const sbrt::IntervalArray &intervals = model.intervals();
-        const void *records =
-            intervals.visit([](const auto *first) { return static_cast<const void *>(first); });
-        intervals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                           checked_bytes(memory_.interval_bytes, max_block_bytes_,
-                                         "intervals"),
-                           records);
-    }
-    else {
-        const sbrt::Frame &f = model.frame();
-        index_texture_.emplace(gl_, f.cols, f.rows, sbrt::index_texels(model).data());
-        interval_texture_.emplace(
-            gl_, memory_.texture_cols, memory_.texture_rows,
-            sbrt::interval_texels(model, memory_.texture_cols, memory_.texture_rows).data(),
-            model.intervals().is_compact() ? 1 : 2);
-    }
-    gl_.Finish();
-    check_gl(gl_, "uploading the model");
-    stats_.upload_ms = ms_since(created_); // with compiling the shader
+    stats_.upload_ms = ms_since(created_);
 }
 
 std::string GpuTracer::gl_version() const
@@ -180,22 +114,13 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
 const GlComputeProgram &GpuTracer::record_program() const
 {
     // compiled when first used: a render shaded on the GPU never needs it
-    return program_ ? *program_ : built(program_, pass_sources(Pass::records, layout_, tracer_));
+    return program_ ? *program_
+                    : built(program_, pass_sources(Pass::records, layout(), tracer_));
 }
 
 void GpuTracer::bind_model() const
 {
-    if (layout_ == sbrt::GpuLayout::ssbo) {
-        group_offsets_->bind(0);
-        intervals_->bind(1);
-        counts_->bind(6);
-    }
-    else {
-        index_texture_->bind(0);
-        interval_texture_->bind(1);
-    }
-    materials_.bind(3);
-    pyramid_.bind(4);
+    model_.bind();
     view_.bind(0);
     if (tile_starts_)
         tile_starts_->bind(8);
@@ -290,17 +215,13 @@ GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, Pass 
         : pass == Pass::shade_boreholes ? (draped ? boreholes_drape_program_ : boreholes_program_)
         : painted                       ? paint_program_
                                         : (draped ? drape_program_ : shade_program_);
-    return program ? *program : built(program, pass_sources(pass, layout_, tracer_, draped, painted));
+    return program ? *program : built(program, pass_sources(pass, layout(), tracer_, draped, painted));
 }
 
 void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading)
 {
-    if (!looks_) {
-        const std::vector<sbrt::GpuLook> looks = sbrt::make_gpu_looks(tracer_);
-        looks_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, looks.size() * sizeof(sbrt::GpuLook),
-                       looks.data());
+    if (!shade_)
         shade_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuShade));
-    }
     if (shading.drape && shading.drape != drape_on_gpu_) {
         // a GpuTracer meets one Drape (the module's, or the view server's
         // until it prepares the scene again: a new GpuTracer)
@@ -330,51 +251,20 @@ void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &s
     }
     shade_->upload(&shade, sizeof shade);
     shade_->bind(1);
-    looks_->bind(5);
+    model_.bind_looks();
     if (shading.drape)
         drape_->bind(7);
     if (shading.property || shading.fade)
         paint_->bind(7);
-    if (!sbrt::shaded_on_gpu(sbrt::gpu_overlay_mode(tracer_)))
-        return;
-    if (!overlays_) {
-        const sbrt::GpuOverlays overlays = sbrt::make_gpu_overlays(tracer_);
-        overlays_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                          checked_bytes(overlays.words.size() * sizeof(uint32_t),
-                                        max_block_bytes_, "boreholes and fence panels"),
-                          overlays.words.data());
-        logs_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                      checked_bytes(overlays.logs.size() * sizeof(sbrt::Interval),
-                                    max_block_bytes_, "borehole logs"),
-                      overlays.logs.data());
-        if (!overlays.cells.empty())
-            cell_overlays_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                                   checked_bytes(overlays.cells.size() * sizeof(uint32_t),
-                                                 max_block_bytes_, "cells' boreholes"),
-                                   overlays.cells.data());
-        // with the model: the boxes of the boreholes' pass and its culling
-        if (sbrt::gpu_overlay_mode(tracer_) == sbrt::GpuOverlayMode::with_model) {
-            const std::vector<float> corners =
-                sbrt::make_gpu_boxes(tracer_, tracer_.overlay_boxes());
-            boxes_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                           checked_bytes(corners.size() * sizeof(float), max_block_bytes_,
-                                         "boreholes' boxes"),
-                           corners.data());
-        }
-    }
-    overlays_->bind(9);
-    logs_->bind(10);
-    if (cell_overlays_)
-        cell_overlays_->bind(11);
-    if (boxes_)
-        boxes_->bind(14);
+    if (sbrt::shaded_on_gpu(sbrt::gpu_overlay_mode(tracer_)))
+        model_.bind_overlays();
 }
 
 void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, int width,
                          int height)
 {
     if (!program)
-        built(program, pass_sources(pass, layout_, tracer_));
+        built(program, pass_sources(pass, layout(), tracer_));
     program->use();
     timer_.time(int(pass), [&] {
         gl_.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
@@ -464,14 +354,13 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                    if (!every_tile) {
                        ++stats_.model_pass_bands;
                        // the model alone: skipping as if there were no boreholes
-                       if (boreholes && model_pyramid_)
-                           model_pyramid_->bind(4);
+                       model_.bind_pyramid(boreholes);
                        program.use();
                        timer_.time(int(Pass::shade), [&] {
                            gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8),
                                                1);
                        });
-                       pyramid_.bind(4);
+                       model_.bind_pyramid();
                    }
                    if (!boreholes)
                        return;

@@ -19,6 +19,7 @@
 
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
+#include "gpu_model.hpp"
 #include "gpu_options.hpp"
 #include "mapped_bands.hpp"
 #include "gpu/gpu_layout.hpp"
@@ -178,11 +179,13 @@ public:
     std::string gl_version() const;
     std::string gl_renderer() const;
     const GpuStats &stats() const { return stats_; }
+    /// What stays on the GPU for the scene.
+    const GpuModel &model() const { return model_; }
     /// What the model takes on the GPU in its layout.
-    const sbrt::GpuMemory &memory() const { return memory_; }
-    sbrt::GpuLayout layout() const { return layout_; }
+    const sbrt::GpuMemory &memory() const { return model_.memory(); }
+    sbrt::GpuLayout layout() const { return model_.layout(); }
     /// Bytes of the empty-space pyramid on the GPU.
-    size_t pyramid_bytes() const { return pyramid_.bytes(); }
+    size_t pyramid_bytes() const { return model_.pyramid_bytes(); }
     const GlApi &gl() const { return gl_; }
     /// The program that writes hit records (compiled when first asked for).
     GLuint program() const { return record_program().name(); }
@@ -200,8 +203,8 @@ public:
 
 private:
     const GlComputeProgram &record_program() const;
-    /// Binds the model, the materials, the pyramid, the first pass's
-    /// bounds and the view block.
+    /// Binds the model (GpuModel::bind), the first pass's bounds and the
+    /// view block.
     void bind_model() const;
     /// The view block of `camera`, with the first pass's tile bounds on the
     /// GPU (computed when the camera is not the last one's).
@@ -247,17 +250,9 @@ private:
     GlApi gl_;
     ProgramCache cache_;
     size_t max_block_bytes_;
-    sbrt::GpuLayout layout_;
-    sbrt::GpuMemory memory_;
+    GpuModel model_; ///< what stays on the GPU for the scene
     mutable std::optional<GlComputeProgram> program_; ///< hit records
-    /// the model: two buffers (ssbo) or two textures (textures)
-    /// 5-SSBO: group offsets, stack counts, intervals
-    std::optional<GlBuffer> group_offsets_, counts_, intervals_;
-    std::optional<GlUintTexture> index_texture_, interval_texture_;
-    GlBuffer materials_, view_;
-    GlBuffer pyramid_; ///< empty-space skipping (levels() 0: off)
-    /// the model's alone, where boreholes drawn with it fill theirs
-    std::optional<GlBuffer> model_pyramid_;
+    GlBuffer view_;
     std::optional<GlBuffer> band_; ///< the hit records of a band of rows
     std::vector<sbrt::GpuPixelHit> records_;
     /// shading on the GPU: its program, the materials' looks, the Shade
@@ -271,18 +266,14 @@ private:
     std::optional<GlBuffer> paint_;
     std::string paint_key_;
     /// the boreholes' pass over listed tiles (with a drape or without),
-    /// the culling pass that lists them, the boxes (binding 14), and the
-    /// tiles of the band dispatched into each of MappedBands' slots
-    /// (binding 12): written only once the GPU is done with the slot
+    /// the culling pass that lists them, and the tiles of the band
+    /// dispatched into each of MappedBands' slots (binding 12): written
+    /// only once the GPU is done with the slot
     std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_, cull_program_;
-    std::optional<GlBuffer> boxes_;
     std::array<std::optional<GlBuffer>, MappedBands::SLOTS> tile_lists_;
     /// the count of tiles listed, copied there for the host once the band
     /// is done (a read of GPU memory would wait for all queued)
     std::array<std::optional<MappedBuffer>, MappedBands::SLOTS> tile_counts_;
-    /// boreholes and curtains drawn by the shading program (bindings 9,
-    /// 10 and, with the model, each cell's boreholes: 11)
-    std::optional<GlBuffer> overlays_, logs_, cell_overlays_;
     /// kernel normals: the depth pass and the shading pass (with a drape
     /// or without), the whole image's hit records and depths, the
     /// kernel's cells and its Kernel block
@@ -296,7 +287,7 @@ private:
     std::optional<GlBuffer> tile_starts_;
     sbrt::GpuView first_pass_view_{};
     sbrt::GpuKernel kernel_{};
-    std::optional<GlBuffer> looks_, shade_;
+    std::optional<GlBuffer> shade_; ///< the Shade block
     MappedBands bands_; ///< where shaded bands land
     PassTimer timer_;
     /// the host's shader of the pixels it traces, kept while the shading

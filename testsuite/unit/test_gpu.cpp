@@ -22,6 +22,7 @@
 
 #include "tracing/cpu_tracing.hpp"
 #include "util/error.hpp"
+#include "gpu_model.hpp"
 #include "gpu_renderer.hpp"
 #include "gpu_row_tracer.hpp"
 #include "gpu_tracer.hpp"
@@ -65,6 +66,40 @@ TEST_P(Gpu, ReportsItsVersionAndRenderer)
     sbrt_gl::GpuTracer gpu(*context_, tracer, options());
     EXPECT_NE(gpu.gl_version().find("4."), std::string::npos) << gpu.gl_version();
     EXPECT_FALSE(gpu.gl_renderer().empty());
+}
+
+TEST_P(Gpu, TheModelStaysOnTheGpuApartFromThePasses)
+{
+    // GpuModel alone: the model in its layout, its pyramid; a storage
+    // buffer limit it exceeds names what does not fit
+    const Model m = geology(12, 16, 10);
+    const Tracer tracer(m, 1.0);
+    const sbrt_gl::GlApi gl(*context_);
+    GLint side = 0;
+    gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &side);
+    {
+        sbrt_gl::GpuModel model(gl, tracer, layout(), size_t(1) << 26);
+        const GpuMemory want = gpu_memory(m, layout(), side);
+        EXPECT_EQ(model.layout(), layout());
+        EXPECT_EQ(model.memory().interval_bytes, want.interval_bytes);
+        EXPECT_EQ(model.memory().texture_cols, want.texture_cols);
+        EXPECT_EQ(model.pyramid_bytes(), make_gpu_pyramid(tracer.pyramid()).size() * 4);
+        model.bind();
+        model.bind_looks();
+        model.bind_pyramid(true);
+        EXPECT_EQ(gl.GetError(), GLenum(GL_NO_ERROR));
+    }
+    try {
+        sbrt_gl::GpuModel too_large(gl, tracer, layout(), 64);
+        ADD_FAILURE() << "a model over the limit went up";
+    }
+    catch (const Error &e) {
+        EXPECT_NE(std::string(e.what()).find("largest storage buffer"), std::string::npos)
+            << e.what();
+    }
+    // the tracer holds one
+    const sbrt_gl::GpuTracer gpu(*context_, tracer, options());
+    EXPECT_EQ(gpu.model().memory().interval_bytes, gpu.memory().interval_bytes);
 }
 
 TEST_P(Gpu, BlockLayoutMatchesTheShader)

@@ -1,0 +1,152 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   The scene's data resident on the GPU
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_model.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "gpu_internal.hpp"
+#include "gpu/gpu_layout.hpp"
+#include "gpu/gpu_overlays.hpp"
+
+namespace sbrt_gl {
+
+namespace {
+
+/// The largest width and height of a 2D texture.
+int max_texture_side(const GlApi &gl)
+{
+    GLint side = 0;
+    gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &side);
+    return std::max(side, 1);
+}
+
+/// A storage buffer of `words`, named `what` where it exceeds `limit`.
+template <class T>
+GlBuffer storage_buffer(const GlApi &gl, const std::vector<T> &words, size_t limit,
+                        const char *what)
+{
+    return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER,
+                    checked_bytes(words.size() * sizeof(T), limit, what), words.data());
+}
+
+/// An empty-space pyramid (binding 4).
+GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::MinMaxPyramid &pyramid, size_t limit)
+{
+    return storage_buffer(gl, sbrt::make_gpu_pyramid(pyramid), limit, "empty-space pyramid");
+}
+
+/// How each material looks (binding 3).
+GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
+{
+    const std::vector<sbrt::GpuMaterial> table = sbrt::make_gpu_materials(tracer);
+    return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER,
+                    table.size() * sizeof(sbrt::GpuMaterial), table.data());
+}
+
+} // namespace
+
+GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout layout,
+                   size_t max_block_bytes)
+    : gl_(gl), tracer_(tracer), max_block_bytes_(max_block_bytes), layout_(layout),
+      memory_(sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl))),
+      materials_(material_buffer(gl, tracer)),
+      pyramid_(pyramid_buffer(gl, tracer.pyramid(), max_block_bytes))
+{
+    if (&tracer.model_pyramid() != &tracer.pyramid())
+        model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
+    upload_stacks(tracer.model());
+    gl_.Finish();
+    check_gl(gl_, "uploading the model");
+}
+
+void GpuModel::upload_stacks(const sbrt::Model &model)
+{
+    if (layout_ == sbrt::GpuLayout::textures) {
+        const sbrt::Frame &f = model.frame();
+        index_texture_.emplace(gl_, f.cols, f.rows, sbrt::index_texels(model).data());
+        interval_texture_.emplace(
+            gl_, memory_.texture_cols, memory_.texture_rows,
+            sbrt::interval_texels(model, memory_.texture_cols, memory_.texture_rows).data(),
+            model.intervals().is_compact() ? 1 : 2);
+        return;
+    }
+    // the model's own compact arrays go up as they are: counts and
+    // intervals; only the group offsets narrow to 32 bits. The shader
+    // reads their bytes as little-endian words.
+    static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+                  "the GL path uploads the model's arrays as they lie in memory");
+    group_offsets_.emplace(
+        storage_buffer(gl_, sbrt::group_offset_words(model), max_block_bytes_, "stack offsets"));
+    const sbrt::StackIndex &index = model.index();
+    counts_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                    checked_bytes(index.count_data_bytes(), max_block_bytes_, "stack counts"),
+                    index.count_data());
+    const void *records = model.intervals().visit(
+        [](const auto *first) { return static_cast<const void *>(first); });
+    intervals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
+                       checked_bytes(memory_.interval_bytes, max_block_bytes_, "intervals"),
+                       records);
+}
+
+void GpuModel::bind() const
+{
+    if (layout_ == sbrt::GpuLayout::ssbo) {
+        group_offsets_->bind(0);
+        intervals_->bind(1);
+        counts_->bind(6);
+    }
+    else {
+        index_texture_->bind(0);
+        interval_texture_->bind(1);
+    }
+    materials_.bind(3);
+    pyramid_.bind(4);
+}
+
+void GpuModel::bind_pyramid(bool model_alone) const
+{
+    (model_alone && model_pyramid_ ? *model_pyramid_ : pyramid_).bind(4);
+}
+
+void GpuModel::bind_looks()
+{
+    if (!looks_) {
+        const std::vector<sbrt::GpuLook> looks = sbrt::make_gpu_looks(tracer_);
+        looks_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, looks.size() * sizeof(sbrt::GpuLook),
+                       looks.data());
+    }
+    looks_->bind(5);
+}
+
+void GpuModel::upload_overlays()
+{
+    const sbrt::GpuOverlays overlays = sbrt::make_gpu_overlays(tracer_);
+    overlays_.emplace(storage_buffer(gl_, overlays.words, max_block_bytes_,
+                                     "boreholes and fence panels"));
+    logs_.emplace(storage_buffer(gl_, overlays.logs, max_block_bytes_, "borehole logs"));
+    if (!overlays.cells.empty())
+        cell_overlays_.emplace(
+            storage_buffer(gl_, overlays.cells, max_block_bytes_, "cells' boreholes"));
+    // with the model: the boxes of the boreholes' pass and its culling
+    if (sbrt::gpu_overlay_mode(tracer_) == sbrt::GpuOverlayMode::with_model)
+        boxes_.emplace(storage_buffer(gl_, sbrt::make_gpu_boxes(tracer_, tracer_.overlay_boxes()),
+                                      max_block_bytes_, "boreholes' boxes"));
+}
+
+void GpuModel::bind_overlays()
+{
+    if (!overlays_)
+        upload_overlays();
+    overlays_->bind(9);
+    logs_->bind(10);
+    if (cell_overlays_)
+        cell_overlays_->bind(11);
+    if (boxes_)
+        boxes_->bind(14);
+}
+
+} // namespace sbrt_gl

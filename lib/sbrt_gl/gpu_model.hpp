@@ -1,0 +1,80 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   What stays on the GPU for a prepared scene: the model's
+ *            stacks in their layout, the materials, the empty-space
+ *            pyramids, how the materials look, the boreholes and curtains
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GL_GPU_MODEL_HPP
+#define SBRT_GL_GPU_MODEL_HPP
+
+#include <cstddef>
+#include <optional>
+
+#include "gl_api.hpp"
+#include "gl_objects.hpp"
+#include "gpu/gpu_memory_layout.hpp"
+#include "tracing/tracer.hpp"
+
+namespace sbrt_gl {
+
+/// \brief The resident part of a GPU tracer: the model of `tracer` uploaded
+/// once, at construction, in `layout` (the stack index and the intervals
+/// as two storage buffers or two textures), its materials and pyramids;
+/// how the materials look and the scene's boreholes and curtains go up
+/// when first bound. Each is owned by its GL object (gl_objects.hpp) and
+/// released with the GpuModel; the context must be current. Binds them at
+/// the bindings the shaders declare (shaders/common/layout.glsl).
+class GpuModel {
+public:
+    /// `max_block_bytes`: the GPU's largest storage buffer binding (an
+    /// error names what exceeds it).
+    GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout layout,
+             size_t max_block_bytes);
+    GpuModel(const GpuModel &) = delete;
+    GpuModel &operator=(const GpuModel &) = delete;
+
+    /// The stack index and intervals (bindings 0, 1 and in the ssbo layout
+    /// 6), the materials (3) and the pyramid (4).
+    void bind() const;
+    /// At binding 4: the pyramid of the model alone where boreholes drawn
+    /// with it (`model_alone`) have one of their own, else the scene's.
+    void bind_pyramid(bool model_alone = false) const;
+    /// How each material looks (binding 5).
+    void bind_looks();
+    /// The boreholes and curtains the shading program draws (bindings 9,
+    /// 10, where cells list theirs 11, with the model their boxes 14).
+    void bind_overlays();
+
+    sbrt::GpuLayout layout() const { return layout_; }
+    /// What the model takes on the GPU in its layout.
+    const sbrt::GpuMemory &memory() const { return memory_; }
+    /// Bytes of the empty-space pyramid.
+    size_t pyramid_bytes() const { return pyramid_.bytes(); }
+
+private:
+    void upload_stacks(const sbrt::Model &model);
+    void upload_overlays();
+
+    const GlApi &gl_;
+    const sbrt::Tracer &tracer_;
+    size_t max_block_bytes_;
+    sbrt::GpuLayout layout_;
+    sbrt::GpuMemory memory_;
+    /// the stacks: group offsets, stack counts, intervals (ssbo), or the
+    /// index and the intervals as textures
+    std::optional<GlBuffer> group_offsets_, counts_, intervals_;
+    std::optional<GlUintTexture> index_texture_, interval_texture_;
+    GlBuffer materials_;
+    GlBuffer pyramid_; ///< empty-space skipping (levels() 0: off)
+    /// the model's alone, where boreholes drawn with it fill theirs
+    std::optional<GlBuffer> model_pyramid_;
+    std::optional<GlBuffer> looks_;
+    /// boreholes and curtains, their logs, each cell's boreholes, and with
+    /// the model the boxes of the boreholes' pass and its culling
+    std::optional<GlBuffer> overlays_, logs_, cell_overlays_, boxes_;
+};
+
+} // namespace sbrt_gl
+
+#endif
