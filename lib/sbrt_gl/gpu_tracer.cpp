@@ -300,18 +300,18 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
         sbrt::fail("these colours by voxel are made on the host, not on the GPU");
     sbrt::GpuShade shade = sbrt::make_gpu_shade(tracer_, shading, outputs);
     const sbrt::GpuBandLayout layout = band_layout(camera, row_count, outputs, shade);
-    GlComputeProgram &program = shading_program(shading, Pass::shade);
+    ShadePlan plan;
+    plan.model_program = &shading_program(shading, Pass::shade);
     // boreholes with the model: the model alone everywhere, then the model
     // and the boreholes again over the tiles where a ray may meet one (no
     // other ray pays for them)
-    const bool boreholes = sbrt::gpu_overlay_mode(tracer_) == sbrt::GpuOverlayMode::with_model;
-    const std::vector<std::array<glm::dvec3, 2>> &boxes = tracer_.overlay_boxes();
-    GlComputeProgram *borehole_program =
-        boreholes ? &shading_program(shading, Pass::shade_boreholes) : nullptr;
-    // the camera among the boxes: every tile in the boreholes' pass, and no
-    // model pass (no box lists to test its hits against)
-    const bool every_tile = boreholes && sbrt::overlay_tiles_everywhere(boxes, camera);
-    sbrt::GpuView view = traced_view(camera, loop_budget_);
+    if (sbrt::gpu_overlay_mode(tracer_) == sbrt::GpuOverlayMode::with_model) {
+        plan.borehole_program = &shading_program(shading, Pass::shade_boreholes);
+        // the camera among the boxes: every tile in the boreholes' pass,
+        // and no model pass (no box lists to test its hits against)
+        plan.every_tile = sbrt::overlay_tiles_everywhere(tracer_.overlay_boxes(), camera);
+    }
+    plan.view = traced_view(camera, loop_budget_);
     bind_model();
     bind_shading(shade, shading);
     if (shading.property || shading.fade) {
@@ -323,12 +323,29 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
         view_double_->upload(&exact, sizeof exact);
         view_double_->bind(3);
     }
+    set_band_scratch(camera, layout, plan.borehole_program != nullptr);
+    shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
+               [&](int first, int count, int slot) {
+                   dispatch_shading(camera, plan, first, count, slot);
+               });
+    if (plan.borehole_program) {
+        // the tiles the GPU listed in the band just done (its slot's count)
+        uint32_t listed = 0;
+        std::memcpy(&listed, tile_counts_[size_t(bands_.last_slot())]->host(), sizeof listed);
+        stats_.borehole_tiles += listed;
+    }
+}
+
+void GpuTracer::set_band_scratch(const sbrt::Camera &camera, const sbrt::GpuBandLayout &layout,
+                                 bool boreholes)
+{
     const int cols = camera.cols();
+    const size_t boxes = tracer_.overlay_boxes().size();
     // GL takes at least 65535 work groups a dimension: the cull's a box,
     // the boreholes' pass's a tile of the band
     const size_t band_tiles = size_t((cols + 7) / 8) * size_t((layout.rows + 7) / 8);
-    if (boreholes && (band_tiles > 65535 || boxes.size() > 65535))
-        sbrt::fail("boreholes with the model on the GPU: ", boxes.size(),
+    if (boreholes && (band_tiles > 65535 || boxes > 65535))
+        sbrt::fail("boreholes with the model on the GPU: ", boxes,
                    " boreholes over bands of ", band_tiles,
                    " tiles, more than one dispatch takes (65535): fewer rows a band or "
                    "fewer boreholes");
@@ -342,96 +359,102 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                                                  max_block_bytes_, "hits' distances")
                                  : 0,
                        13);
-    shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
-               [&](int first, int count, int slot) {
-                   if (stats_.before_dispatch_ms == 0) // the first band
-                       stats_.before_dispatch_ms = ms_since(frame_start_);
-                   view.options[2] = uint32_t(first);
-                   view.options[3] = uint32_t(count);
-                   view_.upload(&view, sizeof view); // stays bound to index 0
-                   const size_t all_tiles =
-                       size_t((cols + 7) / 8) * size_t((count + 7) / 8);
-                   if (!every_tile) {
-                       ++stats_.model_pass_bands;
-                       // the model alone: skipping as if there were no boreholes
-                       model_.bind_pyramid(boreholes);
-                       program.use();
-                       timer_.time(int(Pass::shade), [&] {
-                           gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8),
-                                               1);
-                       });
-                       model_.bind_pyramid();
-                   }
-                   if (!boreholes)
-                       return;
-                   stats_.tiles += all_tiles;
-                   // the band's tiles a box reaches: listed by the GPU (or
-                   // every tile by the host), then the boreholes' pass over
-                   // them, as many work groups as tiles listed
-                   const auto listing = Clock::now();
-                   const sbrt::GpuTileHead head =
-                       sbrt::make_gpu_tile_head(tracer_, camera, first, count,
-                                                uint32_t(boxes.size()), every_tile ? 0 : 8);
-                   const std::vector<uint32_t> words =
-                       every_tile ? sbrt::gpu_every_tile_list(head)
-                                  : std::vector<uint32_t>(
-                                        reinterpret_cast<const uint32_t *>(&head),
-                                        reinterpret_cast<const uint32_t *>(&head + 1));
-                   const size_t bytes = checked_bytes(size_t(head.words) * 4, max_block_bytes_,
-                                                      "boreholes' tiles");
-                   std::optional<GlBuffer> &list = tile_lists_[size_t(slot)];
-                   if (!list || list->bytes() < bytes) // room to grow
-                       list.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                                    std::min(bytes + bytes / 2, max_block_bytes_));
-                   list->write(0, words.data(), words.size() * 4);
-                   if (!every_tile) {
-                       // no box counted in any tile yet
-                       const GLuint zero = 0;
-                       gl_.ClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI,
-                                              GLintptr(head.counts_at) * 4,
-                                              GLsizeiptr(all_tiles) * 4, GL_RED_INTEGER,
-                                              GL_UNSIGNED_INT, &zero);
-                   }
-                   stats_.borehole_list_ms += ms_since(listing);
-                   const auto submit = Clock::now();
-                   list->bind(12);
-                   if (!every_tile) {
-                       // the model pass's farthest t of each tile before
-                       // the culling reads them
-                       gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-                       cull_program().use();
-                       timer_.time(int(Pass::cull_tiles), [&] {
-                           gl_.DispatchCompute(GLuint(boxes.size()), 1, 1);
-                       });
-                   }
-                   // the list and the model pass's hits before the pass reads them
-                   // (and the count before it is copied out)
-                   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
-                                     GL_BUFFER_UPDATE_BARRIER_BIT);
-                   borehole_program->use();
-                   timer_.time(int(Pass::shade_boreholes), [&] {
-                       if (every_tile) {
-                           gl_.DispatchCompute(GLuint(all_tiles), 1, 1);
-                           return;
-                       }
-                       gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list->name());
-                       gl_.DispatchComputeIndirect(0);
-                   });
-                   std::optional<MappedBuffer> &listed = tile_counts_[size_t(slot)];
-                   if (!listed)
-                       listed.emplace(gl_, sizeof(uint32_t));
-                   gl_.BindBuffer(GL_COPY_READ_BUFFER, list->name());
-                   gl_.BindBuffer(GL_COPY_WRITE_BUFFER, listed->name());
-                   gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
-                                         sizeof(uint32_t));
-                   stats_.borehole_submit_ms += ms_since(submit);
-               });
-    if (boreholes) {
-        // the tiles the GPU listed in the band just done (its slot's count)
-        uint32_t listed = 0;
-        std::memcpy(&listed, tile_counts_[size_t(bands_.last_slot())]->host(), sizeof listed);
-        stats_.borehole_tiles += listed;
+}
+
+void GpuTracer::dispatch_shading(const sbrt::Camera &camera, ShadePlan &plan, int first,
+                                 int count, int slot)
+{
+    if (stats_.before_dispatch_ms == 0) // the first band
+        stats_.before_dispatch_ms = ms_since(frame_start_);
+    plan.view.options[2] = uint32_t(first);
+    plan.view.options[3] = uint32_t(count);
+    view_.upload(&plan.view, sizeof plan.view); // stays bound to index 0
+    const bool boreholes = plan.borehole_program != nullptr;
+    if (!plan.every_tile) {
+        ++stats_.model_pass_bands;
+        // the model alone: skipping as if there were no boreholes
+        model_.bind_pyramid(boreholes);
+        plan.model_program->use();
+        timer_.time(int(Pass::shade), [&] {
+            gl_.DispatchCompute(GLuint((camera.cols() + 7) / 8), GLuint((count + 7) / 8), 1);
+        });
+        model_.bind_pyramid();
     }
+    if (boreholes)
+        dispatch_borehole_tiles(camera, plan, first, count, slot);
+}
+
+GlBuffer &GpuTracer::borehole_tile_list(const sbrt::Camera &camera, const ShadePlan &plan,
+                                        int first, int count, int slot)
+{
+    // the band's tiles a box reaches: listed by the GPU (or every tile by
+    // the host)
+    const auto listing = Clock::now();
+    const sbrt::GpuTileHead head =
+        sbrt::make_gpu_tile_head(tracer_, camera, first, count,
+                                 uint32_t(tracer_.overlay_boxes().size()),
+                                 plan.every_tile ? 0 : 8);
+    const std::vector<uint32_t> words =
+        plan.every_tile ? sbrt::gpu_every_tile_list(head)
+                        : std::vector<uint32_t>(reinterpret_cast<const uint32_t *>(&head),
+                                                reinterpret_cast<const uint32_t *>(&head + 1));
+    const size_t bytes =
+        checked_bytes(size_t(head.words) * 4, max_block_bytes_, "boreholes' tiles");
+    std::optional<GlBuffer> &list = tile_lists_[size_t(slot)];
+    if (!list || list->bytes() < bytes) // room to grow
+        list.emplace(gl_, GL_SHADER_STORAGE_BUFFER, std::min(bytes + bytes / 2, max_block_bytes_));
+    list->write(0, words.data(), words.size() * 4);
+    if (!plan.every_tile) {
+        // no box counted in any tile yet
+        const GLuint zero = 0;
+        const size_t all_tiles = size_t((camera.cols() + 7) / 8) * size_t((count + 7) / 8);
+        gl_.ClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GLintptr(head.counts_at) * 4,
+                               GLsizeiptr(all_tiles) * 4, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                               &zero);
+    }
+    stats_.borehole_list_ms += ms_since(listing);
+    return *list;
+}
+
+void GpuTracer::dispatch_borehole_tiles(const sbrt::Camera &camera, const ShadePlan &plan,
+                                        int first, int count, int slot)
+{
+    const size_t all_tiles = size_t((camera.cols() + 7) / 8) * size_t((count + 7) / 8);
+    stats_.tiles += all_tiles;
+    const GlBuffer &list = borehole_tile_list(camera, plan, first, count, slot);
+    // then the boreholes' pass over them, as many work groups as tiles
+    // listed
+    const auto submit = Clock::now();
+    list.bind(12);
+    if (!plan.every_tile) {
+        // the model pass's farthest t of each tile before the culling
+        // reads them
+        gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        cull_program().use();
+        timer_.time(int(Pass::cull_tiles), [&] {
+            gl_.DispatchCompute(GLuint(tracer_.overlay_boxes().size()), 1, 1);
+        });
+    }
+    // the list and the model pass's hits before the pass reads them (and
+    // the count before it is copied out)
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
+                      GL_BUFFER_UPDATE_BARRIER_BIT);
+    plan.borehole_program->use();
+    timer_.time(int(Pass::shade_boreholes), [&] {
+        if (plan.every_tile) {
+            gl_.DispatchCompute(GLuint(all_tiles), 1, 1);
+            return;
+        }
+        gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list.name());
+        gl_.DispatchComputeIndirect(0);
+    });
+    std::optional<MappedBuffer> &listed = tile_counts_[size_t(slot)];
+    if (!listed)
+        listed.emplace(gl_, sizeof(uint32_t));
+    gl_.BindBuffer(GL_COPY_READ_BUFFER, list.name());
+    gl_.BindBuffer(GL_COPY_WRITE_BUFFER, listed->name());
+    gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, sizeof(uint32_t));
+    stats_.borehole_submit_ms += ms_since(submit);
 }
 
 GlComputeProgram &GpuTracer::cull_program()

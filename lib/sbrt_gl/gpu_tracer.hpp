@@ -240,6 +240,35 @@ private:
                     const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,
                     sbrt::Band &band, unsigned cpu_threads,
                     const std::function<void(int, int, int)> &dispatch);
+    /// What shade_rows settles for a frame: the view block (each band's
+    /// rows set as it is dispatched), the model pass's program, and with
+    /// boreholes drawn with the model their pass's and whether every tile
+    /// goes through it (the camera among their boxes: no model pass).
+    struct ShadePlan {
+        sbrt::GpuView view{};
+        GlComputeProgram *model_program = nullptr;
+        GlComputeProgram *borehole_program = nullptr; ///< none: no boreholes pass
+        bool every_tile = false;
+    };
+    /// Checks the boreholes' dispatch sizes of bands of `layout` and sets
+    /// the bands' scratch buffers (the hits' distances; none without
+    /// `boreholes`).
+    void set_band_scratch(const sbrt::Camera &camera, const sbrt::GpuBandLayout &layout,
+                          bool boreholes);
+    /// Queues rows [first, first + count) of `plan` into MappedBands' slot
+    /// `slot`: the model pass, then the boreholes' tiles.
+    void dispatch_shading(const sbrt::Camera &camera, ShadePlan &plan, int first, int count,
+                          int slot);
+    /// The head (or, every tile, the whole list) of the band's list of
+    /// tiles that the boreholes' pass shades, written into the slot's
+    /// buffer (binding 12 then).
+    GlBuffer &borehole_tile_list(const sbrt::Camera &camera, const ShadePlan &plan, int first,
+                                 int count, int slot);
+    /// The band's tiles culled by the boxes (tile_cull.comp), the
+    /// boreholes' pass over those listed, their count copied out for the
+    /// host.
+    void dispatch_borehole_tiles(const sbrt::Camera &camera, const ShadePlan &plan, int first,
+                                 int count, int slot);
     /// The frame's band layout for `count` rows of `outputs` into `shade`.
     sbrt::GpuBandLayout band_layout(const sbrt::Camera &camera, int count,
                                     const sbrt::Outputs &outputs, sbrt::GpuShade &shade);
