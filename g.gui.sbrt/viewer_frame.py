@@ -29,6 +29,10 @@ from view_state import ViewState, ZexagScale, number
 
 REDUCTION = 2  # while the camera moves: 1/REDUCTION of the size each way
 REFINE_MS = 40  # the full frame (face normals) once the mouse rests this long
+# the same while a button is held: a hand dragging leaves gaps of 40-100 ms
+# between mouse moves, and a full exact frame of a national model (0.3-0.4
+# s on 2 cores) asked for in each gap stalled the drag at 2-5 frames a second
+REFINE_HELD_MS = 250
 # the smooth frame (kernel normals) once nothing has changed this long and
 # no mouse button is held: longer than the pauses within a gesture (wheel
 # steps, slider moves, a hand resting on a drag: tens of ms to a couple
@@ -62,6 +66,7 @@ class ViewerFrame(wx.Frame):
         self.state.drape = bool(texture)
         self.state.backend = backend
         self._sent = 0
+        self._smooth_ms = 0.0  # the last smooth frame's server time
         self._shown = 0
         self._times = []
         self._logged_widgets = False
@@ -375,18 +380,26 @@ class ViewerFrame(wx.Frame):
         mouse = wx.GetMouseState()
         return self.canvas.dragging() or mouse.LeftIsDown() or mouse.MiddleIsDown()
 
+    def _rest_ms(self):
+        """How long the view must rest before the smooth frame: SMOOTH_MS, or
+        as long as the last smooth frame took where that is longer (the
+        server cannot be interrupted: a national model's smooth frame keeps
+        it busy about 2 s, and a drag begun meanwhile waited for it, so a
+        frame is risked only after a rest as long as it blocks)."""
+        return max(SMOOTH_MS, int(self._smooth_ms))
+
     def _wait_for_rest(self):
-        """The smooth frame SMOOTH_MS from now, where smooth shading is on
+        """The smooth frame _rest_ms() from now, where smooth shading is on
         (a pending one is cancelled: something changed)."""
         self.rest.Stop()
         if self.state.smooth_shading and not self.canvas.dragging():
-            self.rest.StartOnce(SMOOTH_MS)
+            self.rest.StartOnce(self._rest_ms())
 
     def _on_rest(self, event):
         if not self.state.smooth_shading or self._closing:
             return
         if self._held():  # a slider's thumb held still: wait for its release
-            self.rest.StartOnce(SMOOTH_MS)
+            self.rest.StartOnce(self._rest_ms())
             return
         self.request_frame(True, smooth=True)
 
@@ -394,7 +407,7 @@ class ViewerFrame(wx.Frame):
         """A change while the user moves something: a reduced frame now,
         the full one when the moving stops."""
         self.request_frame(False)
-        self.refine.StartOnce(REFINE_MS)
+        self.refine.StartOnce(REFINE_HELD_MS if self._held() else REFINE_MS)
 
     def on_drag(self, mode, dx, dy):
         self.log.write("drag", mode=mode, dx=dx, dy=dy)
@@ -443,6 +456,8 @@ class ViewerFrame(wx.Frame):
             return
         number, kind = tag
         full, smooth = kind != "reduced", kind == "smooth"
+        if smooth:  # stale or not, what the next one will cost
+            self._smooth_ms = frame.ms
         if number < self._shown:
             return
         if smooth and number < self._sent:  # the view changed since: a stale frame

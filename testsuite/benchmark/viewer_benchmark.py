@@ -159,6 +159,9 @@ def viewer(sbrt, width, height, extra=()):
         gui.terminate()
         gui.wait(timeout=10)
         xvfb.terminate()
+        # VIEWER_LOG=path keeps the viewer's event log (what it asked, when)
+        if os.environ.get("VIEWER_LOG") and os.path.exists(log):
+            shutil.copyfile(log, os.environ["VIEWER_LOG"])
         shutil.rmtree(work, ignore_errors=True)
 
 
