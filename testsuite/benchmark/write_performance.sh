@@ -27,6 +27,7 @@ ALL=(
     "what_benchmark.sh C national"
     "surface_benchmark.sh C national"
     "national_benchmark.sh 2647 2812 313"
+    "national_views.sh national B"
     "channels_benchmark.sh 2647 2812 313"
     "animation_benchmark.sh B"
     "pipeline_benchmark.sh A B"
