@@ -86,6 +86,10 @@ PngAnnotations make_annotations(const RenderRequest &request, const sbrt::Model 
                       request.fade.c_str(), fade->low(), fade->high());
         caption += (caption.empty() ? "" : "; ") + std::string(text);
     }
+    // a coarse frame is never shown as if it were exact
+    const std::string coarse = request.coarse_note();
+    if (!coarse.empty())
+        caption += (caption.empty() ? "" : "; ") + coarse;
     a.caption = caption;
     a.north = north_on_image(frame, camera);
     if (request.view.kind != sbrt::ViewKind::top) {

@@ -97,6 +97,24 @@ class TestLevelOfDetail(TestCase):
                         % (100 * share))
         self.assertNotEqual(exact, coarse)
 
+    def test_the_png_of_a_coarse_frame_says_so(self):
+        # with the legend panel (right of the 200-pixel view): the coarse
+        # frame's has a caption line more, in dark text
+        words = [w for w in VIEW if w != "-n"]
+
+        def dark_in_panel(png, *more):
+            path = os.path.join(self.work, png)
+            result = run("r3.sbrt.render", "input=lod_big", f"png={path}", *words, *more,
+                         "--overwrite")
+            self.assertEqual(result.returncode, 0, result.stderr)
+            width, height, rgb = self.pixels(png)
+            self.assertGreater(width, 200)
+            return sum(1 for y in range(height) for x in range(200, width)
+                       if sum(rgb[3 * (y * width + x):3 * (y * width + x) + 3]) < 200)
+
+        self.assertGreater(dark_in_panel("caption_coarse.png", "detail=coarse"),
+                           dark_in_panel("caption_exact.png") + 100)
+
     def test_exact_output_is_what_it_was(self):
         """detail=exact is the default, and the member changes nothing of
         it: an SBRT without stacks_lod (as before) draws the same bytes."""
