@@ -61,8 +61,8 @@ clean:
 	@for d in $(SUBDIRS); do $(MAKE) -C $$d MODULE_TOPDIR=$(MODULE_TOPDIR) $(SUBMAKE_ARGS) clean; done
 	$(MAKE) -C testsuite/unit clean
 	$(MAKE) -C testsuite/fuzz clean
-	$(MAKE) -C testsuite/benchmark/trace_bench clean
-	$(MAKE) -C testsuite/benchmark/geotop_like clean
+	$(MAKE) -C benchmarks/trace_bench clean
+	$(MAKE) -C benchmarks/geotop_like clean
 	rm -rf dist testreport
 
 .PHONY: default install setup demo test check clean $(SUBDIRS)

@@ -23,7 +23,7 @@ import grass.script as gs
 from shell_output import shell_records
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-GEOTOP_LIKE = os.path.join(HERE, "benchmark", "geotop_like")
+GEOTOP_LIKE = os.path.join(HERE, "..", "benchmarks", "geotop_like")
 NX, NY, NZ = 17, 16, 20  # chunks of 16 columns: no side below 16
 DZ = 0.5
 CELL_AREA = 100.0 * 100.0

@@ -18,7 +18,7 @@ import grass.script as gs
 from geomodel_fixture import error_of, run_in_new_location
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-GEOTOP_LIKE = os.path.join(HERE, "benchmark", "geotop_like")
+GEOTOP_LIKE = os.path.join(HERE, "..", "benchmarks", "geotop_like")
 
 
 def parse_p(name):

@@ -26,7 +26,7 @@ from shell_output import shell_values
 from test_r3_sbrt_what import write_cats
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-GEOTOP_LIKE = os.path.join(HERE, "benchmark", "geotop_like")
+GEOTOP_LIKE = os.path.join(HERE, "..", "benchmarks", "geotop_like")
 
 # 30 x 20 cells of 10 m at UTM-size coordinates, 40 voxels of 2 m from -40 m
 W, S, RES = 450000.0, 5800000.0, 10.0

@@ -23,7 +23,7 @@ import grass.script as gs
 
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-GEOTOP_LIKE = os.path.join(HERE, "benchmark", "geotop_like")
+GEOTOP_LIKE = os.path.join(HERE, "..", "benchmarks", "geotop_like")
 
 # the generator's model: 24 x 18 cells of 100 m from 13600, 306000
 POINTS = [13650 + 100 * k for k in range(24)]

@@ -22,14 +22,14 @@ bench_model() {
 
 #   geotop_bench_model NX NY NZ DATA_DIR TOOLS_DIR [3D]
 # makes the GeoTOP-like NetCDF model of NX x NY x NZ voxels in DATA_DIR
-# once (testsuite/benchmark/geotop_like), imports its lithok as the SBRT
+# once (benchmarks/geotop_like), imports its lithok as the SBRT
 # geotop_NXxNY where the search path lacks it and, with 3D, expands that
 # into the 3D raster of the same name (r3.sbrt.convert -r, bit-identical:
 # the GRASS route's input); sets map= to the name.
 geotop_bench_model() {
     local nx=$1 ny=$2 nz=$3 data=$4 tools=$5 with_3d=${6:-} file gen
     map=geotop_${nx}x${ny}
-    gen=$tools/../testsuite/benchmark/geotop_like
+    gen=$tools/../benchmarks/geotop_like
     make -s -C "$gen" build/geotop_like
     file=$data/geotop_like_${nx}x${ny}x${nz}.nc
     [ -s "$file" ] || { "$gen/build/geotop_like" write "$file.part" "$nx" "$ny" "$nz" &&

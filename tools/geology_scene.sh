@@ -1,4 +1,4 @@
-# Sourced by tools/demo.sh and testsuite/benchmark/geology_views_benchmark.sh
+# Sourced by tools/demo.sh and benchmarks/geology_views_benchmark.sh
 # (inside GRASS, after make_geomodel.sh made the model): the inputs of the
 # geological views on the synthetic model, and the views themselves.
 #   make_geology_inputs       wells (points with logs), fence lines, ortho
