@@ -34,7 +34,7 @@ shared vec4 axis[28];
 
 float head_float(uint word) { return uintBitsToFloat(tiles[word]); }
 
-// raycast.comp's margin for float rounding around a ray's t (the
+// common/clip.glsl's margin for float rounding around a ray's t (the
 // boreholes' pass tests each pixel's model hit against its boxes with it)
 float t_margin(float t) { return 1e-4 * abs(t) + 1e-3; }
 
@@ -103,7 +103,7 @@ void hull_axis(uint me, uint front)
 }
 
 // The least t of a ray in the box, less what rounding and the boreholes'
-// pass's own margin (raycast.comp's t_margin) may take away.
+// pass's own margin (common/clip.glsl's t_margin) may take away.
 float box_least_t()
 {
     float t_box = 1.0 / 0.0, t_scale = 0.0;

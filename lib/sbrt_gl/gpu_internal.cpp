@@ -118,6 +118,8 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
             shade ? SHADER_COMMON_SHADE : "",
             kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_RAY,
             sbrt::shaded_on_gpu(overlays) ? SHADER_COMMON_OVERLAYS : "",
+            kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_CLIP,
+            kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_WALK,
             kernel                     ? SHADER_KERNEL
             : pass == Pass::first_pass ? SHADER_FIRST_PASS
                                        : SHADER_RAYCAST};

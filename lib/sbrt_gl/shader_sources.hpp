@@ -13,6 +13,8 @@ extern const char *const SHADER_COMMON_LAYOUT; ///< shaders/common/layout.glsl
 extern const char *const SHADER_COMMON_SHADE;  ///< shaders/common/shade.glsl
 extern const char *const SHADER_COMMON_RAY;    ///< shaders/common/ray.glsl
 extern const char *const SHADER_COMMON_OVERLAYS; ///< shaders/common/overlays.glsl
+extern const char *const SHADER_COMMON_CLIP;   ///< shaders/common/clip.glsl
+extern const char *const SHADER_COMMON_WALK;   ///< shaders/common/walk.glsl
 extern const char *const SHADER_RAYCAST;       ///< shaders/raycast.comp
 extern const char *const SHADER_KERNEL;        ///< shaders/kernel.comp
 extern const char *const SHADER_FIRST_PASS;    ///< shaders/first_pass.comp

@@ -1,6 +1,6 @@
 // Boreholes and fence curtains on the GPU, as lib/sbrt/tracing/
-// tracer_overlays.cpp meets them, in float; before raycast.comp, which
-// calls them:
+// tracer_overlays.cpp meets them, in float; before common/walk.glsl and
+// raycast.comp, which call them:
 // - SBRT_OVERLAYS, the model not drawn (boreholes alone, a fence diagram):
 //   every overlay the ray crosses between t_near and t_far, in the order
 //   of their starts, without walking the cells (trace_overlays);
