@@ -29,12 +29,11 @@ constexpr int UNSIZED_BAND_ROWS = 64;
 constexpr uint64_t BAND_BYTES = uint64_t(32) << 20;
 
 /// Bytes decoding rows of `cells` cells and `intervals` intervals takes,
-/// as decode_stacks_v2 counts them before it allocates (its memory_limit).
+/// as the reader holds them against its memory_limit.
 uint64_t band_bytes(uint64_t cells, uint64_t intervals, unsigned count_bytes,
                     unsigned record_bytes)
 {
-    return uint64_t(std::ceil(double(cells) * (4 + count_bytes + 0.5))) +
-           intervals * record_bytes;
+    return uint64_t(std::ceil(sbrt::decoded_bytes(cells, intervals, count_bytes, record_bytes)));
 }
 
 } // namespace

@@ -225,6 +225,12 @@ std::vector<uint8_t> encode_stacks_v2(const Model &model, const StacksV2Options 
     return std::move(sink.bytes());
 }
 
+double decoded_bytes(uint64_t cells, uint64_t intervals, unsigned count_bytes,
+                     unsigned record_bytes)
+{
+    return double(cells) * (4 + count_bytes + 0.5) + double(intervals) * record_bytes;
+}
+
 Frame frame_rows(const Frame &frame, int first, int count)
 {
     if (first < 0 || count < 1 || first > frame.rows - count)
@@ -302,10 +308,11 @@ Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what
     // pass 1's sizes (4 bytes a cell) beside the index it builds, the
     // points' mask; the intervals of the wanted blocks (with points only
     // the points' own, known after pass 1)
-    const double interval_bytes = compact ? sizeof(CompactInterval) : sizeof(Interval);
+    const unsigned interval_bytes = compact ? sizeof(CompactInterval) : sizeof(Interval);
     const auto check_memory = [&](uint64_t intervals) {
-        const double needed = double(out.cells()) * (4 + h.widths.count_bytes + 0.5) +
-                              double(keep.size()) + double(intervals) * interval_bytes;
+        const double needed =
+            decoded_bytes(out.cells(), intervals, h.widths.count_bytes, interval_bytes) +
+            double(keep.size());
         if (needed > double(limit))
             fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
                  "memory, more than the ", limit >> 20, " MiB available");

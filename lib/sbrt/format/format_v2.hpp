@@ -124,6 +124,14 @@ struct ReadOptions {
     ReadReport *report = nullptr; ///< filled where given
 };
 
+/// Bytes a read takes to decode `cells` cells holding `intervals`
+/// intervals (pass 1's sizes, 4 bytes a cell, beside the index it builds,
+/// `count_bytes` a cell and a group offset; the intervals, `record_bytes`
+/// each): what ReadOptions::memory_limit is held against, before anything
+/// is allocated.
+double decoded_bytes(uint64_t cells, uint64_t intervals, unsigned count_bytes,
+                     unsigned record_bytes);
+
 /// The frame of rows [first, first + count) of `frame` (full width); the
 /// edges are the frame's own where the rows reach them. Throws
 /// sbrt::Error where the rows are not within the frame.
