@@ -7,7 +7,6 @@
  ****************************************************************************/
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <vector>
 
 #include "measure/centre_sampling.hpp"
@@ -27,15 +26,6 @@ namespace {
 /// Rows measured together before they are written: 64, fewer in a region
 /// so wide that 64 rows would hold more than 2^20 cells (40 MiB of figures).
 int block_rows(int cols) { return std::max(1, std::min(64, (1 << 20) / std::max(1, cols))); }
-
-/// The model, only its blocks under the region where the file allows.
-sbrt::Model read_model(const SurfaceRequest &request, const struct Cell_head &region)
-{
-    sbrt::ReadOptions options;
-    options.threads = request.threads;
-    options.area = sbrt::MapArea{region.north, region.south, region.east, region.west};
-    return sbrt_grass::read_sbrt_map(request.input.c_str(), options);
-}
 
 /// A warning where no cell centre of the region falls in the model (a new
 /// location's default region): every map would be null.
@@ -61,17 +51,14 @@ void make_surfaces(const SurfaceRequest &request)
 {
     struct Cell_head region;
     G_get_window(&region);
-    // expected_thickness= reads the model whole (its channels lie by the
-    // spans of every column); otherwise band by band within memory=
-    std::optional<sbrt::Model> whole;
-    std::optional<sbrt_grass::SbrtBands> bands;
-    if (!request.expected_thickness.empty())
-        whole = read_model(request, region);
-    else
-        bands.emplace(request.input, request.memory, request.threads,
-                      sbrt::MapArea{region.north, region.south, region.east, region.west});
-    const sbrt::Frame frame = whole ? whole->frame() : bands->frame();
-    const std::vector<sbrt::Material> &materials = whole ? whole->materials() : bands->materials();
+    // band by band within memory=; expected_thickness= reads the model
+    // whole (its channels lie by the spans of every column)
+    const bool whole = !request.expected_thickness.empty();
+    sbrt_grass::SbrtBands bands(
+        request.input, request.memory, request.threads,
+        sbrt::MapArea{region.north, region.south, region.east, region.west}, whole);
+    const sbrt::Frame frame = bands.frame();
+    const std::vector<sbrt::Material> &materials = bands.materials();
     const bool by_classes = !request.classes.empty();
     // classes= by id, code, short name or label (sbrt::ClassNames)
     const sbrt::ClassSet set =
@@ -88,7 +75,8 @@ void make_surfaces(const SurfaceRequest &request)
     sbrt_grass::ProbabilityChannels probability;
     if (whole)
         probability = sbrt_grass::read_probability_channels(
-            request.input.c_str(), *whole, request.probability, "expected_thickness=");
+            request.input.c_str(), bands.band_at(0), request.probability,
+            "expected_thickness=");
     const sbrt::PropertyChannels *channels = probability.channels.get();
     const std::vector<size_t> &summed = probability.summed;
     const sbrt::CentreSampling sampling = sbrt::sample_at_centres(
@@ -96,8 +84,7 @@ void make_surfaces(const SurfaceRequest &request)
 
     warn_if_outside(request.input, frame, region, sampling);
 
-    SurfaceMaps maps(request, described,
-                     whole ? whole->vertical_datum() : bands->vertical_datum(), region.cols);
+    SurfaceMaps maps(request, described, bands.vertical_datum(), region.cols);
     const size_t cols = size_t(region.cols);
     const int block = block_rows(region.cols);
     std::vector<sbrt::MapFigures> figures(size_t(block) * cols);
@@ -108,18 +95,16 @@ void make_surfaces(const SurfaceRequest &request)
         G_percent(first, region.rows, 2);
         rows = std::min(block, region.rows - first);
         // the model's rows of this pass, within one band
-        const sbrt::Model *model = whole ? &*whole : nullptr;
-        if (bands) {
-            const auto row_of = [&](int k) { return sampling.model_row[size_t(k)]; };
-            int k = first;
-            while (k < first + rows && row_of(k) < 0)
+        const sbrt::Model *model = nullptr;
+        const auto row_of = [&](int k) { return sampling.model_row[size_t(k)]; };
+        int k = first;
+        while (k < first + rows && row_of(k) < 0)
+            ++k;
+        if (k < first + rows) {
+            model = &bands.band_at(row_of(k));
+            while (k < first + rows && row_of(k) < bands.band_end())
                 ++k;
-            if (k < first + rows) {
-                model = &bands->band_at(row_of(k));
-                while (k < first + rows && row_of(k) < bands->band_end())
-                    ++k;
-                rows = k - first;
-            }
+            rows = k - first;
         }
         sbrt::for_each_row(rows, request.threads, [&](int k) {
             const int model_row = sampling.model_row[size_t(first + k)];
@@ -131,8 +116,7 @@ void make_surfaces(const SurfaceRequest &request)
                     expected[at] = NAN;
                 if (model_row < 0 || model_col < 0)
                     continue;
-                const uint64_t cell = bands ? bands->band_cell(model_row, model_col)
-                                            : model->cell_index(model_row, model_col);
+                const uint64_t cell = bands.band_cell(model_row, model_col);
                 if (channels)
                     expected[at] = sbrt::expected_thickness(*channels, summed, cell,
                                                             voxel_height);
@@ -150,8 +134,7 @@ void make_surfaces(const SurfaceRequest &request)
                          channels ? expected.data() + size_t(k) * cols : nullptr);
     }
     G_percent(1, 1, 1);
-    if (bands)
-        G_verbose_message(_("Read in %d band(s), the largest %.1f MB in memory"),
-                          bands->bands_read(), double(bands->largest_band_bytes()) / (1 << 20));
+    G_verbose_message(_("Read in %d band(s), the largest %.1f MB in memory"),
+                      bands.bands_read(), double(bands.largest_band_bytes()) / (1 << 20));
     maps.close();
 }

@@ -6,7 +6,6 @@
  ****************************************************************************/
 #include <algorithm>
 #include <cstring>
-#include <optional>
 
 #include "model/class_names.hpp"
 #include "report_file.hpp"
@@ -75,20 +74,12 @@ void report_volumes(const VolumeRequest &request)
     struct Cell_head region;
     G_get_window(&region);
     const sbrt::MapArea area{region.north, region.south, region.east, region.west};
-    // probability= reads the model whole (its channels lie by the spans of
-    // every column); otherwise band by band within memory=
-    std::optional<sbrt::Model> whole;
-    std::optional<sbrt_grass::SbrtBands> bands;
-    if (!request.probability.empty()) {
-        sbrt::ReadOptions options;
-        options.threads = request.threads;
-        options.area = area;
-        whole = sbrt_grass::read_sbrt_map(request.input.c_str(), options);
-    }
-    else
-        bands.emplace(request.input, request.memory, request.threads, area);
-    const sbrt::Frame frame = whole ? whole->frame() : bands->frame();
-    const std::vector<sbrt::Material> &materials = whole ? whole->materials() : bands->materials();
+    // band by band within memory=; probability= reads the model whole (its
+    // channels lie by the spans of every column)
+    const bool whole = !request.probability.empty();
+    sbrt_grass::SbrtBands bands(request.input, request.memory, request.threads, area, whole);
+    const sbrt::Frame frame = bands.frame();
+    const std::vector<sbrt::Material> &materials = bands.materials();
 
     VolumeReport report;
     report.input = request.input;
@@ -111,21 +102,17 @@ void report_volumes(const VolumeRequest &request)
     report.categories = zones.categories;
 
     sbrt::VolumeSums sums(frame, materials.size(), report.sets, zones.cells, request.threads);
-    if (whole)
-        sums.add_band(*whole, 0);
-    else {
-        for (int row = 0; row < frame.rows; row = bands->band_end())
-            sums.add_band(bands->band_at(row), row);
-        G_verbose_message(_("Read in %d band(s), the largest %.1f MB in memory"),
-                          bands->bands_read(), double(bands->largest_band_bytes()) / (1 << 20));
-    }
+    for (int row = 0; row < frame.rows; row = bands.band_end())
+        sums.add_band(bands.band_at(row), row);
+    G_verbose_message(_("Read in %d band(s), the largest %.1f MB in memory"),
+                      bands.bands_read(), double(bands.largest_band_bytes()) / (1 << 20));
     const sbrt::VolumeTable table = by_row(zones, sums.table());
     if (whole) {
         const sbrt_grass::ProbabilityChannels p = sbrt_grass::read_probability_channels(
-            request.input.c_str(), *whole, request.probability, "probability=");
+            request.input.c_str(), bands.band_at(0), request.probability, "probability=");
         report.probability = request.probability;
         report.expected =
-            by_row(zones, sbrt::expected_volumes(*whole, *p.channels, p.summed,
+            by_row(zones, sbrt::expected_volumes(bands.band_at(0), *p.channels, p.summed,
                                                  zones.cells.cell_zones(), zones.cells.zones()));
     }
     write_report(out.get(), request.format, request.separator, report, table);

@@ -57,9 +57,16 @@ uint64_t read_memory(const Option *memory)
 }
 
 SbrtBands::SbrtBands(const std::string &name, uint64_t memory, unsigned threads,
-                     std::optional<sbrt::MapArea> area)
-    : name_(name), memory_(memory), threads_(threads), area_(area)
+                     std::optional<sbrt::MapArea> area, bool whole)
+    : name_(name), memory_(memory), threads_(threads), area_(area), whole_(whole)
 {
+    if (whole_) { // the one band now: its frame, materials and datum
+        band_at(0);
+        frame_ = band_.frame();
+        materials_ = band_.materials();
+        vertical_datum_ = band_.vertical_datum();
+        return;
+    }
     const std::optional<sbrt::ModelSummary> summary = read_sbrt_summary_map(name.c_str());
     if (!summary) {
         // no summaries (format 2.0 or 1): the frame from a read that
@@ -126,9 +133,10 @@ const sbrt::Model &SbrtBands::band_at(int row)
     sbrt::ReadOptions options;
     options.threads = threads_;
     options.area = area_;
-    if (whole_) {
+    if (whole_) { // no budget: every row at once
+        band_ = read_sbrt_map(name_.c_str(), options);
         band_first_ = 0;
-        band_end_ = frame_.rows;
+        band_end_ = band_.frame().rows;
     }
     else {
         const auto next = std::upper_bound(band_rows_.begin(), band_rows_.end(), row);
@@ -136,13 +144,13 @@ const sbrt::Model &SbrtBands::band_at(int row)
         band_end_ = *next;
         options.rows = sbrt::ReadOptions::Rows{band_first_, band_end_ - band_first_};
         options.memory_limit = memory_;
-    }
-    try {
-        band_ = read_sbrt_map(name_.c_str(), options);
-    }
-    catch (const sbrt::Error &e) {
-        sbrt::fail(e.what(), " (rows ", band_first_, " to ", band_end_ - 1,
-                   "; memory= sets the budget)");
+        try {
+            band_ = read_sbrt_map(name_.c_str(), options);
+        }
+        catch (const sbrt::Error &e) {
+            sbrt::fail(e.what(), " (rows ", band_first_, " to ", band_end_ - 1,
+                       "; memory= sets the budget)");
+        }
     }
     ++bands_read_;
     largest_ = std::max(largest_, band_.memory_bytes());

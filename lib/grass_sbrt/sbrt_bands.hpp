@@ -33,9 +33,11 @@ uint64_t read_memory(const Option *memory);
 class SbrtBands {
 public:
     /// Throws sbrt::Error where one row of blocks alone needs more than
-    /// `memory` bytes (saying how many it needs).
+    /// `memory` bytes (saying how many it needs). `whole`: the model read
+    /// at once, one band of every row, whatever `memory` (for what needs
+    /// every column at once: the property channels).
     SbrtBands(const std::string &name, uint64_t memory, unsigned threads,
-              std::optional<sbrt::MapArea> area = std::nullopt);
+              std::optional<sbrt::MapArea> area = std::nullopt, bool whole = false);
 
     /// The whole model's frame and materials.
     const sbrt::Frame &frame() const { return frame_; }
@@ -68,7 +70,7 @@ private:
     int band_first_ = -1, band_end_ = -1;
     int bands_read_ = 0;
     uint64_t largest_ = 0;
-    bool whole_ = false; ///< format 1 (or no stacks summary and 1 band)
+    bool whole_ = false; ///< one band of every row: asked for, or format 1
 };
 
 } // namespace sbrt_grass
