@@ -14,6 +14,7 @@ COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 import os
 import shutil
 import signal
+import struct
 import subprocess
 import tempfile
 import time
@@ -205,14 +206,16 @@ class TestCluster(TestCase):
     @staticmethod
     def lock_holder(lock):
         """The process GRASS's mapset lock `lock` names while it runs (not
-        once it is a zombie), else None."""
+        once it is a zombie), else None. GRASS's etc/lock writes the pid as
+        a native int, not as text: 2610 is b"2\\n\\0\\0", which read as text
+        names pid 2 (the kernel's kthreadd, never ended)."""
         try:
-            with open(lock) as f:
-                pid = int(f.read().split()[0])
+            with open(lock, "rb") as f:
+                (pid,) = struct.unpack("=i", f.read(struct.calcsize("=i")))
             with open(f"/proc/{pid}/stat") as f:
                 state = f.read().rsplit(")", 1)[1].split()[0]
             return None if state in ("Z", "X") else pid
-        except (OSError, ValueError, IndexError):
+        except (OSError, struct.error, IndexError):
             return None
 
     def wait_for_lock_release(self, lock):
