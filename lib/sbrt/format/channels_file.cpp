@@ -222,6 +222,27 @@ void write_channel_entry(ByteWriter &dir, const ChannelInfo &c)
     dir.u64(c.bytes);
 }
 
+/// One channel's entry of the directory, up to its blocks, as
+/// write_channel_entry writes it.
+ChannelInfo read_channel_entry(ByteReader &in, const std::string &what)
+{
+    ChannelInfo c;
+    c.name = read_string(in, what);
+    c.long_name = read_string(in, what);
+    c.unit = read_string(in, what);
+    c.scale = in.f64();
+    c.offset = in.f64();
+    c.has_fill = in.u8() != 0;
+    c.fill = in.f32();
+    c.voxels = in.u64();
+    c.valid = in.u64();
+    c.min = in.f64();
+    c.max = in.f64();
+    c.integer = in.u8() != 0;
+    c.bytes = in.u64();
+    return c;
+}
+
 void write_block_entry(ByteWriter &dir, uint64_t offset, uint32_t compressed, uint32_t raw,
                        uint32_t crc)
 {
@@ -236,6 +257,24 @@ void write_kinds(ByteWriter &dir, const std::vector<ChannelInfo> &channels)
 {
     for (const ChannelInfo &c : channels)
         dir.u8(uint8_t(c.known_kind()));
+}
+
+/// The kinds of `channels`: read after the last channel (1.1), or as
+/// their units say (1.0).
+void read_kinds(ByteReader &in, uint16_t minor, std::vector<ChannelInfo> &channels,
+                const std::string &what)
+{
+    for (ChannelInfo &c : channels) {
+        if (minor < 1) { // 1.0: what the unit says, as it was read then
+            c.kind = kind_of_unit(c.unit);
+            continue;
+        }
+        const uint8_t kind = in.u8();
+        if (kind < 1 || kind > LAST_CHANNEL_KIND)
+            fail(what, ": channel ", c.name, " has kind ", int(kind),
+                 ", not one this reader knows (corrupt file?)");
+        c.kind = ChannelKind(kind);
+    }
 }
 
 /// The header of a file whose directory (checksum `dir_crc`) lies at
@@ -487,68 +526,90 @@ struct PropertyChannels::Block {
     DecodedCodes codes;
 };
 
+namespace {
+
+/// The header's fields after the magic number and major version.
+struct ChannelsHeader {
+    uint16_t minor = 0;
+    uint32_t header_size = 0;
+    int rows = 0, cols = 0, block_size = 0;
+    uint32_t count = 0; ///< channels
+    uint64_t dir_at = 0, end = 0;
+    uint32_t dir_crc = 0;
+};
+
+/// The header of the `size` bytes at `data`, its magic number, major
+/// version, size and checksum checked.
+ChannelsHeader read_header(const uint8_t *data, size_t size, const std::string &what)
+{
+    if (size < CHANNELS_HEADER_SIZE || std::memcmp(data, CHANNELS_MAGIC, 8) != 0)
+        fail(what, ": not an SBRT channels file (bad magic number or truncated)");
+    ByteReader in(data, CHANNELS_HEADER_SIZE, what);
+    in.seek(8);
+    ChannelsHeader h;
+    const uint16_t major = in.u16();
+    // minor: later fields come before the header checksum, or after the
+    // directory's channels (1.1: the kinds)
+    h.minor = in.u16();
+    if (major != CHANNELS_MAJOR)
+        fail(what, ": channels format ", major, ".x needs a newer r3.sbrt");
+    h.header_size = in.u32();
+    if (h.header_size < CHANNELS_HEADER_SIZE || h.header_size > size)
+        fail(what, ": header size ", h.header_size, " is wrong");
+    if (crc32_of(data, h.header_size - 4) != uint32_t(load_le(data + h.header_size - 4, 4)))
+        fail(what, ": header checksum mismatch (corrupt file)");
+    h.rows = int(in.u32());
+    h.cols = int(in.u32());
+    h.block_size = int(in.u32());
+    h.count = in.u32();
+    h.dir_at = in.u64();
+    h.end = in.u64();
+    h.dir_crc = in.u32();
+    return h;
+}
+
+/// Checks header `h` against the model's frame `f` and the file of
+/// `size` bytes at `data`, with the directory's checksum.
+void check_header(const ChannelsHeader &h, const Frame &f, const uint8_t *data, size_t size,
+                  const std::string &what)
+{
+    if (h.rows != f.rows || h.cols != f.cols)
+        fail(what, ": channels of ", h.rows, " x ", h.cols, " cells for a model of ",
+             f.rows, " x ", f.cols);
+    if (h.block_size < 1 || h.block_size > 4096 || h.count < 1 || h.count > 65536)
+        fail(what, ": block size ", h.block_size, ", ", h.count, " channels (corrupt file?)");
+    if (h.end != size || h.dir_at < h.header_size || h.dir_at > size)
+        fail(what, ": file of ", size, " bytes says it ends at ", h.end,
+             " with its directory at ", h.dir_at, " (truncated or corrupt)");
+    if (crc32_of(data + h.dir_at, size - h.dir_at) != h.dir_crc)
+        fail(what, ": directory checksum mismatch (corrupt file)");
+}
+
+} // namespace
+
 PropertyChannels::PropertyChannels(std::shared_ptr<const MappedFile> file, std::string what,
                                    const Model &model)
     : file_(std::move(file)), what_(std::move(what))
 {
     const uint8_t *data = file_->data();
     const size_t size = file_->size();
-    if (size < CHANNELS_HEADER_SIZE || std::memcmp(data, CHANNELS_MAGIC, 8) != 0)
-        fail(what_, ": not an SBRT channels file (bad magic number or truncated)");
-    ByteReader h(data, CHANNELS_HEADER_SIZE, what_);
-    h.seek(8);
-    const uint16_t major = h.u16();
-    // minor: later fields come before the header checksum, or after the
-    // directory's channels (1.1: the kinds)
-    const uint16_t minor = h.u16();
-    if (major != CHANNELS_MAJOR)
-        fail(what_, ": channels format ", major, ".x needs a newer r3.sbrt");
-    const uint32_t header_size = h.u32();
-    if (header_size < CHANNELS_HEADER_SIZE || header_size > size)
-        fail(what_, ": header size ", header_size, " is wrong");
-    if (crc32_of(data, header_size - 4) != uint32_t(load_le(data + header_size - 4, 4)))
-        fail(what_, ": header checksum mismatch (corrupt file)");
-    rows_ = int(h.u32());
-    cols_ = int(h.u32());
-    block_size_ = int(h.u32());
-    const uint32_t count = h.u32();
-    const uint64_t dir_at = h.u64(), end = h.u64();
-    const uint32_t dir_crc = h.u32();
+    const ChannelsHeader h = read_header(data, size, what_);
     const Frame &f = model.frame();
-    if (rows_ != f.rows || cols_ != f.cols)
-        fail(what_, ": channels of ", rows_, " x ", cols_, " cells for a model of ",
-             f.rows, " x ", f.cols);
-    if (block_size_ < 1 || block_size_ > 4096 || count < 1 || count > 65536)
-        fail(what_, ": block size ", block_size_, ", ", count, " channels (corrupt file?)");
-    if (end != size || dir_at < header_size || dir_at > size)
-        fail(what_, ": file of ", size, " bytes says it ends at ", end,
-             " with its directory at ", dir_at, " (truncated or corrupt)");
-    if (crc32_of(data + dir_at, size - dir_at) != dir_crc)
-        fail(what_, ": directory checksum mismatch (corrupt file)");
+    check_header(h, f, data, size, what_);
+    rows_ = h.rows;
+    cols_ = h.cols;
+    block_size_ = h.block_size;
     block_cols_ = (cols_ + block_size_ - 1) / block_size_;
     const int block_rows = (rows_ + block_size_ - 1) / block_size_;
     blocks_ = size_t(block_rows) * size_t(block_cols_);
-    if (uint64_t(blocks_) * count * 20 > size - dir_at)
-        fail(what_, ": directory too short for ", count, " channels of ", blocks_,
+    if (uint64_t(blocks_) * h.count * 20 > size - h.dir_at)
+        fail(what_, ": directory too short for ", h.count, " channels of ", blocks_,
              " blocks");
-    blocks_data_ = std::make_unique<Block[]>(blocks_ * count);
+    blocks_data_ = std::make_unique<Block[]>(blocks_ * h.count);
 
-    ByteReader in(data + dir_at, size - dir_at, what_);
-    for (uint32_t ch = 0; ch < count; ++ch) {
-        ChannelInfo c;
-        c.name = read_string(in, what_);
-        c.long_name = read_string(in, what_);
-        c.unit = read_string(in, what_);
-        c.scale = in.f64();
-        c.offset = in.f64();
-        c.has_fill = in.u8() != 0;
-        c.fill = in.f32();
-        c.voxels = in.u64();
-        c.valid = in.u64();
-        c.min = in.f64();
-        c.max = in.f64();
-        c.integer = in.u8() != 0;
-        c.bytes = in.u64();
+    ByteReader in(data + h.dir_at, size - h.dir_at, what_);
+    for (uint32_t ch = 0; ch < h.count; ++ch) {
+        ChannelInfo c = read_channel_entry(in, what_);
         if (c.name.empty() || find(c.name) >= 0)
             fail(what_, ": channel ", ch + 1, " has no name or a name taken before");
         for (size_t b = 0; b < blocks_; ++b) {
@@ -557,26 +618,16 @@ PropertyChannels::PropertyChannels(std::shared_ptr<const MappedFile> file, std::
             block.compressed = in.u32();
             block.raw = in.u32();
             block.crc = in.u32();
-            if (block.offset < header_size || block.offset > dir_at ||
-                block.compressed > dir_at - block.offset)
+            if (block.offset < h.header_size || block.offset > h.dir_at ||
+                block.compressed > h.dir_at - block.offset)
                 fail(what_, ": block ", b, " of channel ", c.name,
                      " lies outside the file's blocks (corrupt file)");
         }
         channels_.push_back(std::move(c));
     }
-    for (ChannelInfo &c : channels_) {
-        if (minor < 1) { // 1.0: what the unit says, as it was read then
-            c.kind = kind_of_unit(c.unit);
-            continue;
-        }
-        const uint8_t kind = in.u8();
-        if (kind < 1 || kind > LAST_CHANNEL_KIND)
-            fail(what_, ": channel ", c.name, " has kind ", int(kind),
-                 ", not one this reader knows (corrupt file?)");
-        c.kind = ChannelKind(kind);
-    }
-    blocks_begin_ = header_size;
-    blocks_end_ = dir_at;
+    read_kinds(in, h.minor, channels_, what_);
+    blocks_begin_ = h.header_size;
+    blocks_end_ = h.dir_at;
 
     // where each cell's span lies in its block
     slots_.resize(size_t(f.cells()));

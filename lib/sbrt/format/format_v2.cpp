@@ -247,169 +247,271 @@ Frame frame_rows(const Frame &frame, int first, int count)
     return out;
 }
 
-Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what,
-                       const ReadOptions &options)
+namespace {
+
+/// Which blocks a read decodes, and of their cells which.
+struct CellSelection {
+    std::vector<char> wanted; ///< a flag a block
+    /// a flag a cell of the file's frame, with points only; empty: all
+    std::vector<char> keep;
+    uint64_t first_cell = 0, end_cell = 0; ///< the rows' cells in the file
+    bool decoded(uint64_t cell) const
+    {
+        return cell >= first_cell && cell < end_cell && (keep.empty() || keep[cell]);
+    }
+};
+
+/// Drops the blocks with none of `rows`' rows from `wanted`.
+void keep_rows(std::vector<char> &wanted, const BlockGrid &grid, const ReadOptions::Rows &rows)
 {
-    const unsigned threads = options.threads;
-    // header, materials and block table checked; the 2.1 summaries are
-    // not needed to decode
-    StacksV2Layout layout = open_stacks_v2(data, size, what);
+    for (size_t b = 0; b < wanted.size(); ++b) {
+        const int top_row = grid.first_row(int(b));
+        wanted[b] = wanted[b] && top_row < rows.first + rows.count &&
+                    top_row + grid.height(int(b)) > rows.first;
+    }
+}
+
+/// Drops the blocks that hold none of `points` from `wanted`; returns
+/// the points' cells, or nothing (all cells of the blocks) where the SBRT
+/// has property channels (their values lie by the spans of every column
+/// of a block).
+std::vector<char> keep_points(std::vector<char> &wanted, const StacksV2Layout &layout,
+                              const std::vector<std::array<double, 2>> &points)
+{
     const HeaderV2 &h = layout.header;
     const Frame &f = h.frame;
     const BlockGrid &grid = layout.grid;
-    const std::vector<BlockEntry> &entries = layout.entries;
-    const uint64_t blocks = entries.size();
-    std::vector<Material> materials = std::move(layout.materials);
-    std::vector<char> wanted = blocks_meeting(grid, f, options.area);
-    // rows=: the model of those rows alone (all of them without)
-    const Frame out = options.rows ? frame_rows(f, options.rows->first, options.rows->count) : f;
-    const uint64_t first_cell = options.rows ? uint64_t(options.rows->first) * uint64_t(f.cols) : 0;
-    const uint64_t end_cell = first_cell + out.cells();
-    if (options.rows)
-        for (size_t b = 0; b < wanted.size(); ++b) {
-            const int top_row = grid.first_row(int(b));
-            wanted[b] = wanted[b] && top_row < options.rows->first + options.rows->count &&
-                        top_row + grid.height(int(b)) > options.rows->first;
+    const bool whole_blocks = (h.optional & V2_OPTIONAL_CHANNELS) != 0;
+    std::vector<char> keep(f.cells(), 0);
+    std::vector<char> holds(wanted.size(), 0);
+    const int block_cols = grid.block_cols();
+    for (const auto &[x, y] : points)
+        if (const std::optional<GridCell> c = cell_of_point(f, x, y)) {
+            keep[uint64_t(c->row) * uint64_t(f.cols) + uint64_t(c->col)] = 1;
+            holds[size_t(c->row / grid.size) * size_t(block_cols) + size_t(c->col / grid.size)] = 1;
         }
-    // with points: only the blocks that hold one, and of them only the
-    // points' cells where the SBRT has no property channels (their values
-    // lie by the spans of every column of a block)
-    std::vector<char> keep;
-    if (options.points) {
-        const bool whole_blocks = (h.optional & V2_OPTIONAL_CHANNELS) != 0;
-        keep.assign(f.cells(), 0);
-        std::vector<char> holds(wanted.size(), 0);
-        const int block_cols = grid.block_cols();
-        for (const auto &[x, y] : *options.points)
-            if (const std::optional<GridCell> c = cell_of_point(f, x, y)) {
-                keep[uint64_t(c->row) * uint64_t(f.cols) + uint64_t(c->col)] = 1;
-                holds[size_t(c->row / grid.size) * size_t(block_cols) + size_t(c->col / grid.size)] = 1;
-            }
-        for (size_t b = 0; b < wanted.size(); ++b)
-            wanted[b] = wanted[b] && holds[b];
-        if (whole_blocks)
-            keep.clear();
-    }
-    const auto decoded = [&](uint64_t cell) {
-        return cell >= first_cell && cell < end_cell && (keep.empty() || keep[cell]);
-    };
+    for (size_t b = 0; b < wanted.size(); ++b)
+        wanted[b] = wanted[b] && holds[b];
+    if (whole_blocks)
+        keep.clear();
+    return keep;
+}
+
+/// The blocks of `wanted` (those meeting the area) and cells a read
+/// decodes: the model `out` of options' rows, with points only the
+/// blocks that hold one.
+CellSelection select_cells(std::vector<char> wanted, const StacksV2Layout &layout,
+                       const ReadOptions &options, const Frame &out)
+{
+    CellSelection s;
+    s.wanted = std::move(wanted);
+    const Frame &f = layout.header.frame;
+    s.first_cell = options.rows ? uint64_t(options.rows->first) * uint64_t(f.cols) : 0;
+    s.end_cell = s.first_cell + out.cells();
+    if (options.rows)
+        keep_rows(s.wanted, layout.grid, *options.rows);
+    if (options.points)
+        s.keep = keep_points(s.wanted, layout, *options.points);
+    return s;
+}
+
+/// The intervals the wanted blocks hold; the report filled where asked.
+uint64_t count_wanted(const std::vector<BlockEntry> &entries, const std::vector<char> &wanted,
+                      ReadReport *report)
+{
     uint64_t wanted_intervals = 0, wanted_blocks = 0;
     for (size_t b = 0; b < entries.size(); ++b)
         if (wanted[b]) {
             wanted_intervals += entries[b].intervals;
             ++wanted_blocks;
         }
-    if (options.report)
-        *options.report = ReadReport{blocks, wanted_blocks};
-    // voxel boundaries within 16 bits are held as 4-byte intervals
-    const bool compact =
-        h.widths.tops == TopEncoding::VoxelBoundaries && voxel_tops_fit_compact(f.depths);
-    const uint64_t limit = options.memory_limit ? options.memory_limit : physical_memory();
-    // pass 1's sizes (4 bytes a cell) beside the index it builds, the
-    // points' mask; the intervals of the wanted blocks (with points only
-    // the points' own, known after pass 1)
-    const unsigned interval_bytes = compact ? sizeof(CompactInterval) : sizeof(Interval);
-    const auto check_memory = [&](uint64_t intervals) {
+    if (report)
+        *report = ReadReport{entries.size(), wanted_blocks};
+    return wanted_intervals;
+}
+
+/// What a read may take: pass 1's sizes (4 bytes a cell) beside the
+/// index it builds, the points' mask; the intervals of the wanted blocks
+/// (with points only the points' own, known after pass 1).
+struct MemoryBudget {
+    const std::string &what;
+    uint64_t cells;
+    unsigned count_bytes, interval_bytes;
+    size_t mask_bytes;
+    uint64_t limit;
+
+    void check(uint64_t intervals) const
+    {
         const double needed =
-            decoded_bytes(out.cells(), intervals, h.widths.count_bytes, interval_bytes) +
-            double(keep.size());
+            decoded_bytes(cells, intervals, count_bytes, interval_bytes) + double(mask_bytes);
         if (needed > double(limit))
             fail(what, ": the model needs ", std::ceil(needed / (1 << 20)), " MiB of "
                  "memory, more than the ", limit >> 20, " MiB available");
-    };
-    check_memory(keep.empty() ? wanted_intervals : 0);
+    }
+};
 
-    // pass 1: each block's counts (the head of its frame) give the index
-    std::vector<uint32_t> sizes(out.cells(), 0);
-    for_each_row(int(blocks), threads, [&](int block) {
-        if (!wanted[size_t(block)])
+/// Pass 1: each wanted block's counts (the head of its frame), checked
+/// against the block table, give the index of the `cells` selected cells.
+StackIndex read_stack_index(const uint8_t *data, const StacksV2Layout &layout,
+                            const CellSelection &s, uint64_t cells, unsigned threads,
+                            const std::string &what)
+{
+    const BlockGrid &grid = layout.grid;
+    const std::vector<BlockEntry> &entries = layout.entries;
+    const unsigned width = layout.header.widths.count_bytes;
+    std::vector<uint32_t> sizes(cells, 0);
+    for_each_row(int(entries.size()), threads, [&](int block) {
+        if (!s.wanted[size_t(block)])
             return;
         const BlockEntry &e = entries[size_t(block)];
         const uint8_t *src = data + e.offset;
         const std::string where = what + " block " + std::to_string(block);
         if (crc32_of(src, e.compressed) != e.crc)
             fail(where, ": checksum mismatch (corrupt file)");
-        const size_t count_bytes = size_t(grid.cells(block)) * h.widths.count_bytes;
+        const size_t count_bytes = size_t(grid.cells(block)) * width;
         std::vector<uint8_t> counts(count_bytes);
         const DecompressorPtr context(ZSTD_createDCtx());
-        decompress_prefix(context.get(), src, e.compressed, counts.data(),
-                          count_bytes, where);
+        decompress_prefix(context.get(), src, e.compressed, counts.data(), count_bytes, where);
         uint64_t sum = 0;
         const uint8_t *p = counts.data();
         grid.for_each_cell(block, [&](uint64_t cell) {
-            const uint64_t n = load_le(p, h.widths.count_bytes);
-            p += h.widths.count_bytes;
-            if (decoded(cell))
-                sizes[cell - first_cell] = uint32_t(n);
+            const uint64_t n = load_le(p, width);
+            p += width;
+            if (s.decoded(cell))
+                sizes[cell - s.first_cell] = uint32_t(n);
             sum += n;
         });
         if (sum != e.intervals)
             fail(where, ": stack sizes sum to ", sum, ", block table says ",
                  e.intervals, " (corrupt file)");
     });
-    StackIndex index = StackIndex::from_sizes(sizes.data(), out.cells());
-    std::vector<uint32_t>().swap(sizes);
-    if (!keep.empty())
-        check_memory(index.total());
+    return StackIndex::from_sizes(sizes.data(), cells);
+}
 
-    // pass 2: each block's intervals into place, in the kind held (with
-    // points, the other cells' intervals skipped)
-    Intervals wide(compact ? 0 : index.total());
-    CompactIntervals packed(compact ? index.total() : 0);
-    const uint64_t top_bytes = h.widths.tops == TopEncoding::VoxelBoundaries ? 2 : 4;
-    for_each_row(int(blocks), threads, [&](int block) {
-        if (!wanted[size_t(block)])
+/// A block's whole frame, `e.raw` bytes exactly.
+std::vector<uint8_t> decompress_block(const uint8_t *data, const BlockEntry &e,
+                                      const std::string &where)
+{
+    std::vector<uint8_t> raw(e.raw);
+    const DecompressorPtr context(ZSTD_createDCtx());
+    const size_t n = ZSTD_decompressDCtx(context.get(), raw.data(), raw.size(),
+                                         data + e.offset, e.compressed);
+    if (ZSTD_isError(n) || n != raw.size())
+        fail(where, ": ", ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong size",
+             " (corrupt file)");
+    return raw;
+}
+
+/// Pass 2's intervals, in the kind held: `packed` where voxel boundaries
+/// fit 16 bits (`compact`), else `wide`; sized by the index.
+struct IntervalDecoder {
+    const StacksV2Widths &widths;
+    int depths;
+    bool compact;
+    Intervals wide;
+    CompactIntervals packed;
+
+    /// The intervals of `stack` from the records at `material` and
+    /// `top`, both moved past them.
+    void decode(const StackRange &stack, const uint8_t *&material, const uint8_t *&top,
+                const std::string &where)
+    {
+        uint32_t below = 0;
+        for (uint64_t i = stack.begin; i < stack.end; ++i) {
+            const uint32_t m = uint32_t(load_le(material, widths.material_bytes));
+            material += widths.material_bytes;
+            if (compact) {
+                below += uint32_t(load_le(top, 2));
+                top += 2;
+                if (below > uint32_t(depths))
+                    fail(where, ": an interval top lies above the model's ", depths,
+                         " depths (corrupt file)");
+                packed[i] = voxel_interval<CompactInterval>(m, below);
+            }
+            else if (widths.tops == TopEncoding::VoxelBoundaries) {
+                below += uint32_t(load_le(top, 2)); // a wrap gives tops validate() rejects
+                wide[i] = {m, float(below)};
+                top += 2;
+            }
+            else {
+                const uint32_t bits = uint32_t(load_le(top, 4));
+                wide[i].material = m;
+                std::memcpy(&wide[i].top, &bits, 4);
+                top += 4;
+            }
+        }
+    }
+
+    IntervalArray take()
+    {
+        return compact ? IntervalArray(std::move(packed)) : IntervalArray(std::move(wide));
+    }
+};
+
+/// Pass 2: each wanted block's intervals into place (with points, the
+/// other cells' intervals skipped).
+void decode_intervals(const uint8_t *data, const StacksV2Layout &layout, const CellSelection &s,
+                      const StackIndex &index, IntervalDecoder &out, unsigned threads,
+                      const std::string &what)
+{
+    const BlockGrid &grid = layout.grid;
+    const StacksV2Widths &w = layout.header.widths;
+    const uint64_t top_bytes = w.tops == TopEncoding::VoxelBoundaries ? 2 : 4;
+    for_each_row(int(layout.entries.size()), threads, [&](int block) {
+        if (!s.wanted[size_t(block)])
             return;
-        const BlockEntry &e = entries[size_t(block)];
+        const BlockEntry &e = layout.entries[size_t(block)];
         const std::string where = what + " block " + std::to_string(block);
-        std::vector<uint8_t> raw(e.raw);
-        const DecompressorPtr context(ZSTD_createDCtx());
-        const size_t n = ZSTD_decompressDCtx(context.get(), raw.data(), raw.size(),
-                                             data + e.offset, e.compressed);
-        if (ZSTD_isError(n) || n != raw.size())
-            fail(where, ": ", ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong size",
-                 " (corrupt file)");
+        const std::vector<uint8_t> raw = decompress_block(data, e, where);
         const uint8_t *count = raw.data();
-        const uint8_t *material = raw.data() + grid.cells(block) * h.widths.count_bytes;
-        const uint8_t *top = material + uint64_t(e.intervals) * h.widths.material_bytes;
+        const uint8_t *material = raw.data() + grid.cells(block) * w.count_bytes;
+        const uint8_t *top = material + uint64_t(e.intervals) * w.material_bytes;
         grid.for_each_cell(block, [&](uint64_t cell) {
-            const uint64_t stack_size = load_le(count, h.widths.count_bytes);
-            count += h.widths.count_bytes;
-            if (!decoded(cell)) {
-                material += stack_size * h.widths.material_bytes;
+            const uint64_t stack_size = load_le(count, w.count_bytes);
+            count += w.count_bytes;
+            if (!s.decoded(cell)) {
+                material += stack_size * w.material_bytes;
                 top += stack_size * top_bytes;
                 return;
             }
-            const StackRange stack = index.range(cell - first_cell);
-            uint32_t below = 0;
-            for (uint64_t i = stack.begin; i < stack.end; ++i) {
-                const uint32_t m = uint32_t(load_le(material, h.widths.material_bytes));
-                material += h.widths.material_bytes;
-                if (compact) {
-                    below += uint32_t(load_le(top, 2));
-                    top += 2;
-                    if (below > uint32_t(f.depths))
-                        fail(where, ": an interval top lies above the model's ",
-                             f.depths, " depths (corrupt file)");
-                    packed[i] = voxel_interval<CompactInterval>(m, below);
-                }
-                else if (h.widths.tops == TopEncoding::VoxelBoundaries) {
-                    below += uint32_t(load_le(top, 2)); // a wrap gives tops validate() rejects
-                    wide[i] = {m, float(below)};
-                    top += 2;
-                }
-                else {
-                    const uint32_t bits = uint32_t(load_le(top, 4));
-                    wide[i].material = m;
-                    std::memcpy(&wide[i].top, &bits, 4);
-                    top += 4;
-                }
-            }
+            out.decode(index.range(cell - s.first_cell), material, top, where);
         });
     });
-    IntervalArray intervals = compact ? IntervalArray(std::move(packed))
-                                      : IntervalArray(std::move(wide));
-    return validated_model(out, std::move(materials), std::move(index),
+}
+
+} // namespace
+
+Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what,
+                       const ReadOptions &options)
+{
+    // header, materials and block table checked; the 2.1 summaries are
+    // not needed to decode
+    StacksV2Layout layout = open_stacks_v2(data, size, what);
+    const HeaderV2 &h = layout.header;
+    const Frame &f = h.frame;
+    std::vector<char> wanted = blocks_meeting(layout.grid, f, options.area);
+    // rows=: the model of those rows alone (all of them without)
+    const Frame out = options.rows ? frame_rows(f, options.rows->first, options.rows->count) : f;
+    const CellSelection s = select_cells(std::move(wanted), layout, options, out);
+    const uint64_t wanted_intervals = count_wanted(layout.entries, s.wanted, options.report);
+    // voxel boundaries within 16 bits are held as 4-byte intervals
+    const bool compact =
+        h.widths.tops == TopEncoding::VoxelBoundaries && voxel_tops_fit_compact(f.depths);
+    const unsigned interval_bytes = compact ? sizeof(CompactInterval) : sizeof(Interval);
+    const MemoryBudget budget{what, out.cells(), h.widths.count_bytes, interval_bytes,
+                              s.keep.size(),
+                              options.memory_limit ? options.memory_limit : physical_memory()};
+    budget.check(s.keep.empty() ? wanted_intervals : 0);
+
+    StackIndex index = read_stack_index(data, layout, s, out.cells(), options.threads, what);
+    if (!s.keep.empty())
+        budget.check(index.total());
+
+    IntervalDecoder decoder{h.widths, f.depths, compact, Intervals(compact ? 0 : index.total()),
+                            CompactIntervals(compact ? index.total() : 0)};
+    decode_intervals(data, layout, s, index, decoder, options.threads, what);
+    IntervalArray intervals = decoder.take();
+    return validated_model(out, std::move(layout.materials), std::move(index),
                            std::move(intervals), what);
 }
 
