@@ -9,7 +9,8 @@
 #                         lines (REQUEST_SECONDS) and its rules files and
 #                         legends (SERVER_SECONDS); 10, 5 and 5 s in `test`,
 #                         60, 30 and 30 s in `check` and alone
-#              stages     the stage order of lib/sbrt
+#              stages     the stage order of lib/sbrt, and no function
+#                         over 100 lines (tools/check_function_length.sh)
 #              gunittest  each gunittest file of testsuite/ in a fresh mapset
 #              notebook   docs/r3_sbrt.ipynb executed
 #              unit-san   the unit tests again under ASan+UBSan
@@ -101,12 +102,18 @@ step_fuzz() {
         "view server rules files and legends" inputs
 }
 
-# lib/sbrt's stages include only themselves and the stages below: one test
+# house rules: lib/sbrt's stages include only themselves and the stages
+# below; no function over 100 lines. Two tests
 step_stages() {
     if tools/check_stage_order.sh >"$log/stage_order.log" 2>&1; then
         passed=$((passed + 1)); echo "stage order of lib/sbrt: passed"
     else
         failed=$((failed + 1)); cat "$log/stage_order.log"; echo "stage order of lib/sbrt: failed"
+    fi
+    if tools/check_function_length.sh >"$log/function_length.log" 2>&1; then
+        passed=$((passed + 1)); echo "function lengths: passed ($(tail -1 "$log/function_length.log"))"
+    else
+        failed=$((failed + 1)); cat "$log/function_length.log"; echo "function lengths: failed"
     fi
     lap
 }

@@ -18,6 +18,7 @@ packages=(
     libgtest-dev                     # unit tests
     clang libclang-rt-dev            # libFuzzer and the sanitizers' runtimes
     valgrind                         # memcheck of the modules
+    universal-ctags                  # the functions' lengths (tools/check_function_length.sh)
     libpng-dev                       # the PNG file of a render
     nlohmann-json3-dev               # JSON output written by a library: valid by construction
     python3-pil                      # tests read the PNG back with a real decoder

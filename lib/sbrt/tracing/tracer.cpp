@@ -308,26 +308,19 @@ Hit Tracer::trace(const Ray &ray, double t_start) const
     return hit;
 }
 
-void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
+bool Tracer::clip_walk(const Walk &walk, double t_start, double &t_near, double &t_far,
+                       Entry &wall) const
 {
-    const Frame &f = model_.frame();
-    hit = Hit();
-    Walk walk{ray, frame_.to_local(ray.origin), frame_.local_direction(ray.direction), hit};
-    const glm::dvec3 o = walk.o;
-    glm::dvec3 &d = walk.d;
-    for (int a = 0; a < 3; ++a)
-        if (d[a] == 0)
-            d[a] = 0; // normalise -0
-    walk.inv_d = 1.0 / d;
-
-    // 1. slab clip to the box [0, cols] x [0, rows] x [0, z_max] (the
+    const glm::dvec3 o = walk.o, d = walk.d;
+    // the slab clip to the box [0, cols] x [0, rows] x [0, z_max] (the
     // overlays' cells only, where the model is not drawn)
-    double t_near = -INF, t_far = INF;
+    t_near = -INF;
+    t_far = INF;
     int near_axis = -1;
     if (!clip_to_box(o, d, walk.inv_d, glm::dvec3(box_low_, 0),
                      glm::dvec3(box_high_, frame_.top_local()), t_near, t_far, near_axis))
-        return;
-    Entry wall;
+        return false;
+    wall = Entry{};
     if (near_axis >= 0)
         wall.face = entry_face(near_axis, d[near_axis]);
     // clip planes: the kept side f(t) = a + b t <= 0 narrows [t_near, t_far]
@@ -336,7 +329,7 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
         const double b = glm::dot(planes_[k].n, d);
         if (b == 0) {
             if (a > 0)
-                return; // the ray runs in the removed half-space
+                return false; // the ray runs in the removed half-space
             continue;
         }
         const double t = -a / b;
@@ -352,9 +345,28 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
     const double start = std::max(t_start, 0.0);
     if (t_near < start) {
         t_near = start;
-        wall = {Face::none, -ray.direction};
+        wall = {Face::none, -walk.ray.direction};
     }
-    if (!(t_near <= t_far) || frame_.top_local() <= 0)
+    return t_near <= t_far && frame_.top_local() > 0;
+}
+
+void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
+{
+    const Frame &f = model_.frame();
+    hit = Hit();
+    Walk walk{ray, frame_.to_local(ray.origin), frame_.local_direction(ray.direction), hit};
+    const glm::dvec3 o = walk.o;
+    glm::dvec3 &d = walk.d;
+    for (int a = 0; a < 3; ++a)
+        if (d[a] == 0)
+            d[a] = 0; // normalise -0
+    walk.inv_d = 1.0 / d;
+
+    // 1. the stretch of the ray in the box and on the kept side of the
+    // clip planes, and the surface it enters through
+    double t_near = -INF, t_far = INF;
+    Entry wall;
+    if (!clip_walk(walk, t_start, t_near, t_far, wall))
         return;
 
     // only a few overlays and no model: meet each overlay directly, no

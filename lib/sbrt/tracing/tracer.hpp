@@ -132,6 +132,11 @@ private:
         int ix = 0, iy = 0;
         Face face = Face::none;
     };
+    /// The stretch [t_near, t_far] of the walk's ray inside the box, on
+    /// the kept side of the clip planes and from t_start on, with the
+    /// surface `wall` it enters through; false where none is left.
+    bool clip_walk(const Walk &walk, double t_start, double &t_near, double &t_far,
+                   Entry &wall) const;
     /// The block to leave from cell (ix, iy) at height z_in, into `jump`;
     /// false where even the 2 x 2 block holds material at the ray's height.
     bool leave_block(const Walk &walk, double z_in, double t_far, int ix, int iy,
