@@ -9,11 +9,10 @@
 
 #include <algorithm>
 
-void apply_color_option(const RenderRequest &request, sbrt::Model &model)
+void apply_color_option(const RenderRequest &request, std::vector<sbrt::Material> &materials)
 {
     if (request.color.empty() && request.rules.empty())
         return;
-    std::vector<sbrt::Material> &materials = model.materials();
     if (materials.size() < 2)
         return;
     CELL low = materials[1].id, high = materials[1].id;

@@ -63,7 +63,7 @@ void RenderSession::load(RenderRequest &request, const struct Cell_head &region)
     else if (!at_->model || key != at_->model_key) {
         drop_level(*at_);
         at_->model = std::make_unique<sbrt::Model>(read_model(request, region));
-        apply_color_option(request, *at_->model);
+        apply_color_option(request, at_->model->materials());
         fit(*at_, sbrt::highest_top_local(*at_->model)); // once a model
         at_->model_key = key;
     }
@@ -99,7 +99,7 @@ bool RenderSession::use_coarse_level(RenderRequest &request, const std::string &
         }
         coarse.factor = level->factor();
         coarse.model = std::make_unique<sbrt::Model>(std::move(level->model));
-        apply_color_option(request, *coarse.model);
+        apply_color_option(request, coarse.model->materials());
         fit(coarse, std::isfinite(level->exact_top_local)
                         ? level->exact_top_local
                         : sbrt::highest_top_local(*coarse.model));
@@ -116,10 +116,8 @@ bool RenderSession::use_coarse_level(RenderRequest &request, const std::string &
 void RenderSession::fit(Level &level, double top_local)
 {
     // fitting_exaggeration(model) of the exact model
-    const sbrt::Frame &f = level.model->frame();
     level.top_local = top_local;
-    level.fitted_zexag = sbrt::fitting_exaggeration(f.cols * f.ew_res(), f.rows * f.ns_res(),
-                                                    top_local * f.tb_res());
+    level.fitted_zexag = sbrt::fitting_exaggeration(level.model->frame(), top_local);
 }
 
 void RenderSession::drop_level(Level &level)

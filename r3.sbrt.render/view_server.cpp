@@ -18,7 +18,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "format/block_summary.hpp"
 #include "format/format_v2.hpp"
+#include "frame/fitting_exaggeration.hpp"
+#include "material_colors.hpp"
+#include "sbrt_store.hpp"
 #include "image_memory.hpp"
 #include "reply_lines.hpp"
 #include "model/material_table.hpp"
@@ -103,38 +107,76 @@ void ViewServer::render(RenderRequest request)
     std::fflush(out_);
 }
 
+/// \brief What the classes reply says of a model: its extent, the
+/// exaggeration a request without zexag= gets, whether every top lies on
+/// a voxel boundary (stairs that kernel normals smooth), its materials as
+/// a render colours them.
+struct ModelDescription {
+    sbrt::Frame frame;
+    double zexag = 1;
+    bool voxels = false;
+    std::vector<sbrt::Material> materials; ///< EMPTY first
+};
+
+/// The description of `request`'s SBRT from its block summaries, no block
+/// decoded; nothing where it has none (format before 2.1) or has property
+/// channels (their report checks them against the decoded model).
+std::optional<ModelDescription> described_from_summaries(const RenderRequest &request)
+{
+    std::optional<sbrt::ModelSummary> summary =
+        sbrt_grass::read_sbrt_summary_map(request.input.c_str());
+    if (!summary || summary->has_channels)
+        return std::nullopt;
+    ModelDescription out;
+    out.frame = summary->frame;
+    out.zexag = request.zexag_fitted
+                    ? sbrt::fitting_exaggeration(out.frame, summary->highest_top_local())
+                    : request.zexag;
+    out.voxels = summary->tops == sbrt::TopEncoding::VoxelBoundaries;
+    out.materials = std::move(summary->materials);
+    apply_color_option(request, out.materials);
+    return out;
+}
+
 void ViewServer::classes(const RenderRequest &request)
 {
-    struct Cell_head region;
-    G_get_window(&region);
-    RenderRequest whole = request; // every block, whatever the view
-    whole.view.kind = sbrt::ViewKind::perspective;
-    whole.coarse = false; // the exact model's extent, classes and channels
-    session_.load(whole, region);
-    const sbrt::Model &model = session_.model();
-    const sbrt::Frame &f = model.frame();
-    // the extent, the exaggeration a request without zexag= gets, and
-    // whether every top lies on a voxel boundary (a voxel model: stairs
-    // that kernel normals smooth)
-    const bool voxels = sbrt::widths_for(model).tops == sbrt::TopEncoding::VoxelBoundaries;
+    // from the summaries where it can: the viewer asks this first, and a
+    // national model's decode of every block would hold its first frame
+    // 1.3-1.9 s (issue 49)
+    std::optional<ModelDescription> model = described_from_summaries(request);
+    const sbrt::PropertyChannels *channels = nullptr;
+    if (!model) {
+        struct Cell_head region;
+        G_get_window(&region);
+        RenderRequest whole = request; // every block, whatever the view
+        whole.view.kind = sbrt::ViewKind::perspective;
+        whole.coarse = false; // the exact model's extent, classes and channels
+        session_.load(whole, region);
+        const sbrt::Model &loaded = session_.model();
+        model = ModelDescription{loaded.frame(), whole.zexag,
+                                 sbrt::widths_for(loaded).tops ==
+                                     sbrt::TopEncoding::VoxelBoundaries,
+                                 loaded.materials()};
+        channels = session_.stored_channels(whole);
+    }
+    const sbrt::Frame &f = model->frame;
     std::fprintf(out_, "model %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d\n", f.north,
-                 f.south, f.east, f.west, f.bottom, f.top, whole.zexag, int(voxels));
-    std::fprintf(out_, "classes %zu\n", model.materials().size());
+                 f.south, f.east, f.west, f.bottom, f.top, model->zexag, int(model->voxels));
+    const std::vector<sbrt::Material> &materials = model->materials;
+    std::fprintf(out_, "classes %zu\n", materials.size());
     // the colours a render draws (the palette's where a class has none),
     // by class id (a GeoTOP file lists its classes in its own order)
-    std::vector<uint32_t> by_id(model.materials().size());
+    std::vector<uint32_t> by_id(materials.size());
     for (uint32_t i = 0; i < by_id.size(); ++i)
         by_id[i] = i;
     std::stable_sort(by_id.begin(), by_id.end(), [&](uint32_t a, uint32_t b) {
-        return model.materials()[a].id < model.materials()[b].id;
+        return materials[a].id < materials[b].id;
     });
     for (const uint32_t i : by_id)
-        std::fputs(class_reply_line(model.materials()[i], sbrt::material_color(model, i))
-                       .c_str(),
+        std::fputs(class_reply_line(materials[i], sbrt::material_color(materials, i)).c_str(),
                    out_);
     // the property channels: least and greatest value as meant, then
     // name|unit|long name
-    const sbrt::PropertyChannels *channels = session_.stored_channels(whole);
     const size_t count = channels ? channels->size() : 0;
     std::fprintf(out_, "channels %zu\n", count);
     for (size_t c = 0; c < count; ++c)

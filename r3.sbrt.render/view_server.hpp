@@ -19,9 +19,13 @@
 ///                                     (property=: "... TZ property LOW HIGH
 ///                                     UNIT\n", the legend's ramp and unit)
 ///                                     and W*H*3 bytes of RGB, rows from the top
-///     classes input=NAME          ->  "model N S E W BOTTOM TOP\n",
-///                                     "classes COUNT\n" and per class
-///                                     "ID R G B LABEL\n"
+///     classes input=NAME          ->  "model N S E W BOTTOM TOP ZEXAG
+///                                     VOXELS\n", "classes COUNT\n" and
+///                                     per class "ID R G B LABEL\n", then
+///                                     "channels COUNT\n" and per channel
+///                                     "LOW HIGH NAME|UNIT|LONG NAME\n"
+///                                     (from the block summaries where the
+///                                     SBRT has them: no block decoded)
 ///     anything wrong              ->  "error MESSAGE\n"
 ///
 /// A request's words are those of the command line and are read by the

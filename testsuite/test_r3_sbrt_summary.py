@@ -1,7 +1,8 @@
 """
 MODULE:    testsuite/test_r3_sbrt_summary.py (r3.sbrt addon)
 PURPOSE:   Format 2.1 block summaries: r3.sbrt.convert -g, -p and
-           format=json describe a model from them exactly as from the
+           format=json, and the view server's classes reply (g.gui.sbrt's
+           first question), describe a model from them exactly as from the
            decoded model of the same SBRT as a 2.0 file, without decoding
            a block; a damaged summary is a clear error
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
@@ -29,6 +30,13 @@ def flip_byte(name, at):
         value = f.read(1)[0]
         f.seek(at)
         f.write(bytes([value ^ 0x10]))
+
+
+def classes(*words):
+    """The view server's reply to `classes` with these words."""
+    run = subprocess.run(["r3.sbrt.render", "--serve"], capture_output=True, text=True,
+                         input="classes " + " ".join(words) + "\nquit\n", timeout=60)
+    return run.stdout
 
 
 def convert(*args):
@@ -112,6 +120,29 @@ class TestDescribeFromSummaries(TestCase):
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("checksum", run.stderr)
 
+    def test_view_server_classes_equal_those_of_the_decoded_model(self):
+        """The extent, fitted exaggeration, voxel flag and classes (as
+        color= recolours them) of the summaries equal the decoded model's,
+        and a damaged block, not read, changes nothing."""
+        copy_sbrt("sum21", "sum_block")
+        with open(stacks_path("sum_block"), "rb") as f:
+            data = f.read()
+        first_block = struct.unpack_from("<Q", data, struct.unpack_from("<Q", data, AT_TABLE)[0])[0]
+        flip_byte("sum_block", first_block + 5)
+        for extra in ([], ["color=viridis"], ["zexag=3"]):
+            old = classes("input=sum20", *extra)
+            self.assertTrue(old.startswith("model 70 0 90 0 0 30 "), old)
+            self.assertIn("\nclasses ", old)
+            self.assertIn("\nchannels 0\n", old)
+            for name in ("sum21", "sum_block"):
+                self.assertEqual(classes("input=" + name, *extra), old, (name, extra))
+        self.assertNotEqual(classes("input=sum20", "color=viridis"), classes("input=sum20"))
+        # the decode of the damaged block, where a frame needs it
+        frame = subprocess.run(["r3.sbrt.render", "--serve"], capture_output=True, text=True,
+                               input="render input=sum_block size=40,30\nquit\n", timeout=60)
+        self.assertTrue(frame.stdout.startswith("error "), frame.stdout[:200])
+        self.assertIn("checksum", frame.stdout)
+
     def test_damaged_summary_is_a_clear_error(self):
         copy_sbrt("sum21", "sum_bad")
         with open(stacks_path("sum_bad"), "rb") as f:
@@ -126,6 +157,9 @@ class TestDescribeFromSummaries(TestCase):
             self.assertIn("block summaries: checksum mismatch", message)
             self.assertIn("Import its source again with r3.sbrt.convert", message)
             self.assertNotIn("Traceback", message)
+        reply = classes("input=sum_bad")
+        self.assertTrue(reply.startswith("error "), reply)
+        self.assertIn("block summaries: checksum mismatch", reply)
 
 
 if __name__ == "__main__":

@@ -212,6 +212,15 @@ Stats summary_stats(const Frame &frame, size_t material_count,
                     material_count);
 }
 
+double ModelSummary::highest_top_local() const
+{
+    double top = 0;
+    for (const BlockSummary &block : blocks)
+        if (!block.is_empty())
+            top = std::max(top, double(block.z_high));
+    return top;
+}
+
 std::optional<ModelSummary> read_stacks_summary(const uint8_t *data, size_t size,
                                                 const std::string &what)
 {
@@ -237,6 +246,7 @@ std::optional<ModelSummary> read_stacks_summary(const uint8_t *data, size_t size
     out.frame = h.frame;
     out.materials = layout.materials;
     out.block_size = int(h.block_size);
+    out.tops = h.widths.tops;
     out.stats = summary_stats(out.frame, out.materials.size(), out.blocks);
     return out;
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "format/byte_io.hpp"
+#include "format/format_v2.hpp"
 #include "model/model.hpp"
 
 namespace sbrt {
@@ -103,8 +104,15 @@ struct ModelSummary {
     std::string vertical_datum;      ///< where the SBRT names one (read_sbrt_summary)
     bool has_channels = false;       ///< the SBRT has property channels (read_sbrt_summary)
     int block_size = 0;
+    /// How the file stores tops: VoxelBoundaries where every top lies on a
+    /// voxel boundary (the writer's widths_for(model).tops)
+    TopEncoding tops = TopEncoding::Float32;
     std::vector<BlockSummary> blocks; ///< row by row of blocks
     Stats stats;                      ///< as Model::stats() of the decoded model
+
+    /// The highest top (local height, 0 .. depths) of any stack: as
+    /// highest_top_local() of the decoded model, 0 where it is empty.
+    double highest_top_local() const;
 };
 
 /// The figures Model::stats() gives for the decoded model of `frame`,

@@ -355,10 +355,7 @@ std::optional<CoarseLevel> read_sbrt_lod(const std::string &directory)
             fail(path, ": a coarse level beside stacks of format 1");
         if (const auto summary = read_stacks_summary(file.data(), file.size(), stacks_path)) {
             level.exact = summary->frame;
-            level.exact_top_local = 0;
-            for (const BlockSummary &block : summary->blocks)
-                if (!block.is_empty())
-                    level.exact_top_local = std::max(level.exact_top_local, double(block.z_high));
+            level.exact_top_local = summary->highest_top_local();
         }
         else
             level.exact = open_stacks_v2(file.data(), file.size(), stacks_path).header.frame;

@@ -45,9 +45,13 @@ double fitting_exaggeration(double width, double depth, double thickness)
 
 double fitting_exaggeration(const Model &model)
 {
-    const Frame &f = model.frame();
-    const double thickness = highest_top_local(model) * f.tb_res();
-    return fitting_exaggeration(f.cols * f.ew_res(), f.rows * f.ns_res(), thickness);
+    return fitting_exaggeration(model.frame(), highest_top_local(model));
+}
+
+double fitting_exaggeration(const Frame &f, double top_local)
+{
+    return fitting_exaggeration(f.cols * f.ew_res(), f.rows * f.ns_res(),
+                                top_local * f.tb_res());
 }
 
 } // namespace sbrt

@@ -27,6 +27,10 @@ double fitting_exaggeration(double width, double depth, double thickness);
 /// The exaggeration of `model`: of its frame's extent, thick from its
 /// bottom to its highest top.
 double fitting_exaggeration(const Model &model);
+/// The same of a model of `frame` whose highest top is `top_local` (local
+/// height, as highest_top_local gives: from summaries, or a coarse level's
+/// exact model).
+double fitting_exaggeration(const Frame &frame, double top_local);
 
 } // namespace sbrt
 
