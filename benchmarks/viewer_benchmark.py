@@ -107,9 +107,15 @@ def viewer(sbrt, width, height, extra=()):
                 raise RuntimeError("g.gui.sbrt did not start")
             time.sleep(0.2)
         canvas = [e["rect"] for e in events() if e.get("name") == "canvas"][0]
-        first = [e["t"] for e in events() if e["event"] == "frame"][0]
-        FIGURES["viewer_first_s"] = first - started
-        print("viewer first frame shown: %.2f s after g.gui.sbrt started" % (first - started))
+        first = [e for e in events() if e["event"] == "frame"][0]
+        FIGURES["viewer_first_s"] = first["t"] - started
+        print("viewer first frame shown: %.2f s after g.gui.sbrt started (%s)"
+              % (first["t"] - started, "full" if first["full"] else "reduced"))
+        # the first exact frame (widgets are logged after it)
+        exact = [e["t"] for e in events() if e["event"] == "frame" and e["full"]][0]
+        FIGURES["viewer_first_exact_s"] = exact - started
+        print("viewer first exact frame shown: %.2f s after g.gui.sbrt started"
+              % (exact - started))
         FIGURES["viewer_fps"], FIGURES["viewer_refined_ms"] = [], []
         FIGURES["viewer_refined_server_ms"], FIGURES["viewer_refined_options"] = [], []
         x, y, w, h = canvas

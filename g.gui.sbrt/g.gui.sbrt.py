@@ -79,23 +79,27 @@ def main():
     if len(size) != 2 or min(size) < 16 or max(size) > 8192:
         gs.fatal(_("size= takes width,height in pixels (16 to 8192 each), e.g. 800,600"))
 
-    # import wx only after the parser (--interface-description needs none)
-    import wx
-    from grass.script.setup import set_gui_path
     from grass.script.utils import get_lib_path
 
-    set_gui_path()
     here = get_lib_path(modname="g.gui.sbrt")
     if here is None:
         gs.fatal(_("The files of g.gui.sbrt are missing (etc/g.gui.sbrt)"))
     sys.path.insert(0, here)
     from view_client import ServerError, ViewServer
+
+    # the view server's process starts (GRASS set up in it) while this one
+    # loads wx: a national model's first frame is shown that much sooner
+    # (issue 49); its first answer says where the SBRT is not found
+    server = ViewServer()
+    server.start()
+    # import wx only after the parser (--interface-description needs none)
+    import wx
+    from grass.script.setup import set_gui_path
+
+    set_gui_path()
     from viewer_frame import ViewerFrame
 
-    if not gs.find_file(options["input"], element="sbrt")["name"]:
-        gs.fatal(_("SBRT <%s> not found (r3.sbrt.manage -l lists them)") % options["input"])
     app = wx.App()
-    server = ViewServer()
     try:
         frame = ViewerFrame(
             server,

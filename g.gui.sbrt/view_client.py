@@ -44,6 +44,11 @@ class ViewServer:
         self._process = None
         self._messages = collections.deque(maxlen=20)
 
+    def start(self):
+        """Starts the server's process now (else the first request does):
+        it sets GRASS up while the caller does something else."""
+        self._start()
+
     def _start(self):
         if self._process and self._process.poll() is None:
             return

@@ -106,7 +106,16 @@ class ViewerFrame(wx.Frame):
         )
         self.thread.start()
         self._update_legend()
-        self.request_frame(True)
+        self._first_frames()
+
+    def _first_frames(self):
+        """A reduced frame first, from the SBRT's coarse level of detail
+        where it has one (a national model shows in a fraction of a second,
+        not after the decode of every block), then the exact one: asked
+        for once the reduced one has started (the thread keeps only the
+        latest request not yet started)."""
+        self.request_frame(False)
+        self.refine.StartOnce(REFINE_MS)
 
     def _start_with_property(self, expression):
         """property= of the command line: coloured by it from the first
@@ -465,14 +474,16 @@ class ViewerFrame(wx.Frame):
             return
         self._shown = number
         framed = not any(w.startswith("distance=") for w in frame.words)
-        if self.state.distance is None and framed:
+        # the camera of a full frame: a reduced one's aspect may differ
+        # by a rounded pixel
+        if self.state.distance is None and framed and full:
             self.state.adopt_camera(frame)
         self.canvas.show(frame)
         self._adopt_legend(frame)
         now = time.monotonic()
         self._times = [t for t in self._times if now - t < 1.0] + [now]
         if not full:
-            note = _(" (moving)")
+            note = _(" (reduced; the exact frame follows)")
         elif smooth:
             note = _(", smooth shading") if self.state.smooth_shading else ""
         else:
