@@ -19,7 +19,7 @@ constexpr size_t PALETTE_SIZE = 30;
 /// The stated distance: for every n <= PALETTE_SIZE, the nearest pair of
 /// entries 0 .. n-1 differs by at least this much (CIEDE2000; 1 is about
 /// the smallest difference a person sees side by side, 10 an obviously
-/// different colour). Checked by testsuite/unit/test_palette.cpp.
+/// different colour). Checked by testsuite/unit/model/test_palette.cpp.
 constexpr double PALETTE_MIN_DE00 = 15.0;
 
 /// \brief Entry `k` (0, 1, ...) of the default palette. Beyond
