@@ -75,6 +75,21 @@ def renderer_alone(sbrt, width, height, extra=()):
     FIGURES["renderer_hide_id"] = hidden
     print("renderer scene change (hide=%d, prepared again) + frame: %.1f ms"
           % (hidden, FIGURES["renderer_hide_ms"]))
+    # a click on another stratum's check box, as the viewer answers it:
+    # the reduced frame (the coarse level where the SBRT has one), then
+    # the exact frame
+    reduced = ["input=" + sbrt, "size=%d,%d" % (width // 2, height // 2), "detail=coarse"]
+    server.render(reduced + ["hide=%d" % hidden] + extra)  # the coarse level read
+    other = next((i for i in ids if i != hidden), hidden)
+    start = time.perf_counter()
+    server.render(reduced + ["hide=%d,%d" % (hidden, other)] + extra)
+    FIGURES["renderer_hide_reduced_ms"] = (time.perf_counter() - start) * 1000
+    server.render(["input=" + sbrt, "size=%d,%d" % (width, height),
+                   "hide=%d,%d" % (hidden, other)] + extra)
+    FIGURES["renderer_hide_exact_ms"] = (time.perf_counter() - start) * 1000
+    print("renderer a stratum hidden as the viewer asks: reduced frame %.1f ms, exact "
+          "frame %.1f ms after the request" % (FIGURES["renderer_hide_reduced_ms"],
+                                              FIGURES["renderer_hide_exact_ms"]))
     print("renderer first frame (process start, model read, scene): %.1f ms" % first)
     FIGURES["renderer_rss_kb"] = peak_rss_kb(server._process.pid)
     print("renderer peak RSS: %.0f MB" % (FIGURES["renderer_rss_kb"] / 1024))

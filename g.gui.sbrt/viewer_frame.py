@@ -453,8 +453,11 @@ class ViewerFrame(wx.Frame):
             self.refine.StartOnce(REFINE_MS)
 
     def on_scene(self):
+        """A stratum hidden, shown or faded: a reduced frame at once (from
+        the coarse level: a national model shows the change in a fraction
+        of the exact frame's time), the exact one right after."""
         self._update_legend()
-        self.request_frame(True)
+        self._moving()
 
     def _on_frame(self, tag, frame, error):
         if self._closing:

@@ -16,20 +16,30 @@
 #include "vector_input.hpp"
 
 PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
-                            const sbrt::Camera &camera)
+                            const sbrt::Camera &camera, Hiding hiding)
 {
     const std::vector<uint32_t> hidden = hidden_materials(request, model);
+    const bool while_tracing = hiding == Hiding::tracing && request.boreholes.empty() &&
+                               request.fence.empty();
     // the boreholes need the model as read where strata are hidden
     const sbrt::Model original = hidden.empty() || request.boreholes.empty()
                                      ? sbrt::Model()
                                      : model;
-    if (!hidden.empty()) {
+    std::vector<uint8_t> hidden_mask;
+    if (!hidden.empty() && while_tracing) {
+        hidden_mask.assign(model.materials().size(), 0);
+        for (const uint32_t m : hidden)
+            hidden_mask[m] = 1;
+        report_hidden_while_tracing(hidden.size());
+    }
+    else if (!hidden.empty()) {
         sbrt::Model left = sbrt::hide_materials(model, hidden);
         report_hidden(model, left, hidden.size());
         model = std::move(left);
     }
     PreparedScene prepared{std::move(model), {}};
     sbrt::Scene &scene = prepared.scene;
+    scene.hidden = std::move(hidden_mask);
     scene.planes = request.clip_planes(camera);
     if (!request.boreholes.empty()) {
         scene.boreholes = make_boreholes(request, hidden.empty() ? prepared.model : original,

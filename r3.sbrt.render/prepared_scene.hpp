@@ -17,16 +17,25 @@
 #include "scene/scene.hpp"
 #include "shading/shading.hpp"
 
-/// \brief The model to draw (strata of hide= removed) and its scene.
+/// \brief The model to draw (strata of hide= removed, or marked hidden in
+/// the scene) and its scene.
 struct PreparedScene {
     sbrt::Model model;
     sbrt::Scene scene;
 };
 
-/// Hides the strata of hide= in `model` (as read, colours applied) and
-/// builds the scene of the request; sections and split logs face `camera`.
+/// Where the strata of hide= are hidden.
+enum class Hiding {
+    model,  ///< removed from the model (a pass over every interval; the GPU)
+    tracing ///< crossed as air while tracing (the CPU), where no borehole or
+            ///< fence reads the stacks: the model stays as read
+};
+
+/// Hides the strata of hide= in `model` (as read, colours applied) as
+/// `hiding` says and builds the scene of the request; sections and split
+/// logs face `camera`.
 PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
-                            const sbrt::Camera &camera);
+                            const sbrt::Camera &camera, Hiding hiding = Hiding::model);
 
 /// The shading of the request; `drape` (or null) outlives it.
 /// `property` (or null) too.

@@ -239,9 +239,6 @@ void RenderSession::prepare_scene_for(const RenderRequest &request, const sbrt::
     const std::string key = scene_key(request, camera);
     if (!at_->renderer || key != at_->scene_key) {
         drop_scene();
-        // hidden strata, planes, boreholes, fence, translucency
-        PreparedScene prepared =
-            prepare_scene(request, at_->selected ? *at_->selected : *at_->model, camera);
         const std::string context = key_of<BackendPart>(request);
         if (context != context_key_) {
             for (Level &level : levels_) // their backends use the context
@@ -252,6 +249,12 @@ void RenderSession::prepare_scene_for(const RenderRequest &request, const sbrt::
             context_ = choose_gl_context(request);
             context_key_ = context;
         }
+        // hidden strata, planes, boreholes, fence, translucency; on the CPU
+        // hide= costs no pass over the model (a GPU's shaders draw every
+        // material they are given)
+        PreparedScene prepared =
+            prepare_scene(request, at_->selected ? *at_->selected : *at_->model, camera,
+                          context_ ? Hiding::model : Hiding::tracing);
         // on a GPU what no ray of a single view reaches is not uploaded
         // (the CPU never reads it anyway)
         const sbrt::Scene &scene = prepared.scene;

@@ -35,6 +35,13 @@ void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidd
                       ull(emptied));
 }
 
+void report_hidden_while_tracing(size_t hidden)
+{
+    G_verbose_message(_("%zu hidden strata: crossed as air while tracing (the model as "
+                        "read; the empty-space pyramid leaves them out)"),
+                      hidden);
+}
+
 void report_pruning(const sbrt::Pruning &pruning, size_t planes)
 {
     report_left_out(_("out of the view"), pruning.outside_view);

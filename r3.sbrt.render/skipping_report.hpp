@@ -11,6 +11,8 @@
 
 /// Intervals and bytes hide= removed (the model as read against what is left).
 void report_hidden(const sbrt::Model &read, const sbrt::Model &left, size_t hidden);
+/// hide= applied while tracing: the strata crossed as air.
+void report_hidden_while_tracing(size_t hidden);
 
 /// What pruning left out (for the GPU: stacks out of the view and, with
 /// `planes`, those cut away).

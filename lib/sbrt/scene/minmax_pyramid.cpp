@@ -34,6 +34,36 @@ std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model)
     return cells;
 }
 
+std::vector<ZRange> MinMaxPyramid::visible_cell_ranges(const Model &model,
+                                                       const std::vector<uint8_t> &hidden)
+{
+    const Frame &f = model.frame();
+    std::vector<ZRange> cells(f.cells());
+    model.intervals().visit([&](const auto *records) {
+        using Record = RecordOf<decltype(records)>;
+        const auto visible = [&](const Record &r) {
+            return r.material != EMPTY && !hidden[r.material];
+        };
+        for (int row = 0; row < f.rows; ++row)
+            for (int col = 0; col < f.cols; ++col) {
+                const StackRange stack = model.stack(model.cell_index(row, col));
+                const Record *first = records + stack.begin, *last = records + stack.end;
+                const Record *low = first;
+                while (low != last && !visible(*low))
+                    ++low;
+                if (low == last)
+                    continue;
+                const Record *high = last - 1;
+                while (!visible(*high))
+                    --high;
+                const size_t y = size_t(f.rows - 1 - row);
+                cells[y * f.cols + col] = {low == first ? 0.0f : float((low - 1)->top),
+                                           float(high->top)};
+            }
+    });
+    return cells;
+}
+
 void MinMaxPyramid::build(int cols, int rows, std::vector<ZRange> cells)
 {
     levels_.push_back(std::move(cells));

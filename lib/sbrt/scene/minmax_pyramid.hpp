@@ -28,12 +28,16 @@ struct ZRange {
 class MinMaxPyramid {
 public:
     MinMaxPyramid() = default;
-    /// From the model's stacks; `drawn(x, y, range)` may narrow or empty a
-    /// cell's range (cells cut away by clip planes, cells with overlays).
+    /// From the model's stacks, the materials marked in `hidden` (per
+    /// material index; empty: none) left out; `narrow(x, y, range)` may
+    /// narrow or empty a cell's range (cells cut away by clip planes,
+    /// cells with overlays).
     template <typename Narrow>
-    MinMaxPyramid(const Model &model, const Narrow &narrow)
+    MinMaxPyramid(const Model &model, const Narrow &narrow,
+                  const std::vector<uint8_t> &hidden = {})
     {
-        std::vector<ZRange> cells = cell_ranges(model);
+        std::vector<ZRange> cells =
+            hidden.empty() ? cell_ranges(model) : visible_cell_ranges(model, hidden);
         const Frame &f = model.frame();
         for (int y = 0; y < f.rows; ++y)
             for (int x = 0; x < f.cols; ++x)
@@ -57,6 +61,10 @@ public:
 
 private:
     static std::vector<ZRange> cell_ranges(const Model &model);
+    /// cell_ranges of the intervals not `hidden`: from the bottom of the
+    /// lowest such to the top of the highest (on all cores).
+    static std::vector<ZRange> visible_cell_ranges(const Model &model,
+                                                   const std::vector<uint8_t> &hidden);
     void build(int cols, int rows, std::vector<ZRange> cells);
 
     std::vector<std::vector<ZRange>> levels_;

@@ -88,6 +88,11 @@ struct Scene {
     /// height in one step (a min-max pyramid); false walks every cell
     /// (the same image, for benchmarks).
     bool skip_empty_space = true;
+    /// Per material index, 1 where the material is hidden while tracing:
+    /// its intervals are crossed as air, as if hide_materials had removed
+    /// them, without a pass over the model (empty: none hidden). Not with
+    /// boreholes or a fence, which read the stacks themselves.
+    std::vector<uint8_t> hidden{};
 };
 
 } // namespace sbrt

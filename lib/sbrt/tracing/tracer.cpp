@@ -111,6 +111,12 @@ Tracer::Tracer(const Model &model, double zexag, Scene scene)
              " materials, the model has ", model.materials().size());
     if (!scene_.boreholes.empty() && !(scene_.borehole_radius > 0))
         fail("Tracer: the borehole radius must be positive");
+    if (!scene_.hidden.empty() && scene_.hidden.size() != model.materials().size())
+        fail("Tracer: hidden materials given for ", scene_.hidden.size(),
+             " materials, the model has ", model.materials().size());
+    if (!scene_.hidden.empty() && (!scene_.boreholes.empty() || !scene_.fence.empty()))
+        fail("Tracer: materials hidden while tracing with boreholes or a fence (remove "
+             "them from the model: hide_materials)");
     index_overlays();
     build_pyramid();
     overlay_boxes_ = find_overlay_boxes(); // with the pyramid: borehole_top reads it
@@ -159,7 +165,7 @@ void Tracer::build_pyramid()
         }
         if (!range.empty())
             clip(x, y, range);
-    });
+    }, scene_.hidden);
     if (!overlay_items_.empty())
         model_pyramid_ = MinMaxPyramid(model_, [&](int x, int y, ZRange &range) {
             if (!range.empty())
@@ -170,7 +176,8 @@ void Tracer::build_pyramid()
 bool Tracer::meet(uint32_t material, double t_enter, double t_exit, const Entry &entry,
                   Walk &walk) const
 {
-    if (material == EMPTY)
+    // a hidden material is crossed as air
+    if (material == EMPTY || (!scene_.hidden.empty() && scene_.hidden[material]))
         return false;
     const Translucency &tr = scene_.translucency;
     if (tr.opaque(material)) {

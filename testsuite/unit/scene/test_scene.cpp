@@ -1,7 +1,8 @@
 /****************************************************************************
  * MODULE:    testsuite/unit (r3.sbrt addon)
  * PURPOSE:   Scene operations against brute force over the source voxels:
- *            hidden materials (the subcrop map) and clip planes (a
+ *            hidden materials (the subcrop map; hidden while tracing as
+ *            removed from the model, hit for hit) and clip planes (a
  *            horizontal cut is a slice of the voxels)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
@@ -71,6 +72,84 @@ TEST(HiddenMaterials, TopViewIsTheSubcropMap)
         }
     EXPECT_THROW(hide_materials(full, {EMPTY}), Error);
     EXPECT_THROW(hide_materials(full, {uint32_t(full.materials().size())}), Error);
+}
+
+namespace {
+
+/// The hits of `camera` through a tracer of `m` and `scene`.
+HitImage hits_of(const Model &m, Scene scene, const Camera &camera)
+{
+    const Tracer tracer(m, 2.0, std::move(scene));
+    return trace_image(tracer, camera, 2);
+}
+
+} // namespace
+
+TEST(HiddenMaterials, HiddenWhileTracingIsTheModelWithoutThem)
+{
+    // every hit as exact as with the strata removed from the model: t,
+    // point, face, normal, class, and the light of translucent strata
+    const auto v = sbrt_test::random_voxels(11, 19, 23, 28, 6);
+    const Model full = sbrt_test::build_model(v);
+    const Frame &f = v.frame;
+    const glm::dvec3 centre((f.west + f.east) / 2, (f.south + f.north) / 2,
+                            f.bottom + f.depths * f.tb_res());
+    const std::vector<Camera> cameras = {
+        sbrt_test::top_camera(f, 1e4),
+        Camera::perspective(centre + glm::dvec3(-40, -55, 60), centre, 40, 48, 64),
+        Camera::perspective(centre + glm::dvec3(35, 20, -70), centre, 50, 40, 52),
+        Camera::orthographic(centre + glm::dvec3(60, -10, 20), centre, 50, 36, 48)};
+    size_t hits = 0, differing_from_full = 0;
+    for (const std::vector<int32_t> &ids : {std::vector<int32_t>{-13}, {1, 15}, {-13, 1, 15, 8}}) {
+        std::vector<uint32_t> hidden;
+        std::vector<uint8_t> mask(full.materials().size(), 0);
+        for (const int32_t id : ids) {
+            hidden.push_back(index_of(full, id));
+            mask[hidden.back()] = 1;
+        }
+        const Model removed = hide_materials(full, hidden);
+        for (const bool cut_and_translucent : {false, true})
+            for (const bool skipping : {true, false}) {
+                Scene scene = cut_and_translucent ? sbrt_test::cut_and_translucent_scene(full)
+                                                  : Scene{};
+                scene.skip_empty_space = skipping;
+                Scene marked = scene;
+                marked.hidden = mask;
+                for (const Camera &camera : cameras) {
+                    const HitImage want = hits_of(removed, scene, camera);
+                    const HitImage got = hits_of(full, marked, camera);
+                    const HitImage shown = hits_of(full, scene, camera);
+                    for (size_t i = 0; i < want.size(); ++i) {
+                        const Hit &a = want[i], &b = got[i];
+                        ASSERT_EQ(a.is_hit(), b.is_hit()) << i;
+                        ASSERT_EQ(a.material, b.material) << i;
+                        ASSERT_EQ(a.transmittance, b.transmittance) << i;
+                        ASSERT_EQ(a.veil, b.veil) << i;
+                        if (!a.is_hit())
+                            continue;
+                        ++hits;
+                        ASSERT_EQ(a.t, b.t) << i;
+                        ASSERT_EQ(a.point, b.point) << i;
+                        ASSERT_EQ(a.face, b.face) << i;
+                        ASSERT_EQ(a.normal, b.normal) << i;
+                        ASSERT_EQ(a.plane, b.plane) << i;
+                        differing_from_full += shown[i].material != a.material;
+                    }
+                }
+            }
+    }
+    EXPECT_GT(hits, 10000u);
+    EXPECT_GT(differing_from_full, 1000u); // the hidden strata were in view
+    // a mask of the wrong size, and one beside boreholes (they read the
+    // stacks themselves)
+    Scene wrong;
+    wrong.hidden.assign(full.materials().size() + 1, 0);
+    EXPECT_THROW(Tracer(full, 1.0, wrong), Error);
+    Scene with_borehole;
+    with_borehole.hidden.assign(full.materials().size(), 0);
+    with_borehole.boreholes = {sbrt_test::borehole_at(full, centre.x, centre.y)};
+    with_borehole.borehole_radius = 1;
+    EXPECT_THROW(Tracer(full, 1.0, with_borehole), Error);
 }
 
 TEST(ClipPlanes, HorizontalCutIsAVoxelSlice)
