@@ -83,7 +83,7 @@ void ViewServer::render(RenderRequest request)
     const sbrt::CoordinateFrame &frame = session_.frame();
     const glm::dvec3 eye = camera.origin(), forward = camera.forward();
     const glm::dvec3 at = eye + forward * glm::dot(frame.centre() - eye, forward);
-    const glm::dvec3 target = frame.unexaggerate(at);
+    const glm::dvec3 target = frame.map_from_exaggerated(at);
     double azimuth = std::atan2(-forward.x, -forward.y) * 180 / M_PI;
     if (azimuth < 0)
         azimuth += 360;
@@ -220,9 +220,9 @@ void ViewServer::pick(RenderRequest request, int row, int col)
     // the hit in map coordinates: along the ray, unexaggerated
     const sbrt::CoordinateFrame &frame = session_.frame();
     const sbrt::Ray ray = camera.ray(row, col);
-    const glm::dvec3 origin = frame.unexaggerate(ray.origin);
-    const glm::dvec3 along = glm::normalize(frame.unexaggerate(ray.origin + ray.direction) -
-                                            origin);
+    const glm::dvec3 origin = frame.map_from_exaggerated(ray.origin);
+    const glm::dvec3 along =
+        glm::normalize(frame.map_from_exaggerated(ray.origin + ray.direction) - origin);
     const glm::dvec3 hit = origin + along * depth;
     std::fprintf(out_, "hit %.17g %.17g %.17g %d %.17g\n", hit.x, hit.y, hit.z, material,
                  value);

@@ -103,8 +103,8 @@ Camera camera_of(const Args &args, const Model &model, double zexag)
     const int rows = std::stoi(args.get("rows", "884")),
               cols = std::stoi(args.get("cols", "1056"));
     if (args.get("azimuth", "").empty())
-        return Camera::perspective(probe.frame().exaggerate(args.point("position")),
-                                   probe.frame().exaggerate(args.point("target")),
+        return Camera::perspective(probe.frame().exaggerated_from_map(args.point("position")),
+                                   probe.frame().exaggerated_from_map(args.point("target")),
                                    std::stod(args.get("fov", "25")), rows, cols);
     View view;
     view.azimuth = std::stod(args.get("azimuth", "225"));

@@ -36,24 +36,24 @@ CoordinateFrame CoordinateFrame::of(const Model &model, double zexag)
     return CoordinateFrame(model.frame(), zexag, highest_top_local(model));
 }
 
-glm::dvec3 CoordinateFrame::exaggerate(glm::dvec3 p) const
+glm::dvec3 CoordinateFrame::exaggerated_from_map(glm::dvec3 map) const
 {
     const double b = grid_.bottom;
-    return {p.x, p.y, b + (p.z - b) * zexag_};
+    return {map.x, map.y, b + (map.z - b) * zexag_};
 }
 
-glm::dvec3 CoordinateFrame::unexaggerate(glm::dvec3 p) const
+glm::dvec3 CoordinateFrame::map_from_exaggerated(glm::dvec3 exaggerated) const
 {
     const double b = grid_.bottom;
-    return {p.x, p.y, b + (p.z - b) / zexag_};
+    return {exaggerated.x, exaggerated.y, b + (exaggerated.z - b) / zexag_};
 }
 
-glm::dvec3 CoordinateFrame::to_local(glm::dvec3 p) const
+glm::dvec3 CoordinateFrame::local_from_exaggerated(glm::dvec3 exaggerated) const
 {
-    return (p - glm::dvec3(grid_.west, grid_.south, grid_.bottom)) * scale_;
+    return (exaggerated - glm::dvec3(grid_.west, grid_.south, grid_.bottom)) * scale_;
 }
 
-glm::dvec3 CoordinateFrame::from_local(glm::dvec3 local) const
+glm::dvec3 CoordinateFrame::map_from_local(glm::dvec3 local) const
 {
     return {grid_.west + local.x * grid_.ew_res(), grid_.south + local.y * grid_.ns_res(),
             grid_.bottom + local.z * grid_.tb_res()};
@@ -66,14 +66,14 @@ double CoordinateFrame::top_elevation() const
 
 glm::dvec3 CoordinateFrame::centre() const
 {
-    return exaggerate({(grid_.east + grid_.west) / 2, (grid_.north + grid_.south) / 2,
-                       (grid_.bottom + top_elevation()) / 2});
+    return exaggerated_from_map({(grid_.east + grid_.west) / 2, (grid_.north + grid_.south) / 2,
+                                 (grid_.bottom + top_elevation()) / 2});
 }
 
 glm::dvec3 CoordinateFrame::corner(int k) const
 {
-    return exaggerate({k & 1 ? grid_.east : grid_.west, k & 2 ? grid_.north : grid_.south,
-                       k & 4 ? top_elevation() : grid_.bottom});
+    return exaggerated_from_map({k & 1 ? grid_.east : grid_.west, k & 2 ? grid_.north : grid_.south,
+                                 k & 4 ? top_elevation() : grid_.bottom});
 }
 
 double CoordinateFrame::radius() const

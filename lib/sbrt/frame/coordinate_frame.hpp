@@ -16,12 +16,12 @@
 
 namespace sbrt {
 
-/// \brief Three spaces: real map coordinates (x, y, elevation),
-/// exaggerated map coordinates (elevations stretched by `zexag` about the
-/// model's bottom; what cameras live in), and the local frame (x, y in
-/// cells from the west and south edges, z in tb_res steps from the bottom;
-/// what the tracers and the GPU walk), in which coordinates in the millions
-/// never reach a float.
+/// \brief Three spaces: "map", real map coordinates (x, y, elevation);
+/// "exaggerated", exaggerated map coordinates (elevations stretched by
+/// `zexag` about the model's bottom; what cameras live in); and "local", the
+/// local frame (x, y in cells from the west and south edges, z in tb_res
+/// steps from the bottom; what the tracers and the GPU walk), in which
+/// coordinates in the millions never reach a float.
 class CoordinateFrame {
 public:
     /// The frame of `grid` drawn with `zexag`, its box up to `top_local`
@@ -31,14 +31,20 @@ public:
     /// The frame of `model`, its box up to the model's highest top.
     static CoordinateFrame of(const Model &model, double zexag);
 
-    /// Exaggerated map coordinates of a real map point, and back.
-    glm::dvec3 exaggerate(glm::dvec3 p) const;
-    glm::dvec3 unexaggerate(glm::dvec3 p) const;
-    /// Exaggerated map -> local, and local -> real map coordinates.
-    glm::dvec3 to_local(glm::dvec3 exaggerated) const;
-    glm::dvec3 from_local(glm::dvec3 local) const;
+    /// Transforms named `<to>_from_<from>` (pbrt-v4's renderFromCamera
+    /// style), since all three spaces are glm::dvec3 and the type cannot
+    /// tell them apart. Map -> exaggerated map, and back.
+    glm::dvec3 exaggerated_from_map(glm::dvec3 map) const;
+    glm::dvec3 map_from_exaggerated(glm::dvec3 exaggerated) const;
+    /// Exaggerated map -> local, and local -> real map (not exaggerated:
+    /// the two are not inverses).
+    glm::dvec3 local_from_exaggerated(glm::dvec3 exaggerated) const;
+    glm::dvec3 map_from_local(glm::dvec3 local) const;
     /// A direction in exaggerated map space, in the local frame.
-    glm::dvec3 local_direction(glm::dvec3 direction) const { return direction * scale_; }
+    glm::dvec3 local_direction_from_exaggerated(glm::dvec3 direction) const
+    {
+        return direction * scale_;
+    }
     /// Map -> local scale per axis (exaggerated map).
     glm::dvec3 scale() const { return scale_; }
     /// Size of a voxel in exaggerated map units (ew, ns, tb * zexag).

@@ -40,12 +40,12 @@ LocalRays local_rays(const Tracer &tracer, const Camera &camera)
 {
     glm::dvec3 map_origin, map_forward, map_du, map_dv;
     camera.linear_rays(map_origin, map_forward, map_du, map_dv);
-    const glm::dvec3 eye = tracer.frame().to_local(map_origin);
+    const glm::dvec3 eye = tracer.frame().local_from_exaggerated(map_origin);
     LocalRays rays;
-    rays.forward = tracer.frame().local_direction(map_forward);
-    const glm::dvec3 du = tracer.frame().local_direction(map_du);
-    const glm::dvec3 dv = tracer.frame().local_direction(map_dv);
-    const glm::dvec3 centre = tracer.frame().to_local(tracer.frame().centre());
+    rays.forward = tracer.frame().local_direction_from_exaggerated(map_forward);
+    const glm::dvec3 du = tracer.frame().local_direction_from_exaggerated(map_du);
+    const glm::dvec3 dv = tracer.frame().local_direction_from_exaggerated(map_dv);
+    const glm::dvec3 centre = tracer.frame().local_from_exaggerated(tracer.frame().centre());
     rays.s = std::max(0.0, glm::dot(centre - eye, rays.forward) /
                                glm::dot(rays.forward, rays.forward));
     rays.origin = eye + rays.s * rays.forward;
@@ -163,10 +163,10 @@ GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
     shade.light[3] = float(shading.ambient);
     for (int k = 0; k < 3; ++k)
         shade.background[k] = float(shading.background[size_t(k)]);
-    const glm::dvec3 zero = tracer.frame().from_local(glm::dvec3(0));
-    put(shade.real_unit, tracer.frame().from_local(glm::dvec3(1)) - zero);
+    const glm::dvec3 zero = tracer.frame().map_from_local(glm::dvec3(0));
+    put(shade.real_unit, tracer.frame().map_from_local(glm::dvec3(1)) - zero);
     shade.real_unit[3] = float(zero.z);
-    shade.elevation_step[0] = float(tracer.frame().from_local(glm::dvec3(0, 0, 1)).z - zero.z);
+    shade.elevation_step[0] = float(tracer.frame().map_from_local(glm::dvec3(0, 0, 1)).z - zero.z);
     const std::vector<Tracer::LocalPlane> &planes = tracer.planes();
     for (size_t k = 0; k < planes.size(); ++k)
         put(shade.plane_normals[k], planes[k].shading_normal);
@@ -323,8 +323,8 @@ Hit decode_gpu_hit(const Tracer &tracer, const Ray &ray,
     hit.material = material;
     hit.face = Face(face);
     const glm::dvec3 local(record.point[0], record.point[1], record.point[2]);
-    hit.point = tracer.frame().from_local(local);
-    hit.t = glm::length(tracer.frame().exaggerate(hit.point) - ray.origin);
+    hit.point = tracer.frame().map_from_local(local);
+    hit.t = glm::length(tracer.frame().exaggerated_from_map(hit.point) - ray.origin);
     if (hit.face == Face::plane) {
         hit.plane = int8_t(plane);
         hit.normal = tracer.planes()[plane].shading_normal;

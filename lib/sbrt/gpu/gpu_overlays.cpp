@@ -222,7 +222,7 @@ GpuTileHead make_gpu_tile_head(const Tracer &tracer, const Camera &camera, int f
     // the forms of a map point's offset from the camera, then of a local
     // one's (map offset = local offset / scale), the band's first row at 0
     const CoordinateFrame &frame = tracer.frame();
-    const glm::dvec3 scale = frame.scale(), eye = frame.to_local(camera.origin());
+    const glm::dvec3 scale = frame.scale(), eye = frame.local_from_exaggerated(camera.origin());
     const std::array<glm::dvec4, 3> map = camera.pixel_rows();
     for (int k = 0; k < 3; ++k) {
         glm::dvec4 form = map[size_t(k)];
@@ -263,7 +263,7 @@ std::vector<float> make_gpu_boxes(const Tracer &tracer,
     for (const auto &box : boxes) {
         glm::dvec3 lo(INFINITY), hi(-INFINITY);
         for (int k = 0; k < 8; ++k) {
-            const glm::dvec3 local = tracer.frame().to_local(
+            const glm::dvec3 local = tracer.frame().local_from_exaggerated(
                 glm::dvec3(box[k & 1].x, box[(k >> 1) & 1].y, box[(k >> 2) & 1].z));
             lo = glm::min(lo, local);
             hi = glm::max(hi, local);
@@ -297,7 +297,9 @@ GpuOverlays make_gpu_overlays(const Tracer &tracer)
     head.map_unit[1] = float(tracer.frame().voxel_size().y);
     std::vector<GpuOverlay> overlays;
     GpuOverlays out;
-    auto local = [&](glm::dvec2 p) { return glm::dvec2(tracer.frame().to_local(glm::dvec3(p, 0))); };
+    auto local = [&](glm::dvec2 p) {
+        return glm::dvec2(tracer.frame().local_from_exaggerated(glm::dvec3(p, 0)));
+    };
     for (const Borehole &b : scene.boreholes) {
         const glm::dvec2 c = local({b.x, b.y});
         GpuOverlay o{{float(c.x), float(c.y), float(c.x), float(c.y)}, 0, 0, 0, 0};

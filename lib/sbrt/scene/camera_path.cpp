@@ -52,12 +52,12 @@ std::vector<Camera> orbit_cameras(const View &view, const Model &model,
         fail("orbit: a top view does not turn (view=perspective or orthographic)");
     const std::vector<glm::dvec3> hull = framing_hull(model, frame);
     const glm::dvec3 target =
-        view.target ? frame.exaggerate(*view.target) : frame.centre();
+        view.target ? frame.exaggerated_from_map(*view.target) : frame.centre();
     auto turn = [&](int k) { return (k - 1) * angle / frames; };
     // the direction from the target to the camera in frame 1
     glm::dvec3 offset;
     if (view.position) {
-        offset = frame.exaggerate(*view.position) - target;
+        offset = frame.exaggerated_from_map(*view.position) - target;
         if (!(glm::length(offset) > 0))
             fail("orbit: position= and target= are the same point");
     }
@@ -107,7 +107,7 @@ std::vector<Camera> orbit_cameras(const View &view, const Model &model,
         first = target + unit * distance;
     }
     else {
-        first = frame.exaggerate(*view.position);
+        first = frame.exaggerated_from_map(*view.position);
     }
     for (int k = 1; k <= frames; ++k)
         cameras.push_back(Camera::perspective(turn_about_vertical(first, target, turn(k)),
@@ -223,7 +223,7 @@ double surface_elevation(const Model &model, const CoordinateFrame &frame, doubl
         const uint64_t cell = model.cell_index(int(row), int(col));
         if (model.stack_size(cell))
             return frame
-                .from_local({0, 0, double(model.intervals()[model.stack_end(cell) - 1].top)})
+                .map_from_local({0, 0, double(model.intervals()[model.stack_end(cell) - 1].top)})
                 .z;
     }
     return frame.top_elevation();
@@ -240,7 +240,7 @@ ClipPlane swept_plane(const ClipPlane &plane, const CoordinateFrame &box, int fr
     // the box's extent along the normal (real map coordinates)
     double low = HUGE_VAL, high = -HUGE_VAL;
     for (int k = 0; k < 8; ++k) {
-        const double t = glm::dot(box.unexaggerate(box.corner(k)), n);
+        const double t = glm::dot(box.map_from_exaggerated(box.corner(k)), n);
         low = std::min(low, t);
         high = std::max(high, t);
     }

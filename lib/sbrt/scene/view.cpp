@@ -137,7 +137,7 @@ std::vector<glm::dvec3> framing_hull(const Model &model, const CoordinateFrame &
                 const double x = double((bx + (k & 1)) * f.cols) / blocks_x;
                 const double y = double((by + (k >> 1 & 1)) * f.rows) / blocks_y;
                 points.push_back(
-                    frame.exaggerate(frame.from_local({x, y, k & 4 ? t : 0.0})));
+                    frame.exaggerated_from_map(frame.map_from_local({x, y, k & 4 ? t : 0.0})));
             }
         }
     if (points.empty()) // an empty model: its box
@@ -189,10 +189,11 @@ Camera view_camera(const View &view, const Model &model, const CoordinateFrame &
     const bool framed = !view.position;
     const std::vector<glm::dvec3> hull =
         framed || !view.ortho_height ? framing_hull(model, frame) : std::vector<glm::dvec3>();
-    glm::dvec3 target = view.target ? frame.exaggerate(*view.target) : points_centre(hull);
+    glm::dvec3 target =
+        view.target ? frame.exaggerated_from_map(*view.target) : points_centre(hull);
     glm::dvec3 offset; // unit, from the target to the camera
     if (view.position) {
-        offset = glm::normalize(frame.exaggerate(*view.position) - target);
+        offset = glm::normalize(frame.exaggerated_from_map(*view.position) - target);
     }
     else {
         // around the target: azimuth is where the camera looks from
@@ -225,7 +226,7 @@ Camera view_camera(const View &view, const Model &model, const CoordinateFrame &
                                     height, rows, cols);
     }
     if (!framed)
-        return Camera::perspective(frame.exaggerate(*view.position), target, view.fov,
+        return Camera::perspective(frame.exaggerated_from_map(*view.position), target, view.fov,
                                    rows, cols);
     if (view.target || view.distance)
         return Camera::perspective(

@@ -45,7 +45,7 @@ double KernelNormals::view_depth(const Hit &hit) const
 {
     if (!hit.is_hit())
         return INFINITY;
-    return glm::dot(tracer_.frame().exaggerate(hit.point) - origin_, forward_);
+    return glm::dot(tracer_.frame().exaggerated_from_map(hit.point) - origin_, forward_);
 }
 
 std::pair<int, int> KernelNormals::row_reach(const Hit *hits) const
@@ -58,7 +58,7 @@ std::pair<int, int> KernelNormals::row_reach(const Hit *hits) const
         const Hit &hit = hits[col];
         if (!hit.is_hit())
             continue;
-        const glm::dvec3 v = tracer_.frame().exaggerate(hit.point) - origin_;
+        const glm::dvec3 v = tracer_.frame().exaggerated_from_map(hit.point) - origin_;
         const double p_dv = glm::dot(v, dv_), depth = glm::dot(v, forward_);
         for (const Cell &corner : corners_) {
             const double z = depth + corner.along_forward;

@@ -95,7 +95,7 @@ template <typename DepthAt>
 bool KernelNormals::normal(const Hit &hit, double depth, const DepthAt &depth_at,
                            glm::vec3 &out) const
 {
-    const glm::dvec3 v = tracer_.frame().exaggerate(hit.point) - origin_;
+    const glm::dvec3 v = tracer_.frame().exaggerated_from_map(hit.point) - origin_;
     const double p_du = glm::dot(v, du_), p_dv = glm::dot(v, dv_);
     const double tolerance = 1e-6 * std::fabs(depth) + on_surface_;
     glm::dvec3 sum(0);

@@ -226,10 +226,10 @@ void shade_into_band(const Tracer &tracer, const PixelShader &shader, const Came
         band.value.row(r)[col] = v;
     }
     if (!band.depth.empty())
-        band.depth.row(r)[col] =
-            hit.is_hit()
-                ? glm::length(hit.point - tracer.frame().unexaggerate(camera.ray(row, col).origin))
-                : NAN;
+        band.depth.row(r)[col] = hit.is_hit()
+                                     ? glm::length(hit.point - tracer.frame().map_from_exaggerated(
+                                                                   camera.ray(row, col).origin))
+                                     : NAN;
 }
 
 Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
@@ -260,7 +260,7 @@ Image shade(const Tracer &tracer, const Camera &camera, HitImage hits,
                 image.material[i] = model.materials()[hit.material].id;
                 image.elevation[i] = hit.point.z;
                 image.depth[i] = glm::length(
-                    hit.point - tracer.frame().unexaggerate(camera.ray(row, col).origin));
+                    hit.point - tracer.frame().map_from_exaggerated(camera.ray(row, col).origin));
                 double v;
                 if (shading.property && shading.property->value(hit, v))
                     image.value[i] = v;

@@ -136,11 +136,12 @@ double FirstHitBounds::tile_bound(const Tracer &tracer, int row0, int col0) cons
         const int row = k & 1 ? row1 : row0, col = k & 2 ? col1 : col0;
         const glm::dvec2 p = camera_.pixel_ndc(row, col);
         if (camera_.parallel())
-            beam.add(tracer.frame().to_local(origin + du * p.x + dv * p.y),
-                     tracer.frame().local_direction(forward));
+            beam.add(tracer.frame().local_from_exaggerated(origin + du * p.x + dv * p.y),
+                     tracer.frame().local_direction_from_exaggerated(forward));
         else
-            beam.add(tracer.frame().to_local(origin),
-                     tracer.frame().local_direction(forward + du * p.x + dv * p.y));
+            beam.add(
+                tracer.frame().local_from_exaggerated(origin),
+                tracer.frame().local_direction_from_exaggerated(forward + du * p.x + dv * p.y));
     }
     // best first: the frontier's nearest node bounds every cell below it
     const MinMaxPyramid &pyramid = tracer.pyramid();

@@ -61,8 +61,8 @@ Hit sample_ray(const Tracer &tracer, const Ray &ray, const Sampling &sampling)
         fail("sampling: the step must be positive");
     const Model &model = tracer.model();
     const Frame &f = model.frame();
-    const glm::dvec3 o = tracer.frame().to_local(ray.origin);
-    const glm::dvec3 d = tracer.frame().local_direction(ray.direction);
+    const glm::dvec3 o = tracer.frame().local_from_exaggerated(ray.origin);
+    const glm::dvec3 d = tracer.frame().local_direction_from_exaggerated(ray.direction);
     // from the camera (t = 0) on, inside the model's box
     double t_near = 0, t_far = INFINITY;
     int near_axis = -1;
@@ -95,7 +95,7 @@ Hit sample_ray(const Tracer &tracer, const Ray &ray, const Sampling &sampling)
         hit.material = s.material;
         hit.face = before.x < 0 ? Face::none : crossed(before, s, d);
         hit.normal = hit.face == Face::none ? -ray.direction : face_normal(hit.face);
-        hit.point = tracer.frame().from_local(o + t * d);
+        hit.point = tracer.frame().map_from_local(o + t * d);
         return hit;
     }
     return {};

@@ -59,9 +59,10 @@ Pruning prune(const Model &model, const CoordinateFrame &frame, const Camera &ca
                     left_out = &out.cut_away;
                 else if (size) {
                     const double top = model.intervals()[model.stack_end(cell) - 1].top;
-                    const glm::dvec3 low = frame.exaggerate(frame.from_local({col, y, 0}));
+                    const glm::dvec3 low =
+                        frame.exaggerated_from_map(frame.map_from_local({col, y, 0}));
                     const glm::dvec3 high =
-                        frame.exaggerate(frame.from_local({col + 1, y + 1, top}));
+                        frame.exaggerated_from_map(frame.map_from_local({col + 1, y + 1, top}));
                     if (outside_view(camera, low, high))
                         left_out = &out.outside_view;
                 }
@@ -114,7 +115,7 @@ std::vector<LocalCut> local_cuts(const CoordinateFrame &frame,
         const glm::dvec3 n(plane.normal.x, plane.normal.y, plane.normal.z / frame.zexag());
         const double length = glm::length(n);
         cuts.push_back({n / frame.scale() / length,
-                        glm::dot(n, base - frame.exaggerate(plane.point)) / length});
+                        glm::dot(n, base - frame.exaggerated_from_map(plane.point)) / length});
     }
     return cuts;
 }

@@ -101,7 +101,7 @@ Tracer::Tracer(const Model &model, double zexag, Scene scene)
             fail("clip plane: the normal must not be zero and all values finite");
         const glm::dvec3 base(f.west, f.south, f.bottom);
         planes_.push_back({n / scale_ / length,
-                           glm::dot(n, base - frame_.exaggerate(plane.point)) / length,
+                           glm::dot(n, base - frame_.exaggerated_from_map(plane.point)) / length,
                            n / length});
     }
     const Translucency &tr = scene_.translucency;
@@ -361,7 +361,8 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
 {
     const Frame &f = model_.frame();
     hit = Hit();
-    Walk walk{ray, frame_.to_local(ray.origin), frame_.local_direction(ray.direction), hit};
+    Walk walk{ray, frame_.local_from_exaggerated(ray.origin),
+              frame_.local_direction_from_exaggerated(ray.direction), hit};
     const glm::dvec3 o = walk.o;
     glm::dvec3 &d = walk.d;
     for (int a = 0; a < 3; ++a)
@@ -384,7 +385,7 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
                        t_near, t_far, walk, events);
         if (cross_events(events, t_near, t_far, wall, nullptr, walk) &&
             walk.hit.is_hit())
-            walk.hit.point = frame_.from_local(o + walk.hit.t * d);
+            walk.hit.point = frame_.map_from_local(o + walk.hit.t * d);
         return;
     }
 
@@ -421,7 +422,7 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
         else if (cross_cell(model_.cell_index(f.rows - 1 - iy, ix), t_in, t_out, wall,
                             walk)) {
             if (walk.hit.is_hit())
-                walk.hit.point = frame_.from_local(o + walk.hit.t * d);
+                walk.hit.point = frame_.map_from_local(o + walk.hit.t * d);
             return;
         }
         cells.next();

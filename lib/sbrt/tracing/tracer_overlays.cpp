@@ -97,7 +97,7 @@ double Tracer::borehole_top(const Borehole &b, glm::dvec3 lo, glm::dvec3 hi) con
     for (const std::vector<Interval> *stack : {&b.stack, &b.model_stack})
         if (!stack->empty())
             top = std::max(top, stack->back().top);
-    const glm::dvec3 a = frame_.to_local(lo), c = frame_.to_local(hi);
+    const glm::dvec3 a = frame_.local_from_exaggerated(lo), c = frame_.local_from_exaggerated(hi);
     const auto cell = [](double v, int n) { return std::clamp(int(std::floor(v)), 0, n - 1); };
     const int cols = model.cols(0), rows = model.rows(0);
     for (int y = cell(std::min(a.y, c.y), rows); y <= cell(std::max(a.y, c.y), rows); ++y)
@@ -108,7 +108,7 @@ double Tracer::borehole_top(const Borehole &b, glm::dvec3 lo, glm::dvec3 hi) con
         }
     // in exaggerated map units, a hundred-thousandth of the box's height
     // higher (no float rounding can put a drawn top above it)
-    const double z = frame_.exaggerate(frame_.from_local(glm::dvec3(0, 0, top))).z;
+    const double z = frame_.exaggerated_from_map(frame_.map_from_local(glm::dvec3(0, 0, top))).z;
     return std::min(hi.z, z + 1e-5 * (hi.z - lo.z));
 }
 

@@ -329,7 +329,8 @@ TEST(OverlayTiles, ARaysTIsOneFormOfThePointsItPassesForEitherCamera)
     for (const Camera &camera : cameras) {
         const GpuViewDouble v = make_gpu_view_double(t, camera);
         const auto vec = [](const double (&a)[4]) { return glm::dvec3(a[0], a[1], a[2]); };
-        const glm::dvec3 from = t.frame().to_local(camera.origin()) + glm::dvec3(3, -2, 5);
+        const glm::dvec3 from =
+            t.frame().local_from_exaggerated(camera.origin()) + glm::dvec3(3, -2, 5);
         const glm::dvec4 form = ray_t_form(t, camera, from);
         for (const double x : {-1.0, -0.3, 0.7, 1.0})
             for (const double y : {-1.0, 0.2, 0.9})
@@ -433,7 +434,7 @@ size_t tiles_listed_by_depth(const Tracer &tracer, const Camera &camera,
     const std::vector<std::array<glm::dvec3, 2>> &boxes = tracer.overlay_boxes();
     const OverlayTiles hulls = overlay_tiles(boxes, camera, first, rows);
     const CoordinateFrame &frame = tracer.frame();
-    const glm::dvec3 eye = frame.to_local(camera.origin());
+    const glm::dvec3 eye = frame.local_from_exaggerated(camera.origin());
     const glm::dvec4 form = ray_t_form(tracer, camera, eye);
     const auto t_of = [&](glm::dvec3 local) { return glm::dot(glm::dvec3(form), local - eye) + form.w; };
     const std::vector<float> corners = make_gpu_boxes(tracer, boxes);
@@ -458,7 +459,8 @@ size_t tiles_listed_by_depth(const Tracer &tracer, const Camera &camera,
         for (int r = first + 8 * ty; r < std::min(first + 8 * ty + 8, first + rows); ++r)
             for (int c = 8 * tx; c < std::min(8 * tx + 8, camera.cols()); ++c) {
                 const Hit &hit = model_hits[size_t(r) * size_t(camera.cols()) + size_t(c)];
-                far = std::max(far, hit.is_hit() ? t_of(frame.to_local(frame.exaggerate(hit.point)))
+                far = std::max(far, hit.is_hit() ? t_of(frame.local_from_exaggerated(
+                                                       frame.exaggerated_from_map(hit.point)))
                                                  : INFINITY);
             }
         bool any = false;
@@ -537,7 +539,8 @@ TEST_P(GpuBands, BandsWhoseEveryTileABoreholeReachesAndRaysOverTheBudget)
     const Tracer &t = renderer.tracer();
     sbrt_gl::GpuRenderer on_gpu(*context_, renderer, options());
     const Borehole &b = scene.boreholes.front();
-    const glm::dvec3 axis = t.frame().exaggerate(glm::dvec3(b.x, b.y, t.frame().centre().z));
+    const glm::dvec3 axis =
+        t.frame().exaggerated_from_map(glm::dvec3(b.x, b.y, t.frame().centre().z));
     const Outputs all{true, true, true};
     const double tolerance = 2e-5 * 2 * t.frame().radius();
     const auto render = [&](const Camera &camera, const std::string &what,

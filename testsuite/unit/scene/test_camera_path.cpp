@@ -35,8 +35,8 @@ TEST(CameraPath, OrbitKeepsDistanceAndTurns)
     v.target = glm::dvec3(300, 350, 100);
     const std::vector<Camera> cams = orbit_cameras(v, t.model(), t.frame(), 30, 40, 4, 360);
     ASSERT_EQ(cams.size(), 4u);
-    const glm::dvec3 target = t.frame().exaggerate(*v.target);
-    const glm::dvec3 first = t.frame().exaggerate(*v.position);
+    const glm::dvec3 target = t.frame().exaggerated_from_map(*v.target);
+    const glm::dvec3 first = t.frame().exaggerated_from_map(*v.position);
     for (int k = 0; k < 4; ++k) {
         EXPECT_NEAR(glm::length(cams[size_t(k)].origin() - target),
                     glm::length(first - target), 1e-9);

@@ -162,9 +162,9 @@ TEST(ClipPlanes, HorizontalCutIsAVoxelSlice)
         const double z0 = f.bottom + (level + 0.5) * f.tb_res();
         for (double zexag : {1.0, 4.0}) {
             const Tracer tracer(m, zexag, {{{0, 0, z0}, {0, 0, 1}}});
-            const Camera cam = Camera::top(f.north, f.south, f.east, f.west,
-                                           tracer.frame().exaggerate({0, 0, f.top}).z + 10,
-                                           f.rows, f.cols);
+            const Camera cam = Camera::top(
+                f.north, f.south, f.east, f.west,
+                tracer.frame().exaggerated_from_map({0, 0, f.top}).z + 10, f.rows, f.cols);
             const HitImage hits = trace_image(tracer, cam, 2);
             for (int row = 0; row < f.rows; ++row)
                 for (int col = 0; col < f.cols; ++col) {

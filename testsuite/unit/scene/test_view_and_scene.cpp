@@ -136,8 +136,9 @@ TEST(View, HullHoldsEveryColumnAndIsTighterThanTheBox)
             const uint64_t cell = m.cell_index(row, col);
             if (m.stack_size(cell) == 0)
                 continue;
+            const double top_local = m.intervals()[m.stack_end(cell) - 1].top;
             const double top =
-                t.frame().exaggerate(t.frame().from_local({0, 0, m.intervals()[m.stack_end(cell) - 1].top})).z;
+                t.frame().exaggerated_from_map(t.frame().map_from_local({0, 0, top_local})).z;
             const double x = f.west + (col + 0.5) * f.ew_res(),
                          y = f.north - (row + 0.5) * f.ns_res();
             double above = -1e300;
@@ -158,7 +159,7 @@ TEST(View, AzimuthIsWhereTheCameraLooksFrom)
     View v;
     v.elevation = 20;
     v.distance = 5000;
-    v.target = t.frame().unexaggerate(t.frame().centre());
+    v.target = t.frame().map_from_exaggerated(t.frame().centre());
     v.azimuth = 180; // from the south
     Camera c = view_camera(v, t.model(), t.frame(), 40, 50);
     EXPECT_LT(c.origin().y, t.frame().centre().y);
@@ -170,8 +171,8 @@ TEST(View, AzimuthIsWhereTheCameraLooksFrom)
     EXPECT_LT(c.forward().x, -0.9);
     // position and target win over the angles (map z exaggerated)
     const Tracer t2(m, 3.0);
-    v.position = t2.frame().unexaggerate(t2.frame().centre() + glm::dvec3(0, -100, 50));
-    v.target = t2.frame().unexaggerate(t2.frame().centre());
+    v.position = t2.frame().map_from_exaggerated(t2.frame().centre() + glm::dvec3(0, -100, 50));
+    v.target = t2.frame().map_from_exaggerated(t2.frame().centre());
     c = view_camera(v, t2.model(), t2.frame(), 40, 50);
     EXPECT_LT(glm::length(c.origin() - (t2.frame().centre() + glm::dvec3(0, -100, 50))), 1e-6);
     v.kind = ViewKind::top;

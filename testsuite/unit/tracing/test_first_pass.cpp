@@ -86,8 +86,9 @@ TEST(FirstPass, BoundsNeverPassTheHitFromAnyCamera)
                         8, 32);
     expect_sound_bounds(tracer, view(tracer, 20, 30, 200, 96).rows_window(57, 41), 8, 32);
     // from inside the model's box, in the cave of geology()
-    const glm::dvec3 cave(f.west + 28 * f.ew_res(), f.north - 24 * f.ns_res(),
-                          tracer.frame().exaggerate({0, 0, f.bottom + 10 * f.tb_res()}).z);
+    const glm::dvec3 cave(
+        f.west + 28 * f.ew_res(), f.north - 24 * f.ns_res(),
+        tracer.frame().exaggerated_from_map({0, 0, f.bottom + 10 * f.tb_res()}).z);
     const glm::dvec3 ahead = cave + glm::dvec3(0.2, 1, 0.05);
     expect_sound_bounds(tracer, Camera::perspective(cave, ahead, 90, 40, 60), 8, 32);
 }
@@ -121,7 +122,7 @@ TEST(FirstPass, SkipsMostOfTheWalkDownOntoTheModel)
     const glm::dvec3 eye(f.west + 2 * f.ew_res(), f.south + 2 * f.ns_res(),
                          tracer.frame().corner(7).z);
     const Camera down = Camera::perspective(
-        eye, tracer.frame().exaggerate({f.east, f.north, f.bottom}), 30, 60, 80);
+        eye, tracer.frame().exaggerated_from_map({f.east, f.north, f.bottom}), 30, 60, 80);
     const double skipped = expect_sound_bounds(tracer, down, 8, 32);
     std::printf("[ first pass ] the bounds skip %.1f %% of t to the hits\n", 100 * skipped);
     EXPECT_GT(skipped, 0.8);

@@ -64,7 +64,8 @@ Hit march(const sbrt_test::Voxels &v, const Model &m, const Translucency &tr,
     glm::dvec3 veil(0); // accumulated in double, stored as the tracer stores it
     double transmittance = 1;
     for (double t = step / 2; t < t_end; t += step) {
-        const int32_t id = voxel_class(v, tracer.frame().unexaggerate(ray.origin + t * ray.direction));
+        const int32_t id =
+            voxel_class(v, tracer.frame().map_from_exaggerated(ray.origin + t * ray.direction));
         if (id == NULL_CLASS)
             continue;
         const uint32_t k = uint32_t(m.find_material(id));
@@ -290,7 +291,7 @@ TEST(Fence, CurtainShowsTheClassAtEachPoint)
             const glm::dvec3 target(p, f.bottom + (z - f.bottom) * zexag);
             const glm::dvec3 dir = glm::normalize(glm::dvec3(-normal, -0.05));
             const Hit hit = tracer.trace({target - 200.0 * dir, dir});
-            const int32_t want = voxel_class(v, tracer.frame().unexaggerate(target));
+            const int32_t want = voxel_class(v, tracer.frame().map_from_exaggerated(target));
             if (want == NULL_CLASS) {
                 // the ray may still hit the curtain lower down; never here
                 EXPECT_TRUE(!hit.is_hit() || hit.t > 200 + 1e-9);

@@ -31,7 +31,7 @@ Errors errors(const Tracer &tracer, const Camera &camera, const Sampling &s)
     const HitImage exact = trace_image(tracer, camera, 2);
     const HitImage sampled = sample_image(tracer, camera, s, 2);
     const double step_t = (s.fine_step > 0 ? s.fine_step : s.step) /
-                          glm::length(tracer.frame().local_direction({0, 0, 1}));
+                          glm::length(tracer.frame().local_direction_from_exaggerated({0, 0, 1}));
     Errors e;
     e.pixels = exact.size();
     for (size_t i = 0; i < exact.size(); ++i) {

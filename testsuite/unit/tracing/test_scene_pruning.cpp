@@ -49,8 +49,8 @@ TEST(ScenePruningWithoutTracer, LeavesOutWhatTheTracersPyramidDoes)
     const Frame &f = m.frame();
     Scene scene;
     // two slanted planes that cut the north-east away
-    scene.planes = {{frame.unexaggerate(frame.centre()), {1, 1, 0.4}},
-                    {frame.unexaggerate(frame.centre()), {0.2, 1, -0.3}}};
+    scene.planes = {{frame.map_from_exaggerated(frame.centre()), {1, 1, 0.4}},
+                    {frame.map_from_exaggerated(frame.centre()), {0.2, 1, -0.3}}};
     scene.borehole_radius = 1.5 * f.ew_res();
     scene.boreholes = {sbrt_test::borehole_at(m, f.east - 3.5 * f.ew_res(),
                                               f.north - 4.5 * f.ns_res())};
