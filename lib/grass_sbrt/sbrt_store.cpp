@@ -58,6 +58,21 @@ auto read_settled(const std::string &dir, const Read &read)
     }
 }
 
+/// read_settled(`read`) of SBRT `name`'s directory; a damaged SBRT fails
+/// with `damaged` (translated; "%s" the map's name, then what is wrong),
+/// which says what to do.
+template <typename Read>
+auto read_map(const char *name, const char *damaged, const Read &read)
+{
+    const std::string dir = find_sbrt(name);
+    try {
+        return read_settled(dir, read);
+    }
+    catch (const sbrt::Error &e) {
+        fail_with(damaged, name, e.what());
+    }
+}
+
 } // namespace
 
 bool is_location_mapset(const char *mapset)
@@ -99,58 +114,37 @@ std::string find_sbrt(const char *name)
 
 sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options)
 {
-    const std::string dir = find_sbrt(name);
-    try {
-        return read_settled(dir, [&](const std::string &d) { return sbrt::read_sbrt(d, options); });
-    }
-    catch (const sbrt::Error &e) {
-        fail_with(_("SBRT <%s> is damaged or not an SBRT: %s. Convert "
-                    "the source map again with r3.sbrt.convert"),
-                  name, e.what());
-    }
+    return read_map(name,
+                    _("SBRT <%s> is damaged or not an SBRT: %s. Convert the source map "
+                      "again with r3.sbrt.convert"),
+                    [&](const std::string &d) { return sbrt::read_sbrt(d, options); });
 }
 
 std::optional<sbrt::CoarseLevel> read_sbrt_lod_map(const char *name)
 {
-    const std::string dir = find_sbrt(name);
-    try {
-        return read_settled(dir, [](const std::string &d) { return sbrt::read_sbrt_lod(d); });
-    }
-    catch (const sbrt::Error &e) {
-        fail_with(_("The coarse level of detail of SBRT <%s> is damaged: %s. Render "
-                    "with detail=exact, or import the source again with "
-                    "r3.sbrt.convert to rewrite it"),
-                  name, e.what());
-    }
+    return read_map(name,
+                    _("The coarse level of detail of SBRT <%s> is damaged: %s. Render with "
+                      "detail=exact, or import the source again with r3.sbrt.convert to "
+                      "rewrite it"),
+                    [](const std::string &d) { return sbrt::read_sbrt_lod(d); });
 }
 
 std::optional<sbrt::ModelSummary> read_sbrt_summary_map(const char *name)
 {
-    const std::string dir = find_sbrt(name);
-    try {
-        return read_settled(dir, [](const std::string &d) { return sbrt::read_sbrt_summary(d); });
-    }
-    catch (const sbrt::Error &e) {
-        // the blocks may be whole: only an import writes the stacks again
-        fail_with(_("SBRT <%s> is damaged or not an SBRT: %s. Import its source "
-                    "again with r3.sbrt.convert to rewrite it"),
-                  name, e.what());
-    }
+    // the blocks may be whole: only an import writes the stacks again
+    return read_map(name,
+                    _("SBRT <%s> is damaged or not an SBRT: %s. Import its source again "
+                      "with r3.sbrt.convert to rewrite it"),
+                    [](const std::string &d) { return sbrt::read_sbrt_summary(d); });
 }
 
 std::shared_ptr<const sbrt::PropertyChannels> read_channels_map(const char *name,
                                                                 const sbrt::Model &model)
 {
-    const std::string dir = find_sbrt(name);
-    try {
-        return read_settled(dir,
-                            [&](const std::string &d) { return sbrt::read_channels(d, model); });
-    }
-    catch (const sbrt::Error &e) {
-        fail_with(_("The property channels of SBRT <%s> are damaged: %s. Import "
-                    "the source file again with r3.sbrt.convert"),
-                  name, e.what());
-    }
+    return read_map(name,
+                    _("The property channels of SBRT <%s> are damaged: %s. Import the source "
+                      "file again with r3.sbrt.convert"),
+                    [&](const std::string &d) { return sbrt::read_channels(d, model); });
 }
 
 ProbabilityChannels read_probability_channels(const char *name, const sbrt::Model &model,
