@@ -150,7 +150,7 @@ void apply_rules(const RenderRequest &asked, FuzzedDataProvider &in)
     if (request.color.empty())
         request.rules = server->rules_path;
     try {
-        apply_color_option(request, model);
+        apply_color_option(request, model.materials());
     }
     catch (const sbrt::Error &e) {
         check_error(e);
