@@ -16,11 +16,10 @@
 #include "vector_input.hpp"
 
 PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
-                            const sbrt::Camera &camera, Hiding hiding)
+                            const sbrt::Camera &camera)
 {
     const std::vector<uint32_t> hidden = hidden_materials(request, model);
-    const bool while_tracing = hiding == Hiding::tracing && request.boreholes.empty() &&
-                               request.fence.empty();
+    const bool while_tracing = request.boreholes.empty() && request.fence.empty();
     // the boreholes need the model as read where strata are hidden
     const sbrt::Model original = hidden.empty() || request.boreholes.empty()
                                      ? sbrt::Model()

@@ -24,18 +24,13 @@ struct PreparedScene {
     sbrt::Scene scene;
 };
 
-/// Where the strata of hide= are hidden.
-enum class Hiding {
-    model,  ///< removed from the model (a pass over every interval; the GPU)
-    tracing ///< crossed as air while tracing (the CPU), where no borehole or
-            ///< fence reads the stacks: the model stays as read
-};
-
-/// Hides the strata of hide= in `model` (as read, colours applied) as
-/// `hiding` says and builds the scene of the request; sections and split
-/// logs face `camera`.
+/// Hides the strata of hide= of `model` (as read, colours applied) and
+/// builds the scene of the request; sections and split logs face `camera`.
+/// The strata are crossed as air while tracing (the model stays as read),
+/// or, where boreholes or a fence read the stacks themselves, removed from
+/// the model.
 PreparedScene prepare_scene(const RenderRequest &request, sbrt::Model model,
-                            const sbrt::Camera &camera, Hiding hiding = Hiding::model);
+                            const sbrt::Camera &camera);
 
 /// The shading of the request; `drape` (or null) outlives it.
 /// `property` (or null) too.

@@ -249,12 +249,10 @@ void RenderSession::prepare_scene_for(const RenderRequest &request, const sbrt::
             context_ = choose_gl_context(request);
             context_key_ = context;
         }
-        // hidden strata, planes, boreholes, fence, translucency; on the CPU
-        // hide= costs no pass over the model (a GPU's shaders draw every
-        // material they are given)
+        // hidden strata (crossed as air while tracing: no pass over the
+        // model), planes, boreholes, fence, translucency
         PreparedScene prepared =
-            prepare_scene(request, at_->selected ? *at_->selected : *at_->model, camera,
-                          context_ ? Hiding::model : Hiding::tracing);
+            prepare_scene(request, at_->selected ? *at_->selected : *at_->model, camera);
         // on a GPU what no ray of a single view reaches is not uploaded
         // (the CPU never reads it anyway)
         const sbrt::Scene &scene = prepared.scene;

@@ -217,8 +217,8 @@ class TestRenderTopView(TestCase):
              "--overwrite", "--verbose"] + [f"{k}={v}" for k, v in text.items()],
             capture_output=True, text=True, check=True,
         )
-        # the CPU hides while tracing (no pass over the model), a GPU
-        # removes the strata from what it uploads
+        # hidden while tracing (no pass over the model), on the CPU and
+        # the GPU alike
         for line in ("1 hidden strata: crossed as air while tracing", "Empty-space skipping:",
                      "First pass: ", "Streamed: "):
             self.assertIn(line, run.stderr)
@@ -232,7 +232,7 @@ class TestRenderTopView(TestCase):
             capture_output=True, text=True, check=True,
         )
         for line in ("Skipped, out of the view:", "Skipped, cut away by the planes:",
-                     "Skipped, 1 hidden strata:"):
+                     "1 hidden strata: crossed as air while tracing"):
             self.assertIn(line, gl.stderr)
         self.runModule("r.mapcalc", overwrite=True,
                        expression="skg_diff = if(isnull(sk_m) != isnull(skg_m) || "

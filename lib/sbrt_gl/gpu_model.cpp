@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "gpu_internal.hpp"
-#include "util/error.hpp"
 #include "gpu/gpu_layout.hpp"
 #include "gpu/gpu_overlays.hpp"
 
@@ -57,11 +56,6 @@ GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout 
       materials_(material_buffer(gl, tracer)),
       pyramid_(pyramid_buffer(gl, tracer.pyramid(), max_block_bytes))
 {
-    // the shaders read every material as drawn: a hidden one is removed
-    // from the model before the upload
-    if (!tracer.scene().hidden.empty())
-        sbrt::fail("GpuModel: materials hidden while tracing; remove them from the model "
-                   "first (sbrt::hide_materials)");
     if (&tracer.model_pyramid() != &tracer.pyramid())
         model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
     upload_stacks(tracer.model());

@@ -296,8 +296,11 @@ std::vector<GpuMaterial> make_gpu_materials(const Tracer &tracer)
     const Translucency &tr = tracer.scene().translucency;
     std::vector<GpuMaterial> table(tracer.model().materials().size(),
                                    GpuMaterial{{0, 0, 0}, -1});
+    const std::vector<uint8_t> &hidden = tracer.scene().hidden;
     for (size_t m = 0; m < table.size(); ++m)
-        if (!tr.opaque(uint32_t(m)))
+        if (!hidden.empty() && hidden[m])
+            table[m] = {{0, 0, 0}, 0}; // crossed as air: absorbs nothing, adds nothing
+        else if (!tr.opaque(uint32_t(m)))
             table[m] = {{float(tr.color[m].r), float(tr.color[m].g),
                          float(tr.color[m].b)},
                         float(tr.extinction[m])};

@@ -90,8 +90,9 @@ struct Scene {
     bool skip_empty_space = true;
     /// Per material index, 1 where the material is hidden while tracing:
     /// its intervals are crossed as air, as if hide_materials had removed
-    /// them, without a pass over the model (empty: none hidden). Not with
-    /// boreholes or a fence, which read the stacks themselves.
+    /// them, without a pass over the model (empty: none hidden); on a GPU
+    /// a material that absorbs nothing. Not with boreholes or a fence,
+    /// which read the stacks themselves.
     std::vector<uint8_t> hidden{};
 };
 

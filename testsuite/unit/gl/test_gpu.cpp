@@ -311,6 +311,46 @@ TEST_P(Gpu, AgreesWithClipPlanesAndHiddenMaterials)
     }
 }
 
+TEST_P(Gpu, AgreesOnStrataHiddenWhileTracing)
+{
+    // the model as read, two strata marked hidden (a material that absorbs
+    // nothing on the GPU), with and without a cut and translucent strata
+    const Model m = geology(40, 56, 24);
+    const Frame &f = m.frame();
+    for (const bool cut_and_translucent : {false, true}) {
+        Scene scene = cut_and_translucent ? sbrt_test::cut_and_translucent_scene(m) : Scene{};
+        scene.hidden.assign(m.materials().size(), 0);
+        scene.hidden[2] = scene.hidden[5] = 1;
+        const Tracer tracer(m, 2.0, scene);
+        sbrt_gl::GpuTracer gpu(*context_, tracer, options());
+        const glm::dvec3 c = tracer.frame().centre();
+        const double size = 2 * tracer.frame().radius();
+        size_t over = 0;
+        const Camera oblique =
+            Camera::perspective(c + glm::dvec3(0.4, 0.8, 0.5) * size, c, 40, 80, 100);
+        const Agreement a = compare(gpu, tracer, oblique, &over);
+        EXPECT_EQ(over, 0u);
+        expect_agreement(a, "hidden");
+        expect_agreement(compare(gpu, tracer, sbrt_test::top_camera(f, f.top + size)),
+                         "hidden, top");
+        // the hidden strata were in view: the frame differs from the one
+        // that draws them
+        Scene shown = scene;
+        shown.hidden.clear();
+        const HitImage with = trace_image(Tracer(m, 2.0, shown), oblique, 2);
+        const HitImage want = trace_image(tracer, oblique, 2);
+        const HitImage without = gpu.trace_image(oblique, 2);
+        size_t changed = 0, same_light = 0;
+        for (size_t i = 0; i < with.size(); ++i) {
+            changed += with[i].material != without[i].material;
+            // a hidden stratum veils nothing: the light as the CPU's
+            same_light += std::fabs(want[i].transmittance - without[i].transmittance) < 2e-3;
+        }
+        EXPECT_GT(changed, with.size() / 50) << cut_and_translucent;
+        EXPECT_GE(same_light, with.size() - with.size() / 1000) << cut_and_translucent;
+    }
+}
+
 TEST_P(Gpu, AgreesOnTranslucentStrata)
 {
     const Model m = geology(36, 44, 24);
