@@ -31,7 +31,9 @@ REDUCTION = 2  # while the camera moves: 1/REDUCTION of the size each way
 REFINE_MS = 40  # the full frame (face normals) once the mouse rests this long
 # the same while a button is held: a hand dragging leaves gaps of 40-100 ms
 # between mouse moves, and a full exact frame of a national model (0.3-0.4
-# s on 2 cores) asked for in each gap stalled the drag at 2-5 frames a second
+# s on 2 cores) asked for in each gap stalled the drag at 2-5 frames a
+# second; so twice the last full frame's time, at most this (a small
+# model's frame of 50 ms is asked for after 100 ms)
 REFINE_HELD_MS = 250
 # the smooth frame (kernel normals) once nothing has changed this long and
 # no mouse button is held: longer than the pauses within a gesture (wheel
@@ -67,6 +69,7 @@ class ViewerFrame(wx.Frame):
         self.state.backend = backend
         self._sent = 0
         self._smooth_ms = 0.0  # the last smooth frame's server time
+        self._full_ms = REFINE_HELD_MS  # the last full frame's server time
         self._shown = 0
         self._times = []
         self._logged_widgets = False
@@ -397,6 +400,11 @@ class ViewerFrame(wx.Frame):
         frame is risked only after a rest as long as it blocks)."""
         return max(SMOOTH_MS, int(self._smooth_ms))
 
+    def _refine_held_ms(self):
+        """How long the view must rest, a button held, before the full
+        frame: twice what the last one took, REFINE_MS to REFINE_HELD_MS."""
+        return int(min(REFINE_HELD_MS, max(REFINE_MS, 2 * self._full_ms)))
+
     def _wait_for_rest(self):
         """The smooth frame _rest_ms() from now, where smooth shading is on
         (a pending one is cancelled: something changed)."""
@@ -416,7 +424,7 @@ class ViewerFrame(wx.Frame):
         """A change while the user moves something: a reduced frame now,
         the full one when the moving stops."""
         self.request_frame(False)
-        self.refine.StartOnce(REFINE_HELD_MS if self._held() else REFINE_MS)
+        self.refine.StartOnce(self._refine_held_ms() if self._held() else REFINE_MS)
 
     def on_drag(self, mode, dx, dy):
         self.log.write("drag", mode=mode, dx=dx, dy=dy)
@@ -470,6 +478,8 @@ class ViewerFrame(wx.Frame):
         full, smooth = kind != "reduced", kind == "smooth"
         if smooth:  # stale or not, what the next one will cost
             self._smooth_ms = frame.ms
+        elif full:
+            self._full_ms = frame.ms
         if number < self._shown:
             return
         if smooth and number < self._sent:  # the view changed since: a stale frame
