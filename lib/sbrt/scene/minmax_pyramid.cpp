@@ -9,52 +9,30 @@
 
 namespace sbrt {
 
-std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model)
+std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model,
+                                               const std::vector<uint8_t> &hidden)
 {
     const Frame &f = model.frame();
     std::vector<ZRange> cells(f.cells());
     model.intervals().visit([&](const auto *records) {
         using Record = RecordOf<decltype(records)>;
-        for (int row = 0; row < f.rows; ++row)
-            for (int col = 0; col < f.cols; ++col) {
-                const StackRange stack = model.stack(model.cell_index(row, col));
-                const Record *first = records + stack.begin, *last = records + stack.end;
-                // a stack ends with material (no trailing EMPTY); leading
-                // EMPTY intervals lift its lowest bottom
-                const Record *solid = first;
-                while (solid != last && solid->material == EMPTY)
-                    ++solid;
-                if (solid == last)
-                    continue;
-                const size_t y = size_t(f.rows - 1 - row);
-                cells[y * f.cols + col] = {solid == first ? 0.0f : float((solid - 1)->top),
-                                           float((last - 1)->top)};
-            }
-    });
-    return cells;
-}
-
-std::vector<ZRange> MinMaxPyramid::visible_cell_ranges(const Model &model,
-                                                       const std::vector<uint8_t> &hidden)
-{
-    const Frame &f = model.frame();
-    std::vector<ZRange> cells(f.cells());
-    model.intervals().visit([&](const auto *records) {
-        using Record = RecordOf<decltype(records)>;
-        const auto visible = [&](const Record &r) {
-            return r.material != EMPTY && !hidden[r.material];
+        const auto drawn = [&](const Record &r) {
+            return r.material != EMPTY && (hidden.empty() || !hidden[r.material]);
         };
         for (int row = 0; row < f.rows; ++row)
             for (int col = 0; col < f.cols; ++col) {
                 const StackRange stack = model.stack(model.cell_index(row, col));
                 const Record *first = records + stack.begin, *last = records + stack.end;
+                // leading EMPTY (or hidden) intervals lift the lowest
+                // bottom; a stack ends with material (no trailing EMPTY),
+                // so without hidden strata the top is its last interval's
                 const Record *low = first;
-                while (low != last && !visible(*low))
+                while (low != last && !drawn(*low))
                     ++low;
                 if (low == last)
                     continue;
                 const Record *high = last - 1;
-                while (!visible(*high))
+                while (!drawn(*high))
                     --high;
                 const size_t y = size_t(f.rows - 1 - row);
                 cells[y * f.cols + col] = {low == first ? 0.0f : float((low - 1)->top),

@@ -36,8 +36,7 @@ public:
     MinMaxPyramid(const Model &model, const Narrow &narrow,
                   const std::vector<uint8_t> &hidden = {})
     {
-        std::vector<ZRange> cells =
-            hidden.empty() ? cell_ranges(model) : visible_cell_ranges(model, hidden);
+        std::vector<ZRange> cells = cell_ranges(model, hidden);
         const Frame &f = model.frame();
         for (int y = 0; y < f.rows; ++y)
             for (int x = 0; x < f.cols; ++x)
@@ -60,11 +59,10 @@ public:
     std::vector<ZRange> flattened() const;
 
 private:
-    static std::vector<ZRange> cell_ranges(const Model &model);
-    /// cell_ranges of the intervals not `hidden`: from the bottom of the
-    /// lowest such to the top of the highest (on all cores).
-    static std::vector<ZRange> visible_cell_ranges(const Model &model,
-                                                   const std::vector<uint8_t> &hidden);
+    /// Each cell's range of the intervals drawn (not EMPTY, not marked in
+    /// `hidden`): from the bottom of the lowest to the top of the highest.
+    static std::vector<ZRange> cell_ranges(const Model &model,
+                                           const std::vector<uint8_t> &hidden);
     void build(int cols, int rows, std::vector<ZRange> cells);
 
     std::vector<std::vector<ZRange>> levels_;
