@@ -46,14 +46,23 @@ Option *define_memory()
     return memory;
 }
 
-uint64_t read_memory(const Option *memory)
+uint64_t memory_bytes_of(const char *text)
 {
     char *end = nullptr;
-    const double mb = memory->answer ? std::strtod(memory->answer, &end) : 300;
-    if (memory->answer && (end == memory->answer || *end != '\0' || !(mb >= 1) ||
-                           !std::isfinite(mb)))
-        G_fatal_error(_("memory=%s is not a number of MB of at least 1"), memory->answer);
+    const double mb = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !(mb >= 1) || !(mb < 1e12))
+        return 0;
     return uint64_t(mb * double(MB));
+}
+
+uint64_t read_memory(const Option *memory)
+{
+    if (!memory->answer)
+        return 300 * MB;
+    const uint64_t bytes = memory_bytes_of(memory->answer);
+    if (!bytes)
+        G_fatal_error(_("memory=%s is not a number of MB of at least 1"), memory->answer);
+    return bytes;
 }
 
 SbrtBands::SbrtBands(const std::string &name, uint64_t memory, unsigned threads,

@@ -120,6 +120,14 @@ sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options)
                     [&](const std::string &d) { return sbrt::read_sbrt(d, options); });
 }
 
+std::optional<sbrt::Model> read_sbrt_paged_map(const char *name, const sbrt::Paging &paging)
+{
+    return read_map(name,
+                    _("SBRT <%s> is damaged or not an SBRT: %s. Convert the source map "
+                      "again with r3.sbrt.convert"),
+                    [&](const std::string &d) { return sbrt::read_sbrt_paged(d, paging); });
+}
+
 std::optional<sbrt::CoarseLevel> read_sbrt_lod_map(const char *name)
 {
     return read_map(name,

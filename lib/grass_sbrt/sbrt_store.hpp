@@ -33,6 +33,10 @@ std::string find_sbrt(const char *name);
 /// or one with a member that is no regular file, throws sbrt::Error
 /// naming the map and what to do.
 sbrt::Model read_sbrt_map(const char *name, const sbrt::ReadOptions &options = {});
+/// SBRT `name` as a paged model (sbrt::read_sbrt_paged): its blocks
+/// decoded as they are read, within paging.budget_bytes; nothing where its
+/// stacks are older than format 2.1.
+std::optional<sbrt::Model> read_sbrt_paged_map(const char *name, const sbrt::Paging &paging);
 /// The coarse level of detail of SBRT `name` (member stacks_lod: a level
 /// for frames drawn while the camera moves, never for exact output) with
 /// the frame of its exact model; nothing where the SBRT has none (written

@@ -212,6 +212,18 @@ Stats summary_stats(const Frame &frame, size_t material_count,
                     material_count);
 }
 
+uint64_t ModelSummary::largest_decoded_block() const
+{
+    const BlockGrid grid{frame.rows, frame.cols, block_size};
+    uint64_t most = 0;
+    for (size_t b = 0; b < blocks.size(); ++b) {
+        const BlockSummary &s = blocks[b];
+        most = std::max(most, StackIndex::bytes_for(grid.cells(int(b)), s.longest_stack) +
+                                  uint64_t(s.intervals) * (s.compact ? 4 : 8));
+    }
+    return most;
+}
+
 double ModelSummary::highest_top_local() const
 {
     double top = 0;

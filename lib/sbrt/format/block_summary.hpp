@@ -113,6 +113,9 @@ struct ModelSummary {
     /// The highest top (local height, 0 .. depths) of any stack: as
     /// highest_top_local() of the decoded model, 0 where it is empty.
     double highest_top_local() const;
+    /// The bytes the largest block takes decoded (StackBlock::bytes): the
+    /// least a paged model's budget may be.
+    uint64_t largest_decoded_block() const;
 };
 
 /// The figures Model::stats() gives for the decoded model of `frame`,

@@ -17,6 +17,9 @@
 #include "util/safe_text.hpp"
 #include "format/mapped_file.hpp"
 #include "format/member_dir.hpp"
+#include "format/column_ranges_file.hpp"
+#include "model/column_ranges.hpp"
+#include "format/paged_stacks.hpp"
 #include "format/stacks_fields.hpp"
 #include "format/stacks_v2_layout.hpp"
 
@@ -247,6 +250,15 @@ void write_sbrt(const std::string &directory, const Model &model,
     FileSink stacks(out.file_path("stacks"));
     write_stacks_v2(stacks, model, stacks_options);
     stacks.finish();
+    {
+        // each column's range, stamped with the stacks written: a paged
+        // model opens without decoding a block
+        const std::string path = out.file_path("stacks");
+        const MappedFile written(open_regular_file(path), path);
+        out.write_file("ranges",
+                       encode_column_ranges(column_ranges(model), model.frame(),
+                                            stacks_stamp(written.data(), written.size(), path)));
+    }
     if (coarse) {
         // a complete stacks file of its own (no channels: those are the
         // exact model's)
@@ -330,6 +342,34 @@ Model read_sbrt(const std::string &directory, const ReadOptions &options)
     std::string datum;
     read_legend_members(dir, model.materials(), datum);
     model.set_vertical_datum(datum);
+    return model;
+}
+
+std::optional<Model> read_sbrt_paged(const std::string &directory, const Paging &paging)
+{
+    const MemberDirectory dir(directory);
+    const std::string stacks_path = dir.member_path("stacks");
+    const auto file =
+        std::make_shared<const MappedFile>(dir.open_regular("stacks"), stacks_path);
+    // each column's range, where stored for these stacks
+    std::vector<ZRange> ranges;
+    if (const auto member = dir.open_regular_if_present("ranges")) {
+        const std::string path = dir.member_path("ranges");
+        const std::vector<uint8_t> bytes = read_all(*member, path);
+        if (stacks_major_version(file->data(), file->size()) == FORMAT_V2_MAJOR) {
+            const HeaderV2 h = open_stacks_v2(file->data(), file->size(), stacks_path).header;
+            if (auto stored = decode_column_ranges(bytes.data(), bytes.size(), path, h.frame,
+                                                   stamp_of(h)))
+                ranges = std::move(*stored);
+        }
+    }
+    std::optional<Model> model = open_paged_model(file->data(), file->size(), stacks_path,
+                                                  file, paging, std::move(ranges));
+    if (!model)
+        return std::nullopt;
+    std::string datum;
+    read_legend_members(dir, model->materials(), datum);
+    model->set_vertical_datum(datum);
     return model;
 }
 

@@ -19,6 +19,7 @@
 #include "format/channels_file.hpp"
 #include "format/format_v1.hpp"
 #include "format/format_v2.hpp"
+#include "format/paged_stacks.hpp"
 #include "model/model.hpp"
 
 namespace sbrt {
@@ -64,7 +65,8 @@ std::string encode_header(const Model &model, size_t channels = 0);
 /// model with the stacks' block size) is moved in as member `channels`.
 /// Where `coarse` is given (the model's coarse level of detail,
 /// scene/level_of_detail.hpp), it is written beside the stacks, with the
-/// same writer, as member `stacks_lod`.
+/// same writer, as member `stacks_lod`. Member `ranges` holds each
+/// column's range of material (format/column_ranges_file.hpp).
 void write_sbrt(const std::string &directory, const Model &model,
                 const std::string &history, const StacksV2Options &options = {},
                 const std::string &channels_file = {}, const Model *coarse = nullptr);
@@ -81,6 +83,9 @@ void rewrite_legend(const std::string &directory, const Model &model,
                     const std::string &history);
 /// Reads and validates an SBRT directory.
 Model read_sbrt(const std::string &directory, const ReadOptions &options = {});
+/// The SBRT of `directory` as a paged model (format/paged_stacks.hpp):
+/// nothing where its stacks are not format 2.1 (read_sbrt it instead).
+std::optional<Model> read_sbrt_paged(const std::string &directory, const Paging &paging);
 /// \brief The coarse level of detail of an SBRT and the frame of its
 /// exact model.
 struct CoarseLevel {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <unistd.h>
 
 #include <zstd.h>
@@ -479,7 +480,113 @@ void decode_intervals(const uint8_t *data, const StacksV2Layout &layout, const C
     });
 }
 
+/// A block's stacks of voxel-boundary tops held compact, checked while
+/// decoded for what validate_stacks checks (material indices in range,
+/// tops rising within the depths, no two adjacent intervals of one
+/// material, no trailing EMPTY): one pass, no branch on the widths per
+/// interval. False where a check fails (the generic path then says which).
+template <unsigned MaterialBytes>
+bool decode_compact_checked(const uint8_t *material, const uint8_t *top,
+                            const std::vector<uint32_t> &sizes, uint32_t material_count,
+                            uint32_t depths, CompactInterval *out)
+{
+    bool bad = false;
+    for (const uint32_t n : sizes) {
+        uint32_t below = 0, previous = UINT32_MAX;
+        for (uint32_t i = 0; i < n; ++i, material += MaterialBytes, top += 2) {
+            uint32_t m = material[0];
+            if constexpr (MaterialBytes == 2)
+                m |= uint32_t(material[1]) << 8;
+            const uint32_t delta = uint32_t(top[0]) | uint32_t(top[1]) << 8;
+            below += delta;
+            bad |= (m >= material_count) | (delta == 0) | (below > depths) | (m == previous);
+            previous = m;
+            *out++ = {uint16_t(m), uint16_t(below)};
+        }
+        bad |= n != 0 && previous == EMPTY;
+    }
+    return !bad;
+}
+
+/// The compact intervals of a block on the fast path, where its widths
+/// allow and every check holds; nothing otherwise.
+std::optional<IntervalArray> fast_compact_block(const uint8_t *material, uint64_t intervals,
+                                                const StacksV2Widths &w,
+                                                const std::vector<uint32_t> &sizes,
+                                                size_t material_count, int depths)
+{
+    if (w.tops != TopEncoding::VoxelBoundaries || !voxel_tops_fit_compact(depths) ||
+        (w.material_bytes != 1 && w.material_bytes != 2))
+        return std::nullopt;
+    CompactIntervals out(intervals);
+    const uint8_t *top = material + intervals * w.material_bytes;
+    const bool sound =
+        w.material_bytes == 1
+            ? decode_compact_checked<1>(material, top, sizes, uint32_t(material_count),
+                                        uint32_t(depths), out.data())
+            : decode_compact_checked<2>(material, top, sizes, uint32_t(material_count),
+                                        uint32_t(depths), out.data());
+    if (!sound)
+        return std::nullopt;
+    return IntervalArray(std::move(out));
+}
+
 } // namespace
+
+StackBlock decode_stack_block(const uint8_t *data, const StacksV2Layout &layout, int block,
+                              const std::string &what)
+{
+    const BlockGrid &grid = layout.grid;
+    const StacksV2Widths &w = layout.header.widths;
+    const BlockEntry &e = layout.entries.at(size_t(block));
+    const std::string where = what + " block " + std::to_string(block);
+    if (crc32_of(data + e.offset, e.compressed) != e.crc)
+        fail(where, ": checksum mismatch (corrupt file)");
+    const std::vector<uint8_t> raw = decompress_block(data, e, where);
+    StackBlock out;
+    out.first_row = grid.first_row(block);
+    out.first_col = grid.first_col(block);
+    out.rows = grid.height(block);
+    out.cols = grid.width(block);
+    const uint64_t cells = grid.cells(block);
+    // the counts (the table's raw size is that of its cells and intervals)
+    std::vector<uint32_t> sizes(cells);
+    uint64_t sum = 0;
+    const uint8_t *count = raw.data();
+    for (uint64_t c = 0; c < cells; ++c, count += w.count_bytes) {
+        sizes[c] = uint32_t(load_le(count, w.count_bytes));
+        sum += sizes[c];
+    }
+    if (sum != e.intervals)
+        fail(where, ": stack sizes sum to ", sum, ", block table says ", e.intervals,
+             " (corrupt file)");
+    out.index = StackIndex::from_sizes(sizes.data(), cells);
+    const Frame &f = layout.header.frame;
+    if (std::optional<IntervalArray> fast = fast_compact_block(
+            count, sum, w, sizes, layout.materials.size(), f.depths)) {
+        out.intervals = std::move(*fast);
+        return out;
+    }
+    const bool compact =
+        w.tops == TopEncoding::VoxelBoundaries && voxel_tops_fit_compact(f.depths);
+    IntervalDecoder decoder{w, f.depths, compact, Intervals(compact ? 0 : sum),
+                            CompactIntervals(compact ? sum : 0)};
+    const uint8_t *material = count;
+    const uint8_t *top = material + sum * w.material_bytes;
+    for (uint64_t c = 0; c < cells; ++c)
+        decoder.decode(out.index.range(c), material, top, where);
+    out.intervals = decoder.take().packed();
+    Frame block_frame = f; // its cells; the depths bound the tops
+    block_frame.rows = out.rows;
+    block_frame.cols = out.cols;
+    try {
+        validate_stacks(block_frame, out.index, out.intervals, layout.materials.size(), 1);
+    }
+    catch (const Error &error) {
+        fail(where, ": ", error.what());
+    }
+    return out;
+}
 
 Model decode_stacks_v2(const uint8_t *data, size_t size, const std::string &what,
                        const ReadOptions &options)

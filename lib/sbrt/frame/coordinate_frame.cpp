@@ -83,11 +83,12 @@ double CoordinateFrame::radius() const
 
 double highest_top_local(const Model &model)
 {
+    if (const StackPages *pages = model.pages())
+        return pages->highest_top_local();
     double top = 0;
     const uint64_t cells = model.frame().cells();
     for (uint64_t c = 0; c < cells; ++c)
-        if (model.stack_size(c))
-            top = std::max(top, double(model.intervals()[model.stack_end(c) - 1].top));
+        top = std::max(top, model.stack_top(c));
     return top;
 }
 

@@ -56,6 +56,9 @@ void check_gpu_intervals(uint64_t n)
 
 GpuMemory gpu_memory(const Model &model, GpuLayout layout, int max_side)
 {
+    if (model.is_paged())
+        fail("GPU upload: the model is paged (its blocks decoded as the CPU's rays reach "
+             "them); the GPU takes a model decoded whole");
     const Frame &f = model.frame();
     const uint64_t n = model.intervals().size();
     check_gpu_intervals(n);

@@ -73,8 +73,33 @@ Model::Model(Frame frame, std::vector<Material> materials, StackIndex index,
 {
 }
 
+Model::Model(Frame frame, std::vector<Material> materials,
+             std::shared_ptr<const StackPages> pages, Stats stats)
+    : frame_(frame), materials_(std::move(materials)), pages_(std::move(pages)),
+      paged_stats_(stats)
+{
+    if (!pages_ || pages_->rows() != frame_.rows || pages_->cols() != frame_.cols)
+        fail("Model: pages of another grid than ", frame_.rows, " x ", frame_.cols);
+}
+
+void Model::fail_paged()
+{
+    fail("this reads every stack of the model, which is paged (its blocks decoded as "
+         "rays reach them); it needs the model decoded whole");
+}
+
 std::vector<Interval> Model::stack_intervals(uint64_t cell) const
 {
+    if (pages_) {
+        const int row = int(cell / uint64_t(frame_.cols));
+        const int col = int(cell % uint64_t(frame_.cols));
+        const auto block = pages_->block(pages_->block_of(row, col));
+        const StackRange stack = block->range(row, col);
+        std::vector<Interval> out(stack.size());
+        for (uint64_t i = stack.begin; i < stack.end; ++i)
+            out[i - stack.begin] = block->intervals[i];
+        return out;
+    }
     const StackRange stack = index_.range(cell);
     std::vector<Interval> out(stack.size());
     for (uint64_t i = stack.begin; i < stack.end; ++i)
@@ -111,6 +136,8 @@ Stats stats_of(const Frame &frame, uint64_t intervals, uint64_t solid_intervals,
 
 Stats Model::stats() const
 {
+    if (pages_)
+        return paged_stats_;
     uint64_t solid = 0;
     intervals_.visit([&](const auto *records) {
         for (size_t i = 0; i < intervals_.size(); ++i)
@@ -175,11 +202,18 @@ void list_stack_problems(uint64_t cell, const Record *first, const Record *last,
 void Model::validate() const
 {
     frame_.validate("SBRT model");
-    if (index_.cells() != frame_.cells())
-        fail("SBRT model: index has ", index_.cells(), " cells, expected ",
-             frame_.cells());
-    if (index_.total() != intervals_.size())
-        fail("SBRT model: index does not span the ", intervals_.size(),
+    if (!pages_)
+        validate_stacks(frame_, index_, intervals_, materials_.size(), 0);
+}
+
+void validate_stacks(const Frame &frame, const StackIndex &index,
+                     const IntervalArray &intervals, size_t material_count, unsigned threads)
+{
+    if (index.cells() != frame.cells())
+        fail("SBRT model: index has ", index.cells(), " cells, expected ",
+             frame.cells());
+    if (index.total() != intervals.size())
+        fail("SBRT model: index does not span the ", intervals.size(),
              " intervals");
     // the problems of each run of cells, on all cores; the first few (in
     // cell order) are listed
@@ -193,26 +227,26 @@ void Model::validate() const
                 first.push_back(text);
         }
     };
-    const uint64_t cells = frame_.cells();
+    const uint64_t cells = frame.cells();
     // runs of 4096 cells or more: a small model (and the fuzzer's) on
     // this thread alone
     const int runs = int(std::min<uint64_t>(cells / 4096 + 1, 1024));
     std::vector<Problems> found(size_t(runs) + 1);
-    if (materials_.empty() || materials_.size() > MAX_MATERIALS)
-        found[0].add("material count " + std::to_string(materials_.size()) + " not in 1.." +
+    if (material_count == 0 || material_count > MAX_MATERIALS)
+        found[0].add("material count " + std::to_string(material_count) + " not in 1.." +
                      std::to_string(MAX_MATERIALS));
-    const float depth_limit = float(frame_.depths);
-    const uint32_t material_count = uint32_t(materials_.size());
-    intervals_.visit([&](const auto *records) {
-        for_each_row(runs, 0, [&](int run) {
+    const float depth_limit = float(frame.depths);
+    intervals.visit([&](const auto *records) {
+        for_each_row(runs, threads, [&](int run) {
             Problems &problems = found[size_t(run) + 1];
             const uint64_t first = cells * uint64_t(run) / uint64_t(runs);
             const uint64_t last = cells * uint64_t(run + 1) / uint64_t(runs);
-            uint64_t i = index_.range(first).begin;
+            uint64_t i = index.range(first).begin;
             for (uint64_t c = first; c < last; ++c) {
-                const uint64_t end = i + index_.size(c);
-                if (!stack_is_sound(records + i, records + end, material_count, depth_limit))
-                    list_stack_problems(c, records + i, records + end, material_count,
+                const uint64_t end = i + index.size(c);
+                if (!stack_is_sound(records + i, records + end, uint32_t(material_count),
+                                    depth_limit))
+                    list_stack_problems(c, records + i, records + end, uint32_t(material_count),
                                         depth_limit, [&](const std::string &text) {
                                             problems.add(text);
                                         });

@@ -9,12 +9,14 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "model/interval_array.hpp"
 #include "model/stack_index.hpp"
+#include "model/stack_pages.hpp"
 
 namespace sbrt {
 
@@ -94,25 +96,53 @@ public:
           const std::vector<uint32_t> &offsets, IntervalArray intervals);
     Model(Frame frame, std::vector<Material> materials, StackIndex index,
           IntervalArray intervals);
+    /// A paged model: its stacks decoded block by block as they are read
+    /// through `pages` (StackPin), `stats` those of the whole model. Its
+    /// index() and intervals() are empty: code that reads every stack
+    /// that way asks for a decoded model (is_paged()).
+    Model(Frame frame, std::vector<Material> materials,
+          std::shared_ptr<const StackPages> pages, Stats stats);
 
     const Frame &frame() const { return frame_; }
     const std::vector<Material> &materials() const { return materials_; }
     std::vector<Material> &materials() { return materials_; }
-    const StackIndex &index() const { return index_; }
-    const IntervalArray &intervals() const { return intervals_; }
+    /// The index and the intervals of a model decoded whole: a paged
+    /// model's throw sbrt::Error (read its blocks through pages()).
+    const StackIndex &index() const { return whole(), index_; }
+    const IntervalArray &intervals() const { return whole(), intervals_; }
+    /// The blocks of a paged model; null where the model is decoded whole.
+    const StackPages *pages() const { return pages_.get(); }
+    bool is_paged() const { return pages_ != nullptr; }
 
     uint64_t cell_index(int row, int col) const
     {
         return uint64_t(row) * uint64_t(frame_.cols) + uint64_t(col);
     }
-    StackRange stack(uint64_t cell) const { return index_.range(cell); }
-    uint64_t stack_begin(uint64_t cell) const { return index_.range(cell).begin; }
-    uint64_t stack_end(uint64_t cell) const { return index_.range(cell).end; }
-    uint32_t stack_size(uint64_t cell) const { return index_.size(cell); }
+    StackRange stack(uint64_t cell) const { return whole(), index_.range(cell); }
+    uint64_t stack_begin(uint64_t cell) const { return stack(cell).begin; }
+    uint64_t stack_end(uint64_t cell) const { return stack(cell).end; }
+    uint32_t stack_size(uint64_t cell) const { return whole(), index_.size(cell); }
+    /// The top (local height) of the stack of `cell`, or a negative number
+    /// where it is empty (no stack ends EMPTY): a paged model's stored
+    /// column ranges say it without decoding.
+    double stack_top(uint64_t cell) const
+    {
+        if (pages_) {
+            const ZRange &range = pages_->column_ranges()[cell];
+            return range.empty() ? -1.0 : double(range.high);
+        }
+        const StackRange s = index_.range(cell);
+        return s.size() ? double(intervals_[s.end - 1].top) : -1.0;
+    }
     /// The intervals of one stack, widened (for code that is not hot).
     std::vector<Interval> stack_intervals(uint64_t cell) const;
-    /// Bytes the index and the intervals take in memory.
-    uint64_t memory_bytes() const { return index_.bytes() + intervals_.size() * intervals_.record_bytes(); }
+    /// Bytes the index and the intervals take in memory (a paged model:
+    /// the blocks held now).
+    uint64_t memory_bytes() const
+    {
+        return pages_ ? pages_->figures().held_bytes
+                      : index_.bytes() + intervals_.size() * intervals_.record_bytes();
+    }
     /// The vertical datum heights are relative to ("NAP"), where the
     /// source named one; empty where unknown.
     const std::string &vertical_datum() const { return vertical_datum_; }
@@ -123,15 +153,32 @@ public:
     Stats stats() const;
     /// Checks every invariant (sorted tops, merged runs, no trailing EMPTY,
     /// indices in range); throws sbrt::Error listing the problems found.
+    /// A paged model's blocks are checked as they are decoded.
     void validate() const;
 
 private:
+    /// Throws where the model is paged (its stacks are not held whole).
+    void whole() const
+    {
+        if (pages_)
+            fail_paged();
+    }
+    [[noreturn]] static void fail_paged();
+
     Frame frame_;
     std::vector<Material> materials_;
     StackIndex index_;
     IntervalArray intervals_;
+    std::shared_ptr<const StackPages> pages_;
+    Stats paged_stats_;
     std::string vertical_datum_;
 };
+
+/// Checks the stacks of `index` over `intervals` as Model::validate does
+/// for a grid of `frame` (its depths bound the tops) and `material_count`
+/// materials, on `threads` threads (0: all cores).
+void validate_stacks(const Frame &frame, const StackIndex &index,
+                     const IntervalArray &intervals, size_t material_count, unsigned threads);
 
 } // namespace sbrt
 

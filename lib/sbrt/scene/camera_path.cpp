@@ -220,11 +220,9 @@ double surface_elevation(const Model &model, const CoordinateFrame &frame, doubl
     const double col = std::floor((x - f.west) / f.ew_res());
     const double row = std::floor((f.north - y) / f.ns_res());
     if (col >= 0 && row >= 0 && col < f.cols && row < f.rows) {
-        const uint64_t cell = model.cell_index(int(row), int(col));
-        if (model.stack_size(cell))
-            return frame
-                .map_from_local({0, 0, double(model.intervals()[model.stack_end(cell) - 1].top)})
-                .z;
+        const double top = model.stack_top(model.cell_index(int(row), int(col)));
+        if (top >= 0)
+            return frame.map_from_local({0, 0, top}).z;
     }
     return frame.top_elevation();
 }

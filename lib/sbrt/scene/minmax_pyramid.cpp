@@ -14,29 +14,37 @@ std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model,
 {
     const Frame &f = model.frame();
     std::vector<ZRange> cells(f.cells());
+    const auto drawn = [&](const auto &r) {
+        return r.material != EMPTY && (hidden.empty() || !hidden[r.material]);
+    };
+    // row 0 of the model is the north edge, y = 0 of the pyramid the south
+    const auto at = [&](int row, int col) -> ZRange & {
+        return cells[size_t(f.rows - 1 - row) * f.cols + col];
+    };
+    if (const StackPages *pages = model.pages()) {
+        if (hidden.empty()) {
+            // read once, when the model was opened
+            for (int row = 0; row < f.rows; ++row)
+                for (int col = 0; col < f.cols; ++col)
+                    at(row, col) = pages->column_ranges()[model.cell_index(row, col)];
+            return cells;
+        }
+        pages->for_each_block(0, [&](const StackBlock &block) {
+            block.intervals.visit([&](const auto *records) {
+                for (int row = block.first_row; row < block.first_row + block.rows; ++row)
+                    for (int col = block.first_col; col < block.first_col + block.cols; ++col) {
+                        const StackRange s = block.range(row, col);
+                        at(row, col) = drawn_range(records + s.begin, records + s.end, drawn);
+                    }
+            });
+        });
+        return cells;
+    }
     model.intervals().visit([&](const auto *records) {
-        using Record = RecordOf<decltype(records)>;
-        const auto drawn = [&](const Record &r) {
-            return r.material != EMPTY && (hidden.empty() || !hidden[r.material]);
-        };
         for (int row = 0; row < f.rows; ++row)
             for (int col = 0; col < f.cols; ++col) {
-                const StackRange stack = model.stack(model.cell_index(row, col));
-                const Record *first = records + stack.begin, *last = records + stack.end;
-                // leading EMPTY (or hidden) intervals lift the lowest
-                // bottom; a stack ends with material (no trailing EMPTY),
-                // so without hidden strata the top is its last interval's
-                const Record *low = first;
-                while (low != last && !drawn(*low))
-                    ++low;
-                if (low == last)
-                    continue;
-                const Record *high = last - 1;
-                while (!drawn(*high))
-                    --high;
-                const size_t y = size_t(f.rows - 1 - row);
-                cells[y * f.cols + col] = {low == first ? 0.0f : float((low - 1)->top),
-                                           float(high->top)};
+                const StackRange s = model.stack(model.cell_index(row, col));
+                at(row, col) = drawn_range(records + s.begin, records + s.end, drawn);
             }
     });
     return cells;

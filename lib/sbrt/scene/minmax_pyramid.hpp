@@ -12,15 +12,9 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "model/z_range.hpp"
 
 namespace sbrt {
-
-/// \brief z-range (local units) of the material in a node; low > high when
-/// the node holds nothing to draw.
-struct ZRange {
-    float low = 1, high = 0;
-    bool empty() const { return low > high; }
-};
 
 /// \brief Level 0 is the grid (x from the west, y from the south, as the
 /// tracer's local frame); level L + 1 halves level L in x and y (rounding

@@ -119,18 +119,15 @@ std::vector<glm::dvec3> framing_hull(const Model &model, const CoordinateFrame &
         // row 0 is the north edge
         const int by = (f.rows - 1 - row) * blocks_y / f.rows;
         for (int col = 0; col < f.cols; ++col) {
-            const uint64_t cell = model.cell_index(row, col);
-            if (model.stack_size(cell) == 0)
-                continue;
             double &t = top[size_t(by * blocks_x + col * blocks_x / f.cols)];
-            t = std::max(t, double(model.intervals()[model.stack_end(cell) - 1].top));
+            t = std::max(t, model.stack_top(model.cell_index(row, col)));
         }
     }
     std::vector<glm::dvec3> points;
     for (int by = 0; by < blocks_y; ++by)
         for (int bx = 0; bx < blocks_x; ++bx) {
             const double t = top[size_t(by * blocks_x + bx)];
-            if (t == -HUGE_VAL)
+            if (t < 0) // no stack in the block
                 continue;
             for (int k = 0; k < 8; ++k) {
                 // block edges in cells from the west and south edges

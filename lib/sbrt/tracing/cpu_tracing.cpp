@@ -110,13 +110,14 @@ CpuRowTracer::CpuRowTracer(const Tracer &tracer, const Camera &camera,
 
 void CpuRowTracer::trace_span(int row, int c0, int c1, Hit *out) const
 {
+    StackPin pin; // a paged model's block, from ray to ray
     const auto trace = [&](int col) {
         if (bounds_->meets_nothing(row, col)) {
             out[col] = Hit(); // what trace() returns for a t_start of inf
             return;
         }
         const Ray ray = camera_.ray(row, col);
-        tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col]);
+        tracer_.trace_into(ray, bounds_->t_start(row, col, ray), out[col], pin);
     };
     if (!overlay_spans_) {
         for (int col = c0; col < c1; ++col)

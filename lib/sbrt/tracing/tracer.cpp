@@ -114,6 +114,9 @@ Tracer::Tracer(const Model &model, double zexag, Scene scene)
     if (!scene_.hidden.empty() && scene_.hidden.size() != model.materials().size())
         fail("Tracer: hidden materials given for ", scene_.hidden.size(),
              " materials, the model has ", model.materials().size());
+    if (model.is_paged() && (!scene_.boreholes.empty() || !scene_.fence.empty()))
+        fail("Tracer: boreholes and a fence read the stacks of a decoded model, not a "
+             "paged one");
     if (!scene_.hidden.empty() && (!scene_.boreholes.empty() || !scene_.fence.empty()))
         fail("Tracer: materials hidden while tracing with boreholes or a fence (remove "
              "them from the model: hide_materials)");
@@ -259,6 +262,16 @@ bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &e
         return cross_overlays(cell, t_in, t_out, entry, walk);
     if (!scene_.draw_model)
         return false;
+    if (const StackPages *pages = model_.pages()) {
+        const int cols = model_.frame().cols;
+        const int row = int(cell / uint64_t(cols)), col = int(cell % uint64_t(cols));
+        const StackBlock &block = walk.pin.at(*pages, row, col);
+        const StackRange stack = block.range(row, col);
+        return block.intervals.visit([&](const auto *records) {
+            return walk_stack(records + stack.begin, records + stack.end, t_in, t_out, entry,
+                              walk);
+        });
+    }
     const StackRange stack = model_.stack(cell);
     return model_.intervals().visit([&](const auto *records) {
         return walk_stack(records + stack.begin, records + stack.end, t_in, t_out, entry, walk);
@@ -359,10 +372,16 @@ bool Tracer::clip_walk(const Walk &walk, double t_start, double &t_near, double 
 
 void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit) const
 {
+    StackPin pin;
+    trace_into(ray, t_start, hit, pin);
+}
+
+void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit, StackPin &pin) const
+{
     const Frame &f = model_.frame();
     hit = Hit();
     Walk walk{ray, frame_.local_from_exaggerated(ray.origin),
-              frame_.local_direction_from_exaggerated(ray.direction), hit};
+              frame_.local_direction_from_exaggerated(ray.direction), hit, pin};
     const glm::dvec3 o = walk.o;
     glm::dvec3 &d = walk.d;
     for (int a = 0; a < 3; ++a)

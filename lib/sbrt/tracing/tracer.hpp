@@ -73,6 +73,10 @@ public:
     /// The same into `hit` (whatever it held): the hit is written in
     /// place, field by field, never copied whole from a temporary.
     void trace_into(const Ray &ray, double t_start, Hit &hit) const;
+    /// The same, a paged model's blocks looked up through `pin` (one a
+    /// thread, kept from ray to ray: most rays start in the block the
+    /// last one did).
+    void trace_into(const Ray &ray, double t_start, Hit &hit, StackPin &pin) const;
 
     /// The model's coordinate frame as drawn (the box up to the highest
     /// top a ray can meet, boreholes' logs included).

@@ -58,6 +58,7 @@ struct Tracer::Walk {
     const Ray &ray;
     glm::dvec3 o, d;      ///< local frame
     Hit &hit;             ///< written in place: the caller's hit
+    StackPin &pin;        ///< a paged model's block the walk is in
     glm::dvec3 inv_d{0};  ///< 1 / d per axis (inf along a wall)
 };
 

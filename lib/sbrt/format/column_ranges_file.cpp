@@ -1,0 +1,142 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The `ranges` member of an SBRT
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "format/column_ranges_file.hpp"
+
+#include <cstring>
+
+#include <zstd.h>
+
+#include "format/byte_io.hpp"
+#include "format/stacks_fields.hpp"
+#include "format/stacks_v2_layout.hpp"
+#include "util/error.hpp"
+
+namespace sbrt {
+
+namespace {
+
+constexpr char MAGIC[8] = {'S', 'B', 'R', 'T', 'R', 'N', 'G', '1'};
+constexpr size_t HEADER_BYTES = 8 + 3 * 4 + 8 + 8 + 4 + 8 + 4;
+constexpr uint32_t U16_PAIRS = 0, F32_PAIRS = 1;
+constexpr uint16_t EMPTY_LOW = 0xffff;
+
+/// Whether every range fits u16 pairs exactly (voxel boundaries).
+bool fits_u16(const std::vector<ZRange> &ranges)
+{
+    for (const ZRange &r : ranges)
+        if (!r.empty() && !(r.low >= 0 && r.high < float(EMPTY_LOW) &&
+                            float(uint16_t(r.low)) == r.low &&
+                            float(uint16_t(r.high)) == r.high))
+            return false;
+    return true;
+}
+
+} // namespace
+
+StacksStamp stamp_of(const HeaderV2 &h)
+{
+    StacksStamp stamp;
+    stamp.end = h.end;
+    stamp.intervals = h.intervals;
+    stamp.table_crc = h.crc_table;
+    return stamp;
+}
+
+StacksStamp stacks_stamp(const uint8_t *data, size_t size, const std::string &what)
+{
+    return stamp_of(open_stacks_v2(data, size, what).header);
+}
+
+std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, const Frame &frame,
+                                          const StacksStamp &stamp)
+{
+    if (ranges.size() != frame.cells())
+        fail("encode_column_ranges: ", ranges.size(), " ranges for ", frame.cells(), " cells");
+    const uint32_t encoding = fits_u16(ranges) ? U16_PAIRS : F32_PAIRS;
+    ByteWriter raw;
+    for (const ZRange &r : ranges)
+        if (encoding == U16_PAIRS) {
+            raw.u16(r.empty() ? EMPTY_LOW : uint16_t(r.low));
+            raw.u16(r.empty() ? 0 : uint16_t(r.high));
+        }
+        else {
+            raw.f32(r.empty() ? 1.0f : r.low);
+            raw.f32(r.empty() ? 0.0f : r.high);
+        }
+    std::vector<uint8_t> packed(ZSTD_compressBound(raw.size()));
+    const size_t n = ZSTD_compress(packed.data(), packed.size(), raw.bytes().data(),
+                                   raw.size(), 3);
+    if (ZSTD_isError(n))
+        fail("encode_column_ranges: zstd: ", ZSTD_getErrorName(n));
+    packed.resize(n);
+    ByteWriter out;
+    out.raw(MAGIC, sizeof MAGIC);
+    out.u32(uint32_t(frame.rows));
+    out.u32(uint32_t(frame.cols));
+    out.u32(encoding);
+    out.u64(stamp.end);
+    out.u64(stamp.intervals);
+    out.u32(stamp.table_crc);
+    out.u64(n);
+    out.u32(crc32_of(packed.data(), n));
+    out.raw(packed.data(), n);
+    return out.bytes();
+}
+
+std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, size_t size,
+                                                        const std::string &what,
+                                                        const Frame &frame,
+                                                        const StacksStamp &stamp)
+{
+    if (size < HEADER_BYTES || std::memcmp(data, MAGIC, sizeof MAGIC) != 0)
+        fail(what, ": not a column ranges member (bad magic number)");
+    ByteReader in(data, size, what);
+    in.seek(sizeof MAGIC);
+    const uint32_t rows = in.u32(), cols = in.u32(), encoding = in.u32();
+    StacksStamp made;
+    made.end = in.u64();
+    made.intervals = in.u64();
+    made.table_crc = in.u32();
+    const uint64_t packed = in.u64();
+    const uint32_t crc = in.u32();
+    if (!(made == stamp))
+        return std::nullopt; // made from other stacks
+    if (rows != uint32_t(frame.rows) || cols != uint32_t(frame.cols) || encoding > F32_PAIRS ||
+        packed != size - HEADER_BYTES)
+        fail(what, ": its grid or size does not match the stacks (corrupt file)");
+    if (crc32_of(data + HEADER_BYTES, packed) != crc)
+        fail(what, ": checksum mismatch (corrupt file)");
+    const size_t pair = encoding == U16_PAIRS ? 4 : 8;
+    std::vector<uint8_t> raw(frame.cells() * pair);
+    const size_t n = ZSTD_decompress(raw.data(), raw.size(), data + HEADER_BYTES, packed);
+    if (ZSTD_isError(n) || n != raw.size())
+        fail(what, ": ", ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong size",
+             " (corrupt file)");
+    std::vector<ZRange> ranges(frame.cells());
+    const float depths = float(frame.depths);
+    const uint8_t *p = raw.data();
+    for (ZRange &r : ranges) {
+        if (encoding == U16_PAIRS) {
+            const uint16_t low = uint16_t(load_le(p, 2)), high = uint16_t(load_le(p + 2, 2));
+            r = low == EMPTY_LOW ? ZRange{} : ZRange{float(low), float(high)};
+            p += 4;
+        }
+        else {
+            std::memcpy(&r.low, p, 4);
+            std::memcpy(&r.high, p + 4, 4);
+            p += 8;
+        }
+        // empty as 1 > 0, or a range within the depths
+        const bool empty = r.low == 1 && r.high == 0;
+        if (!empty && !(r.low >= 0 && r.low < r.high && r.high <= depths))
+            fail(what, ": a column range outside the model's depths (corrupt file)");
+        if (empty)
+            r = ZRange{};
+    }
+    return ranges;
+}
+
+} // namespace sbrt

@@ -1,0 +1,58 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   A format 2.1 `stacks` file opened as a paged model
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "format/paged_stacks.hpp"
+
+#include "format/block_summary.hpp"
+#include "format/stacks_fields.hpp"
+
+namespace sbrt {
+
+uint64_t skipping_bytes(const Frame &frame)
+{
+    // each column's range, and the pyramid over them (its levels add a
+    // third to its first)
+    return frame.cells() * sizeof(ZRange) * 7 / 3;
+}
+
+uint64_t block_budget(const ModelSummary &summary, const Paging &paging)
+{
+    const uint64_t skipping = skipping_bytes(summary.frame);
+    const uint64_t block = summary.largest_decoded_block();
+    if (paging.budget_bytes < skipping + block) {
+        const uint64_t mb = ((skipping + block) >> 20) + 1;
+        fail("a memory budget (", paging.budget_name, ") of ", paging.budget_bytes >> 20,
+             " MB is less than the ", mb, " MB this model needs at least (each column's "
+             "range and the empty-space pyramid over them, ", (skipping >> 20) + 1,
+             " MB; its largest block decoded, ", (block >> 20) + 1, " MB): give ",
+             paging.budget_name, " at least ", mb);
+    }
+    return paging.budget_bytes - skipping;
+}
+
+std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
+                                      const std::string &what,
+                                      std::shared_ptr<const void> keep, const Paging &paging,
+                                      std::vector<ZRange> ranges)
+{
+    if (stacks_major_version(data, size) != FORMAT_V2_MAJOR)
+        return std::nullopt;
+    std::optional<ModelSummary> summary = read_stacks_summary(data, size, what);
+    if (!summary)
+        return std::nullopt;
+    const uint64_t blocks_budget = block_budget(*summary, paging);
+    auto layout = std::make_shared<const StacksV2Layout>(open_stacks_v2(data, size, what));
+    auto decode = [data, layout, what, keep = std::move(keep)](int block) {
+        return decode_stack_block(data, *layout, block, what);
+    };
+    auto pages = std::make_shared<const StackPages>(summary->frame, int(layout->grid.size),
+                                                    std::move(decode), blocks_budget,
+                                                    paging.budget_name, paging.threads,
+                                                    std::move(ranges));
+    return Model(summary->frame, std::move(summary->materials), std::move(pages),
+                 summary->stats);
+}
+
+} // namespace sbrt

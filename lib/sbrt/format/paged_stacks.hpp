@@ -1,0 +1,59 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   A format 2.1 `stacks` file opened as a paged model: header,
+ *            materials and block summaries read, each block decoded when a
+ *            reader reaches it, within a memory budget (issue 49)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_PAGED_STACKS_HPP
+#define SBRT_PAGED_STACKS_HPP
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "format/block_summary.hpp"
+#include "format/stacks_v2_layout.hpp"
+#include "model/model.hpp"
+#include "model/z_range.hpp"
+
+namespace sbrt {
+
+/// \brief How a paged model holds its blocks.
+struct Paging {
+    /// the most the model takes: decoded blocks, each column's range and
+    /// the empty-space pyramid over them
+    uint64_t budget_bytes = 0;
+    const char *budget_name = "memory="; ///< the option that sets it, for errors
+    unsigned threads = 0;               ///< of the first pass; 0: all cores
+};
+
+/// Bytes of a paged model's column ranges and empty-space pyramid over
+/// `frame` (what its budget holds beside the blocks).
+uint64_t skipping_bytes(const Frame &frame);
+/// The bytes left for decoded blocks where the budget of `paging` holds
+/// the model's column ranges and pyramid too; throws sbrt::Error, saying
+/// what to give, where that leaves less than its largest block decoded.
+uint64_t block_budget(const ModelSummary &summary, const Paging &paging);
+
+/// Block `block` of the opened file `data`, decompressed, its checksum,
+/// counts and stacks checked (throws sbrt::Error naming `what`).
+StackBlock decode_stack_block(const uint8_t *data, const StacksV2Layout &layout, int block,
+                              const std::string &what);
+
+/// The paged model of untrusted stacks bytes that `keep` holds in memory:
+/// nothing where they are not format 2.1 with block summaries (decode
+/// them whole instead). Each column's range of material (for the
+/// empty-space pyramid and the framing) is `ranges` where given (the
+/// SBRT's `ranges` member), else every block is read once on opening;
+/// blocks stay held within the budget.
+std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
+                                      const std::string &what,
+                                      std::shared_ptr<const void> keep, const Paging &paging,
+                                      std::vector<ZRange> ranges = {});
+
+} // namespace sbrt
+
+#endif

@@ -1,0 +1,50 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   Each column's range of material
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "model/column_ranges.hpp"
+
+#include <algorithm>
+
+#include "model/model.hpp"
+
+namespace sbrt {
+
+namespace {
+
+const auto solid = [](const auto &record) { return record.material != EMPTY; };
+
+} // namespace
+
+double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange> &ranges)
+{
+    double top = 0;
+    block.intervals.visit([&](const auto *records) {
+        for (int row = block.first_row; row < block.first_row + block.rows; ++row)
+            for (int col = block.first_col; col < block.first_col + block.cols; ++col) {
+                const StackRange s = block.range(row, col);
+                const ZRange range = drawn_range(records + s.begin, records + s.end, solid);
+                ranges[uint64_t(row) * uint64_t(cols) + uint64_t(col)] = range;
+                if (!range.empty())
+                    top = std::max(top, double(range.high));
+            }
+    });
+    return top;
+}
+
+std::vector<ZRange> column_ranges(const Model &model)
+{
+    if (const StackPages *pages = model.pages())
+        return pages->column_ranges();
+    std::vector<ZRange> ranges(model.frame().cells());
+    model.intervals().visit([&](const auto *records) {
+        for (uint64_t cell = 0; cell < ranges.size(); ++cell) {
+            const StackRange s = model.stack(cell);
+            ranges[cell] = drawn_range(records + s.begin, records + s.end, solid);
+        }
+    });
+    return ranges;
+}
+
+} // namespace sbrt

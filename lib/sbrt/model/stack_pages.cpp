@@ -1,0 +1,124 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   A model's stacks decoded block by block, in a bounded cache
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "model/stack_pages.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/column_ranges.hpp"
+#include "model/model.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
+
+namespace sbrt {
+
+namespace {
+
+double mib(uint64_t bytes)
+{
+    return std::ceil(double(bytes) / (1 << 20) * 10) / 10;
+}
+
+} // namespace
+
+StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
+                       uint64_t budget_bytes, const char *budget_name, unsigned threads,
+                       std::vector<ZRange> ranges)
+    : rows_(frame.rows), cols_(frame.cols), size_(block_size),
+      block_rows_((frame.rows + block_size - 1) / block_size),
+      block_cols_((frame.cols + block_size - 1) / block_size), decode_(std::move(decode)),
+      budget_(budget_bytes), budget_name_(budget_name), ranges_(std::move(ranges)),
+      slots_(size_t(block_rows_) * size_t(block_cols_))
+{
+    if (block_size < 1)
+        fail("StackPages: the block size must be positive");
+    if (!ranges_.empty()) { // stored beside the stacks
+        if (ranges_.size() != frame.cells())
+            fail("StackPages: ", ranges_.size(), " column ranges for ", frame.cells(),
+                 " cells");
+        for (const ZRange &range : ranges_)
+            if (!range.empty())
+                highest_top_ = std::max(highest_top_, double(range.high));
+        return;
+    }
+    // every block read once; those read first stay while they fit, none is
+    // dropped for a later one (the rays will ask for their own)
+    ranges_.resize(frame.cells());
+    std::vector<double> tops(slots_.size(), 0.0);
+    for_each_row(block_count(), threads, [&](int b) {
+        tops[size_t(b)] = block_column_ranges(*fetch(b, false), cols_, ranges_);
+    });
+    highest_top_ = *std::max_element(tops.begin(), tops.end());
+}
+
+void StackPages::for_each_block(unsigned threads,
+                                const std::function<void(const StackBlock &)> &visit) const
+{
+    for_each_row(block_count(), threads, [&](int b) { visit(*block(b)); });
+}
+
+std::shared_ptr<const StackBlock> StackPages::held(int b) const
+{
+    const std::lock_guard<std::mutex> lock(cache_);
+    Slot &slot = slots_[size_t(b)];
+    if (slot.block)
+        used_.splice(used_.begin(), used_, slot.used);
+    return slot.block;
+}
+
+void StackPages::hold(int b, std::shared_ptr<const StackBlock> block, bool evict) const
+{
+    const std::lock_guard<std::mutex> lock(cache_);
+    if (!evict && held_ + block->bytes() > budget_)
+        return;
+    held_ += block->bytes();
+    Slot &slot = slots_[size_t(b)];
+    slot.block = std::move(block);
+    used_.push_front(b);
+    slot.used = used_.begin();
+    // the least recently used out, never the block just decoded (readers
+    // holding a dropped block keep it until they let go)
+    while (held_ > budget_ && used_.size() > 1) {
+        Slot &last = slots_[size_t(used_.back())];
+        held_ -= last.block->bytes();
+        last.block.reset();
+        used_.pop_back();
+    }
+    peak_ = std::max(peak_, held_);
+}
+
+std::shared_ptr<const StackBlock> StackPages::block(int b) const
+{
+    return fetch(b, true);
+}
+
+std::shared_ptr<const StackBlock> StackPages::fetch(int b, bool evict) const
+{
+    if (b < 0 || b >= block_count())
+        fail("StackPages: block ", b, " of ", block_count());
+    if (auto block = held(b))
+        return block;
+    Slot &slot = slots_[size_t(b)];
+    const std::lock_guard<std::mutex> decoding(slot.decoding);
+    if (auto block = held(b)) // decoded while this thread waited
+        return block;
+    auto block = std::make_shared<const StackBlock>(decode_(b));
+    ++decodes_;
+    if (block->bytes() > budget_)
+        fail("the memory budget (", budget_name_, ") of ", mib(budget_), " MiB is less than "
+             "one block of the model takes decoded (", mib(block->bytes()), " MiB): give ",
+             budget_name_, " at least ", uint64_t(std::ceil(double(block->bytes()) / (1 << 20))) + 1);
+    hold(b, block, evict);
+    return block;
+}
+
+PagingFigures StackPages::figures() const
+{
+    const std::lock_guard<std::mutex> lock(cache_);
+    return {decodes_.load(), held_, peak_};
+}
+
+} // namespace sbrt

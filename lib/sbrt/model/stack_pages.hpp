@@ -1,0 +1,144 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   A model's stacks held by blocks of cells, each decoded when a
+ *            reader first reaches it and kept in a cache of bounded bytes
+ *            (least recently used dropped first): a view pays the memory of
+ *            the blocks it touches, not of the model (issue 49)
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_STACK_PAGES_HPP
+#define SBRT_STACK_PAGES_HPP
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <list>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "model/interval_array.hpp"
+#include "model/stack_index.hpp"
+#include "model/z_range.hpp"
+
+namespace sbrt {
+
+struct Frame;
+
+/// \brief The stacks of one block: cells [first_row, first_row + rows) x
+/// [first_col, first_col + cols) of the model's grid (row 0 north), row by
+/// row, checked as Model::validate checks a model's.
+struct StackBlock {
+    int first_row = 0, first_col = 0, rows = 0, cols = 0;
+    StackIndex index;
+    IntervalArray intervals;
+
+    /// The stack of the model's cell (row, col), which the block holds.
+    StackRange range(int row, int col) const
+    {
+        return index.range(uint64_t(row - first_row) * uint64_t(cols) +
+                           uint64_t(col - first_col));
+    }
+    uint64_t bytes() const
+    {
+        return index.bytes() + uint64_t(intervals.size()) * intervals.record_bytes();
+    }
+};
+
+/// \brief What a model's pages did so far.
+struct PagingFigures {
+    uint64_t decodes = 0;    ///< blocks decoded (again after being dropped too)
+    uint64_t held_bytes = 0; ///< decoded blocks held now
+    uint64_t peak_bytes = 0; ///< the most held at once
+};
+
+/// \brief The blocks of a model (square tiles of `block_size` cells, row
+/// by row of blocks, as a format 2 file stores them), decoded on demand.
+/// Safe to read from many threads: a block is decoded once however many
+/// ask for it at the same time.
+class StackPages {
+public:
+    /// Decodes and checks block `b` (throws sbrt::Error where it is
+    /// damaged).
+    using Decoder = std::function<StackBlock(int b)>;
+
+    /// Blocks stay held up to `budget_bytes`. Each column's range of
+    /// material is `ranges` where given (as stored beside the stacks), else
+    /// read from every block once (on `threads` threads, 0: all cores).
+    /// Throws sbrt::Error where a block alone takes more than the budget
+    /// (`budget_name` names the option that sets it).
+    StackPages(const Frame &frame, int block_size, Decoder decode, uint64_t budget_bytes,
+               const char *budget_name, unsigned threads, std::vector<ZRange> ranges = {});
+
+    int rows() const { return rows_; }
+    int cols() const { return cols_; }
+    int block_size() const { return size_; }
+    int block_count() const { return block_rows_ * block_cols_; }
+    int block_of(int row, int col) const
+    {
+        return row / size_ * block_cols_ + col / size_;
+    }
+    /// Block `b`, decoded where it is not held; it stays valid while the
+    /// pointer is kept, dropped from the cache or not.
+    std::shared_ptr<const StackBlock> block(int b) const;
+    /// Calls visit(block) for every block, on `threads` threads.
+    void for_each_block(unsigned threads,
+                        const std::function<void(const StackBlock &)> &visit) const;
+
+    /// Each cell's range of material (row by row, row 0 north; EMPTY left
+    /// out): MinMaxPyramid's cells without hidden strata.
+    const std::vector<ZRange> &column_ranges() const { return ranges_; }
+    /// The highest top of any stack (local units), 0 where all are empty.
+    double highest_top_local() const { return highest_top_; }
+    uint64_t budget_bytes() const { return budget_; }
+    PagingFigures figures() const;
+
+private:
+    struct Slot {
+        std::mutex decoding; ///< held while this block is decoded
+        std::shared_ptr<const StackBlock> block;
+        std::list<int>::iterator used; ///< its place in used_, where held
+    };
+    /// The held block b, moved to the front of used_; null where not held.
+    std::shared_ptr<const StackBlock> held(int b) const;
+    /// Holds block b, the least recently used dropped where the budget
+    /// is passed; with `evict` false, only where it fits as it is.
+    void hold(int b, std::shared_ptr<const StackBlock> block, bool evict) const;
+    std::shared_ptr<const StackBlock> fetch(int b, bool evict) const;
+
+    int rows_, cols_, size_, block_rows_, block_cols_;
+    Decoder decode_;
+    uint64_t budget_;
+    const char *budget_name_;
+    std::vector<ZRange> ranges_;
+    double highest_top_ = 0;
+
+    mutable std::vector<Slot> slots_;
+    mutable std::mutex cache_;      ///< guards the slots' blocks, used_, held_
+    mutable std::list<int> used_;   ///< held blocks, most recently used first
+    mutable uint64_t held_ = 0, peak_ = 0;
+    mutable std::atomic<uint64_t> decodes_{0};
+};
+
+/// \brief The block a walk is in, kept while it stays there: one look-up
+/// in the cache per block a ray enters, not per cell.
+class StackPin {
+public:
+    const StackBlock &at(const StackPages &pages, int row, int col)
+    {
+        const int b = pages.block_of(row, col);
+        if (b != id_ || !block_) {
+            block_ = pages.block(b);
+            id_ = b;
+        }
+        return *block_;
+    }
+
+private:
+    int id_ = -1;
+    std::shared_ptr<const StackBlock> block_;
+};
+
+} // namespace sbrt
+
+#endif

@@ -1,0 +1,126 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   The `ranges` member: written beside the stacks, read back as
+ *            the column ranges of the decoded model; a paged model opened
+ *            from it decodes no block; a stale member ignored, a damaged
+ *            one refused
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "format/column_ranges_file.hpp"
+#include "format/format.hpp"
+#include "model/column_ranges.hpp"
+#include "util/error.hpp"
+#include "test_support.hpp"
+
+using namespace sbrt;
+
+namespace {
+
+std::vector<uint8_t> file_bytes(const std::string &path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+void put_bytes(const std::string &path, const std::vector<uint8_t> &bytes)
+{
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+bool same(const std::vector<ZRange> &a, const std::vector<ZRange> &b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i].empty() != b[i].empty() ||
+            (!a[i].empty() && (a[i].low != b[i].low || a[i].high != b[i].high)))
+            return false;
+    return true;
+}
+
+Paging roomy()
+{
+    Paging paging;
+    paging.budget_bytes = uint64_t(1) << 30;
+    return paging;
+}
+
+} // namespace
+
+TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
+{
+    sbrt_test::Voxels voxels = sbrt_test::random_voxels(31, 70, 90, 24, 5);
+    for (int z = 0; z < voxels.frame.depths; ++z) // columns of air
+        for (int r = 0; r < voxels.frame.rows; r += 7)
+            voxels.classes[(size_t(z) * voxels.frame.rows + r) * voxels.frame.cols + 11] =
+                NULL_CLASS;
+    const Model model = sbrt_test::build_model(voxels);
+    const std::vector<ZRange> want = column_ranges(model);
+    size_t empty = 0;
+    for (const ZRange &r : want)
+        empty += r.empty();
+    ASSERT_GT(empty, 0u); // columns of nothing but air are among them
+    const std::string dir = sbrt_test::temp_dir("ranges") + "/m";
+    write_sbrt(dir, model, "test");
+    const std::optional<Model> paged = read_sbrt_paged(dir, roomy());
+    ASSERT_TRUE(paged);
+    EXPECT_TRUE(same(paged->pages()->column_ranges(), want));
+    EXPECT_EQ(paged->pages()->figures().decodes, 0u); // read from the member
+    EXPECT_EQ(paged->pages()->highest_top_local(), highest_top_local(model));
+
+    // a member made from other stacks is ignored: the blocks are read
+    const Model other = sbrt_test::build_model(sbrt_test::random_voxels(32, 70, 90, 24, 5));
+    const std::string other_dir = dir + "_other";
+    write_sbrt(other_dir, other, "test");
+    const std::vector<uint8_t> member = file_bytes(dir + "/ranges");
+    put_bytes(dir + "/ranges", file_bytes(other_dir + "/ranges"));
+    const std::optional<Model> stale = read_sbrt_paged(dir, roomy());
+    ASSERT_TRUE(stale);
+    EXPECT_TRUE(same(stale->pages()->column_ranges(), want));
+    EXPECT_GT(stale->pages()->figures().decodes, 0u);
+
+    // a damaged member is refused, naming it
+    for (const size_t at : {size_t(3), size_t(60), member.size() - 2}) {
+        std::vector<uint8_t> damaged = member;
+        damaged[at] ^= 0x20;
+        put_bytes(dir + "/ranges", damaged);
+        try {
+            read_sbrt_paged(dir, roomy());
+            // a flipped stamp reads as a member of other stacks: ignored
+            EXPECT_TRUE(at >= 20 && at < 40) << at;
+        }
+        catch (const Error &e) {
+            EXPECT_NE(std::string(e.what()).find("ranges"), std::string::npos) << e.what();
+        }
+    }
+    put_bytes(dir + "/ranges", member);
+    EXPECT_NO_THROW(read_sbrt_paged(dir, roomy()));
+}
+
+TEST(ColumnRangesFile, RangesOfContinuousTopsRoundTrip)
+{
+    // tops off the voxel boundaries (horizons) are stored as f32 pairs
+    Frame f;
+    f.rows = 2;
+    f.cols = 3;
+    f.depths = 10;
+    std::vector<ZRange> ranges(f.cells());
+    ranges[0] = {0.0f, 2.5f};
+    ranges[1] = {1.25f, 9.75f};
+    ranges[4] = {3.0f, 4.0f};
+    const StacksStamp stamp{1234, 56, 789};
+    const std::vector<uint8_t> bytes = encode_column_ranges(ranges, f, stamp);
+    const auto back = decode_column_ranges(bytes.data(), bytes.size(), "r", f, stamp);
+    ASSERT_TRUE(back);
+    EXPECT_TRUE(same(*back, ranges));
+    // a range above the depths is refused
+    ranges[4] = {3.0f, 11.0f};
+    const std::vector<uint8_t> high = encode_column_ranges(ranges, f, stamp);
+    EXPECT_THROW(decode_column_ranges(high.data(), high.size(), "r", f, stamp), Error);
+}

@@ -1,0 +1,231 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   A paged model (blocks decoded as rays reach them, within a
+ *            memory budget) traced hit for hit as the model decoded whole;
+ *            the budget held; damaged blocks and budgets too small for a
+ *            block refused
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <gtest/gtest.h>
+
+#include "format/format.hpp"
+#include "format/paged_stacks.hpp"
+#include "frame/coordinate_frame.hpp"
+#include "scene/view.hpp"
+#include "tracing/cpu_tracing.hpp"
+#include "util/error.hpp"
+#include "test_support.hpp"
+
+using namespace sbrt;
+
+namespace {
+
+/// A model of 37 x 45 cells in blocks of 8 (5 x 6 blocks), and its file.
+struct PagedCase {
+    sbrt_test::Voxels voxels = sbrt_test::random_voxels(29, 37, 45, 26, 6);
+    Model model = sbrt_test::build_model(voxels);
+    std::shared_ptr<const std::vector<uint8_t>> bytes;
+
+    PagedCase()
+    {
+        StacksV2Options options;
+        options.block_size = 8;
+        bytes = std::make_shared<const std::vector<uint8_t>>(encode_stacks_v2(model, options));
+    }
+    /// The paged model whose blocks may take `budget` bytes (the budget
+    /// given holds the column ranges and pyramid too).
+    Model paged(uint64_t budget) const
+    {
+        Paging paging;
+        paging.budget_bytes = budget + skipping_bytes(model.frame());
+        paging.threads = 2;
+        std::optional<Model> m =
+            open_paged_model(bytes->data(), bytes->size(), "test stacks", bytes, paging);
+        if (!m)
+            throw Error("not paged");
+        return std::move(*m);
+    }
+    /// Bytes of the largest block decoded.
+    uint64_t largest_block() const
+    {
+        const Model m = paged(uint64_t(1) << 40);
+        uint64_t most = 0;
+        for (int b = 0; b < m.pages()->block_count(); ++b)
+            most = std::max(most, m.pages()->block(b)->bytes());
+        return most;
+    }
+};
+
+void expect_same_hits(const HitImage &want, const HitImage &got, size_t &hits)
+{
+    ASSERT_EQ(want.size(), got.size());
+    for (size_t i = 0; i < want.size(); ++i) {
+        const Hit &a = want[i], &b = got[i];
+        ASSERT_EQ(a.material, b.material) << i;
+        ASSERT_EQ(a.transmittance, b.transmittance) << i;
+        ASSERT_EQ(a.veil, b.veil) << i;
+        if (!a.is_hit())
+            continue;
+        ++hits;
+        ASSERT_EQ(a.t, b.t) << i;
+        ASSERT_EQ(a.point, b.point) << i;
+        ASSERT_EQ(a.face, b.face) << i;
+        ASSERT_EQ(a.normal, b.normal) << i;
+        ASSERT_EQ(a.plane, b.plane) << i;
+    }
+}
+
+} // namespace
+
+TEST(PagedTracing, HitsAreThoseOfTheModelDecodedWhole)
+{
+    const PagedCase c;
+    const Frame &f = c.model.frame();
+    // room for three blocks: rays keep dropping and decoding blocks again
+    const uint64_t budget = 3 * c.largest_block();
+    const Model paged = c.paged(budget);
+    EXPECT_EQ(paged.pages()->block_count(), 30);
+    EXPECT_EQ(highest_top_local(paged), highest_top_local(c.model));
+    EXPECT_EQ(paged.stats().intervals, c.model.stats().intervals);
+    EXPECT_EQ(paged.stats().solid_intervals, c.model.stats().solid_intervals);
+    const CoordinateFrame frame(f, 3.0, highest_top_local(c.model));
+    EXPECT_EQ(framing_hull(paged, frame), framing_hull(c.model, frame));
+    for (uint64_t cell = 0; cell < f.cells(); cell += 17) {
+        const std::vector<Interval> a = c.model.stack_intervals(cell), b = paged.stack_intervals(cell);
+        ASSERT_EQ(a.size(), b.size()) << cell;
+        for (size_t i = 0; i < a.size(); ++i)
+            ASSERT_TRUE(a[i].material == b[i].material && a[i].top == b[i].top) << cell;
+    }
+
+    const glm::dvec3 centre((f.west + f.east) / 2, (f.south + f.north) / 2,
+                            f.bottom + f.depths * f.tb_res());
+    const std::vector<Camera> cameras = {
+        sbrt_test::top_camera(f, 1e4),
+        Camera::perspective(centre + glm::dvec3(-70, -95, 90), centre, 40, 60, 80),
+        Camera::perspective(centre + glm::dvec3(45, 30, -90), centre, 50, 50, 64),
+        Camera::orthographic(centre + glm::dvec3(90, -10, 25), centre, 80, 40, 56)};
+    std::vector<uint8_t> hidden(c.model.materials().size(), 0);
+    hidden[2] = hidden[4] = 1;
+    size_t hits = 0;
+    for (int kind = 0; kind < 4; ++kind) {
+        // plain, strata hidden while tracing, a cut with a translucent
+        // stratum, skipping off
+        Scene scene = kind == 2 ? sbrt_test::cut_and_translucent_scene(c.model) : Scene{};
+        if (kind == 1)
+            scene.hidden = hidden;
+        scene.skip_empty_space = kind != 3;
+        const Tracer whole(c.model, 3.0, scene), by_pages(paged, 3.0, scene);
+        EXPECT_EQ(whole.pyramid().flattened().size(), by_pages.pyramid().flattened().size());
+        const auto a = whole.pyramid().flattened(), b = by_pages.pyramid().flattened();
+        for (size_t i = 0; i < a.size(); ++i)
+            ASSERT_TRUE(a[i].low == b[i].low && a[i].high == b[i].high) << kind << " " << i;
+        for (const Camera &camera : cameras)
+            expect_same_hits(trace_image(whole, camera, 2), trace_image(by_pages, camera, 2),
+                             hits);
+    }
+    EXPECT_GT(hits, 20000u);
+    // the budget held, and blocks were dropped and decoded again
+    const PagingFigures figures = paged.pages()->figures();
+    EXPECT_LE(figures.peak_bytes, budget);
+    EXPECT_GT(figures.decodes, 2u * 30u);
+}
+
+TEST(PagedTracing, BudgetBelowOneBlockIsRefused)
+{
+    const PagedCase c;
+    try {
+        c.paged(c.largest_block() - 1);
+        FAIL() << "a budget below one block was taken";
+    }
+    catch (const Error &e) {
+        EXPECT_NE(std::string(e.what()).find("give memory= at least"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_NO_THROW(c.paged(c.largest_block()));
+    // the summaries tell the largest block before any is decoded
+    const auto summary = read_stacks_summary(c.bytes->data(), c.bytes->size(), "x");
+    ASSERT_TRUE(summary);
+    EXPECT_EQ(summary->largest_decoded_block(), c.largest_block());
+}
+
+TEST(PagedTracing, DamagedBlockIsRefusedOnOpening)
+{
+    const PagedCase c;
+    const StacksV2Layout layout = open_stacks_v2(c.bytes->data(), c.bytes->size(), "x");
+    auto damaged = std::make_shared<std::vector<uint8_t>>(*c.bytes);
+    (*damaged)[layout.entries[17].offset + 5] ^= 0x40;
+    Paging paging;
+    paging.budget_bytes = uint64_t(1) << 30;
+    try {
+        open_paged_model(damaged->data(), damaged->size(), "test stacks", damaged, paging);
+        FAIL() << "a damaged block was taken";
+    }
+    catch (const Error &e) {
+        EXPECT_NE(std::string(e.what()).find("block 17"), std::string::npos) << e.what();
+    }
+}
+
+TEST(PagedTracing, OlderFilesAndBoreholesAreNotPaged)
+{
+    const PagedCase c;
+    StacksV2Options options;
+    options.summary = false; // 2.0: no block summaries
+    const auto older = std::make_shared<const std::vector<uint8_t>>(encode_stacks_v2(c.model, options));
+    Paging paging;
+    paging.budget_bytes = uint64_t(1) << 30;
+    EXPECT_FALSE(open_paged_model(older->data(), older->size(), "x", older, paging));
+    const Model paged = c.paged(uint64_t(1) << 30);
+    Scene scene;
+    scene.boreholes = {sbrt_test::borehole_at(c.model, 600, 1200)};
+    scene.borehole_radius = 1;
+    EXPECT_THROW(Tracer(paged, 1.0, scene), Error);
+}
+
+TEST(PagedTracing, UnsoundStacksAreRefusedAsWhenDecodedWhole)
+{
+    // blocks whose checksums hold but whose stacks break an invariant:
+    // refused on opening, as decoding the model whole refuses them
+    Frame f;
+    f.rows = 3;
+    f.cols = 4;
+    f.depths = 10;
+    const std::vector<Material> materials(3);
+    const std::vector<std::vector<Interval>> unsound = {
+        {{1, 4}, {1, 7}},   // two adjacent intervals of one material
+        {{1, 4}, {0, 7}},   // a trailing EMPTY
+        {{2, 4}, {1, 4}},   // tops not rising
+        {{5, 4}},           // a material index out of range
+    };
+    for (const std::vector<Interval> &stack : unsound) {
+        std::vector<uint32_t> offsets(f.cells() + 1, 0);
+        Intervals intervals;
+        for (uint64_t c = 0; c < f.cells(); ++c) {
+            const std::vector<Interval> cell =
+                c == 6 ? stack : std::vector<Interval>{{1, 3}, {2, 9}};
+            intervals.insert(intervals.end(), cell.begin(), cell.end());
+            offsets[c + 1] = uint32_t(intervals.size());
+        }
+        std::vector<Material> m = materials;
+        m.resize(stack[0].material == 5 ? 6 : 3); // the writer's widths take it
+        const Model model(f, m, offsets, IntervalArray(std::move(intervals)));
+        StacksV2Options options;
+        options.block_size = 2;
+        auto bytes = std::make_shared<std::vector<uint8_t>>(encode_stacks_v2(model, options));
+        if (stack[0].material == 5) { // the header says 3 materials
+            m.resize(3);
+            const Model fewer(f, m, offsets, model.intervals());
+            // (encoded with 3 materials, the block holds index 5)
+            bytes = std::make_shared<std::vector<uint8_t>>(encode_stacks_v2(fewer, options));
+        }
+        EXPECT_THROW(decode_stacks_v2(bytes->data(), bytes->size(), "x"), Error);
+        Paging paging;
+        paging.budget_bytes = 1 << 20;
+        try {
+            open_paged_model(bytes->data(), bytes->size(), "paged", bytes, paging);
+            ADD_FAILURE() << "unsound stack taken: " << stack.size();
+        }
+        catch (const Error &e) {
+            EXPECT_NE(std::string(e.what()).find("paged block"), std::string::npos) << e.what();
+        }
+    }
+}
