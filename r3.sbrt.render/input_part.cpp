@@ -7,6 +7,7 @@
 
 #include "request_error.hpp"
 #include "module_options.hpp"
+#include "sbrt_bands.hpp"
 
 void check_map_name(const char *key, const std::string &name)
 {
@@ -19,6 +20,10 @@ void InputPart::define(OptionTable &table)
 {
     table.add(sbrt_grass::define_sbrt_option(
         "input", _("Name of the SBRT to render (from r3.sbrt.convert)")));
+    Option *memory = table.add(sbrt_grass::define_memory());
+    memory->description = _("Maximum memory to be used (in MB) for the model's decoded "
+                            "blocks, where the CPU decodes them as its rays reach them");
+    memory->guisection = _("Settings");
 }
 
 void InputPart::read(const Answers &a)
@@ -27,11 +32,15 @@ void InputPart::read(const Answers &a)
     if (input.empty())
         bad_request(_("the request names no input="));
     check_map_name("input", input);
+    const std::string memory = a.text("memory", "300");
+    memory_bytes = sbrt_grass::memory_bytes_of(memory.c_str());
+    if (!memory_bytes)
+        bad_request(_("memory=%s is not a number of MB of at least 1"), memory.c_str());
 }
 
 std::string InputPart::key() const
 {
-    return input;
+    return input + '\n' + std::to_string(memory_bytes);
 }
 
 void ColorsPart::define(OptionTable &table)

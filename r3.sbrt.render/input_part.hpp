@@ -7,15 +7,18 @@
 #ifndef R3_SBRT_INPUT_PART_HPP
 #define R3_SBRT_INPUT_PART_HPP
 
+#include <cstdint>
 #include <string>
 
 #include "option_table.hpp"
 
 struct RenderRequest;
 
-/// \brief input=: the SBRT to render.
+/// \brief input=: the SBRT to render; memory=: the most its decoded blocks
+/// take where the CPU reads them as rays reach them (a paged model).
 struct InputPart {
     std::string input;
+    uint64_t memory_bytes = uint64_t(300) << 20;
 
     static void define(OptionTable &table);
     void read(const Answers &answers);

@@ -9,7 +9,9 @@ extern "C" {
 #include <grass/glocale.h>
 }
 
+#include "request_error.hpp"
 #include "sbrt_store.hpp"
+#include "gl_context.hpp"
 
 bool sees_only_the_region(const RenderRequest &request)
 {
@@ -17,8 +19,54 @@ bool sees_only_the_region(const RenderRequest &request)
            request.depth.empty() && request.boreholes.empty() && request.fence.empty();
 }
 
+bool reads_pages(const RenderRequest &request)
+{
+    // the CPU's rays alone read the stacks (boreholes, fences, drapes and
+    // property channels and value= read them whole; a GPU takes the whole
+    // model)
+    const bool cpu = request.backend == "cpu" ||
+                     (request.backend == "auto" && sbrt_gl::gpu_device_node().empty());
+    return cpu && !sees_only_the_region(request) && request.boreholes.empty() &&
+           request.fence.empty() && request.texture.empty() && request.property.empty() &&
+           request.fade.empty() && request.select.empty() && request.value.empty();
+}
+
+namespace {
+
+/// The paged model of the request's input, or nothing where its stacks
+/// are older than format 2.1 or it has property channels.
+std::optional<sbrt::Model> read_paged_model(const RenderRequest &request)
+{
+    sbrt::Paging paging;
+    paging.budget_bytes = request.memory_bytes;
+    paging.threads = unsigned(request.threads > 0 ? request.threads : 0);
+    const std::optional<sbrt::ModelSummary> summary =
+        sbrt_grass::read_sbrt_summary_map(request.input.c_str());
+    if (!summary || summary->has_channels) // channels lie along whole columns
+        return std::nullopt;
+    try {
+        sbrt::block_budget(*summary, paging);
+    }
+    catch (const sbrt::Error &e) {
+        bad_request(_("SBRT <%s>: %s"), request.input.c_str(), e.what());
+    }
+    std::optional<sbrt::Model> model =
+        sbrt_grass::read_sbrt_paged_map(request.input.c_str(), paging);
+    if (model)
+        G_verbose_message(_("SBRT <%s> paged: its %d blocks decoded as the rays reach "
+                            "them, at most %.0f MB held (memory=)"),
+                          request.input.c_str(), model->pages()->block_count(),
+                          double(request.memory_bytes) / (1 << 20));
+    return model;
+}
+
+} // namespace
+
 sbrt::Model read_model(const RenderRequest &request, const struct Cell_head &region)
 {
+    if (reads_pages(request))
+        if (std::optional<sbrt::Model> model = read_paged_model(request))
+            return std::move(*model);
     sbrt::ReadOptions options;
     sbrt::ReadReport report;
     options.report = &report;

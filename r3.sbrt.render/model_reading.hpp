@@ -21,8 +21,16 @@ extern "C" {
 /// (they reach past the region).
 bool sees_only_the_region(const RenderRequest &request);
 
-/// The model of request.input: the blocks under the region (grown by a
-/// cell) where sees_only_the_region, else all of it.
+/// Whether the request's model is read paged (sbrt::StackPages): the
+/// CPU draws it (backend=cpu, or auto with no GPU device) and only its
+/// rays read the stacks (no boreholes, fence, drape, property channels
+/// or a top view of the region).
+bool reads_pages(const RenderRequest &request);
+
+/// The model of request.input: paged where reads_pages and its stacks are
+/// format 2.1 (the budget memory= checked before a block is decoded); the
+/// blocks under the region (grown by a cell) where sees_only_the_region;
+/// else all of it.
 sbrt::Model read_model(const RenderRequest &request, const struct Cell_head &region);
 
 #endif

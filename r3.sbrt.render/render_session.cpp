@@ -36,6 +36,8 @@ std::string model_key(const RenderRequest &request, const struct Cell_head &regi
     std::ostringstream key;
     key << std::hexfloat << key_of<InputPart, ColorsPart>(request);
     // (detail= is not in it: the session keeps a level of each detail)
+    if (reads_pages(request))
+        key << "\npaged";
     if (sees_only_the_region(request))
         key << region.north << ' ' << region.south << ' ' << region.east << ' '
             << region.west;

@@ -53,10 +53,13 @@ void report_pyramid(const sbrt::MinMaxPyramid &p, const sbrt::Model &m)
 {
     if (!p.levels())
         return; // skipping off, or only overlays drawn
+    // a paged model's, from its summaries (held decoded: only those reached)
+    const uint64_t intervals = m.is_paged() ? m.stats().intervals : m.intervals().size();
+    const uint64_t bytes = m.is_paged() ? m.stats().interval_bytes
+                                        : intervals * m.intervals().record_bytes();
     G_verbose_message(_("Empty-space skipping: %d-level min-max pyramid (%llu "
                         "bytes); %llu of %llu cells hold nothing to draw; %zu "
                         "intervals (%llu bytes) left to trace"),
                       p.levels(), ull(p.bytes()), ull(p.empty_cells()),
-                      ull(m.frame().cells()), m.intervals().size(),
-                      ull(m.intervals().size() * m.intervals().record_bytes()));
+                      ull(m.frame().cells()), size_t(intervals), ull(bytes));
 }

@@ -505,7 +505,7 @@ class TestRenderReadsOnlyTheRegion(TestCase):
         )
         cls.runModule("r3.sbrt.convert", input="blocks", output="blocks")
         cls.runModule("r3.sbrt.render", input="blocks", output="rw_whole", view="top",
-                      material="rw_whole_m", hit_elevation="rw_whole_z")
+                      material="rw_whole_m", hit_elevation="rw_whole_z", depth="rw_whole_d")
 
     @classmethod
     def tearDownClass(cls):
@@ -530,10 +530,14 @@ class TestRenderReadsOnlyTheRegion(TestCase):
                             ("rw_whole.blue", "rw_part.blue")):
             self.assertRastersNoDifference(part, whole, precision=0)
 
-    def test_depth_map_reads_every_block(self):
-        # the depth of a top view is measured from a camera above the whole model
+    def test_depth_map_is_measured_from_above_the_whole_model(self):
+        # the depth of a top view is measured from a camera above the whole
+        # model: the model is paged (each column's range read from its
+        # member), and only the blocks under the region are decoded
         stderr = self.render_part("depth=rw_part_d")
-        self.assertIn("Read 12 of the 12 blocks of SBRT <blocks>", stderr)
+        self.assertIn("SBRT <blocks> paged: its 12 blocks", stderr)
+        self.assertIn("Paged model: 2 of the 12 blocks decoded", stderr)
+        self.assertRastersNoDifference("rw_part_d", "rw_whole_d", precision=1e-9)
 
 
 if __name__ == "__main__":

@@ -87,6 +87,8 @@ CASES = {
     "backend": [([], "backend=egl", None)],
     "layout": [(["backend=egl"], "layout=textures", None)],
     "nprocs": [([], "nprocs=1", "same")],
+    # a paged model's blocks within 1 MB: dropped and decoded again
+    "memory": [([], "memory=1", "same")],
     "e": [([], "-e", "same")],
     "n": [([], "-n", "same")],  # the server's frames carry no annotations
     # with frames=1 a path's first frame is the view
