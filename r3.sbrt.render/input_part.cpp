@@ -7,7 +7,6 @@
 
 #include "request_error.hpp"
 #include "module_options.hpp"
-#include "sbrt_bands.hpp"
 
 void check_map_name(const char *key, const std::string &name)
 {

@@ -6,11 +6,44 @@
 #include "module_options.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "util/parallel.hpp"
 
 namespace sbrt_grass {
+
+namespace {
+constexpr uint64_t MB = uint64_t(1) << 20;
+}
+
+Option *define_memory()
+{
+    Option *memory = G_define_standard_option(G_OPT_MEMORYMB);
+    memory->description = _("Maximum memory to be used (in MB) for the model's stacks: "
+                             "it is read band by band within it");
+    return memory;
+}
+
+uint64_t memory_bytes_of(const char *text)
+{
+    char *end = nullptr;
+    const double mb = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !(mb >= 1) || !(mb < 1e12))
+        return 0;
+    return uint64_t(mb * double(MB));
+}
+
+uint64_t read_memory(const Option *memory)
+{
+    if (!memory->answer)
+        return 300 * MB;
+    const uint64_t bytes = memory_bytes_of(memory->answer);
+    if (!bytes)
+        G_fatal_error(_("memory=%s is not a number of MB of at least 1"), memory->answer);
+    return bytes;
+}
+
 
 Option *define_sbrt_option(const char *key, const char *description)
 {

@@ -7,6 +7,7 @@
 #ifndef SBRT_MODULE_OPTIONS_HPP
 #define SBRT_MODULE_OPTIONS_HPP
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,14 @@ Option *define_probability(const char *label);
 /// definition of every module that uses more than one core: a number of
 /// threads, 0 (the default) for all cores, a negative number for all but
 /// that many.
+/// memory= as GRASS defines it (G_OPT_MEMORYMB: MB, default 300).
+Option *define_memory();
+/// Its answer in bytes; a clear fatal error where it is not a positive
+/// number of MB.
+uint64_t read_memory(const Option *memory);
+/// The bytes of memory= text `mb` (MB, at least 1), or 0 where it is not
+/// such a number.
+uint64_t memory_bytes_of(const char *mb);
 Option *define_nprocs();
 /// Its answer as a number of threads: at least 1, all cores for 0, all
 /// but -n for a negative n (at least 1 where that leaves none).

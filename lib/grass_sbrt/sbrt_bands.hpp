@@ -15,18 +15,10 @@
 
 #include "format/format_v2.hpp"
 #include "grass.hpp"
+#include "module_options.hpp"
 #include "model/model.hpp"
 
 namespace sbrt_grass {
-
-/// memory= as GRASS defines it (G_OPT_MEMORYMB: MB, default 300).
-Option *define_memory();
-/// Its answer in bytes; a clear fatal error where it is not a positive
-/// number of MB.
-uint64_t read_memory(const Option *memory);
-/// The bytes of memory= text `mb` (MB, at least 1), or 0 where it is not
-/// such a number.
-uint64_t memory_bytes_of(const char *mb);
 
 /// \brief Bands of whole rows of an SBRT's blocks, each decoded when a row
 /// of it is first asked for and dropped when a later band is: the model's
