@@ -226,6 +226,17 @@ inline std::vector<sbrt::ChannelInfo> write_channels(const std::string &path, co
     return writer.channels();
 }
 
+/// Whether two hits are the same bit for bit: class, the light of the
+/// translucent strata in front, and (where they hit) t, point, face,
+/// normal and clip plane.
+inline bool identical_hits(const sbrt::Hit &a, const sbrt::Hit &b)
+{
+    if (a.material != b.material || a.transmittance != b.transmittance || a.veil != b.veil)
+        return false;
+    return !a.is_hit() || (a.t == b.t && a.point == b.point && a.face == b.face &&
+                           a.normal == b.normal && a.plane == b.plane);
+}
+
 inline std::string temp_dir(const std::string &tag)
 {
     std::string templ = "/tmp/sbrt_unit_" + tag + "_XXXXXX";
