@@ -1,12 +1,14 @@
 /****************************************************************************
  * MODULE:    testsuite/fuzz (r3.sbrt addon)
  * PURPOSE:   libFuzzer target of the SBRT reader (formats v1 and v2): decode_stacks and
- *            decode_cats on untrusted bytes must end in a model or an
+ *            decode_cats, a paged model's opening (every block decoded) and
+ *            the `ranges` member on untrusted bytes must end in a model or an
  *            sbrt::Error, never a crash, a hang or undefined behaviour.
  *            Bit 0 of the first byte recomputes the checksums, so that the
  *            fuzzer also reaches what lies behind them.
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -14,7 +16,9 @@
 #include <zlib.h>
 
 #include "util/error.hpp"
+#include "format/column_ranges_file.hpp"
 #include "format/format.hpp"
+#include "format/paged_stacks.hpp"
 #include "format/stacks_fields.hpp"
 
 namespace {
@@ -89,6 +93,41 @@ void fix_checksums(std::vector<uint8_t> &b)
         fix_v2_checksums(b);
 }
 
+/// The bytes opened as a paged model (every block decoded once for the
+/// column ranges), within 64 MiB, on one thread.
+void open_paged(const std::vector<uint8_t> &bytes)
+{
+    try {
+        sbrt::Paging paging;
+        paging.budget_bytes = 64u << 20;
+        paging.threads = 1;
+        sbrt::open_paged_model(bytes.data(), bytes.size(), "fuzz", nullptr, paging);
+    }
+    catch (const sbrt::Error &) {
+    }
+}
+
+/// The bytes as a `ranges` member, for the grid and stacks it names (at
+/// most 2^22 cells, 100 depths).
+void read_ranges_member(const std::vector<uint8_t> &bytes)
+{
+    if (bytes.size() < 52 || std::memcmp(bytes.data(), "SBRTRNG1", 8) != 0)
+        return;
+    sbrt::Frame frame;
+    frame.rows = std::max(1, int(get_u64(bytes, 8) & 0xfffu));
+    frame.cols = std::max(1, int(get_u64(bytes, 12) & 0x3ffu));
+    frame.depths = 100;
+    sbrt::StacksStamp stamp;
+    stamp.end = get_u64(bytes, 20);
+    stamp.intervals = get_u64(bytes, 28);
+    stamp.table_crc = uint32_t(get_u64(bytes, 36) & 0xffffffffu);
+    try {
+        sbrt::decode_column_ranges(bytes.data(), bytes.size(), "fuzz", frame, stamp);
+    }
+    catch (const sbrt::Error &) {
+    }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -104,6 +143,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         sbrt::ReadOptions options;
         options.threads = 1;
         options.memory_limit = 256u << 20;
+        open_paged(bytes);
+        read_ranges_member(bytes);
         sbrt::Model model =
             sbrt::decode_stacks(bytes.data(), bytes.size(), "fuzz", nullptr, options);
         // the same bytes as a cats file of the decoded model

@@ -1,7 +1,8 @@
 /****************************************************************************
  * MODULE:    testsuite/fuzz (r3.sbrt addon)
  * PURPOSE:   Seed corpus of the reader's fuzz target: valid stacks files (v1, v2) of
- *            small random models (flag byte 1: checksums recomputed, and 0)
+ *            small random models and their `ranges` members (flag byte 1:
+ *            checksums recomputed, and 0)
  * USAGE:     make_seeds DIR
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
@@ -9,7 +10,9 @@
 #include <iostream>
 #include <string>
 
+#include "format/column_ranges_file.hpp"
 #include "format/format.hpp"
+#include "model/column_ranges.hpp"
 #include "../unit/test_support.hpp"
 
 int main(int argc, char **argv)
@@ -23,9 +26,13 @@ int main(int argc, char **argv)
         const sbrt::Model model = sbrt_test::build_model(v);
         sbrt::StacksV2Options blocks;
         blocks.block_size = 1 + int(seed % 3);
-        const std::vector<uint8_t> files[] = {sbrt::encode_stacks_v1(model),
-                                              sbrt::encode_stacks_v2(model, blocks)};
-        for (int version = 1; version <= 2; ++version)
+        const std::vector<uint8_t> v2 = sbrt::encode_stacks_v2(model, blocks);
+        const std::vector<uint8_t> files[] = {
+            sbrt::encode_stacks_v1(model), v2,
+            // the `ranges` member of those stacks (version 3 in the name)
+            sbrt::encode_column_ranges(sbrt::column_ranges(model), model.frame(),
+                                       sbrt::stacks_stamp(v2.data(), v2.size(), "seed"))};
+        for (int version = 1; version <= 3; ++version)
         for (uint8_t flag : {uint8_t(0), uint8_t(1)}) {
             const std::vector<uint8_t> &stacks = files[version - 1];
             std::ofstream out(std::string(argv[1]) + "/seed_v" + std::to_string(version) + "_" +
