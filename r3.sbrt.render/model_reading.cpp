@@ -26,7 +26,7 @@ bool reads_pages(const RenderRequest &request)
     // model)
     const bool cpu = request.backend == "cpu" ||
                      (request.backend == "auto" && sbrt_gl::gpu_device_node().empty());
-    return cpu && !sees_only_the_region(request) && request.boreholes.empty() &&
+    return cpu && request.boreholes.empty() &&
            request.fence.empty() && request.texture.empty() && request.property.empty() &&
            request.fade.empty() && request.select.empty() && request.value.empty();
 }

@@ -23,8 +23,8 @@ bool sees_only_the_region(const RenderRequest &request);
 
 /// Whether the request's model is read paged (sbrt::StackPages): the
 /// CPU draws it (backend=cpu, or auto with no GPU device) and only its
-/// rays read the stacks (no boreholes, fence, drape, property channels
-/// or a top view of the region).
+/// rays read the stacks (no boreholes, fence, drape or property
+/// channels). A top view of a region then decodes the blocks under it.
 bool reads_pages(const RenderRequest &request);
 
 /// The model of request.input: paged where reads_pages and its stacks are

@@ -38,7 +38,7 @@ std::string model_key(const RenderRequest &request, const struct Cell_head &regi
     // (detail= is not in it: the session keeps a level of each detail)
     if (reads_pages(request))
         key << "\npaged";
-    if (sees_only_the_region(request))
+    if (sees_only_the_region(request) && !reads_pages(request))
         key << region.north << ' ' << region.south << ' ' << region.east << ' '
             << region.west;
     return key.str();
