@@ -30,28 +30,30 @@ StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
     : rows_(frame.rows), cols_(frame.cols), size_(block_size),
       block_rows_((frame.rows + block_size - 1) / block_size),
       block_cols_((frame.cols + block_size - 1) / block_size), decode_(std::move(decode)),
-      budget_(budget_bytes), budget_name_(budget_name), ranges_(std::move(ranges)),
+      budget_(budget_bytes), budget_name_(budget_name),
       slots_(size_t(block_rows_) * size_t(block_cols_))
 {
     if (block_size < 1)
         fail("StackPages: the block size must be positive");
-    if (!ranges_.empty()) { // stored beside the stacks
-        if (ranges_.size() != frame.cells())
-            fail("StackPages: ", ranges_.size(), " column ranges for ", frame.cells(),
+    if (!ranges.empty()) { // stored beside the stacks
+        if (ranges.size() != frame.cells())
+            fail("StackPages: ", ranges.size(), " column ranges for ", frame.cells(),
                  " cells");
-        for (const ZRange &range : ranges_)
+        for (const ZRange &range : ranges)
             if (!range.empty())
                 highest_top_ = std::max(highest_top_, double(range.high));
-        return;
     }
-    // every block read once; those read first stay while they fit, none is
-    // dropped for a later one (the rays will ask for their own)
-    ranges_.resize(frame.cells());
-    std::vector<double> tops(slots_.size(), 0.0);
-    for_each_row(block_count(), threads, [&](int b) {
-        tops[size_t(b)] = block_column_ranges(*fetch(b, false), cols_, ranges_);
-    });
-    highest_top_ = *std::max_element(tops.begin(), tops.end());
+    else {
+        // every block read once; those read first stay while they fit,
+        // none is dropped for a later one (the rays will ask for their own)
+        ranges.resize(frame.cells());
+        std::vector<double> tops(slots_.size(), 0.0);
+        for_each_row(block_count(), threads, [&](int b) {
+            tops[size_t(b)] = block_column_ranges(*fetch(b, false), cols_, ranges);
+        });
+        highest_top_ = *std::max_element(tops.begin(), tops.end());
+    }
+    ranges_ = std::make_shared<const std::vector<ZRange>>(std::move(ranges));
 }
 
 void StackPages::for_each_block(unsigned threads,

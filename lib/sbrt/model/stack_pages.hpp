@@ -87,7 +87,9 @@ public:
 
     /// Each cell's range of material (row by row, row 0 north; EMPTY left
     /// out): MinMaxPyramid's cells without hidden strata.
-    const std::vector<ZRange> &column_ranges() const { return ranges_; }
+    const std::vector<ZRange> &column_ranges() const { return *ranges_; }
+    /// The same, shared (a pyramid's level 0).
+    std::shared_ptr<const std::vector<ZRange>> shared_column_ranges() const { return ranges_; }
     /// The highest top of any stack (local units), 0 where all are empty.
     double highest_top_local() const { return highest_top_; }
     uint64_t budget_bytes() const { return budget_; }
@@ -110,7 +112,7 @@ private:
     Decoder decode_;
     uint64_t budget_;
     const char *budget_name_;
-    std::vector<ZRange> ranges_;
+    std::shared_ptr<const std::vector<ZRange>> ranges_;
     double highest_top_ = 0;
 
     mutable std::vector<Slot> slots_;

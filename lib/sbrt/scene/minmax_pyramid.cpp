@@ -55,12 +55,12 @@ void MinMaxPyramid::build(int cols, int rows, std::vector<ZRange> cells)
     levels_.push_back(std::move(cells));
     dims_.push_back({cols, rows});
     while (cols > 1 || rows > 1) {
+        const int level = int(dims_.size()) - 1;
         const int up_cols = (cols + 1) / 2, up_rows = (rows + 1) / 2;
         std::vector<ZRange> up(size_t(up_cols) * up_rows);
-        const std::vector<ZRange> &down = levels_.back();
         for (int y = 0; y < rows; ++y)
             for (int x = 0; x < cols; ++x) {
-                const ZRange &c = down[size_t(y) * cols + x];
+                const ZRange &c = node(level, x, y);
                 if (c.empty())
                     continue;
                 ZRange &n = up[size_t(y / 2) * up_cols + x / 2];
@@ -76,25 +76,31 @@ void MinMaxPyramid::build(int cols, int rows, std::vector<ZRange> cells)
 
 uint64_t MinMaxPyramid::empty_cells() const
 {
-    if (levels_.empty())
+    if (dims_.empty())
         return 0;
-    return uint64_t(std::count_if(levels_[0].begin(), levels_[0].end(),
-                                  [](const ZRange &r) { return r.empty(); }));
+    uint64_t n = 0;
+    for (int y = 0; y < rows(0); ++y)
+        for (int x = 0; x < cols(0); ++x)
+            n += node(0, x, y).empty();
+    return n;
 }
 
 uint64_t MinMaxPyramid::bytes() const
 {
     uint64_t n = 0;
-    for (const auto &level : levels_)
-        n += level.size() * sizeof(ZRange);
+    for (size_t level = 0; level < dims_.size(); ++level)
+        n += uint64_t(dims_[level].first) * uint64_t(dims_[level].second) * sizeof(ZRange);
     return n;
 }
 
 std::vector<ZRange> MinMaxPyramid::flattened() const
 {
     std::vector<ZRange> all;
-    for (const auto &level : levels_)
-        all.insert(all.end(), level.begin(), level.end());
+    all.reserve(size_t(bytes() / sizeof(ZRange)));
+    for (int level = 0; level < levels(); ++level)
+        for (int y = 0; y < rows(level); ++y)
+            for (int x = 0; x < cols(level); ++x)
+                all.push_back(node(level, x, y));
     return all;
 }
 

@@ -9,6 +9,7 @@
 #define SBRT_MINMAX_PYRAMID_HPP
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "model/model.hpp"
@@ -26,25 +27,37 @@ public:
     /// material index; empty: none) left out; `narrow(x, y, range)` may
     /// narrow or empty a cell's range (cells cut away by clip planes,
     /// cells with overlays).
+    /// A paged model's level 0 is its column ranges, shared, not copied,
+    /// where nothing is hidden and `narrow` changes no cell.
     template <typename Narrow>
     MinMaxPyramid(const Model &model, const Narrow &narrow,
                   const std::vector<uint8_t> &hidden = {})
     {
-        std::vector<ZRange> cells = cell_ranges(model, hidden);
         const Frame &f = model.frame();
+        if (model.is_paged() && hidden.empty() &&
+            narrows_none(f, model.pages()->column_ranges(), narrow)) {
+            shared_base_ = model.pages()->shared_column_ranges();
+            build(f.cols, f.rows, {});
+            return;
+        }
+        std::vector<ZRange> cells = cell_ranges(model, hidden);
         for (int y = 0; y < f.rows; ++y)
             for (int x = 0; x < f.cols; ++x)
                 narrow(x, y, cells[size_t(y) * f.cols + x]);
         build(f.cols, f.rows, std::move(cells));
     }
 
-    int levels() const { return int(levels_.size()); }
+    int levels() const { return int(dims_.size()); }
     int cols(int level) const { return dims_[level].first; }
     int rows(int level) const { return dims_[level].second; }
     const ZRange &node(int level, int x, int y) const
     {
+        if (level == 0 && shared_base_) // row by row from the north
+            return (*shared_base_)[size_t(dims_[0].second - 1 - y) * dims_[0].first + x];
         return levels_[level][size_t(y) * dims_[level].first + x];
     }
+    /// Whether level 0 is a paged model's column ranges, shared.
+    bool shares_column_ranges() const { return shared_base_ != nullptr; }
     /// Cells (level 0) with nothing to draw.
     uint64_t empty_cells() const;
     /// Bytes of all levels (as a GPU buffer would hold them).
@@ -57,9 +70,29 @@ private:
     /// `hidden`): from the bottom of the lowest to the top of the highest.
     static std::vector<ZRange> cell_ranges(const Model &model,
                                            const std::vector<uint8_t> &hidden);
+    /// Whether `narrow` leaves every cell of `ranges` (row by row from the
+    /// north) as it is.
+    template <typename Narrow>
+    static bool narrows_none(const Frame &f, const std::vector<ZRange> &ranges,
+                             const Narrow &narrow)
+    {
+        for (int y = 0; y < f.rows; ++y)
+            for (int x = 0; x < f.cols; ++x) {
+                const ZRange &cell = ranges[size_t(f.rows - 1 - y) * f.cols + x];
+                ZRange narrowed = cell;
+                narrow(x, y, narrowed);
+                if (narrowed.low != cell.low || narrowed.high != cell.high)
+                    return false;
+            }
+        return true;
+    }
+    /// Level 0 from `cells` (y from the south), or the shared base where
+    /// `cells` is empty; then the levels above it.
     void build(int cols, int rows, std::vector<ZRange> cells);
 
+    /// levels_[0] is empty where level 0 is shared_base_
     std::vector<std::vector<ZRange>> levels_;
+    std::shared_ptr<const std::vector<ZRange>> shared_base_;
     std::vector<std::pair<int, int>> dims_;
 };
 
