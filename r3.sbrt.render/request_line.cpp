@@ -41,6 +41,11 @@ uint64_t view_server_memory()
 
 } // namespace
 
+RequestLineReader::RequestLineReader(const OptionTable &options)
+    : options_(options), default_memory_(view_server_memory())
+{
+}
+
 RequestLine RequestLineReader::read(const std::string &line)
 {
     if (line.find('\0') != std::string::npos)
@@ -92,6 +97,6 @@ RequestLine RequestLineReader::read(const std::string &line)
                       "view server"));
     out.request = std::move(*parsed.request);
     if (!gives_memory(words))
-        out.request.memory_bytes = view_server_memory();
+        out.request.memory_bytes = default_memory_;
     return out;
 }

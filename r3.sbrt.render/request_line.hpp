@@ -10,6 +10,7 @@
 #ifndef R3_SBRT_REQUEST_LINE_HPP
 #define R3_SBRT_REQUEST_LINE_HPP
 
+#include <cstdint>
 #include <string>
 
 #include "render_options.hpp"
@@ -25,7 +26,10 @@ struct RequestLine {
 /// GRASS's parser state is written: each line is parsed as words).
 class RequestLineReader {
 public:
-    explicit RequestLineReader(const OptionTable &options) : options_(options) {}
+    /// memory= of a request that gives none is found here, once: it is
+    /// part of the model's key, and the memory available changes as the
+    /// server holds blocks (found again each line, it reread the model).
+    explicit RequestLineReader(const OptionTable &options);
 
     /// The request of `line` (its end of line taken off); throws
     /// sbrt::Error naming what is wrong: a NUL byte, an empty line, an
@@ -37,6 +41,7 @@ public:
 
 private:
     const OptionTable &options_;
+    uint64_t default_memory_;
 };
 
 #endif
