@@ -21,7 +21,9 @@ void InputPart::define(OptionTable &table)
         "input", _("Name of the SBRT to render (from r3.sbrt.convert)")));
     Option *memory = table.add(sbrt_grass::define_memory());
     memory->description = _("Maximum memory to be used (in MB) for the model's decoded "
-                            "blocks, where the CPU decodes them as its rays reach them");
+                            "blocks, where the CPU decodes them as its rays reach them "
+                            "(default: 300; a model that needs more is then decoded whole)");
+    memory->answer = nullptr; // given or not: the default gives way, a value does not
     memory->guisection = _("Settings");
 }
 
@@ -31,15 +33,16 @@ void InputPart::read(const Answers &a)
     if (input.empty())
         bad_request(_("the request names no input="));
     check_map_name("input", input);
-    const std::string memory = a.text("memory", "300");
-    memory_bytes = sbrt_grass::memory_bytes_of(memory.c_str());
+    const std::string memory = a.text("memory");
+    memory_given = !memory.empty();
+    memory_bytes = memory_given ? sbrt_grass::memory_bytes_of(memory.c_str()) : DEFAULT_MEMORY;
     if (!memory_bytes)
         bad_request(_("memory=%s is not a number of MB of at least 1"), memory.c_str());
 }
 
 std::string InputPart::key() const
 {
-    return input + '\n' + std::to_string(memory_bytes);
+    return input + '\n' + std::to_string(memory_bytes) + (memory_given ? " given" : "");
 }
 
 void ColorsPart::define(OptionTable &table)

@@ -17,8 +17,11 @@ struct RenderRequest;
 /// \brief input=: the SBRT to render; memory=: the most its decoded blocks
 /// take where the CPU reads them as rays reach them (a paged model).
 struct InputPart {
+    static constexpr uint64_t DEFAULT_MEMORY = uint64_t(300) << 20; ///< GRASS's 300 MB
     std::string input;
-    uint64_t memory_bytes = uint64_t(300) << 20;
+    uint64_t memory_bytes = DEFAULT_MEMORY;
+    /// memory= given: a model that needs more is refused, not decoded whole
+    bool memory_given = false;
 
     static void define(OptionTable &table);
     void read(const Answers &answers);

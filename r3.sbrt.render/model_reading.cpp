@@ -48,7 +48,14 @@ std::optional<sbrt::Model> read_paged_model(const RenderRequest &request)
         sbrt::block_budget(*summary, paging);
     }
     catch (const sbrt::Error &e) {
-        bad_request(_("SBRT <%s>: %s"), request.input.c_str(), e.what());
+        if (request.memory_given)
+            bad_request(_("SBRT <%s>: %s"), request.input.c_str(), e.what());
+        // the default gives way: the model decoded whole, as before paging
+        G_verbose_message(_("SBRT <%s> is decoded whole: paged, it needs more than the "
+                            "default memory=%.0f MB (%s)"),
+                          request.input.c_str(), double(request.memory_bytes) / (1 << 20),
+                          e.what());
+        return std::nullopt;
     }
     std::optional<sbrt::Model> model =
         sbrt_grass::read_sbrt_paged_map(request.input.c_str(), paging);

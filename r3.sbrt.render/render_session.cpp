@@ -38,7 +38,9 @@ std::string model_key(const RenderRequest &request, const struct Cell_head &regi
     // (detail= is not in it: the session keeps a level of each detail)
     if (reads_pages(request))
         key << "\npaged";
-    if (sees_only_the_region(request) && !reads_pages(request))
+    // (a paged read may fall back to the region's blocks: an SBRT with
+    // channels or older than 2.1)
+    if (sees_only_the_region(request))
         key << region.north << ' ' << region.south << ' ' << region.east << ' '
             << region.west;
     return key.str();

@@ -20,15 +20,6 @@ namespace {
 const char *const OUTPUT_KEYS[] = {"output", "material", "hit_elevation", "depth", "value", "png",
                                    "strds", "video"};
 
-/// Whether the request's words give memory=.
-bool gives_memory(const std::vector<std::string> &words)
-{
-    for (const std::string &word : words)
-        if (word.compare(0, 7, "memory=") == 0)
-            return true;
-    return false;
-}
-
 /// memory= of a request that gives none: frames follow one another, and a
 /// budget below the blocks they reach decodes those again for every frame
 /// (a national model's orbit frames took 3 times as long within 300 MB).
@@ -96,7 +87,7 @@ RequestLine RequestLineReader::read(const std::string &line)
         bad_request(_("frames=, tile= and rules=- are for the command line, not the "
                       "view server"));
     out.request = std::move(*parsed.request);
-    if (!gives_memory(words))
+    if (!out.request.memory_given)
         out.request.memory_bytes = default_memory_;
     return out;
 }

@@ -17,6 +17,14 @@ namespace sbrt {
 
 namespace {
 
+/// `size`, where it is a block size (at least 1).
+int checked_block_size(int size)
+{
+    if (size < 1)
+        fail("StackPages: the block size must be positive");
+    return size;
+}
+
 double mib(uint64_t bytes)
 {
     return std::ceil(double(bytes) / (1 << 20) * 10) / 10;
@@ -27,14 +35,12 @@ double mib(uint64_t bytes)
 StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
                        uint64_t budget_bytes, const char *budget_name, unsigned threads,
                        std::vector<ZRange> ranges)
-    : rows_(frame.rows), cols_(frame.cols), size_(block_size),
+    : rows_(frame.rows), cols_(frame.cols), size_(checked_block_size(block_size)),
       block_rows_((frame.rows + block_size - 1) / block_size),
       block_cols_((frame.cols + block_size - 1) / block_size), decode_(std::move(decode)),
       budget_(budget_bytes), budget_name_(budget_name),
       slots_(size_t(block_rows_) * size_t(block_cols_))
 {
-    if (block_size < 1)
-        fail("StackPages: the block size must be positive");
     if (!ranges.empty()) { // stored beside the stacks
         if (ranges.size() != frame.cells())
             fail("StackPages: ", ranges.size(), " column ranges for ", frame.cells(),
