@@ -150,29 +150,11 @@ class TestHostileRequests(TestCase):
         self.assertIn("too large", err)
         self.assertNotIn("must differ", err)
 
-
-class TestServerReadsTheModelOnce(TestCase):
-    """Frames of one model read it once: the memory= a request without one
-    gets (a share of the memory available, which the blocks held change)
-    is found once a server, not per line, so it keeps the model's key."""
-
-    @classmethod
-    def setUpClass(cls):
-        cls.use_temp_region()
-        cls.runModule("g.region", n=20, s=0, e=30, w=0, b=0, t=8, res=1,
-                      res3=1, tbres=1)
-        cls.runModule("r3.mapcalc", overwrite=True,
-                      expression="once_layers = if(depth() <= 3, 1, 2)")
-        gs.run_command("r3.sbrt.convert", input="once_layers", output="once_model",
-                       overwrite=True, quiet=True)
-
-    @classmethod
-    def tearDownClass(cls):
-        gs.run_command("r3.sbrt.manage", remove="once_model", flags="f", quiet=True)
-        cls.runModule("g.remove", flags="f", type="raster_3d", name="once_layers")
-        cls.del_temp_region()
-
     def test_frames_read_the_model_once(self):
+        """Frames of one model read it once: the memory= a request without
+        one gets (a share of the memory available, which the blocks held
+        change) is found once a server, not per line, so it keeps the
+        model's key."""
         handle, log = tempfile.mkstemp(suffix=".log")
         os.close(handle)
         verbose = os.environ.get("GRASS_VERBOSE")
@@ -182,7 +164,7 @@ class TestServerReadsTheModelOnce(TestCase):
                 server = RawServer(LIMIT, stderr=err)
                 try:
                     for azimuth in (10, 70, 130):
-                        head = server.ask(("render input=once_model backend=cpu "
+                        head = server.ask(("render input=req_model backend=cpu "
                                            "size=32,24 azimuth=%d\n" % azimuth).encode())
                         self.assertTrue(head.startswith("frame 32 24 "), head)
                 finally:
@@ -195,7 +177,7 @@ class TestServerReadsTheModelOnce(TestCase):
         with open(log, encoding="utf-8", errors="replace") as f:
             text = f.read()
         os.remove(log)
-        self.assertEqual(text.count("SBRT <once_model> paged"), 1, text)
+        self.assertEqual(text.count("SBRT <req_model> paged"), 1, text)
 
 
 if __name__ == "__main__":
