@@ -351,20 +351,15 @@ std::optional<Model> read_sbrt_paged(const std::string &directory, const Paging 
     const std::string stacks_path = dir.member_path("stacks");
     const auto file =
         std::make_shared<const MappedFile>(dir.open_regular("stacks"), stacks_path);
-    // each column's range, where stored for these stacks
-    std::vector<ZRange> ranges;
+    std::vector<uint8_t> member_bytes;
+    StoredRanges stored;
     if (const auto member = dir.open_regular_if_present("ranges")) {
-        const std::string path = dir.member_path("ranges");
-        const std::vector<uint8_t> bytes = read_all(*member, path);
-        if (stacks_major_version(file->data(), file->size()) == FORMAT_V2_MAJOR) {
-            const HeaderV2 h = open_stacks_v2(file->data(), file->size(), stacks_path).header;
-            if (auto stored = decode_column_ranges(bytes.data(), bytes.size(), path, h.frame,
-                                                   stamp_of(h)))
-                ranges = std::move(*stored);
-        }
+        stored.what = dir.member_path("ranges");
+        member_bytes = read_all(*member, stored.what);
+        stored.bytes = &member_bytes;
     }
-    std::optional<Model> model = open_paged_model(file->data(), file->size(), stacks_path,
-                                                  file, paging, std::move(ranges));
+    std::optional<Model> model =
+        open_paged_model(file->data(), file->size(), stacks_path, file, paging, stored);
     if (!model)
         return std::nullopt;
     std::string datum;

@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "format/paged_stacks.hpp"
 
+#include "format/column_ranges_file.hpp"
+
 #include "format/block_summary.hpp"
 #include "format/stacks_fields.hpp"
 
@@ -35,15 +37,22 @@ uint64_t block_budget(const ModelSummary &summary, const Paging &paging)
 std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
                                       const std::string &what,
                                       std::shared_ptr<const void> keep, const Paging &paging,
-                                      std::vector<ZRange> ranges)
+                                      const StoredRanges &stored)
 {
     if (stacks_major_version(data, size) != FORMAT_V2_MAJOR)
         return std::nullopt;
+    auto layout = std::make_shared<const StacksV2Layout>(open_stacks_v2(data, size, what));
+    // each column's range, where a member made from these stacks holds it
+    std::vector<ZRange> ranges;
+    if (stored.bytes)
+        if (auto decoded = decode_column_ranges(stored.bytes->data(), stored.bytes->size(),
+                                                stored.what, layout->header.frame,
+                                                stamp_of(layout->header)))
+            ranges = std::move(*decoded);
     std::optional<ModelSummary> summary = read_stacks_summary(data, size, what);
     if (!summary)
         return std::nullopt;
     const uint64_t blocks_budget = block_budget(*summary, paging);
-    auto layout = std::make_shared<const StacksV2Layout>(open_stacks_v2(data, size, what));
     auto decode = [data, layout, what, keep = std::move(keep)](int block) {
         return decode_stack_block(data, *layout, block, what);
     };

@@ -43,16 +43,22 @@ uint64_t block_budget(const ModelSummary &summary, const Paging &paging);
 StackBlock decode_stack_block(const uint8_t *data, const StacksV2Layout &layout, int block,
                               const std::string &what);
 
+/// \brief The bytes of an SBRT's `ranges` member, where it has one.
+struct StoredRanges {
+    const std::vector<uint8_t> *bytes = nullptr;
+    std::string what; ///< the member's name in errors
+};
+
 /// The paged model of untrusted stacks bytes that `keep` holds in memory:
 /// nothing where they are not format 2.1 with block summaries (decode
 /// them whole instead). Each column's range of material (for the
-/// empty-space pyramid and the framing) is `ranges` where given (the
-/// SBRT's `ranges` member), else every block is read once on opening;
-/// blocks stay held within the budget.
+/// empty-space pyramid and the framing) is read from `stored` where it
+/// was made from these stacks (a damaged member throws), else from every
+/// block once on opening; blocks stay held within the budget.
 std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
                                       const std::string &what,
                                       std::shared_ptr<const void> keep, const Paging &paging,
-                                      std::vector<ZRange> ranges = {});
+                                      const StoredRanges &stored = {});
 
 } // namespace sbrt
 
