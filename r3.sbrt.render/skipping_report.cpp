@@ -51,8 +51,9 @@ void report_pruning(const sbrt::Pruning &pruning, size_t planes)
 
 void report_pyramid(const sbrt::MinMaxPyramid &p, const sbrt::Model &m)
 {
-    if (!p.levels())
-        return; // skipping off, or only overlays drawn
+    if (!p.levels() || G_verbose() <= G_verbose_std())
+        return; // skipping off, or only overlays drawn; or not --verbose
+                // (counting the empty cells walks the grid)
     // a paged model's, from its summaries (held decoded: only those reached)
     const uint64_t intervals = m.is_paged() ? m.stats().intervals : m.intervals().size();
     const uint64_t bytes = m.is_paged() ? m.stats().interval_bytes

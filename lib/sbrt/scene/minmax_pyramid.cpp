@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+#include "util/parallel.hpp"
+
 namespace sbrt {
 
 std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model,
@@ -58,15 +60,24 @@ void MinMaxPyramid::build(int cols, int rows, std::vector<ZRange> cells)
         const int level = int(dims_.size()) - 1;
         const int up_cols = (cols + 1) / 2, up_rows = (rows + 1) / 2;
         std::vector<ZRange> up(size_t(up_cols) * up_rows);
-        for (int y = 0; y < rows; ++y)
-            for (int x = 0; x < cols; ++x) {
-                const ZRange &c = node(level, x, y);
-                if (c.empty())
-                    continue;
-                ZRange &n = up[size_t(y / 2) * up_cols + x / 2];
-                n = n.empty() ? c
-                              : ZRange{std::min(n.low, c.low), std::max(n.high, c.high)};
+        // each node of the level above from the two rows below it, the
+        // rows of nodes on all cores (a national model's level 0 is 7.4
+        // million cells, walked on every opening)
+        const unsigned threads = size_t(cols) * size_t(rows) < (size_t(1) << 16) ? 1 : 0;
+        for_each_row(up_rows, threads, [&](int up_y) {
+            ZRange *out = up.data() + size_t(up_y) * up_cols;
+            for (int y = 2 * up_y; y < std::min(rows, 2 * up_y + 2); ++y) {
+                const ZRange *in = &node(level, 0, y);
+                for (int x = 0; x < cols; ++x) {
+                    const ZRange &c = in[x];
+                    if (c.empty())
+                        continue;
+                    ZRange &n = out[x / 2];
+                    n = n.empty() ? c
+                                  : ZRange{std::min(n.low, c.low), std::max(n.high, c.high)};
+                }
             }
+        });
         levels_.push_back(std::move(up));
         dims_.push_back({up_cols, up_rows});
         cols = up_cols;
@@ -79,9 +90,11 @@ uint64_t MinMaxPyramid::empty_cells() const
     if (dims_.empty())
         return 0;
     uint64_t n = 0;
-    for (int y = 0; y < rows(0); ++y)
+    for (int y = 0; y < rows(0); ++y) {
+        const ZRange *row = &node(0, 0, y);
         for (int x = 0; x < cols(0); ++x)
-            n += node(0, x, y).empty();
+            n += row[x].empty();
+    }
     return n;
 }
 

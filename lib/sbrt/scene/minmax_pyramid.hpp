@@ -17,6 +17,13 @@
 
 namespace sbrt {
 
+/// \brief The `narrow` of a pyramid that leaves every cell as its stack
+/// has it (no clip plane, no overlay): level 0 is then not walked to
+/// find that out.
+struct KeepEveryCell {
+    void operator()(int, int, ZRange &) const {}
+};
+
 /// \brief Level 0 is the grid (x from the west, y from the south, as the
 /// tracer's local frame); level L + 1 halves level L in x and y (rounding
 /// up) down to one node. Built in time linear in the intervals.
@@ -36,6 +43,7 @@ public:
         const Frame &f = model.frame();
         if (model.is_paged() && hidden.empty() &&
             narrows_none(f, model.pages()->column_ranges(), narrow)) {
+            // (for KeepEveryCell, the overload below answers at once)
             shared_base_ = model.pages()->shared_column_ranges();
             build(f.cols, f.rows, {});
             return;
@@ -84,6 +92,10 @@ private:
                 if (narrowed.low != cell.low || narrowed.high != cell.high)
                     return false;
             }
+        return true;
+    }
+    static bool narrows_none(const Frame &, const std::vector<ZRange> &, const KeepEveryCell &)
+    {
         return true;
     }
     /// Level 0 from `cells` (y from the south), or the shared base where

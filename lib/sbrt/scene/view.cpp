@@ -115,12 +115,20 @@ std::vector<glm::dvec3> framing_hull(const Model &model, const CoordinateFrame &
     const Frame &f = model.frame();
     const int blocks_x = std::min(8, f.cols), blocks_y = std::min(8, f.rows);
     std::vector<double> top(size_t(blocks_x * blocks_y), -HUGE_VAL);
+    // each block's columns are a run of the row: the highest of each run
+    std::vector<int> run_end(static_cast<size_t>(blocks_x));
+    for (int bx = 0; bx < blocks_x; ++bx) // the first col with col * blocks_x / cols > bx
+        run_end[size_t(bx)] = int(((int64_t(bx) + 1) * f.cols + blocks_x - 1) / blocks_x);
     for (int row = 0; row < f.rows; ++row) {
         // row 0 is the north edge
         const int by = (f.rows - 1 - row) * blocks_y / f.rows;
-        for (int col = 0; col < f.cols; ++col) {
-            double &t = top[size_t(by * blocks_x + col * blocks_x / f.cols)];
-            t = std::max(t, model.stack_top(model.cell_index(row, col)));
+        const uint64_t first = model.cell_index(row, 0);
+        for (int bx = 0, col = 0; bx < blocks_x; ++bx) {
+            double highest = -HUGE_VAL;
+            for (; col < run_end[size_t(bx)]; ++col)
+                highest = std::max(highest, model.stack_top(first + uint64_t(col)));
+            double &t = top[size_t(by * blocks_x + bx)];
+            t = std::max(t, highest);
         }
     }
     std::vector<glm::dvec3> points;

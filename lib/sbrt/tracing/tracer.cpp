@@ -146,6 +146,10 @@ void Tracer::build_pyramid()
             }
         }
     };
+    if (overlay_items_.empty() && planes_.empty()) {
+        pyramid_ = MinMaxPyramid(model_, KeepEveryCell(), scene_.hidden);
+        return;
+    }
     pyramid_ = MinMaxPyramid(model_, [&](int x, int y, ZRange &range) {
         const uint64_t cell = model_.cell_index(f.rows - 1 - y, x);
         if (!overlay_items_.empty() &&
