@@ -12,6 +12,9 @@ extern "C" {
 #include "request_error.hpp"
 #include "sbrt_store.hpp"
 #include "gl_context.hpp"
+#include "scene_camera.hpp"
+#include "util/available_memory.hpp"
+#include "util/parallel.hpp"
 
 bool sees_only_the_region(const RenderRequest &request)
 {
@@ -35,15 +38,21 @@ namespace {
 
 /// The paged model of the request's input, or nothing where its stacks
 /// are older than format 2.1 or it has property channels.
-std::optional<sbrt::Model> read_paged_model(const RenderRequest &request)
+std::optional<sbrt::Model> read_paged_model(const RenderRequest &request,
+                                            const struct Cell_head &region)
 {
-    sbrt::Paging paging;
-    paging.budget_bytes = request.memory_bytes;
-    paging.threads = unsigned(request.threads > 0 ? request.threads : 0);
     const std::optional<sbrt::ModelSummary> summary =
         sbrt_grass::read_sbrt_summary_map(request.input.c_str());
     if (!summary || summary->has_channels) // channels lie along whole columns
         return std::nullopt;
+    sbrt::Paging paging;
+    paging.budget_bytes = request.memory_bytes;
+    paging.threads = unsigned(request.threads > 0 ? request.threads : 0);
+    // memory= bounds the process: beside the model it holds itself (code,
+    // GRASS), the image's buffers, and a block each tracing thread may
+    // still read after the cache dropped it
+    paging.reserved_bytes = uint64_t(sbrt::resident_memory() + image_memory(request, region)) +
+                            sbrt::thread_count(paging.threads) * summary->largest_decoded_block();
     try {
         sbrt::block_budget(*summary, paging);
     }
@@ -72,7 +81,7 @@ std::optional<sbrt::Model> read_paged_model(const RenderRequest &request)
 sbrt::Model read_model(const RenderRequest &request, const struct Cell_head &region)
 {
     if (reads_pages(request))
-        if (std::optional<sbrt::Model> model = read_paged_model(request))
+        if (std::optional<sbrt::Model> model = read_paged_model(request, region))
             return std::move(*model);
     sbrt::ReadOptions options;
     sbrt::ReadReport report;

@@ -14,14 +14,30 @@
 #include "image_memory.hpp"
 
 
-void check_image_fits(const RenderRequest &request, int rows, int cols)
+namespace {
+
+sbrt::ImageNeeds image_needs(const RenderRequest &request)
 {
     sbrt::ImageNeeds needs;
     needs.kernel_normals = request.normals == sbrt::Normals::kernel;
     // an annotated PNG is drawn on the whole image (a plain one streams)
     if (!request.png.empty() && request.annotate && !request.tile)
         needs.whole_image_bytes_per_pixel = 3;
-    sbrt::check_image_fits(rows, cols, needs);
+    return needs;
+}
+
+} // namespace
+
+void check_image_fits(const RenderRequest &request, int rows, int cols)
+{
+    sbrt::check_image_fits(rows, cols, image_needs(request));
+}
+
+double image_memory(const RenderRequest &request, const struct Cell_head &region)
+{
+    const bool top = request.view.kind == sbrt::ViewKind::top;
+    return sbrt::image_bytes(top ? region.rows : request.height,
+                             top ? region.cols : request.width, image_needs(request));
 }
 
 sbrt::Camera make_camera(const RenderRequest &r, const sbrt::Model &model,

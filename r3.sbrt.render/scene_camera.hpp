@@ -14,6 +14,10 @@
 /// machine's available memory (sbrt::check_image_fits: the streamed bands,
 /// the kernel's window, an annotated PNG's whole image).
 void check_image_fits(const RenderRequest &request, int rows, int cols);
+/// Bytes the image of `request` takes while it is rendered (as
+/// check_image_fits counts them): size= pixels, or for view=top the cells
+/// of `region`.
+double image_memory(const RenderRequest &request, const struct Cell_head &region);
 
 /// Camera of the request: size= pixels, or for view=top one pixel per
 /// cell of the current region.

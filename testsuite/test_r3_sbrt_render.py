@@ -7,6 +7,7 @@ COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import glob
 import os
+import re
 import subprocess
 
 from grass.gunittest.case import TestCase
@@ -540,6 +541,26 @@ class TestRenderReadsOnlyTheRegion(TestCase):
         self.assertIn("SBRT <blocks> paged: its 12 blocks", stderr)
         self.assertIn("Paged model: 2 of the 12 blocks decoded", stderr)
         self.assertRastersNoDifference("rw_part_d", "rw_whole_d", precision=1e-9)
+
+    def test_memory_bounds_the_process(self):
+        # memory= holds the process itself (its code, GRASS, the image's
+        # buffers) beside the model's blocks: 1 MB is refused, with the
+        # least that works, and no map is written; that least renders
+        self.runModule("g.region", n=1300, s=890, e=910, w=500, res=10)
+        args = ["r3.sbrt.render", "--o", "input=blocks", "output=rw_mem", "view=top",
+                "backend=cpu", "material=rw_mem_m"]
+        run = subprocess.run(args + ["memory=1"], capture_output=True, text=True)
+        self.assertNotEqual(run.returncode, 0)
+        error = " ".join(run.stderr.split())
+        self.assertIn("this process beside the model", error)
+        least = re.search(r"give memory= at least (\d+)", error)
+        self.assertTrue(least, error)
+        self.assertRasterDoesNotExist("rw_mem_m")
+        # (the process is not measured at the same moment: some room)
+        run = subprocess.run(args + ["memory=%d" % (int(least.group(1)) + 20)],
+                             capture_output=True, text=True)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertRastersNoDifference("rw_mem_m", "rw_whole_m", precision=0)
 
 
 if __name__ == "__main__":

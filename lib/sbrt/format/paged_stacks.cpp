@@ -5,6 +5,8 @@
  ****************************************************************************/
 #include "format/paged_stacks.hpp"
 
+#include <string>
+
 #include "format/column_ranges_file.hpp"
 
 #include "format/block_summary.hpp"
@@ -21,17 +23,21 @@ uint64_t skipping_bytes(const Frame &frame)
 
 uint64_t block_budget(const ModelSummary &summary, const Paging &paging)
 {
-    const uint64_t skipping = skipping_bytes(summary.frame);
+    const uint64_t skipping = paging.column_ranges ? skipping_bytes(summary.frame) : 0;
     const uint64_t block = summary.largest_decoded_block();
-    if (paging.budget_bytes < skipping + block) {
-        const uint64_t mb = ((skipping + block) >> 20) + 1;
+    const uint64_t held = skipping + paging.reserved_bytes;
+    if (paging.budget_bytes < held + block) {
+        const auto mb = [](uint64_t bytes) { return (bytes >> 20) + 1; };
         fail("a memory budget (", paging.budget_name, ") of ", paging.budget_bytes >> 20,
-             " MB is less than the ", mb, " MB this model needs at least (each column's "
-             "range and the empty-space pyramid over them, ", (skipping >> 20) + 1,
-             " MB; its largest block decoded, ", (block >> 20) + 1, " MB): give ",
-             paging.budget_name, " at least ", mb);
+             " MB is less than the ", mb(held + block), " MB this model needs at least (",
+             skipping ? "each column's range and the empty-space pyramid over them, " : "",
+             skipping ? std::to_string(mb(skipping)) + " MB; " : "",
+             "its largest block decoded, ", mb(block), " MB",
+             paging.reserved_bytes ? "; this process beside the model, " : "",
+             paging.reserved_bytes ? std::to_string(mb(paging.reserved_bytes)) + " MB" : "",
+             "): give ", paging.budget_name, " at least ", mb(held + block));
     }
-    return paging.budget_bytes - skipping;
+    return paging.budget_bytes - held;
 }
 
 std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
@@ -44,7 +50,7 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     auto layout = std::make_shared<const StacksV2Layout>(open_stacks_v2(data, size, what));
     // each column's range, where a member made from these stacks holds it
     std::vector<ZRange> ranges;
-    if (stored.bytes)
+    if (stored.bytes && paging.column_ranges)
         if (auto decoded = decode_column_ranges(stored.bytes->data(), stored.bytes->size(),
                                                 stored.what, layout->header.frame,
                                                 stamp_of(layout->header)))
@@ -59,7 +65,7 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     auto pages = std::make_shared<const StackPages>(summary->frame, int(layout->grid.size),
                                                     std::move(decode), blocks_budget,
                                                     paging.budget_name, paging.threads,
-                                                    std::move(ranges));
+                                                    std::move(ranges), paging.column_ranges);
     return Model(summary->frame, std::move(summary->materials), std::move(pages),
                  summary->stats);
 }

@@ -24,18 +24,28 @@ namespace sbrt {
 /// \brief How a paged model holds its blocks.
 struct Paging {
     /// the most the model takes: decoded blocks, each column's range and
-    /// the empty-space pyramid over them
+    /// the empty-space pyramid over them, and `reserved_bytes`
     uint64_t budget_bytes = 0;
+    /// of the budget, what the caller holds beside the model (the process
+    /// itself, its images, blocks dropped while a thread still reads
+    /// them): not for blocks
+    uint64_t reserved_bytes = 0;
     const char *budget_name = "memory="; ///< the option that sets it, for errors
     unsigned threads = 0;               ///< of the first pass; 0: all cores
+    /// whether each column's range is read (the tracer's empty-space
+    /// skipping and framing need them; a reader of single columns, such
+    /// as a virtual borehole, does not: nothing is read for them)
+    bool column_ranges = true;
 };
 
 /// Bytes of a paged model's column ranges and empty-space pyramid over
 /// `frame` (what its budget holds beside the blocks).
 uint64_t skipping_bytes(const Frame &frame);
 /// The bytes left for decoded blocks where the budget of `paging` holds
-/// the model's column ranges and pyramid too; throws sbrt::Error, saying
-/// what to give, where that leaves less than its largest block decoded.
+/// the model's column ranges and pyramid (where read) and the reserved
+/// bytes too;
+/// throws sbrt::Error, saying what to give, where that leaves less than
+/// its largest block decoded.
 uint64_t block_budget(const ModelSummary &summary, const Paging &paging);
 
 /// Block `block` of the opened file `data`, decompressed, its checksum,

@@ -90,21 +90,13 @@ void Model::fail_paged()
 
 std::vector<Interval> Model::stack_intervals(uint64_t cell) const
 {
-    if (pages_) {
-        const int row = int(cell / uint64_t(frame_.cols));
-        const int col = int(cell % uint64_t(frame_.cols));
-        const auto block = pages_->block(pages_->block_of(row, col));
-        const StackRange stack = block->range(row, col);
-        std::vector<Interval> out(stack.size());
-        for (uint64_t i = stack.begin; i < stack.end; ++i)
-            out[i - stack.begin] = block->intervals[i];
+    return visit_stack(cell, [](const auto *first, const auto *last) {
+        std::vector<Interval> out;
+        out.reserve(size_t(last - first));
+        for (const auto *r = first; r != last; ++r)
+            out.push_back({r->material, float(r->top)});
         return out;
-    }
-    const StackRange stack = index_.range(cell);
-    std::vector<Interval> out(stack.size());
-    for (uint64_t i = stack.begin; i < stack.end; ++i)
-        out[i - stack.begin] = intervals_[i];
-    return out;
+    });
 }
 
 int64_t Model::find_material(int32_t id) const

@@ -122,17 +122,38 @@ public:
     uint64_t stack_begin(uint64_t cell) const { return stack(cell).begin; }
     uint64_t stack_end(uint64_t cell) const { return stack(cell).end; }
     uint32_t stack_size(uint64_t cell) const { return whole(), index_.size(cell); }
-    /// The top (local height) of the stack of `cell`, or a negative number
-    /// where it is empty (no stack ends EMPTY): a paged model's stored
-    /// column ranges say it without decoding.
-    double stack_top(uint64_t cell) const
+    /// visit(first, last) over the records of the stack of `cell` (bottom
+    /// up, typed as held), its result returned: a model decoded whole, or
+    /// a paged one (its block decoded where it is not held; code that is
+    /// not hot, where a pin per block is not worth keeping).
+    template <typename Visit>
+    auto visit_stack(uint64_t cell, const Visit &visit) const
     {
         if (pages_) {
+            const int row = int(cell / uint64_t(frame_.cols));
+            const int col = int(cell % uint64_t(frame_.cols));
+            const std::shared_ptr<const StackBlock> block =
+                pages_->block(pages_->block_of(row, col));
+            const StackRange s = block->range(row, col);
+            return block->intervals.visit(
+                [&](const auto *records) { return visit(records + s.begin, records + s.end); });
+        }
+        const StackRange s = index_.range(cell);
+        return intervals_.visit(
+            [&](const auto *records) { return visit(records + s.begin, records + s.end); });
+    }
+    /// The top (local height) of the stack of `cell`, or a negative number
+    /// where it is empty (no stack ends EMPTY): a paged model's stored
+    /// column ranges say it without decoding, where it holds them.
+    double stack_top(uint64_t cell) const
+    {
+        if (pages_ && pages_->has_column_ranges()) {
             const ZRange &range = pages_->column_ranges()[cell];
             return range.empty() ? -1.0 : double(range.high);
         }
-        const StackRange s = index_.range(cell);
-        return s.size() ? double(intervals_[s.end - 1].top) : -1.0;
+        return visit_stack(cell, [](const auto *first, const auto *last) {
+            return first != last ? double((last - 1)->top) : -1.0;
+        });
     }
     /// The intervals of one stack, widened (for code that is not hot).
     std::vector<Interval> stack_intervals(uint64_t cell) const;

@@ -34,7 +34,7 @@ double mib(uint64_t bytes)
 
 StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
                        uint64_t budget_bytes, const char *budget_name, unsigned threads,
-                       std::vector<ZRange> ranges)
+                       std::vector<ZRange> ranges, bool ranges_needed)
     : rows_(frame.rows), cols_(frame.cols), size_(checked_block_size(block_size)),
       block_rows_((frame.rows + block_size - 1) / block_size),
       block_cols_((frame.cols + block_size - 1) / block_size), decode_(std::move(decode)),
@@ -45,9 +45,13 @@ StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
         if (ranges.size() != frame.cells())
             fail("StackPages: ", ranges.size(), " column ranges for ", frame.cells(),
                  " cells");
-        for (const ZRange &range : ranges)
-            if (!range.empty())
-                highest_top_ = std::max(highest_top_, double(range.high));
+        float highest = 0;
+        for (const ZRange &range : ranges) // (branch-free: vectorised)
+            highest = std::max(highest, range.low <= range.high ? range.high : 0.0f);
+        highest_top_ = highest;
+    }
+    else if (!ranges_needed) {
+        return; // none held
     }
     else {
         // every block read once; those read first stay while they fit,
@@ -60,6 +64,12 @@ StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
         highest_top_ = *std::max_element(tops.begin(), tops.end());
     }
     ranges_ = std::make_shared<const std::vector<ZRange>>(std::move(ranges));
+}
+
+void StackPages::fail_no_ranges()
+{
+    fail("the paged model was opened without its column ranges (a reader of single "
+         "columns); the empty-space skipping and the framing need them");
 }
 
 void StackPages::for_each_block(unsigned threads,

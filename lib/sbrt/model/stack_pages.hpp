@@ -64,11 +64,13 @@ public:
 
     /// Blocks stay held up to `budget_bytes`. Each column's range of
     /// material is `ranges` where given (as stored beside the stacks), else
-    /// read from every block once (on `threads` threads, 0: all cores).
-    /// Throws sbrt::Error where a block alone takes more than the budget
-    /// (`budget_name` names the option that sets it).
+    /// read from every block once (on `threads` threads, 0: all cores),
+    /// unless `ranges_needed` is false (a reader of single columns: none
+    /// is then held). Throws sbrt::Error where a block alone takes more
+    /// than the budget (`budget_name` names the option that sets it).
     StackPages(const Frame &frame, int block_size, Decoder decode, uint64_t budget_bytes,
-               const char *budget_name, unsigned threads, std::vector<ZRange> ranges = {});
+               const char *budget_name, unsigned threads, std::vector<ZRange> ranges = {},
+               bool ranges_needed = true);
 
     int rows() const { return rows_; }
     int cols() const { return cols_; }
@@ -85,9 +87,17 @@ public:
     void for_each_block(unsigned threads,
                         const std::function<void(const StackBlock &)> &visit) const;
 
+    /// Whether each column's range is held (column_ranges()).
+    bool has_column_ranges() const { return ranges_ != nullptr; }
     /// Each cell's range of material (row by row, row 0 north; EMPTY left
-    /// out): MinMaxPyramid's cells without hidden strata.
-    const std::vector<ZRange> &column_ranges() const { return *ranges_; }
+    /// out): MinMaxPyramid's cells without hidden strata. Throws
+    /// sbrt::Error where they are not held.
+    const std::vector<ZRange> &column_ranges() const
+    {
+        if (!ranges_)
+            fail_no_ranges();
+        return *ranges_;
+    }
     /// The same, shared (a pyramid's level 0).
     std::shared_ptr<const std::vector<ZRange>> shared_column_ranges() const { return ranges_; }
     /// The highest top of any stack (local units), 0 where all are empty.
@@ -107,6 +117,7 @@ private:
     /// is passed; with `evict` false, only where it fits as it is.
     void hold(int b, std::shared_ptr<const StackBlock> block, bool evict) const;
     std::shared_ptr<const StackBlock> fetch(int b, bool evict) const;
+    [[noreturn]] static void fail_no_ranges();
 
     int rows_, cols_, size_, block_rows_, block_cols_;
     Decoder decode_;

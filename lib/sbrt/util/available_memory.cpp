@@ -58,4 +58,9 @@ double available_memory()
     return available;
 }
 
+double resident_memory()
+{
+    return field_of("/proc/self/status", "VmRSS:", 1024).value_or(0);
+}
+
 } // namespace sbrt

@@ -1,7 +1,8 @@
 /****************************************************************************
  * MODULE:    lib/sbrt (r3.sbrt addon)
  * PURPOSE:   The memory this process can still have, for the checks made
- *            before a large allocation (an import's grid, an image)
+ *            before a large allocation (an import's grid, an image), and
+ *            the memory it holds
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_AVAILABLE_MEMORY_HPP
@@ -14,6 +15,9 @@ namespace sbrt {
 /// maps, and its cgroup's memory.max less memory.current; 0 when none is
 /// known.
 double available_memory();
+
+/// Bytes of this process resident in memory now (VmRSS); 0 when not known.
+double resident_memory();
 
 } // namespace sbrt
 

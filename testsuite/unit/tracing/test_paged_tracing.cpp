@@ -140,6 +140,59 @@ TEST(PagedTracing, BudgetBelowOneBlockIsRefused)
     EXPECT_EQ(summary->largest_decoded_block(), c.largest_block());
 }
 
+TEST(PagedTracing, ColumnsAreReadWithoutTheirRanges)
+{
+    // a reader of single columns (a virtual borehole, a profile) opens
+    // the model without the column ranges: nothing is decoded on opening,
+    // and each stack read is the whole model's
+    const PagedCase c;
+    Paging paging;
+    paging.budget_bytes = 2 * c.largest_block(); // no room for ranges: none needed
+    paging.column_ranges = false;
+    const std::optional<Model> paged =
+        open_paged_model(c.bytes->data(), c.bytes->size(), "test stacks", c.bytes, paging);
+    ASSERT_TRUE(paged);
+    EXPECT_FALSE(paged->pages()->has_column_ranges());
+    EXPECT_EQ(paged->pages()->figures().decodes, 0u);
+    EXPECT_THROW(paged->pages()->column_ranges(), Error);
+    for (uint64_t cell = 0; cell < c.model.frame().cells(); ++cell) {
+        const std::vector<Interval> want = c.model.stack_intervals(cell);
+        const std::vector<Interval> got = paged->stack_intervals(cell);
+        ASSERT_EQ(got.size(), want.size()) << cell;
+        for (size_t i = 0; i < want.size(); ++i) {
+            EXPECT_EQ(got[i].material, want[i].material) << cell;
+            EXPECT_EQ(got[i].top, want[i].top) << cell;
+        }
+        EXPECT_EQ(paged->stack_top(cell), c.model.stack_top(cell)) << cell;
+    }
+    EXPECT_LE(paged->pages()->figures().peak_bytes, 2 * c.largest_block());
+}
+
+TEST(PagedTracing, ReservedBytesAreNotForBlocks)
+{
+    const PagedCase c;
+    const auto summary = read_stacks_summary(c.bytes->data(), c.bytes->size(), "x");
+    ASSERT_TRUE(summary);
+    const uint64_t skipping = skipping_bytes(summary->frame);
+    const uint64_t block = c.largest_block();
+    Paging paging;
+    paging.reserved_bytes = uint64_t(5) << 20; // the process and its images
+    paging.budget_bytes = skipping + paging.reserved_bytes + block;
+    EXPECT_EQ(block_budget(*summary, paging), block);
+    paging.budget_bytes -= 1;
+    try {
+        block_budget(*summary, paging);
+        FAIL() << "a budget that leaves less than a block beside the reserved bytes was taken";
+    }
+    catch (const Error &e) {
+        const std::string why = e.what();
+        EXPECT_NE(why.find("this process beside the model, 6 MB"), std::string::npos) << why;
+        const uint64_t least = ((skipping + paging.reserved_bytes + block) >> 20) + 1;
+        EXPECT_NE(why.find("give memory= at least " + std::to_string(least)), std::string::npos)
+            << why;
+    }
+}
+
 TEST(PagedTracing, DamagedBlockIsRefusedOnOpening)
 {
     const PagedCase c;
