@@ -8,6 +8,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -24,6 +25,7 @@
 #include "output_format.hpp"
 #include "profile_request.hpp"
 #include "sbrt_choices.hpp"
+#include "column_reading.hpp"
 #include "sbrt_store.hpp"
 #include "util/error.hpp"
 #include "util/safe_text.hpp"
@@ -68,31 +70,27 @@ sbrt::Frame read_frame(const std::string &input)
     return sbrt_grass::read_sbrt_map(input.c_str(), options).frame();
 }
 
-/// The SBRT (its frame: `frame`) with the stacks under the line's samples
-/// (`columns` of each count) and the location map's samples, read from the
-/// blocks that hold them.
-sbrt::Model read_model_along(const std::string &input, const sbrt::Frame &frame,
-                             const sbrt::ProfileLine &line, const std::vector<int> &columns,
-                             int plot_width, unsigned threads)
+/// The SBRT (its frame: `frame`) for the columns under the line's samples
+/// (`columns` of each count) and the location map's samples: paged within
+/// memory=, or those stacks alone, read from the blocks that hold them.
+sbrt::Model read_model_along(const ProfileRequest &request, const sbrt::Frame &frame,
+                             const sbrt::ProfileLine &line, const std::vector<int> &columns)
 {
-    sbrt::ReadOptions options;
-    options.threads = threads;
-    options.points.emplace();
+    std::vector<std::array<double, 2>> points;
     for (int cols : columns)
         for (int c = 0; c < cols; ++c) {
             const glm::dvec2 p = line.column_point(c, cols);
-            options.points->push_back({p.x, p.y});
+            points.push_back({p.x, p.y});
         }
-    for (const glm::dvec2 &p : location_samples(frame, line, plot_width))
-        options.points->push_back({p.x, p.y});
-    sbrt::ReadReport report;
-    options.report = &report;
-    sbrt::Model model = sbrt_grass::read_sbrt_map(input.c_str(), options);
-    if (report.blocks)
-        G_verbose_message(_("Read %llu of the %llu blocks of SBRT <%s>"),
-                          (unsigned long long)report.blocks_read,
-                          (unsigned long long)report.blocks, input.c_str());
-    return model;
+    for (const glm::dvec2 &p : location_samples(frame, line, request.width))
+        points.push_back({p.x, p.y});
+    sbrt_grass::ColumnReading reading;
+    reading.memory_bytes = request.memory_bytes;
+    reading.threads = request.threads;
+    // (the line is walked more than once: the blocks stay while they fit;
+    // the location map reads the stored column ranges)
+    reading.tops_map = true;
+    return sbrt_grass::read_sbrt_columns(request.input.c_str(), points, reading);
 }
 
 std::string joined(const std::vector<double> &values)
@@ -218,9 +216,7 @@ void run(const ProfileRequest &request)
     const double step =
         request.resolution.value_or(std::min(frame.ew_res(), frame.ns_res()));
     const int map_cols = profile_columns(line.length(), step);
-    const sbrt::Model model =
-        read_model_along(request.input, frame, line, {map_cols, request.width}, request.width,
-                         request.threads);
+    const sbrt::Model model = read_model_along(request, frame, line, {map_cols, request.width});
 
     const std::optional<ProfileGrid> grid = profile_grid(model, line, map_cols);
     auto solid = sbrt::solid_extent(model, line, request.width);
@@ -248,8 +244,10 @@ void run(const ProfileRequest &request)
                     "%.6g %s thick; give zexag= to choose another)"),
                   axes.zexag, line.length(), units.length.c_str(), solid->top - solid->bottom,
                   units.length.c_str());
-    if (request.png.empty() && request.print == sbrt_grass::OutputFormat::none)
+    if (request.png.empty() && request.print == sbrt_grass::OutputFormat::none) {
+        sbrt_grass::report_paging(model);
         return;
+    }
     FigureContent content;
     content.title = "Profile " + line_name(line.vertices().size()) + " of " + request.input;
     content.short_title =
@@ -263,6 +261,7 @@ void run(const ProfileRequest &request)
     const sbrt::ClassProfile plot =
         sbrt::class_profile(model, line, axes.plot_width, axes.plot_height, axes.extent);
     const FigureLayout layout = draw_profile_figure(axes, plot, content, request.png);
+    sbrt_grass::report_paging(model);
     if (request.print == sbrt_grass::OutputFormat::shell)
         print_shell(line, grid, axes, units, layout);
     else if (request.print == sbrt_grass::OutputFormat::json)

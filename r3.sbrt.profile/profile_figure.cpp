@@ -342,7 +342,7 @@ void draw_location(cairo_t *cr, const Sizes &s, const FigureContent &c, double x
         for (int k = 0; k < l.across; ++k) {
             const glm::dvec2 m = l.sample(r, k);
             const auto cell = sbrt::cell_of_point(f, m.x, m.y);
-            if (!cell || c.model->stack_size(c.model->cell_index(cell->row, cell->col)) == 0)
+            if (!cell || c.model->stack_top(c.model->cell_index(cell->row, cell->col)) < 0)
                 continue;
             const glm::dvec2 a = at(l.corner(r, k)), b = at(l.corner(r + 1, k + 1));
             cairo_rectangle(cr, std::floor(a.x), std::floor(a.y), std::ceil(b.x) - std::floor(a.x),

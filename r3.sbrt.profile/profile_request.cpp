@@ -82,6 +82,7 @@ ProfileOptions define_profile_options()
     o.format->label = _("Print the map's window and the figure's axes in this format");
     o.format->description = _("shell: as -g");
     o.nprocs = sbrt_grass::define_nprocs();
+    o.memory = sbrt_grass::define_memory();
 
     G_option_required(o.output, o.png, o.shell, o.format, NULL);
     return o;
@@ -116,5 +117,6 @@ ProfileRequest read_profile_request(const ProfileOptions &o)
     r.width = std::atoi(o.width->answer);
     r.print = sbrt_grass::read_output_format(o.format, o.shell);
     r.threads = sbrt_grass::read_nprocs(o.nprocs);
+    r.memory_bytes = sbrt_grass::read_memory(o.memory);
     return r;
 }

@@ -6,6 +6,7 @@
 #ifndef R3_SBRT_PROFILE_REQUEST_HPP
 #define R3_SBRT_PROFILE_REQUEST_HPP
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,7 +18,7 @@
 
 struct ProfileOptions {
     Option *input, *coordinates, *line, *cat, *output, *resolution, *png, *zexag, *width,
-        *format, *nprocs;
+        *format, *nprocs, *memory;
     Flag *shell;
 };
 
@@ -35,6 +36,7 @@ struct ProfileRequest {
     /// -g or format=: the figure's and map's geometry (shell or json), or none
     sbrt_grass::OutputFormat print = sbrt_grass::OutputFormat::none;
     unsigned threads = 1; ///< nprocs= (reading the SBRT)
+    uint64_t memory_bytes = 0; ///< memory=: this process with the blocks it holds
 };
 
 ProfileOptions define_profile_options();

@@ -4,6 +4,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include "backend.hpp"
+#include "column_reading.hpp"
 
 #include <algorithm>
 
@@ -47,13 +48,7 @@ void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
                           r.first_pass.ms);
     report_bands(r);
     report(_("CPU shading and tracing"), camera, r.trace_ms);
-    if (const sbrt::StackPages *pages = renderer.model().pages()) {
-        const sbrt::PagingFigures f = pages->figures();
-        G_verbose_message(_("Paged model: %llu of the %d blocks decoded (again where "
-                            "dropped), at most %.1f MB of them held at once"),
-                          (unsigned long long)f.decodes, pages->block_count(),
-                          double(f.peak_bytes) / (1 << 20));
-    }
+    sbrt_grass::report_paging(renderer.model());
 }
 
 void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,

@@ -8,6 +8,8 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -16,7 +18,9 @@
 #include "log_writers.hpp"
 #include "query_points.hpp"
 #include "sbrt_choices.hpp"
+#include "column_reading.hpp"
 #include "sbrt_store.hpp"
+#include "util/parallel.hpp"
 #include "util/error.hpp"
 #include "what_request.hpp"
 #include "module_errors.hpp"
@@ -24,25 +28,52 @@
 
 namespace {
 
-/// The SBRT with only the stacks of the points' cells, decoded from the
-/// blocks that hold them (1000 points scattered over a national model
-/// need about 4 in 10 of its blocks, and no other cell's intervals).
-sbrt::Model read_model_under(const std::string &name, const std::vector<QueryPoint> &points,
-                             unsigned threads)
+/// The SBRT for the points' columns: paged within memory= (the blocks
+/// read in order, each once), or the stacks of the points' cells alone,
+/// decoded from the blocks that hold them (1000 points scattered over a
+/// national model need about 4 in 10 of its blocks).
+sbrt::Model read_model_under(const WhatRequest &request, const std::vector<QueryPoint> &points)
 {
-    sbrt::ReadOptions options;
-    options.threads = threads;
-    sbrt::ReadReport report;
-    options.report = &report;
-    options.points.emplace();
+    std::vector<std::array<double, 2>> xy;
     for (const QueryPoint &p : points)
-        options.points->push_back({p.x, p.y});
-    sbrt::Model model = sbrt_grass::read_sbrt_map(name.c_str(), options);
-    if (report.blocks)
-        G_verbose_message(_("Read %llu of the %llu blocks of SBRT <%s>"),
-                          (unsigned long long)report.blocks_read,
-                          (unsigned long long)report.blocks, name.c_str());
-    return model;
+        xy.push_back({p.x, p.y});
+    sbrt_grass::ColumnReading reading;
+    reading.memory_bytes = request.memory_bytes;
+    reading.threads = request.threads;
+    reading.blocks_in_order = true; // (log_points)
+    return sbrt_grass::read_sbrt_columns(request.input.c_str(), xy, reading);
+}
+
+/// The log of each point's column (with its voxels where `channels` are
+/// given), on `threads` threads; a paged model's points taken block by
+/// block, so that each block is decoded once.
+std::vector<PointLog> log_points(const sbrt::Model &model, const std::vector<QueryPoint> &points,
+                                 const sbrt::PropertyChannels *channels, unsigned threads)
+{
+    std::vector<std::optional<sbrt::GridCell>> cells(points.size());
+    std::vector<size_t> order(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        cells[i] = sbrt::cell_of_point(model.frame(), points[i].x, points[i].y);
+        order[i] = i;
+    }
+    if (const sbrt::StackPages *pages = model.pages()) {
+        const auto block = [&](size_t i) {
+            return cells[i] ? pages->block_of(cells[i]->row, cells[i]->col) : -1;
+        };
+        std::stable_sort(order.begin(), order.end(),
+                         [&](size_t a, size_t b) { return block(a) < block(b); });
+    }
+    std::vector<PointLog> logs(points.size());
+    sbrt::for_each_row_in_runs(0, int(points.size()), threads, 16, [&](int k) {
+        const size_t i = order[size_t(k)];
+        logs[i].point = points[i];
+        if (cells[i]) {
+            logs[i].log = sbrt::column_log(model, *cells[i]);
+            if (channels)
+                logs[i].voxels = sbrt::column_voxels(model, *channels, *cells[i]);
+        }
+    });
+    return logs;
 }
 
 /// Writes the logs to output= (standard output where it is empty or "-").
@@ -65,7 +96,7 @@ void write_logs(const WhatRequest &request, const LogSource &source,
 void run(const WhatRequest &request)
 {
     const std::vector<QueryPoint> points = query_points(request);
-    const sbrt::Model model = read_model_under(request.input, points, request.threads);
+    const sbrt::Model model = read_model_under(request, points);
     // the property channels, where the model has them and the output
     // shows them (json always, plain and csv with -v): only the blocks
     // under the points are decoded
@@ -79,18 +110,10 @@ void run(const WhatRequest &request)
     source.separator = request.separator;
     if (channels)
         source.channels = channels->infos();
-    std::vector<PointLog> logs(points.size());
-    size_t outside = 0;
-    for (size_t i = 0; i < points.size(); ++i) {
-        logs[i].point = points[i];
-        if (const auto cell = sbrt::cell_of_point(model.frame(), points[i].x, points[i].y)) {
-            logs[i].log = sbrt::column_log(model, *cell);
-            if (channels)
-                logs[i].voxels = sbrt::column_voxels(model, *channels, *cell);
-        }
-        else
-            ++outside;
-    }
+    const std::vector<PointLog> logs = log_points(model, points, channels.get(), request.threads);
+    sbrt_grass::report_paging(model);
+    const size_t outside = size_t(
+        std::count_if(logs.begin(), logs.end(), [](const PointLog &l) { return !l.log; }));
     if (outside)
         G_verbose_message(_("%zu of %zu points lie outside SBRT <%s>"), outside,
                           points.size(), request.input.c_str());

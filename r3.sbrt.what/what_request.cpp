@@ -57,6 +57,7 @@ WhatOptions define_what_options()
     o.voxels->guisection = _("Output");
 
     o.nprocs = sbrt_grass::define_nprocs();
+    o.memory = sbrt_grass::define_memory();
 
     G_option_required(o.coordinates, o.points, NULL);
     G_option_exclusive(o.coordinates, o.points, NULL);
@@ -78,5 +79,6 @@ WhatRequest read_what_request(const WhatOptions &o)
     r.output = o.output->answer ? o.output->answer : "";
     r.voxels = o.voxels->answer;
     r.threads = sbrt_grass::read_nprocs(o.nprocs);
+    r.memory_bytes = sbrt_grass::read_memory(o.memory);
     return r;
 }

@@ -7,6 +7,7 @@
 #define R3_SBRT_WHAT_REQUEST_HPP
 
 #include <string>
+#include <cstdint>
 #include <vector>
 
 #include "grass.hpp"
@@ -14,7 +15,8 @@
 
 /// \brief The options, as G_define_option made them.
 struct WhatOptions {
-    Option *input, *coordinates, *points, *layer, *where, *format, *separator, *output, *nprocs;
+    Option *input, *coordinates, *points, *layer, *where, *format, *separator, *output, *nprocs,
+        *memory;
     Flag *voxels; ///< -v: the property channels voxel by voxel
 };
 
@@ -41,6 +43,7 @@ struct WhatRequest {
     /// lists them under their own key whatever -v says)
     bool voxels = false;
     unsigned threads = 1; ///< nprocs= (reading the SBRT)
+    uint64_t memory_bytes = 0; ///< memory=: this process with the blocks it holds
 };
 
 WhatOptions define_what_options();

@@ -128,7 +128,10 @@ class TestProfileAgainstVoxels(TestCase):
         return "coordinates=" + ",".join(f"{x},{y}" for x, y in line)
 
     def test_map_equals_the_voxels_under_the_line(self):
-        g, _ = self.profile(self.coordinates(), "output=prof_map", "resolution=7")
+        # (the SBRT is paged: its columns read through their blocks)
+        g, err = self.profile(self.coordinates(), "output=prof_map", "resolution=7",
+                              "--verbose")
+        self.assertIn("SBRT <prof3d> paged", err)
         info = gs.raster_info("prof_map")
         total = length(LINE)
         cols = round(total / 7)
@@ -282,6 +285,8 @@ class TestProfileAgainstVoxels(TestCase):
             ((self.coordinates(), "png=/tmp/x.png", "zexag=100000"), "pixels high"),
             ((self.coordinates(), "output=prof_bad", "resolution=0"), "above 0"),
             ((self.coordinates(), "output=prof_bad", "resolution=0.00001"), "resolution="),
+            # memory= holds the process too: 1 MB is below any
+            ((self.coordinates(), "output=prof_bad", "memory=1"), "give memory= at least"),
         ]:
             code, _, err = run("r3.sbrt.profile", "input=prof3d", "--o", *options)
             self.assertNotEqual(code, 0, options)

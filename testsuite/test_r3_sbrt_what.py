@@ -234,6 +234,32 @@ class TestWhatVoxelModel(TestCase):
                 self.assertAlmostEqual(interval["bottom_depth"], surface - bottom, places=9)
         self.assertEqual(statuses["empty"], 2)
 
+    def test_columns_are_read_paged_within_memory(self):
+        """An SBRT without channels is paged: a column's block is decoded
+        when it is read, and memory= holds this process with the blocks;
+        a memory= too small is refused with the least that works, and
+        nothing is written."""
+        points = flat(cell_centres())
+        run = subprocess.run(
+            what_args(input="what3d", format="json", coordinates=points) + ["--verbose"],
+            capture_output=True, text=True, timeout=120)
+        out, err = run.stdout, " ".join(run.stderr.split())
+        self.assertEqual(run.returncode, 0, err)
+        self.assertIn("SBRT <what3d> paged", err)
+        self.assertIn("Paged model: 1 of the 1 blocks decoded", err)
+        self.assertEqual(json.loads(out), self.json_logs(coordinates=points))
+        output = os.path.join(tempfile.mkdtemp(), "logs.json")
+        rc, out, err = what(input="what3d", format="json", coordinates=points,
+                            output=output, memory=1)
+        self.assertNotEqual(rc, 0)
+        least = re.search(r"give memory= at least (\d+)", err)
+        self.assertTrue(least, err)
+        self.assertFalse(os.path.exists(output))
+        rc, out, err = what(input="what3d", format="json", coordinates=points,
+                            memory=int(least.group(1)) + 20)
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(json.loads(out), self.json_logs(coordinates=points))
+
     def test_plain_log_shows_gaps_and_empty_and_outside(self):
         # row 3 (index 2) col 4: a cave; row 1 col 1: empty; far away: outside
         cave = cell_centres()[2 * COLS + 3]

@@ -23,7 +23,13 @@ uint64_t skipping_bytes(const Frame &frame)
 
 uint64_t block_budget(const ModelSummary &summary, const Paging &paging)
 {
-    const uint64_t skipping = paging.column_ranges ? skipping_bytes(summary.frame) : 0;
+    // the ranges and the pyramid over them; the ranges alone where
+    // stored; nothing
+    const uint64_t skipping =
+        paging.column_ranges == Paging::Ranges::needed         ? skipping_bytes(summary.frame)
+        : paging.column_ranges == Paging::Ranges::where_stored ? summary.frame.cells() *
+                                                                     sizeof(ZRange)
+                                                               : 0;
     const uint64_t block = summary.largest_decoded_block();
     const uint64_t held = skipping + paging.reserved_bytes;
     if (paging.budget_bytes < held + block) {
@@ -50,7 +56,7 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     auto layout = std::make_shared<const StacksV2Layout>(open_stacks_v2(data, size, what));
     // each column's range, where a member made from these stacks holds it
     std::vector<ZRange> ranges;
-    if (stored.bytes && paging.column_ranges)
+    if (stored.bytes && paging.column_ranges != Paging::Ranges::none)
         if (auto decoded = decode_column_ranges(stored.bytes->data(), stored.bytes->size(),
                                                 stored.what, layout->header.frame,
                                                 stamp_of(layout->header)))
@@ -65,7 +71,8 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     auto pages = std::make_shared<const StackPages>(summary->frame, int(layout->grid.size),
                                                     std::move(decode), blocks_budget,
                                                     paging.budget_name, paging.threads,
-                                                    std::move(ranges), paging.column_ranges);
+                                                    std::move(ranges),
+                                                    paging.column_ranges == Paging::Ranges::needed);
     return Model(summary->frame, std::move(summary->materials), std::move(pages),
                  summary->stats);
 }

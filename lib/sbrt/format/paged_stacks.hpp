@@ -32,10 +32,13 @@ struct Paging {
     uint64_t reserved_bytes = 0;
     const char *budget_name = "memory="; ///< the option that sets it, for errors
     unsigned threads = 0;               ///< of the first pass; 0: all cores
-    /// whether each column's range is read (the tracer's empty-space
-    /// skipping and framing need them; a reader of single columns, such
-    /// as a virtual borehole, does not: nothing is read for them)
-    bool column_ranges = true;
+    /// \brief Which column ranges a paged model holds.
+    enum class Ranges {
+        needed,       ///< the tracer's (skipping, framing): stored, else read from every block
+        where_stored, ///< where a member holds them (a map of tops drawn cheaply), else none
+        none,         ///< a reader of single columns (a virtual borehole)
+    };
+    Ranges column_ranges = Ranges::needed;
 };
 
 /// Bytes of a paged model's column ranges and empty-space pyramid over

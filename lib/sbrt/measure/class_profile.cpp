@@ -37,13 +37,13 @@ Column column_under(const Model &model, glm::dvec2 p)
     const auto cell = cell_of_point(model.frame(), p.x, p.y);
     if (!cell)
         return column;
-    const StackRange range = model.stack(model.cell_index(cell->row, cell->col));
-    column.tops.reserve(range.size());
-    column.ids.reserve(range.size());
-    model.intervals().visit([&](const auto *records) {
-        for (uint64_t i = range.begin; i < range.end; ++i) {
-            const uint32_t m = records[i].material;
-            column.tops.push_back(double(records[i].top));
+    model.visit_stack(model.cell_index(cell->row, cell->col), [&](const auto *first,
+                                                                  const auto *last) {
+        column.tops.reserve(size_t(last - first));
+        column.ids.reserve(size_t(last - first));
+        for (const auto *r = first; r != last; ++r) {
+            const uint32_t m = r->material;
+            column.tops.push_back(double(r->top));
             column.ids.push_back(m == EMPTY ? NULL_CLASS : model.materials()[m].id);
         }
     });

@@ -9,9 +9,8 @@ namespace sbrt {
 
 ColumnFigures column_figures(const Model &model, uint64_t cell, const ClassSet &set)
 {
-    const StackRange stack = model.stack(cell);
-    return model.intervals().visit([&](const auto *records) {
-        return column_figures(records + stack.begin, records + stack.end, set);
+    return model.visit_stack(cell, [&](const auto *first, const auto *last) {
+        return column_figures(first, last, set);
     });
 }
 

@@ -26,16 +26,16 @@ ColumnLog column_log(const Model &model, GridCell cell)
              ") outside the model's ", frame.rows, " x ", frame.cols, " cells");
     ColumnLog log;
     log.cell = cell;
-    const StackRange range = model.stack(model.cell_index(cell.row, cell.col));
-    log.entries.reserve(range.size());
     // bottom up, as the stack holds them: each interval starts at the
     // previous top (0 for the first); a leading EMPTY run is no gap (no
     // layer lies below it) and a stack never ends in EMPTY
-    model.intervals().visit([&](const auto *records) {
+    model.visit_stack(model.cell_index(cell.row, cell.col), [&](const auto *first,
+                                                                const auto *last) {
+        log.entries.reserve(size_t(last - first));
         double below = 0;
-        for (uint64_t i = range.begin; i < range.end; ++i) {
-            const double top = double(records[i].top);
-            const uint32_t material = records[i].material;
+        for (const auto *r = first; r != last; ++r) {
+            const double top = double(r->top);
+            const uint32_t material = r->material;
             if (material != EMPTY || !log.entries.empty())
                 log.entries.push_back(
                     {material, map_height(frame, top), map_height(frame, below)});

@@ -11,6 +11,7 @@
 #include "format/format.hpp"
 #include "format/paged_stacks.hpp"
 #include "frame/coordinate_frame.hpp"
+#include "measure/column_log.hpp"
 #include "scene/view.hpp"
 #include "tracing/cpu_tracing.hpp"
 #include "util/error.hpp"
@@ -148,7 +149,7 @@ TEST(PagedTracing, ColumnsAreReadWithoutTheirRanges)
     const PagedCase c;
     Paging paging;
     paging.budget_bytes = 2 * c.largest_block(); // no room for ranges: none needed
-    paging.column_ranges = false;
+    paging.column_ranges = Paging::Ranges::none;
     const std::optional<Model> paged =
         open_paged_model(c.bytes->data(), c.bytes->size(), "test stacks", c.bytes, paging);
     ASSERT_TRUE(paged);
@@ -164,6 +165,15 @@ TEST(PagedTracing, ColumnsAreReadWithoutTheirRanges)
             EXPECT_EQ(got[i].top, want[i].top) << cell;
         }
         EXPECT_EQ(paged->stack_top(cell), c.model.stack_top(cell)) << cell;
+        const GridCell at{int(cell / uint64_t(c.model.frame().cols)),
+                          int(cell % uint64_t(c.model.frame().cols))};
+        const ColumnLog paged_log = column_log(*paged, at), whole_log = column_log(c.model, at);
+        ASSERT_EQ(paged_log.entries.size(), whole_log.entries.size()) << cell;
+        for (size_t i = 0; i < whole_log.entries.size(); ++i) {
+            EXPECT_EQ(paged_log.entries[i].material, whole_log.entries[i].material) << cell;
+            EXPECT_EQ(paged_log.entries[i].top, whole_log.entries[i].top) << cell;
+            EXPECT_EQ(paged_log.entries[i].bottom, whole_log.entries[i].bottom) << cell;
+        }
     }
     EXPECT_LE(paged->pages()->figures().peak_bytes, 2 * c.largest_block());
 }
