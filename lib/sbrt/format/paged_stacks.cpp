@@ -68,11 +68,16 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     auto decode = [data, layout, what, keep = std::move(keep)](int block) {
         return decode_stack_block(data, *layout, block, what);
     };
-    auto pages = std::make_shared<const StackPages>(summary->frame, int(layout->grid.size),
-                                                    std::move(decode), blocks_budget,
-                                                    paging.budget_name, paging.threads,
-                                                    std::move(ranges),
-                                                    paging.column_ranges == Paging::Ranges::needed);
+    auto pages = std::make_shared<StackPages>(summary->frame, int(layout->grid.size),
+                                              std::move(decode), blocks_budget,
+                                              paging.budget_name, paging.threads,
+                                              std::move(ranges),
+                                              paging.column_ranges == Paging::Ranges::needed);
+    // each block's classes: hiding one prepares only the blocks that hold it
+    std::vector<std::vector<uint16_t>> materials;
+    for (BlockSummary &block : summary->blocks)
+        materials.push_back(std::move(block.materials));
+    pages->set_block_materials(std::move(materials));
     return Model(summary->frame, std::move(summary->materials), std::move(pages),
                  summary->stats);
 }

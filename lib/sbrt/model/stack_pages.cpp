@@ -72,6 +72,33 @@ void StackPages::fail_no_ranges()
          "columns); the empty-space skipping and the framing need them");
 }
 
+StackBlock StackPages::block_cells(int b) const
+{
+    StackBlock cells;
+    cells.first_row = b / block_cols_ * size_;
+    cells.first_col = b % block_cols_ * size_;
+    cells.rows = std::min(size_, rows_ - cells.first_row);
+    cells.cols = std::min(size_, cols_ - cells.first_col);
+    return cells;
+}
+
+void StackPages::set_block_materials(std::vector<std::vector<uint16_t>> materials)
+{
+    if (!materials.empty() && materials.size() != slots_.size())
+        fail("StackPages: the materials of ", materials.size(), " blocks for ", slots_.size());
+    block_materials_ = std::move(materials);
+}
+
+bool StackPages::block_may_hold(int b, const std::vector<uint8_t> &marked) const
+{
+    if (block_materials_.empty())
+        return true;
+    for (uint16_t m : block_materials_[size_t(b)])
+        if (m < marked.size() && marked[m])
+            return true;
+    return false;
+}
+
 void StackPages::for_each_block(unsigned threads,
                                 const std::function<void(const StackBlock &)> &visit) const
 {

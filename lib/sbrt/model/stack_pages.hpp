@@ -86,6 +86,15 @@ public:
     /// Calls visit(block) for every block, on `threads` threads.
     void for_each_block(unsigned threads,
                         const std::function<void(const StackBlock &)> &visit) const;
+    /// The cells of block `b` (its first row and column, rows, cols),
+    /// known without decoding it.
+    StackBlock block_cells(int b) const;
+    /// Each block's materials (indices, not EMPTY), as the file's block
+    /// summaries list them; none given: every block may hold any.
+    void set_block_materials(std::vector<std::vector<uint16_t>> materials);
+    /// Whether block `b` may hold a material that `marked` (per material
+    /// index) marks: true where its materials are not known.
+    bool block_may_hold(int b, const std::vector<uint8_t> &marked) const;
 
     /// Whether each column's range is held (column_ranges()).
     bool has_column_ranges() const { return ranges_ != nullptr; }
@@ -125,6 +134,7 @@ private:
     const char *budget_name_;
     std::shared_ptr<const std::vector<ZRange>> ranges_;
     double highest_top_ = 0;
+    std::vector<std::vector<uint16_t>> block_materials_; ///< empty: not known
 
     mutable std::vector<Slot> slots_;
     mutable std::mutex cache_;      ///< guards the slots' blocks, used_, held_

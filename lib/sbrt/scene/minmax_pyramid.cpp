@@ -31,11 +31,22 @@ std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model,
                     at(row, col) = pages->column_ranges()[model.cell_index(row, col)];
             return cells;
         }
-        pages->for_each_block(0, [&](const StackBlock &block) {
-            block.intervals.visit([&](const auto *records) {
-                for (int row = block.first_row; row < block.first_row + block.rows; ++row)
-                    for (int col = block.first_col; col < block.first_col + block.cols; ++col) {
-                        const StackRange s = block.range(row, col);
+        // a block that holds no hidden stratum (its summary's classes)
+        // keeps its columns' stored ranges; only the others are decoded
+        for_each_row(pages->block_count(), 0, [&](int b) {
+            if (pages->has_column_ranges() && !pages->block_may_hold(b, hidden)) {
+                const StackBlock cells = pages->block_cells(b);
+                for (int row = cells.first_row; row < cells.first_row + cells.rows; ++row)
+                    for (int col = cells.first_col; col < cells.first_col + cells.cols; ++col)
+                        at(row, col) = pages->column_ranges()[model.cell_index(row, col)];
+                return;
+            }
+            const std::shared_ptr<const StackBlock> block = pages->block(b);
+            block->intervals.visit([&](const auto *records) {
+                for (int row = block->first_row; row < block->first_row + block->rows; ++row)
+                    for (int col = block->first_col; col < block->first_col + block->cols;
+                         ++col) {
+                        const StackRange s = block->range(row, col);
                         at(row, col) = drawn_range(records + s.begin, records + s.end, drawn);
                     }
             });

@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "format/format.hpp"
+#include "model/column_ranges.hpp"
+#include "format/column_ranges_file.hpp"
 #include "format/paged_stacks.hpp"
 #include "frame/coordinate_frame.hpp"
 #include "measure/column_log.hpp"
@@ -121,6 +123,44 @@ TEST(PagedTracing, HitsAreThoseOfTheModelDecodedWhole)
     const PagingFigures figures = paged.pages()->figures();
     EXPECT_LE(figures.peak_bytes, budget);
     EXPECT_GT(figures.decodes, 2u * 30u);
+}
+
+TEST(PagedTracing, HidingPreparesOnlyTheBlocksHoldingTheStratum)
+{
+    // class 9 only in a few columns of one block (rows 10-12, cols 18-20:
+    // block row 1, block col 2 of blocks of 8): hiding it decodes that
+    // block alone, and the pyramid is the whole model's
+    sbrt_test::Voxels voxels = sbrt_test::random_voxels(31, 29, 37, 26, 6);
+    for (int z = 20; z < 26; ++z)
+        for (int row = 10; row <= 12; ++row)
+            for (int col = 18; col <= 20; ++col)
+                voxels.classes[size_t(z) * voxels.frame.cells() +
+                               size_t(row) * voxels.frame.cols + size_t(col)] = 9;
+    const Model model = sbrt_test::build_model(voxels);
+    StacksV2Options options;
+    options.block_size = 8;
+    const auto bytes = std::make_shared<const std::vector<uint8_t>>(encode_stacks_v2(model, options));
+    Paging paging;
+    paging.budget_bytes = uint64_t(1) << 30;
+    std::vector<ZRange> ranges = column_ranges(model);
+    const std::vector<uint8_t> member = encode_column_ranges(
+        ranges, model.frame(), stacks_stamp(bytes->data(), bytes->size(), "stacks"));
+    StoredRanges stored{&member, "ranges"};
+    const std::optional<Model> paged =
+        open_paged_model(bytes->data(), bytes->size(), "stacks", bytes, paging, stored);
+    ASSERT_TRUE(paged);
+    ASSERT_EQ(paged->pages()->figures().decodes, 0u);
+    const int64_t nine = model.find_material(9);
+    ASSERT_GT(nine, 0);
+    Scene scene;
+    scene.hidden.assign(model.materials().size(), 0);
+    scene.hidden[size_t(nine)] = 1;
+    const Tracer whole(model, 3.0, scene), by_pages(*paged, 3.0, scene);
+    EXPECT_EQ(paged->pages()->figures().decodes, 1u);
+    const auto a = whole.pyramid().flattened(), b = by_pages.pyramid().flattened();
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i)
+        ASSERT_TRUE(a[i].low == b[i].low && a[i].high == b[i].high) << i;
 }
 
 TEST(PagedTracing, BudgetBelowOneBlockIsRefused)
