@@ -7,13 +7,16 @@ COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import math
 import shlex
+import subprocess
+import xml.etree.ElementTree as ET
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
 
 import viewer_fixture  # noqa: F401 (g.gui.sbrt's files on the path)
 from view_client import Extent, Stratum
-from view_state import NO_CLASS, ViewState, ZexagScale
+from view_state import (LIGHT_ELEVATION, LIGHT_FROM_CAMERA, NO_CLASS, ViewState,
+                        ZexagScale, number)
 
 
 def make_state():
@@ -225,6 +228,44 @@ class TestViewState(TestCase):
         args = shlex.split(command)
         self.assertEqual(args[0], "r3.sbrt.render")
         self.assertEqual(args[1:], state.words(320, 240) + ["output=saved", "png=/tmp/a b.png"])
+
+    def test_words_are_render_options_with_its_defaults(self):
+        """The viewer writes r3.sbrt.render's options by hand: every key
+        it writes, with every feature on, is one of the module's options,
+        and the defaults it leaves out or starts from are the module's
+        own (its interface description), so that a renamed option or a
+        changed default fails here, not in the viewer's frames."""
+        xml = subprocess.run(["r3.sbrt.render", "--interface-description"],
+                             capture_output=True, check=True, timeout=60).stdout
+        defaults = {}
+        for p in ET.fromstring(xml).iter("parameter"):
+            d = p.find("default")
+            defaults[p.get("name")] = d.text.strip() if d is not None and d.text else None
+        state = make_state()
+        state.hidden, state.opacity = {1}, {2: 0.5}
+        state.section = (30.0, 0.2)
+        state.boreholes, state.borehole_radius = "wells", 12.0
+        state.log_columns, state.log_depths = ("top", "bottom", "lith"), True
+        state.texture, state.drape = "ortho", True
+        state.property, state.threshold, state.fade = "kans_5", 50.0, "onz_lk"
+        state.backend, state.smooth_shading = "egl", True
+        words = state.words(320, 240) + state.words(320, 240, moving=True, reduced=True)
+        keys = {w.split("=", 1)[0] for w in words}
+        self.assertEqual(keys - set(defaults), set())
+        self.assertGreaterEqual(len(keys), 24)
+        # the camera the viewer starts from (and resets to) and the light
+        # it leaves out where it is the module's
+        fresh = ViewState("model", make_state().extent, [])
+        self.assertEqual(defaults["azimuth"], number(fresh.azimuth))
+        self.assertEqual(defaults["elevation"], number(fresh.elevation))
+        self.assertEqual(defaults["fov"], number(fresh.fov))
+        self.assertEqual(defaults["light"], "315," + number(LIGHT_ELEVATION))
+        fresh.azimuth = 315.0 - LIGHT_FROM_CAMERA  # its light: the default
+        self.assertIsNone(word(fresh.words(10, 10), "light"))
+        self.assertEqual(defaults["backend"], fresh.backend)
+        self.assertEqual(defaults["log_reference"], "elevation")  # log_depths off: none
+        self.assertEqual(defaults["detail"], "exact")  # a frame not reduced: none
+        self.assertEqual(defaults["normals"], "face")  # moving frames: none
 
 
 if __name__ == "__main__":
