@@ -88,8 +88,8 @@ sbrt::Model read_model_along(const ProfileRequest &request, const sbrt::Frame &f
     reading.memory_bytes = request.memory_bytes;
     reading.threads = request.threads;
     // (the line is walked more than once: the blocks stay while they fit;
-    // the location map reads the stored column ranges)
-    reading.tops_map = true;
+    // the figure's location map reads the stored column ranges)
+    reading.tops_map = !request.png.empty();
     return sbrt_grass::read_sbrt_columns(request.input.c_str(), points, reading);
 }
 

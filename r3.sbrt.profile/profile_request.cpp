@@ -82,7 +82,9 @@ ProfileOptions define_profile_options()
     o.format->label = _("Print the map's window and the figure's axes in this format");
     o.format->description = _("shell: as -g");
     o.nprocs = sbrt_grass::define_nprocs();
-    o.memory = sbrt_grass::define_memory();
+    o.memory = sbrt_grass::define_memory(
+        _("Maximum memory to be used (in MB) by this process: the blocks of the SBRT "
+          "are decoded as their columns are read, and dropped when it is full"));
 
     G_option_required(o.output, o.png, o.shell, o.format, NULL);
     return o;

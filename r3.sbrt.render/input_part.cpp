@@ -19,10 +19,9 @@ void InputPart::define(OptionTable &table)
 {
     table.add(sbrt_grass::define_sbrt_option(
         "input", _("Name of the SBRT to render (from r3.sbrt.convert)")));
-    Option *memory = table.add(sbrt_grass::define_memory());
-    memory->description = _("Maximum memory to be used (in MB) for the model's decoded "
-                            "blocks, where the CPU decodes them as its rays reach them "
-                            "(default: 300; a model that needs more is then decoded whole)");
+    Option *memory = table.add(sbrt_grass::define_memory(
+        _("Maximum memory to be used (in MB) by this process, where the CPU decodes the "
+          "model's blocks as its rays reach them (default: 300, or the least that works)")));
     memory->answer = nullptr; // given or not: the default gives way, a value does not
     memory->guisection = _("Settings");
 }

@@ -45,6 +45,10 @@ std::optional<sbrt::Model> read_paged_model(const RenderRequest &request,
         sbrt_grass::read_sbrt_summary_map(request.input.c_str());
     if (!summary || summary->has_channels) // channels lie along whole columns
         return std::nullopt;
+    // an image too large is that error, not a budget's
+    const bool top = request.view.kind == sbrt::ViewKind::top;
+    check_image_fits(request, top ? region.rows : request.height,
+                     top ? region.cols : request.width);
     sbrt::Paging paging;
     paging.budget_bytes = request.memory_bytes;
     paging.threads = unsigned(request.threads > 0 ? request.threads : 0);
@@ -59,12 +63,14 @@ std::optional<sbrt::Model> read_paged_model(const RenderRequest &request,
     catch (const sbrt::Error &e) {
         if (request.memory_given)
             bad_request(_("SBRT <%s>: %s"), request.input.c_str(), e.what());
-        // the default gives way: the model decoded whole, as before paging
-        G_verbose_message(_("SBRT <%s> is decoded whole: paged, it needs more than the "
-                            "default memory=%.0f MB (%s)"),
+        // the default gives way: the least that works, with room for
+        // blocks held as long as GRASS's default would hold them
+        const uint64_t least = sbrt::least_budget(*summary, paging);
+        paging.budget_bytes = least + request.memory_bytes / 2;
+        G_verbose_message(_("SBRT <%s> needs more than the default memory=%.0f MB: %.0f MB "
+                            "given to it (give memory= to choose)"),
                           request.input.c_str(), double(request.memory_bytes) / (1 << 20),
-                          e.what());
-        return std::nullopt;
+                          double(paging.budget_bytes) / (1 << 20));
     }
     std::optional<sbrt::Model> model =
         sbrt_grass::read_sbrt_paged_map(request.input.c_str(), paging);
@@ -72,7 +78,7 @@ std::optional<sbrt::Model> read_paged_model(const RenderRequest &request,
         G_verbose_message(_("SBRT <%s> paged: its %d blocks decoded as the rays reach "
                             "them, at most %.0f MB held (memory=)"),
                           request.input.c_str(), model->pages()->block_count(),
-                          double(request.memory_bytes) / (1 << 20));
+                          double(paging.budget_bytes) / (1 << 20));
     return model;
 }
 

@@ -63,7 +63,9 @@ Options define_options()
                                 "probability / 100 times the voxel height"));
     o.expected_thickness->guisection = _("Probability");
     o.nprocs = sbrt_grass::define_nprocs();
-    o.memory = sbrt_grass::define_memory();
+    o.memory = sbrt_grass::define_memory(
+        _("Maximum memory to be used (in MB) for the model's stacks: it is read band "
+          "by band within it"));
     G_option_required(o.top, o.base, o.thickness, o.layers, o.depth, o.expected_thickness,
                       NULL);
     G_option_requires(o.expected_thickness, o.probability, NULL);

@@ -62,7 +62,9 @@ Options define_options()
     o.output->description = _("Name of the output file (default: standard output)");
     o.output->guisection = _("Output");
     o.nprocs = sbrt_grass::define_nprocs();
-    o.memory = sbrt_grass::define_memory();
+    o.memory = sbrt_grass::define_memory(
+        _("Maximum memory to be used (in MB) for the model's stacks: it is read band "
+          "by band within it"));
     // no G_option_requires(layer, areas): pygrass and the GUI pass the
     // default layer=1 with every call
     return o;

@@ -63,14 +63,27 @@ std::vector<PointLog> log_points(const sbrt::Model &model, const std::vector<Que
         std::stable_sort(order.begin(), order.end(),
                          [&](size_t a, size_t b) { return block(a) < block(b); });
     }
+    // runs of points in one block, each run taken by one thread: a block
+    // is decoded once (a model decoded whole: a point a run)
+    std::vector<size_t> run_starts;
+    const auto block_at = [&](size_t k) {
+        const std::optional<sbrt::GridCell> &c = cells[order[k]];
+        return model.pages() && c ? model.pages()->block_of(c->row, c->col) : -1;
+    };
+    for (size_t k = 0; k < order.size(); ++k)
+        if (k == 0 || block_at(k) != block_at(k - 1) || !model.pages())
+            run_starts.push_back(k);
+    run_starts.push_back(order.size());
     std::vector<PointLog> logs(points.size());
-    sbrt::for_each_row_in_runs(0, int(points.size()), threads, 16, [&](int k) {
-        const size_t i = order[size_t(k)];
-        logs[i].point = points[i];
-        if (cells[i]) {
-            logs[i].log = sbrt::column_log(model, *cells[i]);
-            if (channels)
-                logs[i].voxels = sbrt::column_voxels(model, *channels, *cells[i]);
+    sbrt::for_each_row(int(run_starts.size()) - 1, threads, [&](int run) {
+        for (size_t k = run_starts[size_t(run)]; k < run_starts[size_t(run) + 1]; ++k) {
+            const size_t i = order[k];
+            logs[i].point = points[i];
+            if (cells[i]) {
+                logs[i].log = sbrt::column_log(model, *cells[i]);
+                if (channels)
+                    logs[i].voxels = sbrt::column_voxels(model, *channels, *cells[i]);
+            }
         }
     });
     return logs;

@@ -57,7 +57,9 @@ WhatOptions define_what_options()
     o.voxels->guisection = _("Output");
 
     o.nprocs = sbrt_grass::define_nprocs();
-    o.memory = sbrt_grass::define_memory();
+    o.memory = sbrt_grass::define_memory(
+        _("Maximum memory to be used (in MB) by this process: the blocks of the SBRT "
+          "are decoded as their columns are read, and dropped when it is full"));
 
     G_option_required(o.coordinates, o.points, NULL);
     G_option_exclusive(o.coordinates, o.points, NULL);

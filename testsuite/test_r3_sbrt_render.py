@@ -552,7 +552,7 @@ class TestRenderReadsOnlyTheRegion(TestCase):
         run = subprocess.run(args + ["memory=1"], capture_output=True, text=True)
         self.assertNotEqual(run.returncode, 0)
         error = " ".join(run.stderr.split())
-        self.assertIn("this process beside the model", error)
+        self.assertIn("the rest of this process", error)
         least = re.search(r"give memory= at least (\d+)", error)
         self.assertTrue(least, error)
         self.assertRasterDoesNotExist("rw_mem_m")

@@ -34,18 +34,21 @@ std::optional<sbrt::Model> read_paged_columns(const char *name, const ColumnRead
     // tops (a profile's location map) reads them where they are stored
     paging.column_ranges = reading.tops_map ? sbrt::Paging::Ranges::where_stored
                                             : sbrt::Paging::Ranges::none;
-    paging.reserved_bytes = uint64_t(sbrt::resident_memory());
+    // beside the blocks held: the process itself, and a block each thread
+    // may still read after the cache dropped it
+    paging.reserved_bytes = uint64_t(sbrt::resident_memory()) +
+                            sbrt::thread_count(reading.threads) * summary->largest_decoded_block();
     try {
         sbrt::block_budget(*summary, paging);
     }
     catch (const sbrt::Error &e) {
         fail_with(_("SBRT <%s>: %s"), name, e.what());
     }
-    if (reading.blocks_in_order) // two blocks a thread: the one read, the next
+    if (reading.blocks_in_order) // a block a thread held: the one read
         paging.budget_bytes = std::min(
             paging.budget_bytes,
-            paging.reserved_bytes +
-                2 * sbrt::thread_count(reading.threads) * summary->largest_decoded_block());
+            sbrt::least_budget(*summary, paging) +
+                sbrt::thread_count(reading.threads) * summary->largest_decoded_block());
     std::optional<sbrt::Model> model = read_sbrt_paged_map(name, paging);
     if (model)
         G_verbose_message(_("SBRT <%s> paged: its %d blocks decoded as their columns are "

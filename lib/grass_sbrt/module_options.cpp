@@ -17,11 +17,10 @@ namespace {
 constexpr uint64_t MB = uint64_t(1) << 20;
 }
 
-Option *define_memory()
+Option *define_memory(const char *description)
 {
     Option *memory = G_define_standard_option(G_OPT_MEMORYMB);
-    memory->description = _("Maximum memory to be used (in MB) for the model's stacks: "
-                             "it is read band by band within it");
+    memory->description = description;
     return memory;
 }
 

@@ -26,18 +26,19 @@ Option *define_sbrt_option(const char *key, const char *description);
 /// kans_7); `label` says what the module makes of it.
 Option *define_probability(const char *label);
 
-/// nprocs=: GRASS's G_OPT_M_NPROCS with GRASS 8.4's meaning, the one
-/// definition of every module that uses more than one core: a number of
-/// threads, 0 (the default) for all cores, a negative number for all but
-/// that many.
-/// memory= as GRASS defines it (G_OPT_MEMORYMB: MB, default 300).
-Option *define_memory();
+/// memory= as GRASS defines it (G_OPT_MEMORYMB: MB, default 300), with
+/// the module's `description` of what it holds within it.
+Option *define_memory(const char *description);
 /// Its answer in bytes; a clear fatal error where it is not a positive
 /// number of MB.
 uint64_t read_memory(const Option *memory);
 /// The bytes of memory= text `mb` (MB, at least 1), or 0 where it is not
 /// such a number.
 uint64_t memory_bytes_of(const char *mb);
+/// nprocs=: GRASS's G_OPT_M_NPROCS with GRASS 8.4's meaning, the one
+/// definition of every module that uses more than one core: a number of
+/// threads, 0 (the default) for all cores, a negative number for all but
+/// that many.
 Option *define_nprocs();
 /// Its answer as a number of threads: at least 1, all cores for 0, all
 /// but -n for a negative n (at least 1 where that leaves none).

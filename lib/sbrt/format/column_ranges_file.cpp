@@ -90,7 +90,8 @@ std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, con
 std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, size_t size,
                                                         const std::string &what,
                                                         const Frame &frame,
-                                                        const StacksStamp &stamp)
+                                                        const StacksStamp &stamp,
+                                                        unsigned threads)
 {
     if (size < HEADER_BYTES || std::memcmp(data, MAGIC, sizeof MAGIC) != 0)
         fail(what, ": not a column ranges member (bad magic number)");
@@ -121,7 +122,7 @@ std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, siz
     const size_t row_cells = size_t(frame.cols);
     // row by row on all cores (7.4 million columns in a national model,
     // read on every opening)
-    for_each_row_in_runs(0, frame.rows, 0, 64, [&](int row) {
+    for_each_row_in_runs(0, frame.rows, threads, 64, [&](int row) {
         const uint8_t *p = raw.data() + size_t(row) * row_cells * pair;
         ZRange *out = ranges.data() + size_t(row) * row_cells;
         for (size_t c = 0; c < row_cells; ++c, p += pair) {

@@ -50,10 +50,12 @@ std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, con
 /// The ranges of untrusted member bytes for stacks of `frame` stamped
 /// `stamp`; nothing where the member was made from other stacks (stale:
 /// read the blocks instead). Damage throws sbrt::Error naming `what`.
+/// Converted row by row on `threads` threads (0: all cores).
 std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, size_t size,
                                                         const std::string &what,
                                                         const Frame &frame,
-                                                        const StacksStamp &stamp);
+                                                        const StacksStamp &stamp,
+                                                        unsigned threads = 0);
 
 } // namespace sbrt
 

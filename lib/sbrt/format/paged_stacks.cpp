@@ -21,29 +21,53 @@ uint64_t skipping_bytes(const Frame &frame)
     return frame.cells() * sizeof(ZRange) * 7 / 3;
 }
 
+namespace {
+
+/// Bytes of the column ranges `paging` holds: the ranges and the pyramid
+/// over them; the ranges alone where stored; none.
+uint64_t ranges_bytes(const ModelSummary &summary, const Paging &paging)
+{
+    switch (paging.column_ranges) {
+    case Paging::Ranges::needed:
+        return skipping_bytes(summary.frame);
+    case Paging::Ranges::where_stored:
+        return summary.frame.cells() * sizeof(ZRange);
+    case Paging::Ranges::none:
+        break;
+    }
+    return 0;
+}
+
+} // namespace
+
+uint64_t least_budget(const ModelSummary &summary, const Paging &paging)
+{
+    return ranges_bytes(summary, paging) + paging.reserved_bytes +
+           summary.largest_decoded_block();
+}
+
 uint64_t block_budget(const ModelSummary &summary, const Paging &paging)
 {
-    // the ranges and the pyramid over them; the ranges alone where
-    // stored; nothing
-    const uint64_t skipping =
-        paging.column_ranges == Paging::Ranges::needed         ? skipping_bytes(summary.frame)
-        : paging.column_ranges == Paging::Ranges::where_stored ? summary.frame.cells() *
-                                                                     sizeof(ZRange)
-                                                               : 0;
+    const uint64_t ranges = ranges_bytes(summary, paging);
     const uint64_t block = summary.largest_decoded_block();
-    const uint64_t held = skipping + paging.reserved_bytes;
-    if (paging.budget_bytes < held + block) {
+    const uint64_t least = least_budget(summary, paging);
+    if (paging.budget_bytes < least) {
         const auto mb = [](uint64_t bytes) { return (bytes >> 20) + 1; };
+        const char *ranges_are = paging.column_ranges == Paging::Ranges::needed
+                                     ? "each column's range and the empty-space pyramid over "
+                                       "them, "
+                                     : "each column's range, ";
         fail("a memory budget (", paging.budget_name, ") of ", paging.budget_bytes >> 20,
-             " MB is less than the ", mb(held + block), " MB this model needs at least (",
-             skipping ? "each column's range and the empty-space pyramid over them, " : "",
-             skipping ? std::to_string(mb(skipping)) + " MB; " : "",
+             " MB is less than the ", mb(least), " MB this model needs at least (",
+             ranges ? ranges_are : "", ranges ? std::to_string(mb(ranges)) + " MB; " : "",
              "its largest block decoded, ", mb(block), " MB",
-             paging.reserved_bytes ? "; this process beside the model, " : "",
+             paging.reserved_bytes ? "; the rest of this process (its code, buffers and a "
+                                     "block for each thread), "
+                                   : "",
              paging.reserved_bytes ? std::to_string(mb(paging.reserved_bytes)) + " MB" : "",
-             "): give ", paging.budget_name, " at least ", mb(held + block));
+             "): give ", paging.budget_name, " at least ", mb(least));
     }
-    return paging.budget_bytes - held;
+    return paging.budget_bytes - ranges - paging.reserved_bytes;
 }
 
 std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
@@ -59,7 +83,7 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     if (stored.bytes && paging.column_ranges != Paging::Ranges::none)
         if (auto decoded = decode_column_ranges(stored.bytes->data(), stored.bytes->size(),
                                                 stored.what, layout->header.frame,
-                                                stamp_of(layout->header)))
+                                                stamp_of(layout->header), paging.threads))
             ranges = std::move(*decoded);
     std::optional<ModelSummary> summary = read_stacks_summary(data, size, what);
     if (!summary)

@@ -50,6 +50,9 @@ uint64_t skipping_bytes(const Frame &frame);
 /// throws sbrt::Error, saying what to give, where that leaves less than
 /// its largest block decoded.
 uint64_t block_budget(const ModelSummary &summary, const Paging &paging);
+/// The least budget `paging` could have for the model of `summary`: its
+/// column ranges (and pyramid), the reserved bytes and its largest block.
+uint64_t least_budget(const ModelSummary &summary, const Paging &paging);
 
 /// Block `block` of the opened file `data`, decompressed, its checksum,
 /// counts and stacks checked (throws sbrt::Error naming `what`).

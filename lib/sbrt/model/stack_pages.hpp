@@ -109,8 +109,14 @@ public:
     }
     /// The same, shared (a pyramid's level 0).
     std::shared_ptr<const std::vector<ZRange>> shared_column_ranges() const { return ranges_; }
-    /// The highest top of any stack (local units), 0 where all are empty.
-    double highest_top_local() const { return highest_top_; }
+    /// The highest top of any stack (local units), 0 where all are empty;
+    /// throws sbrt::Error where the column ranges are not held.
+    double highest_top_local() const
+    {
+        if (!ranges_)
+            fail_no_ranges();
+        return highest_top_;
+    }
     uint64_t budget_bytes() const { return budget_; }
     PagingFigures figures() const;
 
