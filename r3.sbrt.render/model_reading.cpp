@@ -13,8 +13,7 @@ extern "C" {
 #include "sbrt_store.hpp"
 #include "gl_context.hpp"
 #include "scene_camera.hpp"
-#include "util/available_memory.hpp"
-#include "util/parallel.hpp"
+#include "column_reading.hpp"
 
 bool sees_only_the_region(const RenderRequest &request)
 {
@@ -53,10 +52,9 @@ std::optional<sbrt::Model> read_paged_model(const RenderRequest &request,
     paging.budget_bytes = request.memory_bytes;
     paging.threads = unsigned(request.threads > 0 ? request.threads : 0);
     // memory= bounds the process: beside the model it holds itself (code,
-    // GRASS), the image's buffers, and a block each tracing thread may
-    // still read after the cache dropped it
-    paging.reserved_bytes = uint64_t(sbrt::resident_memory() + image_memory(request, region)) +
-                            sbrt::thread_count(paging.threads) * summary->largest_decoded_block();
+    // GRASS), a block a tracing thread, and the image's buffers
+    paging.reserved_bytes = sbrt_grass::reserved_beside_blocks(*summary, paging.threads) +
+                            uint64_t(image_memory(request, region));
     try {
         sbrt::block_budget(*summary, paging);
     }

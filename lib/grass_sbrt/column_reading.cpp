@@ -34,10 +34,7 @@ std::optional<sbrt::Model> read_paged_columns(const char *name, const ColumnRead
     // tops (a profile's location map) reads them where they are stored
     paging.column_ranges = reading.tops_map ? sbrt::Paging::Ranges::where_stored
                                             : sbrt::Paging::Ranges::none;
-    // beside the blocks held: the process itself, and a block each thread
-    // may still read after the cache dropped it
-    paging.reserved_bytes = uint64_t(sbrt::resident_memory()) +
-                            sbrt::thread_count(reading.threads) * summary->largest_decoded_block();
+    paging.reserved_bytes = reserved_beside_blocks(*summary, reading.threads);
     try {
         sbrt::block_budget(*summary, paging);
     }
@@ -59,6 +56,12 @@ std::optional<sbrt::Model> read_paged_columns(const char *name, const ColumnRead
 }
 
 } // namespace
+
+uint64_t reserved_beside_blocks(const sbrt::ModelSummary &summary, unsigned threads)
+{
+    return uint64_t(sbrt::resident_memory()) +
+           sbrt::thread_count(threads) * summary.largest_decoded_block();
+}
 
 sbrt::Model read_sbrt_columns(const char *name, const std::vector<std::array<double, 2>> &points,
                               const ColumnReading &reading)

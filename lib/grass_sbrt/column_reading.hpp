@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "format/block_summary.hpp"
 #include "model/model.hpp"
 
 namespace sbrt_grass {
@@ -37,6 +38,12 @@ struct ColumnReading {
 /// blocks that hold them.
 sbrt::Model read_sbrt_columns(const char *name, const std::vector<std::array<double, 2>> &points,
                               const ColumnReading &reading);
+
+/// What a paged read of the model of `summary` holds beside its blocks
+/// and ranges (Paging::reserved_bytes): this process's resident memory,
+/// and a block each of `threads` threads (0: all cores) may still read
+/// after the cache dropped it.
+uint64_t reserved_beside_blocks(const sbrt::ModelSummary &summary, unsigned threads);
 
 /// The verbose line of the blocks a paged model decoded; nothing for a
 /// model decoded whole.
