@@ -33,8 +33,15 @@ std::vector<sbrt::Material> rule_legend(const sbrt::Classifier &classifier);
 /// survey preset the file identifies itself as, "none" none, else the
 /// preset of that name.
 /// `properties` (variables on the same grid) become property channels,
-/// streamed into the new file `channels_file` in the same pass.
-sbrt::Model file_to_sbrt(const char *file, const char *variable,
+/// streamed into the new file `channels_file` in the same pass. Writes
+/// SBRT `output` band by band of rows as they are converted (the model
+/// is never held whole: a model larger than memory imports) and returns
+/// its frame.
+struct NewSbrt {
+    const char *name;
+    std::string path; ///< sbrt_grass::new_sbrt_path
+};
+sbrt::Frame file_to_sbrt(const char *file, const char *variable, const NewSbrt &output,
                          sbrt::Classifier &classifier, bool override_crs,
                          size_t band_bytes, const char *preset,
                          const std::vector<std::string> &properties = {},
@@ -46,6 +53,7 @@ std::vector<std::string> same_grid_variables(const char *file, const char *varia
 /// Applies the survey preset `name` to `model` with a message; classes keep
 /// the labels and colours they have (rules=, the file's flag_meanings).
 void apply_preset(const std::string &name, sbrt::Model &model);
+void apply_preset(const std::string &name, std::vector<sbrt::Material> &materials);
 
 /// Lists the variables of a file (plain or key=value).
 void print_file_variables(const char *file, bool shell);

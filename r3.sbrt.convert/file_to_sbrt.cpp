@@ -16,6 +16,7 @@
 #include "builders/column_builder.hpp"
 #include "util/error.hpp"
 #include "builders/import_memory.hpp"
+#include "sbrt_map_writer.hpp"
 #include "file_checks.hpp"
 #include "util/available_memory.hpp"
 #include "file_crs.hpp"
@@ -169,15 +170,20 @@ std::vector<std::string> same_grid_variables(const char *file, const char *varia
 
 void apply_preset(const std::string &name, sbrt::Model &model)
 {
+    apply_preset(name, model.materials());
+}
+
+void apply_preset(const std::string &name, std::vector<sbrt::Material> &materials)
+{
     const sbrt::SurveyPreset &preset = sbrt::find_preset(name);
-    const size_t set = sbrt::apply_styles(model.materials(), preset.classes, true);
+    const size_t set = sbrt::apply_styles(materials, preset.classes, true);
     G_message(_("Preset %s applied (%s, labels and colours from %s): %zu of %zu "
                 "classes; change them with r3.sbrt.support"),
               preset.name.c_str(), preset.title.c_str(), preset.reference.c_str(), set,
-              model.materials().size() - 1);
+              materials.size() - 1);
 }
 
-sbrt::Model file_to_sbrt(const char *file, const char *name,
+sbrt::Frame file_to_sbrt(const char *file, const char *name, const NewSbrt &output,
                          sbrt::Classifier &classifier, bool override_crs,
                          size_t band_bytes, const char *preset,
                          const std::vector<std::string> &properties,
@@ -238,6 +244,8 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
                         "(preset=none turns this off)"),
                       file, found->title.c_str(), name, found->name.c_str());
     }
+    // the model written as its rows come: a band of it held, not the model
+    sbrt_grass::SbrtMapWriter writer(output.name, output.path, frame, threads);
     sbrt::ColumnStackBuilder builder(frame);
     // bands of whole chunks: a chunk cut by two bands would be decompressed
     // twice (with eleven channels of a national model a band of the
@@ -317,6 +325,10 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
             pending = read(row0 + rows.count, buffers[b ^ 1]);
         try {
             import.add(buffers[b][0].data(), steps[0], row0, rows.count, rows.first);
+            // the blocks' rows that are whole, compressed now
+            const int ready = builder.rows_ready() / writer.block_rows() * writer.block_rows();
+            if (ready > 0)
+                writer.add_rows(builder.take_rows(ready));
             if (channel_bands) {
                 std::vector<const void *> bands;
                 for (size_t v = 1; v < sources.size(); ++v)
@@ -341,18 +353,25 @@ sbrt::Model file_to_sbrt(const char *file, const char *name,
     if (import.unmatched())
         G_warning(_("%llu voxels matched no rule and became empty"),
                   (unsigned long long)import.unmatched());
-    sbrt::Model model = builder.finish(legend);
-    if (model.stats().solid_intervals == 0)
+    try {
+        if (builder.rows_ready() > 0)
+            writer.add_rows(builder.take_rows(builder.rows_ready()));
+    }
+    catch (const sbrt::Error &e) {
+        G_fatal_error(_("Variable '%s' of <%s>, %s"), name, file, e.what());
+    }
+    if (writer.solid_intervals() == 0)
         G_fatal_error(_("Variable '%s' of <%s> holds only missing values"), name,
                       file);
-    warn_if_probability(variable, classifier, model.materials().size() - 1);
+    sbrt::SbrtWriter::Legend result{builder.materials(legend), vertical_datum(variable)};
+    warn_if_probability(variable, classifier, result.materials.size() - 1);
     if (survey != "none")
-        apply_preset(survey, model);
-    model.set_vertical_datum(vertical_datum(variable));
-    if (!model.vertical_datum().empty())
+        apply_preset(survey, result.materials);
+    if (!result.vertical_datum.empty())
         G_verbose_message(_("Heights of <%s> are relative to %s"), file,
-                          model.vertical_datum().c_str());
-    return model;
+                          result.vertical_datum.c_str());
+    writer.finish(result, std::string("file ") + file + " variable " + name, channels_file);
+    return frame;
 }
 
 void print_file_variables(const char *file, bool shell)

@@ -306,6 +306,33 @@ void describe(const char *name, bool report, bool set_region,
                      sbrt_grass::read_channels_map(name, model).get());
 }
 
+/// Imports variable= of file= into SBRT `output` (at `path`), written band
+/// by band as it is read; returns its frame.
+sbrt::Frame import_file(const Options &o, const char *output, const std::string &path,
+                        unsigned threads)
+{
+    if (!o.variable->answer)
+        G_fatal_error(_("Give variable= (one of those r3.sbrt.convert -p "
+                        "file=%s lists)"),
+                      o.file->answer);
+    sbrt::Classifier classifier = read_classifier(o.rules->answer);
+    const int megabytes = std::atoi(o.memory->answer);
+    if (megabytes < 1)
+        G_fatal_error(_("memory=%s: give at least 1 (MB)"), o.memory->answer);
+    const std::vector<std::string> properties =
+        o.all_properties->answer ? same_grid_variables(o.file->answer, o.variable->answer)
+                                 : answers_of(o.properties);
+    if (o.all_properties->answer && properties.empty())
+        G_warning(_("-a: file <%s> has no other variable on the grid of '%s'"),
+                  o.file->answer, o.variable->answer);
+    TemporaryFile channels_file; // the property channels, moved into the SBRT
+    if (!properties.empty())
+        channels_file.path = G_tempfile();
+    return file_to_sbrt(o.file->answer, o.variable->answer, {output, path}, classifier,
+                        o.override_crs->answer, size_t(megabytes) << 20, o.preset->answer,
+                        properties, channels_file.path, threads);
+}
+
 void run(const Options &o)
 {
     // -g is format=shell; format=shell or json asks for the report as -p does
@@ -372,34 +399,23 @@ void run(const Options &o)
     // checked before the work, written after it
     sbrt_grass::check_new_name(output, true, "output");
     const std::string path = sbrt_grass::new_sbrt_path(output, overwrite);
+    if (o.file->answer) {
+        // written band by band as it is read: described from what was written
+        const sbrt::Frame frame = import_file(o, output, path, threads);
+        if (set_region)
+            set_region_to(output, frame);
+        else
+            G_verbose_message(_("For -r, set the current region to the SBRT in one "
+                                "step: r3.sbrt.convert -s sbrt=%s"),
+                              output);
+        if (report)
+            describe(output, report, false, format, reading);
+        return;
+    }
+    TemporaryFile channels_file; // the property channels, moved into the SBRT
     sbrt::Model model;
     std::string source;
-    TemporaryFile channels_file; // the property channels, moved into the SBRT
-    if (o.file->answer) {
-        if (!o.variable->answer)
-            G_fatal_error(_("Give variable= (one of those r3.sbrt.convert -p "
-                            "file=%s lists)"),
-                          o.file->answer);
-        sbrt::Classifier classifier = read_classifier(o.rules->answer);
-        const int megabytes = std::atoi(o.memory->answer);
-        if (megabytes < 1)
-            G_fatal_error(_("memory=%s: give at least 1 (MB)"), o.memory->answer);
-        const std::vector<std::string> properties =
-            o.all_properties->answer
-                ? same_grid_variables(o.file->answer, o.variable->answer)
-                : answers_of(o.properties);
-        if (o.all_properties->answer && properties.empty())
-            G_warning(_("-a: file <%s> has no other variable on the grid of '%s'"),
-                      o.file->answer, o.variable->answer);
-        if (!properties.empty())
-            channels_file.path = G_tempfile();
-        model = file_to_sbrt(o.file->answer, o.variable->answer, classifier,
-                             o.override_crs->answer, size_t(megabytes) << 20,
-                             o.preset->answer, properties, channels_file.path, threads);
-        source = std::string("file ") + o.file->answer + " variable " +
-                 o.variable->answer;
-    }
-    else if (o.horizons->answers) {
+    if (o.horizons->answers) {
         model = horizons_to_sbrt(answers_of(o.horizons),
                                  integers_of(o.materials), o.bottom->answer);
         source = std::string("horizons ") + o.horizons->answer;
@@ -418,15 +434,11 @@ void run(const Options &o)
         }
     }
     const std::string preset = o.preset->answer;
-    if (!o.file->answer && preset != "auto" && preset != "none")
+    if (preset != "auto" && preset != "none")
         apply_preset(preset, model);
     sbrt_grass::write_sbrt_map(output, path, model, source, channels_file.path, threads);
     if (set_region)
         set_region_to(output, model.frame());
-    else if (o.file->answer)
-        G_verbose_message(_("For -r, set the current region to the SBRT in one "
-                            "step: r3.sbrt.convert -s sbrt=%s"),
-                          output);
     if (report)
         print_report(output, model, sbrt::stacks_file_info(path), format,
                      sbrt_grass::read_channels_map(output, model).get());

@@ -16,11 +16,11 @@
 #include "util/error.hpp"
 #include "format/format.hpp"
 #include "measure/expected_thickness.hpp"
-#include "scene/level_of_detail.hpp"
 #include "grass.hpp"
 #include "module_errors.hpp"
 #include "raster_metadata.hpp"
 #include "sbrt_manage.hpp"
+#include "sbrt_map_writer.hpp"
 
 namespace sbrt_grass {
 
@@ -192,28 +192,15 @@ void write_sbrt_map(const char *name, const std::string &path,
                     const sbrt::Model &model, const std::string &source,
                     const std::string &channels_file, unsigned threads)
 {
-    std::string history = "created: " + history_date() + "\n";
-    history += std::string("creator: ") + G_whoami() + "\n";
-    history += "source: " + source + "\n";
-    history += std::string("command: ") + G_recreate_command() + "\n";
     try {
-        const sbrt::SbrtLock lock = lock_for_writing(path);
-        sbrt::StacksV2Options options;
-        options.threads = threads;
-        // the coarse level for frames drawn while the camera moves
-        const int factor = sbrt::level_of_detail_factor(model.frame());
-        std::optional<sbrt::Model> coarse;
-        if (factor > 1) {
-            coarse = sbrt::coarsened(model, factor);
-            G_verbose_message(_("Coarse level of detail: %d x %d cells (1 in %d a side)"),
-                              coarse->frame().rows, coarse->frame().cols, factor);
-        }
-        sbrt::write_sbrt(path, model, history, options, channels_file,
-                         coarse ? &*coarse : nullptr);
+        model.validate();
     }
     catch (const sbrt::Error &e) {
         G_fatal_error(_("Unable to write SBRT <%s>: %s"), name, e.what());
     }
+    SbrtMapWriter writer(name, path, model.frame(), threads);
+    writer.add_rows(model);
+    writer.finish({model.materials(), model.vertical_datum()}, source, channels_file);
 }
 
 std::vector<std::string> list_sbrts()

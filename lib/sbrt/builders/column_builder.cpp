@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "builders/column_builder.hpp"
 
+#include "format/format_v2.hpp"
 #include "util/error.hpp"
 
 namespace sbrt {
@@ -13,7 +14,6 @@ ColumnStackBuilder::ColumnStackBuilder(const Frame &frame)
     : frame_(frame), compact_(voxel_tops_fit_compact(frame.depths))
 {
     frame_.validate("ColumnStackBuilder");
-    sizes_.reserve(frame_.cells());
 }
 
 void ColumnStackBuilder::add_column(const int32_t *classes)
@@ -66,11 +66,36 @@ uint32_t ColumnStackBuilder::append(Records &intervals, const ClassRun *runs, si
     return uint32_t(solid_end - column_start);
 }
 
+template <typename Records>
+Model ColumnStackBuilder::band_model(Records &intervals, int rows,
+                                     const std::vector<Material> &legend)
+{
+    const uint64_t cells = uint64_t(rows) * uint64_t(frame_.cols);
+    const int first_row = int(cells_taken_ / uint64_t(frame_.cols));
+    StackIndex index = StackIndex::from_sizes(sizes_.data(), cells);
+    Records taken(intervals.begin(), intervals.begin() + ptrdiff_t(index.total()));
+    intervals.erase(intervals.begin(), intervals.begin() + ptrdiff_t(index.total()));
+    sizes_.erase(sizes_.begin(), sizes_.begin() + ptrdiff_t(cells));
+    cells_taken_ += cells;
+    return Model(frame_rows(frame_, first_row, rows), table_.materials(legend),
+                 std::move(index), IntervalArray(std::move(taken)));
+}
+
+Model ColumnStackBuilder::take_rows(int count, const std::vector<Material> &legend)
+{
+    if (count < 1 || count > rows_ready())
+        fail("ColumnStackBuilder: ", count, " rows asked for, ", rows_ready(), " ready");
+    return compact_ ? band_model(compact_intervals_, count, legend)
+                    : band_model(intervals_, count, legend);
+}
+
 Model ColumnStackBuilder::finish(const std::vector<Material> &legend)
 {
     if (cells_done() != frame_.cells())
         fail("ColumnStackBuilder: got ", cells_done(), " columns, the frame has ",
              frame_.cells(), " cells");
+    if (cells_taken_ > 0)
+        return take_rows(rows_ready(), legend);
     StackIndex index = StackIndex::from_sizes(sizes_.data(), sizes_.size());
     sizes_ = {};
     if (compact_)

@@ -29,19 +29,40 @@ public:
     /// The column of the next cell as runs from the bottom up, their tops
     /// rising to frame.depths; neighbours of one class are merged.
     void add_runs(const ClassRun *runs, size_t count);
-    /// Cells added so far.
-    uint64_t cells_done() const { return sizes_.size(); }
-    /// The model once every cell has its column; `legend` gives labels and
-    /// colours by class id.
+    /// Cells added so far (those taken by take_rows included).
+    uint64_t cells_done() const { return cells_taken_ + sizes_.size(); }
+    /// Whole rows added and not yet taken.
+    int rows_ready() const { return int(sizes_.size() / uint64_t(frame_.cols)); }
+    /// The first `count` rows not yet taken, as a model of their own (its
+    /// frame frame_rows of the model's, its materials those met so far),
+    /// and drops them: an import holds a band of rows, not the model. A
+    /// material keeps its index in every later band and in finish()'s
+    /// model. Throws sbrt::Error where fewer rows are ready.
+    Model take_rows(int count, const std::vector<Material> &legend = {});
+    /// The model once every cell has its column (the rows not taken:
+    /// after take_rows, the last band); `legend` gives labels and colours
+    /// by class id.
     Model finish(const std::vector<Material> &legend = {});
+    /// The materials met so far, EMPTY first (labels and colours from
+    /// `legend`).
+    std::vector<Material> materials(const std::vector<Material> &legend = {}) const
+    {
+        return table_.materials(legend);
+    }
 
 private:
     /// Appends a column's runs to `intervals`; returns its stack size.
     template <typename Records>
     uint32_t append(Records &intervals, const ClassRun *runs, size_t count);
 
+    /// The model of `rows` rows from the first not taken, of the first
+    /// `intervals` records.
+    template <typename Records>
+    Model band_model(Records &intervals, int rows, const std::vector<Material> &legend);
+
     Frame frame_;
-    std::vector<uint32_t> sizes_; ///< per cell done
+    uint64_t cells_taken_ = 0;
+    std::vector<uint32_t> sizes_; ///< per cell added and not taken
     /// the stacks, 4 bytes an interval where the depths allow (always
     /// but past 65535 layers), else 8
     bool compact_;

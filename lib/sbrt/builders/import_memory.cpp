@@ -15,9 +15,11 @@ namespace sbrt {
 
 namespace {
 
-/// ColumnStackBuilder's stack size per cell, StackIndex's count byte and
-/// group offsets (8 bytes per 16 cells), one 4-byte interval.
-constexpr double BYTES_PER_CELL = 4 + 1 + 0.5 + 4;
+/// What an import holds for each cell of the model until it is written
+/// (the model itself only a band at a time): the column's range packed
+/// as the ranges member stores it (4 bytes) and the compressed stacks (a
+/// byte a cell is more than GeoTOP-like columns take).
+constexpr double BYTES_PER_CELL = 4 + 1;
 
 std::string gigabytes(double bytes)
 {
@@ -59,8 +61,8 @@ void check_import_fits(const ImportGrid &grid, uint64_t band_bytes, double avail
              " voxels) needs at least ", gigabytes(needed), " of memory to import (",
              BYTES_PER_CELL, " bytes for each of its ", uint64_t(cells),
              " cells and two bands of ",
-             uint64_t(import_band_bytes(grid, band_bytes) / 2 / 1e6 + 0.5), " MB), more with every interval past the first of a column; this machine "
-             "has ", gigabytes(available), " available. Import a part of it (e.g. "
+             uint64_t(import_band_bytes(grid, band_bytes) / 2 / 1e6 + 0.5),
+             " MB); this machine has ", gigabytes(available), " available. Import a part of it (e.g. "
              "gdalmdimtranslate -subset, ncks -d) or use a larger machine");
 }
 

@@ -25,10 +25,10 @@ struct ImportGrid {
 /// northing row of whole columns.
 double import_band_bytes(const ImportGrid &grid, uint64_t band_bytes);
 
-/// The least an import of `grid` needs: per cell the builder's stack size
-/// (4 bytes), the model's index (1.5) and one interval (4); the
-/// coordinates read (8 bytes a value); two bands. Geological columns hold
-/// more intervals, so the import takes more.
+/// The least an import of `grid` needs: per cell the column's range
+/// (4 bytes, packed) and its compressed stack (about 1; the model is held
+/// a band at a time); the coordinates read (8 bytes a value); two bands. Geological columns hold more intervals, so the
+/// import takes more.
 double import_bytes_at_least(const ImportGrid &grid, uint64_t band_bytes);
 
 /// Throws sbrt::Error naming `what` when `grid` is no SBRT frame (at most

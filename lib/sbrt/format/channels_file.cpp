@@ -587,6 +587,17 @@ void check_header(const ChannelsHeader &h, const Frame &f, const uint8_t *data, 
 
 } // namespace
 
+size_t channels_for_stacks(const MappedFile &file, const Frame &frame, int block_size,
+                           const std::string &what)
+{
+    const ChannelsHeader h = read_header(file.data(), file.size(), what);
+    check_header(h, frame, file.data(), file.size(), what);
+    if (h.block_size != block_size)
+        fail(what, ": channels in blocks of ", h.block_size, " cells for stacks in blocks of ",
+             block_size);
+    return h.count;
+}
+
 PropertyChannels::PropertyChannels(std::shared_ptr<const MappedFile> file, std::string what,
                                    const Model &model)
     : file_(std::move(file)), what_(std::move(what))

@@ -193,6 +193,14 @@ private:
     bool float_bits_ = false;
 };
 
+/// The number of channels in the untrusted channels file `file` (named
+/// `what`), checked to be made for stacks of `frame` in blocks of
+/// `block_size` cells: its header, size and directory checksum (the
+/// spans of each block are checked when a reader first decodes it).
+/// Throws sbrt::Error where it does not fit.
+size_t channels_for_stacks(const MappedFile &file, const Frame &frame, int block_size,
+                           const std::string &what);
+
 /// \brief Where a cell's span lies in its block's decoded values.
 struct CellSlot {
     uint32_t lo = 0, hi = 0; ///< the span

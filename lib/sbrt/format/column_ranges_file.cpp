@@ -6,6 +6,7 @@
 #include "format/column_ranges_file.hpp"
 
 #include <cstring>
+#include <memory>
 
 #include <zstd.h>
 
@@ -24,15 +25,45 @@ constexpr size_t HEADER_BYTES = 8 + 3 * 4 + 8 + 8 + 4 + 8 + 4;
 constexpr uint32_t U16_PAIRS = 0, F32_PAIRS = 1;
 constexpr uint16_t EMPTY_LOW = 0xffff;
 
-/// Whether every range fits u16 pairs exactly (voxel boundaries).
-bool fits_u16(const std::vector<ZRange> &ranges)
+/// Whether a range fits a u16 pair exactly (voxel boundaries).
+bool fits_u16(const ZRange &r)
 {
-    for (const ZRange &r : ranges)
-        if (!r.empty() && !(r.low >= 0 && r.high < float(EMPTY_LOW) &&
-                            float(uint16_t(r.low)) == r.low &&
-                            float(uint16_t(r.high)) == r.high))
-            return false;
-    return true;
+    return r.empty() || (r.low >= 0 && r.high < float(EMPTY_LOW) &&
+                         float(uint16_t(r.low)) == r.low && float(uint16_t(r.high)) == r.high);
+}
+
+void append_range(ByteWriter &raw, const ZRange &r, uint32_t encoding)
+{
+    if (encoding == U16_PAIRS) {
+        raw.u16(r.empty() ? EMPTY_LOW : uint16_t(r.low));
+        raw.u16(r.empty() ? 0 : uint16_t(r.high));
+    }
+    else {
+        raw.f32(r.empty() ? 1.0f : r.low);
+        raw.f32(r.empty() ? 0.0f : r.high);
+    }
+}
+
+/// `raw` zstd-compressed (level 3) as one frame, streamed into a vector
+/// that grows by what it holds, not by the compression bound.
+std::vector<uint8_t> compressed(const std::vector<uint8_t> &raw)
+{
+    const std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> context(ZSTD_createCCtx(),
+                                                                      ZSTD_freeCCtx);
+    ZSTD_CCtx_setParameter(context.get(), ZSTD_c_compressionLevel, 3);
+    ZSTD_CCtx_setPledgedSrcSize(context.get(), raw.size());
+    std::vector<uint8_t> out;
+    std::vector<uint8_t> chunk(ZSTD_CStreamOutSize());
+    ZSTD_inBuffer in = {raw.data(), raw.size(), 0};
+    for (;;) {
+        ZSTD_outBuffer o = {chunk.data(), chunk.size(), 0};
+        const size_t left = ZSTD_compressStream2(context.get(), &o, &in, ZSTD_e_end);
+        if (ZSTD_isError(left))
+            fail("encode_column_ranges: zstd: ", ZSTD_getErrorName(left));
+        out.insert(out.end(), chunk.begin(), chunk.begin() + ptrdiff_t(o.pos));
+        if (left == 0)
+            return out;
+    }
 }
 
 } // namespace
@@ -51,40 +82,59 @@ StacksStamp stacks_stamp(const uint8_t *data, size_t size, const std::string &wh
     return stamp_of(open_stacks_v2(data, size, what).header);
 }
 
-std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, const Frame &frame,
-                                          const StacksStamp &stamp)
+ColumnRangesEncoder::ColumnRangesEncoder(const Frame &frame) : frame_(frame)
 {
-    if (ranges.size() != frame.cells())
-        fail("encode_column_ranges: ", ranges.size(), " ranges for ", frame.cells(), " cells");
-    const uint32_t encoding = fits_u16(ranges) ? U16_PAIRS : F32_PAIRS;
-    ByteWriter raw;
-    for (const ZRange &r : ranges)
-        if (encoding == U16_PAIRS) {
-            raw.u16(r.empty() ? EMPTY_LOW : uint16_t(r.low));
-            raw.u16(r.empty() ? 0 : uint16_t(r.high));
+    ranges_.reserve(size_t(frame.cells()) * 4); // u16 pairs, as voxel models take
+}
+
+void ColumnRangesEncoder::add(const std::vector<ZRange> &ranges)
+{
+    if (cells_ + ranges.size() > frame_.cells())
+        fail("encode_column_ranges: more ranges than the frame's ", frame_.cells(), " cells");
+    for (const ZRange &r : ranges) {
+        if (encoding_ == U16_PAIRS && !fits_u16(r)) {
+            // the rest, and those before, as f32 pairs
+            ByteWriter wide;
+            for (size_t at = 0; at < ranges_.size(); at += 4) {
+                const uint16_t low = uint16_t(load_le(ranges_.bytes().data() + at, 2));
+                const uint16_t high = uint16_t(load_le(ranges_.bytes().data() + at + 2, 2));
+                append_range(wide, low == EMPTY_LOW ? ZRange{} : ZRange{float(low), float(high)},
+                             F32_PAIRS);
+            }
+            ranges_ = std::move(wide);
+            encoding_ = F32_PAIRS;
         }
-        else {
-            raw.f32(r.empty() ? 1.0f : r.low);
-            raw.f32(r.empty() ? 0.0f : r.high);
-        }
-    std::vector<uint8_t> packed(ZSTD_compressBound(raw.size()));
-    const size_t n = ZSTD_compress(packed.data(), packed.size(), raw.bytes().data(),
-                                   raw.size(), 3);
-    if (ZSTD_isError(n))
-        fail("encode_column_ranges: zstd: ", ZSTD_getErrorName(n));
-    packed.resize(n);
+        append_range(ranges_, r, encoding_);
+        ++cells_;
+    }
+}
+
+std::vector<uint8_t> ColumnRangesEncoder::finish(const StacksStamp &stamp)
+{
+    if (cells_ != frame_.cells())
+        fail("encode_column_ranges: ", cells_, " ranges for ", frame_.cells(), " cells");
+    const std::vector<uint8_t> packed = compressed(ranges_.bytes());
+    ranges_ = ByteWriter();
     ByteWriter out;
     out.raw(MAGIC, sizeof MAGIC);
-    out.u32(uint32_t(frame.rows));
-    out.u32(uint32_t(frame.cols));
-    out.u32(encoding);
+    out.u32(uint32_t(frame_.rows));
+    out.u32(uint32_t(frame_.cols));
+    out.u32(encoding_);
     out.u64(stamp.end);
     out.u64(stamp.intervals);
     out.u32(stamp.table_crc);
-    out.u64(n);
-    out.u32(crc32_of(packed.data(), n));
-    out.raw(packed.data(), n);
+    out.u64(packed.size());
+    out.u32(crc32_of(packed.data(), packed.size()));
+    out.raw(packed.data(), packed.size());
     return out.bytes();
+}
+
+std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, const Frame &frame,
+                                          const StacksStamp &stamp)
+{
+    ColumnRangesEncoder encoder(frame);
+    encoder.add(ranges);
+    return encoder.finish(stamp);
 }
 
 std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, size_t size,

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "format/stacks_v2_layout.hpp"
+#include "format/byte_io.hpp"
 #include "model/model.hpp"
 #include "model/z_range.hpp"
 
@@ -46,6 +47,26 @@ StacksStamp stacks_stamp(const uint8_t *data, size_t size, const std::string &wh
 /// row by row (row 0 north), zstd-compressed.
 std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, const Frame &frame,
                                           const StacksStamp &stamp);
+
+/// \brief encode_column_ranges band by band of rows: the ranges held
+/// packed as the member stores them (4 bytes a column of a voxel model,
+/// 8 where a range is not a pair of voxel boundaries up to 65534), not
+/// as ZRange.
+class ColumnRangesEncoder {
+public:
+    explicit ColumnRangesEncoder(const Frame &frame);
+    /// The ranges of the next columns (row by row, row 0 north).
+    void add(const std::vector<ZRange> &ranges);
+    /// The member's bytes, once every column's range was added; throws
+    /// sbrt::Error else.
+    std::vector<uint8_t> finish(const StacksStamp &stamp);
+
+private:
+    Frame frame_;
+    uint32_t encoding_ = 0; ///< u16 pairs until a range does not fit them
+    ByteWriter ranges_;
+    uint64_t cells_ = 0;
+};
 
 /// The ranges of untrusted member bytes for stacks of `frame` stamped
 /// `stamp`; nothing where the member was made from other stacks (stale:

@@ -21,6 +21,7 @@
 #include "model/column_ranges.hpp"
 #include "format/paged_stacks.hpp"
 #include "format/stacks_fields.hpp"
+#include "format/sbrt_writer.hpp"
 #include "format/stacks_v2_layout.hpp"
 
 namespace sbrt {
@@ -47,8 +48,12 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
 
 std::string encode_cats(const Model &model)
 {
+    return encode_cats(model.materials());
+}
+
+std::string encode_cats(const std::vector<Material> &materials)
+{
     std::ostringstream out;
-    const auto &materials = model.materials();
     for (size_t i = 1; i < materials.size(); ++i) {
         std::string label = materials[i].label;
         for (char &ch : label)
@@ -100,8 +105,12 @@ void decode_cats(const std::string &text, std::vector<Material> &materials,
 
 std::string encode_colors(const Model &model)
 {
+    return encode_colors(model.materials());
+}
+
+std::string encode_colors(const std::vector<Material> &materials)
+{
     std::ostringstream out;
-    const auto &materials = model.materials();
     for (size_t i = 1; i < materials.size(); ++i)
         if (materials[i].has_color)
             out << materials[i].id << ' ' << int(materials[i].red) << ':'
@@ -157,10 +166,15 @@ void check_datum(const std::string &datum, const std::string &what)
 
 std::string encode_datum(const Model &model)
 {
+    return encode_datum(model.vertical_datum());
+}
+
+std::string encode_datum(const std::string &datum)
+{
     // what the reader would refuse is never written (an import would
     // leave an SBRT nothing can read)
-    check_datum(model.vertical_datum(), "the vertical datum");
-    return model.vertical_datum() + "\n";
+    check_datum(datum, "the vertical datum");
+    return datum + "\n";
 }
 
 namespace {
@@ -184,8 +198,13 @@ void decode_datum(const std::string &text, Model &model, const std::string &what
 
 std::string encode_header(const Model &model, size_t channels)
 {
-    const Frame &f = model.frame();
-    const Stats s = model.stats();
+    return encode_header(model.frame(), model.materials().size(), model.stats().intervals,
+                         channels);
+}
+
+std::string encode_header(const Frame &f, size_t materials, uint64_t intervals,
+                          size_t channels)
+{
     char text[1024];
     std::snprintf(text, sizeof text,
                   "format:      sbrt\nversion:     %u.%u\n"
@@ -198,8 +217,7 @@ std::string encode_header(const Model &model, size_t channels)
                   "materials:   %zu\nintervals:   %llu\n",
                   unsigned(FORMAT_V2_MAJOR), unsigned(FORMAT_V2_MINOR), f.proj, f.zone, f.north, f.south, f.east,
                   f.west, f.top, f.bottom, f.rows, f.cols, f.depths,
-                  model.materials().size() - 1,
-                  (unsigned long long)s.intervals);
+                  materials - 1, (unsigned long long)intervals);
     std::string header = text;
     if (channels)
         header += "channels:    " + std::to_string(channels) + "\n";
@@ -231,51 +249,9 @@ void write_sbrt(const std::string &directory, const Model &model,
                 const std::string &channels_file, const Model *coarse)
 {
     model.validate();
-    AtomicDirectory out(directory);
-    StacksV2Options stacks_options = options;
-    size_t channels = 0;
-    if (!channels_file.empty()) {
-        // the channels must fit this model and its blocks before they move in
-        const auto file = std::make_shared<const MappedFile>(channels_file);
-        const PropertyChannels check(file, channels_file, model);
-        if (check.block_size() != options.block_size)
-            fail(channels_file, ": channels in blocks of ", check.block_size(),
-                 " cells for stacks in blocks of ", options.block_size);
-        channels = check.size();
-        stacks_options.optional_features |= V2_OPTIONAL_CHANNELS;
-        const std::string target = out.file_path("channels");
-        if (std::rename(channels_file.c_str(), target.c_str()) != 0)
-            out.copy_file("channels", open_regular_file(channels_file), channels_file);
-    }
-    FileSink stacks(out.file_path("stacks"));
-    write_stacks_v2(stacks, model, stacks_options);
-    stacks.finish();
-    {
-        // each column's range, stamped with the stacks written: a paged
-        // model opens without decoding a block
-        const std::string path = out.file_path("stacks");
-        const MappedFile written(open_regular_file(path), path);
-        out.write_file("ranges",
-                       encode_column_ranges(column_ranges(model), model.frame(),
-                                            stacks_stamp(written.data(), written.size(), path)));
-    }
-    if (coarse) {
-        // a complete stacks file of its own (no channels: those are the
-        // exact model's)
-        StacksV2Options coarse_options = options;
-        coarse_options.optional_features &= ~V2_OPTIONAL_CHANNELS;
-        coarse->validate();
-        FileSink lod(out.file_path("stacks_lod"));
-        write_stacks_v2(lod, *coarse, coarse_options);
-        lod.finish();
-    }
-    out.write_file("header", encode_header(model, channels));
-    out.write_file("cats", encode_cats(model));
-    out.write_file("colors", encode_colors(model));
-    if (!model.vertical_datum().empty())
-        out.write_file("datum", encode_datum(model));
-    out.write_file("hist", history);
-    out.commit();
+    SbrtWriter writer(directory, model.frame(), options);
+    writer.add_rows(model);
+    writer.finish({model.materials(), model.vertical_datum()}, history, channels_file, coarse);
 }
 
 void rewrite_legend(const std::string &directory, const Model &model,

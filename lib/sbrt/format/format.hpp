@@ -37,6 +37,7 @@ Model decode_stacks(const uint8_t *data, size_t size, const std::string &what,
 
 /// Text `cats`: one "id:label" line per material with a label.
 std::string encode_cats(const Model &model);
+std::string encode_cats(const std::vector<Material> &materials);
 void decode_cats(const std::string &text, Model &model, const std::string &what);
 /// The same into a material table (EMPTY first).
 void decode_cats(const std::string &text, std::vector<Material> &materials,
@@ -47,6 +48,7 @@ void decode_cats(const std::string &text, std::vector<Material> &materials,
 /// in it take the default palette); older SBRTs have only the colours in
 /// `stacks`.
 std::string encode_colors(const Model &model);
+std::string encode_colors(const std::vector<Material> &materials);
 void decode_colors(const std::string &text, Model &model, const std::string &what);
 void decode_colors(const std::string &text, std::vector<Material> &materials,
                    const std::string &what);
@@ -54,10 +56,13 @@ void decode_colors(const std::string &text, std::vector<Material> &materials,
 /// at most MAX_DATUM_CHARS printable characters, else throws naming `what`.
 constexpr size_t MAX_DATUM_CHARS = 80;
 std::string encode_datum(const Model &model);
+std::string encode_datum(const std::string &datum);
 void decode_datum(const std::string &text, Model &model, const std::string &what);
 
 /// Human-readable `header` (key: value), informational.
 std::string encode_header(const Model &model, size_t channels = 0);
+std::string encode_header(const Frame &frame, size_t materials, uint64_t intervals,
+                          size_t channels = 0);
 
 /// Writes the SBRT directory atomically; `history` goes to `hist`; the
 /// stacks in format v2, streamed block by block into the file. Where

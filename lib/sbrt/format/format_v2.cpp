@@ -21,56 +21,16 @@
 #include "format/block_summary.hpp"
 #include "format/stacks_fields.hpp"
 #include "format/stacks_v2_layout.hpp"
+#include "format/stacks_writer.hpp"
 
 namespace sbrt {
 
 namespace {
 
-struct CompressContext {
-    void operator()(ZSTD_CCtx *c) const { ZSTD_freeCCtx(c); }
-};
 struct DecompressContext {
     void operator()(ZSTD_DCtx *c) const { ZSTD_freeDCtx(c); }
 };
-using CompressorPtr = std::unique_ptr<ZSTD_CCtx, CompressContext>;
 using DecompressorPtr = std::unique_ptr<ZSTD_DCtx, DecompressContext>;
-
-/// The uncompressed bytes of one block (counts, materials, tops) into
-/// `raw`; returns the block's interval count.
-uint32_t encode_block(const Model &model, const BlockGrid &grid, int block,
-                      const StacksV2Widths &w, std::vector<uint8_t> &raw)
-{
-    uint64_t intervals = 0;
-    grid.for_each_cell(block, [&](uint64_t cell) { intervals += model.stack_size(cell); });
-    raw.resize(raw_block_size(w, grid.cells(block), intervals));
-    uint8_t *counts = raw.data();
-    uint8_t *materials = counts + grid.cells(block) * w.count_bytes;
-    uint8_t *tops = materials + intervals * w.material_bytes;
-    const IntervalArray &all = model.intervals();
-    grid.for_each_cell(block, [&](uint64_t cell) {
-        const StackRange stack = model.stack(cell);
-        store_le(counts, stack.size(), w.count_bytes);
-        counts += w.count_bytes;
-        float below = 0;
-        for (uint64_t i = stack.begin; i < stack.end; ++i) {
-            const Interval iv = all[i];
-            store_le(materials, iv.material, w.material_bytes);
-            materials += w.material_bytes;
-            if (w.tops == TopEncoding::VoxelBoundaries) {
-                store_le(tops, uint32_t(iv.top - below), 2);
-                tops += 2;
-                below = iv.top;
-            }
-            else {
-                uint32_t bits;
-                std::memcpy(&bits, &iv.top, 4);
-                store_le(tops, bits, 4); // little-endian on any host
-                tops += 4;
-            }
-        }
-    });
-    return uint32_t(intervals);
-}
 
 /// Whether `block` holds a cell within one cell of `area` (all, without).
 std::vector<char> blocks_meeting(const BlockGrid &grid, const Frame &f,
@@ -138,85 +98,9 @@ StacksV2Widths widths_for(const Model &model)
 
 void write_stacks_v2(ByteSink &sink, const Model &model, const StacksV2Options &options)
 {
-    const Frame &f = model.frame();
-    if (options.block_size < 1 || uint32_t(options.block_size) > MAX_BLOCK_SIZE)
-        fail("write_stacks_v2: block size ", options.block_size, " not in 1..",
-             MAX_BLOCK_SIZE);
-    HeaderV2 h;
-    h.optional = options.optional_features | (options.summary ? V2_OPTIONAL_SUMMARY : 0);
-    h.minor = options.summary ? FORMAT_V2_MINOR : 0;
-    h.frame = f;
-    h.materials = uint32_t(model.materials().size());
-    h.intervals = model.intervals().size();
-    h.block_size = uint32_t(options.block_size);
-    h.widths = widths_for(model);
-    const uint64_t start = sink.size();
-    sink.append(std::vector<uint8_t>(STACKS_V2_HEADER_SIZE).data(), STACKS_V2_HEADER_SIZE);
-
-    ByteWriter materials;
-    write_materials(materials, model.materials());
-    h.materials_at = STACKS_V2_HEADER_SIZE;
-    h.crc_materials = crc32_of(materials.bytes().data(), materials.size());
-    sink.append(materials.bytes().data(), materials.size());
-
-    // blocks compressed in parallel a batch at a time, written in order
-    const BlockGrid grid{f.rows, f.cols, options.block_size};
-    const unsigned threads = thread_count(options.threads);
-    const int batch = int(threads) * 4;
-    std::vector<BlockEntry> entries(size_t(grid.count()));
-    std::vector<BlockSummary> summaries(options.summary ? size_t(grid.count()) : 0);
-    std::vector<std::vector<uint8_t>> compressed(static_cast<size_t>(batch));
-    for (int first = 0; first < grid.count(); first += batch) {
-        const int last = std::min(grid.count(), first + batch);
-        for_each_row(first, last, threads, [&](int block) {
-            std::vector<uint8_t> raw;
-            const uint32_t intervals = encode_block(model, grid, block, h.widths, raw);
-            if (raw.size() > UINT32_MAX / 2)
-                fail("write_stacks_v2: block ", block, " holds ", raw.size(),
-                     " bytes; write smaller blocks");
-            std::vector<uint8_t> &out = compressed[size_t(block - first)];
-            out.resize(ZSTD_compressBound(raw.size()));
-            const CompressorPtr context(ZSTD_createCCtx());
-            const size_t n = ZSTD_compressCCtx(context.get(), out.data(), out.size(),
-                                               raw.data(), raw.size(), options.zstd_level);
-            if (ZSTD_isError(n))
-                fail("write_stacks_v2: zstd: ", ZSTD_getErrorName(n));
-            out.resize(n);
-            BlockEntry &e = entries[size_t(block)];
-            e.compressed = uint32_t(n);
-            e.raw = uint32_t(raw.size());
-            e.crc = crc32_of(out.data(), n);
-            e.intervals = intervals;
-            if (options.summary) {
-                BlockSummarizer summary(model.materials().size());
-                grid.for_each_cell(block, [&](uint64_t cell) { summary.add_stack(model, cell); });
-                summaries[size_t(block)] = summary.finish();
-            }
-        });
-        for (int block = first; block < last; ++block) {
-            const std::vector<uint8_t> &out = compressed[size_t(block - first)];
-            entries[size_t(block)].offset = sink.size() - start;
-            sink.append(out.data(), out.size());
-        }
-    }
-    if (options.summary) {
-        const std::vector<uint8_t> section = encode_block_summaries(summaries);
-        sink.append(section.data(), section.size());
-    }
-    ByteWriter table;
-    for (const BlockEntry &e : entries) {
-        table.u64(e.offset);
-        table.u32(e.compressed);
-        table.u32(e.raw);
-        table.u32(e.intervals);
-        table.u32(e.crc);
-    }
-    h.table_at = sink.size() - start;
-    h.crc_table = crc32_of(table.bytes().data(), table.size());
-    sink.append(table.bytes().data(), table.size());
-    h.end = sink.size() - start;
-    const std::vector<uint8_t> header = encode_header_v2(h);
-    sink.overwrite(start, header.data(), header.size());
+    StacksWriter writer(model.frame(), options);
+    writer.add_rows(model);
+    writer.finish(sink, model.materials());
 }
 
 std::vector<uint8_t> encode_stacks_v2(const Model &model, const StacksV2Options &options)

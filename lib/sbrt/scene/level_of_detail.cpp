@@ -50,35 +50,57 @@ int level_of_detail_factor(const Frame &frame)
     return factor;
 }
 
-Model coarsened(const Model &model, int factor)
+CoarseLevelBuilder::CoarseLevelBuilder(const Frame &fine, int factor) : fine_(fine), frame_(fine)
 {
     if (factor < 1)
         fail("coarsened: factor ", factor, " is not 1 or more");
-    const Frame &fine = model.frame();
-    Frame frame = fine; // the same extent and vertical frame
-    frame.rows = int((int64_t(fine.rows) + factor - 1) / factor);
-    frame.cols = int((int64_t(fine.cols) + factor - 1) / factor);
+    // the same extent and vertical frame
+    frame_.rows = int((int64_t(fine.rows) + factor - 1) / factor);
+    frame_.cols = int((int64_t(fine.cols) + factor - 1) / factor);
+    fine_cols_.resize(size_t(frame_.cols));
+    for (int c = 0; c < frame_.cols; ++c)
+        fine_cols_[size_t(c)] = fine_index(c, fine.cols, frame_.cols);
+    offsets_.reserve(size_t(frame_.cells()) + 1);
+    offsets_.push_back(0);
+}
 
+void CoarseLevelBuilder::add_rows(const Model &band, int first_row)
+{
+    const int rows = band.frame().rows;
+    if (band.frame().cols != fine_.cols || first_row < 0 || rows > fine_.rows - first_row)
+        fail("coarsened: a band of ", rows, " x ", band.frame().cols, " cells at row ",
+             first_row, " is not within a model of ", fine_.rows, " x ", fine_.cols);
     // each coarse cell: the stack of the fine cell under its centre
-    std::vector<int> fine_cols(size_t(frame.cols));
-    for (int c = 0; c < frame.cols; ++c)
-        fine_cols[size_t(c)] = fine_index(c, fine.cols, frame.cols);
-    std::vector<uint32_t> offsets;
-    offsets.reserve(size_t(frame.cells()) + 1);
-    offsets.push_back(0);
-    Intervals intervals;
-    for (int r = 0; r < frame.rows; ++r) {
-        const int fine_row = fine_index(r, fine.rows, frame.rows);
-        for (int c = 0; c < frame.cols; ++c) {
-            const StackRange stack = model.stack(model.cell_index(fine_row, fine_cols[size_t(c)]));
+    for (; next_row_ < frame_.rows; ++next_row_) {
+        const int fine_row = fine_index(next_row_, fine_.rows, frame_.rows);
+        if (fine_row < first_row)
+            fail("coarsened: fine row ", fine_row, " was not given");
+        if (fine_row >= first_row + rows)
+            return;
+        for (int c = 0; c < frame_.cols; ++c) {
+            const StackRange stack =
+                band.stack(band.cell_index(fine_row - first_row, fine_cols_[size_t(c)]));
             for (uint64_t i = stack.begin; i < stack.end; ++i)
-                intervals.push_back(model.intervals()[i]);
-            if (intervals.size() > UINT32_MAX)
+                intervals_.push_back(band.intervals()[i]);
+            if (intervals_.size() > UINT32_MAX)
                 fail("coarsened: more than ", uint64_t(UINT32_MAX), " intervals");
-            offsets.push_back(uint32_t(intervals.size()));
+            offsets_.push_back(uint32_t(intervals_.size()));
         }
     }
-    Model out(frame, model.materials(), offsets, IntervalArray(std::move(intervals)));
+}
+
+Model CoarseLevelBuilder::finish(std::vector<Material> materials)
+{
+    if (next_row_ != frame_.rows)
+        fail("coarsened: ", next_row_, " of ", frame_.rows, " coarse rows were given");
+    return Model(frame_, std::move(materials), offsets_, IntervalArray(std::move(intervals_)));
+}
+
+Model coarsened(const Model &model, int factor)
+{
+    CoarseLevelBuilder builder(model.frame(), factor);
+    builder.add_rows(model, 0);
+    Model out = builder.finish(model.materials());
     out.set_vertical_datum(model.vertical_datum());
     return out;
 }

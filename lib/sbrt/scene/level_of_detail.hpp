@@ -32,6 +32,28 @@ int level_of_detail_factor(const Frame &frame);
 /// copy). Throws sbrt::Error for a factor below 1.
 Model coarsened(const Model &model, int factor);
 
+/// \brief coarsened() band by band of fine rows: an import that holds a
+/// band of the model at a time builds its coarse level as it goes.
+class CoarseLevelBuilder {
+public:
+    /// For the model on `fine` at `factor` (>= 1; throws sbrt::Error else).
+    CoarseLevelBuilder(const Frame &fine, int factor);
+    /// The fine model's rows [first_row, first_row + band rows), held by
+    /// `band` as a model of their own; bands come in order. Takes the
+    /// coarse rows whose fine row lies in them.
+    void add_rows(const Model &band, int first_row);
+    /// The coarse model (vertical datum left to the caller), once every
+    /// fine row was given; throws sbrt::Error else.
+    Model finish(std::vector<Material> materials);
+
+private:
+    Frame fine_, frame_;
+    std::vector<int> fine_cols_; ///< the fine column under each coarse one
+    int next_row_ = 0;           ///< the first coarse row not yet built
+    std::vector<uint32_t> offsets_;
+    Intervals intervals_;
+};
+
 } // namespace sbrt
 
 #endif

@@ -124,3 +124,30 @@ TEST(ColumnRangesFile, RangesOfContinuousTopsRoundTrip)
     const std::vector<uint8_t> high = encode_column_ranges(ranges, f, stamp);
     EXPECT_THROW(decode_column_ranges(high.data(), high.size(), "r", f, stamp), Error);
 }
+
+TEST(ColumnRangesFile, BandsTurnToF32PairsWhereALaterRangeNeedsThem)
+{
+    // voxel boundaries first (packed as u16 pairs), a continuous top later
+    Frame f;
+    f.rows = 3;
+    f.cols = 2;
+    f.depths = 10;
+    std::vector<ZRange> ranges(f.cells());
+    ranges[0] = {0.0f, 2.0f};
+    ranges[2] = {3.0f, 9.0f};
+    ranges[5] = {1.0f, 7.5f};
+    const StacksStamp stamp{1, 2, 3};
+    ColumnRangesEncoder encoder(f);
+    for (int row = 0; row < f.rows; ++row)
+        encoder.add(std::vector<ZRange>(ranges.begin() + 2 * row, ranges.begin() + 2 * row + 2));
+    const std::vector<uint8_t> bytes = encoder.finish(stamp);
+    EXPECT_EQ(bytes, encode_column_ranges(ranges, f, stamp));
+    const auto back = decode_column_ranges(bytes.data(), bytes.size(), "r", f, stamp);
+    ASSERT_TRUE(back);
+    EXPECT_TRUE(same(*back, ranges));
+    // a range too many, or one missing, is refused
+    EXPECT_THROW(encoder.add({ZRange{}}), Error);
+    ColumnRangesEncoder short_of_one(f);
+    short_of_one.add(std::vector<ZRange>(5));
+    EXPECT_THROW(short_of_one.finish(stamp), Error);
+}
