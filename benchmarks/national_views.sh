@@ -4,8 +4,10 @@
 # PURPOSE:   Every figure of issue 49's table in one run, per model: the
 #            1056 x 884 default view and the top view of every cell end to
 #            end (r3.sbrt.render, a new process), r3.sbrt.convert -p and
-#            -g, each cold (page cache dropped where permitted, a new
-#            process) and warm (run again), with peak RSS; the view server
+#            -g, r3.sbrt.what (1000 points), r3.sbrt.profile (across the
+#            model) and r3.sbrt.surface (a 400 x 400-cell region), each
+#            cold (page cache dropped where permitted, a new process) and
+#            warm (run again), with peak RSS; the view server
 #            (r3.sbrt.render --serve: first frame, 400 x 300 orbit frames,
 #            a stratum hidden + frame; cold and warm, server_frames.py);
 #            g.gui.sbrt 800 x 600 under Xvfb (viewer_benchmark.py: full and
@@ -34,8 +36,9 @@
 #                             SBRT_BENCH_DATA (/tmp/r3sbrt_bench)
 #                   T S A B C or CxRxD  a demo model (tools/bench_model.sh)
 #            LIMIT: seconds for any one measured command (1800)
-#            MEMORY: adds memory=MEMORY to the r3.sbrt.render and
-#            r3.sbrt.convert runs (their rows say so where refused)
+#            MEMORY: adds memory=MEMORY to the r3.sbrt.render, convert,
+#            what, profile and surface runs (their rows say so where
+#            refused)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
@@ -103,6 +106,26 @@ r3.sbrt.convert -s sbrt="$name" # the top view's maps in the model's grid
 cold_warm top r3.sbrt.render --o input="$name" view=top output=views_top png="$dir/top.png" "${mem[@]}"
 cold_warm convert_p r3.sbrt.convert -p sbrt="$name" "${mem[@]}"
 cold_warm convert_g r3.sbrt.convert -g sbrt="$name" "${mem[@]}"
+echo "national_views: $name: r3.sbrt.what, r3.sbrt.profile, r3.sbrt.surface" >&2
+# 1000 points spread over the extent (the same each run), a profile west to
+# east across the middle, the thickness of every class in a 400 x 400-cell
+# region at the centre
+points=$(awk -v n="$north" -v s="$south" -v e="$east" -v w="$west" 'BEGIN {
+    for (i = 0; i < 1000; i++) {
+        fx = i * 0.6180339887; fy = i * 0.4142135624 + 0.5
+        printf "%s%.1f,%.1f", i ? "," : "", w + (e - w) * (fx - int(fx)), s + (n - s) * (fy - int(fy))
+    } }')
+cold_warm what r3.sbrt.what input="$name" coordinates="$points" format=csv output="$dir/what.csv" "${mem[@]}"
+middle=$(echo "($north + $south) / 2" | bc -l)
+cold_warm profile r3.sbrt.profile --o input="$name" coordinates="$west,$middle,$east,$middle" \
+    output=views_profile "${mem[@]}"
+half_ns=$(echo "200 * $nsres" | bc -l) half_ew=$(echo "200 * $ewres" | bc -l)
+centre_e=$(echo "($east + $west) / 2" | bc -l)
+g.region n="$(echo "$middle + $half_ns" | bc -l)" s="$(echo "$middle - $half_ns" | bc -l)" \
+    e="$(echo "$centre_e + $half_ew" | bc -l)" w="$(echo "$centre_e - $half_ew" | bc -l)" \
+    nsres="$nsres" ewres="$ewres"
+cold_warm surface r3.sbrt.surface --o input="$name" thickness=views_thickness "${mem[@]}"
+r3.sbrt.convert -s sbrt="$name"
 echo "national_views: $name: view server" >&2
 for state in cold warm; do
     [ $state = cold ] && drop
@@ -234,6 +257,11 @@ for state in ("cold", "warm"):
 for flag in ("p", "g"):
     for state in ("cold", "warm"):
         rows.append(("r3.sbrt.convert -%s, %s" % (flag, state), timed("convert_%s_%s" % (flag, state))))
+for key, label in (("what", "r3.sbrt.what, 1000 points spread over the model"),
+                   ("profile", "r3.sbrt.profile, west to east across the middle"),
+                   ("surface", "r3.sbrt.surface thickness=, 400 x 400 cells at the centre")):
+    for state in ("cold", "warm"):
+        rows.append(("%s, %s" % (label, state), timed("%s_%s" % (key, state))))
 for state in ("cold", "warm"):
     part = "server_" + state
     rows.append(("view server: first frame 800x600 (process, model read, scene), %s" % state,

@@ -92,8 +92,8 @@ Options define_options()
 
     o.memory = G_define_standard_option(G_OPT_MEMORYMB);
     o.memory->description =
-        _("Memory for a band of file= read at once (the SBRT itself comes on "
-          "top)");
+        _("Memory for a band of file= read at once (the SBRT is written band "
+          "by band as it is converted)");
     o.memory->guisection = _("File");
 
     o.output = G_define_option();

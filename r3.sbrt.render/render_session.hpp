@@ -30,7 +30,9 @@
 /// Errors are sbrt::Error: the caller decides whether they end the run.
 class RenderSession {
 public:
-    RenderSession() = default;
+    /// `scenes_change`: requests after the first may hide or cut what it
+    /// does not (the view server; read_model).
+    explicit RenderSession(bool scenes_change = false) : scenes_change_(scenes_change) {}
     RenderSession(const RenderSession &) = delete;
     RenderSession &operator=(const RenderSession &) = delete;
 
@@ -127,6 +129,7 @@ private:
     std::string context_key_;
     std::unique_ptr<sbrt_gl::GlContext> context_;
     /// exact, coarse; after the context (their backends use it)
+    bool scenes_change_;
     Level levels_[2];
     Level *at_ = &levels_[0]; ///< the level drawn
     /// The model key whose SBRT was found without a coarse level.

@@ -228,7 +228,7 @@ StacksFileInfo stacks_file_info(const std::string &directory)
 {
     const MemberDirectory dir(directory);
     const std::string path = dir.member_path("stacks");
-    const MappedFile file(dir.open_regular("stacks"), path);
+    const MappedFile file(dir.open_regular("stacks"), path, MappedFile::Pages::on_demand);
     StacksFileInfo info;
     info.bytes = file.size();
     info.major = stacks_major_version(file.data(), file.size());
@@ -311,8 +311,11 @@ Model read_sbrt(const std::string &directory, const ReadOptions &options)
     // members relative to the directory: no links, no FIFOs (issue 28)
     const MemberDirectory dir(directory);
     const std::string stacks_path = dir.member_path("stacks");
-    const auto file =
-        std::make_shared<const MappedFile>(dir.open_regular("stacks"), stacks_path);
+    // a read of a part (an area, points, rows) touches the blocks it needs
+    const bool whole = !options.area && !options.points && !options.rows;
+    const auto file = std::make_shared<const MappedFile>(
+        dir.open_regular("stacks"), stacks_path,
+        whole ? MappedFile::Pages::populated : MappedFile::Pages::on_demand);
     Model model =
         decode_stacks(file->data(), file->size(), stacks_path, file, options);
     std::string datum;
@@ -325,8 +328,9 @@ std::optional<Model> read_sbrt_paged(const std::string &directory, const Paging 
 {
     const MemberDirectory dir(directory);
     const std::string stacks_path = dir.member_path("stacks");
-    const auto file =
-        std::make_shared<const MappedFile>(dir.open_regular("stacks"), stacks_path);
+    // blocks are read as the view reaches them
+    const auto file = std::make_shared<const MappedFile>(dir.open_regular("stacks"),
+                                                         stacks_path, MappedFile::Pages::on_demand);
     std::vector<uint8_t> member_bytes;
     StoredRanges stored;
     if (const auto member = dir.open_regular_if_present("ranges")) {
@@ -335,7 +339,7 @@ std::optional<Model> read_sbrt_paged(const std::string &directory, const Paging 
         stored.bytes = &member_bytes;
     }
     std::optional<Model> model =
-        open_paged_model(file->data(), file->size(), stacks_path, file, paging, stored);
+        open_paged_model(file->data(), file->size(), stacks_path, file, paging, stored, file.get());
     if (!model)
         return std::nullopt;
     std::string datum;
@@ -361,7 +365,7 @@ std::optional<CoarseLevel> read_sbrt_lod(const std::string &directory)
     CoarseLevel level;
     {
         const std::string stacks_path = dir.member_path("stacks");
-        const MappedFile file(dir.open_regular("stacks"), stacks_path);
+        const MappedFile file(dir.open_regular("stacks"), stacks_path, MappedFile::Pages::on_demand);
         if (stacks_major_version(file.data(), file.size()) != FORMAT_V2_MAJOR)
             fail(path, ": a coarse level beside stacks of format 1");
         if (const auto summary = read_stacks_summary(file.data(), file.size(), stacks_path)) {
@@ -394,7 +398,7 @@ std::optional<ModelSummary> read_sbrt_summary(const std::string &directory)
     const std::string stacks_path = dir.member_path("stacks");
     std::optional<ModelSummary> summary;
     {
-        const MappedFile file(dir.open_regular("stacks"), stacks_path);
+        const MappedFile file(dir.open_regular("stacks"), stacks_path, MappedFile::Pages::on_demand);
         summary = read_stacks_summary(file.data(), file.size(), stacks_path);
     }
     if (!summary)

@@ -21,21 +21,33 @@ class FileDescriptor;
 /// waited on).
 class MappedFile {
 public:
-    explicit MappedFile(const std::string &path);
+    /// Whether every page is read in when mapped (one call instead of a
+    /// page fault per 4 KiB: for a file read whole) or as it is touched
+    /// (for a file read in part: a paged model's blocks, a summary).
+    enum class Pages { populated, on_demand };
+    explicit MappedFile(const std::string &path, Pages pages = Pages::populated);
     /// Maps the regular file open as `file` (which may be closed after);
     /// `what` names it in errors.
-    MappedFile(const FileDescriptor &file, const std::string &what);
+    MappedFile(const FileDescriptor &file, const std::string &what,
+               Pages pages = Pages::populated);
     ~MappedFile();
     MappedFile(const MappedFile &) = delete;
     MappedFile &operator=(const MappedFile &) = delete;
 
     const uint8_t *data() const { return static_cast<const uint8_t *>(data_); }
     size_t size() const { return size_; }
+    /// Drops the pages holding [data, data + size) of this mapping, and
+    /// those Linux mapped around them (fault-around: the aligned 64 KiB),
+    /// from the process's resident memory (madvise MADV_DONTNEED), never
+    /// past the mapping: bytes read once, whose next read faults them in
+    /// again from the page cache.
+    void release(const uint8_t *data, size_t size) const;
 
 private:
     void *data_ = nullptr;
     size_t size_ = 0;
 };
+
 
 } // namespace sbrt
 

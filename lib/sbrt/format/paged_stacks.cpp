@@ -10,18 +10,27 @@
 #include "format/column_ranges_file.hpp"
 
 #include "format/block_summary.hpp"
+#include "format/mapped_file.hpp"
 #include "format/stacks_fields.hpp"
 
 namespace sbrt {
 
-uint64_t skipping_bytes(const Frame &frame)
+uint64_t skipping_bytes(const Frame &frame, bool level_0_shared)
 {
-    // each column's range, and the pyramid over them (its levels add a
-    // third to its first)
-    return frame.cells() * sizeof(ZRange) * 7 / 3;
+    // each column's range, and the pyramid over them: its level 0 (a copy
+    // of the ranges, narrowed, unless shared) and the levels above, a
+    // third of it
+    const uint64_t ranges = frame.cells() * sizeof(ZRange);
+    return level_0_shared ? ranges * 4 / 3 : ranges * 7 / 3;
 }
 
 namespace {
+
+/// Of what the budget leaves for blocks, one part in HEAP_SHARE is left to
+/// the heap: the memory of dropped blocks that glibc keeps in its arenas
+/// for the next ones rather than returning it (a national view's resident
+/// memory passed its blocks' share by an eighth without it).
+constexpr uint64_t HEAP_SHARE = 8;
 
 /// Bytes of the column ranges `paging` holds: the ranges and the pyramid
 /// over them; the ranges alone where stored; none.
@@ -30,6 +39,8 @@ uint64_t ranges_bytes(const ModelSummary &summary, const Paging &paging)
     switch (paging.column_ranges) {
     case Paging::Ranges::needed:
         return skipping_bytes(summary.frame);
+    case Paging::Ranges::needed_as_level_0:
+        return skipping_bytes(summary.frame, true);
     case Paging::Ranges::where_stored:
         return summary.frame.cells() * sizeof(ZRange);
     case Paging::Ranges::none:
@@ -40,10 +51,15 @@ uint64_t ranges_bytes(const ModelSummary &summary, const Paging &paging)
 
 } // namespace
 
+uint64_t room_for_blocks(uint64_t blocks)
+{
+    return blocks + (blocks + HEAP_SHARE - 2) / (HEAP_SHARE - 1);
+}
+
 uint64_t least_budget(const ModelSummary &summary, const Paging &paging)
 {
     return ranges_bytes(summary, paging) + paging.reserved_bytes +
-           summary.largest_decoded_block();
+           room_for_blocks(summary.largest_decoded_block());
 }
 
 uint64_t block_budget(const ModelSummary &summary, const Paging &paging)
@@ -53,27 +69,29 @@ uint64_t block_budget(const ModelSummary &summary, const Paging &paging)
     const uint64_t least = least_budget(summary, paging);
     if (paging.budget_bytes < least) {
         const auto mb = [](uint64_t bytes) { return (bytes >> 20) + 1; };
-        const char *ranges_are = paging.column_ranges == Paging::Ranges::needed
+        const char *ranges_are = paging.column_ranges != Paging::Ranges::where_stored
                                      ? "each column's range and the empty-space pyramid over "
                                        "them, "
                                      : "each column's range, ";
         fail("a memory budget (", paging.budget_name, ") of ", paging.budget_bytes >> 20,
              " MB is less than the ", mb(least), " MB this model needs at least (",
              ranges ? ranges_are : "", ranges ? std::to_string(mb(ranges)) + " MB; " : "",
-             "its largest block decoded, ", mb(block), " MB",
+             "its largest block decoded and the heap's share, ", mb(room_for_blocks(block)),
+             " MB",
              paging.reserved_bytes ? "; the rest of this process (its code, buffers and a "
                                      "block for each thread), "
                                    : "",
              paging.reserved_bytes ? std::to_string(mb(paging.reserved_bytes)) + " MB" : "",
              "): give ", paging.budget_name, " at least ", mb(least));
     }
-    return paging.budget_bytes - ranges - paging.reserved_bytes;
+    const uint64_t room = paging.budget_bytes - ranges - paging.reserved_bytes;
+    return room - room / HEAP_SHARE;
 }
 
 std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
                                       const std::string &what,
                                       std::shared_ptr<const void> keep, const Paging &paging,
-                                      const StoredRanges &stored)
+                                      const StoredRanges &stored, const MappedFile *mapping)
 {
     if (stacks_major_version(data, size) != FORMAT_V2_MAJOR)
         return std::nullopt;
@@ -89,14 +107,22 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     if (!summary)
         return std::nullopt;
     const uint64_t blocks_budget = block_budget(*summary, paging);
-    auto decode = [data, layout, what, keep = std::move(keep)](int block) {
-        return decode_stack_block(data, *layout, block, what);
+    auto decode = [data, layout, what, mapping, keep = std::move(keep)](int block) {
+        StackBlock decoded = decode_stack_block(data, *layout, block, what);
+        // its compressed bytes leave the process's memory (the page cache
+        // keeps them): a view of many blocks holds its budget
+        const BlockEntry &entry = layout->entries[size_t(block)];
+        if (mapping)
+            mapping->release(data + entry.offset, entry.compressed);
+        return decoded;
     };
     auto pages = std::make_shared<StackPages>(summary->frame, int(layout->grid.size),
                                               std::move(decode), blocks_budget,
                                               paging.budget_name, paging.threads,
                                               std::move(ranges),
-                                              paging.column_ranges == Paging::Ranges::needed);
+                                              paging.column_ranges == Paging::Ranges::needed ||
+                                                  paging.column_ranges ==
+                                                      Paging::Ranges::needed_as_level_0);
     // each block's classes: hiding one prepares only the blocks that hold it
     std::vector<std::vector<uint16_t>> materials;
     for (BlockSummary &block : summary->blocks)

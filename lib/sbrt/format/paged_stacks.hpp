@@ -21,6 +21,8 @@
 
 namespace sbrt {
 
+class MappedFile;
+
 /// \brief How a paged model holds its blocks.
 struct Paging {
     /// the most the model takes: decoded blocks, each column's range and
@@ -35,6 +37,9 @@ struct Paging {
     /// \brief Which column ranges a paged model holds.
     enum class Ranges {
         needed,       ///< the tracer's (skipping, framing): stored, else read from every block
+        /// the same, for a scene that narrows no cell (nothing hidden or
+        /// cut): the empty-space pyramid's level 0 is they, not a copy
+        needed_as_level_0,
         where_stored, ///< where a member holds them (a map of tops drawn cheaply), else none
         none,         ///< a reader of single columns (a virtual borehole)
     };
@@ -42,16 +47,22 @@ struct Paging {
 };
 
 /// Bytes of a paged model's column ranges and empty-space pyramid over
-/// `frame` (what its budget holds beside the blocks).
-uint64_t skipping_bytes(const Frame &frame);
+/// `frame` (what its budget holds beside the blocks); `level_0_shared`:
+/// the pyramid's level 0 is the ranges (Ranges::needed_as_level_0).
+uint64_t skipping_bytes(const Frame &frame, bool level_0_shared = false);
 /// The bytes left for decoded blocks where the budget of `paging` holds
 /// the model's column ranges and pyramid (where read) and the reserved
 /// bytes too;
 /// throws sbrt::Error, saying what to give, where that leaves less than
 /// its largest block decoded.
 uint64_t block_budget(const ModelSummary &summary, const Paging &paging);
+/// The part of a budget that holds `blocks` bytes of decoded blocks: an
+/// eighth of what is left for blocks goes to the heap (glibc keeps the
+/// memory of dropped blocks for the next).
+uint64_t room_for_blocks(uint64_t blocks);
 /// The least budget `paging` could have for the model of `summary`: its
-/// column ranges (and pyramid), the reserved bytes and its largest block.
+/// column ranges (and pyramid), the reserved bytes and the room for its
+/// largest block.
 uint64_t least_budget(const ModelSummary &summary, const Paging &paging);
 
 /// Block `block` of the opened file `data`, decompressed, its checksum,
@@ -71,10 +82,14 @@ struct StoredRanges {
 /// empty-space pyramid and the framing) is read from `stored` where it
 /// was made from these stacks (a damaged member throws), else from every
 /// block once on opening; blocks stay held within the budget.
+/// `mapping`, where given, is the file mapping `data` lies in (`keep`
+/// holds it): each block's bytes leave the process's resident memory once
+/// decoded (MappedFile::release).
 std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
                                       const std::string &what,
                                       std::shared_ptr<const void> keep, const Paging &paging,
-                                      const StoredRanges &stored = {});
+                                      const StoredRanges &stored = {},
+                                      const MappedFile *mapping = nullptr);
 
 } // namespace sbrt
 

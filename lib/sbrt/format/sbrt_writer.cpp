@@ -51,7 +51,7 @@ void SbrtWriter::finish(const Legend &legend, const std::string &history,
         // each column's range, stamped with the stacks written: a paged
         // model opens without decoding a block
         const std::string path = out_.file_path("stacks");
-        const MappedFile written(open_regular_file(path), path);
+        const MappedFile written(open_regular_file(path), path, MappedFile::Pages::on_demand);
         out_.write_file("ranges",
                         ranges_.finish(stacks_stamp(written.data(), written.size(), path)));
     }
