@@ -38,7 +38,7 @@
 #            LIMIT: seconds for any one measured command (1800)
 #            MEMORY: adds memory=MEMORY to the r3.sbrt.render, convert,
 #            what, profile and surface runs (their rows say so where
-#            refused)
+#            refused); x16 runs with memory=2000 where MEMORY is not given
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
@@ -108,14 +108,14 @@ cold_warm convert_p r3.sbrt.convert -p sbrt="$name" "${mem[@]}"
 cold_warm convert_g r3.sbrt.convert -g sbrt="$name" "${mem[@]}"
 echo "national_views: $name: r3.sbrt.what, r3.sbrt.profile, r3.sbrt.surface" >&2
 # 1000 points spread over the extent (the same each run), a profile west to
-# east across the middle, the thickness of every class in a 400 x 400-cell
+# east across the middle, the thickness of one class in a 400 x 400-cell
 # region at the centre
 points=$(awk -v n="$north" -v s="$south" -v e="$east" -v w="$west" 'BEGIN {
     for (i = 0; i < 1000; i++) {
         fx = i * 0.6180339887; fy = i * 0.4142135624 + 0.5
         printf "%s%.1f,%.1f", i ? "," : "", w + (e - w) * (fx - int(fx)), s + (n - s) * (fy - int(fy))
     } }')
-cold_warm what r3.sbrt.what input="$name" coordinates="$points" format=csv output="$dir/what.csv" "${mem[@]}"
+cold_warm what r3.sbrt.what --o input="$name" coordinates="$points" format=csv output="$dir/what.csv" "${mem[@]}"
 middle=$(echo "($north + $south) / 2" | bc -l)
 cold_warm profile r3.sbrt.profile --o input="$name" coordinates="$west,$middle,$east,$middle" \
     output=views_profile "${mem[@]}"
@@ -124,12 +124,15 @@ centre_e=$(echo "($east + $west) / 2" | bc -l)
 g.region n="$(echo "$middle + $half_ns" | bc -l)" s="$(echo "$middle - $half_ns" | bc -l)" \
     e="$(echo "$centre_e + $half_ew" | bc -l)" w="$(echo "$centre_e - $half_ew" | bc -l)" \
     nsres="$nsres" ewres="$ewres"
-cold_warm surface r3.sbrt.surface --o input="$name" thickness=views_thickness "${mem[@]}"
+# the class most often met by the points above
+set_class=$(awk -F, 'NR > 1 && $8 != "" { n[$8]++ } END { for (c in n) if (n[c] > most) { most = n[c]; best = c } print best }' "$dir/what.csv")
+cold_warm surface r3.sbrt.surface --o input="$name" classes="${set_class:-1}" \
+    thickness=views_thickness "${mem[@]}"
 r3.sbrt.convert -s sbrt="$name"
 echo "national_views: $name: view server" >&2
 for state in cold warm; do
     [ $state = cold ] && drop
-    timeout "$limit" python3 "$here/server_frames.py" "$name" 800 600 400 300 12 \
+    SBRT_MEMORY=$memory timeout "$limit" python3 "$here/server_frames.py" "$name" 800 600 400 300 12 \
         >"$dir/server_$state.json" 2>"$dir/err" ||
         [ -s "$dir/server_$state.json" ] ||
         echo "{\"error\": $(tail -1 "$dir/err" | python3 -c 'import json, sys; print(json.dumps(sys.stdin.read().strip() or "exit status not 0"))')}" \
@@ -163,11 +166,14 @@ for i in "${!models[@]}"; do
         x16) kind=geotop spec=10588x11248x313 ;;
         geotop:*) kind=geotop spec=${model#geotop:} ;;
     esac
+    # issue 49's budget for the model 16 times national
+    memory=${MEMORY:-}
+    [ "$model" = x16 ] && memory=${MEMORY:-2000}
     echo "national_views: $model ($kind $spec in $db, mapset $mapset)" >&2
-    printf '%s\n' "$model" "$kind $spec ($db)" >"$dir/name"
+    printf '%s\n' "$model" "$kind $spec ($db${memory:+; memory=$memory})" >"$dir/name"
     sbrt_location "$db"
     if ! in_grass "$mapset" bash "$work/views_one.sh" "$kind" "$spec" "$root/tools" "$here" "$data" \
-        "$dir" "$limit" "${MEMORY:-}" 2>&1 |
+        "$dir" "$limit" "$memory" 2>&1 |
         { grep -v "^Starting GRASS\|^Cleaning up\|^Executing\|^Execution of" || true; } >&2; then
         printf 'model\t! the GRASS session failed\n' >>"$dir/figures"
     fi
@@ -259,7 +265,7 @@ for flag in ("p", "g"):
         rows.append(("r3.sbrt.convert -%s, %s" % (flag, state), timed("convert_%s_%s" % (flag, state))))
 for key, label in (("what", "r3.sbrt.what, 1000 points spread over the model"),
                    ("profile", "r3.sbrt.profile, west to east across the middle"),
-                   ("surface", "r3.sbrt.surface thickness=, 400 x 400 cells at the centre")):
+                   ("surface", "r3.sbrt.surface thickness= of a class, 400 x 400 cells at the centre")):
     for state in ("cold", "warm"):
         rows.append(("%s, %s" % (label, state), timed("%s_%s" % (key, state))))
 for state in ("cold", "warm"):

@@ -10,7 +10,8 @@ PURPOSE:   The view server's figures of issue 49 (r3.sbrt.render --serve,
            failed: the figures before it kept). Figures only: never part of
            pass/fail.
 USAGE:     server_frames.py SBRT [WIDTH HEIGHT [ORBIT_WIDTH ORBIT_HEIGHT [FRAMES]]]
-           (800 600 400 300 12)
+           (800 600 400 300 12); SBRT_MEMORY=MB adds memory=MB to every
+           request
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import json
@@ -43,11 +44,12 @@ def main():
     numbers = [int(v) for v in sys.argv[2:]]
     width, height, orbit_width, orbit_height, frames = (
         numbers + [800, 600, 400, 300, 12][len(numbers):])
+    budget = ["memory=" + os.environ["SBRT_MEMORY"]] if os.environ.get("SBRT_MEMORY") else []
     server = ViewServer()
     figures = {"sbrt": sbrt, "size": [width, height], "orbit_size": [orbit_width, orbit_height]}
     try:
         start = time.perf_counter()
-        server.render(["input=" + sbrt, "size=%d,%d" % (width, height)])
+        server.render(["input=" + sbrt, "size=%d,%d" % (width, height)] + budget)
         figures["first_s"] = time.perf_counter() - start
         pid = server._process.pid  # the client keeps it private; a benchmark may look
         figures["first_rss_kb"] = peak_rss_kb(pid)
@@ -57,7 +59,7 @@ def main():
             # as the viewer orbits: the camera and its light turn together
             frame = server.render(["input=" + sbrt, "size=%d,%d" % (orbit_width, orbit_height),
                                    "azimuth=%d" % ((225 + k * 10) % 360),
-                                   "light=%d,45" % ((270 + k * 10) % 360)])
+                                   "light=%d,45" % ((270 + k * 10) % 360)] + budget)
             times.append((time.perf_counter() - start) * 1000)
             served.append(frame.ms)
         figures["orbit_ms"] = statistics.median(times)
@@ -67,7 +69,8 @@ def main():
         ids = [s.id for s in server.strata(sbrt)[1] if s.id != NO_CLASS]
         hidden = 13 if 13 in ids else ids[0]
         start = time.perf_counter()
-        server.render(["input=" + sbrt, "size=%d,%d" % (width, height), "hide=%d" % hidden])
+        server.render(["input=" + sbrt, "size=%d,%d" % (width, height), "hide=%d" % hidden]
+                      + budget)
         figures["hide_s"] = time.perf_counter() - start
         figures["hide_id"] = hidden
         figures["hide_rss_kb"] = peak_rss_kb(pid)

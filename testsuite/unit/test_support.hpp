@@ -237,6 +237,23 @@ inline bool identical_hits(const sbrt::Hit &a, const sbrt::Hit &b)
                            a.normal == b.normal && a.plane == b.plane);
 }
 
+/// A frame of `rows` x `cols` cells of `cell` units a side and `depths`
+/// layers of one unit, from (0, 0, 0).
+inline sbrt::Frame unit_frame(int rows, int cols, int depths, double cell = 1)
+{
+    sbrt::Frame f;
+    f.rows = rows;
+    f.cols = cols;
+    f.depths = depths;
+    f.north = rows * cell;
+    f.south = 0;
+    f.east = cols * cell;
+    f.west = 0;
+    f.bottom = 0;
+    f.top = depths;
+    return f;
+}
+
 inline std::string temp_dir(const std::string &tag)
 {
     std::string templ = "/tmp/sbrt_unit_" + tag + "_XXXXXX";

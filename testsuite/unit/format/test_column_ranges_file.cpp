@@ -106,10 +106,7 @@ TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
 TEST(ColumnRangesFile, RangesOfContinuousTopsRoundTrip)
 {
     // tops off the voxel boundaries (horizons) are stored as f32 pairs
-    Frame f;
-    f.rows = 2;
-    f.cols = 3;
-    f.depths = 10;
+    const Frame f = sbrt_test::unit_frame(2, 3, 10);
     std::vector<ZRange> ranges(f.cells());
     ranges[0] = {0.0f, 2.5f};
     ranges[1] = {1.25f, 9.75f};
@@ -128,10 +125,7 @@ TEST(ColumnRangesFile, RangesOfContinuousTopsRoundTrip)
 TEST(ColumnRangesFile, BandsTurnToF32PairsWhereALaterRangeNeedsThem)
 {
     // voxel boundaries first (packed as u16 pairs), a continuous top later
-    Frame f;
-    f.rows = 3;
-    f.cols = 2;
-    f.depths = 10;
+    const Frame f = sbrt_test::unit_frame(3, 2, 10);
     std::vector<ZRange> ranges(f.cells());
     ranges[0] = {0.0f, 2.0f};
     ranges[2] = {3.0f, 9.0f};

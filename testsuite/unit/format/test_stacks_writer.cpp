@@ -149,16 +149,7 @@ TEST(StacksWriter, ALaterBandWidensTheFieldsOfEarlierBlocks)
     EXPECT_EQ(stacks_in_bands(v, options, 4, 4), expected);
 
     // voxel-boundary tops widened to f32 by a band with a fractional top
-    Frame f;
-    f.rows = 4;
-    f.cols = 3;
-    f.depths = 10;
-    f.north = 40;
-    f.south = 0;
-    f.east = 30;
-    f.west = 0;
-    f.bottom = 0;
-    f.top = 10;
+    const Frame f = sbrt_test::unit_frame(4, 3, 10, 10);
     std::vector<std::vector<Interval>> stacks(12);
     for (size_t cell = 0; cell < stacks.size(); ++cell)
         stacks[cell] = {{EMPTY, float(1 + cell % 3)}, {1, 5}, {2, float(6 + cell % 4)}};
