@@ -126,10 +126,10 @@ private:
     /// The channels of the model as read (read once; bad_request without).
     const sbrt::PropertyChannels *channels(const RenderRequest &request);
 
+    bool scenes_change_; ///< later requests may hide or cut (read_model)
     std::string context_key_;
     std::unique_ptr<sbrt_gl::GlContext> context_;
     /// exact, coarse; after the context (their backends use it)
-    bool scenes_change_;
     Level levels_[2];
     Level *at_ = &levels_[0]; ///< the level drawn
     /// The model key whose SBRT was found without a coarse level.

@@ -45,7 +45,8 @@ std::optional<sbrt::Model> read_paged_columns(const char *name, const ColumnRead
         paging.budget_bytes = std::min(
             paging.budget_bytes,
             sbrt::least_budget(*summary, paging) +
-                sbrt::thread_count(reading.threads) * summary->largest_decoded_block());
+                sbrt::room_for_blocks(sbrt::thread_count(reading.threads) *
+                                      summary->largest_decoded_block()));
     std::optional<sbrt::Model> model = read_sbrt_paged_map(name, paging);
     if (model)
         G_verbose_message(_("SBRT <%s> paged: its %d blocks decoded as their columns are "

@@ -63,15 +63,10 @@ void SbrtMapWriter::discard(void *self)
 
 void SbrtMapWriter::add_rows(const sbrt::Model &band)
 {
-    try {
-        const int first = writer_->rows_done();
-        writer_->add_rows(band);
-        if (coarse_)
-            coarse_->add_rows(band, first);
-    }
-    catch (const sbrt::Error &e) {
-        G_fatal_error(_("Unable to write SBRT <%s>: %s"), name_.c_str(), e.what());
-    }
+    const int first = writer_->rows_done();
+    writer_->add_rows(band);
+    if (coarse_)
+        coarse_->add_rows(band, first);
 }
 
 void SbrtMapWriter::finish(const sbrt::SbrtWriter::Legend &legend, const std::string &source,

@@ -19,9 +19,11 @@ namespace sbrt_grass {
 
 /// \brief SBRT `name` of `frame` written into `path` (new_sbrt_path): each
 /// band of rows compressed as it comes, the map appearing whole at
-/// finish(). Holds the writers' lock from construction on. Any failure is
-/// a G_fatal_error naming the map; a fatal error before finish() (here or
-/// anywhere in the module) removes what was staged.
+/// finish(). Holds the writers' lock from construction on. A failure to
+/// lock, stage or write is a G_fatal_error naming the map (add_rows
+/// throws, so that a caller first stops what it runs beside); a fatal
+/// error before finish() (here or anywhere in the module) removes what
+/// was staged.
 class SbrtMapWriter {
 public:
     SbrtMapWriter(const char *name, const std::string &path, const sbrt::Frame &frame,
@@ -34,7 +36,7 @@ public:
     /// of a multiple of this (the last band: what is left).
     int block_rows() const { return block_rows_; }
     /// The model's next rows as a model of their own
-    /// (sbrt::StacksWriter::add_rows).
+    /// (sbrt::StacksWriter::add_rows); throws sbrt::Error.
     void add_rows(const sbrt::Model &band);
     int rows_done() const { return writer_->rows_done(); }
     uint64_t solid_intervals() const { return writer_->solid_intervals(); }

@@ -192,14 +192,14 @@ void write_sbrt_map(const char *name, const std::string &path,
                     const sbrt::Model &model, const std::string &source,
                     const std::string &channels_file, unsigned threads)
 {
+    SbrtMapWriter writer(name, path, model.frame(), threads);
     try {
         model.validate();
+        writer.add_rows(model);
     }
     catch (const sbrt::Error &e) {
         G_fatal_error(_("Unable to write SBRT <%s>: %s"), name, e.what());
     }
-    SbrtMapWriter writer(name, path, model.frame(), threads);
-    writer.add_rows(model);
     writer.finish({model.materials(), model.vertical_datum()}, source, channels_file);
 }
 

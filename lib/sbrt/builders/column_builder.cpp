@@ -94,8 +94,11 @@ Model ColumnStackBuilder::finish(const std::vector<Material> &legend)
     if (cells_done() != frame_.cells())
         fail("ColumnStackBuilder: got ", cells_done(), " columns, the frame has ",
              frame_.cells(), " cells");
-    if (cells_taken_ > 0)
+    if (cells_taken_ > 0) {
+        if (rows_ready() == 0)
+            fail("ColumnStackBuilder: every row was taken (take_rows) before finish");
         return take_rows(rows_ready(), legend);
+    }
     StackIndex index = StackIndex::from_sizes(sizes_.data(), sizes_.size());
     sizes_ = {};
     if (compact_)

@@ -13,7 +13,8 @@
 namespace sbrt {
 
 /// \brief Run-length encodes each column as it arrives and appends its
-/// stack: memory is the model itself, nothing per voxel and no sort.
+/// stack: memory is the model itself (or, with take_rows, the rows not
+/// yet taken), nothing per voxel and no sort.
 class ColumnStackBuilder {
 public:
     explicit ColumnStackBuilder(const Frame &frame);

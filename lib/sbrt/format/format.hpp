@@ -65,7 +65,8 @@ std::string encode_header(const Frame &frame, size_t materials, uint64_t interva
                           size_t channels = 0);
 
 /// Writes the SBRT directory atomically; `history` goes to `hist`; the
-/// stacks in format v2, streamed block by block into the file. Where
+/// stacks in format v2 (SbrtWriter given the model as one band: its
+/// blocks compressed, then laid out in the file). Where
 /// `channels_file` is given, that finished channels file (written for this
 /// model with the stacks' block size) is moved in as member `channels`.
 /// Where `coarse` is given (the model's coarse level of detail,

@@ -37,8 +37,8 @@ void SbrtWriter::finish(const Legend &legend, const std::string &history,
     size_t channels = 0;
     if (!channels_file.empty()) {
         // the channels must fit this frame and its blocks before they move in
-        channels = channels_for_stacks(MappedFile(channels_file), frame_, options.block_size,
-                                       channels_file);
+        channels = channels_for_stacks(MappedFile(channels_file, MappedFile::Pages::on_demand),
+                                       frame_, options.block_size, channels_file);
         options.optional_features |= V2_OPTIONAL_CHANNELS;
         const std::string target = out_.file_path("channels");
         if (std::rename(channels_file.c_str(), target.c_str()) != 0)

@@ -201,6 +201,10 @@ TEST(StacksWriter, TakenRowsAreTheRowsOfTheWholeModel)
     });
     ColumnStackBuilder builder(v.frame);
     EXPECT_THROW(builder.take_rows(1), Error);
+    // every row taken: finish has none left to give
+    add_columns(v, builder, [](int) {});
+    builder.take_rows(builder.rows_ready());
+    EXPECT_THROW(builder.finish(), Error);
 }
 
 TEST(StacksWriter, ASbrtWrittenInBandsIsTheSbrtWrittenWhole)
