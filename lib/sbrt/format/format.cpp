@@ -12,13 +12,10 @@
 #include <sstream>
 
 #include "format/atomic_dir.hpp"
-#include "format/byte_sink.hpp"
 #include "util/error.hpp"
 #include "util/safe_text.hpp"
 #include "format/mapped_file.hpp"
 #include "format/member_dir.hpp"
-#include "format/column_ranges_file.hpp"
-#include "model/column_ranges.hpp"
 #include "format/paged_stacks.hpp"
 #include "format/stacks_fields.hpp"
 #include "format/sbrt_writer.hpp"

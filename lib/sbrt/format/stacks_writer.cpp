@@ -24,10 +24,12 @@ using CompressorPtr = std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)>;
 
 /// The uncompressed bytes of one block (counts, materials, tops) of the
 /// cells of `grid` (a grid of `model`'s frame) into `raw`; returns the
-/// block's interval count.
+/// block's interval count, and leaves in `solid` how many of them are not
+/// EMPTY.
 uint32_t encode_block(const Model &model, const BlockGrid &grid, int block,
-                      const StacksV2Widths &w, std::vector<uint8_t> &raw)
+                      const StacksV2Widths &w, std::vector<uint8_t> &raw, uint64_t &solid)
 {
+    solid = 0;
     uint64_t intervals = 0;
     grid.for_each_cell(block, [&](uint64_t cell) { intervals += model.stack_size(cell); });
     raw.resize(raw_block_size(w, grid.cells(block), intervals));
@@ -42,6 +44,7 @@ uint32_t encode_block(const Model &model, const BlockGrid &grid, int block,
         float below = 0;
         for (uint64_t i = stack.begin; i < stack.end; ++i) {
             const Interval iv = all[i];
+            solid += iv.material != EMPTY;
             store_le(materials, iv.material, w.material_bytes);
             materials += w.material_bytes;
             if (w.tops == TopEncoding::VoxelBoundaries) {
@@ -160,10 +163,12 @@ void StacksWriter::add_rows(const Model &band)
     const BlockGrid grid{f.rows, f.cols, options_.block_size};
     const int first = rows_done_ / options_.block_size * grid_.block_cols();
     const StacksV2Widths widths = widths_;
+    std::vector<uint64_t> solid(size_t(grid.count())); // of each block
     for_each_row(grid.count(), thread_count(options_.threads), [&](int block) {
         StoredBlock &stored = blocks_[size_t(first + block)];
         std::vector<uint8_t> raw;
-        stored.entry.intervals = encode_block(band, grid, block, widths, raw);
+        stored.entry.intervals =
+            encode_block(band, grid, block, widths, raw, solid[size_t(block)]);
         compress_block(raw, options_.zstd_level, stored.bytes, stored.entry);
         stored.widths = widths;
         if (options_.summary) {
@@ -172,9 +177,9 @@ void StacksWriter::add_rows(const Model &band)
             summaries_[size_t(first + block)] = summary.finish();
         }
     });
-    const Stats stats = band.stats();
-    intervals_ += stats.intervals;
-    solid_intervals_ += stats.solid_intervals;
+    intervals_ += band.intervals().size();
+    for (const uint64_t n : solid)
+        solid_intervals_ += n;
     rows_done_ += f.rows;
 }
 

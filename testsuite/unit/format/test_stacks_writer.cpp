@@ -226,6 +226,7 @@ TEST(StacksWriter, ASbrtWrittenInBandsIsTheSbrtWrittenWhole)
     });
     EXPECT_EQ(writer.rows_done(), 75);
     EXPECT_EQ(writer.intervals(), whole.intervals().size());
+    EXPECT_EQ(writer.solid_intervals(), whole.stats().solid_intervals);
     const Model coarse_of_bands = coarse_bands.finish(materials);
     writer.finish({materials, "NAP"}, "h\n", {}, &coarse_of_bands);
     for (const char *member : {"stacks", "ranges", "stacks_lod", "header", "cats", "colors",
