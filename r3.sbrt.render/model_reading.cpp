@@ -38,7 +38,7 @@ namespace {
 /// The paged model of the request's input, or nothing where its stacks
 /// are older than format 2.1 or it has property channels.
 std::optional<sbrt::Model> read_paged_model(const RenderRequest &request,
-                                            const struct Cell_head &region, bool scenes_change)
+                                            const struct Cell_head &region)
 {
     const std::optional<sbrt::ModelSummary> summary =
         sbrt_grass::read_sbrt_summary_map(request.input.c_str());
@@ -49,11 +49,6 @@ std::optional<sbrt::Model> read_paged_model(const RenderRequest &request,
     check_image_fits(request, top ? region.rows : request.height,
                      top ? region.cols : request.width);
     sbrt::Paging paging;
-    // a scene that hides and cuts nothing narrows no cell: the pyramid's
-    // level 0 is the column ranges themselves
-    if (!scenes_change && request.frames == 1 && request.hide.empty() &&
-        request.planes.empty() && !request.section)
-        paging.column_ranges = sbrt::Paging::Ranges::needed_as_level_0;
     paging.budget_bytes = request.memory_bytes;
     paging.threads = unsigned(request.threads > 0 ? request.threads : 0);
     // memory= bounds the process: beside the model it holds itself (code,
@@ -87,11 +82,10 @@ std::optional<sbrt::Model> read_paged_model(const RenderRequest &request,
 
 } // namespace
 
-sbrt::Model read_model(const RenderRequest &request, const struct Cell_head &region,
-                       bool scenes_change)
+sbrt::Model read_model(const RenderRequest &request, const struct Cell_head &region)
 {
     if (reads_pages(request))
-        if (std::optional<sbrt::Model> model = read_paged_model(request, region, scenes_change))
+        if (std::optional<sbrt::Model> model = read_paged_model(request, region))
             return std::move(*model);
     sbrt::ReadOptions options;
     sbrt::ReadReport report;

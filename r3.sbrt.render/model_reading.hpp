@@ -30,10 +30,7 @@ bool reads_pages(const RenderRequest &request);
 /// The model of request.input: paged where reads_pages and its stacks are
 /// format 2.1 (the budget memory= checked before a block is decoded); the
 /// blocks under the region (grown by a cell) where sees_only_the_region;
-/// else all of it. `scenes_change`: later requests of the same model may
-/// hide or cut what this one does not (the view server), so the budget
-/// holds an empty-space pyramid of its own beside the column ranges.
-sbrt::Model read_model(const RenderRequest &request, const struct Cell_head &region,
-                       bool scenes_change = false);
+/// else all of it.
+sbrt::Model read_model(const RenderRequest &request, const struct Cell_head &region);
 
 #endif

@@ -67,7 +67,7 @@ void RenderSession::load(RenderRequest &request, const struct Cell_head &region)
     else if (!at_->model || key != at_->model_key) {
         drop_level(*at_);
         at_->model =
-            std::make_unique<sbrt::Model>(read_model(request, region, scenes_change_));
+            std::make_unique<sbrt::Model>(read_model(request, region));
         apply_color_option(request, at_->model->materials());
         fit(*at_, sbrt::highest_top_local(*at_->model)); // once a model
         at_->model_key = key;

@@ -30,9 +30,7 @@
 /// Errors are sbrt::Error: the caller decides whether they end the run.
 class RenderSession {
 public:
-    /// `scenes_change`: requests after the first may hide or cut what it
-    /// does not (the view server; read_model).
-    explicit RenderSession(bool scenes_change = false) : scenes_change_(scenes_change) {}
+    RenderSession() = default;
     RenderSession(const RenderSession &) = delete;
     RenderSession &operator=(const RenderSession &) = delete;
 
@@ -126,7 +124,6 @@ private:
     /// The channels of the model as read (read once; bad_request without).
     const sbrt::PropertyChannels *channels(const RenderRequest &request);
 
-    bool scenes_change_; ///< later requests may hide or cut (read_model)
     std::string context_key_;
     std::unique_ptr<sbrt_gl::GlContext> context_;
     /// exact, coarse; after the context (their backends use it)

@@ -51,7 +51,7 @@ public:
 
 private:
     FILE *out_;
-    RenderSession session_{true}; // hides and cuts change between requests
+    RenderSession session_;
 };
 
 void ViewServer::render(RenderRequest request)

@@ -15,13 +15,12 @@
 
 namespace sbrt {
 
-uint64_t skipping_bytes(const Frame &frame, bool level_0_shared)
+uint64_t skipping_bytes(const Frame &frame)
 {
-    // each column's range, and the pyramid over them: its level 0 (a copy
-    // of the ranges, narrowed, unless shared) and the levels above, a
-    // third of it
+    // each column's range, the pyramid's level 0, and the levels above
+    // it: a third of it (hidden strata and cut cells narrow only those)
     const uint64_t ranges = frame.cells() * sizeof(ZRange);
-    return level_0_shared ? ranges * 4 / 3 : ranges * 7 / 3;
+    return ranges * 4 / 3;
 }
 
 namespace {
@@ -39,8 +38,6 @@ uint64_t ranges_bytes(const ModelSummary &summary, const Paging &paging)
     switch (paging.column_ranges) {
     case Paging::Ranges::needed:
         return skipping_bytes(summary.frame);
-    case Paging::Ranges::needed_as_level_0:
-        return skipping_bytes(summary.frame, true);
     case Paging::Ranges::where_stored:
         return summary.frame.cells() * sizeof(ZRange);
     case Paging::Ranges::none:
@@ -120,9 +117,7 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
                                               std::move(decode), blocks_budget,
                                               paging.budget_name, paging.threads,
                                               std::move(ranges),
-                                              paging.column_ranges == Paging::Ranges::needed ||
-                                                  paging.column_ranges ==
-                                                      Paging::Ranges::needed_as_level_0);
+                                              paging.column_ranges == Paging::Ranges::needed);
     // each block's classes: hiding one prepares only the blocks that hold it
     std::vector<std::vector<uint16_t>> materials;
     for (BlockSummary &block : summary->blocks)

@@ -36,20 +36,19 @@ struct Paging {
     unsigned threads = 0;               ///< of the first pass; 0: all cores
     /// \brief Which column ranges a paged model holds.
     enum class Ranges {
-        needed,       ///< the tracer's (skipping, framing): stored, else read from every block
-        /// the same, for a scene that narrows no cell (nothing hidden or
-        /// cut): the empty-space pyramid's level 0 is they, not a copy
-        needed_as_level_0,
+        /// the tracer's (skipping, framing; the empty-space pyramid's
+        /// level 0): stored, else read from every block
+        needed,
         where_stored, ///< where a member holds them (a map of tops drawn cheaply), else none
         none,         ///< a reader of single columns (a virtual borehole)
     };
     Ranges column_ranges = Ranges::needed;
 };
 
-/// Bytes of a paged model's column ranges and empty-space pyramid over
-/// `frame` (what its budget holds beside the blocks); `level_0_shared`:
-/// the pyramid's level 0 is the ranges (Ranges::needed_as_level_0).
-uint64_t skipping_bytes(const Frame &frame, bool level_0_shared = false);
+/// Bytes of a paged model's column ranges and the empty-space pyramid
+/// over them (its level 0 is they: MinMaxPyramid) over `frame`, what its
+/// budget holds beside the blocks.
+uint64_t skipping_bytes(const Frame &frame);
 /// The bytes left for decoded blocks where the budget of `paging` holds
 /// the model's column ranges and pyramid (where read) and the reserved
 /// bytes too;

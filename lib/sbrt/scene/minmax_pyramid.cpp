@@ -11,6 +11,40 @@
 
 namespace sbrt {
 
+std::vector<ZRange> MinMaxPyramid::block_ranges(const Model &model, int b,
+                                                const std::vector<uint8_t> &hidden)
+{
+    const StackPages &pages = *model.pages();
+    std::vector<ZRange> ranges;
+    const StackBlock cells = pages.block_cells(b);
+    ranges.reserve(size_t(cells.rows) * size_t(cells.cols));
+    // a block that holds no hidden stratum (its summary's classes) keeps
+    // its columns' stored ranges; only the others are decoded
+    if (pages.has_column_ranges() && (hidden.empty() || !pages.block_may_hold(b, hidden))) {
+        for (int row = cells.first_row; row < cells.first_row + cells.rows; ++row)
+            for (int col = cells.first_col; col < cells.first_col + cells.cols; ++col)
+                ranges.push_back(pages.column_ranges()[model.cell_index(row, col)]);
+        return ranges;
+    }
+    const auto drawn = [&](const auto &r) {
+        return r.material != EMPTY && (hidden.empty() || !hidden[r.material]);
+    };
+    const std::shared_ptr<const StackBlock> block = pages.block(b);
+    block->intervals.visit([&](const auto *records) {
+        for (int row = block->first_row; row < block->first_row + block->rows; ++row)
+            for (int col = block->first_col; col < block->first_col + block->cols; ++col) {
+                const StackRange s = block->range(row, col);
+                ranges.push_back(drawn_range(records + s.begin, records + s.end, drawn));
+            }
+    });
+    return ranges;
+}
+
+void MinMaxPyramid::for_each_block(const Model &model, const std::function<void(int)> &visit)
+{
+    for_each_row(model.pages()->block_count(), 0, visit);
+}
+
 std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model,
                                                const std::vector<uint8_t> &hidden)
 {
@@ -24,32 +58,13 @@ std::vector<ZRange> MinMaxPyramid::cell_ranges(const Model &model,
         return cells[size_t(f.rows - 1 - row) * f.cols + col];
     };
     if (const StackPages *pages = model.pages()) {
-        if (hidden.empty()) {
-            // read once, when the model was opened
-            for (int row = 0; row < f.rows; ++row)
-                for (int col = 0; col < f.cols; ++col)
-                    at(row, col) = pages->column_ranges()[model.cell_index(row, col)];
-            return cells;
-        }
-        // a block that holds no hidden stratum (its summary's classes)
-        // keeps its columns' stored ranges; only the others are decoded
-        for_each_row(pages->block_count(), 0, [&](int b) {
-            if (pages->has_column_ranges() && !pages->block_may_hold(b, hidden)) {
-                const StackBlock cells = pages->block_cells(b);
-                for (int row = cells.first_row; row < cells.first_row + cells.rows; ++row)
-                    for (int col = cells.first_col; col < cells.first_col + cells.cols; ++col)
-                        at(row, col) = pages->column_ranges()[model.cell_index(row, col)];
-                return;
-            }
-            const std::shared_ptr<const StackBlock> block = pages->block(b);
-            block->intervals.visit([&](const auto *records) {
-                for (int row = block->first_row; row < block->first_row + block->rows; ++row)
-                    for (int col = block->first_col; col < block->first_col + block->cols;
-                         ++col) {
-                        const StackRange s = block->range(row, col);
-                        at(row, col) = drawn_range(records + s.begin, records + s.end, drawn);
-                    }
-            });
+        for_each_block(model, [&](int b) {
+            const std::vector<ZRange> ranges = block_ranges(model, b, hidden);
+            const StackBlock block = pages->block_cells(b);
+            size_t k = 0;
+            for (int row = block.first_row; row < block.first_row + block.rows; ++row)
+                for (int col = block.first_col; col < block.first_col + block.cols; ++col)
+                    at(row, col) = ranges[k++];
         });
         return cells;
     }
@@ -67,6 +82,24 @@ void MinMaxPyramid::build(int cols, int rows, std::vector<ZRange> cells)
 {
     levels_.push_back(std::move(cells));
     dims_.push_back({cols, rows});
+    build_above();
+}
+
+void MinMaxPyramid::build_over_shared(int cols, int rows, std::vector<ZRange> level_1)
+{
+    levels_.emplace_back(); // the shared base
+    dims_.push_back({cols, rows});
+    if (cols > 1 || rows > 1) {
+        levels_.push_back(std::move(level_1));
+        dims_.push_back({(cols + 1) / 2, (rows + 1) / 2});
+        level_0_wider_ = true;
+    }
+    build_above();
+}
+
+void MinMaxPyramid::build_above()
+{
+    int cols = dims_.back().first, rows = dims_.back().second;
     while (cols > 1 || rows > 1) {
         const int level = int(dims_.size()) - 1;
         const int up_cols = (cols + 1) / 2, up_rows = (rows + 1) / 2;
@@ -79,14 +112,8 @@ void MinMaxPyramid::build(int cols, int rows, std::vector<ZRange> cells)
             ZRange *out = up.data() + size_t(up_y) * up_cols;
             for (int y = 2 * up_y; y < std::min(rows, 2 * up_y + 2); ++y) {
                 const ZRange *in = &node(level, 0, y);
-                for (int x = 0; x < cols; ++x) {
-                    const ZRange &c = in[x];
-                    if (c.empty())
-                        continue;
-                    ZRange &n = out[x / 2];
-                    n = n.empty() ? c
-                                  : ZRange{std::min(n.low, c.low), std::max(n.high, c.high)};
-                }
+                for (int x = 0; x < cols; ++x)
+                    widen(out[x / 2], in[x]);
             }
         });
         levels_.push_back(std::move(up));

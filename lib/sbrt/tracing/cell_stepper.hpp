@@ -32,8 +32,7 @@ public:
     /// enters its first cell through.
     CellStepper(double ox, double oy, double dx, double dy, double inv_dx, double inv_dy,
                 double t_near, double t_far, Face face, int cols, int rows)
-        : ox_(ox), oy_(oy), inv_dx_(inv_dx), inv_dy_(inv_dy),
-          t_delta_x_(std::fabs(inv_dx)), t_delta_y_(std::fabs(inv_dy)), t_in_(t_near),
+        : ox_(ox), oy_(oy), inv_dx_(inv_dx), inv_dy_(inv_dy), t_in_(t_near),
           t_far_(t_far), cols_(cols), rows_(rows), step_x_(dx > 0 ? 1 : -1),
           step_y_(dy > 0 ? 1 : -1), wall_x_(dx > 0), wall_y_(dy > 0),
           moves_x_(dx != 0), moves_y_(dy != 0),
@@ -64,16 +63,19 @@ public:
             done_ = true;
             return;
         }
+        // each wall's t from its own position, not summed step by step:
+        // a cell is entered at the same t however the walk came to it
+        // (stepped, or jumped beyond a block of cells the tracer skips)
         if (t_max_x_ < t_max_y_) {
             x_ += step_x_;
             t_in_ = t_max_x_;
-            t_max_x_ += t_delta_x_;
+            t_max_x_ = ((x_ + wall_x_) - ox_) * inv_dx_;
             face_ = face_x_;
         }
         else {
             y_ += step_y_;
             t_in_ = t_max_y_;
-            t_max_y_ += t_delta_y_;
+            t_max_y_ = ((y_ + wall_y_) - oy_) * inv_dy_;
             face_ = face_y_;
         }
         done_ = !on_grid();
@@ -105,7 +107,7 @@ private:
         t_max_y_ = moves_y_ ? ((y_ + wall_y_) - oy_) * inv_dy_ : INFINITY;
     }
 
-    double ox_, oy_, inv_dx_, inv_dy_, t_delta_x_, t_delta_y_;
+    double ox_, oy_, inv_dx_, inv_dy_;
     double t_in_, t_far_, t_max_x_ = INFINITY, t_max_y_ = INFINITY;
     int cols_, rows_, x_ = 0, y_ = 0, step_x_, step_y_, wall_x_, wall_y_;
     bool moves_x_, moves_y_;

@@ -421,6 +421,9 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit, StackPin &pin)
     // try costs more than it saves)
     int stuck_x = -1, stuck_y = -1;
     const bool skipping = pyramid_.levels() > 0;
+    // where level 0 holds hidden or cut material the levels above leave
+    // out, a cell with material may still lie in a block with nothing drawn
+    const bool try_every_cell = pyramid_.level_0_wider();
     // bounded: a ray crosses at most cols + rows cells (a jump counts as one)
     for (int steps = 0; !cells.done() && steps <= f.cols + f.rows + 1;
          ++steps, wall.face = cells.face(), wall.plane = -1) {
@@ -429,21 +432,21 @@ void Tracer::trace_into(const Ray &ray, double t_start, Hit &hit, StackPin &pin)
         const int ix = cells.x(), iy = cells.y();
         const double t_in = cells.t_in(), t_out = cells.t_out();
         const double z_in = o.z + t_in * d.z;
-        if (skipping && passes(pyramid_.node(0, ix, iy), z_in, o.z + t_out * d.z)) {
-            // nothing here at the ray's height: leave the largest block of
-            // cells around that holds nothing at its height either
+        const bool nothing_here =
+            skipping && passes(pyramid_.node(0, ix, iy), z_in, o.z + t_out * d.z);
+        if ((nothing_here || try_every_cell) && ((ix >> 1) != stuck_x || (iy >> 1) != stuck_y)) {
+            // leave the largest block of cells around that holds nothing
+            // at the ray's height
             Jump jump;
-            if ((ix >> 1) != stuck_x || (iy >> 1) != stuck_y) {
-                if (leave_block(walk, z_in, t_far, ix, iy, jump)) {
-                    cells.jump_to(jump.ix, jump.iy, jump.t, jump.face);
-                    continue;
-                }
-                stuck_x = ix >> 1;
-                stuck_y = iy >> 1;
+            if (leave_block(walk, z_in, t_far, ix, iy, jump)) {
+                cells.jump_to(jump.ix, jump.iy, jump.t, jump.face);
+                continue;
             }
+            stuck_x = ix >> 1;
+            stuck_y = iy >> 1;
         }
-        else if (cross_cell(model_.cell_index(f.rows - 1 - iy, ix), t_in, t_out, wall,
-                            walk)) {
+        if (!nothing_here && cross_cell(model_.cell_index(f.rows - 1 - iy, ix), t_in, t_out,
+                                        wall, walk)) {
             if (walk.hit.is_hit())
                 walk.hit.point = frame_.map_from_local(o + walk.hit.t * d);
             return;
