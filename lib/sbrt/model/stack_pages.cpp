@@ -10,6 +10,7 @@
 
 #include "model/column_ranges.hpp"
 #include "model/model.hpp"
+#include "util/available_memory.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 
@@ -116,23 +117,35 @@ std::shared_ptr<const StackBlock> StackPages::held(int b) const
 
 void StackPages::hold(int b, std::shared_ptr<const StackBlock> block, bool evict) const
 {
-    const std::lock_guard<std::mutex> lock(cache_);
-    if (!evict && held_ + block->bytes() > budget_)
-        return;
-    held_ += block->bytes();
-    Slot &slot = slots_[size_t(b)];
-    slot.block = std::move(block);
-    used_.push_front(b);
-    slot.used = used_.begin();
-    // the least recently used out, never the block just decoded (readers
-    // holding a dropped block keep it until they let go)
-    while (held_ > budget_ && used_.size() > 1) {
-        Slot &last = slots_[size_t(used_.back())];
-        held_ -= last.block->bytes();
-        last.block.reset();
-        used_.pop_back();
+    bool release = false;
+    {
+        const std::lock_guard<std::mutex> lock(cache_);
+        if (!evict && held_ + block->bytes() > budget_)
+            return;
+        held_ += block->bytes();
+        Slot &slot = slots_[size_t(b)];
+        slot.block = std::move(block);
+        used_.push_front(b);
+        slot.used = used_.begin();
+        // the least recently used out, never the block just decoded
+        // (readers holding a dropped block keep it until they let go)
+        while (held_ > budget_ && used_.size() > 1) {
+            Slot &last = slots_[size_t(used_.back())];
+            held_ -= last.block->bytes();
+            dropped_ += last.block->bytes();
+            last.block.reset();
+            used_.pop_back();
+        }
+        peak_ = std::max(peak_, held_);
+        // the heap's holes left by dropped blocks go back to the system
+        // each time an eighth of the budget was dropped
+        if (dropped_ > budget_ / 8) {
+            dropped_ = 0;
+            release = true;
+        }
     }
-    peak_ = std::max(peak_, held_);
+    if (release) // (not under the lock: other threads go on reading)
+        release_free_heap();
 }
 
 std::shared_ptr<const StackBlock> StackPages::block(int b) const

@@ -146,6 +146,7 @@ private:
     mutable std::mutex cache_;      ///< guards the slots' blocks, used_, held_
     mutable std::list<int> used_;   ///< held blocks, most recently used first
     mutable uint64_t held_ = 0, peak_ = 0;
+    mutable uint64_t dropped_ = 0; ///< bytes dropped since the heap was last released
     mutable std::atomic<uint64_t> decodes_{0};
 };
 

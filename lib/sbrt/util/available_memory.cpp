@@ -7,6 +7,9 @@
 
 #include <sys/resource.h>
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <cstdio>
@@ -61,6 +64,13 @@ double available_memory()
 double resident_memory()
 {
     return field_of("/proc/self/status", "VmRSS:", 1024).value_or(0);
+}
+
+void release_free_heap()
+{
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
 }
 
 } // namespace sbrt

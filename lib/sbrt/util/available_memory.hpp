@@ -19,6 +19,12 @@ double available_memory();
 /// Bytes of this process resident in memory now (VmRSS); 0 when not known.
 double resident_memory();
 
+/// Gives the pages the C library's heap holds free back to the system
+/// (glibc's malloc_trim: free chunks amid live ones too); nothing
+/// elsewhere. Freed blocks of many sizes leave such holes: a cache that
+/// drops and decodes blocks for long grew a tenth past its budget.
+void release_free_heap();
+
 } // namespace sbrt
 
 #endif
