@@ -69,7 +69,7 @@ int png_enlargement(const RenderRequest &request, int rows, int cols)
 
 ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &window,
                      PngAnnotations annotations)
-    : request_(request), cols_(window.cols), cells_(size_t(window.cols)),
+    : request_(request), window_(window), cols_(window.cols), cells_(size_t(window.cols)),
       dcells_(size_t(window.cols))
 {
     // Measured on B, 1056 x 884 (three RGB maps): LZ4 writes in 100 ms of
@@ -81,7 +81,7 @@ ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &windo
     struct Cell_head output_window = window;
     Rast_set_output_window(&output_window);
     if (!request.output.empty()) {
-        composite_ = std::make_unique<RgbComposite>(request.output, window.rows, cols_);
+        composite_ = std::make_unique<RgbComposite>(request.output, cols_);
         for (const char *band : {"red", "green", "blue"})
             rgb_.push_back(open(request.output + "." + band, CELL_TYPE));
     }
@@ -117,7 +117,7 @@ void ImageMaps::write(const sbrt::Band &band)
     for (int r = 0; r < band.rows; ++r) {
         const uint8_t *rgb_row = band.rgb.row(r);
         if (composite_)
-            composite_->write_row(rgb_row);
+            composite_->add_row(rgb_row);
         for (size_t k = 0; k < rgb_.size(); ++k) {
             const uint8_t *rgb = rgb_row + k;
             for (size_t c = 0; c < cols; ++c)
@@ -155,15 +155,6 @@ void ImageMaps::write(const sbrt::Band &band)
 
 void ImageMaps::close(const sbrt::Model &model, const sbrt::PropertyPaint *property)
 {
-    if (composite_) {
-        if (!composite_->close())
-            G_verbose_message(_("<%s>: more than %zu red-green pairs; its colours are "
-                                "within 2 levels of the image's (<%s.red>, .green, "
-                                ".blue are exact)"),
-                              composite_->name().c_str(), RgbComposite::MAX_EXACT_RULES,
-                              request_.output.c_str());
-        write_history(composite_->name(), request_);
-    }
     for (const Map &map : rgb_) {
         Rast_close(map.fd);
         struct Colors colors;
@@ -172,6 +163,15 @@ void ImageMaps::close(const sbrt::Model &model, const sbrt::PropertyPaint *prope
         Rast_write_colors(map.name.c_str(), G_mapset(), &colors);
         Rast_free_colors(&colors);
         write_history(map.name, request_);
+    }
+    if (composite_) { // from the red, green and blue maps just closed
+        if (!composite_->close({rgb_[0].name, rgb_[1].name, rgb_[2].name}, window_))
+            G_verbose_message(_("<%s>: more than %zu red-green pairs; its colours are "
+                                "within 2 levels of the image's (<%s.red>, .green, "
+                                ".blue are exact)"),
+                              composite_->name().c_str(), RgbComposite::MAX_EXACT_RULES,
+                              request_.output.c_str());
+        write_history(composite_->name(), request_);
     }
     if (png_)
         png_->finish();

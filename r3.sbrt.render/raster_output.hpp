@@ -64,6 +64,7 @@ private:
     Map open(const std::string &name, RASTER_MAP_TYPE type);
 
     const RenderRequest &request_;
+    struct Cell_head window_; ///< the maps' (the output window)
     int cols_;
     std::unique_ptr<RgbComposite> composite_;
     std::vector<Map> rgb_;

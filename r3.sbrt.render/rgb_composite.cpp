@@ -7,20 +7,19 @@
 
 #include <algorithm>
 
-RgbComposite::RgbComposite(const std::string &name, int rows, int cols)
+RgbComposite::RgbComposite(const std::string &name, int cols)
     : name_(name), cols_(cols), red_green_(65536, false)
 {
-    rgb_.reserve(size_t(rows) * size_t(cols) * 3);
 }
 
-void RgbComposite::write_row(const uint8_t *rgb)
+void RgbComposite::add_row(const uint8_t *rgb)
 {
     for (int c = 0; c < cols_; ++c)
         red_green_[size_t(rgb[3 * c] << 8 | rgb[3 * c + 1])] = true;
-    rgb_.insert(rgb_.end(), rgb, rgb + size_t(cols_) * 3);
 }
 
-bool RgbComposite::close()
+bool RgbComposite::close(const std::array<std::string, 3> &bands,
+                         const struct Cell_head &window)
 {
     const bool exact = size_t(std::count(red_green_.begin(), red_green_.end(), true)) <=
                        MAX_EXACT_RULES;
@@ -28,19 +27,34 @@ bool RgbComposite::close()
     auto pair_of = [exact](int red, int green) {
         return exact ? red << 8 | green : (red >> 2) << 6 | green >> 2;
     };
+    // the bands read in the image's window (the output window), not the
+    // region's
+    struct Cell_head region, image = window;
+    Rast_get_input_window(&region);
+    Rast_set_input_window(&image);
+    std::array<int, 3> in;
+    std::array<std::vector<CELL>, 3> rows;
+    for (size_t k = 0; k < 3; ++k) {
+        in[k] = Rast_open_old(bands[k].c_str(), G_mapset());
+        rows[k].resize(size_t(cols_));
+    }
     const int fd = Rast_open_new(name_.c_str(), CELL_TYPE);
     std::vector<CELL> cells(static_cast<size_t>(cols_));
     std::vector<bool> pairs(65536, false);
-    for (const uint8_t *rgb = rgb_.data(); rgb < rgb_.data() + rgb_.size();) {
-        for (CELL &cell : cells) {
-            const int pair = pair_of(rgb[0], rgb[1]);
+    for (int row = 0; row < image.rows; ++row) {
+        for (size_t k = 0; k < 3; ++k)
+            Rast_get_c_row(in[k], rows[k].data(), row);
+        for (size_t c = 0; c < cells.size(); ++c) {
+            const int pair = pair_of(rows[0][c], rows[1][c]);
             pairs[size_t(pair)] = true;
-            cell = pair << 8 | rgb[2];
-            rgb += 3;
+            cells[c] = pair << 8 | rows[2][c];
         }
         Rast_put_c_row(fd, cells.data());
     }
     Rast_close(fd);
+    for (const int band : in)
+        Rast_close(band);
+    Rast_set_input_window(&region);
     // GRASS interpolates inside a rule: blue = (0 * (high - v) + 255 * (v -
     // low)) / 255 = v - low exactly, red and green constant
     struct Colors colors;

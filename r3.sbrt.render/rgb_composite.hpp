@@ -7,6 +7,7 @@
 #ifndef R3_SBRT_RGB_COMPOSITE_HPP
 #define R3_SBRT_RGB_COMPOSITE_HPP
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,27 +21,30 @@
 /// 65536 + green * 256 + blue and every colour is exact; with more, red
 /// and green keep their upper 6 bits (within 2 levels; blue exact), since
 /// GRASS's colour rules cost quadratic time in their number (65536 rules:
-/// 3.5 s to build, 10 s to look up). The rows are held (3 bytes a pixel)
-/// until close() knows which.
+/// 3.5 s to build, 10 s to look up). Which is known once every row was
+/// seen: close() then reads the image back from its red, green and blue
+/// maps, a row at a time (holding the rows took 3 bytes a pixel: 357 MB
+/// for a top view of 119 million cells, beyond memory=).
 class RgbComposite {
 public:
     static constexpr size_t MAX_EXACT_RULES = 4096;
 
-    RgbComposite(const std::string &name, int rows, int cols);
+    RgbComposite(const std::string &name, int cols);
     RgbComposite(const RgbComposite &) = delete;
     RgbComposite &operator=(const RgbComposite &) = delete;
 
-    /// One image row, 3 bytes per pixel.
-    void write_row(const uint8_t *rgb);
-    /// Writes the map and its colour table; false where the colours are
-    /// within 2 levels rather than exact.
-    bool close();
+    /// Notes the red-green pairs of one image row, 3 bytes per pixel.
+    void add_row(const uint8_t *rgb);
+    /// Writes the map, its rows read from the closed maps `bands` (red,
+    /// green, blue, in the current mapset, of `window`), and its colour
+    /// table; false where the colours are within 2 levels rather than
+    /// exact.
+    bool close(const std::array<std::string, 3> &bands, const struct Cell_head &window);
     const std::string &name() const { return name_; }
 
 private:
     std::string name_;
     int cols_;
-    std::vector<uint8_t> rgb_; ///< the rows so far
     std::vector<bool> red_green_; ///< 65536 flags
 };
 
