@@ -18,6 +18,9 @@ namespace sbrt {
 
 namespace {
 
+/// Bytes of blocks dropped, at least, before the heap is released.
+constexpr uint64_t RELEASE_AFTER_DROPPED = uint64_t(32) << 20;
+
 /// `size`, where it is a block size (at least 1).
 int checked_block_size(int size)
 {
@@ -138,8 +141,10 @@ void StackPages::hold(int b, std::shared_ptr<const StackBlock> block, bool evict
         }
         peak_ = std::max(peak_, held_);
         // the heap's holes left by dropped blocks go back to the system
-        // each time an eighth of the budget was dropped
-        if (dropped_ > budget_ / 8) {
+        // each time an eighth of the budget was dropped (32 MiB at least:
+        // a reader of single columns holds a block a thread, and would
+        // trim the heap every few blocks)
+        if (dropped_ > std::max(budget_ / 8, RELEASE_AFTER_DROPPED)) {
             dropped_ = 0;
             release = true;
         }
