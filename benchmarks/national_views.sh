@@ -11,8 +11,10 @@
 #            (r3.sbrt.render --serve: first frame, 400 x 300 orbit frames,
 #            a stratum hidden + frame; cold and warm, server_frames.py);
 #            g.gui.sbrt 800 x 600 under Xvfb (viewer_benchmark.py: full and
-#            reduced frames, frames shown a second while dragging, the
-#            exact frame after the mouse rests). Prints a header (machine,
+#            reduced frames, a stratum hidden as the viewer asks it (the
+#            reduced frame, then the exact one), frames shown a second
+#            while dragging, the exact frame after the mouse rests).
+#            Prints a header (machine,
 #            load, commit, caches) and one line per figure: what | model |
 #            model ... (seconds or ms, peak RSS in MB); a figure that could
 #            not be measured says why in its cell. Progress on stderr, the
@@ -286,6 +288,9 @@ rows += [
     ("viewer 800x600: full frame / reduced frame (orbit medians, viewer's client)",
      from_json("viewer", lambda d: "%.1f / %.1f ms, %s" % (
          d["renderer_full_ms"], d["renderer_reduced_ms"], mb(d["renderer_rss_kb"])))),
+    ("viewer: a stratum hidden as the viewer asks (reduced frame / exact frame after the request)",
+     from_json("viewer", lambda d: "%.1f / %.1f ms" % (
+         d["renderer_hide_reduced_ms"], d["renderer_hide_exact_ms"]))),
     ("viewer: g.gui.sbrt started to first frame shown",
      from_json("viewer", lambda d: "%.2f s" % d["viewer_first_s"])),
     ("viewer: frames shown a second while dragging (3 drags)",
