@@ -77,7 +77,8 @@ public:
     /// of those only. A cell's level 0 then bounds where material lies,
     /// a node above where material drawn lies.
     bool level_0_wider() const { return level_0_wider_; }
-    /// Cells (level 0) with nothing to draw.
+    /// Cells (level 0) with nothing to draw (where level_0_wider(): with
+    /// no material at all).
     uint64_t empty_cells() const;
     /// Bytes of all levels (as a GPU buffer would hold them).
     uint64_t bytes() const;
