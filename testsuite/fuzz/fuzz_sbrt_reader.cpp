@@ -2,7 +2,7 @@
  * MODULE:    testsuite/fuzz (r3.sbrt addon)
  * PURPOSE:   libFuzzer target of the SBRT reader (formats v1 and v2): decode_stacks and
  *            decode_cats, a paged model's opening (every block decoded) and
- *            the `ranges` member on untrusted bytes must end in a model or an
+ *            the `ranges` and `tops` members on untrusted bytes must end in a model or an
  *            sbrt::Error, never a crash, a hang or undefined behaviour.
  *            Bit 0 of the first byte recomputes the checksums, so that the
  *            fuzzer also reaches what lies behind them.
@@ -17,6 +17,7 @@
 
 #include "util/error.hpp"
 #include "format/column_ranges_file.hpp"
+#include "format/column_tops_file.hpp"
 #include "format/format.hpp"
 #include "format/paged_stacks.hpp"
 #include "format/stacks_fields.hpp"
@@ -84,8 +85,18 @@ void fix_v2_checksums(std::vector<uint8_t> &b)
     put_u32(b, header - 4, crc_of(b, 0, header - 4));
 }
 
+/// Whether `b` starts as a per-column member of `magic` (its header whole).
+bool is_member(const std::vector<uint8_t> &b, const char *magic)
+{
+    return b.size() >= 52 && std::memcmp(b.data(), magic, 8) == 0;
+}
+
 void fix_checksums(std::vector<uint8_t> &b)
 {
+    if (is_member(b, "SBRTRNG1") || is_member(b, "SBRTTOP1")) {
+        put_u32(b, 48, crc_of(b, 52, b.size()));
+        return;
+    }
     const uint16_t major = sbrt::stacks_major_version(b.data(), b.size());
     if (major == 1)
         fix_v1_checksums(b);
@@ -107,22 +118,47 @@ void open_paged(const std::vector<uint8_t> &bytes)
     }
 }
 
-/// The bytes as a `ranges` member, for the grid and stacks it names (at
-/// most 2^22 cells, 100 depths).
-void read_ranges_member(const std::vector<uint8_t> &bytes)
+/// The grid (at most 2^22 cells, 100 depths) and stacks a per-column
+/// member names.
+sbrt::Frame member_frame(const std::vector<uint8_t> &bytes, sbrt::StacksStamp &stamp)
 {
-    if (bytes.size() < 52 || std::memcmp(bytes.data(), "SBRTRNG1", 8) != 0)
-        return;
     sbrt::Frame frame;
     frame.rows = std::max(1, int(get_u64(bytes, 8) & 0xfffu));
     frame.cols = std::max(1, int(get_u64(bytes, 12) & 0x3ffu));
     frame.depths = 100;
-    sbrt::StacksStamp stamp;
     stamp.end = get_u64(bytes, 20);
     stamp.intervals = get_u64(bytes, 28);
     stamp.table_crc = uint32_t(get_u64(bytes, 36) & 0xffffffffu);
+    return frame;
+}
+
+/// The bytes as a `ranges` member, for the grid and stacks it names.
+void read_ranges_member(const std::vector<uint8_t> &bytes)
+{
+    if (!is_member(bytes, "SBRTRNG1"))
+        return;
+    sbrt::StacksStamp stamp;
+    const sbrt::Frame frame = member_frame(bytes, stamp);
     try {
         sbrt::decode_column_ranges(bytes.data(), bytes.size(), "fuzz", frame, stamp);
+    }
+    catch (const sbrt::Error &) {
+    }
+}
+
+/// The bytes as a `tops` member, for the grid and stacks it names, every
+/// column's range [0, 100) and 5 materials.
+void read_tops_member(const std::vector<uint8_t> &bytes)
+{
+    if (!is_member(bytes, "SBRTTOP1"))
+        return;
+    sbrt::StacksStamp stamp;
+    const sbrt::Frame frame = member_frame(bytes, stamp);
+    const std::vector<sbrt::ZRange> ranges(frame.cells(), sbrt::ZRange{0.0f, 100.0f});
+    try {
+        sbrt::column_tops_bytes(bytes, frame, "fuzz");
+        sbrt::decode_column_tops(bytes.data(), bytes.size(), "fuzz", frame, stamp, ranges, 5,
+                                 1);
     }
     catch (const sbrt::Error &) {
     }
@@ -145,6 +181,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         options.memory_limit = 256u << 20;
         open_paged(bytes);
         read_ranges_member(bytes);
+        read_tops_member(bytes);
         sbrt::Model model =
             sbrt::decode_stacks(bytes.data(), bytes.size(), "fuzz", nullptr, options);
         // the same bytes as a cats file of the decoded model

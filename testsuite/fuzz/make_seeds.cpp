@@ -11,6 +11,7 @@
 #include <string>
 
 #include "format/column_ranges_file.hpp"
+#include "format/column_tops_file.hpp"
 #include "format/format.hpp"
 #include "model/column_ranges.hpp"
 #include "../unit/test_support.hpp"
@@ -27,12 +28,16 @@ int main(int argc, char **argv)
         sbrt::StacksV2Options blocks;
         blocks.block_size = 1 + int(seed % 3);
         const std::vector<uint8_t> v2 = sbrt::encode_stacks_v2(model, blocks);
+        const sbrt::StacksStamp stamp = sbrt::stacks_stamp(v2.data(), v2.size(), "seed");
+        sbrt::ColumnTopsEncoder tops(model.frame());
+        tops.add(sbrt::column_tops(model));
         const std::vector<uint8_t> files[] = {
             sbrt::encode_stacks_v1(model), v2,
-            // the `ranges` member of those stacks (version 3 in the name)
-            sbrt::encode_column_ranges(sbrt::column_ranges(model), model.frame(),
-                                       sbrt::stacks_stamp(v2.data(), v2.size(), "seed"))};
-        for (int version = 1; version <= 3; ++version)
+            // the `ranges` and `tops` members of those stacks (versions 3
+            // and 4 in the name)
+            sbrt::encode_column_ranges(sbrt::column_ranges(model), model.frame(), stamp),
+            tops.finish(stamp)};
+        for (int version = 1; version <= 4; ++version)
         for (uint8_t flag : {uint8_t(0), uint8_t(1)}) {
             const std::vector<uint8_t> &stacks = files[version - 1];
             std::ofstream out(std::string(argv[1]) + "/seed_v" + std::to_string(version) + "_" +

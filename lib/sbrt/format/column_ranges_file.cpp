@@ -6,9 +6,6 @@
 #include "format/column_ranges_file.hpp"
 
 #include <cstring>
-#include <memory>
-
-#include <zstd.h>
 
 #include "format/byte_io.hpp"
 #include "format/stacks_fields.hpp"
@@ -21,7 +18,6 @@ namespace sbrt {
 namespace {
 
 constexpr char MAGIC[8] = {'S', 'B', 'R', 'T', 'R', 'N', 'G', '1'};
-constexpr size_t HEADER_BYTES = 8 + 3 * 4 + 8 + 8 + 4 + 8 + 4;
 constexpr uint32_t U16_PAIRS = 0, F32_PAIRS = 1;
 constexpr uint16_t EMPTY_LOW = 0xffff;
 
@@ -44,43 +40,13 @@ void append_range(ByteWriter &raw, const ZRange &r, uint32_t encoding)
     }
 }
 
-/// `raw` zstd-compressed (level 3) as one frame, streamed into a vector
-/// that grows by what it holds, not by the compression bound.
-std::vector<uint8_t> compressed(const std::vector<uint8_t> &raw)
+/// Bytes of a range in `encoding` (0: not one of them).
+size_t range_bytes(uint32_t encoding)
 {
-    const std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> context(ZSTD_createCCtx(),
-                                                                      ZSTD_freeCCtx);
-    ZSTD_CCtx_setParameter(context.get(), ZSTD_c_compressionLevel, 3);
-    ZSTD_CCtx_setPledgedSrcSize(context.get(), raw.size());
-    std::vector<uint8_t> out;
-    std::vector<uint8_t> chunk(ZSTD_CStreamOutSize());
-    ZSTD_inBuffer in = {raw.data(), raw.size(), 0};
-    for (;;) {
-        ZSTD_outBuffer o = {chunk.data(), chunk.size(), 0};
-        const size_t left = ZSTD_compressStream2(context.get(), &o, &in, ZSTD_e_end);
-        if (ZSTD_isError(left))
-            fail("encode_column_ranges: zstd: ", ZSTD_getErrorName(left));
-        out.insert(out.end(), chunk.begin(), chunk.begin() + ptrdiff_t(o.pos));
-        if (left == 0)
-            return out;
-    }
+    return encoding == U16_PAIRS ? 4 : encoding == F32_PAIRS ? 8 : 0;
 }
 
 } // namespace
-
-StacksStamp stamp_of(const HeaderV2 &h)
-{
-    StacksStamp stamp;
-    stamp.end = h.end;
-    stamp.intervals = h.intervals;
-    stamp.table_crc = h.crc_table;
-    return stamp;
-}
-
-StacksStamp stacks_stamp(const uint8_t *data, size_t size, const std::string &what)
-{
-    return stamp_of(open_stacks_v2(data, size, what).header);
-}
 
 ColumnRangesEncoder::ColumnRangesEncoder(const Frame &frame) : frame_(frame)
 {
@@ -113,20 +79,10 @@ std::vector<uint8_t> ColumnRangesEncoder::finish(const StacksStamp &stamp)
 {
     if (cells_ != frame_.cells())
         fail("encode_column_ranges: ", cells_, " ranges for ", frame_.cells(), " cells");
-    const std::vector<uint8_t> packed = compressed(ranges_.bytes());
+    std::vector<uint8_t> out =
+        encode_column_member(MAGIC, frame_, encoding_, ranges_.bytes(), stamp);
     ranges_ = ByteWriter();
-    ByteWriter out;
-    out.raw(MAGIC, sizeof MAGIC);
-    out.u32(uint32_t(frame_.rows));
-    out.u32(uint32_t(frame_.cols));
-    out.u32(encoding_);
-    out.u64(stamp.end);
-    out.u64(stamp.intervals);
-    out.u32(stamp.table_crc);
-    out.u64(packed.size());
-    out.u32(crc32_of(packed.data(), packed.size()));
-    out.raw(packed.data(), packed.size());
-    return out.bytes();
+    return out;
 }
 
 std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, const Frame &frame,
@@ -143,30 +99,13 @@ std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, siz
                                                         const StacksStamp &stamp,
                                                         unsigned threads)
 {
-    if (size < HEADER_BYTES || std::memcmp(data, MAGIC, sizeof MAGIC) != 0)
-        fail(what, ": not a column ranges member (bad magic number)");
-    ByteReader in(data, size, what);
-    in.seek(sizeof MAGIC);
-    const uint32_t rows = in.u32(), cols = in.u32(), encoding = in.u32();
-    StacksStamp made;
-    made.end = in.u64();
-    made.intervals = in.u64();
-    made.table_crc = in.u32();
-    const uint64_t packed = in.u64();
-    const uint32_t crc = in.u32();
-    if (!(made == stamp))
+    const std::optional<ColumnRecords> records = decode_column_member(
+        data, size, what, "column ranges", MAGIC, frame, stamp, range_bytes);
+    if (!records)
         return std::nullopt; // made from other stacks
-    if (rows != uint32_t(frame.rows) || cols != uint32_t(frame.cols) || encoding > F32_PAIRS ||
-        packed != size - HEADER_BYTES)
-        fail(what, ": its grid or size does not match the stacks (corrupt file)");
-    if (crc32_of(data + HEADER_BYTES, packed) != crc)
-        fail(what, ": checksum mismatch (corrupt file)");
-    const size_t pair = encoding == U16_PAIRS ? 4 : 8;
-    std::vector<uint8_t> raw(frame.cells() * pair);
-    const size_t n = ZSTD_decompress(raw.data(), raw.size(), data + HEADER_BYTES, packed);
-    if (ZSTD_isError(n) || n != raw.size())
-        fail(what, ": ", ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong size",
-             " (corrupt file)");
+    const uint32_t encoding = records->encoding;
+    const size_t pair = range_bytes(encoding);
+    const std::vector<uint8_t> &raw = records->bytes;
     std::vector<ZRange> ranges(frame.cells());
     const float depths = float(frame.depths);
     const size_t row_cells = size_t(frame.cols);

@@ -13,38 +13,16 @@
 #include <string>
 #include <vector>
 
-#include "format/stacks_v2_layout.hpp"
 #include "format/byte_io.hpp"
+#include "format/column_member.hpp"
 #include "model/model.hpp"
 #include "model/z_range.hpp"
 
 namespace sbrt {
 
-/// \brief The stacks file a `ranges` member was made from: its header's
-/// end, block table checksum and interval count (a `stacks` written again
-/// without its ranges no longer matches).
-struct StacksStamp {
-    uint64_t end = 0, intervals = 0;
-    uint32_t table_crc = 0;
-    bool operator==(const StacksStamp &other) const
-    {
-        return end == other.end && intervals == other.intervals &&
-               table_crc == other.table_crc;
-    }
-};
-
-/// The stamp of a format 2 stacks file's header (as open_stacks_v2 read
-/// and checked it).
-StacksStamp stamp_of(const HeaderV2 &header);
-/// The stamp of untrusted format 2 stacks bytes (the header read and
-/// checked; throws sbrt::Error naming `what`).
-StacksStamp stacks_stamp(const uint8_t *data, size_t size, const std::string &what);
-
-/// The member's bytes: magic "SBRTRNG1", u32 rows, u32 cols, u32 encoding
-/// (0: u16 low, u16 high, an empty column 0xffff, 0; 1: f32 low, f32
-/// high, an empty column 1, 0), the stamp (u64 end, u64 intervals, u32
-/// table crc), u64 compressed bytes, u32 their crc32; then the ranges,
-/// row by row (row 0 north), zstd-compressed.
+/// The member's bytes (encode_column_member): magic "SBRTRNG1", encoding
+/// 0: u16 low, u16 high, an empty column 0xffff, 0; 1: f32 low, f32 high,
+/// an empty column 1, 0.
 std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, const Frame &frame,
                                           const StacksStamp &stamp);
 

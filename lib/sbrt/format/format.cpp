@@ -328,12 +328,17 @@ std::optional<Model> read_sbrt_paged(const std::string &directory, const Paging 
     // blocks are read as the view reaches them
     const auto file = std::make_shared<const MappedFile>(dir.open_regular("stacks"),
                                                          stacks_path, MappedFile::Pages::on_demand);
-    std::vector<uint8_t> member_bytes;
+    std::vector<uint8_t> ranges_bytes, tops_bytes;
     StoredRanges stored;
     if (const auto member = dir.open_regular_if_present("ranges")) {
         stored.what = dir.member_path("ranges");
-        member_bytes = read_all(*member, stored.what);
-        stored.bytes = &member_bytes;
+        ranges_bytes = read_all(*member, stored.what);
+        stored.bytes = &ranges_bytes;
+    }
+    if (const auto member = dir.open_regular_if_present("tops")) {
+        stored.tops_what = dir.member_path("tops");
+        tops_bytes = read_all(*member, stored.tops_what);
+        stored.tops = &tops_bytes;
     }
     std::optional<Model> model =
         open_paged_model(file->data(), file->size(), stacks_path, file, paging, stored, file.get());

@@ -72,7 +72,8 @@ std::string encode_header(const Frame &frame, size_t materials, uint64_t interva
 /// Where `coarse` is given (the model's coarse level of detail,
 /// scene/level_of_detail.hpp), it is written beside the stacks, with the
 /// same writer, as member `stacks_lod`. Member `ranges` holds each
-/// column's range of material (format/column_ranges_file.hpp).
+/// column's range of material (format/column_ranges_file.hpp), `tops`
+/// each column's top interval (format/column_tops_file.hpp).
 void write_sbrt(const std::string &directory, const Model &model,
                 const std::string &history, const StacksV2Options &options = {},
                 const std::string &channels_file = {}, const Model *coarse = nullptr);

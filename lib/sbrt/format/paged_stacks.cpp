@@ -8,7 +8,7 @@
 #include <string>
 
 #include "format/column_ranges_file.hpp"
-
+#include "format/column_tops_file.hpp"
 #include "format/block_summary.hpp"
 #include "format/mapped_file.hpp"
 #include "format/stacks_fields.hpp"
@@ -59,6 +59,13 @@ uint64_t least_budget(const ModelSummary &summary, const Paging &paging)
            room_for_blocks(summary.largest_decoded_block());
 }
 
+bool tops_fit(const ModelSummary &summary, const Paging &paging, uint64_t tops_bytes)
+{
+    const uint64_t least = least_budget(summary, paging);
+    return tops_bytes > 0 && paging.budget_bytes > least &&
+           tops_bytes <= (paging.budget_bytes - least) / 2;
+}
+
 uint64_t block_budget(const ModelSummary &summary, const Paging &paging)
 {
     const uint64_t ranges = ranges_bytes(summary, paging);
@@ -103,7 +110,19 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     std::optional<ModelSummary> summary = read_stacks_summary(data, size, what);
     if (!summary)
         return std::nullopt;
-    const uint64_t blocks_budget = block_budget(*summary, paging);
+    // each column's top interval, for the tracer, where stored and its
+    // budget has room for it beside the blocks
+    std::optional<IntervalArray> tops;
+    Paging with_tops = paging;
+    if (!ranges.empty() && stored.tops && paging.column_ranges == Paging::Ranges::needed &&
+        tops_fit(*summary, paging,
+                 column_tops_bytes(*stored.tops, summary->frame, stored.tops_what)))
+        tops = decode_column_tops(stored.tops->data(), stored.tops->size(), stored.tops_what,
+                                  summary->frame, stamp_of(layout->header), ranges,
+                                  summary->materials.size(), paging.threads);
+    if (tops)
+        with_tops.reserved_bytes += uint64_t(tops->size()) * tops->record_bytes();
+    const uint64_t blocks_budget = block_budget(*summary, with_tops);
     auto decode = [data, layout, what, mapping, keep = std::move(keep)](int block) {
         StackBlock decoded = decode_stack_block(data, *layout, block, what);
         // its compressed bytes leave the process's memory (the page cache
@@ -123,6 +142,8 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     for (BlockSummary &block : summary->blocks)
         materials.push_back(std::move(block.materials));
     pages->set_block_materials(std::move(materials));
+    if (tops)
+        pages->set_column_tops(std::move(*tops));
     return Model(summary->frame, std::move(summary->materials), std::move(pages),
                  summary->stats);
 }

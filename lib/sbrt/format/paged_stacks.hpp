@@ -64,15 +64,24 @@ uint64_t room_for_blocks(uint64_t blocks);
 /// largest block.
 uint64_t least_budget(const ModelSummary &summary, const Paging &paging);
 
+/// Whether a paged model of `summary` holds each column's top interval
+/// (`tops_bytes` of them; 0: none stored) within the budget of `paging`:
+/// where they take at most half of what the budget leaves beside what
+/// it needs at least (least_budget), so that the blocks keep the rest.
+bool tops_fit(const ModelSummary &summary, const Paging &paging, uint64_t tops_bytes);
+
 /// Block `block` of the opened file `data`, decompressed, its checksum,
 /// counts and stacks checked (throws sbrt::Error naming `what`).
 StackBlock decode_stack_block(const uint8_t *data, const StacksV2Layout &layout, int block,
                               const std::string &what);
 
-/// \brief The bytes of an SBRT's `ranges` member, where it has one.
+/// \brief The bytes of an SBRT's `ranges` and `tops` members, where it
+/// has them.
 struct StoredRanges {
     const std::vector<uint8_t> *bytes = nullptr;
     std::string what; ///< the member's name in errors
+    const std::vector<uint8_t> *tops = nullptr;
+    std::string tops_what;
 };
 
 /// The paged model of untrusted stacks bytes that `keep` holds in memory:

@@ -20,7 +20,8 @@ namespace sbrt {
 
 SbrtWriter::SbrtWriter(const std::string &directory, const Frame &frame,
                        const StacksV2Options &options)
-    : out_(directory), frame_(frame), options_(options), stacks_(frame, options), ranges_(frame)
+    : out_(directory), frame_(frame), options_(options), stacks_(frame, options), ranges_(frame),
+      tops_(frame)
 {
 }
 
@@ -28,6 +29,7 @@ void SbrtWriter::add_rows(const Model &band)
 {
     stacks_.add_rows(band);
     ranges_.add(column_ranges(band));
+    tops_.add(column_tops(band));
 }
 
 void SbrtWriter::finish(const Legend &legend, const std::string &history,
@@ -48,12 +50,14 @@ void SbrtWriter::finish(const Legend &legend, const std::string &history,
     stacks_.finish(stacks, legend.materials, options.optional_features);
     stacks.finish();
     {
-        // each column's range, stamped with the stacks written: a paged
-        // model opens without decoding a block
+        // each column's range and top interval, stamped with the stacks
+        // written: a paged model opens without decoding a block, and a ray
+        // that meets only the top of a column needs none
         const std::string path = out_.file_path("stacks");
         const MappedFile written(open_regular_file(path), path, MappedFile::Pages::on_demand);
-        out_.write_file("ranges",
-                        ranges_.finish(stacks_stamp(written.data(), written.size(), path)));
+        const StacksStamp stamp = stacks_stamp(written.data(), written.size(), path);
+        out_.write_file("ranges", ranges_.finish(stamp));
+        out_.write_file("tops", tops_.finish(stamp));
     }
     if (coarse) {
         // a complete stacks file of its own (no channels: those are the

@@ -14,6 +14,7 @@
 
 #include "format/atomic_dir.hpp"
 #include "format/column_ranges_file.hpp"
+#include "format/column_tops_file.hpp"
 #include "format/stacks_writer.hpp"
 #include "model/model.hpp"
 
@@ -38,7 +39,7 @@ public:
         std::vector<Material> materials; ///< the whole model's, EMPTY first
         std::string vertical_datum;      ///< empty: none
     };
-    /// Writes `stacks`, `ranges`, `header`, `cats`, `colors`, `datum`
+    /// Writes `stacks`, `ranges`, `tops`, `header`, `cats`, `colors`, `datum`
     /// (where the model has one) and `hist` (`history`); where
     /// `channels_file` is given, that finished channels file (written for
     /// this frame with the stacks' block size) moves in as `channels`;
@@ -53,6 +54,7 @@ private:
     StacksV2Options options_;
     StacksWriter stacks_;
     ColumnRangesEncoder ranges_; ///< each column's, row by row
+    ColumnTopsEncoder tops_;     ///< each column's top interval, row by row
 };
 
 } // namespace sbrt

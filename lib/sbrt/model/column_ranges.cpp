@@ -47,4 +47,16 @@ std::vector<ZRange> column_ranges(const Model &model)
     return ranges;
 }
 
+std::vector<Interval> column_tops(const Model &model)
+{
+    std::vector<Interval> tops(model.frame().cells(), Interval{EMPTY, 0.0f});
+    for (uint64_t cell = 0; cell < tops.size(); ++cell)
+        model.visit_stack(cell, [&](const auto *first, const auto *last) {
+            if (first != last) // (no stack ends EMPTY)
+                tops[cell] = {uint32_t((last - 1)->material),
+                              last - first > 1 ? float((last - 2)->top) : 0.0f};
+        });
+    return tops;
+}
+
 } // namespace sbrt

@@ -10,6 +10,7 @@
 
 #include <vector>
 
+#include "model/interval_array.hpp"
 #include "model/z_range.hpp"
 
 namespace sbrt {
@@ -24,6 +25,13 @@ double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange
 
 /// The ranges of a model decoded whole (row by row, row 0 north).
 std::vector<ZRange> column_ranges(const Model &model);
+
+/// Each column's top interval (row by row, row 0 north) as the `tops`
+/// member stores it: its material (EMPTY: an empty column) and, in the
+/// record's `top`, its bottom (0 where it is the column's only interval).
+/// A ray that stays above that bottom in a column meets nothing else of
+/// it: its top is the column range's high.
+std::vector<Interval> column_tops(const Model &model);
 
 } // namespace sbrt
 

@@ -117,6 +117,12 @@ public:
             fail_no_ranges();
         return highest_top_;
     }
+    /// Each column's top interval (model/column_ranges.hpp column_tops:
+    /// per cell its material and, in `top`, its bottom), where held: a ray
+    /// that stays above that bottom needs no block.
+    void set_column_tops(IntervalArray tops) { tops_ = std::move(tops); }
+    bool has_column_tops() const { return !tops_.empty(); }
+    const IntervalArray &column_tops() const { return tops_; }
     uint64_t budget_bytes() const { return budget_; }
     PagingFigures figures() const;
 
@@ -141,6 +147,7 @@ private:
     std::shared_ptr<const std::vector<ZRange>> ranges_;
     double highest_top_ = 0;
     std::vector<std::vector<uint16_t>> block_materials_; ///< empty: not known
+    IntervalArray tops_; ///< empty: not held
 
     mutable std::vector<Slot> slots_;
     mutable std::mutex cache_;      ///< guards the slots' blocks, used_, held_

@@ -267,6 +267,10 @@ bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &e
     if (!scene_.draw_model)
         return false;
     if (const StackPages *pages = model_.pages()) {
+        if (pages->has_column_tops())
+            if (const std::optional<bool> met =
+                    cross_top_interval(*pages, cell, t_in, t_out, entry, walk))
+                return *met;
         const int cols = model_.frame().cols;
         const int row = int(cell / uint64_t(cols)), col = int(cell % uint64_t(cols));
         const StackBlock &block = walk.pin.at(*pages, row, col);
@@ -279,6 +283,40 @@ bool Tracer::cross_cell(uint64_t cell, double t_in, double t_out, const Entry &e
     const StackRange stack = model_.stack(cell);
     return model_.intervals().visit([&](const auto *records) {
         return walk_stack(records + stack.begin, records + stack.end, t_in, t_out, entry, walk);
+    });
+}
+
+std::optional<bool> Tracer::cross_top_interval(const StackPages &pages, uint64_t cell,
+                                               double t_in, double t_out, const Entry &entry,
+                                               Walk &walk) const
+{
+    return pages.column_tops().visit([&](const auto *tops) -> std::optional<bool> {
+        using Record = RecordOf<decltype(tops)>;
+        const Record top = tops[cell]; // its material, and its bottom in `top`
+        if (top.material == EMPTY)
+            return false; // an empty column
+        // as walk_stack reckons the ray's heights in the cell
+        const double z_a = walk.o.z + t_in * walk.d.z, z_b = walk.o.z + t_out * walk.d.z;
+        const double bottom = double(top.top);
+        if (!(z_a > bottom))
+            return std::nullopt; // it enters below: the block's stack
+        // the stack as walk_stack reads it down to that bottom: the
+        // interval below ends there (only its top is read), then the top
+        // one, up to the column's range; a column of one interval is that
+        // alone
+        const auto high = decltype(top.top)(pages.column_ranges()[cell].high);
+        const Record stack[2] = {{EMPTY, top.top}, {top.material, high}};
+        // a ray that goes on below the bottom (descending, through a top
+        // interval hidden or translucent) is walked again in the block's
+        // stack, from what it had met before
+        const bool goes_below = !(std::min(z_a, z_b) > bottom);
+        const Hit before = goes_below ? walk.hit : Hit();
+        if (walk_stack(top.top == 0 ? stack + 1 : stack, stack + 2, t_in, t_out, entry, walk))
+            return true;
+        if (!goes_below)
+            return false;
+        walk.hit = before;
+        return std::nullopt;
     });
 }
 

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "frame/coordinate_frame.hpp"
@@ -154,6 +155,13 @@ private:
     uint64_t cell_at(glm::dvec3 local) const;
     bool cross_cell(uint64_t cell, double t_in, double t_out, const Entry &entry,
                     Walk &walk) const;
+    /// cross_cell's answer from the column's top interval alone (a paged
+    /// model's column_tops()), where the ray enters the cell above that
+    /// interval's bottom and stays above it or stops in the interval:
+    /// then no block is read. Nothing (the hit as it was) where the ray
+    /// enters or goes on below.
+    std::optional<bool> cross_top_interval(const StackPages &pages, uint64_t cell, double t_in,
+                                           double t_out, const Entry &entry, Walk &walk) const;
     bool cross_overlays(uint64_t cell, double t_in, double t_out, const Entry &entry,
                         Walk &walk) const;
     bool cross_borehole(const Borehole &borehole, double t_a, double t_b,

@@ -192,7 +192,8 @@ TEST(MemberDirectory, OnlyNamesOfEntriesAreMembers)
     const Sbrt s = valid_sbrt("names");
     const MemberDirectory dir(s.dir);
     EXPECT_EQ(dir.member_names(),
-              (std::vector<std::string>{"cats", "colors", "header", "hist", "ranges", "stacks"}));
+              (std::vector<std::string>{"cats", "colors", "header", "hist", "ranges", "stacks",
+                                        "tops"}));
     for (const std::string name : {"", ".", "..", "../m/stacks", "/etc/passwd"})
         EXPECT_THROW(dir.open_regular(name), Error) << name;
     EXPECT_FALSE(dir.open_regular_if_present("none").has_value());

@@ -11,6 +11,7 @@
 #include "format/format.hpp"
 #include "model/column_ranges.hpp"
 #include "format/column_ranges_file.hpp"
+#include "format/column_tops_file.hpp"
 #include "format/paged_stacks.hpp"
 #include "frame/coordinate_frame.hpp"
 #include "measure/column_log.hpp"
@@ -28,22 +29,34 @@ struct PagedCase {
     sbrt_test::Voxels voxels = sbrt_test::random_voxels(29, 37, 45, 26, 6);
     Model model = sbrt_test::build_model(voxels);
     std::shared_ptr<const std::vector<uint8_t>> bytes;
+    std::vector<uint8_t> ranges_member, tops_member; ///< as write_sbrt writes them
 
     PagedCase()
     {
         StacksV2Options options;
         options.block_size = 8;
         bytes = std::make_shared<const std::vector<uint8_t>>(encode_stacks_v2(model, options));
+        const StacksStamp stamp = stacks_stamp(bytes->data(), bytes->size(), "stacks");
+        ranges_member = encode_column_ranges(column_ranges(model), model.frame(), stamp);
+        ColumnTopsEncoder tops(model.frame());
+        tops.add(column_tops(model));
+        tops_member = tops.finish(stamp);
     }
     /// The paged model whose blocks may take `budget` bytes (the budget
-    /// given holds the column ranges and pyramid too).
-    Model paged(uint64_t budget) const
+    /// given holds the column ranges and pyramid too); with `members`,
+    /// opened with its `ranges` and `tops` members, and room for the tops.
+    Model paged(uint64_t budget, bool members = false) const
     {
         Paging paging;
         paging.budget_bytes = room_for_blocks(budget) + skipping_bytes(model.frame());
         paging.threads = 2;
-        std::optional<Model> m =
-            open_paged_model(bytes->data(), bytes->size(), "test stacks", bytes, paging);
+        StoredRanges stored;
+        if (members) {
+            paging.budget_bytes += 2 * column_tops_bytes(tops_member, model.frame(), "tops");
+            stored = {&ranges_member, "ranges", &tops_member, "tops"};
+        }
+        std::optional<Model> m = open_paged_model(bytes->data(), bytes->size(), "test stacks",
+                                                  bytes, paging, stored);
         if (!m)
             throw Error("not paged");
         return std::move(*m);
@@ -98,13 +111,15 @@ void expect_pyramid_over_ranges(const MinMaxPyramid &whole, const MinMaxPyramid 
 
 } // namespace
 
-TEST(PagedTracing, HitsAreThoseOfTheModelDecodedWhole)
+/// Traces the case's model decoded whole and paged (`members`: with its
+/// column ranges and top intervals) alike, hit for hit.
+void expect_paged_hits_of_the_whole(const PagedCase &c, bool members)
 {
-    const PagedCase c;
     const Frame &f = c.model.frame();
     // room for three blocks: rays keep dropping and decoding blocks again
     const uint64_t budget = 3 * c.largest_block();
-    const Model paged = c.paged(budget);
+    const Model paged = c.paged(budget, members);
+    EXPECT_EQ(paged.pages()->has_column_tops(), members);
     EXPECT_EQ(paged.pages()->block_count(), 30);
     EXPECT_EQ(highest_top_local(paged), highest_top_local(c.model));
     EXPECT_EQ(paged.stats().intervals, c.model.stats().intervals);
@@ -150,8 +165,39 @@ TEST(PagedTracing, HitsAreThoseOfTheModelDecodedWhole)
     EXPECT_GT(hits, 20000u);
     // the budget held, and blocks were dropped and decoded again
     const PagingFigures figures = paged.pages()->figures();
-    EXPECT_LE(figures.peak_bytes, budget);
+    EXPECT_LE(figures.peak_bytes,
+              budget + (members ? column_tops_bytes(c.tops_member, f, "tops") : 0));
     EXPECT_GT(figures.decodes, 2u * 30u);
+}
+
+TEST(PagedTracing, HitsAreThoseOfTheModelDecodedWhole)
+{
+    expect_paged_hits_of_the_whole(PagedCase(), false);
+}
+
+TEST(PagedTracing, HitsThroughTheColumnsTopIntervalsAreThoseOfTheWhole)
+{
+    // the top intervals answer the rays that meet only them; those that
+    // go below (stepping down a column's side, through hidden and
+    // translucent strata, from beneath) walk the blocks' stacks
+    expect_paged_hits_of_the_whole(PagedCase(), true);
+}
+
+TEST(PagedTracing, ViewFromAboveReadsNoBlockThroughTheTopIntervals)
+{
+    const PagedCase c;
+    const Camera above = sbrt_test::top_camera(c.model.frame(), 1e4);
+    const Tracer whole(c.model, 3.0, Scene{});
+    const HitImage want = trace_image(whole, above, 2);
+    size_t hits = 0;
+    for (const bool members : {false, true}) {
+        const Model paged = c.paged(uint64_t(1) << 30, members);
+        const Tracer by_pages(paged, 3.0, Scene{});
+        expect_same_hits(want, trace_image(by_pages, above, 2), hits);
+        // every ray stops in a top interval: no block is read with them
+        EXPECT_EQ(paged.pages()->figures().decodes == 0, members) << members;
+    }
+    EXPECT_GT(hits, 1000u);
 }
 
 TEST(PagedTracing, HidingPreparesOnlyTheBlocksHoldingTheStratum)
@@ -174,7 +220,7 @@ TEST(PagedTracing, HidingPreparesOnlyTheBlocksHoldingTheStratum)
     std::vector<ZRange> ranges = column_ranges(model);
     const std::vector<uint8_t> member = encode_column_ranges(
         ranges, model.frame(), stacks_stamp(bytes->data(), bytes->size(), "stacks"));
-    StoredRanges stored{&member, "ranges"};
+    StoredRanges stored{&member, "ranges", nullptr, {}};
     const std::optional<Model> paged =
         open_paged_model(bytes->data(), bytes->size(), "stacks", bytes, paging, stored);
     ASSERT_TRUE(paged);

@@ -1,0 +1,153 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt (r3.sbrt addon)
+ * PURPOSE:   The `tops` member of an SBRT
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "format/column_tops_file.hpp"
+
+#include <cstring>
+
+#include "util/error.hpp"
+#include "util/parallel.hpp"
+
+namespace sbrt {
+
+namespace {
+
+constexpr char MAGIC[8] = {'S', 'B', 'R', 'T', 'T', 'O', 'P', '1'};
+constexpr uint32_t U16_PAIRS = 0, WIDE = 1;
+
+/// Bytes of a record in `encoding` (0: not one of them).
+size_t top_bytes(uint32_t encoding)
+{
+    return encoding == U16_PAIRS ? 4 : encoding == WIDE ? 8 : 0;
+}
+
+void append_top(ByteWriter &raw, const Interval &top, uint32_t encoding)
+{
+    if (encoding == U16_PAIRS) {
+        raw.u16(uint16_t(top.material));
+        raw.u16(uint16_t(top.top));
+    }
+    else {
+        raw.u32(top.material);
+        raw.f32(top.top);
+    }
+}
+
+/// Record `cell` of `raw` (checked against its column's range `range`) as
+/// a Record; throws sbrt::Error naming `what` where it is not sound.
+template <typename Record>
+Record read_top(const uint8_t *raw, uint32_t encoding, const ZRange &range, size_t materials,
+                const std::string &what)
+{
+    Interval top;
+    if (encoding == U16_PAIRS) {
+        top.material = uint32_t(raw[0] | raw[1] << 8);
+        top.top = float(uint32_t(raw[2] | raw[3] << 8));
+    }
+    else {
+        std::memcpy(&top.material, raw, 4);
+        std::memcpy(&top.top, raw + 4, 4);
+    }
+    // an empty column where its range is empty; else a drawn material whose
+    // bottom lies within the column's range (0 only as its one interval)
+    const bool sound = top.material == EMPTY
+                           ? range.empty() && top.top == 0
+                           : !range.empty() && top.material < materials &&
+                                 top.top >= range.low && top.top < range.high &&
+                                 (top.top > 0 || range.low == 0);
+    if (!sound)
+        fail(what, ": a column's top interval outside its range (corrupt file)");
+    if constexpr (std::is_same_v<Record, CompactInterval>)
+        return {uint16_t(top.material), uint16_t(top.top)};
+    else
+        return top;
+}
+
+/// The records of `raw` as `Records`, checked, row by row on `threads`.
+template <typename Records>
+Records read_tops(const std::vector<uint8_t> &raw, uint32_t encoding, const Frame &frame,
+                  const std::vector<ZRange> &ranges, size_t materials, unsigned threads,
+                  const std::string &what)
+{
+    using Record = typename Records::value_type;
+    Records tops(frame.cells());
+    const size_t record = top_bytes(encoding), row_cells = size_t(frame.cols);
+    for_each_row_in_runs(0, frame.rows, threads, 64, [&](int row) {
+        const size_t first = size_t(row) * row_cells;
+        for (size_t c = first; c < first + row_cells; ++c)
+            tops[c] = read_top<Record>(raw.data() + c * record, encoding, ranges[c], materials,
+                                       what);
+    });
+    return tops;
+}
+
+} // namespace
+
+ColumnTopsEncoder::ColumnTopsEncoder(const Frame &frame) : frame_(frame)
+{
+    tops_.reserve(size_t(frame.cells()) * 4); // u16 pairs, as voxel models take
+}
+
+void ColumnTopsEncoder::add(const std::vector<Interval> &tops)
+{
+    if (cells_ + tops.size() > frame_.cells())
+        fail("ColumnTopsEncoder: more columns than the frame's ", frame_.cells(), " cells");
+    for (const Interval &top : tops) {
+        if (encoding_ == U16_PAIRS && !fits_compact(top)) {
+            // the rest, and those before, wide
+            ByteWriter wide;
+            for (size_t at = 0; at < tops_.size(); at += 4) {
+                const uint8_t *p = tops_.bytes().data() + at;
+                append_top(wide, {uint32_t(load_le(p, 2)), float(load_le(p + 2, 2))}, WIDE);
+            }
+            tops_ = std::move(wide);
+            encoding_ = WIDE;
+        }
+        append_top(tops_, top, encoding_);
+        ++cells_;
+    }
+}
+
+std::vector<uint8_t> ColumnTopsEncoder::finish(const StacksStamp &stamp)
+{
+    if (cells_ != frame_.cells())
+        fail("ColumnTopsEncoder: ", cells_, " columns for ", frame_.cells(), " cells");
+    std::vector<uint8_t> out = encode_column_member(MAGIC, frame_, encoding_, tops_.bytes(), stamp);
+    tops_ = ByteWriter();
+    return out;
+}
+
+uint64_t column_tops_bytes(const std::vector<uint8_t> &member, const Frame &frame,
+                           const std::string &what)
+{
+    constexpr size_t ENCODING_AT = sizeof MAGIC + 2 * 4;
+    if (member.size() < ENCODING_AT + 4 || std::memcmp(member.data(), MAGIC, sizeof MAGIC) != 0)
+        fail(what, ": not a column tops member (bad magic number)");
+    const size_t record = top_bytes(uint32_t(load_le(member.data() + ENCODING_AT, 4)));
+    if (record == 0)
+        fail(what, ": an encoding this reader does not know (corrupt file)");
+    return frame.cells() * record;
+}
+
+std::optional<IntervalArray> decode_column_tops(const uint8_t *data, size_t size,
+                                                const std::string &what, const Frame &frame,
+                                                const StacksStamp &stamp,
+                                                const std::vector<ZRange> &ranges,
+                                                size_t materials, unsigned threads)
+{
+    const std::optional<ColumnRecords> records = decode_column_member(
+        data, size, what, "column tops", MAGIC, frame, stamp, top_bytes);
+    if (!records)
+        return std::nullopt; // made from other stacks
+    if (ranges.size() != frame.cells())
+        fail(what, ": read without its columns' ranges");
+    if (records->encoding == U16_PAIRS)
+        return IntervalArray(read_tops<CompactIntervals>(records->bytes, records->encoding, frame,
+                                                         ranges, materials, threads, what));
+    return IntervalArray(read_tops<Intervals>(records->bytes, records->encoding, frame, ranges,
+                                              materials, threads, what));
+}
+
+} // namespace sbrt
