@@ -512,34 +512,48 @@ class TestRenderReadsOnlyTheRegion(TestCase):
     def tearDownClass(cls):
         cls.del_temp_region()
 
-    def render_part(self, *extra):
+    def render_part(self, *extra, model="blocks"):
         # rows 70..110, cols 50..90: grown by a cell, block row 1, block cols 0 and 1
         self.runModule("g.region", n=1300, s=890, e=910, w=500, res=10)
         run = subprocess.run(
-            ["r3.sbrt.render", "--verbose", "--o", "input=blocks", "output=rw_part",
+            ["r3.sbrt.render", "--verbose", "--o", "input=" + model, "output=rw_part",
              "view=top", "material=rw_part_m", "hit_elevation=rw_part_z", *extra],
             capture_output=True, text=True,
         )
         self.assertEqual(run.returncode, 0, run.stderr)
         return run.stderr
 
-    def test_part_equals_the_whole_render_there(self):
-        stderr = self.render_part()
-        # paged (the CPU draws it): the rays decode the two blocks under
-        # the region
-        self.assertIn("Paged model: 2 of the 12 blocks decoded", stderr)
+    def assert_part_is_the_whole(self):
         for whole, part in (("rw_whole_m", "rw_part_m"), ("rw_whole_z", "rw_part_z"),
                             ("rw_whole.red", "rw_part.red"), ("rw_whole.green", "rw_part.green"),
                             ("rw_whole.blue", "rw_part.blue")):
             self.assertRastersNoDifference(part, whole, precision=0)
 
+    def test_part_equals_the_whole_render_there(self):
+        stderr = self.render_part()
+        # paged (the CPU draws it): every ray from above stops in its
+        # column's top interval, which the SBRT's tops member holds: no
+        # block is decoded
+        self.assertIn("Paged model: 0 of the 12 blocks decoded", stderr)
+        self.assert_part_is_the_whole()
+
+    def test_without_the_tops_the_blocks_under_the_region_are_read(self):
+        # an SBRT written before the tops member: the rays decode the two
+        # blocks under the region, and draw the same
+        self.runModule("r3.sbrt.manage", copy=["blocks", "blocks_untopped"], overwrite=True)
+        os.remove(os.path.join(gs.gisenv()["GISDBASE"], gs.gisenv()["LOCATION_NAME"],
+                               gs.gisenv()["MAPSET"], "sbrt", "blocks_untopped", "tops"))
+        stderr = self.render_part(model="blocks_untopped")
+        self.assertIn("Paged model: 2 of the 12 blocks decoded", stderr)
+        self.assert_part_is_the_whole()
+
     def test_depth_map_is_measured_from_above_the_whole_model(self):
         # the depth of a top view is measured from a camera above the whole
-        # model: the model is paged (each column's range read from its
-        # member), and only the blocks under the region are decoded
+        # model: the model is paged (each column's range and top interval
+        # read from its members), and no block is decoded
         stderr = self.render_part("depth=rw_part_d")
         self.assertIn("SBRT <blocks> paged: its 12 blocks", stderr)
-        self.assertIn("Paged model: 2 of the 12 blocks decoded", stderr)
+        self.assertIn("Paged model: 0 of the 12 blocks decoded", stderr)
         self.assertRastersNoDifference("rw_part_d", "rw_whole_d", precision=1e-9)
 
     def test_memory_bounds_the_process(self):
