@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "format/stacks_v2_layout.hpp"
+#include "util/unfilled_allocator.hpp"
 
 namespace sbrt {
 
@@ -49,7 +50,8 @@ std::vector<uint8_t> encode_column_member(const char (&magic)[8], const Frame &f
 /// \brief A member's records, decompressed and checked against its crc.
 struct ColumnRecords {
     uint32_t encoding = 0;
-    std::vector<uint8_t> bytes;
+    /// every byte written by the decompressor (never zero-filled first)
+    std::vector<uint8_t, UnfilledAllocator<uint8_t>> bytes;
 };
 
 /// The records of untrusted member bytes for stacks of `frame` stamped

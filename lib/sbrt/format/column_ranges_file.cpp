@@ -105,7 +105,7 @@ std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, siz
         return std::nullopt; // made from other stacks
     const uint32_t encoding = records->encoding;
     const size_t pair = range_bytes(encoding);
-    const std::vector<uint8_t> &raw = records->bytes;
+    const auto &raw = records->bytes;
     std::vector<ZRange> ranges(frame.cells());
     const float depths = float(frame.depths);
     const size_t row_cells = size_t(frame.cols);

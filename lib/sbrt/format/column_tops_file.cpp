@@ -67,7 +67,7 @@ Record read_top(const uint8_t *raw, uint32_t encoding, const ZRange &range, size
 
 /// The records of `raw` as `Records`, checked, row by row on `threads`.
 template <typename Records>
-Records read_tops(const std::vector<uint8_t> &raw, uint32_t encoding, const Frame &frame,
+Records read_tops(const uint8_t *raw, uint32_t encoding, const Frame &frame,
                   const std::vector<ZRange> &ranges, size_t materials, unsigned threads,
                   const std::string &what)
 {
@@ -77,7 +77,7 @@ Records read_tops(const std::vector<uint8_t> &raw, uint32_t encoding, const Fram
     for_each_row_in_runs(0, frame.rows, threads, 64, [&](int row) {
         const size_t first = size_t(row) * row_cells;
         for (size_t c = first; c < first + row_cells; ++c)
-            tops[c] = read_top<Record>(raw.data() + c * record, encoding, ranges[c], materials,
+            tops[c] = read_top<Record>(raw + c * record, encoding, ranges[c], materials,
                                        what);
     });
     return tops;
@@ -144,9 +144,9 @@ std::optional<IntervalArray> decode_column_tops(const uint8_t *data, size_t size
     if (ranges.size() != frame.cells())
         fail(what, ": read without its columns' ranges");
     if (records->encoding == U16_PAIRS)
-        return IntervalArray(read_tops<CompactIntervals>(records->bytes, records->encoding, frame,
+        return IntervalArray(read_tops<CompactIntervals>(records->bytes.data(), records->encoding, frame,
                                                          ranges, materials, threads, what));
-    return IntervalArray(read_tops<Intervals>(records->bytes, records->encoding, frame, ranges,
+    return IntervalArray(read_tops<Intervals>(records->bytes.data(), records->encoding, frame, ranges,
                                               materials, threads, what));
 }
 
