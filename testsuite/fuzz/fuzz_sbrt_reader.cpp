@@ -156,7 +156,7 @@ void read_tops_member(const std::vector<uint8_t> &bytes)
     const sbrt::Frame frame = member_frame(bytes, stamp);
     const std::vector<sbrt::ZRange> ranges(frame.cells(), sbrt::ZRange{0.0f, 100.0f});
     try {
-        sbrt::column_tops_bytes(bytes, frame, "fuzz");
+        sbrt::column_tops_bytes(bytes.data(), bytes.size(), frame, "fuzz");
         sbrt::decode_column_tops(bytes.data(), bytes.size(), "fuzz", frame, stamp, ranges, 5,
                                  1);
     }

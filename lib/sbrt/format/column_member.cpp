@@ -5,6 +5,7 @@
  ****************************************************************************/
 #include "format/column_member.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 
@@ -13,6 +14,8 @@
 #include "format/byte_io.hpp"
 #include "format/stacks_fields.hpp"
 #include "util/error.hpp"
+#include "util/parallel.hpp"
+#include "util/unfilled_allocator.hpp"
 
 namespace sbrt {
 
@@ -20,26 +23,57 @@ namespace {
 
 constexpr size_t HEADER_BYTES = 8 + 3 * 4 + 8 + 8 + 4 + 8 + 4;
 
-/// `raw` zstd-compressed (level 3) as one frame, streamed into a vector
-/// that grows by what it holds, not by the compression bound.
-std::vector<uint8_t> compressed(const std::vector<uint8_t> &raw)
+using Compressor = std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)>;
+
+/// `raw` zstd-compressed (level 3) as one frame appended to `out`,
+/// streamed (`out` grows by what it holds, not by the compression bound).
+void append_frame(ZSTD_CCtx *context, const uint8_t *raw, size_t size,
+                  std::vector<uint8_t> &out)
 {
-    const std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> context(ZSTD_createCCtx(),
-                                                                      ZSTD_freeCCtx);
-    ZSTD_CCtx_setParameter(context.get(), ZSTD_c_compressionLevel, 3);
-    ZSTD_CCtx_setPledgedSrcSize(context.get(), raw.size());
-    std::vector<uint8_t> out;
+    ZSTD_CCtx_reset(context, ZSTD_reset_session_only);
+    ZSTD_CCtx_setPledgedSrcSize(context, size);
     std::vector<uint8_t> chunk(ZSTD_CStreamOutSize());
-    ZSTD_inBuffer in = {raw.data(), raw.size(), 0};
+    ZSTD_inBuffer in = {raw, size, 0};
     for (;;) {
         ZSTD_outBuffer o = {chunk.data(), chunk.size(), 0};
-        const size_t left = ZSTD_compressStream2(context.get(), &o, &in, ZSTD_e_end);
+        const size_t left = ZSTD_compressStream2(context, &o, &in, ZSTD_e_end);
         if (ZSTD_isError(left))
             fail("encode_column_member: zstd: ", ZSTD_getErrorName(left));
         out.insert(out.end(), chunk.begin(), chunk.begin() + ptrdiff_t(o.pos));
         if (left == 0)
-            return out;
+            return;
     }
+}
+
+/// A frame of a member: where its bytes lie, and the rows it holds.
+struct MemberFrame {
+    const uint8_t *bytes;
+    size_t size;
+    int first_row, rows;
+};
+
+/// The frames of `packed` (checksummed), each of whole rows of
+/// `row_bytes`, together `rows`; throws sbrt::Error naming `what` else.
+std::vector<MemberFrame> member_frames(const uint8_t *packed, size_t size, size_t row_bytes,
+                                       int rows, const std::string &what)
+{
+    std::vector<MemberFrame> frames;
+    int row = 0;
+    for (size_t at = 0; at < size;) {
+        const size_t bytes = ZSTD_findFrameCompressedSize(packed + at, size - at);
+        const unsigned long long content = ZSTD_isError(bytes)
+                                               ? ZSTD_CONTENTSIZE_ERROR
+                                               : ZSTD_getFrameContentSize(packed + at, bytes);
+        if (content == ZSTD_CONTENTSIZE_ERROR || content == ZSTD_CONTENTSIZE_UNKNOWN ||
+            content % row_bytes != 0 || content / row_bytes > uint64_t(rows - row))
+            fail(what, ": its frames do not hold whole rows of the grid (corrupt file)");
+        frames.push_back({packed + at, bytes, row, int(content / row_bytes)});
+        row += int(content / row_bytes);
+        at += bytes;
+    }
+    if (row != rows)
+        fail(what, ": its frames hold ", row, " of the grid's ", rows, " rows (corrupt file)");
+    return frames;
 }
 
 } // namespace
@@ -62,7 +96,14 @@ std::vector<uint8_t> encode_column_member(const char (&magic)[8], const Frame &f
                                           uint32_t encoding, const std::vector<uint8_t> &records,
                                           const StacksStamp &stamp)
 {
-    const std::vector<uint8_t> packed = compressed(records);
+    const Compressor context(ZSTD_createCCtx(), ZSTD_freeCCtx);
+    ZSTD_CCtx_setParameter(context.get(), ZSTD_c_compressionLevel, 3);
+    std::vector<uint8_t> packed;
+    const size_t band = size_t(COLUMN_MEMBER_FRAME_ROWS) * size_t(frame.cols) *
+                        (frame.cells() ? records.size() / frame.cells() : 0);
+    for (size_t at = 0; at < records.size() || packed.empty(); at += band)
+        append_frame(context.get(), records.data() + at, std::min(band, records.size() - at),
+                     packed);
     ByteWriter out;
     out.raw(magic, sizeof magic);
     out.u32(uint32_t(frame.rows));
@@ -77,11 +118,12 @@ std::vector<uint8_t> encode_column_member(const char (&magic)[8], const Frame &f
     return out.bytes();
 }
 
-std::optional<ColumnRecords> decode_column_member(const uint8_t *data, size_t size,
-                                                  const std::string &what, const char *kind,
-                                                  const char (&magic)[8], const Frame &frame,
-                                                  const StacksStamp &stamp,
-                                                  size_t (*record_bytes)(uint32_t encoding))
+std::optional<uint32_t> decode_column_member(const uint8_t *data, size_t size,
+                                             const std::string &what, const char *kind,
+                                             const char (&magic)[8], const Frame &frame,
+                                             const StacksStamp &stamp,
+                                             size_t (*record_bytes)(uint32_t encoding),
+                                             unsigned threads, const ColumnBandReader &read)
 {
     if (size < HEADER_BYTES || std::memcmp(data, magic, sizeof magic) != 0)
         fail(what, ": not a ", kind, " member (bad magic number)");
@@ -102,15 +144,19 @@ std::optional<ColumnRecords> decode_column_member(const uint8_t *data, size_t si
         fail(what, ": its grid or size does not match the stacks (corrupt file)");
     if (crc32_of(data + HEADER_BYTES, packed) != crc)
         fail(what, ": checksum mismatch (corrupt file)");
-    ColumnRecords out;
-    out.encoding = encoding;
-    out.bytes.resize(frame.cells() * record);
-    const size_t n = ZSTD_decompress(out.bytes.data(), out.bytes.size(), data + HEADER_BYTES,
-                                     packed);
-    if (ZSTD_isError(n) || n != out.bytes.size())
-        fail(what, ": ", ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong size",
-             " (corrupt file)");
-    return out;
+    const size_t row_bytes = size_t(frame.cols) * record;
+    const std::vector<MemberFrame> frames =
+        member_frames(data + HEADER_BYTES, packed, row_bytes, frame.rows, what);
+    for_each_row(int(frames.size()), threads, [&](int f) {
+        const MemberFrame &band = frames[size_t(f)];
+        std::vector<uint8_t, UnfilledAllocator<uint8_t>> raw(size_t(band.rows) * row_bytes);
+        const size_t n = ZSTD_decompress(raw.data(), raw.size(), band.bytes, band.size);
+        if (ZSTD_isError(n) || n != raw.size())
+            fail(what, ": ", ZSTD_isError(n) ? ZSTD_getErrorName(n) : "wrong size",
+                 " (corrupt file)");
+        read(encoding, band.first_row, band.rows, raw.data());
+    });
+    return encoding;
 }
 
 } // namespace sbrt

@@ -10,12 +10,12 @@
 #define SBRT_COLUMN_MEMBER_HPP
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "format/stacks_v2_layout.hpp"
-#include "util/unfilled_allocator.hpp"
 
 namespace sbrt {
 
@@ -39,31 +39,39 @@ StacksStamp stamp_of(const HeaderV2 &header);
 /// checked; throws sbrt::Error naming `what`).
 StacksStamp stacks_stamp(const uint8_t *data, size_t size, const std::string &what);
 
+/// Rows of records a zstd frame of a member holds (its last frame: the
+/// rest): frames are decompressed in parallel, each into a buffer of its
+/// own, so that no buffer of the whole member is made.
+constexpr int COLUMN_MEMBER_FRAME_ROWS = 64;
+
 /// The member's bytes: the 8-byte `magic`, u32 rows, u32 cols, u32
 /// encoding, the stamp (u64 end, u64 intervals, u32 table crc), u64
 /// compressed bytes, u32 their crc32; then `records` (one a column, row
-/// by row, row 0 north) zstd-compressed.
+/// by row, row 0 north) zstd-compressed, a frame every
+/// COLUMN_MEMBER_FRAME_ROWS rows (members written before held one frame;
+/// both are one zstd stream).
 std::vector<uint8_t> encode_column_member(const char (&magic)[8], const Frame &frame,
                                           uint32_t encoding, const std::vector<uint8_t> &records,
                                           const StacksStamp &stamp);
 
-/// \brief A member's records, decompressed and checked against its crc.
-struct ColumnRecords {
-    uint32_t encoding = 0;
-    /// every byte written by the decompressor (never zero-filled first)
-    std::vector<uint8_t, UnfilledAllocator<uint8_t>> bytes;
-};
+/// Converts a band of whole rows of a member's records in `encoding`:
+/// rows [first_row, first_row + rows), `record_bytes(encoding)` a column.
+using ColumnBandReader =
+    std::function<void(uint32_t encoding, int first_row, int rows, const uint8_t *records)>;
 
-/// The records of untrusted member bytes for stacks of `frame` stamped
-/// `stamp`, `record_bytes(encoding)` bytes a column (0 for an encoding
-/// this reader does not know); nothing where the member was made from
-/// other stacks (stale). Damage, another magic or an unknown encoding
-/// throw sbrt::Error naming `what` (`kind`: what the member holds).
-std::optional<ColumnRecords> decode_column_member(const uint8_t *data, size_t size,
-                                                  const std::string &what, const char *kind,
-                                                  const char (&magic)[8], const Frame &frame,
-                                                  const StacksStamp &stamp,
-                                                  size_t (*record_bytes)(uint32_t encoding));
+/// The encoding of untrusted member bytes for stacks of `frame` stamped
+/// `stamp`, whose records (`record_bytes(encoding)` bytes a column; 0 for
+/// an encoding this reader does not know) are handed to `read` band by
+/// band (a frame each, on `threads` threads; 0: all cores); nothing where
+/// the member was made from other stacks (stale). Damage, another magic
+/// or an unknown encoding throw sbrt::Error naming `what` (`kind`: what
+/// the member holds), as `read` may.
+std::optional<uint32_t> decode_column_member(const uint8_t *data, size_t size,
+                                             const std::string &what, const char *kind,
+                                             const char (&magic)[8], const Frame &frame,
+                                             const StacksStamp &stamp,
+                                             size_t (*record_bytes)(uint32_t encoding),
+                                             unsigned threads, const ColumnBandReader &read);
 
 } // namespace sbrt
 

@@ -11,7 +11,6 @@
 #include "format/stacks_fields.hpp"
 #include "format/stacks_v2_layout.hpp"
 #include "util/error.hpp"
-#include "util/parallel.hpp"
 
 namespace sbrt {
 
@@ -99,22 +98,15 @@ std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, siz
                                                         const StacksStamp &stamp,
                                                         unsigned threads)
 {
-    const std::optional<ColumnRecords> records = decode_column_member(
-        data, size, what, "column ranges", MAGIC, frame, stamp, range_bytes);
-    if (!records)
-        return std::nullopt; // made from other stacks
-    const uint32_t encoding = records->encoding;
-    const size_t pair = range_bytes(encoding);
-    const auto &raw = records->bytes;
     std::vector<ZRange> ranges(frame.cells());
     const float depths = float(frame.depths);
     const size_t row_cells = size_t(frame.cols);
-    // row by row on all cores (7.4 million columns in a national model,
+    // band by band on all cores (7.4 million columns in a national model,
     // read on every opening)
-    for_each_row_in_runs(0, frame.rows, threads, 64, [&](int row) {
-        const uint8_t *p = raw.data() + size_t(row) * row_cells * pair;
-        ZRange *out = ranges.data() + size_t(row) * row_cells;
-        for (size_t c = 0; c < row_cells; ++c, p += pair) {
+    const auto read = [&](uint32_t encoding, int first_row, int rows, const uint8_t *p) {
+        ZRange *out = ranges.data() + size_t(first_row) * row_cells;
+        const size_t pair = range_bytes(encoding);
+        for (size_t c = 0; c < size_t(rows) * row_cells; ++c, p += pair) {
             ZRange r;
             if (encoding == U16_PAIRS) {
                 const uint16_t low = uint16_t(p[0] | p[1] << 8), high = uint16_t(p[2] | p[3] << 8);
@@ -131,7 +123,10 @@ std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, siz
                 fail(what, ": a column range outside the model's depths (corrupt file)");
             out[c] = empty ? ZRange{} : r;
         }
-    });
+    };
+    if (!decode_column_member(data, size, what, "column ranges", MAGIC, frame, stamp,
+                              range_bytes, threads, read))
+        return std::nullopt; // made from other stacks
     return ranges;
 }
 

@@ -8,7 +8,6 @@
 #include <cstring>
 
 #include "util/error.hpp"
-#include "util/parallel.hpp"
 
 namespace sbrt {
 
@@ -65,21 +64,25 @@ Record read_top(const uint8_t *raw, uint32_t encoding, const ZRange &range, size
         return top;
 }
 
-/// The records of `raw` as `Records`, checked, row by row on `threads`.
+/// Each column's top interval of member bytes as `Records`, checked
+/// against `ranges`; nothing where stale.
 template <typename Records>
-Records read_tops(const uint8_t *raw, uint32_t encoding, const Frame &frame,
-                  const std::vector<ZRange> &ranges, size_t materials, unsigned threads,
-                  const std::string &what)
+std::optional<Records> read_tops(const uint8_t *data, size_t size, const std::string &what,
+                                 const Frame &frame, const StacksStamp &stamp,
+                                 const std::vector<ZRange> &ranges, size_t materials,
+                                 unsigned threads)
 {
     using Record = typename Records::value_type;
     Records tops(frame.cells());
-    const size_t record = top_bytes(encoding), row_cells = size_t(frame.cols);
-    for_each_row_in_runs(0, frame.rows, threads, 64, [&](int row) {
-        const size_t first = size_t(row) * row_cells;
-        for (size_t c = first; c < first + row_cells; ++c)
-            tops[c] = read_top<Record>(raw + c * record, encoding, ranges[c], materials,
-                                       what);
-    });
+    const size_t row_cells = size_t(frame.cols);
+    const auto read = [&](uint32_t encoding, int first_row, int rows, const uint8_t *p) {
+        const size_t first = size_t(first_row) * row_cells, record = top_bytes(encoding);
+        for (size_t c = first; c < first + size_t(rows) * row_cells; ++c, p += record)
+            tops[c] = read_top<Record>(p, encoding, ranges[c], materials, what);
+    };
+    if (!decode_column_member(data, size, what, "column tops", MAGIC, frame, stamp, top_bytes,
+                              threads, read))
+        return std::nullopt; // made from other stacks
     return tops;
 }
 
@@ -119,13 +122,13 @@ std::vector<uint8_t> ColumnTopsEncoder::finish(const StacksStamp &stamp)
     return out;
 }
 
-uint64_t column_tops_bytes(const std::vector<uint8_t> &member, const Frame &frame,
+uint64_t column_tops_bytes(const uint8_t *data, size_t size, const Frame &frame,
                            const std::string &what)
 {
     constexpr size_t ENCODING_AT = sizeof MAGIC + 2 * 4;
-    if (member.size() < ENCODING_AT + 4 || std::memcmp(member.data(), MAGIC, sizeof MAGIC) != 0)
+    if (size < ENCODING_AT + 4 || std::memcmp(data, MAGIC, sizeof MAGIC) != 0)
         fail(what, ": not a column tops member (bad magic number)");
-    const size_t record = top_bytes(uint32_t(load_le(member.data() + ENCODING_AT, 4)));
+    const size_t record = top_bytes(uint32_t(load_le(data + ENCODING_AT, 4)));
     if (record == 0)
         fail(what, ": an encoding this reader does not know (corrupt file)");
     return frame.cells() * record;
@@ -137,17 +140,19 @@ std::optional<IntervalArray> decode_column_tops(const uint8_t *data, size_t size
                                                 const std::vector<ZRange> &ranges,
                                                 size_t materials, unsigned threads)
 {
-    const std::optional<ColumnRecords> records = decode_column_member(
-        data, size, what, "column tops", MAGIC, frame, stamp, top_bytes);
-    if (!records)
-        return std::nullopt; // made from other stacks
     if (ranges.size() != frame.cells())
         fail(what, ": read without its columns' ranges");
-    if (records->encoding == U16_PAIRS)
-        return IntervalArray(read_tops<CompactIntervals>(records->bytes.data(), records->encoding, frame,
-                                                         ranges, materials, threads, what));
-    return IntervalArray(read_tops<Intervals>(records->bytes.data(), records->encoding, frame, ranges,
-                                              materials, threads, what));
+    // held as the member holds them: compact where it is
+    if (column_tops_bytes(data, size, frame, what) == frame.cells() * sizeof(CompactInterval)) {
+        if (auto tops = read_tops<CompactIntervals>(data, size, what, frame, stamp, ranges,
+                                                    materials, threads))
+            return IntervalArray(std::move(*tops));
+        return std::nullopt;
+    }
+    if (auto tops =
+            read_tops<Intervals>(data, size, what, frame, stamp, ranges, materials, threads))
+        return IntervalArray(std::move(*tops));
+    return std::nullopt;
 }
 
 } // namespace sbrt

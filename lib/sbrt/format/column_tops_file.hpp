@@ -43,10 +43,10 @@ private:
     uint64_t cells_ = 0;
 };
 
-/// Bytes the top intervals of untrusted member bytes `member` take in
-/// memory for `frame`, read from its header alone; throws sbrt::Error
-/// naming `what` where it is not a `tops` member this reader knows.
-uint64_t column_tops_bytes(const std::vector<uint8_t> &member, const Frame &frame,
+/// Bytes the top intervals of untrusted member bytes take in memory for
+/// `frame`, read from its header alone; throws sbrt::Error naming `what`
+/// where it is not a `tops` member this reader knows.
+uint64_t column_tops_bytes(const uint8_t *data, size_t size, const Frame &frame,
                            const std::string &what);
 
 /// Each column's top interval from untrusted member bytes for stacks of

@@ -116,7 +116,8 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     Paging with_tops = paging;
     if (!ranges.empty() && stored.tops && paging.column_ranges == Paging::Ranges::needed &&
         tops_fit(*summary, paging,
-                 column_tops_bytes(*stored.tops, summary->frame, stored.tops_what)))
+                 column_tops_bytes(stored.tops->data(), stored.tops->size(),
+                                   summary->frame, stored.tops_what)))
         tops = decode_column_tops(stored.tops->data(), stored.tops->size(), stored.tops_what,
                                   summary->frame, stamp_of(layout->header), ranges,
                                   summary->materials.size(), paging.threads);

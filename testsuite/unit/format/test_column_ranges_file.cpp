@@ -10,7 +10,9 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <zstd.h>
 
+#include "format/byte_io.hpp"
 #include "format/column_ranges_file.hpp"
 #include "format/format.hpp"
 #include "model/column_ranges.hpp"
@@ -144,4 +146,39 @@ TEST(ColumnRangesFile, BandsTurnToF32PairsWhereALaterRangeNeedsThem)
     ColumnRangesEncoder short_of_one(f);
     short_of_one.add(std::vector<ZRange>(5));
     EXPECT_THROW(short_of_one.finish(stamp), Error);
+}
+
+TEST(ColumnRangesFile, MembersOfOneFrameAsWrittenBeforeAreRead)
+{
+    // members are written a zstd frame every 64 rows (decompressed in
+    // parallel); those written before held the whole member in one frame
+    const Model model = sbrt_test::build_model(sbrt_test::random_voxels(33, 150, 40, 12, 4));
+    const Frame &f = model.frame();
+    const std::vector<ZRange> want = column_ranges(model);
+    const StacksStamp stamp{5, 6, 7};
+    const std::vector<uint8_t> framed = encode_column_ranges(want, f, stamp);
+    constexpr size_t HEADER = 52;
+    const uint8_t *packed = framed.data() + HEADER;
+    const size_t packed_size = framed.size() - HEADER;
+    EXPECT_LT(ZSTD_findFrameCompressedSize(packed, packed_size), packed_size); // three frames
+    std::vector<uint8_t> raw(f.cells() * 4);
+    ASSERT_EQ(ZSTD_decompress(raw.data(), raw.size(), packed, packed_size), raw.size());
+    std::vector<uint8_t> one(ZSTD_compressBound(raw.size()));
+    one.resize(ZSTD_compress(one.data(), one.size(), raw.data(), raw.size(), 3));
+    std::vector<uint8_t> older_bytes(framed.begin(), framed.begin() + HEADER);
+    for (int i = 0; i < 8; ++i) // the compressed size, then its crc
+        older_bytes[40 + i] = uint8_t(uint64_t(one.size()) >> (8 * i));
+    const uint32_t crc = crc32_of(one.data(), one.size());
+    for (int i = 0; i < 4; ++i)
+        older_bytes[48 + i] = uint8_t(crc >> (8 * i));
+    older_bytes.insert(older_bytes.end(), one.begin(), one.end());
+    const std::vector<uint8_t> &older = older_bytes;
+    for (const std::vector<uint8_t> *member : {&framed, &older}) {
+        const auto back = decode_column_ranges(member->data(), member->size(), "r", f, stamp, 3);
+        ASSERT_TRUE(back);
+        EXPECT_TRUE(same(*back, want));
+    }
+    // frames that do not hold whole rows of the grid are refused
+    const Frame wider = sbrt_test::unit_frame(f.rows * 2, f.cols / 2, f.depths);
+    EXPECT_THROW(decode_column_ranges(framed.data(), framed.size(), "r", wider, stamp), Error);
 }

@@ -159,7 +159,7 @@ TEST(ColumnTopsFile, ContinuousBottomsAreKeptWide)
     encoder.add({tops.begin() + 1, tops.end()});
     const StacksStamp stamp{1, 2, 3};
     const std::vector<uint8_t> bytes = encoder.finish(stamp);
-    EXPECT_EQ(column_tops_bytes(bytes, f, "tops"), 4u * 8u);
+    EXPECT_EQ(column_tops_bytes(bytes.data(), bytes.size(), f, "tops"), 4u * 8u);
     const auto back = decode_column_tops(bytes.data(), bytes.size(), "tops", f, stamp, ranges, 3);
     ASSERT_TRUE(back);
     EXPECT_FALSE(back->is_compact());

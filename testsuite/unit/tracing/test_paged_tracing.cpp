@@ -52,7 +52,8 @@ struct PagedCase {
         paging.threads = 2;
         StoredRanges stored;
         if (members) {
-            paging.budget_bytes += 2 * column_tops_bytes(tops_member, model.frame(), "tops");
+            paging.budget_bytes += 2 * column_tops_bytes(tops_member.data(), tops_member.size(),
+                                                       model.frame(), "tops");
             stored = {&ranges_member, "ranges", &tops_member, "tops"};
         }
         std::optional<Model> m = open_paged_model(bytes->data(), bytes->size(), "test stacks",
@@ -166,7 +167,8 @@ void expect_paged_hits_of_the_whole(const PagedCase &c, bool members)
     // the budget held, and blocks were dropped and decoded again
     const PagingFigures figures = paged.pages()->figures();
     EXPECT_LE(figures.peak_bytes,
-              budget + (members ? column_tops_bytes(c.tops_member, f, "tops") : 0));
+              budget + (members ? column_tops_bytes(c.tops_member.data(),
+                                                          c.tops_member.size(), f, "tops") : 0));
     EXPECT_GT(figures.decodes, 2u * 30u);
 }
 
