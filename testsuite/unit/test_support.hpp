@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -252,6 +253,25 @@ inline sbrt::Frame unit_frame(int rows, int cols, int depths, double cell = 1)
     f.bottom = 0;
     f.top = depths;
     return f;
+}
+
+/// A random model of 70 x 90 cells and 24 depths of 5 classes (`seed`)
+/// whose column 11 holds nothing but air on every seventh row.
+inline sbrt::Model model_with_air_columns(unsigned seed)
+{
+    Voxels voxels = random_voxels(seed, 70, 90, 24, 5);
+    for (int z = 0; z < voxels.frame.depths; ++z)
+        for (int r = 0; r < voxels.frame.rows; r += 7)
+            voxels.classes[(size_t(z) * voxels.frame.rows + r) * voxels.frame.cols + 11] =
+                sbrt::NULL_CLASS;
+    return build_model(voxels);
+}
+
+/// Writes `bytes` as the file `path` (a member damaged on purpose).
+inline void put_file_bytes(const std::string &path, const std::vector<uint8_t> &bytes)
+{
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 inline std::string temp_dir(const std::string &tag)

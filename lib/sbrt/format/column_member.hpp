@@ -15,7 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "format/byte_io.hpp"
 #include "format/stacks_v2_layout.hpp"
+#include "util/error.hpp"
 
 namespace sbrt {
 
@@ -53,6 +55,67 @@ constexpr int COLUMN_MEMBER_FRAME_ROWS = 64;
 std::vector<uint8_t> encode_column_member(const char (&magic)[8], const Frame &frame,
                                           uint32_t encoding, const std::vector<uint8_t> &records,
                                           const StacksStamp &stamp);
+
+/// Encodings of a per-column member's records: two 16-bit values a
+/// column while every record fits them, else 8 bytes a column (wide).
+constexpr uint32_t NARROW_RECORDS = 0, WIDE_RECORDS = 1;
+/// Bytes of a record in `encoding` (0: not one of them).
+inline size_t column_record_bytes(uint32_t encoding)
+{
+    return encoding == NARROW_RECORDS ? 4 : encoding == WIDE_RECORDS ? 8 : 0;
+}
+
+/// \brief A per-column member's bytes, band by band of rows: its records
+/// held packed as the member stores them, narrow until a value does not
+/// fit them (then those before are widened too). `Codec` names the
+/// member (`MAGIC`, `NAME` in errors) and its `Value`, says whether one
+/// `fits_narrow`, writes it in an encoding (`append`) and reads a narrow
+/// record back (`narrow`).
+template <typename Codec>
+class ColumnMemberEncoder {
+public:
+    using Value = typename Codec::Value;
+
+    explicit ColumnMemberEncoder(const Frame &frame) : frame_(frame)
+    {
+        records_.reserve(size_t(frame.cells()) * 4); // narrow, as voxel models take
+    }
+    /// The values of the next columns (row by row, row 0 north).
+    void add(const std::vector<Value> &values)
+    {
+        if (cells_ + values.size() > frame_.cells())
+            fail(Codec::NAME, ": more columns than the frame's ", frame_.cells(), " cells");
+        for (const Value &value : values) {
+            if (encoding_ == NARROW_RECORDS && !Codec::fits_narrow(value)) {
+                ByteWriter wide;
+                for (size_t at = 0; at < records_.size(); at += 4)
+                    Codec::append(wide, Codec::narrow(records_.bytes().data() + at),
+                                  WIDE_RECORDS);
+                records_ = std::move(wide);
+                encoding_ = WIDE_RECORDS;
+            }
+            Codec::append(records_, value, encoding_);
+            ++cells_;
+        }
+    }
+    /// The member's bytes, once every column's value was added; throws
+    /// sbrt::Error else.
+    std::vector<uint8_t> finish(const StacksStamp &stamp)
+    {
+        if (cells_ != frame_.cells())
+            fail(Codec::NAME, ": ", cells_, " columns for ", frame_.cells(), " cells");
+        std::vector<uint8_t> out =
+            encode_column_member(Codec::MAGIC, frame_, encoding_, records_.bytes(), stamp);
+        records_ = ByteWriter();
+        return out;
+    }
+
+private:
+    Frame frame_;
+    uint32_t encoding_ = NARROW_RECORDS;
+    ByteWriter records_;
+    uint64_t cells_ = 0;
+};
 
 /// Converts a band of whole rows of a member's records in `encoding`:
 /// rows [first_row, first_row + rows), `record_bytes(encoding)` a column.

@@ -20,31 +20,27 @@
 
 namespace sbrt {
 
-/// The member's bytes (encode_column_member): magic "SBRTRNG1", encoding
-/// 0: u16 low, u16 high, an empty column 0xffff, 0; 1: f32 low, f32 high,
-/// an empty column 1, 0.
+/// \brief How the `ranges` member stores a column's range
+/// (encode_column_member: magic "SBRTRNG1"; narrow: u16 low, u16 high, an
+/// empty column 0xffff, 0; wide: f32 low, f32 high, an empty column 1,
+/// 0).
+struct ColumnRangeCodec {
+    using Value = ZRange;
+    static constexpr char MAGIC[8] = {'S', 'B', 'R', 'T', 'R', 'N', 'G', '1'};
+    static constexpr const char *NAME = "encode_column_ranges";
+    /// Whether a range fits a u16 pair exactly (voxel boundaries).
+    static bool fits_narrow(const ZRange &range);
+    static void append(ByteWriter &out, const ZRange &range, uint32_t encoding);
+    static ZRange narrow(const uint8_t *record);
+};
+
+/// The `ranges` member, band by band of rows (4 bytes a column of a voxel
+/// model, 8 where a range is not a pair of voxel boundaries up to 65534).
+using ColumnRangesEncoder = ColumnMemberEncoder<ColumnRangeCodec>;
+
+/// The member's bytes for `ranges` (row by row, row 0 north).
 std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, const Frame &frame,
                                           const StacksStamp &stamp);
-
-/// \brief encode_column_ranges band by band of rows: the ranges held
-/// packed as the member stores them (4 bytes a column of a voxel model,
-/// 8 where a range is not a pair of voxel boundaries up to 65534), not
-/// as ZRange.
-class ColumnRangesEncoder {
-public:
-    explicit ColumnRangesEncoder(const Frame &frame);
-    /// The ranges of the next columns (row by row, row 0 north).
-    void add(const std::vector<ZRange> &ranges);
-    /// The member's bytes, once every column's range was added; throws
-    /// sbrt::Error else.
-    std::vector<uint8_t> finish(const StacksStamp &stamp);
-
-private:
-    Frame frame_;
-    uint32_t encoding_ = 0; ///< u16 pairs until a range does not fit them
-    ByteWriter ranges_;
-    uint64_t cells_ = 0;
-};
 
 /// The ranges of untrusted member bytes for stacks of `frame` stamped
 /// `stamp`; nothing where the member was made from other stacks (stale:

@@ -13,27 +13,6 @@ namespace sbrt {
 
 namespace {
 
-constexpr char MAGIC[8] = {'S', 'B', 'R', 'T', 'T', 'O', 'P', '1'};
-constexpr uint32_t U16_PAIRS = 0, WIDE = 1;
-
-/// Bytes of a record in `encoding` (0: not one of them).
-size_t top_bytes(uint32_t encoding)
-{
-    return encoding == U16_PAIRS ? 4 : encoding == WIDE ? 8 : 0;
-}
-
-void append_top(ByteWriter &raw, const Interval &top, uint32_t encoding)
-{
-    if (encoding == U16_PAIRS) {
-        raw.u16(uint16_t(top.material));
-        raw.u16(uint16_t(top.top));
-    }
-    else {
-        raw.u32(top.material);
-        raw.f32(top.top);
-    }
-}
-
 /// Record `cell` of `raw` (checked against its column's range `range`) as
 /// a Record; throws sbrt::Error naming `what` where it is not sound.
 template <typename Record>
@@ -41,10 +20,8 @@ Record read_top(const uint8_t *raw, uint32_t encoding, const ZRange &range, size
                 const std::string &what)
 {
     Interval top;
-    if (encoding == U16_PAIRS) {
-        top.material = uint32_t(raw[0] | raw[1] << 8);
-        top.top = float(uint32_t(raw[2] | raw[3] << 8));
-    }
+    if (encoding == NARROW_RECORDS)
+        top = ColumnTopCodec::narrow(raw);
     else {
         std::memcpy(&top.material, raw, 4);
         std::memcpy(&top.top, raw + 4, 4);
@@ -76,59 +53,44 @@ std::optional<Records> read_tops(const uint8_t *data, size_t size, const std::st
     Records tops(frame.cells());
     const size_t row_cells = size_t(frame.cols);
     const auto read = [&](uint32_t encoding, int first_row, int rows, const uint8_t *p) {
-        const size_t first = size_t(first_row) * row_cells, record = top_bytes(encoding);
+        const size_t first = size_t(first_row) * row_cells;
+        const size_t record = column_record_bytes(encoding);
         for (size_t c = first; c < first + size_t(rows) * row_cells; ++c, p += record)
             tops[c] = read_top<Record>(p, encoding, ranges[c], materials, what);
     };
-    if (!decode_column_member(data, size, what, "column tops", MAGIC, frame, stamp, top_bytes,
-                              threads, read))
+    if (!decode_column_member(data, size, what, "column tops", ColumnTopCodec::MAGIC, frame, stamp,
+                              column_record_bytes, threads, read))
         return std::nullopt; // made from other stacks
     return tops;
 }
 
 } // namespace
 
-ColumnTopsEncoder::ColumnTopsEncoder(const Frame &frame) : frame_(frame)
+void ColumnTopCodec::append(ByteWriter &out, const Interval &top, uint32_t encoding)
 {
-    tops_.reserve(size_t(frame.cells()) * 4); // u16 pairs, as voxel models take
-}
-
-void ColumnTopsEncoder::add(const std::vector<Interval> &tops)
-{
-    if (cells_ + tops.size() > frame_.cells())
-        fail("ColumnTopsEncoder: more columns than the frame's ", frame_.cells(), " cells");
-    for (const Interval &top : tops) {
-        if (encoding_ == U16_PAIRS && !fits_compact(top)) {
-            // the rest, and those before, wide
-            ByteWriter wide;
-            for (size_t at = 0; at < tops_.size(); at += 4) {
-                const uint8_t *p = tops_.bytes().data() + at;
-                append_top(wide, {uint32_t(load_le(p, 2)), float(load_le(p + 2, 2))}, WIDE);
-            }
-            tops_ = std::move(wide);
-            encoding_ = WIDE;
-        }
-        append_top(tops_, top, encoding_);
-        ++cells_;
+    if (encoding == NARROW_RECORDS) {
+        out.u16(uint16_t(top.material));
+        out.u16(uint16_t(top.top));
+    }
+    else {
+        out.u32(top.material);
+        out.f32(top.top);
     }
 }
 
-std::vector<uint8_t> ColumnTopsEncoder::finish(const StacksStamp &stamp)
+Interval ColumnTopCodec::narrow(const uint8_t *record)
 {
-    if (cells_ != frame_.cells())
-        fail("ColumnTopsEncoder: ", cells_, " columns for ", frame_.cells(), " cells");
-    std::vector<uint8_t> out = encode_column_member(MAGIC, frame_, encoding_, tops_.bytes(), stamp);
-    tops_ = ByteWriter();
-    return out;
+    return {uint32_t(load_le(record, 2)), float(load_le(record + 2, 2))};
 }
 
 uint64_t column_tops_bytes(const uint8_t *data, size_t size, const Frame &frame,
                            const std::string &what)
 {
-    constexpr size_t ENCODING_AT = sizeof MAGIC + 2 * 4;
-    if (size < ENCODING_AT + 4 || std::memcmp(data, MAGIC, sizeof MAGIC) != 0)
+    const char(&magic)[8] = ColumnTopCodec::MAGIC;
+    constexpr size_t ENCODING_AT = sizeof magic + 2 * 4;
+    if (size < ENCODING_AT + 4 || std::memcmp(data, magic, sizeof magic) != 0)
         fail(what, ": not a column tops member (bad magic number)");
-    const size_t record = top_bytes(uint32_t(load_le(data + ENCODING_AT, 4)));
+    const size_t record = column_record_bytes(uint32_t(load_le(data + ENCODING_AT, 4)));
     if (record == 0)
         fail(what, ": an encoding this reader does not know (corrupt file)");
     return frame.cells() * record;

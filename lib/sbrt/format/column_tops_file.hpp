@@ -22,26 +22,21 @@
 
 namespace sbrt {
 
-/// \brief The `tops` member's bytes (encode_column_member: magic
-/// "SBRTTOP1"; encoding 0: u16 material, u16 bottom; 1: u32 material, f32
-/// bottom), band by band of rows: each column's top interval as
-/// column_tops() gives it, held packed as the member stores it (4 bytes
-/// a column of a voxel model).
-class ColumnTopsEncoder {
-public:
-    explicit ColumnTopsEncoder(const Frame &frame);
-    /// The top intervals of the next columns (row by row, row 0 north).
-    void add(const std::vector<Interval> &tops);
-    /// The member's bytes, once every column's was added; throws
-    /// sbrt::Error else.
-    std::vector<uint8_t> finish(const StacksStamp &stamp);
-
-private:
-    Frame frame_;
-    uint32_t encoding_ = 0; ///< u16 pairs until a record does not fit them
-    ByteWriter tops_;
-    uint64_t cells_ = 0;
+/// \brief How the `tops` member stores a column's top interval as
+/// column_tops() gives it (encode_column_member: magic "SBRTTOP1";
+/// narrow: u16 material, u16 bottom; wide: u32 material, f32 bottom).
+struct ColumnTopCodec {
+    using Value = Interval;
+    static constexpr char MAGIC[8] = {'S', 'B', 'R', 'T', 'T', 'O', 'P', '1'};
+    static constexpr const char *NAME = "ColumnTopsEncoder";
+    static bool fits_narrow(const Interval &top) { return fits_compact(top); }
+    static void append(ByteWriter &out, const Interval &top, uint32_t encoding);
+    static Interval narrow(const uint8_t *record);
 };
+
+/// The `tops` member, band by band of rows (4 bytes a column of a voxel
+/// model).
+using ColumnTopsEncoder = ColumnMemberEncoder<ColumnTopCodec>;
 
 /// Bytes the top intervals of untrusted member bytes take in memory for
 /// `frame`, read from its header alone; throws sbrt::Error naming `what`

@@ -7,7 +7,6 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <cstdio>
-#include <fstream>
 
 #include <gtest/gtest.h>
 #include <zstd.h>
@@ -22,18 +21,6 @@
 using namespace sbrt;
 
 namespace {
-
-std::vector<uint8_t> file_bytes(const std::string &path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
-}
-
-void put_bytes(const std::string &path, const std::vector<uint8_t> &bytes)
-{
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
-}
 
 bool same(const std::vector<ZRange> &a, const std::vector<ZRange> &b)
 {
@@ -57,12 +44,7 @@ Paging roomy()
 
 TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
 {
-    sbrt_test::Voxels voxels = sbrt_test::random_voxels(31, 70, 90, 24, 5);
-    for (int z = 0; z < voxels.frame.depths; ++z) // columns of air
-        for (int r = 0; r < voxels.frame.rows; r += 7)
-            voxels.classes[(size_t(z) * voxels.frame.rows + r) * voxels.frame.cols + 11] =
-                NULL_CLASS;
-    const Model model = sbrt_test::build_model(voxels);
+    const Model model = sbrt_test::model_with_air_columns(31); // and columns of air
     const std::vector<ZRange> want = column_ranges(model);
     size_t empty = 0;
     for (const ZRange &r : want)
@@ -80,8 +62,8 @@ TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
     const Model other = sbrt_test::build_model(sbrt_test::random_voxels(32, 70, 90, 24, 5));
     const std::string other_dir = dir + "_other";
     write_sbrt(other_dir, other, "test");
-    const std::vector<uint8_t> member = file_bytes(dir + "/ranges");
-    put_bytes(dir + "/ranges", file_bytes(other_dir + "/ranges"));
+    const std::vector<uint8_t> member = read_file_bytes(dir + "/ranges");
+    sbrt_test::put_file_bytes(dir + "/ranges", read_file_bytes(other_dir + "/ranges"));
     const std::optional<Model> stale = read_sbrt_paged(dir, roomy());
     ASSERT_TRUE(stale);
     EXPECT_TRUE(same(stale->pages()->column_ranges(), want));
@@ -91,7 +73,7 @@ TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
     for (const size_t at : {size_t(3), size_t(60), member.size() - 2}) {
         std::vector<uint8_t> damaged = member;
         damaged[at] ^= 0x20;
-        put_bytes(dir + "/ranges", damaged);
+        sbrt_test::put_file_bytes(dir + "/ranges", damaged);
         try {
             read_sbrt_paged(dir, roomy());
             // a flipped stamp reads as a member of other stacks: ignored
@@ -101,7 +83,7 @@ TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
             EXPECT_NE(std::string(e.what()).find("ranges"), std::string::npos) << e.what();
         }
     }
-    put_bytes(dir + "/ranges", member);
+    sbrt_test::put_file_bytes(dir + "/ranges", member);
     EXPECT_NO_THROW(read_sbrt_paged(dir, roomy()));
 }
 

@@ -6,7 +6,6 @@
  *            refused; continuous tops kept wide
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
-#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -20,18 +19,6 @@
 using namespace sbrt;
 
 namespace {
-
-std::vector<uint8_t> file_bytes(const std::string &path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
-}
-
-void put_bytes(const std::string &path, const std::vector<uint8_t> &bytes)
-{
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
-}
 
 Paging roomy()
 {
@@ -55,12 +42,7 @@ void expect_tops(const IntervalArray &got, const std::vector<Interval> &want)
 
 TEST(ColumnTopsFile, PagedModelHoldsEachColumnsTopInterval)
 {
-    sbrt_test::Voxels voxels = sbrt_test::random_voxels(41, 70, 90, 24, 5);
-    for (int z = 0; z < voxels.frame.depths; ++z) // columns of air
-        for (int r = 0; r < voxels.frame.rows; r += 7)
-            voxels.classes[(size_t(z) * voxels.frame.rows + r) * voxels.frame.cols + 11] =
-                NULL_CLASS;
-    const Model model = sbrt_test::build_model(voxels);
+    const Model model = sbrt_test::model_with_air_columns(41); // and columns of air
     const std::vector<Interval> want = column_tops(model);
     size_t empty = 0, single = 0;
     for (const Interval &top : want) {
@@ -87,8 +69,8 @@ TEST(ColumnTopsFile, PagedModelHoldsEachColumnsTopInterval)
     // a member made from other stacks is ignored
     const Model other = sbrt_test::build_model(sbrt_test::random_voxels(42, 70, 90, 24, 5));
     write_sbrt(dir + "_other", other, "test");
-    const std::vector<uint8_t> member = file_bytes(dir + "/tops");
-    put_bytes(dir + "/tops", file_bytes(dir + "_other/tops"));
+    const std::vector<uint8_t> member = read_file_bytes(dir + "/tops");
+    sbrt_test::put_file_bytes(dir + "/tops", read_file_bytes(dir + "_other/tops"));
     const std::optional<Model> stale = read_sbrt_paged(dir, roomy());
     ASSERT_TRUE(stale);
     EXPECT_FALSE(stale->pages()->has_column_tops());
@@ -97,7 +79,7 @@ TEST(ColumnTopsFile, PagedModelHoldsEachColumnsTopInterval)
     for (const size_t at : {size_t(3), size_t(16), member.size() - 2}) {
         std::vector<uint8_t> damaged = member;
         damaged[at] ^= 0x20;
-        put_bytes(dir + "/tops", damaged);
+        sbrt_test::put_file_bytes(dir + "/tops", damaged);
         try {
             read_sbrt_paged(dir, roomy());
             FAIL() << "a damaged tops member was taken (" << at << ")";
