@@ -66,8 +66,8 @@ uint64_t least_budget(const ModelSummary &summary, const Paging &paging);
 
 /// Whether a paged model of `summary` holds each column's top interval
 /// (`tops_bytes` of them; 0: none stored) within the budget of `paging`:
-/// where they take at most half of what the budget leaves beside what
-/// it needs at least (least_budget), so that the blocks keep the rest.
+/// where they take at most three quarters of what the budget leaves
+/// beside what it needs at least (least_budget); the blocks keep the rest.
 bool tops_fit(const ModelSummary &summary, const Paging &paging, uint64_t tops_bytes);
 
 /// Block `block` of the opened file `data`, decompressed, its checksum,

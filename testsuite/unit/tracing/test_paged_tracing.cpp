@@ -400,3 +400,30 @@ TEST(PagedTracing, UnsoundStacksAreRefusedAsWhenDecodedWhole)
         }
     }
 }
+
+TEST(PagedTracing, TopIntervalsAreHeldWhereTheBudgetHasRoomForThem)
+{
+    // up to three quarters of what the budget leaves beside its least
+    const PagedCase c;
+    const auto summary = read_stacks_summary(c.bytes->data(), c.bytes->size(), "x");
+    ASSERT_TRUE(summary);
+    Paging paging;
+    paging.budget_bytes = least_budget(*summary, paging) + 4000;
+    EXPECT_TRUE(tops_fit(*summary, paging, 3000));
+    EXPECT_FALSE(tops_fit(*summary, paging, 3001));
+    EXPECT_FALSE(tops_fit(*summary, paging, 0)); // none stored
+    // opened where they do not fit: the blocks answer every ray alike
+    const uint64_t tops = column_tops_bytes(c.tops_member.data(), c.tops_member.size(),
+                                            c.model.frame(), "tops");
+    paging.budget_bytes = least_budget(*summary, paging) + tops;
+    const StoredRanges stored{&c.ranges_member, "ranges", &c.tops_member, "tops"};
+    const std::optional<Model> paged =
+        open_paged_model(c.bytes->data(), c.bytes->size(), "x", c.bytes, paging, stored);
+    ASSERT_TRUE(paged);
+    EXPECT_FALSE(paged->pages()->has_column_tops());
+    const Camera above = sbrt_test::top_camera(c.model.frame(), 1e4);
+    size_t hits = 0;
+    expect_same_hits(trace_image(Tracer(c.model, 3.0, Scene{}), above, 2),
+                     trace_image(Tracer(*paged, 3.0, Scene{}), above, 2), hits);
+    EXPECT_GT(paged->pages()->figures().decodes, 0u);
+}
