@@ -39,7 +39,7 @@
 #                   T S A B C or CxRxD  a demo model (tools/bench_model.sh)
 #            LIMIT: seconds for any one measured command (1800)
 #            MEMORY: adds memory=MEMORY to the r3.sbrt.render, convert,
-#            what, profile and surface runs (their rows say so where
+#            what, profile and surface runs and to the viewer's requests (their rows say so where
 #            refused); x16 runs with memory=2000 where MEMORY is not given
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
@@ -144,7 +144,7 @@ echo "national_views: $name: g.gui.sbrt under Xvfb" >&2
 if ! command -v Xvfb >/dev/null || ! command -v xdotool >/dev/null; then
     echo '{"error": "no Xvfb or xdotool on this machine"}' >"$dir/viewer.json"
 else
-    VIEWER_FIGURES=$dir/viewer.json timeout "$limit" python3 "$here/viewer_benchmark.py" "$name" 800 600 \
+    VIEWER_FIGURES=$dir/viewer.json timeout "$limit" python3 "$here/viewer_benchmark.py" "$name" 800 600 "${mem[@]}" \
         >"$dir/viewer.log" 2>&1 || true
     [ -s "$dir/viewer.json" ] ||
         echo "{\"error\": $(tail -1 "$dir/viewer.log" | python3 -c 'import json, sys; print(json.dumps(sys.stdin.read().strip() or "no figures"))')}" \
@@ -291,8 +291,9 @@ rows += [
     ("viewer: a stratum hidden as the viewer asks (reduced frame / exact frame after the request)",
      from_json("viewer", lambda d: "%.1f / %.1f ms" % (
          d["renderer_hide_reduced_ms"], d["renderer_hide_exact_ms"]))),
-    ("viewer: g.gui.sbrt started to first frame shown",
-     from_json("viewer", lambda d: "%.2f s" % d["viewer_first_s"])),
+    ("viewer: g.gui.sbrt started to first frame shown (its view server's peak RSS)",
+     from_json("viewer", lambda d: "%.2f s (%s)" % (
+         d["viewer_first_s"], mb(d.get("viewer_server_rss_kb", 0))))),
     ("viewer: frames shown a second while dragging (3 drags)",
      from_json("viewer", lambda d: span(d["viewer_fps"]))),
     ("viewer: exact frame after the mouse rests (3 drags; the server's time of it)",

@@ -32,6 +32,30 @@ from view_client import ViewServer  # noqa: E402
 FIGURES = {}
 
 
+def child_pids(pid):
+    """The processes whose parent is `pid` (from /proc)."""
+    children = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open("/proc/%s/stat" % entry) as stat:
+                    # the parent follows the command's closing parenthesis
+                    if int(stat.read().rsplit(")", 1)[1].split()[1]) == pid:
+                        children.append(int(entry))
+            except (OSError, IndexError, ValueError):
+                pass
+    return children
+
+
+def process_name(pid):
+    """The command name of process `pid` ("" where it is gone)."""
+    try:
+        with open("/proc/%d/comm" % pid) as comm:
+            return comm.read().strip()
+    except OSError:
+        return ""
+
+
 def peak_rss_kb(pid):
     """VmHWM of process `pid` in kB (0 where /proc does not say)."""
     try:
@@ -104,7 +128,8 @@ def viewer(sbrt, width, height, extra=()):
     display = ":" + xvfb.stdout.readline().decode().strip()
     env = dict(os.environ, DISPLAY=display, GRASS_SBRT_VIEWER_LOG=log, NO_AT_BRIDGE="1")
     # of the extra words, the viewer takes property= (it colours by it)
-    options = [w for w in extra if w.startswith("property=")]
+    # and memory= (every request it sends carries it)
+    options = [w for w in extra if w.startswith(("property=", "memory="))]
     started = time.monotonic()  # the viewer's log times are the same clock
     gui = subprocess.Popen(["g.gui.sbrt", "input=" + sbrt, "size=%d,%d" % (width, height)]
                            + options,
@@ -177,6 +202,12 @@ def viewer(sbrt, width, height, extra=()):
                       " (server %.0f ms%s)" % (exact[0]["ms"], "".join(
                           " " + w for w in FIGURES["viewer_refined_options"])) if exact else ""))
     finally:
+        # the peak of the viewer's view server (its child r3.sbrt.render)
+        servers = [pid for pid in child_pids(gui.pid) if process_name(pid) == "r3.sbrt.render"]
+        if servers:
+            FIGURES["viewer_server_rss_kb"] = peak_rss_kb(servers[0])
+            print("viewer's view server peak RSS: %.0f MB"
+                  % (FIGURES["viewer_server_rss_kb"] / 1024))
         gui.terminate()
         gui.wait(timeout=10)
         xvfb.terminate()

@@ -56,6 +56,14 @@
 # % description: e.g. kans_5+kans_6+kans_7 (an SBRT with property channels)
 # %end
 # %option
+# % key: memory
+# % type: integer
+# % required: no
+# % key_desc: memory in MB
+# % label: Memory for the model in MB (as r3.sbrt.render memory=)
+# % description: Default: a quarter of the available memory, at least 300
+# %end
+# %option
 # % key: backend
 # % type: string
 # % required: no
@@ -78,6 +86,8 @@ def main():
     size = [int(v) for v in options["size"].split(",")]
     if len(size) != 2 or min(size) < 16 or max(size) > 8192:
         gs.fatal(_("size= takes width,height in pixels (16 to 8192 each), e.g. 800,600"))
+    if options["memory"] and int(options["memory"]) < 1:
+        gs.fatal(_("memory=%s is not a number of MB of at least 1") % options["memory"])
 
     from grass.script.utils import get_lib_path
 
@@ -110,6 +120,7 @@ def main():
             backend=options["backend"],
             log_path=os.environ.get(LOG_VARIABLE),
             property=options["property"],
+            memory=options["memory"],
         )
     except ServerError as error:
         server.close()

@@ -142,10 +142,12 @@ class ViewServer:
         extent, strata, _channels = self.model(sbrt)
         return extent, strata
 
-    def model(self, sbrt):
+    def model(self, sbrt, memory=""):
         """The extent, strata (id, colour, label) and property channels of
-        SBRT `sbrt`."""
-        head = self._ask("classes", ["input=" + sbrt])
+        SBRT `sbrt`, read within `memory` MB (the server's default where
+        empty; the frames' requests give the same, so that it is read
+        once)."""
+        head = self._ask("classes", ["input=" + sbrt] + (["memory=" + memory] if memory else []))
         extent = Extent(*[float(v) for v in head[1:8]], voxels=head[8:9] == ["1"])
         strata = []
         for text in self._lines(int(self._line()[1])):

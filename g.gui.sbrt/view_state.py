@@ -68,6 +68,7 @@ class ViewState:
         self.texture = ""
         self.drape = False
         self.backend = "auto"
+        self.memory = ""  # MB; empty: the view server's default
         # property channels: the property (a channel or a sum a+b), shown
         # as colours or not, its selection threshold (only voxels with the
         # property >= it are solid), the uncertainty channel that greys
@@ -238,6 +239,8 @@ class ViewState:
             words.append("fade=" + self.fade)
         if self.backend != "auto":
             words.append("backend=" + self.backend)
+        if self.memory:
+            words.append("memory=" + self.memory)
         return words
 
     def command(self, width, height, output="", png="", extra=()):

@@ -59,11 +59,12 @@ class EventLog:
 
 class ViewerFrame(wx.Frame):
     def __init__(self, server, sbrt, size, boreholes="", texture="", backend="auto",
-                 log_path=None, property=""):
+                 log_path=None, property="", memory=""):
         super().__init__(None, title="g.gui.sbrt: " + sbrt)
         self.log = EventLog(log_path)
-        extent, strata, self.channels = server.model(sbrt)
+        extent, strata, self.channels = server.model(sbrt, memory)
         self.state = ViewState(sbrt, extent, strata)
+        self.state.memory = memory
         self.state.boreholes, self.state.texture = boreholes, texture
         self.state.drape = bool(texture)
         self.state.backend = backend

@@ -18,6 +18,7 @@ from geomodel_fixture import set_up_t_model
 from viewer_fixture import ViewerSession, read_rgb_maps
 
 SIZE = (480, 560)  # asked for; the window may make the view larger
+MEMORY = 400
 
 
 def shade_family(pixel, color):
@@ -34,7 +35,8 @@ class TestViewerGui(TestCase, ViewerSession):
     @classmethod
     def setUpClass(cls):
         set_up_t_model(cls)
-        cls.start_viewer(["input=geo", "size=%d,%d" % SIZE])
+        # memory= as r3.sbrt.render's: every request carries it
+        cls.start_viewer(["input=geo", "size=%d,%d" % SIZE, "memory=%d" % MEMORY])
 
     @classmethod
     def tearDownClass(cls):
@@ -74,6 +76,7 @@ class TestViewerGui(TestCase, ViewerSession):
                               e["t"] > still["t"], after=count)
         azimuth = [w for w in frame["words"] if w.startswith("azimuth=")][0]
         self.assertNotEqual(azimuth, "azimuth=225")
+        self.assertIn("memory=%d" % MEMORY, frame["words"])
         turned = self.screenshot()
         differing = sum(1 for i in range(0, len(turned), 3)
                         if turned[i:i + 3] != start[i:i + 3])
@@ -116,6 +119,7 @@ class TestViewerGui(TestCase, ViewerSession):
         self.assertEqual(saved["returncode"], 0, saved["messages"])
         self.assertIn("hide=%d" % biggest.id, saved["command"])
         self.assertIn("output=gui_saved", saved["command"])
+        self.assertIn("memory=%d" % MEMORY, saved["command"])
         self.assertTrue(os.path.exists(os.path.join(self.work, "gui_saved.png")))
         self.use_temp_region()
         self.runModule("g.region", raster="gui_saved.red")

@@ -167,6 +167,9 @@ class TestViewState(TestCase):
         self.assertIsNone(word(state.words(10, 10), "texture"))  # drape off
         state.drape = True
         self.assertEqual(word(state.words(10, 10), "texture"), "ortho")
+        self.assertIsNone(word(words, "memory"))  # the server's default
+        state.memory = "2000"
+        self.assertEqual(word(state.words(10, 10, moving=True), "memory"), "2000")
 
     def test_property_words(self):
         """Colour by a property, its selection threshold, a fade: each its
@@ -249,6 +252,7 @@ class TestViewState(TestCase):
         state.texture, state.drape = "ortho", True
         state.property, state.threshold, state.fade = "kans_5", 50.0, "onz_lk"
         state.backend, state.smooth_shading = "egl", True
+        state.memory = "500"
         words = state.words(320, 240) + state.words(320, 240, moving=True, reduced=True)
         keys = {w.split("=", 1)[0] for w in words}
         self.assertEqual(keys - set(defaults), set())
