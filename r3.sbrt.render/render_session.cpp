@@ -21,6 +21,7 @@
 #include "skipping_report.hpp"
 #include "texture_input.hpp"
 #include "builders/voxel_selection.hpp"
+#include "format/paged_stacks.hpp"
 #include "frame/fitting_exaggeration.hpp"
 #include "tracing/scene_pruning.hpp"
 
@@ -71,6 +72,8 @@ void RenderSession::load(RenderRequest &request, const struct Cell_head &region)
         apply_color_option(request, at_->model->materials());
         fit(*at_, sbrt::highest_top_local(*at_->model)); // once a model
         at_->model_key = key;
+        at_->blocks_budget = at_->model->is_paged() ? at_->model->pages()->budget_bytes() : 0;
+        share_budget_with_coarse_level();
     }
     if (request.zexag_fitted)
         request.zexag = at_->fitted_zexag;
@@ -92,9 +95,14 @@ bool RenderSession::use_coarse_level(RenderRequest &request, const std::string &
         if (key == no_coarse_key_)
             return false;
         drop_level(coarse);
+        // room for the coarse level while it is read: the exact model's
+        // blocks down to the least share_budget_with_coarse_level leaves
+        if (levels_[0].model && levels_[0].model->is_paged())
+            levels_[0].model->pages()->set_budget_bytes(levels_[0].blocks_budget / 2);
         std::optional<sbrt::CoarseLevel> level =
             sbrt_grass::read_sbrt_lod_map(request.input.c_str());
         if (!level) {
+            share_budget_with_coarse_level();
             G_important_message(_("SBRT <%s> has no coarse level of detail (under 512 x 512 "
                                   "cells, or imported before r3.sbrt stored one): "
                                   "detail=coarse draws the exact model"),
@@ -109,6 +117,7 @@ bool RenderSession::use_coarse_level(RenderRequest &request, const std::string &
                         ? level->exact_top_local
                         : sbrt::highest_top_local(*coarse.model));
         coarse.model_key = key;
+        share_budget_with_coarse_level();
         G_important_message(_("detail=coarse: a coarse frame of SBRT <%s>, 1 cell in %d a "
                               "side (%d x %d cells), not exact"),
                             request.input.c_str(), coarse.factor, coarse.model->frame().rows,
@@ -123,6 +132,21 @@ void RenderSession::fit(Level &level, double top_local)
     // fitting_exaggeration(model) of the exact model
     level.top_local = top_local;
     level.fitted_zexag = sbrt::fitting_exaggeration(level.model->frame(), top_local);
+}
+
+void RenderSession::share_budget_with_coarse_level()
+{
+    Level &exact = levels_[0], &coarse = levels_[1];
+    if (!exact.model || !exact.model->is_paged())
+        return;
+    // the coarse model decoded whole, the prepared scene's copy of it and
+    // the pyramid over its cells
+    const uint64_t coarse_bytes =
+        coarse.model
+            ? 2 * coarse.model->memory_bytes() + sbrt::skipping_bytes(coarse.model->frame())
+            : 0;
+    exact.model->pages()->set_budget_bytes(
+        exact.blocks_budget - std::min(coarse_bytes, exact.blocks_budget / 2));
 }
 
 void RenderSession::drop_level(Level &level)

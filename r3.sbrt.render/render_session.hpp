@@ -77,6 +77,8 @@ private:
     struct Level {
         std::string model_key;
         std::unique_ptr<sbrt::Model> model;
+        /// a paged model's budget for its blocks, as read
+        uint64_t blocks_budget = 0;
         int factor = 1;           ///< fine cells a side per cell (1: exact)
         /// The exact model's highest top (local units): a coarse level is
         /// framed and exaggerated as the exact model
@@ -116,6 +118,10 @@ private:
     static void fit(Level &level, double top_local);
     /// Forgets the level's model and every stage built on it.
     static void drop_level(Level &level);
+    /// The coarse level, where held, takes its bytes from the paged exact
+    /// model's blocks (up to half of their budget): the process stays
+    /// within memory= with both.
+    void share_budget_with_coarse_level();
     /// Forgets the prepared scene, its renderer and backend (of `level`;
     /// by default the level drawn).
     void drop_scene();

@@ -42,7 +42,7 @@ StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
     : rows_(frame.rows), cols_(frame.cols), size_(checked_block_size(block_size)),
       block_rows_((frame.rows + block_size - 1) / block_size),
       block_cols_((frame.cols + block_size - 1) / block_size), decode_(std::move(decode)),
-      budget_(budget_bytes), budget_name_(budget_name),
+      budget_(budget_bytes), opened_budget_(budget_bytes), budget_name_(budget_name),
       slots_(size_t(block_rows_) * size_t(block_cols_))
 {
     if (!ranges.empty()) { // stored beside the stacks
@@ -153,6 +153,21 @@ void StackPages::hold(int b, std::shared_ptr<const StackBlock> block, bool evict
         release_free_heap();
 }
 
+void StackPages::set_budget_bytes(uint64_t bytes) const
+{
+    {
+        const std::lock_guard<std::mutex> lock(cache_);
+        budget_ = bytes;
+        while (held_ > budget_ && !used_.empty()) {
+            Slot &last = slots_[size_t(used_.back())];
+            held_ -= last.block->bytes();
+            last.block.reset();
+            used_.pop_back();
+        }
+    }
+    release_free_heap();
+}
+
 std::shared_ptr<const StackBlock> StackPages::block(int b) const
 {
     return fetch(b, true);
@@ -170,8 +185,8 @@ std::shared_ptr<const StackBlock> StackPages::fetch(int b, bool evict) const
         return block;
     auto block = std::make_shared<const StackBlock>(decode_(b));
     ++decodes_;
-    if (block->bytes() > budget_)
-        fail("the memory budget (", budget_name_, ") of ", mib(budget_), " MiB is less than "
+    if (block->bytes() > opened_budget_)
+        fail("the memory budget (", budget_name_, ") of ", mib(opened_budget_), " MiB is less than "
              "one block of the model takes decoded (", mib(block->bytes()), " MiB): give ",
              budget_name_, " at least ", uint64_t(std::ceil(double(block->bytes()) / (1 << 20))) + 1);
     hold(b, block, evict);

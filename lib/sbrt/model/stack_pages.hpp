@@ -124,6 +124,11 @@ public:
     bool has_column_tops() const { return !tops_.empty(); }
     const IntervalArray &column_tops() const { return tops_; }
     uint64_t budget_bytes() const { return budget_; }
+    /// Holds the blocks within `bytes` from now on, the least recently
+    /// used dropped at once where more are held; between views (no reader
+    /// is fetching blocks). Const as the cache is: the model's stacks stay
+    /// what they are.
+    void set_budget_bytes(uint64_t bytes) const;
     PagingFigures figures() const;
 
 private:
@@ -142,7 +147,10 @@ private:
 
     int rows_, cols_, size_, block_rows_, block_cols_;
     Decoder decode_;
-    uint64_t budget_;
+    mutable uint64_t budget_; ///< set_budget_bytes changes it between views
+    /// as opened: a block larger is refused (below it, a smaller budget
+    /// set later still holds the block just decoded)
+    const uint64_t opened_budget_;
     const char *budget_name_;
     std::shared_ptr<const std::vector<ZRange>> ranges_;
     double highest_top_ = 0;

@@ -427,3 +427,21 @@ TEST(PagedTracing, TopIntervalsAreHeldWhereTheBudgetHasRoomForThem)
                      trace_image(Tracer(*paged, 3.0, Scene{}), above, 2), hits);
     EXPECT_GT(paged->pages()->figures().decodes, 0u);
 }
+
+TEST(PagedTracing, ASmallerBudgetDropsBlocksAtOnceAndStillTraces)
+{
+    // a view server gives part of the blocks' budget to the coarse level
+    const PagedCase c;
+    const Model paged = c.paged(uint64_t(1) << 30);
+    const Camera camera = sbrt_test::top_camera(c.model.frame(), 1e4);
+    const Tracer whole(c.model, 3.0, Scene{}), by_pages(paged, 3.0, Scene{});
+    const HitImage want = trace_image(whole, camera, 2);
+    size_t hits = 0;
+    expect_same_hits(want, trace_image(by_pages, camera, 2), hits);
+    ASSERT_GT(paged.pages()->figures().held_bytes, 2 * c.largest_block());
+    const uint64_t smaller = c.largest_block() / 2; // below one block: the newest stays
+    paged.pages()->set_budget_bytes(smaller);
+    EXPECT_LE(paged.pages()->figures().held_bytes, smaller);
+    expect_same_hits(want, trace_image(by_pages, camera, 2), hits);
+    EXPECT_LE(paged.pages()->figures().held_bytes, c.largest_block());
+}
