@@ -11,6 +11,7 @@ import math
 import os
 import shutil
 import subprocess
+import tempfile
 
 from grass.gunittest.case import TestCase
 from grass.gunittest.main import test
@@ -322,6 +323,11 @@ class TestFrames(TestCase):
             self.assertGreater(self.hits(f"gf_m_{k:04d}"), SIZE[0] * SIZE[1] // 5)
 
     def test_bad_sequences_fail_clearly(self):
+        # file names in a folder of its own: a file left in /tmp by
+        # something else is not what the checks meet first
+        folder = tempfile.mkdtemp(prefix="r3sbrt_bad_frames_")
+        self.addCleanup(shutil.rmtree, folder, ignore_errors=True)
+        a = os.path.join(folder, "a")
         for args, words in (
             (["frames=0"], "frames=0"),
             (["frames=4", "range=3-5"], "range=3-5"),
@@ -330,9 +336,9 @@ class TestFrames(TestCase):
             (["frames=4", "path=line"], "give path_map="),
             (["frames=4", "path=keys"], "give keys="),
             (["frames=4", "view=top"], "top view does not turn"),
-            (["frames=2", "png=/tmp/a_%d_%d.png"], "one %d"),
-            (["frames=2", "png=/tmp/a.png", "video=/tmp/a.avi"], ".mp4, .webm or .gif"),
-            (["frames=4", "video=/tmp/a.mp4", "range=1-2"], "without png="),
+            (["frames=2", "png=%s_%%d_%%d.png" % a], "one %d"),
+            (["frames=2", "png=%s.png" % a, "video=%s.avi" % a], ".mp4, .webm or .gif"),
+            (["frames=4", "video=%s.mp4" % a, "range=1-2"], "without png="),
             (["strds=x"], "give frames="),
         ):
             run = self.render("output=bad", *args, check=False)
