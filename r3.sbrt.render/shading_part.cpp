@@ -37,6 +37,13 @@ void ShadingPart::define(OptionTable &table)
                  _("Shading"), "0");
 }
 
+namespace {
+
+/// Longest colour text handed to G_str_to_color (its buffer: 100 bytes).
+constexpr size_t MAX_COLOUR_TEXT = 64;
+
+} // namespace
+
 void ShadingPart::read(const Answers &a)
 {
     const std::vector<double> light = a.numbers("light");
@@ -47,7 +54,10 @@ void ShadingPart::read(const Answers &a)
     ambient = a.number("ambient");
     int red, green, blue;
     const std::string colour = a.text("background");
-    if (G_str_to_color(colour.c_str(), &red, &green, &blue) != 1)
+    // GRASS 8.2's G_str_to_color copies the text into a buffer of 100
+    // bytes: a longer one (no colour is) overflows it
+    if (colour.size() >= MAX_COLOUR_TEXT ||
+        G_str_to_color(colour.c_str(), &red, &green, &blue) != 1)
         bad_request(_("background=<%s> is not a colour"), shortened(colour, 100).c_str());
     background = {uint8_t(red), uint8_t(green), uint8_t(blue)};
     normals = a.text("normals") == "kernel" ? sbrt::Normals::kernel : sbrt::Normals::face;
