@@ -78,7 +78,8 @@ public:
 
     explicit ColumnMemberEncoder(const Frame &frame) : frame_(frame)
     {
-        records_.reserve(size_t(frame.cells()) * 4); // narrow, as voxel models take
+        // narrow, as voxel models take
+        records_.reserve(size_t(frame.cells()) * column_record_bytes(NARROW_RECORDS));
     }
     /// The values of the next columns (row by row, row 0 north).
     void add(const std::vector<Value> &values)
@@ -88,7 +89,8 @@ public:
         for (const Value &value : values) {
             if (encoding_ == NARROW_RECORDS && !Codec::fits_narrow(value)) {
                 ByteWriter wide;
-                for (size_t at = 0; at < records_.size(); at += 4)
+                for (size_t at = 0; at < records_.size();
+                     at += column_record_bytes(NARROW_RECORDS))
                     Codec::append(wide, Codec::narrow(records_.bytes().data() + at),
                                   WIDE_RECORDS);
                 records_ = std::move(wide);

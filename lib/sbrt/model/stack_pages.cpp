@@ -130,15 +130,9 @@ void StackPages::hold(int b, std::shared_ptr<const StackBlock> block, bool evict
         slot.block = std::move(block);
         used_.push_front(b);
         slot.used = used_.begin();
-        // the least recently used out, never the block just decoded
-        // (readers holding a dropped block keep it until they let go)
-        while (held_ > budget_ && used_.size() > 1) {
-            Slot &last = slots_[size_t(used_.back())];
-            held_ -= last.block->bytes();
-            dropped_ += last.block->bytes();
-            last.block.reset();
-            used_.pop_back();
-        }
+        // never the block just decoded (readers holding a dropped block
+        // keep it until they let go)
+        drop_over_budget(1);
         peak_ = std::max(peak_, held_);
         // the heap's holes left by dropped blocks go back to the system
         // each time an eighth of the budget was dropped (32 MiB at least:
@@ -153,17 +147,24 @@ void StackPages::hold(int b, std::shared_ptr<const StackBlock> block, bool evict
         release_free_heap();
 }
 
+void StackPages::drop_over_budget(size_t keep) const
+{
+    while (held_ > budget_ && used_.size() > keep) {
+        Slot &last = slots_[size_t(used_.back())];
+        held_ -= last.block->bytes();
+        dropped_ += last.block->bytes();
+        last.block.reset();
+        used_.pop_back();
+    }
+}
+
 void StackPages::set_budget_bytes(uint64_t bytes) const
 {
     {
         const std::lock_guard<std::mutex> lock(cache_);
         budget_ = bytes;
-        while (held_ > budget_ && !used_.empty()) {
-            Slot &last = slots_[size_t(used_.back())];
-            held_ -= last.block->bytes();
-            last.block.reset();
-            used_.pop_back();
-        }
+        drop_over_budget(0);
+        dropped_ = 0; // released now
     }
     release_free_heap();
 }

@@ -143,6 +143,9 @@ private:
     /// is passed; with `evict` false, only where it fits as it is.
     void hold(int b, std::shared_ptr<const StackBlock> block, bool evict) const;
     std::shared_ptr<const StackBlock> fetch(int b, bool evict) const;
+    /// Drops the least recently used blocks while more than the budget is
+    /// held, keeping the `keep` most recent; cache_ held by the caller.
+    void drop_over_budget(size_t keep) const;
     [[noreturn]] static void fail_no_ranges();
 
     int rows_, cols_, size_, block_rows_, block_cols_;
