@@ -64,6 +64,21 @@ std::optional<Records> read_tops(const uint8_t *data, size_t size, const std::st
     return tops;
 }
 
+/// The encoding a `tops` member's header names; throws sbrt::Error
+/// naming `what` where it is not such a member or names none this reader
+/// knows.
+uint32_t tops_encoding(const uint8_t *data, size_t size, const std::string &what)
+{
+    const char(&magic)[8] = ColumnTopCodec::MAGIC;
+    constexpr size_t ENCODING_AT = sizeof magic + 2 * 4;
+    if (size < ENCODING_AT + 4 || std::memcmp(data, magic, sizeof magic) != 0)
+        fail(what, ": not a column tops member (bad magic number)");
+    const uint32_t encoding = uint32_t(load_le(data + ENCODING_AT, 4));
+    if (column_record_bytes(encoding) == 0)
+        fail(what, ": an encoding this reader does not know (corrupt file)");
+    return encoding;
+}
+
 } // namespace
 
 void ColumnTopCodec::append(ByteWriter &out, const Interval &top, uint32_t encoding)
@@ -86,14 +101,7 @@ Interval ColumnTopCodec::narrow(const uint8_t *record)
 uint64_t column_tops_bytes(const uint8_t *data, size_t size, const Frame &frame,
                            const std::string &what)
 {
-    const char(&magic)[8] = ColumnTopCodec::MAGIC;
-    constexpr size_t ENCODING_AT = sizeof magic + 2 * 4;
-    if (size < ENCODING_AT + 4 || std::memcmp(data, magic, sizeof magic) != 0)
-        fail(what, ": not a column tops member (bad magic number)");
-    const size_t record = column_record_bytes(uint32_t(load_le(data + ENCODING_AT, 4)));
-    if (record == 0)
-        fail(what, ": an encoding this reader does not know (corrupt file)");
-    return frame.cells() * record;
+    return frame.cells() * column_record_bytes(tops_encoding(data, size, what));
 }
 
 std::optional<IntervalArray> decode_column_tops(const uint8_t *data, size_t size,
@@ -105,7 +113,7 @@ std::optional<IntervalArray> decode_column_tops(const uint8_t *data, size_t size
     if (ranges.size() != frame.cells())
         fail(what, ": read without its columns' ranges");
     // held as the member holds them: compact where it is
-    if (column_tops_bytes(data, size, frame, what) == frame.cells() * sizeof(CompactInterval)) {
+    if (tops_encoding(data, size, what) == NARROW_RECORDS) {
         if (auto tops = read_tops<CompactIntervals>(data, size, what, frame, stamp, ranges,
                                                     materials, threads))
             return IntervalArray(std::move(*tops));

@@ -329,17 +329,18 @@ std::optional<Model> read_sbrt_paged(const std::string &directory, const Paging 
     const auto file = std::make_shared<const MappedFile>(dir.open_regular("stacks"),
                                                          stacks_path, MappedFile::Pages::on_demand);
     std::vector<uint8_t> ranges_bytes, tops_bytes;
-    StoredRanges stored;
-    if (const auto member = dir.open_regular_if_present("ranges")) {
-        stored.what = dir.member_path("ranges");
-        ranges_bytes = read_all(*member, stored.what);
-        stored.bytes = &ranges_bytes;
-    }
-    if (const auto member = dir.open_regular_if_present("tops")) {
-        stored.tops_what = dir.member_path("tops");
-        tops_bytes = read_all(*member, stored.tops_what);
-        stored.tops = &tops_bytes;
-    }
+    // a member's bytes into `bytes`, where the SBRT has it
+    const auto read_member = [&dir](const char *name, std::vector<uint8_t> &bytes) {
+        StoredMember member;
+        if (const auto file = dir.open_regular_if_present(name)) {
+            member.what = dir.member_path(name);
+            bytes = read_all(*file, member.what);
+            member.bytes = &bytes;
+        }
+        return member;
+    };
+    const StoredRanges stored{read_member("ranges", ranges_bytes),
+                              read_member("tops", tops_bytes)};
     std::optional<Model> model =
         open_paged_model(file->data(), file->size(), stacks_path, file, paging, stored, file.get());
     if (!model)

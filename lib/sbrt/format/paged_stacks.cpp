@@ -9,6 +9,7 @@
 
 #include "format/column_ranges_file.hpp"
 #include "format/column_tops_file.hpp"
+
 #include "format/block_summary.hpp"
 #include "format/mapped_file.hpp"
 #include "format/stacks_fields.hpp"
@@ -107,9 +108,10 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     auto layout = std::make_shared<const StacksV2Layout>(open_stacks_v2(data, size, what));
     // each column's range, where a member made from these stacks holds it
     std::vector<ZRange> ranges;
-    if (stored.bytes && paging.column_ranges != Paging::Ranges::none)
-        if (auto decoded = decode_column_ranges(stored.bytes->data(), stored.bytes->size(),
-                                                stored.what, layout->header.frame,
+    if (stored.ranges.bytes && paging.column_ranges != Paging::Ranges::none)
+        if (auto decoded = decode_column_ranges(stored.ranges.bytes->data(),
+                                                stored.ranges.bytes->size(), stored.ranges.what,
+                                                layout->header.frame,
                                                 stamp_of(layout->header), paging.threads))
             ranges = std::move(*decoded);
     std::optional<ModelSummary> summary = read_stacks_summary(data, size, what);
@@ -119,11 +121,13 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
     // budget has room for it beside the blocks
     std::optional<IntervalArray> tops;
     Paging with_tops = paging;
-    if (!ranges.empty() && stored.tops && paging.column_ranges == Paging::Ranges::needed &&
+    const StoredMember &stored_tops = stored.tops;
+    if (!ranges.empty() && stored_tops.bytes && paging.column_ranges == Paging::Ranges::needed &&
         tops_fit(*summary, paging,
-                 column_tops_bytes(stored.tops->data(), stored.tops->size(),
-                                   summary->frame, stored.tops_what)))
-        tops = decode_column_tops(stored.tops->data(), stored.tops->size(), stored.tops_what,
+                 column_tops_bytes(stored_tops.bytes->data(), stored_tops.bytes->size(),
+                                   summary->frame, stored_tops.what)))
+        tops = decode_column_tops(stored_tops.bytes->data(), stored_tops.bytes->size(),
+                                  stored_tops.what,
                                   summary->frame, stamp_of(layout->header), ranges,
                                   summary->materials.size(), paging.threads);
     if (tops)

@@ -75,13 +75,15 @@ bool tops_fit(const ModelSummary &summary, const Paging &paging, uint64_t tops_b
 StackBlock decode_stack_block(const uint8_t *data, const StacksV2Layout &layout, int block,
                               const std::string &what);
 
-/// \brief The bytes of an SBRT's `ranges` and `tops` members, where it
-/// has them.
-struct StoredRanges {
+/// \brief The bytes of one member of an SBRT, where it has it.
+struct StoredMember {
     const std::vector<uint8_t> *bytes = nullptr;
     std::string what; ///< the member's name in errors
-    const std::vector<uint8_t> *tops = nullptr;
-    std::string tops_what;
+};
+
+/// \brief The SBRT's `ranges` and `tops` members, where it has them.
+struct StoredRanges {
+    StoredMember ranges, tops;
 };
 
 /// The paged model of untrusted stacks bytes that `keep` holds in memory:

@@ -54,7 +54,7 @@ struct PagedCase {
         if (members) {
             paging.budget_bytes += 2 * column_tops_bytes(tops_member.data(), tops_member.size(),
                                                        model.frame(), "tops");
-            stored = {&ranges_member, "ranges", &tops_member, "tops"};
+            stored = {{&ranges_member, "ranges"}, {&tops_member, "tops"}};
         }
         std::optional<Model> m = open_paged_model(bytes->data(), bytes->size(), "test stacks",
                                                   bytes, paging, stored);
@@ -222,7 +222,7 @@ TEST(PagedTracing, HidingPreparesOnlyTheBlocksHoldingTheStratum)
     std::vector<ZRange> ranges = column_ranges(model);
     const std::vector<uint8_t> member = encode_column_ranges(
         ranges, model.frame(), stacks_stamp(bytes->data(), bytes->size(), "stacks"));
-    StoredRanges stored{&member, "ranges", nullptr, {}};
+    StoredRanges stored{{&member, "ranges"}, {}};
     const std::optional<Model> paged =
         open_paged_model(bytes->data(), bytes->size(), "stacks", bytes, paging, stored);
     ASSERT_TRUE(paged);
@@ -416,7 +416,7 @@ TEST(PagedTracing, TopIntervalsAreHeldWhereTheBudgetHasRoomForThem)
     const uint64_t tops = column_tops_bytes(c.tops_member.data(), c.tops_member.size(),
                                             c.model.frame(), "tops");
     paging.budget_bytes = least_budget(*summary, paging) + tops;
-    const StoredRanges stored{&c.ranges_member, "ranges", &c.tops_member, "tops"};
+    const StoredRanges stored{{&c.ranges_member, "ranges"}, {&c.tops_member, "tops"}};
     const std::optional<Model> paged =
         open_paged_model(c.bytes->data(), c.bytes->size(), "x", c.bytes, paging, stored);
     ASSERT_TRUE(paged);
