@@ -45,6 +45,14 @@ void ensure_band_buffer(const GlApi &gl, std::optional<GlBuffer> &buffer, int ro
 }
 
 
+bool compact_on_gpu(const sbrt::Model &model)
+{
+    if (!model.is_paged())
+        return model.intervals().is_compact();
+    const sbrt::Stats stats = model.stats();
+    return stats.interval_bytes <= stats.intervals * 4;
+}
+
 /// The first pass's tile and budget, as the CPU's (cpu_tracing.hpp).
 namespace {
 
@@ -72,7 +80,8 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
                                        const sbrt::Tracer &tracer, bool drape, bool paint)
 {
     const sbrt::Model &model = tracer.model();
-    const unsigned count_bytes = model.index().count_bytes();
+    // a paged model's blocks are found through the page table (SBRT_PAGED)
+    const unsigned count_bytes = model.is_paged() ? 4 : model.index().count_bytes();
     // the normals pass reads a face's normal as shading does
     const bool shade = pass == Pass::shade || pass == Pass::shade_boreholes ||
                        pass == Pass::kernel_shade || pass == Pass::kernel_normals;
@@ -91,7 +100,8 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
                         pass == Pass::kernel_across || pass == Pass::kernel_shade;
     return {"#version 450\n",
             layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
-            model.intervals().is_compact() ? "#define SBRT_COMPACT_INTERVALS 1\n" : "",
+            model.is_paged() ? "#define SBRT_PAGED 1\n" : "",
+            compact_on_gpu(model) ? "#define SBRT_COMPACT_INTERVALS 1\n" : "",
             count_bytes == 1   ? "#define SBRT_COUNT_BYTES 1\n"
             : count_bytes == 2 ? "#define SBRT_COUNT_BYTES 2\n"
                                : "#define SBRT_COUNT_BYTES 4\n",

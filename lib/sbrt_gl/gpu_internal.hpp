@@ -31,6 +31,10 @@ size_t checked_bytes(size_t bytes, size_t limit, const char *what);
 void ensure_band_buffer(const GlApi &gl, std::optional<GlBuffer> &buffer, int rows,
                         size_t row_bytes, size_t max_block_bytes);
 
+/// Whether `model`'s intervals go to the GPU a word each: held compact,
+/// or read block by block where every block's are (its summaries' stats).
+bool compact_on_gpu(const sbrt::Model &model);
+
 /// What a program of the GPU path does.
 enum class Pass : int {
     records,      ///< raycast.comp: hit records

@@ -42,6 +42,9 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     image_hits_->bind(2);
     const auto start = Clock::now();
     run_pass(Pass::records, program_, cols, rows);
+    // a paged model: again once the blocks its rays missed are up
+    while (brought_wanted_blocks())
+        run_pass(Pass::records, program_, cols, rows);
     // 2. the kernel's cells and camera (and the smoothing's weights)
     const sbrt::KernelNormals kernel(tracer_, camera, shading.kernel);
     const std::vector<double> weights =

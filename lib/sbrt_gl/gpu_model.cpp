@@ -50,17 +50,33 @@ GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 } // namespace
 
 GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout layout,
-                   size_t max_block_bytes)
+                   size_t max_block_bytes, uint64_t page_budget_bytes)
     : gl_(gl), tracer_(tracer), max_block_bytes_(max_block_bytes), layout_(layout),
-      memory_(sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl))),
       materials_(material_buffer(gl, tracer)),
       pyramid_(pyramid_buffer(gl, tracer.pyramid(), max_block_bytes))
 {
     if (&tracer.model_pyramid() != &tracer.pyramid())
         model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
-    upload_stacks(tracer.model());
+    if (tracer.model().is_paged())
+        open_pages(tracer.model(), page_budget_bytes);
+    else {
+        memory_ = sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl));
+        upload_stacks(tracer.model());
+    }
     gl_.Finish();
     check_gl(gl_, "uploading the model");
+}
+
+void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes)
+{
+    if (layout_ != sbrt::GpuLayout::ssbo)
+        sbrt::fail("a model read block by block goes to the GPU in layout=ssbo only");
+    if (sbrt::gpu_overlay_mode(tracer_) != sbrt::GpuOverlayMode::none)
+        sbrt::fail("boreholes and fence panels on the GPU need the model read whole, "
+                   "not block by block");
+    pages_.emplace(gl_, *model.pages(), compact_on_gpu(model), budget_bytes, max_block_bytes_, 0);
+    memory_.index_bytes = (size_t(sbrt::GPU_PAGE_TABLE_HEAD) + model.pages()->block_count()) * 4;
+    memory_.interval_bytes = pages_->atlas_bytes();
 }
 
 void GpuModel::upload_stacks(const sbrt::Model &model)
@@ -94,7 +110,9 @@ void GpuModel::upload_stacks(const sbrt::Model &model)
 
 void GpuModel::bind() const
 {
-    if (layout_ == sbrt::GpuLayout::ssbo) {
+    if (pages_)
+        pages_->bind();
+    else if (layout_ == sbrt::GpuLayout::ssbo) {
         group_offsets_->bind(0);
         intervals_->bind(1);
         counts_->bind(6);

@@ -13,6 +13,8 @@
 
 #include "gl_api.hpp"
 #include "gl_objects.hpp"
+#include "gpu_options.hpp"
+#include "gpu_page_atlas.hpp"
 #include "gpu/gpu_memory_layout.hpp"
 #include "tracing/tracer.hpp"
 
@@ -25,12 +27,15 @@ namespace sbrt_gl {
 /// when first bound. Each is owned by its GL object (gl_objects.hpp) and
 /// released with the GpuModel; the context must be current. Binds them at
 /// the bindings the shaders declare (shaders/common/layout.glsl).
+/// A paged model (Model::is_paged) goes up as its blocks are wanted, into
+/// an atlas of at most `page_budget_bytes` (GpuPageAtlas; layout ssbo, no
+/// boreholes or curtains).
 class GpuModel {
 public:
     /// `max_block_bytes`: the GPU's largest storage buffer binding (an
     /// error names what exceeds it).
     GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout layout,
-             size_t max_block_bytes);
+             size_t max_block_bytes, uint64_t page_budget_bytes = DEFAULT_PAGE_BUDGET);
     GpuModel(const GpuModel &) = delete;
     GpuModel &operator=(const GpuModel &) = delete;
 
@@ -47,6 +52,9 @@ public:
     void bind_overlays();
 
     sbrt::GpuLayout layout() const { return layout_; }
+    /// A paged model's atlas; null where the model is up whole.
+    GpuPageAtlas *pages() { return pages_ ? &*pages_ : nullptr; }
+    const GpuPageAtlas *pages() const { return pages_ ? &*pages_ : nullptr; }
     /// What the model takes on the GPU in its layout.
     const sbrt::GpuMemory &memory() const { return memory_; }
     /// Bytes of the empty-space pyramid.
@@ -54,6 +62,8 @@ public:
 
 private:
     void upload_stacks(const sbrt::Model &model);
+    /// The atlas of a paged model, refused where it cannot be paged.
+    void open_pages(const sbrt::Model &model, uint64_t budget_bytes);
     void upload_overlays();
 
     const GlApi &gl_;
@@ -61,6 +71,7 @@ private:
     size_t max_block_bytes_;
     sbrt::GpuLayout layout_;
     sbrt::GpuMemory memory_;
+    std::optional<GpuPageAtlas> pages_; ///< a paged model's blocks
     /// the stacks: group offsets, stack counts, intervals (ssbo), or the
     /// index and the intervals as textures
     std::optional<GlBuffer> group_offsets_, counts_, intervals_;

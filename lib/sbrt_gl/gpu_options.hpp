@@ -28,6 +28,9 @@ enum class BandStaging {
 /// A loop budget without a bound: a ray runs to its end.
 constexpr uint32_t UNBOUNDED_LOOP_BUDGET = UINT32_MAX;
 
+/// The atlas of a paged model, unless asked otherwise: 1 GiB.
+constexpr uint64_t DEFAULT_PAGE_BUDGET = uint64_t(1) << 30;
+
 /// \brief The choices of a GpuTracer (and GpuRenderer) made at its
 /// construction. The defaults are what the GL met calls for.
 struct GpuOptions {
@@ -38,6 +41,9 @@ struct GpuOptions {
     /// (sbrt::GPU_LOOP_BUDGET: llvmpipe ends an invocation after 65,535),
     /// UNBOUNDED_LOOP_BUDGET on a GPU.
     std::optional<uint32_t> loop_budget;
+    /// GPU memory for the blocks of a model read block by block (its
+    /// atlas: GpuPageAtlas), within the GPU's largest storage buffer.
+    uint64_t page_budget_bytes = DEFAULT_PAGE_BUDGET;
 
     /// The defaults in `layout`, the bands as SBRT_GPU_BANDS says where it
     /// is set ("staged" or "direct": measurements, device_run.sh); the one

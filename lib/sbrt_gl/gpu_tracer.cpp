@@ -48,7 +48,7 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
                      const GpuOptions &options, ProgramCache cache)
     : created_(Clock::now()), tracer_(tracer), gl_(context), cache_(std::move(cache)),
       max_block_bytes_(check_version(gl_, context.name())),
-      model_(gl_, tracer, options.layout, max_block_bytes_),
+      model_(gl_, tracer, options.layout, max_block_bytes_, options.page_budget_bytes),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
       bands_(gl_, max_block_bytes_, sbrt_gl::staged_bands(options, gl_renderer())), timer_(gl_),
       host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer()))
@@ -83,6 +83,20 @@ void GpuTracer::begin_frame()
     reset_stats();
     frame_start_ = Clock::now();
     bands_.begin_frame();
+    if (GpuPageAtlas *pages = model_.pages())
+        pages->begin_frame();
+}
+
+bool GpuTracer::brought_wanted_blocks()
+{
+    GpuPageAtlas *pages = model_.pages();
+    if (!pages)
+        return false;
+    const auto start = Clock::now();
+    const bool brought = pages->bring_wanted() > 0;
+    stats_.page_ms += ms_since(start);
+    stats_.page_passes += brought ? 1 : 0;
+    return brought;
 }
 
 std::vector<double> GpuTracer::take_pass_ms()
@@ -104,7 +118,7 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
                                       unsigned cpu_threads,
                                       uint32_t loop_budget)
 {
-    reset_stats();
+    begin_frame();
     sbrt::HitImage hits(size_t(camera.rows()) * camera.cols());
     trace_rows(camera, 0, camera.rows(), hits.data(), cpu_threads, loop_budget);
     return hits;
@@ -139,18 +153,21 @@ void GpuTracer::dispatch_records(const sbrt::Camera &camera, sbrt::GpuView &view
         view.options[2] = uint32_t(first);
         view.options[3] = uint32_t(count);
         view_.upload(&view, sizeof view); // stays bound to index 0
-        auto start = Clock::now();
-        timer_.time(int(Pass::records), [&] {
-            gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
-        });
-        gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        gl_.Finish();
-        check_gl(gl_, "the ray casting dispatch");
-        stats_.trace_ms += ms_since(start);
-        start = Clock::now();
-        band_->download(records_.data() + size_t(first - first_row) * size_t(cols),
-                        size_t(count) * row_bytes);
-        stats_.readback_ms += ms_since(start);
+        // a paged model: again once the blocks its rays missed are up
+        do {
+            auto start = Clock::now();
+            timer_.time(int(Pass::records), [&] {
+                gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
+            });
+            gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+            gl_.Finish();
+            check_gl(gl_, "the ray casting dispatch");
+            stats_.trace_ms += ms_since(start);
+            start = Clock::now();
+            band_->download(records_.data() + size_t(first - first_row) * size_t(cols),
+                            size_t(count) * row_bytes);
+            stats_.readback_ms += ms_since(start);
+        } while (brought_wanted_blocks());
         ++stats_.bands;
     }
 }
@@ -479,6 +496,15 @@ void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_co
 {
     bands_.reset_gpu_ms();
     uint8_t *host = bands_.band(first_row, row_count, camera.rows(), dispatch);
+    // a paged model: the band again once the blocks its rays missed are up
+    // (they are sent back as rays over the budget)
+    const auto sent_back = [&] {
+        uint32_t over = 0;
+        std::memcpy(&over, host + layout.over_budget_at * 4, 4);
+        return over;
+    };
+    while (model_.pages() && sent_back() > 0 && brought_wanted_blocks())
+        host = bands_.redo(dispatch);
     stats_.trace_ms += bands_.gpu_ms();
     ++stats_.bands;
     // the band views the mapped memory as the GPU wrote it

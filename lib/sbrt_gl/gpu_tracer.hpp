@@ -70,6 +70,11 @@ struct GpuStats {
     /// Bands the model pass shaded (every band but where a borehole's box
     /// holds the camera).
     int model_pass_bands = 0;
+    /// A paged model: dispatches run again once the blocks their rays
+    /// missed were brought up, and the host's time finding and bringing
+    /// them (GpuPageAtlas).
+    int page_passes = 0;
+    double page_ms = 0;
     /// GPU time of each pass (GL_TIME_ELAPSED; with GpuTracer::time_passes),
     /// indexed by Pass (gpu_internal.hpp): see pass_name.
     std::vector<double> pass_ms;
@@ -203,6 +208,9 @@ public:
 
 private:
     const GlComputeProgram &record_program() const;
+    /// A paged model: whether blocks that the dispatches so far found
+    /// missing were brought up (their rays then go again).
+    bool brought_wanted_blocks();
     /// Binds the model (GpuModel::bind), the first pass's bounds and the
     /// view block.
     void bind_model() const;

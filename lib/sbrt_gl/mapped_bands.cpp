@@ -80,10 +80,13 @@ std::optional<sbrt::GpuBandLayout> MappedBands::layout(int rows, int cols,
     return layout_;
 }
 
-void MappedBands::queue(int first, int count, const std::function<void(int, int, int)> &dispatch)
+void MappedBands::queue(int first, int count, const std::function<void(int, int, int)> &dispatch,
+                        int slot)
 {
-    const int slot = next_slot_;
-    next_slot_ = (next_slot_ + 1) % SLOTS;
+    if (slot < 0) {
+        slot = next_slot_;
+        next_slot_ = (next_slot_ + 1) % SLOTS;
+    }
     const MappedBuffer &buffer = slots_[size_t(slot)];
     // no ray over the budget yet: the host writes the count, which the
     // GPU sees in the commands queued after (a coherent mapping)
@@ -127,11 +130,31 @@ uint8_t *MappedBands::band(int first, int count, int image_rows,
     const int next = first + count;
     if (next < image_rows && queued_.size() == 1)
         queue(next, std::min(count, image_rows - next), dispatch);
+    uint8_t *host = take_front();
+    gpu_ms_ += ms_since(start);
+    return host;
+}
+
+uint8_t *MappedBands::redo(const std::function<void(int, int, int)> &dispatch)
+{
+    const auto start = Clock::now();
+    // the band dispatched ahead is dropped (its slot comes next again), and
+    // this one goes into its own: no slot the sink may hold is written
+    drop_queued();
+    queue(last_first_, last_count_, dispatch, last_slot_);
+    uint8_t *host = take_front();
+    gpu_ms_ += ms_since(start);
+    return host;
+}
+
+uint8_t *MappedBands::take_front()
+{
     const Queued &band = queued_.front();
     band.fence.wait();
     last_done_ = Clock::now();
-    gpu_ms_ += ms_since(start);
     last_slot_ = band.slot;
+    last_first_ = band.first;
+    last_count_ = band.count;
     uint8_t *host = slots_[size_t(band.slot)].host();
     if (staged_) {
         // the pixels sent back beyond those the copy brought: read back

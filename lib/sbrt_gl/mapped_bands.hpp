@@ -64,6 +64,10 @@ public:
     /// the band's memory once the GPU is done with it.
     uint8_t *band(int first, int count, int image_rows,
                   const std::function<void(int, int, int)> &dispatch);
+    /// The band band() returned last, dispatched again into its own slot
+    /// (what the host read of it is overwritten; the band dispatched
+    /// ahead is dropped), once the GPU is done with it.
+    uint8_t *redo(const std::function<void(int, int, int)> &dispatch);
 
     /// A GPU buffer of `bytes` for each slot (none: 0), bound to storage
     /// binding `binding` with its slot for each dispatch: what a band's
@@ -86,8 +90,12 @@ private:
     };
     /// Forgets the bands dispatched and not handed out.
     void drop_queued();
-    /// Dispatches rows [first, first + count) into the next slot.
-    void queue(int first, int count, const std::function<void(int, int, int)> &dispatch);
+    /// Dispatches rows [first, first + count) into the next slot (or into
+    /// `slot` where given).
+    void queue(int first, int count, const std::function<void(int, int, int)> &dispatch,
+               int slot = -1);
+    /// The front band's memory once the GPU is done with it (unqueued).
+    uint8_t *take_front();
 
     const GlApi &gl_;
     size_t max_bytes_;
@@ -99,6 +107,7 @@ private:
     GLuint scratch_binding_ = 0;
     std::deque<Queued> queued_;
     int next_slot_ = 0, last_slot_ = 0;
+    int last_first_ = 0, last_count_ = 0; ///< the rows of the band last returned
     std::chrono::steady_clock::time_point last_done_{};
     double gpu_ms_ = 0;
 };

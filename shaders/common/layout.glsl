@@ -42,7 +42,59 @@ layout(std140, binding = 0) uniform View {
 uint compact_material(uint word) { return word & 0xffffu; }
 float compact_top(uint word) { return float(word >> 16); }
 #endif
-#ifdef SBRT_TEXTURES
+#if defined(SBRT_PAGED)
+// A paged model (lib/sbrt/gpu/gpu_pages.hpp): the blocks rays reached, in
+// one atlas of words found through the page table. A block's words: for
+// each of its cells (row by row) where its stack starts and where the last
+// ends, in records from the block's first; then, from the next even word,
+// its intervals. A block not in the atlas is marked wanted, and the ray
+// that reached it is sent back (walk_into_stack) to be traced again once
+// the host brought the block up; a block read is marked too (the host
+// keeps a frame's blocks).
+layout(std430, binding = 0) readonly buffer PageTable {
+    uvec4 page_head; // block size, blocks a row, words of each half of the marks
+    uint page_base[]; // each block's first word in the atlas, PAGE_MISSING
+};
+layout(std430, binding = 1) readonly buffer Atlas { uint atlas[]; };
+layout(std430, binding = 6) buffer PageMarks { uint page_marks[]; }; // wanted, then read
+const uint PAGE_MISSING = 0xffffffffu;
+#ifdef SBRT_COMPACT_INTERVALS
+uint interval_material(uint j) { return compact_material(atlas[j]); }
+float interval_top(uint j) { return compact_top(atlas[j]); }
+#else
+uint interval_material(uint j) { return atlas[2u * j]; }
+float interval_top(uint j) { return uintBitsToFloat(atlas[2u * j + 1u]); }
+#endif
+
+// Block `block`'s bit in part `part` of the marks (0 wanted, 1 read)
+void mark_page(uint part, uint block)
+{
+    uint word = part * page_head.z + (block >> 5), bit = 1u << (block & 31u);
+    if ((page_marks[word] & bit) == 0u)
+        atomicOr(page_marks[word], bit);
+}
+
+// (PAGE_MISSING, 0) where the cell's block is not in the atlas
+uvec2 stack_range(int col, int row_from_north)
+{
+    uint size = page_head.x;
+    uint bx = uint(col) / size, by = uint(row_from_north) / size;
+    uint block = by * page_head.y + bx;
+    uint base = page_base[block];
+    if (base == PAGE_MISSING) {
+        mark_page(0u, block);
+        return uvec2(PAGE_MISSING, 0u);
+    }
+    mark_page(1u, block);
+    uint cols = min(size, grid.x - bx * size), rows = min(size, grid.y - by * size);
+    uint cell = (uint(row_from_north) - by * size) * cols + (uint(col) - bx * size);
+    uint records = base + ((cols * rows + 2u) & ~1u);
+#ifndef SBRT_COMPACT_INTERVALS
+    records >>= 1; // two words a record
+#endif
+    return uvec2(records + atlas[base + cell], records + atlas[base + cell + 1u]);
+}
+#elif defined(SBRT_TEXTURES)
 // 1-Textures: texel (col, row from the north) of the index texture holds
 // the cell's first interval and count; texel (j % width, j / width) of the
 // interval texture holds interval j's material and the bits of its top.

@@ -172,6 +172,11 @@ uint walk_pass_over(inout Walk w)
 uint walk_into_stack(inout Walk w)
 {
     uvec2 stack = stack_range(w.ix, w.rows - 1 - w.iy);
+#ifdef SBRT_PAGED
+    // its block not on the GPU: the ray is traced again once it is
+    if (stack.x == PAGE_MISSING)
+        return walk_end(w, vec3(0.0), CODE_OVER_BUDGET, 0.0);
+#endif
     w.first = stack.x;
     w.last = stack.y;
 #ifdef SBRT_BOREHOLES

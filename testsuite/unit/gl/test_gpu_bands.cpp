@@ -66,32 +66,6 @@ TEST(GpuBandLayout, RgbRowsStartOnWholeWordsAndOnlyTheOutputsAskedForFollow)
     EXPECT_EQ(shade.planes[3], l.over_budget_at);
 }
 
-/// Every pixel of `got` against `want`: classes equal, colours within a
-/// level, elevations and depths within `tolerance` (NaN alike).
-void expect_images_agree(const Image &want, const Image &got, double tolerance,
-                         const std::string &what)
-{
-    ASSERT_EQ(got.rgb.size(), want.rgb.size()) << what;
-    size_t classes = 0, colours = 0, far = 0;
-    for (size_t i = 0; i < want.material.size(); ++i) {
-        classes += got.material[i] != want.material[i];
-        for (int k = 0; k < 3; ++k)
-            colours += std::abs(int(got.rgb[i * 3 + k]) - int(want.rgb[i * 3 + k])) > 1;
-        const bool missed = want.material[i] == NULL_CLASS;
-        if (got.material[i] != want.material[i])
-            continue;
-        if (missed)
-            far += !(std::isnan(got.elevation[i]) && std::isnan(got.depth[i]));
-        else
-            far += !(std::fabs(got.elevation[i] - want.elevation[i]) <= tolerance &&
-                     std::fabs(got.depth[i] - want.depth[i]) <= tolerance);
-    }
-    const size_t n = want.material.size();
-    EXPECT_LE(classes, n / 500 + 1) << what;
-    EXPECT_LE(colours, n / 200 + 3 * classes) << what;
-    EXPECT_EQ(far, 0u) << what;
-}
-
 /// Each GL backend as it calls for, and EGL in both band modes and without
 /// a loop budget.
 TEST(GpuOptions, TheBandsComeFromTheEnvironmentWhereSet)

@@ -1,0 +1,134 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   A paged model's blocks brought up to the GPU as rays want them
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include "gpu_page_atlas.hpp"
+
+#include <algorithm>
+#include <memory>
+
+#include "gpu_internal.hpp"
+#include "util/error.hpp"
+#include "util/parallel.hpp"
+
+namespace sbrt_gl {
+
+namespace {
+
+/// Blocks decoded at once before they go up: bounds the host's copies.
+constexpr size_t UPLOAD_CHUNK = 64;
+
+/// The page table: its head, then every block missing.
+std::vector<uint32_t> empty_table(const sbrt::StackPages &pages)
+{
+    std::vector<uint32_t> words = sbrt::gpu_page_table_head(pages);
+    words.resize(words.size() + size_t(pages.block_count()), sbrt::GPU_PAGE_MISSING);
+    return words;
+}
+
+} // namespace
+
+uint64_t atlas_words(uint64_t budget_bytes, size_t max_block_bytes)
+{
+    return std::min<uint64_t>(budget_bytes, max_block_bytes) / 4;
+}
+
+GpuPageAtlas::GpuPageAtlas(const GlApi &gl, const sbrt::StackPages &pages, bool compact,
+                           uint64_t budget_bytes, size_t max_block_bytes, unsigned threads)
+    : gl_(gl), pages_(pages), compact_(compact), threads_(threads),
+      residency_(pages.block_count(), atlas_words(budget_bytes, max_block_bytes)),
+      mark_words_(sbrt::gpu_mark_words(pages.block_count())),
+      table_(gl, GL_SHADER_STORAGE_BUFFER,
+             checked_bytes((size_t(sbrt::GPU_PAGE_TABLE_HEAD) + size_t(pages.block_count())) * 4,
+                           max_block_bytes, "page table"),
+             empty_table(pages).data()),
+      atlas_(gl, GL_SHADER_STORAGE_BUFFER, size_t(residency_.atlas_words()) * 4),
+      marks_(gl, GL_SHADER_STORAGE_BUFFER, size_t(mark_words_) * 2 * 4)
+{
+    begin_frame();
+}
+
+void GpuPageAtlas::bind() const
+{
+    table_.bind(0);
+    atlas_.bind(1);
+    marks_.bind(6);
+}
+
+void GpuPageAtlas::begin_frame()
+{
+    residency_.begin_frame();
+    const GLuint zero = 0;
+    gl_.BindBuffer(GL_SHADER_STORAGE_BUFFER, marks_.name());
+    gl_.ClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, 0, GLsizeiptr(marks_.bytes()),
+                           GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+std::vector<int> GpuPageAtlas::marked(const std::vector<uint32_t> &marks, int part) const
+{
+    std::vector<int> blocks;
+    for (uint32_t w = 0; w < mark_words_; ++w)
+        for (uint32_t bits = marks[size_t(part) * mark_words_ + w]; bits != 0; bits &= bits - 1)
+            blocks.push_back(int(w * 32 + uint32_t(__builtin_ctz(bits))));
+    return blocks;
+}
+
+int GpuPageAtlas::bring_wanted()
+{
+    // the shaders' marks, once the dispatches that set them are done
+    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<uint32_t> marks(size_t(mark_words_) * 2);
+    marks_.download(marks.data(), marks.size() * 4);
+    // the blocks this frame read stay
+    for (int b : marked(marks, 1))
+        if (b < pages_.block_count())
+            residency_.mark_read(b);
+    std::vector<int> wanted;
+    for (int b : marked(marks, 0))
+        if (b < pages_.block_count() && !residency_.holds(b))
+            wanted.push_back(b);
+    return wanted.empty() ? 0 : upload(wanted);
+}
+
+void GpuPageAtlas::set_entry(int b, uint32_t base)
+{
+    table_.write((size_t(sbrt::GPU_PAGE_TABLE_HEAD) + size_t(b)) * 4, &base, 4);
+}
+
+int GpuPageAtlas::upload(const std::vector<int> &wanted)
+{
+    const auto start = Clock::now();
+    int placed = 0;
+    for (size_t first = 0; first < wanted.size(); first += UPLOAD_CHUNK) {
+        const size_t count = std::min(UPLOAD_CHUNK, wanted.size() - first);
+        std::vector<std::vector<uint32_t>> words(count);
+        sbrt::for_each_row(0, int(count), threads_, [&](int k) {
+            const std::shared_ptr<const sbrt::StackBlock> block =
+                pages_.block(wanted[first + size_t(k)]);
+            words[size_t(k)] = sbrt::gpu_block_words(*block, compact_);
+        });
+        for (size_t k = 0; k < count; ++k) {
+            const int b = wanted[first + k];
+            std::vector<int> dropped;
+            const std::optional<uint32_t> base = residency_.place(b, words[k].size(), dropped);
+            for (int old : dropped)
+                set_entry(old, sbrt::GPU_PAGE_MISSING);
+            figures_.dropped += dropped.size();
+            if (!base) {
+                ++figures_.not_placed;
+                continue;
+            }
+            atlas_.write(size_t(*base) * 4, words[k].data(), words[k].size() * 4);
+            set_entry(b, *base);
+            ++placed;
+            ++figures_.uploads;
+            figures_.upload_bytes += words[k].size() * 4;
+        }
+    }
+    check_gl(gl_, "bringing the model's blocks up to the GPU");
+    figures_.upload_ms += ms_since(start);
+    return placed;
+}
+
+} // namespace sbrt_gl

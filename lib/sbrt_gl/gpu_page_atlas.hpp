@@ -1,0 +1,84 @@
+/****************************************************************************
+ * MODULE:    lib/sbrt_gl (r3.sbrt addon)
+ * PURPOSE:   A paged model on the GPU within a budget (issue 49): its
+ *            blocks that rays reach in one atlas, found through a page
+ *            table; the blocks a dispatch found missing, marked by the GPU,
+ *            decoded and brought up for the dispatch again
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#ifndef SBRT_GL_GPU_PAGE_ATLAS_HPP
+#define SBRT_GL_GPU_PAGE_ATLAS_HPP
+
+#include <cstdint>
+#include <vector>
+
+#include "gl_api.hpp"
+#include "gl_objects.hpp"
+#include "gpu/gpu_pages.hpp"
+
+namespace sbrt_gl {
+
+/// What a page atlas did since it was made.
+struct PageFigures {
+    uint64_t uploads = 0;       ///< blocks brought up (again after dropped too)
+    uint64_t upload_bytes = 0;  ///< their words
+    uint64_t dropped = 0;       ///< blocks dropped for others' room
+    uint64_t not_placed = 0;    ///< wanted blocks the frame's own left no room for
+    double upload_ms = 0;       ///< decoding and uploading them
+};
+
+/// \brief The GPU's part of a paged model (`pages`): the page table
+/// (binding 0), the atlas of at most `budget_bytes` (binding 1) and the
+/// marks the shaders set (binding 6: the blocks wanted and those read,
+/// shaders/common/layout.glsl). No block is up at first: a dispatch marks
+/// the blocks its rays find missing and sends those rays back;
+/// bring_wanted() then brings the blocks up (the frame's blocks stay, the
+/// least recently used others go), and the dispatch runs again. The
+/// context must be current.
+class GpuPageAtlas {
+public:
+    /// `compact`: intervals a word each (every block's are exact so);
+    /// `max_block_bytes`: the GPU's largest storage buffer, which bounds
+    /// the atlas too; `threads` decode blocks (0: all cores).
+    GpuPageAtlas(const GlApi &gl, const sbrt::StackPages &pages, bool compact,
+                 uint64_t budget_bytes, size_t max_block_bytes, unsigned threads);
+
+    void bind() const;
+    /// A new frame: no block marked (a GL command: after the last
+    /// frame's dispatches); blocks the last frame used may go.
+    void begin_frame();
+    /// Once the dispatches so far are done: the blocks they marked wanted
+    /// and that are not up, decoded and brought up where room is made;
+    /// how many. 0: a dispatch again would find the same blocks missing.
+    int bring_wanted();
+
+    bool compact() const { return compact_; }
+    uint64_t atlas_bytes() const { return residency_.atlas_words() * 4; }
+    uint64_t held_bytes() const { return residency_.held_words() * 4; }
+    int held_blocks() const { return residency_.held_blocks(); }
+    const PageFigures &figures() const { return figures_; }
+
+private:
+    /// Marks of half `part` (0 wanted, 1 read) as block numbers.
+    std::vector<int> marked(const std::vector<uint32_t> &marks, int part) const;
+    /// Blocks `wanted` decoded (in parallel) and put into the atlas.
+    int upload(const std::vector<int> &wanted);
+    void set_entry(int b, uint32_t base);
+
+    const GlApi &gl_;
+    const sbrt::StackPages &pages_;
+    bool compact_;
+    unsigned threads_;
+    sbrt::PageResidency residency_;
+    uint32_t mark_words_;
+    GlBuffer table_, atlas_, marks_;
+    PageFigures figures_;
+};
+
+/// The atlas words of a budget of `budget_bytes` on a GPU whose largest
+/// storage buffer is `max_block_bytes`.
+uint64_t atlas_words(uint64_t budget_bytes, size_t max_block_bytes);
+
+} // namespace sbrt_gl
+
+#endif

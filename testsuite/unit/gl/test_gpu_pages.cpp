@@ -1,0 +1,190 @@
+/****************************************************************************
+ * MODULE:    testsuite/unit (r3.sbrt addon)
+ * PURPOSE:   A model read block by block on the GPU (issue 49): its blocks
+ *            brought up as the rays want them, into an atlas of a budget;
+ *            hits and frames those of the model uploaded whole, bit for
+ *            bit, and with an atlas of a few blocks still the CPU's
+ * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
+ ****************************************************************************/
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gpu_compare.hpp"
+#include "gpu_page_atlas.hpp"
+#include "paged_case.hpp"
+
+using namespace sbrt;
+using namespace sbrt_test;
+
+namespace {
+
+class GpuPages : public ::testing::TestWithParam<GpuVariant> {
+protected:
+    void SetUp() override
+    {
+        context_ = make_context(GetParam().backend);
+        if (!context_)
+            GTEST_FAIL();
+    }
+    /// The variant's options with an atlas of `budget` bytes.
+    sbrt_gl::GpuOptions options(uint64_t budget) const
+    {
+        sbrt_gl::GpuOptions o = GetParam().options();
+        o.page_budget_bytes = budget;
+        return o;
+    }
+    std::unique_ptr<sbrt_gl::GlContext> context_;
+};
+
+/// EGL as the GL calls for, then a GPU's branches: bands staged, no loop
+/// budget.
+std::vector<GpuVariant> page_variants()
+{
+    using sbrt_gl::BandStaging;
+    return {{"egl"},
+            {"egl", GpuLayout::ssbo, BandStaging::staged},
+            {"egl", GpuLayout::ssbo, BandStaging::direct, true}};
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, GpuPages, ::testing::ValuesIn(page_variants()), variant_name);
+
+/// Cameras around the model, above it, low over it and inside its box.
+std::vector<Camera> cameras(const Tracer &t, int rows, int cols)
+{
+    const glm::dvec3 c = t.frame().centre();
+    const double r = t.frame().radius();
+    std::vector<Camera> out;
+    for (const glm::dvec3 &from :
+         {glm::dvec3(0.6, -0.7, 0.5), glm::dvec3(-0.8, 0.3, 0.4), glm::dvec3(0.05, 0.02, 1.0),
+          glm::dvec3(0.9, 0.9, 0.08)})
+        out.push_back(Camera::perspective(c + 2.2 * r * from, c, 40, rows, cols));
+    out.push_back(Camera::perspective(c + glm::dvec3(0.1, 0.2, 0.05) * r, c + glm::dvec3(r, 0, 0),
+                                      60, rows, cols));
+    return out;
+}
+
+/// The bytes of each output of two images, equal.
+void expect_same_image(const Image &want, const Image &got, const std::string &what)
+{
+    EXPECT_EQ(want.rgb, got.rgb) << what;
+    EXPECT_EQ(want.material, got.material) << what;
+    ASSERT_EQ(want.elevation.size(), got.elevation.size()) << what;
+    EXPECT_EQ(std::memcmp(want.elevation.data(), got.elevation.data(),
+                          want.elevation.size() * sizeof(double)),
+              0)
+        << what;
+    EXPECT_EQ(std::memcmp(want.depth.data(), got.depth.data(), want.depth.size() * sizeof(double)),
+              0)
+        << what;
+}
+
+constexpr uint64_t WHOLE_BUDGET = uint64_t(1) << 30;
+
+} // namespace
+
+TEST_P(GpuPages, HitsOfAPagedModelAreTheWholeModelsBitForBit)
+{
+    const PagedCase c;
+    const Model paged = c.paged(WHOLE_BUDGET);
+    const Tracer paged_tracer(paged, 1.5), whole_tracer(c.model, 1.5);
+    sbrt_gl::GpuTracer on_pages(*context_, paged_tracer, options(WHOLE_BUDGET));
+    sbrt_gl::GpuTracer whole(*context_, whole_tracer, options(WHOLE_BUDGET));
+    ASSERT_NE(on_pages.model().pages(), nullptr);
+    ASSERT_EQ(whole.model().pages(), nullptr);
+    size_t hits = 0;
+    for (const Camera &camera : cameras(whole_tracer, 37, 41)) {
+        const HitImage want = whole.trace_image(camera, 2);
+        const HitImage got = on_pages.trace_image(camera, 2);
+        ASSERT_EQ(want.size(), got.size());
+        for (size_t i = 0; i < want.size(); ++i) {
+            ASSERT_TRUE(identical_hits(want[i], got[i]))
+                << i << ": material " << want[i].material << " / " << got[i].material;
+            hits += want[i].is_hit();
+        }
+    }
+    EXPECT_GT(hits, 1000u);
+    // the first frame brought its blocks up in passes again; some stay
+    EXPECT_GT(on_pages.model().pages()->figures().uploads, 0u);
+    EXPECT_GT(on_pages.model().pages()->held_blocks(), 0);
+}
+
+TEST_P(GpuPages, ShadedFramesOfAPagedModelAreTheWholeModelsByteForByte)
+{
+    const PagedCase c;
+    Shading lit;
+    lit.light = Shading::light_from(300, 35);
+    const Outputs all{true, true, true};
+    const Renderer paged(c.paged(WHOLE_BUDGET), 1.5, Scene{}, lit, {2, true, 8});
+    const Renderer whole(c.model, 1.5, Scene{}, lit, {2, true, 8});
+    sbrt_gl::GpuRenderer on_pages(*context_, paged, options(WHOLE_BUDGET));
+    sbrt_gl::GpuRenderer on_whole(*context_, whole, options(WHOLE_BUDGET));
+    int k = 0;
+    for (const Camera &camera : cameras(whole.tracer(), 43, 39)) {
+        const std::string what = "camera " + std::to_string(k++);
+        expect_same_image(on_whole.render_image(camera, all, 2),
+                          on_pages.render_image(camera, all, 2), what);
+    }
+    // the same frame again: every block it needs is up, no pass again
+    const Camera camera = cameras(whole.tracer(), 43, 39).front();
+    on_pages.render_image(camera, all, 2);
+    const uint64_t uploads = on_pages.gpu().model().pages()->figures().uploads;
+    Image image = empty_image(camera, all);
+    const sbrt_gl::GpuFrameReport r =
+        on_pages.render(camera, all, [&](const Band &band) { gather_band(band, image); }, 2);
+    EXPECT_EQ(r.gpu.page_passes, 0);
+    EXPECT_EQ(on_pages.gpu().model().pages()->figures().uploads, uploads);
+}
+
+TEST_P(GpuPages, AnAtlasOfAFewBlocksHoldsItsBudgetAndTheFrameStaysExact)
+{
+    const PagedCase c;
+    const uint64_t budget = 3 * c.largest_block();
+    const Outputs all{true, true, true};
+    const Renderer paged(c.paged(WHOLE_BUDGET), 1.5, Scene{}, Shading{}, {2, true, 8});
+    sbrt_gl::GpuRenderer on_pages(*context_, paged, options(budget));
+    const sbrt_gl::GpuPageAtlas &atlas = *on_pages.gpu().model().pages();
+    EXPECT_LE(atlas.atlas_bytes(), budget);
+    const double tolerance = 2e-5 * 2 * paged.tracer().frame().radius();
+    int k = 0;
+    size_t sent_to_host = 0;
+    for (const Camera &camera : cameras(paged.tracer(), 43, 39)) {
+        Image got = empty_image(camera, all);
+        const sbrt_gl::GpuFrameReport r =
+            on_pages.render(camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
+        sent_to_host += r.gpu.over_budget;
+        expect_images_agree(paged.render_image(camera, all), got, tolerance,
+                            "camera " + std::to_string(k++));
+        EXPECT_LE(atlas.held_bytes(), budget);
+    }
+    // views that want more blocks than the atlas holds: the rest on the host
+    EXPECT_GT(sent_to_host, 0u);
+    EXPECT_GT(atlas.figures().dropped + atlas.figures().not_placed, 0u);
+    // records too (kernel normals and the hits' path)
+    const Tracer &t = paged.tracer();
+    sbrt_gl::GpuTracer records(*context_, t, options(budget));
+    for (const Camera &camera : cameras(t, 31, 29)) {
+        const Agreement a = compare(records, t, camera);
+        EXPECT_EQ(a.same_material, a.pixels);
+        EXPECT_EQ(a.agreeing, a.pixels);
+    }
+}
+
+TEST_P(GpuPages, APagedModelIsRefusedWhereTheGpuCannotPageIt)
+{
+    const PagedCase c;
+    const Model paged = c.paged(WHOLE_BUDGET);
+    const Tracer tracer(paged, 1.0);
+    sbrt_gl::GpuOptions textures = options(WHOLE_BUDGET);
+    textures.layout = GpuLayout::textures;
+    try {
+        sbrt_gl::GpuTracer gpu(*context_, tracer, textures);
+        ADD_FAILURE() << "textures accepted";
+    }
+    catch (const Error &e) {
+        EXPECT_NE(std::string(e.what()).find("layout=ssbo"), std::string::npos) << e.what();
+    }
+}
