@@ -51,6 +51,22 @@ void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
     sbrt_grass::report_paging(renderer.model());
 }
 
+/// A model read block by block on the GPU: its atlas, and this frame's
+/// dispatches again for the blocks brought up.
+void report_gpu_pages(const sbrt_gl::GpuPageAtlas &pages, const sbrt_gl::GpuStats &frame)
+{
+    const sbrt_gl::PageFigures &f = pages.figures();
+    G_verbose_message(_("GPU blocks (gpu_memory=): %d up, %.1f of %.1f MB; %llu brought up "
+                        "so far (%.1f MB), %llu dropped for others' room, %llu found no room"),
+                      pages.held_blocks(), double(pages.held_bytes()) / (1 << 20),
+                      double(pages.atlas_bytes()) / (1 << 20), (unsigned long long)f.uploads,
+                      double(f.upload_bytes) / (1 << 20), (unsigned long long)f.dropped,
+                      (unsigned long long)f.not_placed);
+    G_verbose_message(_("This frame: %d dispatches again for blocks brought up; %.1f ms "
+                        "finding, decoding and bringing them up"),
+                      frame.page_passes, frame.page_ms);
+}
+
 void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
                    const sbrt::Outputs &outputs, const sbrt::BandSink &sink,
                    sbrt_gl::GpuRenderer &gpu, bool first)
@@ -92,9 +108,14 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
     report_bands(r.render);
     report(_("GPU tracing"), camera, r.gpu.trace_ms);
     if (r.gpu.over_budget)
-        G_verbose_message(_("%zu rays exceeded the shader's loop budget and "
+        G_verbose_message(_("%zu rays exceeded the shader's loop budget%s and "
                             "were traced on the CPU"),
-                          r.gpu.over_budget);
+                          r.gpu.over_budget,
+                          gpu.gpu().model().pages() ? _(" or met a block not on the GPU")
+                                                    : "");
+    if (const sbrt_gl::GpuPageAtlas *pages = gpu.gpu().model().pages())
+        report_gpu_pages(*pages, r.gpu);
+    sbrt_grass::report_paging(gpu.renderer().model());
 }
 
 } // namespace
@@ -146,7 +167,10 @@ void Backend::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
     if (context_ && !tried_gpu_) {
         tried_gpu_ = true;
         try {
-            gpu_.emplace(*context_, renderer_, sbrt::parse_gpu_layout(request_.gpu_layout));
+            sbrt_gl::GpuOptions options =
+                sbrt_gl::GpuOptions::from_environment(sbrt::parse_gpu_layout(request_.gpu_layout));
+            options.page_budget_bytes = request_.gpu_memory_bytes;
+            gpu_.emplace(*context_, renderer_, options);
         }
         catch (const sbrt::Error &e) {
             // the model does not fit this GPU's buffers

@@ -22,6 +22,12 @@ void BackendPart::define(OptionTable &table)
         _("ssbo;two storage buffers, cell offsets and intervals (5-SSBO);"
           "textures;an index texture over the grid and the intervals packed "
           "into a 2D texture (1-Textures; grids up to the largest texture)"));
+    Option *gpu_memory = table.define(
+        "gpu_memory", TYPE_INTEGER,
+        _("GPU memory (in MB) for the model's blocks, where the GPU takes them as its rays "
+          "reach them (OpenGL backends, layout=ssbo)"),
+        _("Settings"), "1024");
+    gpu_memory->options = "1-1048576";
     Option *nprocs = table.add(sbrt_grass::define_nprocs());
     nprocs->guisection = _("Settings");
     table.define_flag('e',
@@ -34,12 +40,14 @@ void BackendPart::read(const Answers &a)
 {
     backend = a.text("backend", "auto");
     gpu_layout = a.text("layout", "ssbo");
+    gpu_memory_bytes = uint64_t(a.number("gpu_memory")) << 20;
     walk_every_cell = a.flag('e');
     threads = int(sbrt_grass::read_nprocs(a.text("nprocs", "0")));
 }
 
 std::string BackendPart::key() const
 {
-    return backend + ' ' + gpu_layout + ' ' + std::to_string(threads) + ' ' +
+    return backend + ' ' + gpu_layout + ' ' + std::to_string(gpu_memory_bytes) + ' ' +
+           std::to_string(threads) + ' ' +
            std::to_string(int(walk_every_cell));
 }

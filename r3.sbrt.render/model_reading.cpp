@@ -23,12 +23,12 @@ bool sees_only_the_region(const RenderRequest &request)
 
 bool reads_pages(const RenderRequest &request)
 {
-    // the CPU's rays alone read the stacks (boreholes, fences, drapes and
-    // property channels and value= read them whole; a GPU takes the whole
-    // model)
+    // the rays alone read the stacks (boreholes, fences, drapes and
+    // property channels and value= read them whole); a GPU takes a paged
+    // model's blocks into its atlas in layout=ssbo, the whole model else
     const bool cpu = request.backend == "cpu" ||
                      (request.backend == "auto" && sbrt_gl::gpu_device_node().empty());
-    return cpu && request.boreholes.empty() &&
+    return (cpu || request.gpu_layout == "ssbo") && request.boreholes.empty() &&
            request.fence.empty() && request.texture.empty() && request.property.empty() &&
            request.fade.empty() && request.select.empty() && request.value.empty();
 }

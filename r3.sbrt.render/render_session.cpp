@@ -283,9 +283,11 @@ void RenderSession::prepare_scene_for(const RenderRequest &request, const sbrt::
         PreparedScene prepared =
             prepare_scene(request, at_->selected ? *at_->selected : *at_->model, camera);
         // on a GPU what no ray of a single view reaches is not uploaded
-        // (the CPU never reads it anyway)
+        // (the CPU never reads it anyway; a paged model's blocks go up as
+        // rays reach them)
         const sbrt::Scene &scene = prepared.scene;
-        if (one_view && context_ && scene.skip_empty_space && scene.draw_model) {
+        if (one_view && context_ && scene.skip_empty_space && scene.draw_model &&
+            !prepared.model.is_paged()) {
             sbrt::Pruning pruning =
                 sbrt::prune_for_view(prepared.model, request.zexag, scene, camera);
             report_pruning(pruning, scene.planes.size());

@@ -86,6 +86,9 @@ CASES = {
                ([], "detail=coarse", "same")],
     "backend": [([], "backend=egl", None)],
     "layout": [(["backend=egl"], "layout=textures", None)],
+    # an atlas of 1 MB: rays that meet a block it has no room for are
+    # traced on the CPU (its float rounding against the GPU's)
+    "gpu_memory": [(["backend=egl"], "gpu_memory=1", None)],
     "nprocs": [([], "nprocs=1", "same")],
     # another budget (memory= holds the process too: the server's own
     # tens of MB, and the model's blocks within the rest)

@@ -100,8 +100,11 @@ int GpuPageAtlas::upload(const std::vector<int> &wanted)
 {
     const auto start = Clock::now();
     int placed = 0;
-    for (size_t first = 0; first < wanted.size(); first += UPLOAD_CHUNK) {
+    bool full = false; // a block found no room: the rest are not decoded
+    size_t done = 0;   // blocks decoded
+    for (size_t first = 0; first < wanted.size() && !full; first += UPLOAD_CHUNK) {
         const size_t count = std::min(UPLOAD_CHUNK, wanted.size() - first);
+        done += count;
         std::vector<std::vector<uint32_t>> words(count);
         sbrt::for_each_row(0, int(count), threads_, [&](int k) {
             const std::shared_ptr<const sbrt::StackBlock> block =
@@ -117,6 +120,7 @@ int GpuPageAtlas::upload(const std::vector<int> &wanted)
             figures_.dropped += dropped.size();
             if (!base) {
                 ++figures_.not_placed;
+                full = true;
                 continue;
             }
             atlas_.write(size_t(*base) * 4, words[k].data(), words[k].size() * 4);
@@ -126,6 +130,8 @@ int GpuPageAtlas::upload(const std::vector<int> &wanted)
             figures_.upload_bytes += words[k].size() * 4;
         }
     }
+    // the chunks not decoded: no room for them either
+    figures_.not_placed += wanted.size() - done;
     check_gl(gl_, "bringing the model's blocks up to the GPU");
     figures_.upload_ms += ms_since(start);
     return placed;
