@@ -73,15 +73,15 @@ bool every_stratum_opaque(const sbrt::Tracer &tracer)
 
 } // namespace
 
-/// The sources of `pass` for `layout` and the form `model` is held in;
+/// The sources of `pass` for the model held in `form`;
 /// with `drape`, a drape's colours among the outputs (SBRT_DRAPE); with
 /// `paint`, the shading pass's colours by voxel (SBRT_PAINT).
-std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
+std::vector<const char *> pass_sources(Pass pass, const ModelForm &form,
                                        const sbrt::Tracer &tracer, bool drape, bool paint)
 {
     const sbrt::Model &model = tracer.model();
     // a paged model's blocks are found through the page table (SBRT_PAGED)
-    const unsigned count_bytes = model.is_paged() ? 4 : model.index().count_bytes();
+    const unsigned count_bytes = form.paged ? 4 : model.index().count_bytes();
     // the normals pass reads a face's normal as shading does
     const bool shade = pass == Pass::shade || pass == Pass::shade_boreholes ||
                        pass == Pass::kernel_shade || pass == Pass::kernel_normals;
@@ -99,8 +99,9 @@ std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
     const bool kernel = pass == Pass::kernel_depth || pass == Pass::kernel_normals ||
                         pass == Pass::kernel_across || pass == Pass::kernel_shade;
     return {"#version 450\n",
-            layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
-            model.is_paged() ? "#define SBRT_PAGED 1\n" : "",
+            form.layout == sbrt::GpuLayout::textures ? "#define SBRT_TEXTURES 1\n" : "",
+            form.paged ? "#define SBRT_PAGED 1\n" : "",
+            form.column_tops ? "#define SBRT_COLUMN_TOPS 1\n" : "",
             compact_on_gpu(model) ? "#define SBRT_COMPACT_INTERVALS 1\n" : "",
             count_bytes == 1   ? "#define SBRT_COUNT_BYTES 1\n"
             : count_bytes == 2 ? "#define SBRT_COUNT_BYTES 2\n"

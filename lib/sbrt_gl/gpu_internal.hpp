@@ -14,6 +14,7 @@
 #include "gl_objects.hpp"
 #include "tracing/tracer.hpp"
 #include "gpu/gpu_memory_layout.hpp"
+#include "gpu_model.hpp"
 
 namespace sbrt_gl {
 
@@ -52,12 +53,12 @@ enum class Pass : int {
     cull_tiles
 };
 
-/// The sources of `pass` for `layout`, the form the tracer's model is held
+/// The sources of `pass` for the model's `form`, the form the tracer's model is held
 /// in and its overlays (the shaded ray casting pass draws them:
 /// common/overlays.glsl); with `drape`, a drape's colours among the
 /// outputs (SBRT_DRAPE); with `paint`, the shading pass colours by voxel
 /// (SBRT_PAINT: lib/sbrt/gpu/gpu_paint.hpp).
-std::vector<const char *> pass_sources(Pass pass, sbrt::GpuLayout layout,
+std::vector<const char *> pass_sources(Pass pass, const ModelForm &form,
                                        const sbrt::Tracer &tracer, bool drape = false,
                                        bool paint = false);
 

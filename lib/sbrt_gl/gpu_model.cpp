@@ -74,9 +74,21 @@ void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes)
     if (sbrt::gpu_overlay_mode(tracer_) != sbrt::GpuOverlayMode::none)
         sbrt::fail("boreholes and fence panels on the GPU need the model read whole, "
                    "not block by block");
-    pages_.emplace(gl_, *model.pages(), compact_on_gpu(model), budget_bytes, max_block_bytes_, 0);
+    const sbrt::StackPages &pages = *model.pages();
+    const bool compact = compact_on_gpu(model);
+    // the tops as the shader reads intervals: a word each where compact
+    const sbrt::IntervalArray &tops = pages.column_tops();
+    const uint64_t tops_bytes = uint64_t(tops.size()) * tops.record_bytes();
+    if (pages.has_column_tops() && tops.is_compact() == compact &&
+        tops_bytes <= budget_bytes / 2 && tops_bytes <= max_block_bytes_) {
+        const void *records =
+            tops.visit([](const auto *first) { return static_cast<const void *>(first); });
+        column_tops_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, size_t(tops_bytes), records);
+        budget_bytes -= tops_bytes;
+    }
+    pages_.emplace(gl_, pages, compact, budget_bytes, max_block_bytes_, 0);
     memory_.index_bytes = (size_t(sbrt::GPU_PAGE_TABLE_HEAD) + model.pages()->block_count()) * 4;
-    memory_.interval_bytes = pages_->atlas_bytes();
+    memory_.interval_bytes = pages_->atlas_bytes() + (column_tops_ ? column_tops_->bytes() : 0);
 }
 
 void GpuModel::upload_stacks(const sbrt::Model &model)
@@ -110,8 +122,11 @@ void GpuModel::upload_stacks(const sbrt::Model &model)
 
 void GpuModel::bind() const
 {
-    if (pages_)
+    if (pages_) {
         pages_->bind();
+        if (column_tops_)
+            column_tops_->bind(15);
+    }
     else if (layout_ == sbrt::GpuLayout::ssbo) {
         group_offsets_->bind(0);
         intervals_->bind(1);

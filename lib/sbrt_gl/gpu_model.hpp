@@ -20,6 +20,13 @@
 
 namespace sbrt_gl {
 
+/// How the model is held on the GPU, as its programs read it (GpuModel).
+struct ModelForm {
+    sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo;
+    bool paged = false;       ///< its blocks in a page atlas (SBRT_PAGED)
+    bool column_tops = false; ///< with each column's top interval (SBRT_COLUMN_TOPS)
+};
+
 /// \brief The resident part of a GPU tracer: the model of `tracer` uploaded
 /// once, at construction, in `layout` (the stack index and the intervals
 /// as two storage buffers or two textures), its materials and pyramids;
@@ -29,7 +36,10 @@ namespace sbrt_gl {
 /// the bindings the shaders declare (shaders/common/layout.glsl).
 /// A paged model (Model::is_paged) goes up as its blocks are wanted, into
 /// an atlas of at most `page_budget_bytes` (GpuPageAtlas; layout ssbo, no
-/// boreholes or curtains).
+/// boreholes or curtains); each column's top interval, where the model
+/// holds them (StackPages::column_tops) and they take at most half of
+/// that budget, goes up whole and takes its bytes from the atlas: a ray
+/// that meets only a column's top interval needs no block.
 class GpuModel {
 public:
     /// `max_block_bytes`: the GPU's largest storage buffer binding (an
@@ -52,6 +62,8 @@ public:
     void bind_overlays();
 
     sbrt::GpuLayout layout() const { return layout_; }
+    /// How its programs read it.
+    ModelForm form() const { return {layout_, pages_.has_value(), column_tops_.has_value()}; }
     /// A paged model's atlas; null where the model is up whole.
     GpuPageAtlas *pages() { return pages_ ? &*pages_ : nullptr; }
     const GpuPageAtlas *pages() const { return pages_ ? &*pages_ : nullptr; }
@@ -72,6 +84,8 @@ private:
     sbrt::GpuLayout layout_;
     sbrt::GpuMemory memory_;
     std::optional<GpuPageAtlas> pages_; ///< a paged model's blocks
+    /// ...and each column's top interval (binding 15), where it has them
+    std::optional<GlBuffer> column_tops_;
     /// the stacks: group offsets, stack counts, intervals (ssbo), or the
     /// index and the intervals as textures
     std::optional<GlBuffer> group_offsets_, counts_, intervals_;

@@ -129,7 +129,7 @@ const GlComputeProgram &GpuTracer::record_program() const
 {
     // compiled when first used: a render shaded on the GPU never needs it
     return program_ ? *program_
-                    : built(program_, pass_sources(Pass::records, layout(), tracer_));
+                    : built(program_, pass_sources(Pass::records, model_.form(), tracer_));
 }
 
 void GpuTracer::bind_model() const
@@ -232,7 +232,7 @@ GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, Pass 
         : pass == Pass::shade_boreholes ? (draped ? boreholes_drape_program_ : boreholes_program_)
         : painted                       ? paint_program_
                                         : (draped ? drape_program_ : shade_program_);
-    return program ? *program : built(program, pass_sources(pass, layout(), tracer_, draped, painted));
+    return program ? *program : built(program, pass_sources(pass, model_.form(), tracer_, draped, painted));
 }
 
 void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading)
@@ -281,7 +281,7 @@ void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, in
                          int height)
 {
     if (!program)
-        built(program, pass_sources(pass, layout(), tracer_));
+        built(program, pass_sources(pass, model_.form(), tracer_));
     program->use();
     timer_.time(int(pass), [&] {
         gl_.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);

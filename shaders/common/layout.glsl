@@ -58,12 +58,45 @@ layout(std430, binding = 0) readonly buffer PageTable {
 layout(std430, binding = 1) readonly buffer Atlas { uint atlas[]; };
 layout(std430, binding = 6) buffer PageMarks { uint page_marks[]; }; // wanted, then read
 const uint PAGE_MISSING = 0xffffffffu;
-#ifdef SBRT_COMPACT_INTERVALS
-uint interval_material(uint j) { return compact_material(atlas[j]); }
-float interval_top(uint j) { return compact_top(atlas[j]); }
+#ifdef SBRT_COLUMN_TOPS
+// Each column's top interval (cell row by row from the north), as the
+// intervals: its material and, for its top, its bottom. A ray that meets
+// only that interval walks a stack of two records instead of its block's
+// (walk.glsl, top_interval_stack): TOP_STACK, nothing up to that bottom,
+// and TOP_STACK + 1, the interval up to the column's top; set for the
+// cell being walked.
+layout(std430, binding = 15) readonly buffer ColumnTops { uint column_tops[]; };
+// below 2^31, so that a search's (low + high) / 2 does not wrap; above every
+// record of the atlas (gpu_pages.hpp, GPU_MAX_ATLAS_WORDS)
+const uint TOP_STACK = 0x7ffffff0u;
+uint top_material = 0u;
+float top_bottom = 0.0, top_high = 0.0;
+#define TOP_RECORD(j, below, top) if (j >= TOP_STACK) return j == TOP_STACK ? below : top
 #else
-uint interval_material(uint j) { return atlas[2u * j]; }
-float interval_top(uint j) { return uintBitsToFloat(atlas[2u * j + 1u]); }
+#define TOP_RECORD(j, below, top)
+#endif
+#ifdef SBRT_COMPACT_INTERVALS
+uint interval_material(uint j)
+{
+    TOP_RECORD(j, 0u, top_material);
+    return compact_material(atlas[j]);
+}
+float interval_top(uint j)
+{
+    TOP_RECORD(j, top_bottom, top_high);
+    return compact_top(atlas[j]);
+}
+#else
+uint interval_material(uint j)
+{
+    TOP_RECORD(j, 0u, top_material);
+    return atlas[2u * j];
+}
+float interval_top(uint j)
+{
+    TOP_RECORD(j, top_bottom, top_high);
+    return uintBitsToFloat(atlas[2u * j + 1u]);
+}
 #endif
 
 // Block `block`'s bit in part `part` of the marks (0 wanted, 1 read)

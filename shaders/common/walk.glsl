@@ -168,10 +168,48 @@ uint walk_pass_over(inout Walk w)
     return STEP_NEXT_CELL;
 }
 
+#ifdef SBRT_COLUMN_TOPS
+// The cell's stack as its top interval alone (layout.glsl, TOP_STACK), as
+// lib/sbrt's Tracer::cross_top_interval reads it: where the ray enters
+// above that interval's bottom and stays above it, or meets the interval
+// opaque on its way down (no block read); an empty column: nothing. Else
+// false: the block's stack.
+bool top_interval_stack(inout Walk w, out uvec2 stack)
+{
+    uint cell = uint(w.rows - 1 - w.iy) * grid.x + uint(w.ix);
+#ifdef SBRT_COMPACT_INTERVALS
+    uint material = compact_material(column_tops[cell]);
+    float bottom = compact_top(column_tops[cell]);
+#else
+    uint material = column_tops[2u * cell];
+    float bottom = uintBitsToFloat(column_tops[2u * cell + 1u]);
+#endif
+    stack = uvec2(TOP_STACK);
+    if (material == 0u)
+        return true; // an empty column
+    if (counts.y == 0u || !(w.z_in > bottom))
+        return false; // no pyramid to give its top; or it enters below
+    // going below the bottom: only where the interval ends the ray there
+    if (!(min(w.z_in, w.z_out) > bottom) && !(materials[material].w < 0.0))
+        return false;
+    top_material = material;
+    top_bottom = bottom;
+    top_high = pyramid_node(0u, w.ix, w.iy).y; // the column's range
+    stack = uvec2(bottom == 0.0 ? TOP_STACK + 1u : TOP_STACK, TOP_STACK + 2u);
+    return true;
+}
+#endif
+
 // ENTER, the cell's stack: searched where the ray may meet some of it
 uint walk_into_stack(inout Walk w)
 {
+#ifdef SBRT_COLUMN_TOPS
+    uvec2 stack;
+    if (!top_interval_stack(w, stack))
+        stack = stack_range(w.ix, w.rows - 1 - w.iy);
+#else
     uvec2 stack = stack_range(w.ix, w.rows - 1 - w.iy);
+#endif
 #ifdef SBRT_PAGED
     // its block not on the GPU: the ray is traced again once it is
     if (stack.x == PAGE_MISSING)

@@ -96,7 +96,7 @@ void AtlasSpace::give_back(uint64_t at, uint64_t words)
 }
 
 PageResidency::PageResidency(int blocks, uint64_t atlas_words)
-    : space_(std::min<uint64_t>(atlas_words, GPU_PAGE_MISSING - 1)), slots_(size_t(blocks))
+    : space_(std::min<uint64_t>(atlas_words, GPU_MAX_ATLAS_WORDS)), slots_(size_t(blocks))
 {
 }
 

@@ -26,6 +26,11 @@ constexpr uint32_t GPU_PAGE_MISSING = 0xffffffffu;
 /// (`buffer PageMarks`: the blocks wanted, then those read), 0.
 constexpr uint32_t GPU_PAGE_TABLE_HEAD = 4;
 
+/// The most words an atlas holds: record indices stay below 2^31 - 16,
+/// where the shaders' stack of a column's top interval lies (layout.glsl,
+/// TOP_STACK), and a search's sum of two indices does not wrap.
+constexpr uint64_t GPU_MAX_ATLAS_WORDS = 0x7fffffe0u;
+
 /// Words of the page marks' halves for `blocks` blocks: a bit a block.
 inline uint32_t gpu_mark_words(int blocks) { return uint32_t((blocks + 31) / 32); }
 
