@@ -24,8 +24,8 @@ void BackendPart::define(OptionTable &table)
           "into a 2D texture (1-Textures; grids up to the largest texture)"));
     Option *gpu_memory = table.define(
         "gpu_memory", TYPE_INTEGER,
-        _("GPU memory (in MB) for the model's blocks, where the GPU takes them as its rays "
-          "reach them (OpenGL backends, layout=ssbo)"),
+        _("GPU memory (in MB) for a model the GPU takes block by block as its rays reach "
+          "them: its empty-space pyramid, columns' tops and blocks (OpenGL, layout=ssbo)"),
         _("Settings"), "1024");
     gpu_memory->options = "1-1048576";
     Option *nprocs = table.add(sbrt_grass::define_nprocs());

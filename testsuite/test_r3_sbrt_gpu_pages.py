@@ -29,7 +29,8 @@ class TestGpuPages(TestCase):
     def setUpClass(cls):
         cls.use_temp_region()
         # 384 x 448 cells of 8 levels in blocks of 64: 42 blocks, 2.5 MB of
-        # intervals decoded; gpu_memory=1 holds a few of them
+        # intervals decoded; gpu_memory=4 holds the pyramid (1.8 MB), the
+        # columns' tops (0.7 MB) and a few blocks
         cls.runModule("g.region", n=384, s=0, e=448, w=0, b=0, t=8, res=1, res3=1, tbres=1)
         cls.runModule(
             "r3.mapcalc",
@@ -82,12 +83,12 @@ class TestGpuPages(TestCase):
 
     def test_an_atlas_of_a_few_blocks_gives_the_cpus_maps(self):
         image_region(self, 120, 90)
-        small = self.render("small", "backend=egl", "gpu_memory=1")
+        small = self.render("small", "backend=egl", "gpu_memory=4")
         found = re.search(r"GPU blocks \(gpu_memory=\): (\d+) up, ([\d.]+) of ([\d.]+) MB",
                           small.stderr)
         self.assertIsNotNone(found, small.stderr)
         self.assertLess(int(found.group(1)), 42)
-        self.assertLessEqual(float(found.group(3)), 1.0)
+        self.assertLessEqual(float(found.group(3)), 2.0)  # 4 MB less pyramid and tops
         # the rays that met a block with no room on the GPU: on the CPU
         self.assertIn("or met a block not on the GPU", small.stderr)
         self.render("cpu", "backend=cpu")
@@ -101,6 +102,15 @@ class TestGpuPages(TestCase):
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("gpu_memory", run.stderr)
         self.assertRasterDoesNotExist("gp_bad.red")
+
+    def test_gpu_memory_below_twice_the_pyramid_is_a_clear_error(self):
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=paged", "output=gp_tight", "size=40,30", "backend=egl",
+             "gpu_memory=3"], capture_output=True, text=True)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("empty-space pyramid takes 2 MB on the GPU, more than half of "
+                      "gpu_memory (3 MB)", " ".join(run.stderr.split()))
+        self.assertRasterDoesNotExist("gp_tight.red")
 
 
 if __name__ == "__main__":

@@ -33,9 +33,18 @@ GlBuffer storage_buffer(const GlApi &gl, const std::vector<T> &words, size_t lim
                     checked_bytes(words.size() * sizeof(T), limit, what), words.data());
 }
 
-/// An empty-space pyramid (binding 4).
-GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::MinMaxPyramid &pyramid, size_t limit)
+/// An empty-space pyramid (binding 4); where `budget` is given (a paged
+/// model's gpu_memory=), at most half of it. Checked before its words are
+/// made: a national model's take a gigabyte.
+GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::MinMaxPyramid &pyramid, size_t limit,
+                        uint64_t budget = 0)
 {
+    const uint64_t bytes = sbrt::gpu_pyramid_bytes(pyramid);
+    if (budget && bytes > budget / 2)
+        sbrt::fail("the model's empty-space pyramid takes ", (bytes + (1 << 20) - 1) >> 20,
+                   " MB on the GPU, more than half of gpu_memory (", budget >> 20,
+                   " MB): give more, or render with backend=cpu");
+    checked_bytes(size_t(bytes), limit, "empty-space pyramid");
     return storage_buffer(gl, sbrt::make_gpu_pyramid(pyramid), limit, "empty-space pyramid");
 }
 
@@ -53,7 +62,8 @@ GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout 
                    size_t max_block_bytes, uint64_t page_budget_bytes)
     : gl_(gl), tracer_(tracer), max_block_bytes_(max_block_bytes), layout_(layout),
       materials_(material_buffer(gl, tracer)),
-      pyramid_(pyramid_buffer(gl, tracer.pyramid(), max_block_bytes))
+      pyramid_(pyramid_buffer(gl, tracer.pyramid(), max_block_bytes,
+                              tracer.model().is_paged() ? page_budget_bytes : 0))
 {
     if (&tracer.model_pyramid() != &tracer.pyramid())
         model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
@@ -74,7 +84,12 @@ void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes)
     if (sbrt::gpu_overlay_mode(tracer_) != sbrt::GpuOverlayMode::none)
         sbrt::fail("boreholes and fence panels on the GPU need the model read whole, "
                    "not block by block");
+    // the pyramid and the page table are a part of the budget (boreholes,
+    // with a pyramid of their own, are not paged)
     const sbrt::StackPages &pages = *model.pages();
+    const uint64_t table_bytes =
+        (uint64_t(sbrt::GPU_PAGE_TABLE_HEAD) + uint64_t(pages.block_count())) * 4;
+    budget_bytes -= std::min<uint64_t>(budget_bytes, pyramid_.bytes() + table_bytes);
     const bool compact = compact_on_gpu(model);
     // the tops as the shader reads intervals: a word each where compact
     const sbrt::IntervalArray &tops = pages.column_tops();
@@ -87,7 +102,7 @@ void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes)
         budget_bytes -= tops_bytes;
     }
     pages_.emplace(gl_, pages, compact, budget_bytes, max_block_bytes_, 0);
-    memory_.index_bytes = (size_t(sbrt::GPU_PAGE_TABLE_HEAD) + model.pages()->block_count()) * 4;
+    memory_.index_bytes = table_bytes;
     memory_.interval_bytes = pages_->atlas_bytes() + (column_tops_ ? column_tops_->bytes() : 0);
 }
 

@@ -35,11 +35,11 @@ struct ModelForm {
 /// released with the GpuModel; the context must be current. Binds them at
 /// the bindings the shaders declare (shaders/common/layout.glsl).
 /// A paged model (Model::is_paged) goes up as its blocks are wanted, into
-/// an atlas of at most `page_budget_bytes` (GpuPageAtlas; layout ssbo, no
-/// boreholes or curtains); each column's top interval, where the model
-/// holds them (StackPages::column_tops) and they take at most half of
-/// that budget, goes up whole and takes its bytes from the atlas: a ray
-/// that meets only a column's top interval needs no block.
+/// an atlas (GpuPageAtlas; layout ssbo, no boreholes or curtains) within
+/// `page_budget_bytes` with its pyramid (at most half of it: an error
+/// else) and each column's top interval, where the model holds them
+/// (StackPages::column_tops) and they take at most half of what is left:
+/// a ray that meets only a column's top interval needs no block.
 class GpuModel {
 public:
     /// `max_block_bytes`: the GPU's largest storage buffer binding (an

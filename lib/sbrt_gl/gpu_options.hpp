@@ -41,8 +41,10 @@ struct GpuOptions {
     /// (sbrt::GPU_LOOP_BUDGET: llvmpipe ends an invocation after 65,535),
     /// UNBOUNDED_LOOP_BUDGET on a GPU.
     std::optional<uint32_t> loop_budget;
-    /// GPU memory for the blocks of a model read block by block (its
-    /// atlas: GpuPageAtlas), within the GPU's largest storage buffer.
+    /// GPU memory for a model read block by block: its empty-space
+    /// pyramid (at most half), its columns' top intervals (where they take
+    /// at most half of what is left) and the atlas of the blocks its rays
+    /// reach (GpuPageAtlas, within the GPU's largest storage buffer).
     uint64_t page_budget_bytes = DEFAULT_PAGE_BUDGET;
 
     /// The defaults in `layout`, the bands as SBRT_GPU_BANDS says where it

@@ -155,6 +155,14 @@ std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid)
     return words;
 }
 
+uint64_t gpu_pyramid_bytes(const MinMaxPyramid &pyramid)
+{
+    uint64_t nodes = 0;
+    for (int level = 0; level < pyramid.levels(); ++level)
+        nodes += uint64_t(pyramid.cols(level)) * uint64_t(pyramid.rows(level));
+    return (4 * uint64_t(GPU_MAX_PYRAMID_LEVELS) + 2 * nodes) * 4;
+}
+
 GpuShade make_gpu_shade(const Tracer &tracer, const Shading &shading,
                         const Outputs &outputs)
 {

@@ -165,6 +165,8 @@ constexpr int GPU_MAX_PYRAMID_LEVELS = 32;
 /// GPU_MAX_PYRAMID_LEVELS levels, then every node's (low, high) as floats,
 /// level 0 first; all as 32-bit words.
 std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
+/// The bytes of make_gpu_pyramid's words, without making them.
+uint64_t gpu_pyramid_bytes(const MinMaxPyramid &pyramid);
 
 /// The view block of `camera` in the tracer's local frame.
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,

@@ -175,12 +175,14 @@ TEST_P(GpuPages, ShadedFramesOfAPagedModelAreTheWholeModelsByteForByte)
 TEST_P(GpuPages, AnAtlasOfAFewBlocksHoldsItsBudgetAndTheFrameStaysExact)
 {
     const PagedCase c;
-    const uint64_t budget = 3 * c.largest_block();
     const Outputs all{true, true, true};
     const Renderer paged(c.paged(WHOLE_BUDGET), 1.5, Scene{}, Shading{}, {2, true, 8});
+    // the pyramid (at most half the budget), and room for three blocks
+    const uint64_t pyramid = gpu_pyramid_bytes(paged.tracer().pyramid());
+    const uint64_t budget = std::max(2 * pyramid + 1024, pyramid + 1024 + 3 * c.largest_block());
     sbrt_gl::GpuRenderer on_pages(*context_, paged, options(budget));
     const sbrt_gl::GpuPageAtlas &atlas = *on_pages.gpu().model().pages();
-    EXPECT_LE(atlas.atlas_bytes(), budget);
+    EXPECT_LE(on_pages.gpu().memory().total() + pyramid, budget);
     const double tolerance = 2e-5 * 2 * paged.tracer().frame().radius();
     int k = 0;
     size_t sent_to_host = 0;
@@ -191,7 +193,7 @@ TEST_P(GpuPages, AnAtlasOfAFewBlocksHoldsItsBudgetAndTheFrameStaysExact)
         sent_to_host += r.gpu.over_budget;
         expect_images_agree(paged.render_image(camera, all), got, tolerance,
                             "camera " + std::to_string(k++));
-        EXPECT_LE(atlas.held_bytes(), budget);
+        EXPECT_LE(atlas.held_bytes(), atlas.atlas_bytes());
     }
     // views that want more blocks than the atlas holds: the rest on the host
     EXPECT_GT(sent_to_host, 0u);
@@ -220,4 +222,17 @@ TEST_P(GpuPages, APagedModelIsRefusedWhereTheGpuCannotPageIt)
     catch (const Error &e) {
         EXPECT_NE(std::string(e.what()).find("layout=ssbo"), std::string::npos) << e.what();
     }
+    // a budget whose half the pyramid exceeds (checked before its words
+    // are made): an error that names gpu_memory
+    const uint64_t pyramid = gpu_pyramid_bytes(tracer.pyramid());
+    EXPECT_EQ(pyramid, make_gpu_pyramid(tracer.pyramid()).size() * 4);
+    try {
+        sbrt_gl::GpuTracer gpu(*context_, tracer, options(2 * pyramid - 2));
+        ADD_FAILURE() << "a budget below twice the pyramid accepted";
+    }
+    catch (const Error &e) {
+        EXPECT_NE(std::string(e.what()).find("gpu_memory"), std::string::npos) << e.what();
+    }
+    sbrt_gl::GpuTracer fits(*context_, tracer, options(2 * pyramid));
+    EXPECT_LE(fits.memory().total() + fits.pyramid_bytes(), 2 * pyramid);
 }
