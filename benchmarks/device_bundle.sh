@@ -14,7 +14,7 @@
 #            packages into .gl/; both folders are ignored by git
 #            (.git/info/exclude). Prints the command for the device tool
 #            (carry .device and .gl).
-# USAGE:     make && [BASE_BENCH=path] benchmarks/device_bundle.sh [SIZES] (A B C)
+# USAGE:     make && [BASE_BENCH=path] [NATIONAL=1] benchmarks/device_bundle.sh [SIZES] (A B C)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 ############################################################################
 set -euo pipefail
@@ -62,6 +62,18 @@ paint_nc=$SBRT_GISDBASE/geotop_channels_200x200x160.nc
 [ -d "$SBRT_GISDBASE/loc/PERMANENT/sbrt/paint_gt" ] ||
     in_grass PERMANENT r3.sbrt.convert --q -a -o file="$paint_nc" variable=lithok output=paint_gt
 tar -C "$SBRT_GISDBASE/loc/PERMANENT/sbrt" -czf .device/sbrt/paint_gt.tar.gz paint_gt
+# the national GeoTOP-like model, with its column members, without its
+# coarse level (NATIONAL=1: issue 49's GPU pages; about 35 MB gzipped)
+if [ "${NATIONAL:-0}" = 1 ]; then
+    national=$SBRT_GISDBASE/loc/PERMANENT/sbrt/geotop_2647x2812
+    [ -d "$national" ] || in_grass PERMANENT bash -c \
+        ". '$root/tools/bench_model.sh'; geotop_bench_model 2647 2812 313 '$SBRT_GISDBASE' '$root/tools'"
+    staged=$(mktemp -d)
+    mkdir "$staged/national"
+    find "$national" -maxdepth 1 -type f ! -name stacks_lod -exec cp {} "$staged/national/" \;
+    tar -C "$staged" -czf .device/sbrt/national.tar.gz national
+    rm -rf "$staged"
+fi
 (cd .gl && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 >/dev/null)
 du -sh .device .gl
 echo "device command (carry .device and .gl):"

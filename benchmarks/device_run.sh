@@ -30,6 +30,10 @@
 #            - with trace_bench_base in the bundle (another build, e.g. the
 #              last main), the same figures of that build, in the same run;
 #            - with sbrt_unit_tests in the bundle, the GL unit tests on EGL;
+#            - with the national model in the bundle (NATIONAL=1), issue
+#              49's GPU pages: its blocks brought up as rays reach them,
+#              cold and warm, at gpu_memory= 1024, 256 and 160 MB, against
+#              the model uploaded whole and the CPU (trace_bench gpu_pages);
 #            - what building the GPU's programs costs from empty caches
 #              (ours and the driver's): B's class view, with 100
 #              boreholes, and the property view (programs_ms);
@@ -39,7 +43,7 @@
 #              by voxel made and uploaded, or coloured on the host) and
 #              warm, and the GPU's pixels against the CPU's.
 #            Runs here too (llvmpipe), which checks the script.
-# USAGE:     [SECTIONS="programs unit paint gpu large boreholes scaling
+# USAGE:     [SECTIONS="programs unit paint pages gpu large boreholes scaling
 #            machine contention pairs alternate"] [UNIT_FILTER=a GoogleTest filter] [BOREHOLE_FRAMES=200]
 #            bash .device/device_run.sh [SIZES] (A B C)
 # COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
@@ -61,7 +65,7 @@ cores=$(nproc)
 builds=(new)
 [ -x "$bundle/trace_bench_base" ] && builds+=(base)
 bench_of() { [ "$1" = base ] && echo "$bundle/trace_bench_base" || echo "$bundle/trace_bench"; }
-sections=" ${SECTIONS:-programs unit paint gpu large boreholes scaling machine contention pairs alternate} "
+sections=" ${SECTIONS:-programs unit paint pages gpu large boreholes scaling machine contention pairs alternate} "
 run() { [[ "$sections" == *" $1 "* ]]; }
 # the frame_ms of trace_bench frame's output (files, or standard input)
 frame_ms_of() { grep "^frame " "$@" | grep -oE "frame_ms=[0-9.]+" | cut -d= -f2; }
@@ -106,6 +110,19 @@ if run paint && [ -f "$bundle/sbrt/paint_gt.tar.gz" ]; then
                 azimuth=200 elevation=35 zexag=20 $px property=kans_5+kans_6+kans_7 fade=onz_lk \
                 repeat=5 threads="$n" label=paint_gt | sed "s/^/device threads=$n /"
         done
+    done
+fi
+
+# the national model read block by block on the GPU (issue 49): its blocks
+# brought up as the rays reach them within gpu_memory=, cold and warm,
+# against the model uploaded whole and the CPU (national.tar.gz: the bundle
+# made with NATIONAL=1)
+if run pages && [ -f "$bundle/sbrt/national.tar.gz" ]; then
+    tar -C "$data" -xzf "$bundle/sbrt/national.tar.gz"
+    for px in "cols=1056 rows=884" "cols=800 rows=600"; do
+        "$bundle/trace_bench" gpu_pages "$data/national" azimuth=225 elevation=30 zexag=600 \
+            $px gpu_memory=1024,256,160 whole=1 repeat=5 threads="$cores" label=national |
+            sed "s/^/device /"
     done
 fi
 

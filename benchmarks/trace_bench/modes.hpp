@@ -31,6 +31,7 @@ void run_format(const Bench &bench);      // mode_format.cpp
 void run_skipping(const Bench &bench);    // mode_skipping.cpp
 void run_frame(const Bench &bench);       // mode_frame.cpp
 void run_gpu_frame(const Bench &bench);   // mode_gpu_frame.cpp
+void run_gpu_pages(const Bench &bench);   // mode_gpu_pages.cpp
 void run_paint_frame(const Bench &bench); // mode_paint_frame.cpp
 void run_error(const Bench &bench);       // mode_error.cpp
 void run_compact(const Bench &bench);     // mode_compact.cpp
@@ -42,6 +43,8 @@ inline const Mode MODES[] = {
     {"skipping", Needs::model_camera, "3", run_skipping},
     {"frame", Needs::camera, "3", run_frame},
     {"gpu_frame", Needs::camera, "3", run_gpu_frame},
+    // the model read block by block: it opens it itself
+    {"gpu_pages", Needs::nothing, "3", run_gpu_pages},
     {"paint_frame", Needs::camera, "3", run_paint_frame},
     {"error", Needs::model_camera, "3", run_error},
     {"compact", Needs::model_camera, "3", run_compact},

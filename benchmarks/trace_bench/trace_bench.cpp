@@ -87,8 +87,7 @@ Bench ready(const Mode &mode, const std::string &dir, Args args)
     bench.args = std::move(args);
     if (mode.needs == Needs::model_camera)
         bench.model = load(dir, bench.args);
-    if (mode.needs != Needs::nothing)
-        bench.zexag = std::stod(bench.args.get("zexag", "1"));
+    bench.zexag = std::stod(bench.args.get("zexag", "1"));
     bench.repeat = std::stoi(bench.args.get("repeat", mode.repeat));
     if (mode.needs == Needs::camera) // the mode loads it itself, timed
         bench.camera = camera_of(bench.args, sbrt::read_sbrt(dir), bench.zexag);
@@ -102,7 +101,7 @@ Bench ready(const Mode &mode, const std::string &dir, Args args)
 int main(int argc, char *argv[])
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s format|skipping|frame|gpu_frame|paint_frame|error|compact|row_order SBRT_DIR key=value...\n", argv[0]);
+        std::fprintf(stderr, "usage: %s format|skipping|frame|gpu_frame|gpu_pages|paint_frame|error|compact|row_order SBRT_DIR key=value...\n", argv[0]);
         return 2;
     }
     try {
