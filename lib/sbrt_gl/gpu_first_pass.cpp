@@ -50,7 +50,7 @@ sbrt::GpuView GpuTracer::traced_view(const sbrt::Camera &camera, uint32_t loop_b
     view_.bind(0);
     model_.bind_pyramid();
     tile_starts_->bind(8);
-    run_pass(Pass::first_pass, first_pass_program_, int(tile_cols), int(tile_rows));
+    run_pass(Pass::first_pass, int(tile_cols), int(tile_rows));
     check_gl(gl_, "the first pass");
     first_pass_view_ = key;
     stats_.trace_ms += ms_since(start);

@@ -41,10 +41,10 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     view_.upload(&view, sizeof view);
     image_hits_->bind(2);
     const auto start = Clock::now();
-    run_pass(Pass::records, program_, cols, rows);
+    run_pass(Pass::records, cols, rows);
     // a paged model: again once the blocks its rays missed are up
     while (brought_wanted_blocks())
-        run_pass(Pass::records, program_, cols, rows);
+        run_pass(Pass::records, cols, rows);
     // 2. the kernel's cells and camera (and the smoothing's weights)
     const sbrt::KernelNormals kernel(tracer_, camera, shading.kernel);
     const std::vector<double> weights =
@@ -63,7 +63,7 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     image_hits_->bind(0);
     depths_->bind(1);
     kernel_cells_->bind(4);
-    run_pass(Pass::kernel_depth, kernel_depth_program_, cols, rows);
+    run_pass(Pass::kernel_depth, cols, rows);
     if (!weights.empty()) {
         if (!kernel_normals_ || kernel_normals_->bytes() < pixels * 16) {
             kernel_normals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * 16);
@@ -73,8 +73,8 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
         bind_shading(sbrt::make_gpu_shade(tracer_, shading, sbrt::Outputs{}), shading);
         kernel_normals_->bind(3);
         kernel_across_->bind(6);
-        run_pass(Pass::kernel_normals, kernel_normals_program_, cols, rows);
-        run_pass(Pass::kernel_across, kernel_across_program_, cols, rows);
+        run_pass(Pass::kernel_normals, cols, rows);
+        run_pass(Pass::kernel_across, cols, rows);
     }
     gl_.Finish();
     check_gl(gl_, "the kernel normals' trace, depth and smoothing passes");

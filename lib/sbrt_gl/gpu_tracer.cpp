@@ -13,7 +13,6 @@
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 #include "gpu_internal.hpp"
-#include "shader_sources.hpp"
 #include "gpu/gpu_overlays.hpp"
 #include "gpu/gpu_paint.hpp"
 
@@ -46,9 +45,10 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
 
 GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
                      const GpuOptions &options, ProgramCache cache)
-    : created_(Clock::now()), tracer_(tracer), gl_(context), cache_(std::move(cache)),
+    : created_(Clock::now()), tracer_(tracer), gl_(context),
       max_block_bytes_(check_version(gl_, context.name())),
       model_(gl_, tracer, options.layout, max_block_bytes_, options.page_budget_bytes),
+      programs_(gl_, tracer, model_, std::move(cache)),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
       bands_(gl_, max_block_bytes_, sbrt_gl::staged_bands(options, gl_renderer())), timer_(gl_),
       host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer()))
@@ -69,12 +69,10 @@ std::string GpuTracer::gl_renderer() const
 void GpuTracer::reset_stats()
 {
     // what the tracer's life has cost so far, not a frame's
-    const double upload_ms = stats_.upload_ms, paint_ms = stats_.paint_ms,
-                 programs_ms = stats_.programs_ms;
+    const double upload_ms = stats_.upload_ms, paint_ms = stats_.paint_ms;
     stats_ = GpuStats();
     stats_.upload_ms = upload_ms;
     stats_.paint_ms = paint_ms;
-    stats_.programs_ms = programs_ms;
     timer_.take_ms(0); // the queries of what went before
 }
 
@@ -125,11 +123,13 @@ sbrt::HitImage GpuTracer::trace_image(const sbrt::Camera &camera,
 }
 
 
-const GlComputeProgram &GpuTracer::record_program() const
+const GlComputeProgram *GpuTracer::shading_program_built() const
 {
-    // compiled when first used: a render shaded on the GPU never needs it
-    return program_ ? *program_
-                    : built(program_, pass_sources(Pass::records, model_.form(), tracer_));
+    for (const ProgramVariant variant : {ProgramVariant{false, true}, ProgramVariant{true, false},
+                                         ProgramVariant{}})
+        if (const GlComputeProgram *program = programs_.built(Pass::shade, variant))
+            return program;
+    return nullptr;
 }
 
 void GpuTracer::bind_model() const
@@ -227,12 +227,7 @@ GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, Pass 
     const bool painted = shading.property || shading.fade;
     if (painted && pass != Pass::shade)
         sbrt::fail("colours by voxel are not made in this GPU pass");
-    std::optional<GlComputeProgram> &program =
-        pass == Pass::kernel_shade      ? (draped ? kernel_drape_program_ : kernel_program_)
-        : pass == Pass::shade_boreholes ? (draped ? boreholes_drape_program_ : boreholes_program_)
-        : painted                       ? paint_program_
-                                        : (draped ? drape_program_ : shade_program_);
-    return program ? *program : built(program, pass_sources(pass, model_.form(), tracer_, draped, painted));
+    return programs_.get(pass, {draped, painted});
 }
 
 void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading)
@@ -277,12 +272,9 @@ void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &s
         model_.bind_overlays();
 }
 
-void GpuTracer::run_pass(Pass pass, std::optional<GlComputeProgram> &program, int width,
-                         int height)
+void GpuTracer::run_pass(Pass pass, int width, int height)
 {
-    if (!program)
-        built(program, pass_sources(pass, model_.form(), tracer_));
-    program->use();
+    programs_.get(pass).use();
     timer_.time(int(pass), [&] {
         gl_.DispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
     });
@@ -447,7 +439,7 @@ void GpuTracer::dispatch_borehole_tiles(const sbrt::Camera &camera, const ShadeP
         // the model pass's farthest t of each tile before the culling
         // reads them
         gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        cull_program().use();
+        programs_.get(Pass::cull_tiles).use();
         timer_.time(int(Pass::cull_tiles), [&] {
             gl_.DispatchCompute(GLuint(tracer_.overlay_boxes().size()), 1, 1);
         });
@@ -474,20 +466,6 @@ void GpuTracer::dispatch_borehole_tiles(const sbrt::Camera &camera, const ShadeP
     stats_.borehole_submit_ms += ms_since(submit);
 }
 
-GlComputeProgram &GpuTracer::cull_program()
-{
-    return cull_program_ ? *cull_program_
-                         : built(cull_program_, {"#version 450\n", SHADER_TILE_CULL});
-}
-
-GlComputeProgram &GpuTracer::built(std::optional<GlComputeProgram> &program,
-                                   const std::vector<const char *> &sources) const
-{
-    const auto start = Clock::now();
-    program.emplace(gl_, sources, &cache_);
-    stats_.programs_ms += ms_since(start);
-    return *program;
-}
 
 void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_count,
                            const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,

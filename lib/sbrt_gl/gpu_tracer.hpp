@@ -22,6 +22,7 @@
 #include "gpu_model.hpp"
 #include "gpu_options.hpp"
 #include "mapped_bands.hpp"
+#include "program_set.hpp"
 #include "gpu/gpu_layout.hpp"
 #include "tracing/cpu_tracing.hpp"
 #include "gpu/gpu_memory_layout.hpp"
@@ -166,24 +167,26 @@ public:
     /// the drape where there was one), or 0.
     GLuint shade_program() const
     {
-        return paint_program_   ? paint_program_->name()
-               : drape_program_ ? drape_program_->name()
-               : shade_program_ ? shade_program_->name()
-                                : 0;
+        const GlComputeProgram *p = shading_program_built();
+        return p ? p->name() : 0;
     }
     /// The kernel normals' shading program (compiled by the first
     /// shade_kernel_rows), or 0.
     GLuint kernel_program() const
     {
-        return kernel_drape_program_ ? kernel_drape_program_->name()
-               : kernel_program_     ? kernel_program_->name()
-                                     : 0;
+        const GlComputeProgram *draped = programs_.built(Pass::kernel_shade, {true, false});
+        const GlComputeProgram *p = draped ? draped : programs_.built(Pass::kernel_shade);
+        return p ? p->name() : 0;
     }
 
     const sbrt::Tracer &tracer() const { return tracer_; }
     std::string gl_version() const;
     std::string gl_renderer() const;
-    const GpuStats &stats() const { return stats_; }
+    const GpuStats &stats() const
+    {
+        stats_.programs_ms = programs_.build_ms();
+        return stats_;
+    }
     /// What stays on the GPU for the scene.
     const GpuModel &model() const { return model_; }
     /// What the model takes on the GPU in its layout.
@@ -200,14 +203,15 @@ public:
     /// Whether the shading program (shade_program) came from the cache.
     bool shade_program_from_cache() const
     {
-        return paint_program_   ? paint_program_->from_cache()
-               : drape_program_ ? drape_program_->from_cache()
-               : shade_program_ ? shade_program_->from_cache()
-                                : false;
+        const GlComputeProgram *p = shading_program_built();
+        return p && p->from_cache();
     }
 
 private:
-    const GlComputeProgram &record_program() const;
+    const GlComputeProgram &record_program() const { return programs_.get(Pass::records); }
+    /// The shading pass's program built (colours by voxel, else with a
+    /// drape, else plain), or null.
+    const GlComputeProgram *shading_program_built() const;
     /// A paged model: whether blocks that the dispatches so far found
     /// missing were brought up (their rays then go again).
     bool brought_wanted_blocks();
@@ -226,17 +230,10 @@ private:
     /// kernel_shade) for `shading` (with its drape), compiled when first
     /// needed.
     GlComputeProgram &shading_program(const sbrt::Shading &shading, Pass pass);
-    /// The culling pass of the boreholes' tiles (tile_cull.comp).
-    GlComputeProgram &cull_program();
-    /// `program`, built from `sources` (compiled, or loaded from the cache)
-    /// where it is not yet; the time in stats_.programs_ms.
-    GlComputeProgram &built(std::optional<GlComputeProgram> &program,
-                            const std::vector<const char *> &sources) const;
-    /// Compiles `program` for `pass` (gpu_internal.hpp) when first needed
-    /// and runs it over width x height invocations (pixels of the whole
-    /// image, or the first pass's tiles), its buffers bound; a barrier
-    /// after.
-    void run_pass(Pass pass, std::optional<GlComputeProgram> &program, int width, int height);
+    /// The program of `pass` (gpu_internal.hpp) over width x height
+    /// invocations (pixels of the whole image, or the first pass's tiles),
+    /// its buffers bound; a barrier after.
+    void run_pass(Pass pass, int width, int height);
     /// Uploads `shade` and binds it, the looks and the drape (the looks and
     /// the drape uploaded when first needed).
     void bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading);
@@ -285,42 +282,33 @@ private:
     std::chrono::steady_clock::time_point frame_start_; ///< begin_frame
     const sbrt::Tracer &tracer_;
     GlApi gl_;
-    ProgramCache cache_;
     size_t max_block_bytes_;
     GpuModel model_; ///< what stays on the GPU for the scene
-    mutable std::optional<GlComputeProgram> program_; ///< hit records
+    /// every pass's programs; mutable: the hit records' program is built
+    /// when first used
+    mutable ProgramSet programs_;
     GlBuffer view_;
     std::optional<GlBuffer> band_; ///< the hit records of a band of rows
     std::vector<sbrt::GpuPixelHit> records_;
-    /// shading on the GPU: its program, the materials' looks, the Shade
-    /// block, the band's output words
-    std::optional<GlComputeProgram> shade_program_, drape_program_;
-    /// ...coloured by voxel (a property or a fade), and its words (binding
-    /// 7, as a drape's: a scene has one or the other) with their key
-    std::optional<GlComputeProgram> paint_program_;
-    /// colours by voxel: the view's rays in double (binding 3)
+    /// colours by voxel (a property or a fade): the view's rays in double
+    /// (binding 3), their words (binding 7, as a drape's: a scene has one
+    /// or the other) with their key
     std::optional<GlBuffer> view_double_;
     std::optional<GlBuffer> paint_;
     std::string paint_key_;
-    /// the boreholes' pass over listed tiles (with a drape or without),
-    /// the culling pass that lists them, and the tiles of the band
-    /// dispatched into each of MappedBands' slots (binding 12): written
-    /// only once the GPU is done with the slot
-    std::optional<GlComputeProgram> boreholes_program_, boreholes_drape_program_, cull_program_;
+    /// the tiles that the boreholes' pass shades, of the band dispatched
+    /// into each of MappedBands' slots (binding 12): written only once the
+    /// GPU is done with the slot
     std::array<std::optional<GlBuffer>, MappedBands::SLOTS> tile_lists_;
     /// the count of tiles listed, copied there for the host once the band
     /// is done (a read of GPU memory would wait for all queued)
     std::array<std::optional<MappedBuffer>, MappedBands::SLOTS> tile_counts_;
-    /// kernel normals: the depth pass and the shading pass (with a drape
-    /// or without), the whole image's hit records and depths, the
+    /// kernel normals: the whole image's hit records and depths, the
     /// kernel's cells and its Kernel block
-    std::optional<GlComputeProgram> kernel_depth_program_, kernel_program_,
-        kernel_drape_program_, kernel_normals_program_, kernel_across_program_;
     std::optional<GlBuffer> image_hits_, depths_, kernel_cells_, kernel_block_,
         kernel_normals_, kernel_across_;
-    /// the first pass: its program, the tiles' bounds (binding 8) and the
-    /// view they are of (rows and budget zeroed)
-    std::optional<GlComputeProgram> first_pass_program_;
+    /// the first pass: the tiles' bounds (binding 8) and the view they
+    /// are of (rows and budget zeroed)
     std::optional<GlBuffer> tile_starts_;
     sbrt::GpuView first_pass_view_{};
     sbrt::GpuKernel kernel_{};
@@ -333,7 +321,7 @@ private:
     /// the drape's surface and texture (binding 7), and whose they are
     std::optional<GlBuffer> drape_;
     const sbrt::Drape *drape_on_gpu_ = nullptr;
-    mutable GpuStats stats_; ///< mutable: the hit records' program is built when first used
+    mutable GpuStats stats_; ///< mutable: stats() adds the programs' time
     uint32_t loop_budget_;
 };
 
