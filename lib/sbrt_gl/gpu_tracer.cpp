@@ -49,6 +49,7 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
       max_block_bytes_(check_version(gl_, context.name())),
       model_(gl_, tracer, options.layout, max_block_bytes_, options.page_budget_bytes),
       programs_(gl_, tracer, model_, std::move(cache)),
+      boreholes_(gl_, tracer, max_block_bytes_),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
       bands_(gl_, max_block_bytes_, sbrt_gl::staged_bands(options, gl_renderer())), timer_(gl_),
       host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer()))
@@ -332,42 +333,15 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
         view_double_->upload(&exact, sizeof exact);
         view_double_->bind(3);
     }
-    set_band_scratch(camera, layout, plan.borehole_program != nullptr);
+    // a scratch buffer for each slot, as a band dispatched ahead writes its
+    // own while the band before still reads (binding 13)
+    bands_.set_scratch(plan.borehole_program ? boreholes_.scratch_bytes(camera, layout) : 0, 13);
     shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
                [&](int first, int count, int slot) {
                    dispatch_shading(camera, plan, first, count, slot);
                });
-    if (plan.borehole_program) {
-        // the tiles the GPU listed in the band just done (its slot's count)
-        uint32_t listed = 0;
-        std::memcpy(&listed, tile_counts_[size_t(bands_.last_slot())]->host(), sizeof listed);
-        stats_.borehole_tiles += listed;
-    }
-}
-
-void GpuTracer::set_band_scratch(const sbrt::Camera &camera, const sbrt::GpuBandLayout &layout,
-                                 bool boreholes)
-{
-    const int cols = camera.cols();
-    const size_t boxes = tracer_.overlay_boxes().size();
-    // GL takes at least 65535 work groups a dimension: the cull's a box,
-    // the boreholes' pass's a tile of the band
-    const size_t band_tiles = size_t((cols + 7) / 8) * size_t((layout.rows + 7) / 8);
-    if (boreholes && (band_tiles > 65535 || boxes > 65535))
-        sbrt::fail("boreholes with the model on the GPU: ", boxes,
-                   " boreholes over bands of ", band_tiles,
-                   " tiles, more than one dispatch takes (65535): fewer rows a band or "
-                   "fewer boreholes");
-    // each pixel's t of its hit in the model's pass, then each tile's
-    // farthest, for the boreholes' pass and its culling (binding 13): a
-    // buffer for each slot, as a band dispatched ahead writes its own while
-    // the band before still reads
-    bands_.set_scratch(boreholes ? checked_bytes((size_t(layout.rows) * size_t(cols) +
-                                                  band_tiles) *
-                                                     sizeof(float),
-                                                 max_block_bytes_, "hits' distances")
-                                 : 0,
-                       13);
+    if (plan.borehole_program) // the tiles listed in the band just done
+        stats_.borehole_tiles += boreholes_.listed(bands_.last_slot());
 }
 
 void GpuTracer::dispatch_shading(const sbrt::Camera &camera, ShadePlan &plan, int first,
@@ -390,82 +364,9 @@ void GpuTracer::dispatch_shading(const sbrt::Camera &camera, ShadePlan &plan, in
         model_.bind_pyramid();
     }
     if (boreholes)
-        dispatch_borehole_tiles(camera, plan, first, count, slot);
+        boreholes_.dispatch(camera, programs_, *plan.borehole_program, plan.every_tile, first,
+                            count, slot, timer_, stats_);
 }
-
-GlBuffer &GpuTracer::borehole_tile_list(const sbrt::Camera &camera, const ShadePlan &plan,
-                                        int first, int count, int slot)
-{
-    // the band's tiles a box reaches: listed by the GPU (or every tile by
-    // the host)
-    const auto listing = Clock::now();
-    const sbrt::GpuTileHead head =
-        sbrt::make_gpu_tile_head(tracer_, camera, first, count,
-                                 uint32_t(tracer_.overlay_boxes().size()),
-                                 plan.every_tile ? 0 : 8);
-    const std::vector<uint32_t> words =
-        plan.every_tile ? sbrt::gpu_every_tile_list(head)
-                        : std::vector<uint32_t>(reinterpret_cast<const uint32_t *>(&head),
-                                                reinterpret_cast<const uint32_t *>(&head + 1));
-    const size_t bytes =
-        checked_bytes(size_t(head.words) * 4, max_block_bytes_, "boreholes' tiles");
-    std::optional<GlBuffer> &list = tile_lists_[size_t(slot)];
-    if (!list || list->bytes() < bytes) // room to grow
-        list.emplace(gl_, GL_SHADER_STORAGE_BUFFER, std::min(bytes + bytes / 2, max_block_bytes_));
-    list->write(0, words.data(), words.size() * 4);
-    if (!plan.every_tile) {
-        // no box counted in any tile yet
-        const GLuint zero = 0;
-        const size_t all_tiles = size_t((camera.cols() + 7) / 8) * size_t((count + 7) / 8);
-        gl_.ClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GLintptr(head.counts_at) * 4,
-                               GLsizeiptr(all_tiles) * 4, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                               &zero);
-    }
-    stats_.borehole_list_ms += ms_since(listing);
-    return *list;
-}
-
-void GpuTracer::dispatch_borehole_tiles(const sbrt::Camera &camera, const ShadePlan &plan,
-                                        int first, int count, int slot)
-{
-    const size_t all_tiles = size_t((camera.cols() + 7) / 8) * size_t((count + 7) / 8);
-    stats_.tiles += all_tiles;
-    const GlBuffer &list = borehole_tile_list(camera, plan, first, count, slot);
-    // then the boreholes' pass over them, as many work groups as tiles
-    // listed
-    const auto submit = Clock::now();
-    list.bind(12);
-    if (!plan.every_tile) {
-        // the model pass's farthest t of each tile before the culling
-        // reads them
-        gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        programs_.get(Pass::cull_tiles).use();
-        timer_.time(int(Pass::cull_tiles), [&] {
-            gl_.DispatchCompute(GLuint(tracer_.overlay_boxes().size()), 1, 1);
-        });
-    }
-    // the list and the model pass's hits before the pass reads them (and
-    // the count before it is copied out)
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
-                      GL_BUFFER_UPDATE_BARRIER_BIT);
-    plan.borehole_program->use();
-    timer_.time(int(Pass::shade_boreholes), [&] {
-        if (plan.every_tile) {
-            gl_.DispatchCompute(GLuint(all_tiles), 1, 1);
-            return;
-        }
-        gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list.name());
-        gl_.DispatchComputeIndirect(0);
-    });
-    std::optional<MappedBuffer> &listed = tile_counts_[size_t(slot)];
-    if (!listed)
-        listed.emplace(gl_, sizeof(uint32_t));
-    gl_.BindBuffer(GL_COPY_READ_BUFFER, list.name());
-    gl_.BindBuffer(GL_COPY_WRITE_BUFFER, listed->name());
-    gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, sizeof(uint32_t));
-    stats_.borehole_submit_ms += ms_since(submit);
-}
-
 
 void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_count,
                            const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,

@@ -21,6 +21,7 @@
 #include "gl_objects.hpp"
 #include "gpu_model.hpp"
 #include "gpu_options.hpp"
+#include "gpu_borehole_pass.hpp"
 #include "mapped_bands.hpp"
 #include "program_set.hpp"
 #include "gpu/gpu_layout.hpp"
@@ -255,25 +256,10 @@ private:
         GlComputeProgram *borehole_program = nullptr; ///< none: no boreholes pass
         bool every_tile = false;
     };
-    /// Checks the boreholes' dispatch sizes of bands of `layout` and sets
-    /// the bands' scratch buffers (the hits' distances; none without
-    /// `boreholes`).
-    void set_band_scratch(const sbrt::Camera &camera, const sbrt::GpuBandLayout &layout,
-                          bool boreholes);
     /// Queues rows [first, first + count) of `plan` into MappedBands' slot
     /// `slot`: the model pass, then the boreholes' tiles.
     void dispatch_shading(const sbrt::Camera &camera, ShadePlan &plan, int first, int count,
                           int slot);
-    /// The head (or, every tile, the whole list) of the band's list of
-    /// tiles that the boreholes' pass shades, written into the slot's
-    /// buffer (binding 12 then).
-    GlBuffer &borehole_tile_list(const sbrt::Camera &camera, const ShadePlan &plan, int first,
-                                 int count, int slot);
-    /// The band's tiles culled by the boxes (tile_cull.comp), the
-    /// boreholes' pass over those listed, their count copied out for the
-    /// host.
-    void dispatch_borehole_tiles(const sbrt::Camera &camera, const ShadePlan &plan, int first,
-                                 int count, int slot);
     /// The frame's band layout for `count` rows of `outputs` into `shade`.
     sbrt::GpuBandLayout band_layout(const sbrt::Camera &camera, int count,
                                     const sbrt::Outputs &outputs, sbrt::GpuShade &shade);
@@ -287,6 +273,7 @@ private:
     /// every pass's programs; mutable: the hit records' program is built
     /// when first used
     mutable ProgramSet programs_;
+    BoreholePass boreholes_; ///< boreholes drawn with the model
     GlBuffer view_;
     std::optional<GlBuffer> band_; ///< the hit records of a band of rows
     std::vector<sbrt::GpuPixelHit> records_;
@@ -296,13 +283,6 @@ private:
     std::optional<GlBuffer> view_double_;
     std::optional<GlBuffer> paint_;
     std::string paint_key_;
-    /// the tiles that the boreholes' pass shades, of the band dispatched
-    /// into each of MappedBands' slots (binding 12): written only once the
-    /// GPU is done with the slot
-    std::array<std::optional<GlBuffer>, MappedBands::SLOTS> tile_lists_;
-    /// the count of tiles listed, copied there for the host once the band
-    /// is done (a read of GPU memory would wait for all queued)
-    std::array<std::optional<MappedBuffer>, MappedBands::SLOTS> tile_counts_;
     /// kernel normals: the whole image's hit records and depths, the
     /// kernel's cells and its Kernel block
     std::optional<GlBuffer> image_hits_, depths_, kernel_cells_, kernel_block_,
