@@ -5,7 +5,7 @@
 // pyramid's nodes nearest first, the first cell the beam enters bounds
 // every ray of the tile: none meets anything before. After
 // SBRT_FIRST_PASS_BUDGET nodes opened, the nearest node not yet opened
-// gives the bound. Bounds are in the rays' t (raycast.comp's), pulled back
+// gives the bound. Bounds are in the rays' t (shade.comp's), pulled back
 // well beyond float rounding; inf where the beam meets nothing.
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -101,7 +101,7 @@ void main()
     uint tile_rows = (image_rows + side - 1u) / side;
     if (tile.x >= tile_cols || tile.y >= tile_rows)
         return;
-    // the beam of the tile's corner rays (as raycast.comp makes its rays)
+    // the beam of the tile's corner rays (as trace_pixel makes its rays)
     uint row0 = tile.y * side, col0 = tile.x * side;
     uint row1 = min(row0 + side, image_rows) - 1u, col1 = min(col0 + side, image_cols) - 1u;
     for (int k = 0; k < 4; ++k) {

@@ -1,6 +1,6 @@
 // Image-space kernel normals on the GPU (lib/sbrt/shading/kernel_normals.hpp;
 // the hybrid kernel of Graciano et al. 2018, section 4.1.2), over the hit
-// records of the whole image that raycast.comp wrote (SBRT_KERNEL):
+// records of the whole image that records.comp wrote (SBRT_KERNEL):
 // - the depth pass (SBRT_KERNEL_DEPTH) writes each pixel's view depth;
 // - with smoothing (kernel_counts.w, the Gaussian's radius in pixels), the
 //   normals pass (SBRT_KERNEL_NORMALS) writes each hit's kernel normal and
@@ -31,7 +31,7 @@ bool seen(PixelHit hit)
     return (hit.code & 0xffffu) != 0u && (hit.code & CODE_OVER_BUDGET) == 0u;
 }
 
-// the local direction of the ray of pixel (col, row), as raycast.comp's
+// the local direction of the ray of pixel (col, row), as trace_pixel's
 vec3 pixel_direction(uvec2 pixel, out vec3 start)
 {
     float x = (float(pixel.x) + 0.5) / float(grid.z) * 2.0 - 1.0;
@@ -212,7 +212,7 @@ void shade_pixel()
 
 void main()
 {
-    // every invocation reaches the barrier (raycast.comp's main)
+    // every invocation reaches the barrier (shade.comp's main)
     group_rgb[gl_LocalInvocationIndex] = 0u;
     shade_pixel();
     memoryBarrierShared();

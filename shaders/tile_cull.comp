@@ -1,4 +1,4 @@
-// The tiles of a band that the boreholes' pass draws (raycast.comp with
+// The tiles of a band that the boreholes' pass draws (shade.comp with
 // SBRT_TILE_LIST), listed on the GPU: one work group a box (a borehole's
 // bounds, sbrt::make_gpu_boxes). A tile of 8 x 8 pixels is listed where
 // the convex hull of the box's eight projected corners meets the tile's

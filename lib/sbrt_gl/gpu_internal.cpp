@@ -131,9 +131,11 @@ std::vector<const char *> pass_sources(Pass pass, const ModelForm &form,
             sbrt::shaded_on_gpu(overlays) ? SHADER_COMMON_OVERLAYS : "",
             kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_CLIP,
             kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_WALK,
+            kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_TRACE_PIXEL,
             kernel                     ? SHADER_KERNEL
             : pass == Pass::first_pass ? SHADER_FIRST_PASS
-                                       : SHADER_RAYCAST};
+            : pass == Pass::records    ? SHADER_RECORDS
+                                       : SHADER_SHADE};
 }
 
 

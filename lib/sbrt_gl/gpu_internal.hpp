@@ -38,14 +38,14 @@ bool compact_on_gpu(const sbrt::Model &model);
 
 /// What a program of the GPU path does.
 enum class Pass : int {
-    records,      ///< raycast.comp: hit records
-    shade,        ///< raycast.comp: the shaded outputs (SBRT_SHADE)
+    records,      ///< records.comp: hit records
+    shade,        ///< shade.comp: the shaded outputs (SBRT_SHADE)
     kernel_depth, ///< kernel.comp: the view depths (SBRT_KERNEL_DEPTH)
     kernel_normals, ///< kernel.comp: the kernel normals (SBRT_KERNEL_NORMALS)
     kernel_across,  ///< kernel.comp: their sums along the rows (smoothing)
     kernel_shade, ///< kernel.comp: kernel normals and the shaded outputs
     first_pass,   ///< first_pass.comp: the tiles' first-hit bounds
-    /// raycast.comp: the shaded outputs of the model and its boreholes
+    /// shade.comp: the shaded outputs of the model and its boreholes
     /// over the listed tiles (SBRT_BOREHOLES, SBRT_TILE_LIST); the shade
     /// pass draws the model alone then
     shade_boreholes,

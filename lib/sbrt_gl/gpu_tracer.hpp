@@ -1,7 +1,7 @@
 /****************************************************************************
  * MODULE:    lib/sbrt_gl (r3.sbrt addon)
  * PURPOSE:   First hits of every pixel on the GPU: the model in std430
- *            SSBOs, the compute shader shaders/raycast.comp, bands of rows
+ *            SSBOs, the compute shaders shaders/records.comp and shade.comp, bands of rows
  *            that fit the GPU's buffer limit, and the exact CPU tracer for
  *            the rays the shader flags as over its loop budget
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.

@@ -15,7 +15,9 @@ extern const char *const SHADER_COMMON_RAY;    ///< shaders/common/ray.glsl
 extern const char *const SHADER_COMMON_OVERLAYS; ///< shaders/common/overlays.glsl
 extern const char *const SHADER_COMMON_CLIP;   ///< shaders/common/clip.glsl
 extern const char *const SHADER_COMMON_WALK;   ///< shaders/common/walk.glsl
-extern const char *const SHADER_RAYCAST;       ///< shaders/raycast.comp
+extern const char *const SHADER_COMMON_TRACE_PIXEL; ///< shaders/common/trace_pixel.glsl
+extern const char *const SHADER_RECORDS;       ///< shaders/records.comp
+extern const char *const SHADER_SHADE;         ///< shaders/shade.comp
 extern const char *const SHADER_KERNEL;        ///< shaders/kernel.comp
 extern const char *const SHADER_FIRST_PASS;    ///< shaders/first_pass.comp
 extern const char *const SHADER_TILE_CULL;     ///< shaders/tile_cull.comp

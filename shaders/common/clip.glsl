@@ -1,8 +1,8 @@
-// Where a ray of raycast.comp enters what it draws and where it stops: the
+// Where a ray of common/trace_pixel.glsl enters what it draws and where it stops: the
 // slab clip to the model's box, the clip planes, the eye, the first pass's
 // bound of its tile; in the boreholes' pass (SBRT_TILE_LIST) the span of
 // the ray in its tile's boxes. After common/ray.glsl, before
-// common/walk.glsl and raycast.comp, which call them.
+// common/walk.glsl and common/trace_pixel.glsl, which call them.
 
 // The face a ray enters a cell through when it crosses a wall of `axis`
 // going the way of d

@@ -1,6 +1,6 @@
 // Boreholes and fence curtains on the GPU, as lib/sbrt/tracing/
 // tracer_overlays.cpp meets them, in float; before common/walk.glsl and
-// raycast.comp, which call them:
+// common/trace_pixel.glsl and shade.comp, which call them:
 // - SBRT_OVERLAYS, the model not drawn (boreholes alone, a fence diagram):
 //   every overlay the ray crosses between t_near and t_far, in the order
 //   of their starts, without walking the cells (trace_overlays);
@@ -66,7 +66,7 @@ vec2 ov_from(vec2 c) { return ((ov_hi.xy - c) + ov_lo.xy) * map_unit.xy; }
 vec2 ov_dir() { return ov_d.xy * map_unit.xy; }
 
 // The end of the walk at t kept for the pixel's outputs (keep_pixel):
-// code material | surface << 16, surface as raycast.comp's wall (face |
+// code material | surface << 16, surface as trace_pixel's wall (face |
 // plane << 4), n its normal where it is a cylinder, curtain or split face;
 // code 0 where a veil ends the walk or nothing was met
 void ov_keep(float t, uint code, vec3 n)

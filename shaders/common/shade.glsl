@@ -286,8 +286,8 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
         write_double(band_planes.z + 2u * index, material != 0u ? depth : missing);
 }
 
-// Where the pixel's ray ended, kept by raycast.comp's finish and the
-// overlays' walks and written once after the trace (raycast.comp's
+// Where the pixel's ray ended, kept by the entry file's finish and the
+// overlays' walks and written once after the trace (shade.comp's
 // write_kept_pixel): one copy of the shading in the program. A driver that
 // inlines every call compiles each copy (NVIDIA's took 100 s for the
 // boreholes' program with a copy at each end). Only what the end alone

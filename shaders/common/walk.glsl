@@ -1,10 +1,10 @@
-// The walk of a ray of raycast.comp over the model: a 2D DDA over the
+// The walk of a ray of common/trace_pixel.glsl over the model: a 2D DDA over the
 // cells (wall distances from the cell index, never accumulated), the
 // pyramid's blocks that hold nothing at the ray's height skipped, and in
 // each cell the z-range the ray covers selecting the intervals it crosses
 // (the algorithm of lib/sbrt/tracing/tracer.cpp, in float). After
 // common/clip.glsl (and common/overlays.glsl where boreholes are drawn
-// with the model), before raycast.comp, which calls walk_model.
+// with the model), before common/trace_pixel.glsl, which calls walk_model.
 //
 // llvmpipe silently ends a shader invocation after 65,535 loop iterations
 // and counts every loop a SIMD vector enters, even with all lanes done.

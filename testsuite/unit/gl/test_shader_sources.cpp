@@ -68,7 +68,7 @@ TEST(ShaderSources, TheRaycastProgramsShadeInOnePlace)
     using namespace sbrt_gl;
     const auto program = {SHADER_COMMON_LAYOUT, SHADER_COMMON_SHADE, SHADER_COMMON_RAY,
                           SHADER_COMMON_OVERLAYS, SHADER_COMMON_CLIP, SHADER_COMMON_WALK,
-                          SHADER_RAYCAST};
+                          SHADER_COMMON_TRACE_PIXEL, SHADER_SHADE};
     // the shading: written once, after the trace, from what its end kept
     EXPECT_EQ(calls_of("write_pixel", program), 1);
     EXPECT_EQ(calls_of("write_kept_pixel", program), 1);
