@@ -70,7 +70,8 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
             kernel_across_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * 16);
         }
         // the normals pass reads the faces' normals as shading does
-        bind_shading(sbrt::make_gpu_shade(tracer_, shading, sbrt::Outputs{}), shading);
+        shading_inputs_.bind(sbrt::make_gpu_shade(tracer_, shading, sbrt::Outputs{}), shading,
+                             stats_);
         kernel_normals_->bind(3);
         kernel_across_->bind(6);
         run_pass(Pass::kernel_normals, cols, rows);
@@ -93,7 +94,7 @@ void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int
     view_.upload(&view, sizeof view);
     program.use();
     view_.bind(0);
-    bind_shading(shade, shading);
+    shading_inputs_.bind(shade, shading, stats_);
     kernel_block_->bind(2);
     image_hits_->bind(0);
     depths_->bind(1);

@@ -50,6 +50,7 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
       model_(gl_, tracer, options.layout, max_block_bytes_, options.page_budget_bytes),
       programs_(gl_, tracer, model_, std::move(cache)),
       boreholes_(gl_, tracer, max_block_bytes_),
+      shading_inputs_(gl_, tracer, model_, max_block_bytes_),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
       bands_(gl_, max_block_bytes_, sbrt_gl::staged_bands(options, gl_renderer())), timer_(gl_),
       host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer()))
@@ -231,48 +232,6 @@ GlComputeProgram &GpuTracer::shading_program(const sbrt::Shading &shading, Pass 
     return programs_.get(pass, {draped, painted});
 }
 
-void GpuTracer::bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading)
-{
-    if (!shade_)
-        shade_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuShade));
-    if (shading.drape && shading.drape != drape_on_gpu_) {
-        // a GpuTracer meets one Drape (the module's, or the view server's
-        // until it prepares the scene again: a new GpuTracer)
-        const auto start = Clock::now();
-        const std::vector<uint32_t> words = sbrt::make_gpu_drape(tracer_, *shading.drape);
-        drape_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                       checked_bytes(words.size() * sizeof(uint32_t), max_block_bytes_,
-                                     "drape (surface and texture)"),
-                       words.data());
-        drape_on_gpu_ = shading.drape;
-        stats_.upload_ms += ms_since(start);
-    }
-    if (shading.property || shading.fade) {
-        // the words are made again only where what they show changed
-        std::string key = sbrt::gpu_paint_key(shading);
-        if (!paint_ || key != paint_key_) {
-            const auto start = Clock::now();
-            const std::vector<uint32_t> words = sbrt::make_gpu_paint(tracer_, shading);
-            stats_.paint_ms += ms_since(start);
-            paint_.emplace(gl_, GL_SHADER_STORAGE_BUFFER,
-                           checked_bytes(words.size() * sizeof(uint32_t), max_block_bytes_,
-                                         "colours by voxel"),
-                           words.data());
-            paint_key_ = std::move(key);
-            stats_.upload_ms += ms_since(start);
-        }
-    }
-    shade_->upload(&shade, sizeof shade);
-    shade_->bind(1);
-    model_.bind_looks();
-    if (shading.drape)
-        drape_->bind(7);
-    if (shading.property || shading.fade)
-        paint_->bind(7);
-    if (sbrt::shaded_on_gpu(sbrt::gpu_overlay_mode(tracer_)))
-        model_.bind_overlays();
-}
-
 void GpuTracer::run_pass(Pass pass, int width, int height)
 {
     programs_.get(pass).use();
@@ -323,16 +282,9 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
     }
     plan.view = traced_view(camera, loop_budget_);
     bind_model();
-    bind_shading(shade, shading);
-    if (shading.property || shading.fade) {
-        // the rays in double: a hit near a voxel's edge placed on its face
-        // as the CPU places it (binding 3)
-        const sbrt::GpuViewDouble exact = sbrt::make_gpu_view_double(tracer_, camera);
-        if (!view_double_)
-            view_double_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof exact);
-        view_double_->upload(&exact, sizeof exact);
-        view_double_->bind(3);
-    }
+    shading_inputs_.bind(shade, shading, stats_);
+    if (shading.property || shading.fade)
+        shading_inputs_.bind_double_rays(camera);
     // a scratch buffer for each slot, as a band dispatched ahead writes its
     // own while the band before still reads (binding 13)
     bands_.set_scratch(plan.borehole_program ? boreholes_.scratch_bytes(camera, layout) : 0, 13);

@@ -22,6 +22,7 @@
 #include "gpu_model.hpp"
 #include "gpu_options.hpp"
 #include "gpu_borehole_pass.hpp"
+#include "gpu_shading_inputs.hpp"
 #include "mapped_bands.hpp"
 #include "program_set.hpp"
 #include "gpu/gpu_layout.hpp"
@@ -235,9 +236,6 @@ private:
     /// invocations (pixels of the whole image, or the first pass's tiles),
     /// its buffers bound; a barrier after.
     void run_pass(Pass pass, int width, int height);
-    /// Uploads `shade` and binds it, the looks and the drape (the looks and
-    /// the drape uploaded when first needed).
-    void bind_shading(const sbrt::GpuShade &shade, const sbrt::Shading &shading);
     /// Rows [first, first + count) shaded by the bound program into a
     /// mapped band that `band` views: `dispatch(first, count, slot)` queues
     /// one band's dispatch into MappedBands' slot `slot`; the rays over the loop budget traced and shaded on
@@ -274,15 +272,10 @@ private:
     /// when first used
     mutable ProgramSet programs_;
     BoreholePass boreholes_; ///< boreholes drawn with the model
+    GpuShadingInputs shading_inputs_; ///< the Shade block, a drape, colours by voxel
     GlBuffer view_;
     std::optional<GlBuffer> band_; ///< the hit records of a band of rows
     std::vector<sbrt::GpuPixelHit> records_;
-    /// colours by voxel (a property or a fade): the view's rays in double
-    /// (binding 3), their words (binding 7, as a drape's: a scene has one
-    /// or the other) with their key
-    std::optional<GlBuffer> view_double_;
-    std::optional<GlBuffer> paint_;
-    std::string paint_key_;
     /// kernel normals: the whole image's hit records and depths, the
     /// kernel's cells and its Kernel block
     std::optional<GlBuffer> image_hits_, depths_, kernel_cells_, kernel_block_,
@@ -292,15 +285,11 @@ private:
     std::optional<GlBuffer> tile_starts_;
     sbrt::GpuView first_pass_view_{};
     sbrt::GpuKernel kernel_{};
-    std::optional<GlBuffer> shade_; ///< the Shade block
     MappedBands bands_; ///< where shaded bands land
     PassTimer timer_;
     /// the host's shader of the pixels it traces, kept while the shading
     /// stays as it was
     sbrt::KeptPixelShader host_shader_;
-    /// the drape's surface and texture (binding 7), and whose they are
-    std::optional<GlBuffer> drape_;
-    const sbrt::Drape *drape_on_gpu_ = nullptr;
     mutable GpuStats stats_; ///< mutable: stats() adds the programs' time
     uint32_t loop_budget_;
 };
