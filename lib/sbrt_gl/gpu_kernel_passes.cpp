@@ -8,7 +8,6 @@
 #include "gpu_tracer.hpp"
 
 #include "gpu_internal.hpp"
-#include "shading/kernel_normals.hpp"
 #include "util/error.hpp"
 
 namespace sbrt_gl {
@@ -30,50 +29,28 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     const int rows = camera.rows(), cols = camera.cols();
     const size_t pixels = size_t(rows) * size_t(cols);
     // 1. the hit records of the whole image, kept on the GPU
-    if (!image_hits_ || image_hits_->bytes() < pixels * sizeof(sbrt::GpuPixelHit)) {
-        image_hits_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * sizeof(sbrt::GpuPixelHit));
-        depths_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * sizeof(float));
-    }
     sbrt::GpuView view = traced_view(camera, loop_budget_);
     view.options[2] = 0;
     view.options[3] = uint32_t(rows);
     bind_model();
     view_.upload(&view, sizeof view);
-    image_hits_->bind(2);
+    kernel_buffers_.bind_image_records(pixels);
     const auto start = Clock::now();
     run_pass(Pass::records, cols, rows);
     // a paged model: again once the blocks its rays missed are up
     while (brought_wanted_blocks())
         run_pass(Pass::records, cols, rows);
     // 2. the kernel's cells and camera (and the smoothing's weights)
-    const sbrt::KernelNormals kernel(tracer_, camera, shading.kernel);
-    const std::vector<double> weights =
-        shading.smooth > 0 ? sbrt::gaussian_weights(shading.smooth) : std::vector<double>();
-    kernel_ = sbrt::make_gpu_kernel(tracer_, camera, kernel, weights);
-    const std::vector<float> cells = sbrt::make_gpu_kernel_cells(kernel, weights);
-    kernel_cells_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, cells.size() * sizeof(float),
-                          cells.data());
-    if (!kernel_block_)
-        kernel_block_.emplace(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuKernel));
-    kernel_block_->upload(&kernel_, sizeof kernel_);
+    kernel_buffers_.set_kernel(tracer_, camera, shading, pixels);
     // 3. every pixel's view depth; with smoothing, every hit's kernel
     // normal and their sums along the rows
     view_.bind(0);
-    kernel_block_->bind(2);
-    image_hits_->bind(0);
-    depths_->bind(1);
-    kernel_cells_->bind(4);
+    kernel_buffers_.bind();
     run_pass(Pass::kernel_depth, cols, rows);
-    if (!weights.empty()) {
-        if (!kernel_normals_ || kernel_normals_->bytes() < pixels * 16) {
-            kernel_normals_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * 16);
-            kernel_across_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, pixels * 16);
-        }
+    if (kernel_buffers_.smoothing()) {
         // the normals pass reads the faces' normals as shading does
         shading_inputs_.bind(sbrt::make_gpu_shade(tracer_, shading, sbrt::Outputs{}), shading,
                              stats_);
-        kernel_normals_->bind(3);
-        kernel_across_->bind(6);
         run_pass(Pass::kernel_normals, cols, rows);
         run_pass(Pass::kernel_across, cols, rows);
     }
@@ -95,19 +72,10 @@ void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int
     program.use();
     view_.bind(0);
     shading_inputs_.bind(shade, shading, stats_);
-    kernel_block_->bind(2);
-    image_hits_->bind(0);
-    depths_->bind(1);
-    kernel_cells_->bind(4);
-    if (kernel_.counts[3] > 0) {
-        kernel_normals_->bind(3);
-        kernel_across_->bind(6);
-    }
+    kernel_buffers_.bind();
     shade_band(camera, first_row, row_count, shading, layout, band, cpu_threads,
                [&](int first, int count, int) {
-                   kernel_.counts[1] = uint32_t(first);
-                   kernel_.counts[2] = uint32_t(count);
-                   kernel_block_->upload(&kernel_, sizeof kernel_);
+                   kernel_buffers_.set_rows(first, count);
                    timer_.time(int(Pass::kernel_shade), [&] {
                        gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
                    });

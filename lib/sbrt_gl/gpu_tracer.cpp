@@ -51,7 +51,7 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
       programs_(gl_, tracer, model_, std::move(cache)),
       boreholes_(gl_, tracer, max_block_bytes_),
       shading_inputs_(gl_, tracer, model_, max_block_bytes_),
-      view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)),
+      view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)), kernel_buffers_(gl_),
       bands_(gl_, max_block_bytes_, sbrt_gl::staged_bands(options, gl_renderer())), timer_(gl_),
       host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer()))
 {

@@ -22,6 +22,7 @@
 #include "gpu_model.hpp"
 #include "gpu_options.hpp"
 #include "gpu_borehole_pass.hpp"
+#include "gpu_kernel_buffers.hpp"
 #include "gpu_shading_inputs.hpp"
 #include "mapped_bands.hpp"
 #include "program_set.hpp"
@@ -276,15 +277,11 @@ private:
     GlBuffer view_;
     std::optional<GlBuffer> band_; ///< the hit records of a band of rows
     std::vector<sbrt::GpuPixelHit> records_;
-    /// kernel normals: the whole image's hit records and depths, the
-    /// kernel's cells and its Kernel block
-    std::optional<GlBuffer> image_hits_, depths_, kernel_cells_, kernel_block_,
-        kernel_normals_, kernel_across_;
+    GpuKernelBuffers kernel_buffers_; ///< the kernel normals' passes
     /// the first pass: the tiles' bounds (binding 8) and the view they
     /// are of (rows and budget zeroed)
     std::optional<GlBuffer> tile_starts_;
     sbrt::GpuView first_pass_view_{};
-    sbrt::GpuKernel kernel_{};
     MappedBands bands_; ///< where shaded bands land
     PassTimer timer_;
     /// the host's shader of the pixels it traces, kept while the shading

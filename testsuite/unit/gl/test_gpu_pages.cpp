@@ -138,8 +138,9 @@ TEST_P(GpuPages, HitsOfAPagedModelAreTheWholeModelsBitForBit)
                                                        options(WHOLE_BUDGET));
         EXPECT_GT(without, 0u);
         // 23 of 30 blocks where every stratum shows
-        if (plain)
+        if (plain) {
             EXPECT_LT(with, without);
+        }
         EXPECT_LE(with, without);
         plain = false;
     }
