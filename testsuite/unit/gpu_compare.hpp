@@ -96,6 +96,21 @@ inline std::vector<GpuVariant> gpu_variants()
     return out;
 }
 
+/// \brief A test run on each GL variant of its suite: a context of the
+/// variant's backend made for each test (a failure where none).
+class GpuVariantTest : public ::testing::TestWithParam<GpuVariant> {
+protected:
+    void SetUp() override
+    {
+        context_ = make_context(GetParam().backend);
+        if (!context_)
+            GTEST_FAIL();
+    }
+    GpuLayout layout() const { return GetParam().layout; }
+    sbrt_gl::GpuOptions options() const { return GetParam().options(); }
+    std::unique_ptr<sbrt_gl::GlContext> context_;
+};
+
 /// How GoogleTest prints a variant.
 inline void PrintTo(const GpuVariant &variant, std::ostream *out) { *out << variant.name(); }
 

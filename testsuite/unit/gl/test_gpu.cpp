@@ -42,18 +42,7 @@ namespace {
 
 /// Each test runs on every GL backend and in both GPU memory layouts, and
 /// on EGL with a GPU's branches (gpu_variants).
-class Gpu : public ::testing::TestWithParam<GpuVariant> {
-protected:
-    void SetUp() override
-    {
-        context_ = make_context(GetParam().backend);
-        if (!context_)
-            GTEST_FAIL();
-    }
-    GpuLayout layout() const { return GetParam().layout; }
-    sbrt_gl::GpuOptions options() const { return GetParam().options(); }
-    std::unique_ptr<sbrt_gl::GlContext> context_;
-};
+class Gpu : public GpuVariantTest {};
 
 INSTANTIATE_TEST_SUITE_P(Backends, Gpu, ::testing::ValuesIn(gpu_variants()), variant_name);
 

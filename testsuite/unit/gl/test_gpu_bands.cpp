@@ -96,17 +96,7 @@ TEST(GpuOptions, TheBandsComeFromTheEnvironmentWhereSet)
         unsetenv("SBRT_GPU_BANDS");
 }
 
-class GpuBands : public ::testing::TestWithParam<GpuVariant> {
-protected:
-    void SetUp() override
-    {
-        context_ = make_context(GetParam().backend);
-        if (!context_)
-            GTEST_FAIL();
-    }
-    sbrt_gl::GpuOptions options() const { return GetParam().options(); }
-    std::unique_ptr<sbrt_gl::GlContext> context_;
-};
+class GpuBands : public GpuVariantTest {};
 
 std::vector<GpuVariant> band_variants()
 {

@@ -22,22 +22,15 @@ using namespace sbrt_test;
 
 namespace {
 
-class GpuPages : public ::testing::TestWithParam<GpuVariant> {
+class GpuPages : public GpuVariantTest {
 protected:
-    void SetUp() override
-    {
-        context_ = make_context(GetParam().backend);
-        if (!context_)
-            GTEST_FAIL();
-    }
-    /// The variant's options with an atlas of `budget` bytes.
+    /// The variant's options with `budget` bytes of GPU memory.
     sbrt_gl::GpuOptions options(uint64_t budget) const
     {
         sbrt_gl::GpuOptions o = GetParam().options();
         o.page_budget_bytes = budget;
         return o;
     }
-    std::unique_ptr<sbrt_gl::GlContext> context_;
 };
 
 /// EGL as the GL calls for, then a GPU's branches: bands staged, no loop

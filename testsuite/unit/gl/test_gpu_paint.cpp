@@ -71,16 +71,7 @@ ColorRamp ramp()
 
 /// EGL in both layouts, and with a GPU's branches (staged bands, no loop
 /// budget).
-class GpuPaint : public ::testing::TestWithParam<GpuVariant> {
-protected:
-    void SetUp() override
-    {
-        context_ = make_context(GetParam().backend);
-        if (!context_)
-            GTEST_FAIL();
-    }
-    std::unique_ptr<sbrt_gl::GlContext> context_;
-};
+class GpuPaint : public GpuVariantTest {};
 
 INSTANTIATE_TEST_SUITE_P(
     Layouts, GpuPaint,
