@@ -11,7 +11,7 @@ PURPOSE:   The view server's figures of issue 49 (r3.sbrt.render --serve,
            pass/fail.
 USAGE:     server_frames.py SBRT [WIDTH HEIGHT [ORBIT_WIDTH ORBIT_HEIGHT [FRAMES]]]
            (800 600 400 300 12); SBRT_MEMORY=MB adds memory=MB to every
-           request
+           request, SBRT_SERVER_WORDS="word..." those words (backend=egl)
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import json
@@ -45,6 +45,8 @@ def main():
     width, height, orbit_width, orbit_height, frames = (
         numbers + [800, 600, 400, 300, 12][len(numbers):])
     budget = ["memory=" + os.environ["SBRT_MEMORY"]] if os.environ.get("SBRT_MEMORY") else []
+    # e.g. SBRT_SERVER_WORDS="backend=egl": the GPU's frames
+    budget += os.environ.get("SBRT_SERVER_WORDS", "").split()
     server = ViewServer()
     figures = {"sbrt": sbrt, "size": [width, height], "orbit_size": [orbit_width, orbit_height]}
     try:
