@@ -20,7 +20,7 @@ bool GpuTracer::kernel_fits(const sbrt::Camera &camera) const
            pixels * sizeof(sbrt::GpuPixelHit) <= max_block_bytes_;
 }
 
-void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading)
+bool GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading)
 {
     if (!kernel_fits(camera))
         sbrt::fail("kernel normals on the GPU: the image's hit records do not fit one "
@@ -36,10 +36,14 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     view_.upload(&view, sizeof view);
     kernel_buffers_.bind_image_records(pixels);
     const auto start = Clock::now();
+    const GpuPageAtlas *pages = model_.pages();
+    const uint64_t no_room = pages ? pages->figures().not_placed : 0;
     run_pass(Pass::records, cols, rows);
     // a paged model: again once the blocks its rays missed are up
     while (brought_wanted_blocks())
         run_pass(Pass::records, cols, rows);
+    if (pages && pages->figures().not_placed != no_room)
+        return false; // rays that met a block with no room show nothing
     // 2. the kernel's cells and camera (and the smoothing's weights)
     kernel_buffers_.set_kernel(tracer_, camera, shading, pixels);
     // 3. every pixel's view depth; with smoothing, every hit's kernel
@@ -57,6 +61,7 @@ void GpuTracer::prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &
     gl_.Finish();
     check_gl(gl_, "the kernel normals' trace, depth and smoothing passes");
     stats_.trace_ms += ms_since(start);
+    return true;
 }
 
 void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int row_count,
@@ -79,7 +84,8 @@ void GpuTracer::shade_kernel_rows(const sbrt::Camera &camera, int first_row, int
                    timer_.time(int(Pass::kernel_shade), [&] {
                        gl_.DispatchCompute(GLuint((cols + 7) / 8), GLuint((count + 7) / 8), 1);
                    });
-               });
+               },
+               false); // the kernel's shading reads the records, not the model
 }
 
 } // namespace sbrt_gl

@@ -101,6 +101,9 @@ void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes)
         column_tops_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, size_t(tops_bytes), records);
         budget_bytes -= tops_bytes;
     }
+    if (atlas_words(budget_bytes, max_block_bytes_) == 0)
+        sbrt::fail("gpu_memory leaves no room for the model's blocks beside its empty-space "
+                   "pyramid and page table: give more, or render with backend=cpu");
     pages_.emplace(gl_, pages, compact, budget_bytes, max_block_bytes_, 0);
     memory_.index_bytes = table_bytes;
     memory_.interval_bytes = pages_->atlas_bytes() + (column_tops_ ? column_tops_->bytes() : 0);

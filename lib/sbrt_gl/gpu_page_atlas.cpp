@@ -59,6 +59,8 @@ void GpuPageAtlas::bind() const
 void GpuPageAtlas::begin_frame()
 {
     residency_.begin_frame();
+    // after the last frame's marks were set
+    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const GLuint zero = 0;
     gl_.BindBuffer(GL_SHADER_STORAGE_BUFFER, marks_.name());
     gl_.ClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, 0, GLsizeiptr(marks_.bytes()),
@@ -85,8 +87,9 @@ int GpuPageAtlas::bring_wanted()
         if (b < pages_.block_count())
             residency_.mark_read(b);
     std::vector<int> wanted;
+    // (a block that found no room in this frame is not decoded again)
     for (int b : marked(marks, 0))
-        if (b < pages_.block_count() && !residency_.holds(b))
+        if (b < pages_.block_count() && !residency_.holds(b) && !residency_.found_no_room(b))
             wanted.push_back(b);
     return wanted.empty() ? 0 : upload(wanted);
 }
@@ -100,11 +103,9 @@ int GpuPageAtlas::upload(const std::vector<int> &wanted)
 {
     const auto start = Clock::now();
     int placed = 0;
-    bool full = false; // a block found no room: the rest are not decoded
-    size_t done = 0;   // blocks decoded
+    bool full = false; // a block found no room: the later chunks are not decoded
     for (size_t first = 0; first < wanted.size() && !full; first += UPLOAD_CHUNK) {
         const size_t count = std::min(UPLOAD_CHUNK, wanted.size() - first);
-        done += count;
         std::vector<std::vector<uint32_t>> words(count);
         sbrt::for_each_row(0, int(count), threads_, [&](int k) {
             const std::shared_ptr<const sbrt::StackBlock> block =
@@ -120,7 +121,7 @@ int GpuPageAtlas::upload(const std::vector<int> &wanted)
             figures_.dropped += dropped.size();
             if (!base) {
                 ++figures_.not_placed;
-                full = true;
+                full = true; // the rest wait for another band's call
                 continue;
             }
             atlas_.write(size_t(*base) * 4, words[k].data(), words[k].size() * 4);
@@ -130,8 +131,6 @@ int GpuPageAtlas::upload(const std::vector<int> &wanted)
             figures_.upload_bytes += words[k].size() * 4;
         }
     }
-    // the chunks not decoded: no room for them either
-    figures_.not_placed += wanted.size() - done;
     check_gl(gl_, "bringing the model's blocks up to the GPU");
     figures_.upload_ms += ms_since(start);
     return placed;

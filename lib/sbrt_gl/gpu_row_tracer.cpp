@@ -67,8 +67,12 @@ void GpuRowTracer::trace_rows(int first, int count, sbrt::Hit *out)
 
 bool GpuRowTracer::shades_kernel_normals() const
 {
-    return shading_ && shading_->normals == sbrt::Normals::kernel && gpu_.kernel_fits(camera_) &&
-           !any_cpu_pixels();
+    if (!(shading_ && shading_->normals == sbrt::Normals::kernel && gpu_.kernel_fits(camera_) &&
+          !any_cpu_pixels()))
+        return false;
+    if (!kernel_prepared_)
+        kernel_prepared_ = gpu_.prepare_kernel(camera_, *shading_);
+    return *kernel_prepared_;
 }
 
 int GpuRowTracer::preferred_band_rows(int cols) const
@@ -89,9 +93,6 @@ bool GpuRowTracer::shade_rows(int first, int count, const sbrt::Outputs &outputs
     if (shading_->normals == sbrt::Normals::kernel) {
         if (!shades_kernel_normals())
             return false;
-        if (!kernel_prepared_)
-            gpu_.prepare_kernel(camera_, *shading_);
-        kernel_prepared_ = true;
         gpu_.shade_kernel_rows(camera_, first, count, *shading_, outputs, band, threads_);
         return true;
     }

@@ -37,9 +37,12 @@ public:
     /// With `shading` the GPU shades too (and finds kernel normals where
     /// shades_kernel_normals says).
     void shade_on_gpu(const sbrt::Shading *shading) { shading_ = shading; }
-    /// Kernel normals on the GPU: where it shades, the image fits and no
+    /// Kernel normals on the GPU: where it shades, the image fits, no
     /// borehole's pixels come from the CPU (their kernels read the GPU's
-    /// depths).
+    /// depths) and, for a model read block by block, the image's hit
+    /// records (traced when first asked: GpuTracer::prepare_kernel) met
+    /// every block on the GPU: a ray sent back shows nothing to its
+    /// neighbours' kernels.
     bool shades_kernel_normals() const override;
     /// Bands of a million pixels or more: enough rays to fill a GPU.
     int preferred_band_rows(int cols) const override;
@@ -67,7 +70,8 @@ private:
     const sbrt::Camera &camera_;
     unsigned threads_;
     const sbrt::Shading *shading_ = nullptr;
-    bool kernel_prepared_ = false; ///< this camera's hit records are on the GPU
+    /// whether this camera's hit records are on the GPU, and complete
+    mutable std::optional<bool> kernel_prepared_;
     mutable bool cpu_rects_found_ = false;
     mutable std::optional<std::vector<sbrt::PixelRect>> cpu_rects_;
 };

@@ -323,7 +323,8 @@ void GpuTracer::dispatch_shading(const sbrt::Camera &camera, ShadePlan &plan, in
 void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_count,
                            const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,
                            sbrt::Band &band, unsigned cpu_threads,
-                           const std::function<void(int, int, int)> &dispatch)
+                           const std::function<void(int, int, int)> &dispatch,
+                           bool reads_model)
 {
     bands_.reset_gpu_ms();
     uint8_t *host = bands_.band(first_row, row_count, camera.rows(), dispatch);
@@ -334,7 +335,7 @@ void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_co
         std::memcpy(&over, host + layout.over_budget_at * 4, 4);
         return over;
     };
-    while (model_.pages() && sent_back() > 0 && brought_wanted_blocks())
+    while (reads_model && model_.pages() && sent_back() > 0 && brought_wanted_blocks())
         host = bands_.redo(dispatch);
     stats_.trace_ms += bands_.gpu_ms();
     ++stats_.bands;

@@ -142,8 +142,10 @@ public:
     /// (not for boreholes and curtains alone).
     bool kernel_fits(const sbrt::Camera &camera) const;
     /// Kernel normals on the GPU, first for a camera: traces the hit records
-    /// of its whole image and their view depths, kept on the GPU.
-    void prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading);
+    /// of its whole image and their view depths, kept on the GPU. False
+    /// where a paged model's blocks found no room in the atlas: records are
+    /// missing, and the kernel normals must be found on the host.
+    bool prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading);
     /// Then rows [first, first + count): kernel normals (shading.kernel,
     /// smoothed by shading.smooth) from the depths, shaded as shade_rows
     /// does.
@@ -239,12 +241,14 @@ private:
     void run_pass(Pass pass, int width, int height);
     /// Rows [first, first + count) shaded by the bound program into a
     /// mapped band that `band` views: `dispatch(first, count, slot)` queues
-    /// one band's dispatch into MappedBands' slot `slot`; the rays over the loop budget traced and shaded on
-    /// the host.
+    /// one band's dispatch into MappedBands' slot `slot`; where the program
+    /// `reads_model` (paged), again once the blocks its rays missed are up;
+    /// the rays over the loop budget traced and shaded on the host.
     void shade_band(const sbrt::Camera &camera, int first, int count,
                     const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,
                     sbrt::Band &band, unsigned cpu_threads,
-                    const std::function<void(int, int, int)> &dispatch);
+                    const std::function<void(int, int, int)> &dispatch,
+                    bool reads_model = true);
     /// What shade_rows settles for a frame: the view block (each band's
     /// rows set as it is dispatched), the model pass's program, and with
     /// boreholes drawn with the model their pass's and whether every tile

@@ -100,25 +100,27 @@ PageResidency::PageResidency(int blocks, uint64_t atlas_words)
 {
 }
 
-void PageResidency::mark_read(int b)
+void PageResidency::use(int b)
 {
     Slot &slot = slots_[size_t(b)];
-    if (slot.base == GPU_PAGE_MISSING || slot.used == frame_)
+    if (slot.used == frame_)
         return;
-    // its place among the held by use
-    auto range = by_use_.equal_range(slot.used);
-    for (auto it = range.first; it != range.second; ++it)
-        if (it->second == b) {
-            by_use_.erase(it);
-            break;
-        }
+    by_use_.erase(slot.at);
     slot.used = frame_;
-    by_use_.emplace(frame_, b);
+    slot.at = by_use_.emplace(frame_, b);
+    frame_words_ += slot.words;
+}
+
+void PageResidency::mark_read(int b)
+{
+    if (holds(b))
+        use(b);
 }
 
 void PageResidency::drop(int b)
 {
     Slot &slot = slots_[size_t(b)];
+    by_use_.erase(slot.at);
     space_.give_back(slot.base, slot.words);
     slot.base = GPU_PAGE_MISSING;
     --held_;
@@ -128,22 +130,26 @@ std::optional<uint32_t> PageResidency::place(int b, uint64_t words, std::vector<
 {
     if (holds(b))
         return base(b);
-    std::optional<uint64_t> at = space_.take(words);
-    // the least recently used go first, never this frame's
-    while (!at && !by_use_.empty() && by_use_.begin()->first < frame_) {
-        const int old = by_use_.begin()->second;
-        by_use_.erase(by_use_.begin());
-        drop(old);
-        dropped.push_back(old);
-        at = space_.take(words);
-    }
-    if (!at)
-        return std::nullopt;
     Slot &slot = slots_[size_t(b)];
+    std::optional<uint64_t> at = space_.take(words);
+    // the least recently used go first, never this frame's; none where
+    // all of them would not make room
+    if (!at && space_.free_words() + (held_words() - frame_words_) >= words)
+        while (!at && !by_use_.empty() && by_use_.begin()->first < frame_) {
+            const int old = by_use_.begin()->second;
+            drop(old);
+            dropped.push_back(old);
+            at = space_.take(words);
+        }
+    if (!at) {
+        slot.no_room = frame_;
+        return std::nullopt;
+    }
     slot.base = uint32_t(*at);
     slot.words = words;
     slot.used = frame_;
-    by_use_.emplace(frame_, b);
+    slot.at = by_use_.emplace(frame_, b);
+    frame_words_ += words;
     ++held_;
     return slot.base;
 }

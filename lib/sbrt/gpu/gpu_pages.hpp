@@ -73,13 +73,21 @@ public:
     PageResidency(int blocks, uint64_t atlas_words);
 
     /// A new frame: the blocks of the last may go again.
-    void begin_frame() { ++frame_; }
+    void begin_frame()
+    {
+        ++frame_;
+        frame_words_ = 0;
+    }
     /// Block b was read in this frame (its bit among the marks read).
     void mark_read(int b);
     /// Room for block b of `words` words, made by dropping blocks not used
     /// in this frame (listed in `dropped`); its base word, or nothing
-    /// where even that leaves too little room (it stays missing).
+    /// where even that leaves too little room (it stays missing, and no
+    /// block is dropped where their words together would not make room).
     std::optional<uint32_t> place(int b, uint64_t words, std::vector<int> &dropped);
+    /// Whether block b found no room in this frame (its place is not
+    /// sought again before the next).
+    bool found_no_room(int b) const { return slots_[size_t(b)].no_room == frame_; }
 
     /// Block b's base word in the atlas, or GPU_PAGE_MISSING.
     uint32_t base(int b) const { return slots_[size_t(b)].base; }
@@ -89,19 +97,25 @@ public:
     uint64_t atlas_words() const { return space_.words(); }
 
 private:
+    using ByUse = std::multimap<uint64_t, int>;
     struct Slot {
         uint32_t base = GPU_PAGE_MISSING;
         uint64_t words = 0;
-        uint64_t used = 0; ///< the frame it was last used in
+        uint64_t used = 0;    ///< the frame it was last used in
+        uint64_t no_room = 0; ///< the frame it last found no room in
+        ByUse::iterator at; ///< its place in by_use_, where held
     };
+    /// Held block b used in this frame: its place among the held by use.
+    void use(int b);
     void drop(int b);
 
     AtlasSpace space_;
     std::vector<Slot> slots_;
     /// held blocks by the frame they were last used in (oldest first)
-    std::multimap<uint64_t, int> by_use_;
+    ByUse by_use_;
     uint64_t frame_ = 1;
     int held_ = 0;
+    uint64_t frame_words_ = 0; ///< words of the blocks this frame used
 };
 
 } // namespace sbrt

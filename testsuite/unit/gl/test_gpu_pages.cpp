@@ -191,6 +191,21 @@ TEST_P(GpuPages, AnAtlasOfAFewBlocksHoldsItsBudgetAndTheFrameStaysExact)
     }
     // views that want more blocks than the atlas holds: the rest on the host
     EXPECT_GT(sent_to_host, 0u);
+    // kernel normals: records sent back would show nothing to their
+    // neighbours' kernels, so the host finds the normals from the GPU's hits
+    Shading kernel;
+    kernel.normals = Normals::kernel;
+    const Renderer kernel_paged(c.paged(WHOLE_BUDGET), 1.5, Scene{}, kernel, {2, true, 8});
+    sbrt_gl::GpuRenderer kernel_on_pages(*context_, kernel_paged, options(budget));
+    int on_host = 0;
+    for (const Camera &camera : cameras(paged.tracer(), 43, 39)) {
+        Image got = empty_image(camera, all);
+        const sbrt_gl::GpuFrameReport r = kernel_on_pages.render(
+            camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
+        on_host += r.shaded_on_gpu ? 0 : 1;
+        expect_images_agree(kernel_paged.render_image(camera, all), got, tolerance, "kernel");
+    }
+    EXPECT_GT(on_host, 0);
     EXPECT_GT(atlas.figures().dropped + atlas.figures().not_placed, 0u);
     // records too (kernel normals and the hits' path)
     const Tracer &t = paged.tracer();

@@ -132,3 +132,24 @@ TEST(GpuPages, AFullAtlasDropsTheLeastRecentlyUsedNeverTheFramesOwn)
     r.begin_frame();
     EXPECT_FALSE(r.place(0, 42, dropped));
 }
+
+TEST(GpuPages, ABlockNoDroppingCouldMakeRoomForDropsNone)
+{
+    PageResidency r(4, 40);
+    std::vector<int> dropped;
+    EXPECT_TRUE(r.place(0, 10, dropped));
+    EXPECT_TRUE(r.place(1, 10, dropped));
+    r.begin_frame();
+    r.mark_read(0);
+    // 20 free and 10 that may go: 32 words cannot be made room for
+    EXPECT_FALSE(r.place(2, 32, dropped));
+    EXPECT_TRUE(dropped.empty());
+    EXPECT_TRUE(r.holds(1));
+    EXPECT_TRUE(r.found_no_room(2));
+    // 30 can: block 1 goes, next to the free words
+    EXPECT_TRUE(r.place(3, 30, dropped));
+    EXPECT_EQ(dropped, (std::vector<int>{1}));
+    // the next frame seeks room for block 2 again
+    r.begin_frame();
+    EXPECT_FALSE(r.found_no_room(2));
+}
