@@ -33,8 +33,8 @@ struct ColumnReading {
 /// SBRT `name` for reading the columns under map points `points` (x, y).
 /// A format 2.1 SBRT without property channels is paged: a column's block
 /// is decoded when it is read (Model::visit_stack), and the blocks held
-/// and this process stay within memory= (a fatal error says the least that
-/// works). Others are read with the points' stacks alone, decoded from the
+/// and this process stay within memory= (else sbrt::Error, thrown by
+/// fail_with, says the least that works). Others are read with the points' stacks alone, decoded from the
 /// blocks that hold them.
 sbrt::Model read_sbrt_columns(const char *name, const std::vector<std::array<double, 2>> &points,
                               const ColumnReading &reading);

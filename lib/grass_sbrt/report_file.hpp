@@ -25,8 +25,9 @@ public:
     ReportFile &operator=(const ReportFile &) = delete;
 
     FILE *get() const { return file_ ? file_ : stdout; }
-    /// Flushes, checks and renames the file into place; a fatal error
-    /// (naming output=) where writing failed.
+    /// Flushes, checks and renames the file into place; throws
+    /// sbrt::Error naming output= where writing failed (fail_with: the
+    /// module's run_reporting_errors ends with it).
     void commit();
 
 private:
