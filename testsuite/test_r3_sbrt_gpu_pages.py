@@ -95,6 +95,26 @@ class TestGpuPages(TestCase):
         self.assertLessEqual(self.differing_cells("gp_small_m", "gp_cpu_m"), 120 * 90 // 1000)
         self.assertRastersNoDifference("gp_small_d", "gp_cpu_d", precision=0.01)
 
+    def test_a_damaged_block_met_on_the_gpu_is_a_clear_error(self):
+        """A block decoded as the GPU's rays want it (on the module's
+        threads) and found damaged: an error naming it, no map."""
+        shutil.copytree(sbrt_dir("paged"), sbrt_dir("damaged"))
+        self.addCleanup(shutil.rmtree, sbrt_dir("damaged"), True)
+        stacks = os.path.join(sbrt_dir("damaged"), "stacks")
+        with open(stacks, "r+b") as f:
+            data = bytearray(f.read())
+            for k in range(2000, 2400):  # in the first blocks' bytes
+                data[k] ^= 0x5A
+            f.seek(0)
+            f.write(data)
+        run = subprocess.run(
+            ["r3.sbrt.render", "input=damaged", "output=gp_damaged", "size=120,90",
+             "backend=egl"], capture_output=True, text=True, timeout=120)
+        self.assertEqual(run.returncode, 1, run.stderr)
+        self.assertRegex(" ".join(run.stderr.split()), r"stacks block \d+: checksum mismatch")
+        self.assertRasterDoesNotExist("gp_damaged.red")
+        self.assertRasterDoesNotExist("gp_damaged")
+
     def test_gpu_memory_out_of_range_is_a_clear_error(self):
         run = subprocess.run(
             ["r3.sbrt.render", "input=paged", "output=gp_bad", "size=40,30", "backend=egl",
