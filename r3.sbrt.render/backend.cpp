@@ -156,8 +156,9 @@ std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &reque
 }
 
 Backend::Backend(const RenderRequest &request, const sbrt::Renderer &renderer,
-                 sbrt_gl::GlContext *context)
-    : request_(request), renderer_(renderer), context_(context)
+                 sbrt_gl::GlContext *context,
+                 std::shared_ptr<sbrt_gl::GpuPageAtlas> *kept_atlas)
+    : request_(request), renderer_(renderer), context_(context), kept_atlas_(kept_atlas)
 {
 }
 
@@ -170,6 +171,7 @@ void Backend::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,
             sbrt_gl::GpuOptions options =
                 sbrt_gl::GpuOptions::from_environment(sbrt::parse_gpu_layout(request_.gpu_layout));
             options.page_budget_bytes = request_.gpu_memory_bytes;
+            options.kept_atlas = kept_atlas_;
             gpu_.emplace(*context_, renderer_, options);
         }
         catch (const sbrt::Error &e) {

@@ -28,8 +28,11 @@ std::unique_ptr<sbrt_gl::GlContext> choose_gl_context(const RenderRequest &reque
 /// the model.
 class Backend {
 public:
+    /// `kept_atlas`: where a paged model's blocks on the GPU are kept
+    /// between scenes (GpuOptions::kept_atlas), or null.
     Backend(const RenderRequest &request, const sbrt::Renderer &renderer,
-            sbrt_gl::GlContext *context);
+            sbrt_gl::GlContext *context,
+            std::shared_ptr<sbrt_gl::GpuPageAtlas> *kept_atlas = nullptr);
     Backend(const Backend &) = delete;
     Backend &operator=(const Backend &) = delete;
 
@@ -41,6 +44,7 @@ private:
     const RenderRequest &request_;
     const sbrt::Renderer &renderer_;
     sbrt_gl::GlContext *context_;
+    std::shared_ptr<sbrt_gl::GpuPageAtlas> *kept_atlas_;
     bool tried_gpu_ = false;
     int frames_ = 0; ///< rendered on the GPU
     std::optional<sbrt_gl::GpuRenderer> gpu_; ///< the scene, its model on the GPU

@@ -273,7 +273,8 @@ void RenderSession::prepare_scene_for(const RenderRequest &request, const sbrt::
             for (Level &level : levels_) // their backends use the context
                 if (&level != at_)
                     drop_scene(level);
-            context_.reset(); // before another on the same display
+            kept_atlas_.reset(); // its GL objects are the context's
+            context_.reset();    // before another on the same display
             context_key_.clear();
             context_ = choose_gl_context(request);
             context_key_ = context;
@@ -359,7 +360,8 @@ void RenderSession::build_renderer(sbrt::Model model, sbrt::Scene scene)
         std::move(model), at_->request->zexag, std::move(scene),
         make_shading(*at_->request, at_->drape.get(), at_->property.get(), at_->fade.get()),
         sbrt::RenderSettings{unsigned(at_->request->threads), true, 0});
-    at_->backend = std::make_unique<Backend>(*at_->request, *at_->renderer, context_.get());
+    at_->backend =
+        std::make_unique<Backend>(*at_->request, *at_->renderer, context_.get(), &kept_atlas_);
 }
 
 void RenderSession::render(const sbrt::Camera &camera, const sbrt::Outputs &outputs,

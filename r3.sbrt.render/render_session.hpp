@@ -132,6 +132,10 @@ private:
 
     std::string context_key_;
     std::unique_ptr<sbrt_gl::GlContext> context_;
+    /// a paged model's blocks on the GPU, kept from one scene to the next
+    /// (a stratum hidden draws from the blocks already up); after the
+    /// context, whose GL objects they are
+    std::shared_ptr<sbrt_gl::GpuPageAtlas> kept_atlas_;
     /// exact, coarse; after the context (their backends use it)
     Level levels_[2];
     Level *at_ = &levels_[0]; ///< the level drawn

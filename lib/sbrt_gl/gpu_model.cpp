@@ -59,7 +59,8 @@ GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 } // namespace
 
 GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout layout,
-                   size_t max_block_bytes, uint64_t page_budget_bytes)
+                   size_t max_block_bytes, uint64_t page_budget_bytes,
+                   std::shared_ptr<GpuPageAtlas> *kept_atlas)
     : gl_(gl), tracer_(tracer), max_block_bytes_(max_block_bytes), layout_(layout),
       materials_(material_buffer(gl, tracer)),
       pyramid_(pyramid_buffer(gl, tracer.pyramid(), max_block_bytes,
@@ -68,7 +69,7 @@ GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout 
     if (&tracer.model_pyramid() != &tracer.pyramid())
         model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
     if (tracer.model().is_paged())
-        open_pages(tracer.model(), page_budget_bytes);
+        open_pages(tracer.model(), page_budget_bytes, kept_atlas);
     else {
         memory_ = sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl));
         upload_stacks(tracer.model());
@@ -77,7 +78,8 @@ GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout 
     check_gl(gl_, "uploading the model");
 }
 
-void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes)
+void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes,
+                          std::shared_ptr<GpuPageAtlas> *kept_atlas)
 {
     if (layout_ != sbrt::GpuLayout::ssbo)
         sbrt::fail("a model read block by block goes to the GPU in layout=ssbo only");
@@ -104,7 +106,17 @@ void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes)
     if (atlas_words(budget_bytes, max_block_bytes_) == 0)
         sbrt::fail("gpu_memory leaves no room for the model's blocks beside its empty-space "
                    "pyramid and page table: give more, or render with backend=cpu");
-    pages_.emplace(gl_, pages, compact, budget_bytes, max_block_bytes_, 0);
+    // the atlas of another scene of this model, its blocks up, where kept
+    if (kept_atlas && *kept_atlas && (*kept_atlas)->serves(pages, compact, budget_bytes,
+                                                           max_block_bytes_)) {
+        pages_ = *kept_atlas;
+        pages_->begin_frame();
+    }
+    else
+        pages_ = std::make_shared<GpuPageAtlas>(gl_, model.shared_pages(), compact, budget_bytes,
+                                                max_block_bytes_, 0);
+    if (kept_atlas)
+        *kept_atlas = pages_;
     memory_.index_bytes = table_bytes;
     memory_.interval_bytes = pages_->atlas_bytes() + (column_tops_ ? column_tops_->bytes() : 0);
 }

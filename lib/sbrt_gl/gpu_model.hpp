@@ -45,7 +45,8 @@ public:
     /// `max_block_bytes`: the GPU's largest storage buffer binding (an
     /// error names what exceeds it).
     GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout layout,
-             size_t max_block_bytes, uint64_t page_budget_bytes = DEFAULT_PAGE_BUDGET);
+             size_t max_block_bytes, uint64_t page_budget_bytes = DEFAULT_PAGE_BUDGET,
+             std::shared_ptr<GpuPageAtlas> *kept_atlas = nullptr);
     GpuModel(const GpuModel &) = delete;
     GpuModel &operator=(const GpuModel &) = delete;
 
@@ -63,10 +64,10 @@ public:
 
     sbrt::GpuLayout layout() const { return layout_; }
     /// How its programs read it.
-    ModelForm form() const { return {layout_, pages_.has_value(), column_tops_.has_value()}; }
+    ModelForm form() const { return {layout_, pages_ != nullptr, column_tops_.has_value()}; }
     /// A paged model's atlas; null where the model is up whole.
-    GpuPageAtlas *pages() { return pages_ ? &*pages_ : nullptr; }
-    const GpuPageAtlas *pages() const { return pages_ ? &*pages_ : nullptr; }
+    GpuPageAtlas *pages() { return pages_.get(); }
+    const GpuPageAtlas *pages() const { return pages_.get(); }
     /// What the model takes on the GPU in its layout.
     const sbrt::GpuMemory &memory() const { return memory_; }
     /// Bytes of the empty-space pyramid.
@@ -75,7 +76,8 @@ public:
 private:
     void upload_stacks(const sbrt::Model &model);
     /// The atlas of a paged model, refused where it cannot be paged.
-    void open_pages(const sbrt::Model &model, uint64_t budget_bytes);
+    void open_pages(const sbrt::Model &model, uint64_t budget_bytes,
+                    std::shared_ptr<GpuPageAtlas> *kept_atlas);
     void upload_overlays();
 
     const GlApi &gl_;
@@ -83,7 +85,7 @@ private:
     size_t max_block_bytes_;
     sbrt::GpuLayout layout_;
     sbrt::GpuMemory memory_;
-    std::optional<GpuPageAtlas> pages_; ///< a paged model's blocks
+    std::shared_ptr<GpuPageAtlas> pages_; ///< a paged model's blocks
     /// ...and each column's top interval (binding 15), where it has them
     std::optional<GlBuffer> column_tops_;
     /// the stacks: group offsets, stack counts, intervals (ssbo), or the

@@ -10,6 +10,7 @@
 #define SBRT_GL_GPU_OPTIONS_HPP
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -17,6 +18,8 @@
 #include "gpu/gpu_memory_layout.hpp"
 
 namespace sbrt_gl {
+
+class GpuPageAtlas;
 
 /// Where the shading pass writes a band (MappedBands).
 enum class BandStaging {
@@ -46,6 +49,10 @@ struct GpuOptions {
     /// at most half of what is left) and the atlas of the blocks its rays
     /// reach (GpuPageAtlas, within the GPU's largest storage buffer).
     uint64_t page_budget_bytes = DEFAULT_PAGE_BUDGET;
+    /// Where a paged model's atlas is kept between the tracers of its
+    /// scenes (a view server's: a stratum hidden keeps the blocks up),
+    /// taken over where it serves the model; null: each tracer its own.
+    std::shared_ptr<GpuPageAtlas> *kept_atlas = nullptr;
 
     /// The defaults in `layout`, the bands as SBRT_GPU_BANDS says where it
     /// is set ("staged" or "direct": measurements, device_run.sh); the one

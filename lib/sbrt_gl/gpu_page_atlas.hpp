@@ -10,6 +10,7 @@
 #define SBRT_GL_GPU_PAGE_ATLAS_HPP
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "gl_api.hpp"
@@ -40,8 +41,14 @@ public:
     /// `compact`: intervals a word each (every block's are exact so);
     /// `max_block_bytes`: the GPU's largest storage buffer, which bounds
     /// the atlas too; `threads` decode blocks (0: all cores).
-    GpuPageAtlas(const GlApi &gl, const sbrt::StackPages &pages, bool compact,
-                 uint64_t budget_bytes, size_t max_block_bytes, unsigned threads);
+    GpuPageAtlas(const GlApi &gl, const std::shared_ptr<const sbrt::StackPages> &pages,
+                 bool compact, uint64_t budget_bytes, size_t max_block_bytes, unsigned threads);
+
+    /// Whether this atlas holds the blocks of `pages` (still alive) in the
+    /// form and size asked for: a tracer of another scene of the same model
+    /// may take it over, with the blocks already up.
+    bool serves(const sbrt::StackPages &pages, bool compact, uint64_t budget_bytes,
+                size_t max_block_bytes) const;
 
     void bind() const;
     /// A new frame: no block marked (a GL command: after the last
@@ -59,14 +66,18 @@ public:
     const PageFigures &figures() const { return figures_; }
 
 private:
+    GpuPageAtlas(const GlApi &gl, const sbrt::StackPages &pages, bool compact,
+                 uint64_t budget_bytes, size_t max_block_bytes, unsigned threads);
     /// Marks of half `part` (0 wanted, 1 read) as block numbers.
     std::vector<int> marked(const std::vector<uint32_t> &marks, int part) const;
     /// Blocks `wanted` decoded (in parallel) and put into the atlas.
     int upload(const std::vector<int> &wanted);
     void set_entry(int b, uint32_t base);
 
-    const GlApi &gl_;
+    /// a copy: the atlas may outlive the tracer that made it (kept_atlas)
+    const GlApi gl_;
     const sbrt::StackPages &pages_;
+    std::weak_ptr<const sbrt::StackPages> owner_; ///< serves(): the same model
     bool compact_;
     unsigned threads_;
     sbrt::PageResidency residency_;

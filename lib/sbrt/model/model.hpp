@@ -112,6 +112,8 @@ public:
     const IntervalArray &intervals() const { return whole(), intervals_; }
     /// The blocks of a paged model; null where the model is decoded whole.
     const StackPages *pages() const { return pages_.get(); }
+    /// The same, shared (who keeps what it decoded on a GPU knows it by this).
+    const std::shared_ptr<const StackPages> &shared_pages() const { return pages_; }
     bool is_paged() const { return pages_ != nullptr; }
 
     uint64_t cell_index(int row, int col) const

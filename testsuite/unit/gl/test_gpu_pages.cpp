@@ -217,6 +217,44 @@ TEST_P(GpuPages, AnAtlasOfAFewBlocksHoldsItsBudgetAndTheFrameStaysExact)
     }
 }
 
+TEST_P(GpuPages, AnotherSceneOfTheModelTakesOverItsBlocksOnTheGpu)
+{
+    const PagedCase c;
+    const Model paged = c.paged(WHOLE_BUDGET, true);
+    Scene hidden;
+    hidden.hidden.assign(c.model.materials().size(), 0);
+    hidden.hidden[1] = 1;
+    std::shared_ptr<sbrt_gl::GpuPageAtlas> kept;
+    sbrt_gl::GpuOptions keeping = options(WHOLE_BUDGET);
+    keeping.kept_atlas = &kept;
+    const Tracer plain_tracer(paged, 1.5);
+    const Camera camera = cameras(plain_tracer, 37, 41).front();
+    uint64_t uploads = 0;
+    {
+        sbrt_gl::GpuTracer plain(*context_, plain_tracer, keeping);
+        plain.trace_image(camera, 2);
+        uploads = plain.model().pages()->figures().uploads;
+        ASSERT_GT(uploads, 0u);
+    }
+    ASSERT_NE(kept, nullptr); // the tracer is gone, its blocks stay
+    const sbrt_gl::GpuPageAtlas *atlas = kept.get();
+    // a stratum hidden: a new tracer, the same atlas, no block up again
+    const Tracer hidden_tracer(paged, 1.5, hidden), whole_hidden(c.model, 1.5, hidden);
+    sbrt_gl::GpuTracer again(*context_, hidden_tracer, keeping);
+    EXPECT_EQ(again.model().pages(), atlas);
+    sbrt_gl::GpuTracer whole(*context_, whole_hidden, options(WHOLE_BUDGET));
+    const HitImage want = whole.trace_image(camera, 2), got = again.trace_image(camera, 2);
+    for (size_t i = 0; i < want.size(); ++i)
+        ASSERT_TRUE(identical_hits(want[i], got[i])) << i;
+    const uint64_t more = again.model().pages()->figures().uploads - uploads;
+    EXPECT_LT(more, uploads); // only the blocks the hidden stratum opens
+    // another model's tracer does not take it
+    const Model other = c.paged(WHOLE_BUDGET, true);
+    const Tracer other_tracer(other, 1.5);
+    sbrt_gl::GpuTracer elsewhere(*context_, other_tracer, keeping);
+    EXPECT_NE(elsewhere.model().pages(), atlas);
+}
+
 TEST_P(GpuPages, APagedModelIsRefusedWhereTheGpuCannotPageIt)
 {
     const PagedCase c;
