@@ -108,10 +108,8 @@ void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes,
                    "pyramid and page table: give more, or render with backend=cpu");
     // the atlas of another scene of this model, its blocks up, where kept
     if (kept_atlas && *kept_atlas && (*kept_atlas)->serves(pages, compact, budget_bytes,
-                                                           max_block_bytes_)) {
+                                                           max_block_bytes_))
         pages_ = *kept_atlas;
-        pages_->begin_frame();
-    }
     else
         pages_ = std::make_shared<GpuPageAtlas>(gl_, model.shared_pages(), compact, budget_bytes,
                                                 max_block_bytes_, 0);

@@ -38,34 +38,25 @@ GpuPageAtlas::GpuPageAtlas(const GlApi &gl,
                            const std::shared_ptr<const sbrt::StackPages> &shared_pages,
                            bool compact, uint64_t budget_bytes, size_t max_block_bytes,
                            unsigned threads)
-    : GpuPageAtlas(gl, *shared_pages, compact, budget_bytes, max_block_bytes, threads)
+    : gl_(gl), pages_(*shared_pages), owner_(shared_pages), compact_(compact),
+      threads_(threads), asked_words_(atlas_words(budget_bytes, max_block_bytes)),
+      residency_(shared_pages->block_count(), asked_words_),
+      mark_words_(sbrt::gpu_mark_words(pages_.block_count())),
+      table_(gl_, GL_SHADER_STORAGE_BUFFER,
+             checked_bytes((size_t(sbrt::GPU_PAGE_TABLE_HEAD) + size_t(pages_.block_count())) * 4,
+                           max_block_bytes, "page table"),
+             empty_table(pages_).data()),
+      atlas_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(residency_.atlas_words()) * 4),
+      marks_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(mark_words_) * 2 * 4)
 {
-    owner_ = shared_pages;
+    begin_frame();
 }
 
 bool GpuPageAtlas::serves(const sbrt::StackPages &pages, bool compact, uint64_t budget_bytes,
                           size_t max_block_bytes) const
 {
-    const std::shared_ptr<const sbrt::StackPages> owner = owner_.lock();
-    const uint64_t words =
-        std::min(atlas_words(budget_bytes, max_block_bytes), sbrt::GPU_MAX_ATLAS_WORDS) &
-        ~uint64_t(1);
-    return owner.get() == &pages && compact == compact_ && words == residency_.atlas_words();
-}
-
-GpuPageAtlas::GpuPageAtlas(const GlApi &gl, const sbrt::StackPages &pages, bool compact,
-                           uint64_t budget_bytes, size_t max_block_bytes, unsigned threads)
-    : gl_(gl), pages_(pages), compact_(compact), threads_(threads),
-      residency_(pages.block_count(), atlas_words(budget_bytes, max_block_bytes)),
-      mark_words_(sbrt::gpu_mark_words(pages.block_count())),
-      table_(gl_, GL_SHADER_STORAGE_BUFFER,
-             checked_bytes((size_t(sbrt::GPU_PAGE_TABLE_HEAD) + size_t(pages.block_count())) * 4,
-                           max_block_bytes, "page table"),
-             empty_table(pages).data()),
-      atlas_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(residency_.atlas_words()) * 4),
-      marks_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(mark_words_) * 2 * 4)
-{
-    begin_frame();
+    return owner_.lock().get() == &pages && compact == compact_ &&
+           atlas_words(budget_bytes, max_block_bytes) == asked_words_;
 }
 
 void GpuPageAtlas::bind() const

@@ -66,8 +66,6 @@ public:
     const PageFigures &figures() const { return figures_; }
 
 private:
-    GpuPageAtlas(const GlApi &gl, const sbrt::StackPages &pages, bool compact,
-                 uint64_t budget_bytes, size_t max_block_bytes, unsigned threads);
     /// Marks of half `part` (0 wanted, 1 read) as block numbers.
     std::vector<int> marked(const std::vector<uint32_t> &marks, int part) const;
     /// Blocks `wanted` decoded (in parallel) and put into the atlas.
@@ -80,6 +78,7 @@ private:
     std::weak_ptr<const sbrt::StackPages> owner_; ///< serves(): the same model
     bool compact_;
     unsigned threads_;
+    uint64_t asked_words_; ///< atlas_words of the budget given (serves())
     sbrt::PageResidency residency_;
     uint32_t mark_words_;
     GlBuffer table_, atlas_, marks_;

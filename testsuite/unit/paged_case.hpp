@@ -2,7 +2,8 @@
  * MODULE:    testsuite/unit (r3.sbrt addon)
  * PURPOSE:   A model read block by block, as a format 2 file with its
  *            column members holds it, beside the model decoded whole: what
- *            the paged tracing and paged GPU tests share
+ *            the paged tracing and paged GPU tests share, and their check
+ *            of hits bit for bit
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_TEST_PAGED_CASE_HPP
@@ -13,11 +14,14 @@
 #include <optional>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "format/format.hpp"
 #include "format/column_ranges_file.hpp"
 #include "format/column_tops_file.hpp"
 #include "format/paged_stacks.hpp"
 #include "model/column_ranges.hpp"
+#include "tracing/cpu_tracing.hpp"
 #include "util/error.hpp"
 #include "test_support.hpp"
 
@@ -73,6 +77,19 @@ struct PagedCase {
         return most;
     }
 };
+
+/// Every hit of `got` bit for bit `want`'s (the first that is not a fatal
+/// failure naming it); `hits` counts the rays that hit.
+inline void expect_same_hits(const HitImage &want, const HitImage &got, size_t &hits)
+{
+    ASSERT_EQ(want.size(), got.size());
+    for (size_t i = 0; i < want.size(); ++i) {
+        ASSERT_TRUE(identical_hits(want[i], got[i]))
+            << i << ": material " << want[i].material << " / " << got[i].material << ", t "
+            << want[i].t << " / " << got[i].t << " (" << want[i].t - got[i].t << ")";
+        hits += want[i].is_hit();
+    }
+}
 
 } // namespace sbrt_test
 

@@ -23,19 +23,9 @@
 
 using namespace sbrt;
 using sbrt_test::PagedCase;
+using sbrt_test::expect_same_hits;
 
 namespace {
-
-void expect_same_hits(const HitImage &want, const HitImage &got, size_t &hits)
-{
-    ASSERT_EQ(want.size(), got.size());
-    for (size_t i = 0; i < want.size(); ++i) {
-        ASSERT_TRUE(sbrt_test::identical_hits(want[i], got[i]))
-            << i << ": material " << want[i].material << " / " << got[i].material << ", t "
-            << want[i].t << " / " << got[i].t << " (" << want[i].t - got[i].t << ")";
-        hits += want[i].is_hit();
-    }
-}
 
 /// A paged model's pyramid against the whole model's: level 0 is each
 /// column's range of all its material (the column ranges, shared), which
