@@ -57,11 +57,12 @@ void report_gpu_pages(const sbrt_gl::GpuPageAtlas &pages, const sbrt_gl::GpuStat
 {
     const sbrt_gl::PageFigures &f = pages.figures();
     G_verbose_message(_("GPU blocks (gpu_memory=): %d up, %.1f of %.1f MB; %llu brought up "
-                        "so far (%.1f MB), %llu dropped for others' room, %llu found no room"),
+                        "so far (%.1f MB), %llu dropped for others' room, %llu found no room, "
+                        "%llu bands that let earlier bands' blocks go"),
                       pages.held_blocks(), double(pages.held_bytes()) / (1 << 20),
                       double(pages.atlas_bytes()) / (1 << 20), (unsigned long long)f.uploads,
                       double(f.upload_bytes) / (1 << 20), (unsigned long long)f.dropped,
-                      (unsigned long long)f.not_placed);
+                      (unsigned long long)f.not_placed, (unsigned long long)f.band_restarts);
     G_verbose_message(_("This frame: %d dispatches again for blocks brought up; %.1f ms "
                         "finding, decoding and bringing them up"),
                       frame.page_passes, frame.page_ms);

@@ -53,6 +53,10 @@ struct GpuOptions {
     /// scenes (a view server's: a stratum hidden keeps the blocks up),
     /// taken over where it serves the model; null: each tracer its own.
     std::shared_ptr<GpuPageAtlas> *kept_atlas = nullptr;
+    /// Pixels of a band where a paged model's atlas is crowded (its blocks
+    /// found no room, GpuPageAtlas::crowded): bands whose blocks fit where
+    /// a frame's do not. Else bands of a million pixels fill a GPU.
+    int crowded_band_pixels = 1 << 16;
 
     /// The defaults in `layout`, the bands as SBRT_GPU_BANDS says where it
     /// is set ("staged" or "direct": measurements, device_run.sh); the one

@@ -25,6 +25,7 @@ struct PageFigures {
     uint64_t upload_bytes = 0;  ///< their words
     uint64_t dropped = 0;       ///< blocks dropped for others' room
     uint64_t not_placed = 0;    ///< wanted blocks the frame's own left no room for
+    uint64_t band_restarts = 0; ///< bands that let earlier bands' blocks go (begin_band_where_full)
     double upload_ms = 0;       ///< decoding and uploading them
 };
 
@@ -58,7 +59,16 @@ public:
     /// and that are not up, decoded and brought up where room is made;
     /// how many. 0: a dispatch again would find the same blocks missing.
     int bring_wanted();
+    /// Where a block found no room since the frame began: the frame begun
+    /// again (no block marked; those the earlier bands used may go), so
+    /// that the band in hand, dispatched again, brings up its own blocks
+    /// in their room; true then. A frame whose blocks exceed the atlas
+    /// then runs on the GPU band by band where each band's blocks fit.
+    bool begin_band_where_full();
 
+    /// Whether a frame's blocks ever found no room: frames then go in
+    /// bands small enough for each band's blocks to fit.
+    bool crowded() const { return figures_.not_placed > 0; }
     bool compact() const { return compact_; }
     uint64_t atlas_bytes() const { return residency_.atlas_words() * 4; }
     uint64_t held_bytes() const { return residency_.held_words() * 4; }
@@ -81,6 +91,7 @@ private:
     uint64_t asked_words_; ///< atlas_words of the budget given (serves())
     sbrt::PageResidency residency_;
     uint32_t mark_words_;
+    bool found_no_room_ = false; ///< since the frame began
     GlBuffer table_, atlas_, marks_;
     PageFigures figures_;
 };

@@ -77,6 +77,8 @@ bool GpuRowTracer::shades_kernel_normals() const
 
 int GpuRowTracer::preferred_band_rows(int cols) const
 {
+    if (const int crowded = gpu_.crowded_band_rows(cols))
+        return crowded;
     return std::max(1, (1 << 20) / std::max(cols, 1));
 }
 

@@ -44,7 +44,8 @@ public:
     /// every block on the GPU: a ray sent back shows nothing to its
     /// neighbours' kernels.
     bool shades_kernel_normals() const override;
-    /// Bands of a million pixels or more: enough rays to fill a GPU.
+    /// Bands of a million pixels or more: enough rays to fill a GPU; of
+    /// fewer where a paged model's atlas is crowded (crowded_band_rows).
     int preferred_band_rows(int cols) const override;
     /// What one mapped band holds (GpuTracer::max_band_rows).
     int max_band_rows(int cols, const sbrt::Outputs &outputs) const override;

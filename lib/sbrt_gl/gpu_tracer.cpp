@@ -54,7 +54,8 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
       shading_inputs_(gl_, tracer, model_, max_block_bytes_),
       view_(gl_, GL_UNIFORM_BUFFER, sizeof(sbrt::GpuView)), kernel_buffers_(gl_),
       bands_(gl_, max_block_bytes_, sbrt_gl::staged_bands(options, gl_renderer())), timer_(gl_),
-      host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer()))
+      host_shader_(tracer.model()), loop_budget_(sbrt_gl::loop_budget(options, gl_renderer())),
+      crowded_band_pixels_(std::max(options.crowded_band_pixels, 1))
 {
     stats_.upload_ms = ms_since(created_);
 }
@@ -98,6 +99,25 @@ bool GpuTracer::brought_wanted_blocks()
     stats_.page_ms += ms_since(start);
     stats_.page_passes += brought ? 1 : 0;
     return brought;
+}
+
+int GpuTracer::crowded_band_rows(int cols) const
+{
+    const GpuPageAtlas *pages = model_.pages();
+    if (!pages || !pages->crowded())
+        return 0;
+    return std::max(1, crowded_band_pixels_ / std::max(cols, 1));
+}
+
+bool GpuTracer::band_again(bool &restarted)
+{
+    if (brought_wanted_blocks())
+        return true;
+    GpuPageAtlas *pages = model_.pages();
+    if (restarted || !pages || !pages->begin_band_where_full())
+        return false;
+    restarted = true;
+    return true;
 }
 
 std::vector<double> GpuTracer::take_pass_ms()
@@ -149,7 +169,9 @@ void GpuTracer::dispatch_records(const sbrt::Camera &camera, sbrt::GpuView &view
 {
     const int cols = camera.cols();
     const size_t row_bytes = size_t(cols) * sizeof(sbrt::GpuPixelHit);
-    const int band_rows = int(band_->bytes() / row_bytes);
+    int band_rows = int(band_->bytes() / row_bytes);
+    if (const int crowded = crowded_band_rows(cols))
+        band_rows = std::min(band_rows, crowded);
     band_->bind(2);
     for (int first = first_row; first < first_row + row_count; first += band_rows) {
         const int count = std::min(band_rows, first_row + row_count - first);
@@ -157,6 +179,7 @@ void GpuTracer::dispatch_records(const sbrt::Camera &camera, sbrt::GpuView &view
         view.options[3] = uint32_t(count);
         view_.upload(&view, sizeof view); // stays bound to index 0
         // a paged model: again once the blocks its rays missed are up
+        bool restarted = false;
         do {
             auto start = Clock::now();
             timer_.time(int(Pass::records), [&] {
@@ -170,7 +193,7 @@ void GpuTracer::dispatch_records(const sbrt::Camera &camera, sbrt::GpuView &view
             band_->download(records_.data() + size_t(first - first_row) * size_t(cols),
                             size_t(count) * row_bytes);
             stats_.readback_ms += ms_since(start);
-        } while (brought_wanted_blocks());
+        } while (band_again(restarted));
         ++stats_.bands;
     }
 }
@@ -336,7 +359,8 @@ void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_co
         std::memcpy(&over, host + layout.over_budget_at * 4, 4);
         return over;
     };
-    while (reads_model && model_.pages() && sent_back() > 0 && brought_wanted_blocks())
+    bool restarted = false;
+    while (reads_model && model_.pages() && sent_back() > 0 && band_again(restarted))
         host = bands_.redo(dispatch);
     stats_.trace_ms += bands_.gpu_ms();
     ++stats_.bands;

@@ -127,6 +127,10 @@ public:
                     sbrt::Band &band, unsigned cpu_threads = 0);
     /// The most rows `cols` wide of `outputs` that one shaded band holds.
     int max_band_rows(int cols, const sbrt::Outputs &outputs) const;
+    /// The rows `cols` wide of a band: where a paged model's atlas is
+    /// crowded, as GpuOptions::crowded_band_pixels says; else 0 (as many
+    /// as fill the GPU).
+    int crowded_band_rows(int cols) const;
     /// A new frame: bands dispatched ahead for the last one are dropped.
     void begin_frame();
     /// GL time queries around every pass (GpuStats::pass_ms), or none.
@@ -220,6 +224,10 @@ private:
     /// A paged model: whether blocks that the dispatches so far found
     /// missing were brought up (their rays then go again).
     bool brought_wanted_blocks();
+    /// A paged model's band: whether to dispatch it again, as its missed
+    /// blocks came up, or (once a band: `restarted`) as the atlas was full
+    /// and the earlier bands' blocks may now go for its own.
+    bool band_again(bool &restarted);
     /// Binds the model (GpuModel::bind), the first pass's bounds and the
     /// view block.
     void bind_model() const;
@@ -293,6 +301,7 @@ private:
     sbrt::KeptPixelShader host_shader_;
     mutable GpuStats stats_; ///< mutable: stats() adds the programs' time
     uint32_t loop_budget_;
+    int crowded_band_pixels_;
 };
 
 } // namespace sbrt_gl

@@ -209,6 +209,46 @@ TEST_P(GpuPages, AnAtlasOfAFewBlocksHoldsItsBudgetAndTheFrameStaysExact)
     }
 }
 
+TEST_P(GpuPages, BandByBandAFrameWhoseBlocksExceedTheAtlasStaysOnTheGpu)
+{
+    const PagedCase c;
+    const Outputs all{true, true, true};
+    // room for four blocks: a frame wants more, a band of four rows fewer
+    const Renderer probe(c.paged(WHOLE_BUDGET), 1.5, Scene{}, Shading{}, {2, true, 4});
+    const uint64_t pyramid = gpu_pyramid_bytes(probe.tracer().pyramid());
+    const uint64_t budget = std::max(2 * pyramid + 1024, pyramid + 1024 + 4 * c.largest_block());
+    const double tolerance = 2e-5 * 2 * probe.tracer().frame().radius();
+    // the whole frame as one band; in bands of four rows; in bands as the
+    // tracer chooses them, of four rows once the atlas was found crowded
+    const int band_rows[3] = {64, 4, 0};
+    uint32_t sent_to_host[3] = {0, 0, 0};
+    uint64_t restarts[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+        const Renderer paged(c.paged(WHOLE_BUDGET), 1.5, Scene{}, Shading{},
+                             {2, true, band_rows[k]});
+        sbrt_gl::GpuOptions o = options(budget);
+        o.crowded_band_pixels = 4 * 39;
+        sbrt_gl::GpuRenderer on_pages(*context_, paged, o);
+        for (const Camera &camera : cameras(paged.tracer(), 43, 39)) {
+            Image got = empty_image(camera, all);
+            const sbrt_gl::GpuFrameReport r = on_pages.render(
+                camera, all, [&](const Band &band) { gather_band(band, got); }, 2);
+            sent_to_host[k] += r.gpu.over_budget;
+            expect_images_agree(paged.render_image(camera, all), got, tolerance,
+                                "bands of " + std::to_string(band_rows[k]) + " rows");
+        }
+        restarts[k] = on_pages.gpu().model().pages()->figures().band_restarts;
+    }
+    // one band: a band that found no room has no earlier band's blocks
+    // to let go, and its rays go to the host; in bands, each band's blocks
+    // push out the earlier bands' (2004 rays on the host, 292 in bands)
+    EXPECT_GT(sent_to_host[0], 0u);
+    EXPECT_GT(restarts[1], 0u);
+    EXPECT_LT(sent_to_host[1] * 2, sent_to_host[0]);
+    EXPECT_GT(restarts[2], 0u);
+    EXPECT_LT(sent_to_host[2], sent_to_host[0]);
+}
+
 TEST_P(GpuPages, AnotherSceneOfTheModelTakesOverItsBlocksOnTheGpu)
 {
     const PagedCase c;
