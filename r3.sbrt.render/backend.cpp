@@ -53,9 +53,14 @@ void render_on_cpu(const RenderRequest &request, const sbrt::Renderer &renderer,
 
 /// A model read block by block on the GPU: its atlas, and this frame's
 /// dispatches again for the blocks brought up.
-void report_gpu_pages(const sbrt_gl::GpuPageAtlas &pages, const sbrt_gl::GpuStats &frame)
+void report_gpu_pages(const sbrt_gl::GpuModel &model, const sbrt_gl::GpuStats &frame)
 {
+    const sbrt_gl::GpuPageAtlas &pages = *model.pages();
     const sbrt_gl::PageFigures &f = pages.figures();
+    if (model.plan().column_pages)
+        G_verbose_message(_("GPU: the columns' top intervals and ranges in pages beside the "
+                            "blocks', the empty-space pyramid from level %d on"),
+                          model.plan().first_level);
     G_verbose_message(_("GPU blocks (gpu_memory=): %d up, %.1f of %.1f MB; %llu brought up "
                         "so far (%.1f MB), %llu dropped for others' room, %llu found no room, "
                         "%llu bands that let earlier bands' blocks go"),
@@ -114,8 +119,8 @@ void render_on_gpu(const RenderRequest &request, const sbrt::Camera &camera,
                           r.gpu.over_budget,
                           gpu.gpu().model().pages() ? _(" or met a block not on the GPU")
                                                     : "");
-    if (const sbrt_gl::GpuPageAtlas *pages = gpu.gpu().model().pages())
-        report_gpu_pages(*pages, r.gpu);
+    if (gpu.gpu().model().pages())
+        report_gpu_pages(gpu.gpu().model(), r.gpu);
     sbrt_grass::report_paging(gpu.renderer().model());
 }
 

@@ -126,7 +126,8 @@ void main()
     for (uint opened = 0u; heap_count > 0u; ++opened) {
         vec4 node = heap_s_level[0];
         uint level = uint(node.y);
-        if (level == 0u || opened == uint(SBRT_FIRST_PASS_BUDGET)) {
+        // (the GPU holds no level below levels[0].w: make_gpu_pyramid)
+        if (level <= levels[0].w || opened == uint(SBRT_FIRST_PASS_BUDGET)) {
             bound = node.x;
             break;
         }

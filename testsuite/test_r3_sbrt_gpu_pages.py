@@ -5,7 +5,9 @@ PURPOSE:   r3.sbrt.render on the GPU (EGL; llvmpipe here) of a model read
            reach them, within gpu_memory=. The maps equal those of the model
            uploaded whole (layout=textures) cell for cell and the PNGs byte
            for byte; an atlas of a few blocks still gives the CPU's maps;
-           gpu_memory= out of range is a clear error
+           gpu_memory= out of range is a clear error; a pyramid over half of
+           gpu_memory pages the columns, or where the model holds no tops
+           is a clear error
 COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
 """
 import os
@@ -125,9 +127,29 @@ class TestGpuPages(TestCase):
     def test_gpu_memory_out_of_range_is_a_clear_error(self):
         self.assertIn("gpu_memory", self.refused("paged", "gp_bad", "gpu_memory=0"))
 
-    def test_gpu_memory_below_twice_the_pyramid_is_a_clear_error(self):
+    def test_a_pyramid_over_half_of_gpu_memory_pages_the_columns(self):
+        """gpu_memory=3: the pyramid (1.8 MB) takes more than half; the
+        columns' tops and ranges go up in pages, the pyramid from level 1
+        on, and the maps are the CPU's."""
+        image_region(self, 120, 90)
+        tight = self.render("tight", "backend=egl", "gpu_memory=3")
+        self.assertIn("the columns' top intervals and ranges in pages beside the blocks', "
+                      "the empty-space pyramid from level 1 on", " ".join(tight.stderr.split()))
+        self.render("tight_cpu", "backend=cpu")
+        self.assertLessEqual(self.differing_cells("gp_tight_m", "gp_tight_cpu_m"),
+                             120 * 90 // 1000)
+        self.assertRastersNoDifference("gp_tight_d", "gp_tight_cpu_d", precision=0.01)
+
+    def test_a_pyramid_over_half_without_column_tops_is_a_clear_error(self):
+        """A model stored without its tops member (as older files are):
+        its columns cannot be paged, so a pyramid over half of gpu_memory
+        is an error that says so."""
+        shutil.copytree(sbrt_dir("paged"), sbrt_dir("untopped"))
+        self.addCleanup(shutil.rmtree, sbrt_dir("untopped"), True)
+        os.remove(os.path.join(sbrt_dir("untopped"), "tops"))
         self.assertIn("empty-space pyramid takes 2 MB on the GPU, more than half of "
-                      "gpu_memory (3 MB)", self.refused("paged", "gp_tight", "gpu_memory=3"))
+                      "gpu_memory (3 MB), and the model holds no column tops",
+                      self.refused("untopped", "gp_untopped", "gpu_memory=3"))
 
 if __name__ == "__main__":
     test()

@@ -33,19 +33,69 @@ GlBuffer storage_buffer(const GlApi &gl, const std::vector<T> &words, size_t lim
                     checked_bytes(words.size() * sizeof(T), limit, what), words.data());
 }
 
-/// An empty-space pyramid (binding 4); where `budget` is given (a paged
-/// model's gpu_memory=), at most half of it. Checked before its words are
-/// made: a national model's take a gigabyte.
+/// An empty-space pyramid (binding 4), from `first_level` on.
 GlBuffer pyramid_buffer(const GlApi &gl, const sbrt::MinMaxPyramid &pyramid, size_t limit,
-                        uint64_t budget = 0)
+                        int first_level = 0)
 {
-    const uint64_t bytes = sbrt::gpu_pyramid_bytes(pyramid);
-    if (budget && bytes > budget / 2)
-        sbrt::fail("the model's empty-space pyramid takes ", (bytes + (1 << 20) - 1) >> 20,
-                   " MB on the GPU, more than half of gpu_memory (", budget >> 20,
-                   " MB): give more, or render with backend=cpu");
-    checked_bytes(size_t(bytes), limit, "empty-space pyramid");
-    return storage_buffer(gl, sbrt::make_gpu_pyramid(pyramid), limit, "empty-space pyramid");
+    checked_bytes(size_t(sbrt::gpu_pyramid_bytes(pyramid, first_level)), limit,
+                  "empty-space pyramid");
+    return storage_buffer(gl, sbrt::make_gpu_pyramid(pyramid, first_level), limit,
+                          "empty-space pyramid");
+}
+
+uint64_t megabytes(uint64_t bytes) { return (bytes + (1 << 20) - 1) >> 20; }
+
+/// The page table's bytes: its head, and a word a page.
+uint64_t page_table_bytes(const sbrt::StackPages &pages, bool column_pages)
+{
+    return (uint64_t(sbrt::GPU_PAGE_TABLE_HEAD) +
+            uint64_t(pages.block_count()) * (column_pages ? 2 : 1)) * 4;
+}
+
+/// Bytes of the columns' top intervals where they go up whole as the
+/// shader reads them (`compact`: a word each), else 0.
+uint64_t whole_tops_bytes(const sbrt::StackPages &pages, bool compact)
+{
+    const sbrt::IntervalArray &tops = pages.column_tops();
+    if (!pages.has_column_tops() || tops.is_compact() != compact)
+        return 0;
+    return uint64_t(tops.size()) * tops.record_bytes();
+}
+
+/// How a paged model's pyramid and tops go up within `budget` bytes
+/// (GpuModel's comment); checked before a word is made: the pyramid of a
+/// model 16 times national takes more than a gigabyte.
+PagedPlan plan_paging(const sbrt::Tracer &tracer, const GpuOptions &options, size_t limit)
+{
+    if (options.layout != sbrt::GpuLayout::ssbo)
+        sbrt::fail("a model read block by block goes to the GPU in layout=ssbo only");
+    const sbrt::MinMaxPyramid &pyramid = tracer.pyramid();
+    const sbrt::StackPages &pages = *tracer.model().pages();
+    const uint64_t budget = options.page_budget_bytes;
+    const bool pages_columns = pages.has_column_tops() && pages.has_column_ranges();
+    if (options.column_pages_from_level > 0 && pages_columns)
+        return {std::min(options.column_pages_from_level, std::max(pyramid.levels() - 1, 1)),
+                true};
+    const uint64_t whole = sbrt::gpu_pyramid_bytes(pyramid);
+    const uint64_t rest = budget - std::min(budget, whole + page_table_bytes(pages, false));
+    const uint64_t tops = whole_tops_bytes(pages, compact_on_gpu(tracer.model()));
+    const bool pyramid_fits = whole <= budget / 2 && whole <= limit;
+    if (pyramid_fits && (!pages.has_column_tops() || (tops > 0 && tops <= rest / 2 &&
+                                                      tops <= limit)))
+        return {};
+    if (pages_columns)
+        for (int level = 1; level < pyramid.levels(); ++level) {
+            const uint64_t bytes = sbrt::gpu_pyramid_bytes(pyramid, level);
+            if (bytes <= budget / 4 && bytes <= limit)
+                return {level, true};
+        }
+    if (pyramid_fits)
+        return {}; // the tops stay on the host: rays read blocks
+    sbrt::fail("the model's empty-space pyramid takes ", megabytes(whole),
+               " MB on the GPU, more than half of gpu_memory (", budget >> 20, " MB), ",
+               pages.has_column_tops() ? "and its levels above the columns do not fit a quarter"
+                                       : "and the model holds no column tops to page its columns",
+               ": give more, or render with backend=cpu");
 }
 
 /// How each material looks (binding 3).
@@ -58,20 +108,22 @@ GlBuffer material_buffer(const GlApi &gl, const sbrt::Tracer &tracer)
 
 } // namespace
 
-GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout layout,
-                   size_t max_block_bytes, uint64_t page_budget_bytes,
-                   std::shared_ptr<GpuPageAtlas> *kept_atlas)
-    : gl_(gl), tracer_(tracer), max_block_bytes_(max_block_bytes), layout_(layout),
+GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, const GpuOptions &options,
+                   size_t max_block_bytes)
+    : gl_(gl), tracer_(tracer), max_block_bytes_(max_block_bytes), layout_(options.layout),
+      plan_(tracer.model().is_paged() ? plan_paging(tracer, options, max_block_bytes)
+                                      : PagedPlan{}),
       materials_(material_buffer(gl, tracer)),
-      pyramid_(pyramid_buffer(gl, tracer.pyramid(), max_block_bytes,
-                              tracer.model().is_paged() ? page_budget_bytes : 0))
+      pyramid_(pyramid_buffer(gl, tracer.pyramid(), max_block_bytes, plan_.first_level))
 {
+    const uint64_t page_budget_bytes = options.page_budget_bytes;
+    std::shared_ptr<GpuPageAtlas> *kept_atlas = options.kept_atlas;
     if (&tracer.model_pyramid() != &tracer.pyramid())
         model_pyramid_.emplace(pyramid_buffer(gl_, tracer.model_pyramid(), max_block_bytes_));
     if (tracer.model().is_paged())
         open_pages(tracer.model(), page_budget_bytes, kept_atlas);
     else {
-        memory_ = sbrt::gpu_memory(tracer.model(), layout, max_texture_side(gl));
+        memory_ = sbrt::gpu_memory(tracer.model(), layout_, max_texture_side(gl));
         upload_stacks(tracer.model());
     }
     gl_.Finish();
@@ -81,25 +133,21 @@ GpuModel::GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout 
 void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes,
                           std::shared_ptr<GpuPageAtlas> *kept_atlas)
 {
-    if (layout_ != sbrt::GpuLayout::ssbo)
-        sbrt::fail("a model read block by block goes to the GPU in layout=ssbo only");
     if (sbrt::gpu_overlay_mode(tracer_) != sbrt::GpuOverlayMode::none)
         sbrt::fail("boreholes and fence panels on the GPU need the model read whole, "
                    "not block by block");
     // the pyramid and the page table are a part of the budget (boreholes,
     // with a pyramid of their own, are not paged)
     const sbrt::StackPages &pages = *model.pages();
-    const uint64_t table_bytes =
-        (uint64_t(sbrt::GPU_PAGE_TABLE_HEAD) + uint64_t(pages.block_count())) * 4;
+    const uint64_t table_bytes = page_table_bytes(pages, plan_.column_pages);
     budget_bytes -= std::min<uint64_t>(budget_bytes, pyramid_.bytes() + table_bytes);
     const bool compact = compact_on_gpu(model);
-    // the tops as the shader reads intervals: a word each where compact
-    const sbrt::IntervalArray &tops = pages.column_tops();
-    const uint64_t tops_bytes = uint64_t(tops.size()) * tops.record_bytes();
-    if (pages.has_column_tops() && tops.is_compact() == compact &&
-        tops_bytes <= budget_bytes / 2 && tops_bytes <= max_block_bytes_) {
-        const void *records =
-            tops.visit([](const auto *first) { return static_cast<const void *>(first); });
+    // the tops as the shader reads intervals, where they fit whole
+    const uint64_t tops_bytes = whole_tops_bytes(pages, compact);
+    if (!plan_.column_pages && tops_bytes > 0 && tops_bytes <= budget_bytes / 2 &&
+        tops_bytes <= max_block_bytes_) {
+        const void *records = pages.column_tops().visit(
+            [](const auto *first) { return static_cast<const void *>(first); });
         column_tops_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, size_t(tops_bytes), records);
         budget_bytes -= tops_bytes;
     }
@@ -107,11 +155,12 @@ void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes,
         sbrt::fail("gpu_memory leaves no room for the model's blocks beside its empty-space "
                    "pyramid and page table: give more, or render with backend=cpu");
     // the atlas of another scene of this model, its blocks up, where kept
-    if (kept_atlas && *kept_atlas && (*kept_atlas)->serves(pages, compact, budget_bytes,
-                                                           max_block_bytes_))
+    if (kept_atlas && *kept_atlas &&
+        (*kept_atlas)->serves(pages, compact, plan_.column_pages, budget_bytes, max_block_bytes_))
         pages_ = *kept_atlas;
     else
-        pages_ = std::make_shared<GpuPageAtlas>(gl_, model.shared_pages(), compact, budget_bytes,
+        pages_ = std::make_shared<GpuPageAtlas>(gl_, model.shared_pages(), compact,
+                                                plan_.column_pages, budget_bytes,
                                                 max_block_bytes_, 0);
     if (kept_atlas)
         *kept_atlas = pages_;

@@ -25,6 +25,18 @@ struct ModelForm {
     sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo;
     bool paged = false;       ///< its blocks in a page atlas (SBRT_PAGED)
     bool column_tops = false; ///< with each column's top interval (SBRT_COLUMN_TOPS)
+    /// ...in pages of the blocks' columns, with their ranges: the
+    /// pyramid's level 0 (SBRT_COLUMN_PAGES)
+    bool column_pages = false;
+};
+
+/// How a paged model goes to the GPU within its budget (GpuModel): its
+/// pyramid from `first_level` on, and its columns' top intervals and
+/// ranges in pages of their own where the pyramid and the tops do not fit
+/// whole.
+struct PagedPlan {
+    int first_level = 0;
+    bool column_pages = false;
 };
 
 /// \brief The resident part of a GPU tracer: the model of `tracer` uploaded
@@ -36,17 +48,22 @@ struct ModelForm {
 /// the bindings the shaders declare (shaders/common/layout.glsl).
 /// A paged model (Model::is_paged) goes up as its blocks are wanted, into
 /// an atlas (GpuPageAtlas; layout ssbo, no boreholes or curtains) within
-/// `page_budget_bytes` with its pyramid (at most half of it: an error
-/// else) and each column's top interval, where the model holds them
+/// `page_budget_bytes` with its pyramid (at most half of it) and each
+/// column's top interval, where the model holds them
 /// (StackPages::column_tops) and they take at most half of what is left:
-/// a ray that meets only a column's top interval needs no block.
+/// a ray that meets only a column's top interval needs no block. Where
+/// they do not fit so (a model many times national), the columns' top
+/// intervals and ranges (the pyramid's level 0) go up in pages of their
+/// own as rays want them, and the pyramid from the first level that takes
+/// at most a quarter of the budget (an error where none does, or where
+/// the model holds no tops).
 class GpuModel {
 public:
     /// `max_block_bytes`: the GPU's largest storage buffer binding (an
-    /// error names what exceeds it).
-    GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, sbrt::GpuLayout layout,
-             size_t max_block_bytes, uint64_t page_budget_bytes = DEFAULT_PAGE_BUDGET,
-             std::shared_ptr<GpuPageAtlas> *kept_atlas = nullptr);
+    /// error names what exceeds it); of `options`, the layout, the page
+    /// budget, the kept atlas and column_pages_from_level.
+    GpuModel(const GlApi &gl, const sbrt::Tracer &tracer, const GpuOptions &options,
+             size_t max_block_bytes);
     GpuModel(const GpuModel &) = delete;
     GpuModel &operator=(const GpuModel &) = delete;
 
@@ -64,7 +81,13 @@ public:
 
     sbrt::GpuLayout layout() const { return layout_; }
     /// How its programs read it.
-    ModelForm form() const { return {layout_, pages_ != nullptr, column_tops_.has_value()}; }
+    ModelForm form() const
+    {
+        return {layout_, pages_ != nullptr, column_tops_.has_value() || plan_.column_pages,
+                plan_.column_pages};
+    }
+    /// How a paged model went up within its budget.
+    const PagedPlan &plan() const { return plan_; }
     /// A paged model's atlas; null where the model is up whole.
     GpuPageAtlas *pages() { return pages_.get(); }
     const GpuPageAtlas *pages() const { return pages_.get(); }
@@ -84,6 +107,7 @@ private:
     const sbrt::Tracer &tracer_;
     size_t max_block_bytes_;
     sbrt::GpuLayout layout_;
+    PagedPlan plan_; ///< a paged model's
     sbrt::GpuMemory memory_;
     std::shared_ptr<GpuPageAtlas> pages_; ///< a paged model's blocks
     /// ...and each column's top interval (binding 15), where it has them

@@ -53,6 +53,10 @@ struct GpuOptions {
     /// scenes (a view server's: a stratum hidden keeps the blocks up),
     /// taken over where it serves the model; null: each tracer its own.
     std::shared_ptr<GpuPageAtlas> *kept_atlas = nullptr;
+    /// A paged model's columns (their top intervals and ranges) in pages
+    /// of their own, with the pyramid from this level on, even where they
+    /// fit whole (tests, measurements); 0: where they do not fit.
+    int column_pages_from_level = 0;
     /// Pixels of a band where a paged model's atlas is crowded (its blocks
     /// found no room, GpuPageAtlas::crowded): bands whose blocks fit where
     /// a frame's do not. Else bands of a million pixels fill a GPU.

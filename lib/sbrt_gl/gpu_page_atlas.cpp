@@ -19,11 +19,12 @@ namespace {
 /// Blocks decoded at once before they go up: bounds the host's copies.
 constexpr size_t UPLOAD_CHUNK = 64;
 
-/// The page table: its head, then every block missing.
-std::vector<uint32_t> empty_table(const sbrt::StackPages &pages)
+/// The page table: its head, then every page missing.
+std::vector<uint32_t> empty_table(const sbrt::StackPages &pages, bool column_pages)
 {
-    std::vector<uint32_t> words = sbrt::gpu_page_table_head(pages);
-    words.resize(words.size() + size_t(pages.block_count()), sbrt::GPU_PAGE_MISSING);
+    std::vector<uint32_t> words = sbrt::gpu_page_table_head(pages, column_pages);
+    words.resize(words.size() + size_t(pages.block_count()) * (column_pages ? 2 : 1),
+                 sbrt::GPU_PAGE_MISSING);
     return words;
 }
 
@@ -36,26 +37,27 @@ uint64_t atlas_words(uint64_t budget_bytes, size_t max_block_bytes)
 
 GpuPageAtlas::GpuPageAtlas(const GlApi &gl,
                            const std::shared_ptr<const sbrt::StackPages> &shared_pages,
-                           bool compact, uint64_t budget_bytes, size_t max_block_bytes,
-                           unsigned threads)
+                           bool compact, bool column_pages, uint64_t budget_bytes,
+                           size_t max_block_bytes, unsigned threads)
     : gl_(gl), pages_(*shared_pages), owner_(shared_pages), compact_(compact),
-      threads_(threads), asked_words_(atlas_words(budget_bytes, max_block_bytes)),
-      residency_(shared_pages->block_count(), asked_words_),
-      mark_words_(sbrt::gpu_mark_words(pages_.block_count())),
+      page_count_(shared_pages->block_count() * (column_pages ? 2 : 1)), threads_(threads),
+      asked_words_(atlas_words(budget_bytes, max_block_bytes)),
+      residency_(page_count_, asked_words_), mark_words_(sbrt::gpu_mark_words(page_count_)),
       table_(gl_, GL_SHADER_STORAGE_BUFFER,
-             checked_bytes((size_t(sbrt::GPU_PAGE_TABLE_HEAD) + size_t(pages_.block_count())) * 4,
+             checked_bytes((size_t(sbrt::GPU_PAGE_TABLE_HEAD) + size_t(page_count_)) * 4,
                            max_block_bytes, "page table"),
-             empty_table(pages_).data()),
+             empty_table(pages_, column_pages).data()),
       atlas_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(residency_.atlas_words()) * 4),
       marks_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(mark_words_) * 2 * 4)
 {
     begin_frame();
 }
 
-bool GpuPageAtlas::serves(const sbrt::StackPages &pages, bool compact, uint64_t budget_bytes,
-                          size_t max_block_bytes) const
+bool GpuPageAtlas::serves(const sbrt::StackPages &pages, bool compact, bool column_pages,
+                          uint64_t budget_bytes, size_t max_block_bytes) const
 {
     return owner_.lock().get() == &pages && compact == compact_ &&
+           column_pages == this->column_pages() &&
            atlas_words(budget_bytes, max_block_bytes) == asked_words_;
 }
 
@@ -104,12 +106,12 @@ int GpuPageAtlas::bring_wanted()
     marks_.download(marks.data(), marks.size() * 4);
     // the blocks this frame read stay
     for (int b : marked(marks, 1))
-        if (b < pages_.block_count())
+        if (b < page_count_)
             residency_.mark_read(b);
     std::vector<int> wanted;
-    // (a block that found no room in this frame is not decoded again)
+    // (a page that found no room in this frame is not decoded again)
     for (int b : marked(marks, 0))
-        if (b < pages_.block_count() && !residency_.holds(b) && !residency_.found_no_room(b))
+        if (b < page_count_ && !residency_.holds(b) && !residency_.found_no_room(b))
             wanted.push_back(b);
     return wanted.empty() ? 0 : upload(wanted);
 }
@@ -117,6 +119,14 @@ int GpuPageAtlas::bring_wanted()
 void GpuPageAtlas::set_entry(int b, uint32_t base)
 {
     table_.write((size_t(sbrt::GPU_PAGE_TABLE_HEAD) + size_t(b)) * 4, &base, 4);
+}
+
+std::vector<uint32_t> GpuPageAtlas::page_words(int p) const
+{
+    const int blocks = pages_.block_count();
+    if (p >= blocks)
+        return sbrt::gpu_column_page_words(pages_, p - blocks, compact_);
+    return sbrt::gpu_block_words(*pages_.block(p), compact_);
 }
 
 int GpuPageAtlas::upload(const std::vector<int> &wanted)
@@ -127,11 +137,8 @@ int GpuPageAtlas::upload(const std::vector<int> &wanted)
     for (size_t first = 0; first < wanted.size() && !full; first += UPLOAD_CHUNK) {
         const size_t count = std::min(UPLOAD_CHUNK, wanted.size() - first);
         std::vector<std::vector<uint32_t>> words(count);
-        sbrt::for_each_row(0, int(count), threads_, [&](int k) {
-            const std::shared_ptr<const sbrt::StackBlock> block =
-                pages_.block(wanted[first + size_t(k)]);
-            words[size_t(k)] = sbrt::gpu_block_words(*block, compact_);
-        });
+        sbrt::for_each_row(0, int(count), threads_,
+                           [&](int k) { words[size_t(k)] = page_words(wanted[first + size_t(k)]); });
         for (size_t k = 0; k < count; ++k) {
             const int b = wanted[first + k];
             std::vector<int> dropped;

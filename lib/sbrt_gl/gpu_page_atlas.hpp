@@ -40,16 +40,19 @@ struct PageFigures {
 class GpuPageAtlas {
 public:
     /// `compact`: intervals a word each (every block's are exact so);
-    /// `max_block_bytes`: the GPU's largest storage buffer, which bounds
-    /// the atlas too; `threads` decode blocks (0: all cores).
+    /// `column_pages`: pages of the blocks' columns too (their top
+    /// intervals and ranges: sbrt::gpu_column_page_words), numbered after
+    /// the blocks'; `max_block_bytes`: the GPU's largest storage buffer,
+    /// which bounds the atlas too; `threads` decode blocks (0: all cores).
     GpuPageAtlas(const GlApi &gl, const std::shared_ptr<const sbrt::StackPages> &pages,
-                 bool compact, uint64_t budget_bytes, size_t max_block_bytes, unsigned threads);
+                 bool compact, bool column_pages, uint64_t budget_bytes,
+                 size_t max_block_bytes, unsigned threads);
 
-    /// Whether this atlas holds the blocks of `pages` (still alive) in the
+    /// Whether this atlas holds the pages of `pages` (still alive) in the
     /// form and size asked for: a tracer of another scene of the same model
-    /// may take it over, with the blocks already up.
-    bool serves(const sbrt::StackPages &pages, bool compact, uint64_t budget_bytes,
-                size_t max_block_bytes) const;
+    /// may take it over, with the pages already up.
+    bool serves(const sbrt::StackPages &pages, bool compact, bool column_pages,
+                uint64_t budget_bytes, size_t max_block_bytes) const;
 
     void bind() const;
     /// A new frame: no block marked (a GL command: after the last
@@ -70,15 +73,18 @@ public:
     /// bands small enough for each band's blocks to fit.
     bool crowded() const { return figures_.not_placed > 0; }
     bool compact() const { return compact_; }
+    bool column_pages() const { return page_count_ != pages_.block_count(); }
     uint64_t atlas_bytes() const { return residency_.atlas_words() * 4; }
     uint64_t held_bytes() const { return residency_.held_words() * 4; }
     int held_blocks() const { return residency_.held_blocks(); }
     const PageFigures &figures() const { return figures_; }
 
 private:
-    /// Marks of half `part` (0 wanted, 1 read) as block numbers.
+    /// Marks of half `part` (0 wanted, 1 read) as page numbers.
     std::vector<int> marked(const std::vector<uint32_t> &marks, int part) const;
-    /// Blocks `wanted` decoded (in parallel) and put into the atlas.
+    /// Page p's words: block p's, or the columns' of block p - block_count.
+    std::vector<uint32_t> page_words(int p) const;
+    /// Pages `wanted` decoded (in parallel) and put into the atlas.
     int upload(const std::vector<int> &wanted);
     void set_entry(int b, uint32_t base);
 
@@ -87,6 +93,7 @@ private:
     const sbrt::StackPages &pages_;
     std::weak_ptr<const sbrt::StackPages> owner_; ///< serves(): the same model
     bool compact_;
+    int page_count_; ///< the blocks', then where asked their columns'
     unsigned threads_;
     uint64_t asked_words_; ///< atlas_words of the budget given (serves())
     sbrt::PageResidency residency_;

@@ -65,7 +65,9 @@ const uint PAGE_MISSING = 0xffffffffu;
 // (walk.glsl, top_interval_stack): TOP_STACK, nothing up to that bottom,
 // and TOP_STACK + 1, the interval up to the column's top; set for the
 // cell being walked.
+#ifndef SBRT_COLUMN_PAGES
 layout(std430, binding = 15) readonly buffer ColumnTops { uint column_tops[]; };
+#endif
 // below 2^31, so that a search's (low + high) / 2 does not wrap; above every
 // record of the atlas (gpu_pages.hpp, GPU_MAX_ATLAS_WORDS)
 const uint TOP_STACK = 0x7ffffff0u;
@@ -107,18 +109,23 @@ void mark_page(uint part, uint block)
         atomicOr(page_marks[word], bit);
 }
 
+// Page `page`'s first word in the atlas, marked read; PAGE_MISSING where
+// it is not there (marked wanted)
+uint page_at(uint page)
+{
+    uint base = page_base[page];
+    mark_page(base == PAGE_MISSING ? 0u : 1u, page);
+    return base;
+}
+
 // (PAGE_MISSING, 0) where the cell's block is not in the atlas
 uvec2 stack_range(int col, int row_from_north)
 {
     uint size = page_head.x;
     uint bx = uint(col) / size, by = uint(row_from_north) / size;
-    uint block = by * page_head.y + bx;
-    uint base = page_base[block];
-    if (base == PAGE_MISSING) {
-        mark_page(0u, block);
+    uint base = page_at(by * page_head.y + bx);
+    if (base == PAGE_MISSING)
         return uvec2(PAGE_MISSING, 0u);
-    }
-    mark_page(1u, block);
     uint cols = min(size, grid.x - bx * size), rows = min(size, grid.y - by * size);
     uint cell = (uint(row_from_north) - by * size) * cols + (uint(col) - bx * size);
     uint records = base + ((cols * rows + 2u) & ~1u);
@@ -127,6 +134,44 @@ uvec2 stack_range(int col, int row_from_north)
 #endif
     return uvec2(records + atlas[base + cell], records + atlas[base + cell + 1u]);
 }
+
+#ifdef SBRT_COLUMN_PAGES
+// A model too large for the GPU to hold every column's top interval and
+// range (the pyramid's level 0): each block's columns in a page of their
+// own, page page_head.w + block (gpu_pages.hpp, gpu_column_page_words):
+// per cell, row by row, its top interval (as ColumnTops) and its range; a
+// word each where compact, else two each.
+#ifdef SBRT_COMPACT_INTERVALS
+const uint COLUMN_WORDS = 2u;
+#else
+const uint COLUMN_WORDS = 4u;
+#endif
+
+// The cell's first word in its columns' page; PAGE_MISSING where that is
+// not in the atlas (marked wanted)
+uint column_entry(int col, int row_from_north)
+{
+    uint size = page_head.x;
+    uint bx = uint(col) / size, by = uint(row_from_north) / size;
+    uint base = page_at(page_head.w + by * page_head.y + bx);
+    if (base == PAGE_MISSING)
+        return PAGE_MISSING;
+    uint cols = min(size, grid.x - bx * size);
+    return base + ((uint(row_from_north) - by * size) * cols + (uint(col) - bx * size)) *
+                      COLUMN_WORDS;
+}
+
+// The range of the column whose entry is at `at`, as a pyramid node
+vec2 column_range(uint at)
+{
+#ifdef SBRT_COMPACT_INTERVALS
+    uint word = atlas[at + 1u];
+    return vec2(float(word & 0xffffu), float(word >> 16));
+#else
+    return vec2(uintBitsToFloat(atlas[at + 2u]), uintBitsToFloat(atlas[at + 3u]));
+#endif
+}
+#endif
 #elif defined(SBRT_TEXTURES)
 // 1-Textures: texel (col, row from the north) of the index texture holds
 // the cell's first interval and count; texel (j % width, j / width) of the

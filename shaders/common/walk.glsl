@@ -56,6 +56,10 @@ struct Walk {
     // with boreholes (SBRT_BOREHOLES): the cell's boreholes were crossed
     // out of the loop, which goes on at the next cell
     bool boreholes_crossed;
+#ifdef SBRT_COLUMN_PAGES
+    // the entered cell's entry in its columns' page (layout.glsl)
+    uint column_at;
+#endif
     // where the walk ended: finish()'s point, code and t
     vec3 end_point;
     uint end_code;
@@ -66,6 +70,20 @@ vec2 pyramid_node(uint level, int ix, int iy)
 {
     uvec4 l = levels[level];
     return nodes[l.x + uint(iy >> level) * l.y + uint(ix >> level)];
+}
+
+// The first level above the cells that the GPU holds (a model whose
+// columns are paged holds none below it; levels[0].w, make_gpu_pyramid)
+uint first_block_level() { return max(levels[0].w, 1u); }
+
+// The entered cell's range (its node of level 0)
+vec2 cell_range(Walk w)
+{
+#ifdef SBRT_COLUMN_PAGES
+    return column_range(w.column_at);
+#else
+    return pyramid_node(0u, w.ix, w.iy);
+#endif
 }
 
 // whether a ray whose height runs from z_a to z_b stays out of a node's
@@ -136,6 +154,9 @@ Walk walk_start(vec3 hi, vec3 lo, vec3 d, float t_near, float t_far, uint wall)
     w.stuck_x = -1;
     w.stuck_y = -1;
     w.boreholes_crossed = false;
+#ifdef SBRT_COLUMN_PAGES
+    w.column_at = 0u;
+#endif
     w.end_point = vec3(0.0);
     w.end_code = 0u;
     w.end_t = 0.0;
@@ -157,9 +178,10 @@ uint walk_end(inout Walk w, vec3 point, uint code, float t)
 // takes one step per cell, as without the pyramid
 uint walk_pass_over(inout Walk w)
 {
-    if (counts.y > 1u && climb(1u, w.ix, w.iy, w.hi, w.lo, w.d, w.z_in, w.t_far, w.t_exit,
-                               w.exit_axis, w.block)) {
-        w.level = 2u;
+    uint first = first_block_level();
+    if (counts.y > first && climb(first, w.ix, w.iy, w.hi, w.lo, w.d, w.z_in, w.t_far,
+                                  w.t_exit, w.exit_axis, w.block)) {
+        w.level = first + 1u;
         w.mode = CLIMB;
         return STEP_ON;
     }
@@ -176,25 +198,35 @@ uint walk_pass_over(inout Walk w)
 // false: the block's stack.
 bool top_interval_stack(inout Walk w, out uvec2 stack)
 {
-    uint cell = uint(w.rows - 1 - w.iy) * grid.x + uint(w.ix);
-#ifdef SBRT_COMPACT_INTERVALS
-    uint material = compact_material(column_tops[cell]);
-    float bottom = compact_top(column_tops[cell]);
+#ifdef SBRT_COLUMN_PAGES
+    // (a word the interval, as the atlas's, where compact)
+    uint at = w.column_at / (COLUMN_WORDS / 2u);
+    bool topped = true;
+#define TOPS atlas
 #else
-    uint material = column_tops[2u * cell];
-    float bottom = uintBitsToFloat(column_tops[2u * cell + 1u]);
+    uint at = uint(w.rows - 1 - w.iy) * grid.x + uint(w.ix);
+    bool topped = counts.y > 0u; // the pyramid gives the column's top
+#define TOPS column_tops
 #endif
+#ifdef SBRT_COMPACT_INTERVALS
+    uint material = compact_material(TOPS[at]);
+    float bottom = compact_top(TOPS[at]);
+#else
+    uint material = TOPS[2u * at];
+    float bottom = uintBitsToFloat(TOPS[2u * at + 1u]);
+#endif
+#undef TOPS
     stack = uvec2(TOP_STACK);
     if (material == 0u)
         return true; // an empty column
-    if (counts.y == 0u || !(w.z_in > bottom))
+    if (!topped || !(w.z_in > bottom))
         return false; // no pyramid to give its top; or it enters below
     // going below the bottom: only where the interval ends the ray there
     if (!(min(w.z_in, w.z_out) > bottom) && !(materials[material].w < 0.0))
         return false;
     top_material = material;
     top_bottom = bottom;
-    top_high = pyramid_node(0u, w.ix, w.iy).y; // the column's range
+    top_high = cell_range(w).y; // the column's range
     stack = uvec2(bottom == 0.0 ? TOP_STACK + 1u : TOP_STACK, TOP_STACK + 2u);
     return true;
 }
@@ -249,8 +281,15 @@ uint walk_enter(inout Walk w)
     w.t_out = min(min(w.t_max_x, w.t_max_y), w.t_far);
     w.z_in = (w.hi.z + w.t_in * w.d.z) + w.lo.z;
     w.z_out = (w.hi.z + w.t_out * w.d.z) + w.lo.z;
+#ifdef SBRT_COLUMN_PAGES
+    // the cell's columns' page not on the GPU: the ray is traced again
+    // once it is
+    w.column_at = column_entry(w.ix, w.rows - 1 - w.iy);
+    if (w.column_at == PAGE_MISSING)
+        return walk_end(w, vec3(0.0), CODE_OVER_BUDGET, 0.0);
+#endif
     bool stuck = (w.ix >> 1) == w.stuck_x && (w.iy >> 1) == w.stuck_y;
-    if (counts.y > 0u && !stuck && passes(pyramid_node(0u, w.ix, w.iy), w.z_in, w.z_out))
+    if (counts.y > 0u && !stuck && passes(cell_range(w), w.z_in, w.z_out))
         return walk_pass_over(w); // nothing here at the ray's height
     return walk_into_stack(w);
 }

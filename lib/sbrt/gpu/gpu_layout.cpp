@@ -134,31 +134,31 @@ glm::dvec4 ray_t_form(const Tracer &tracer, const Camera &camera, glm::dvec3 fro
     return {a, glm::dot(a, from - rays.origin)};
 }
 
-std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid)
+std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid, int first_level)
 {
     if (pyramid.levels() > GPU_MAX_PYRAMID_LEVELS)
         fail("a pyramid of ", pyramid.levels(), " levels, the GPU holds ",
              GPU_MAX_PYRAMID_LEVELS);
-    const std::vector<ZRange> nodes = pyramid.flattened();
-    std::vector<uint32_t> words(4 * GPU_MAX_PYRAMID_LEVELS + 2 * nodes.size(), 0);
+    std::vector<uint32_t> words(size_t(gpu_pyramid_bytes(pyramid, first_level) / 4), 0);
+    words[3] = uint32_t(first_level);
+    static_assert(sizeof(ZRange) == 2 * sizeof(uint32_t), "two floats");
+    ZRange *nodes = reinterpret_cast<ZRange *>(&words[4 * GPU_MAX_PYRAMID_LEVELS]);
     uint32_t offset = 0;
-    for (int level = 0; level < pyramid.levels(); ++level) {
+    for (int level = first_level; level < pyramid.levels(); ++level) {
         words[4 * level] = offset;
         words[4 * level + 1] = uint32_t(pyramid.cols(level));
         words[4 * level + 2] = uint32_t(pyramid.rows(level));
-        offset += uint32_t(pyramid.cols(level)) * uint32_t(pyramid.rows(level));
+        for (int y = 0; y < pyramid.rows(level); ++y)
+            for (int x = 0; x < pyramid.cols(level); ++x)
+                nodes[offset++] = pyramid.node(level, x, y);
     }
-    static_assert(sizeof(ZRange) == 2 * sizeof(uint32_t), "two floats");
-    if (!nodes.empty())
-        std::memcpy(&words[4 * GPU_MAX_PYRAMID_LEVELS], nodes.data(),
-                    nodes.size() * sizeof(ZRange));
     return words;
 }
 
-uint64_t gpu_pyramid_bytes(const MinMaxPyramid &pyramid)
+uint64_t gpu_pyramid_bytes(const MinMaxPyramid &pyramid, int first_level)
 {
     uint64_t nodes = 0;
-    for (int level = 0; level < pyramid.levels(); ++level)
+    for (int level = first_level; level < pyramid.levels(); ++level)
         nodes += uint64_t(pyramid.cols(level)) * uint64_t(pyramid.rows(level));
     return (4 * uint64_t(GPU_MAX_PYRAMID_LEVELS) + 2 * nodes) * 4;
 }

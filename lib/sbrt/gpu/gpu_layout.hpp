@@ -163,10 +163,13 @@ constexpr int GPU_MAX_PYRAMID_LEVELS = 32;
 
 /// `buffer Pyramid` (std430): per level (offset, cols, rows, 0) for
 /// GPU_MAX_PYRAMID_LEVELS levels, then every node's (low, high) as floats,
-/// level 0 first; all as 32-bit words.
-std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid);
+/// level 0 first; all as 32-bit words. From `first_level` on only, where
+/// given (a paged model's columns' pages hold level 0, and the levels
+/// below the first are too large for the GPU's budget): the levels below
+/// it are (0, 0, 0, 0), and level 0's fourth word is `first_level`.
+std::vector<uint32_t> make_gpu_pyramid(const MinMaxPyramid &pyramid, int first_level = 0);
 /// The bytes of make_gpu_pyramid's words, without making them.
-uint64_t gpu_pyramid_bytes(const MinMaxPyramid &pyramid);
+uint64_t gpu_pyramid_bytes(const MinMaxPyramid &pyramid, int first_level = 0);
 
 /// The view block of `camera` in the tracer's local frame.
 GpuView make_gpu_view(const Tracer &tracer, const Camera &camera,

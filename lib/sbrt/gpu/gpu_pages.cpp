@@ -14,11 +14,63 @@
 
 namespace sbrt {
 
-std::vector<uint32_t> gpu_page_table_head(const StackPages &pages)
+std::vector<uint32_t> gpu_page_table_head(const StackPages &pages, bool column_pages)
 {
     const int block_cols = (pages.cols() + pages.block_size() - 1) / pages.block_size();
+    const int blocks = pages.block_count();
     return {uint32_t(pages.block_size()), uint32_t(block_cols),
-            gpu_mark_words(pages.block_count()), 0};
+            gpu_mark_words(column_pages ? 2 * blocks : blocks),
+            column_pages ? uint32_t(blocks) : 0u};
+}
+
+namespace {
+
+/// A height as a compact word's half: a voxel boundary (the empty range's
+/// 1 and 0 too).
+uint32_t compact_height(float z, const StackBlock &cells)
+{
+    if (!(z >= 0 && z <= 65535 && z == float(uint32_t(z))))
+        fail("the columns of the block at row ", cells.first_row, ", column ",
+             cells.first_col, " reach a height that is no voxel boundary, in a model held "
+             "compact on the GPU");
+    return uint32_t(z);
+}
+
+uint32_t float_bits(float z)
+{
+    uint32_t bits;
+    std::memcpy(&bits, &z, 4);
+    return bits;
+}
+
+} // namespace
+
+std::vector<uint32_t> gpu_column_page_words(const StackPages &pages, int b, bool compact)
+{
+    if (!pages.has_column_tops())
+        fail("a page of columns needs the model's column tops");
+    const std::vector<ZRange> &ranges = pages.column_ranges();
+    const IntervalArray &tops = pages.column_tops();
+    const StackBlock cells = pages.block_cells(b);
+    const uint32_t per_column = gpu_column_words(compact);
+    std::vector<uint32_t> words(size_t(cells.rows) * size_t(cells.cols) * per_column);
+    uint32_t *w = words.data();
+    for (int row = cells.first_row; row < cells.first_row + cells.rows; ++row)
+        for (int col = cells.first_col; col < cells.first_col + cells.cols; ++col, w += per_column) {
+            const size_t cell = size_t(row) * size_t(pages.cols()) + size_t(col);
+            const Interval top = tops[cell];
+            const ZRange range = ranges[cell];
+            if (compact) {
+                w[0] = top.material | compact_height(top.top, cells) << 16;
+                w[1] = compact_height(range.low, cells) | compact_height(range.high, cells) << 16;
+                continue;
+            }
+            w[0] = top.material;
+            w[1] = float_bits(top.top);
+            w[2] = float_bits(range.low);
+            w[3] = float_bits(range.high);
+        }
+    return words;
 }
 
 std::vector<uint32_t> gpu_block_words(const StackBlock &block, bool compact)

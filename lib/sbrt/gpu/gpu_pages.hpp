@@ -34,8 +34,26 @@ constexpr uint64_t GPU_MAX_ATLAS_WORDS = 0x7fffffe0u;
 /// Words of the page marks' halves for `blocks` blocks: a bit a block.
 inline uint32_t gpu_mark_words(int blocks) { return uint32_t((blocks + 31) / 32); }
 
-/// The page table's head for `pages`.
-std::vector<uint32_t> gpu_page_table_head(const StackPages &pages);
+/// The page table's head for `pages`; with `column_pages`, pages of the
+/// blocks' columns follow the blocks' (the fourth word: the first's
+/// number, block_count; else 0).
+std::vector<uint32_t> gpu_page_table_head(const StackPages &pages, bool column_pages = false);
+
+/// Words of a column in a page of columns: its top interval, then its
+/// range; a word each where `compact` (material | bottom << 16, low |
+/// high << 16), else two each (material and the bottom's float bits, the
+/// low's and the high's).
+inline uint32_t gpu_column_words(bool compact) { return compact ? 2 : 4; }
+
+/// \brief The page of block `b`'s columns (shaders/common/layout.glsl,
+/// SBRT_COLUMN_PAGES): for each of its cells, row by row, its top interval
+/// (StackPages::column_tops) and its range of material (column_ranges, the
+/// pyramid's level 0), gpu_column_words each. A model too large for the
+/// GPU to hold these for every column at once: a ray reads its block's
+/// columns page, not its block, where it meets only a top interval.
+/// Throws sbrt::Error where the model holds neither, or where `compact`
+/// is asked of a height that is no voxel boundary.
+std::vector<uint32_t> gpu_column_page_words(const StackPages &pages, int b, bool compact);
 
 /// \brief A block's words in the atlas: for each of its cells, row by row,
 /// where its stack starts (records from the block's first), and where the

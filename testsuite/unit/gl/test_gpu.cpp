@@ -67,7 +67,7 @@ TEST_P(Gpu, TheModelStaysOnTheGpuApartFromThePasses)
     GLint side = 0;
     gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &side);
     {
-        sbrt_gl::GpuModel model(gl, tracer, layout(), size_t(1) << 26);
+        sbrt_gl::GpuModel model(gl, tracer, options(), size_t(1) << 26);
         const GpuMemory want = gpu_memory(m, layout(), side);
         EXPECT_EQ(model.layout(), layout());
         EXPECT_EQ(model.memory().interval_bytes, want.interval_bytes);
@@ -79,7 +79,7 @@ TEST_P(Gpu, TheModelStaysOnTheGpuApartFromThePasses)
         EXPECT_EQ(gl.GetError(), GLenum(GL_NO_ERROR));
     }
     try {
-        sbrt_gl::GpuModel too_large(gl, tracer, layout(), 64);
+        sbrt_gl::GpuModel too_large(gl, tracer, options(), 64);
         ADD_FAILURE() << "a model over the limit went up";
     }
     catch (const Error &e) {

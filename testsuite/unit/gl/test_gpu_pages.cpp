@@ -249,6 +249,72 @@ TEST_P(GpuPages, BandByBandAFrameWhoseBlocksExceedTheAtlasStaysOnTheGpu)
     EXPECT_LT(sent_to_host[2], sent_to_host[0]);
 }
 
+TEST_P(GpuPages, ColumnsInPagesGiveTheWholeModelsHitsAndFrames)
+{
+    const PagedCase c;
+    const Model paged = c.paged(WHOLE_BUDGET, true);
+    Scene hidden;
+    hidden.hidden.assign(c.model.materials().size(), 0);
+    hidden.hidden[1] = 1;
+    hidden.hidden[2] = 1;
+    const Scene translucent = cut_and_translucent_scene(c.model);
+    // the pyramid from level 1, 2 and 3 on: the columns' pages give level
+    // 0, and the levels between are not on the GPU
+    for (int level : {1, 2, 3}) {
+        sbrt_gl::GpuOptions o = options(WHOLE_BUDGET);
+        o.column_pages_from_level = level;
+        {
+            const Tracer t(paged, 1.5);
+            const sbrt_gl::GpuTracer gpu(*context_, t, o);
+            EXPECT_TRUE(gpu.model().form().column_pages);
+            EXPECT_EQ(gpu.pyramid_bytes(), gpu_pyramid_bytes(t.pyramid(), level));
+        }
+        for (const Scene &scene : {Scene{}, hidden, translucent}) {
+            expect_hits_of_the_whole(*context_, c, paged, scene, o);
+            ASSERT_FALSE(HasFatalFailure()) << "from level " << level;
+        }
+    }
+    // shaded frames (the first pass stops at the first level held)
+    Shading lit;
+    lit.light = Shading::light_from(300, 35);
+    const Outputs all{true, true, true};
+    const Renderer on_columns(paged, 1.5, Scene{}, lit, {2, true, 8});
+    const Renderer whole(c.model, 1.5, Scene{}, lit, {2, true, 8});
+    sbrt_gl::GpuOptions o = options(WHOLE_BUDGET);
+    o.column_pages_from_level = 2;
+    sbrt_gl::GpuRenderer gpu_columns(*context_, on_columns, o);
+    sbrt_gl::GpuRenderer gpu_whole(*context_, whole, options(WHOLE_BUDGET));
+    int k = 0;
+    for (const Camera &camera : cameras(whole.tracer(), 43, 39))
+        expect_same_image(gpu_whole.render_image(camera, all, 2),
+                          gpu_columns.render_image(camera, all, 2),
+                          "camera " + std::to_string(k++));
+}
+
+TEST_P(GpuPages, APyramidOverHalfTheBudgetPagesTheColumnsAndStaysExact)
+{
+    const PagedCase c;
+    const Outputs all{true, true, true};
+    const Renderer paged(c.paged(WHOLE_BUDGET, true), 1.5, Scene{}, Shading{}, {2, true, 8});
+    const Tracer &t = paged.tracer();
+    // below twice the pyramid, a quarter of it holds the pyramid from
+    // level 1 on
+    const uint64_t whole = gpu_pyramid_bytes(t.pyramid());
+    const uint64_t budget = 2 * whole - 8;
+    ASSERT_LE(gpu_pyramid_bytes(t.pyramid(), 1), budget / 4);
+    sbrt_gl::GpuRenderer on_pages(*context_, paged, options(budget));
+    const sbrt_gl::GpuModel &model = on_pages.gpu().model();
+    EXPECT_TRUE(model.form().column_pages);
+    EXPECT_EQ(model.pyramid_bytes(), gpu_pyramid_bytes(t.pyramid(), 1));
+    EXPECT_LE(on_pages.gpu().memory().total() + model.pyramid_bytes(), budget);
+    const double tolerance = 2e-5 * 2 * t.frame().radius();
+    int k = 0;
+    for (const Camera &camera : cameras(t, 43, 39))
+        expect_images_agree(paged.render_image(camera, all), on_pages.render_image(camera, all, 2),
+                            tolerance, "camera " + std::to_string(k++));
+    EXPECT_GT(model.pages()->figures().uploads, 0u);
+}
+
 TEST_P(GpuPages, AnotherSceneOfTheModelTakesOverItsBlocksOnTheGpu)
 {
     const PagedCase c;

@@ -9,7 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include "gpu/gpu_layout.hpp"
 #include "gpu/gpu_pages.hpp"
+#include "model/column_ranges.hpp"
+#include "scene/minmax_pyramid.hpp"
 #include "paged_case.hpp"
 
 using namespace sbrt;
@@ -69,6 +72,84 @@ TEST(GpuPages, ABlocksWordsGiveEachCellsStackInEitherForm)
     }
     // the head: blocks of 8, 6 a row (45 columns), 30 blocks' bits a word
     EXPECT_EQ(gpu_page_table_head(pages), (std::vector<uint32_t>{8, 6, 1, 0}));
+}
+
+TEST(GpuPages, AColumnsPageGivesEachCellsTopIntervalAndRangeInEitherForm)
+{
+    const sbrt_test::PagedCase c;
+    const Model paged = c.paged(uint64_t(1) << 30, true);
+    const StackPages &pages = *paged.pages();
+    const std::vector<Interval> tops = column_tops(c.model);
+    const std::vector<ZRange> ranges = column_ranges(c.model);
+    const int cols = c.model.frame().cols;
+    for (int b = 0; b < pages.block_count(); ++b) {
+        const StackBlock cells = pages.block_cells(b);
+        for (bool compact : {true, false}) {
+            const std::vector<uint32_t> words = gpu_column_page_words(pages, b, compact);
+            const uint32_t per = gpu_column_words(compact);
+            ASSERT_EQ(words.size(), size_t(cells.rows) * size_t(cells.cols) * per);
+            for (int r = 0; r < cells.rows; ++r)
+                for (int k = 0; k < cells.cols; ++k) {
+                    const uint32_t *w = &words[size_t(r * cells.cols + k) * per];
+                    const size_t cell = size_t(cells.first_row + r) * size_t(cols) +
+                                        size_t(cells.first_col + k);
+                    float bottom, low, high;
+                    uint32_t material;
+                    if (compact) {
+                        material = w[0] & 0xffffu;
+                        bottom = float(w[0] >> 16);
+                        low = float(w[1] & 0xffffu);
+                        high = float(w[1] >> 16);
+                    }
+                    else {
+                        material = w[0];
+                        std::memcpy(&bottom, &w[1], 4);
+                        std::memcpy(&low, &w[2], 4);
+                        std::memcpy(&high, &w[3], 4);
+                    }
+                    EXPECT_EQ(material, tops[cell].material) << "cell " << cell;
+                    EXPECT_EQ(bottom, tops[cell].top) << "cell " << cell;
+                    EXPECT_EQ(low, ranges[cell].low) << "cell " << cell;
+                    EXPECT_EQ(high, ranges[cell].high) << "cell " << cell;
+                }
+        }
+    }
+    // the columns' pages after the blocks': 60 pages' bits in two words
+    EXPECT_EQ(gpu_page_table_head(pages, true), (std::vector<uint32_t>{8, 6, 2, 30}));
+    // a model without its tops has no columns' pages
+    const Model untopped = c.paged(uint64_t(1) << 30);
+    EXPECT_THROW(gpu_column_page_words(*untopped.pages(), 0, true), Error);
+}
+
+TEST(GpuPages, APyramidFromALevelOnHoldsThoseLevelsAlone)
+{
+    const sbrt_test::PagedCase c;
+    const MinMaxPyramid pyramid(c.model, KeepEveryCell{});
+    ASSERT_GE(pyramid.levels(), 4);
+    for (int first : {0, 1, 3}) {
+        const std::vector<uint32_t> words = make_gpu_pyramid(pyramid, first);
+        EXPECT_EQ(words.size() * 4, gpu_pyramid_bytes(pyramid, first));
+        EXPECT_EQ(words[3], uint32_t(first));
+        for (int level = 0; level < pyramid.levels(); ++level) {
+            const uint32_t *head = &words[size_t(4 * level)];
+            if (level < first) {
+                EXPECT_EQ(head[1], 0u);
+                EXPECT_EQ(head[2], 0u);
+                continue;
+            }
+            ASSERT_EQ(head[1], uint32_t(pyramid.cols(level)));
+            ASSERT_EQ(head[2], uint32_t(pyramid.rows(level)));
+            const ZRange *nodes = reinterpret_cast<const ZRange *>(
+                &words[size_t(4 * GPU_MAX_PYRAMID_LEVELS) + 2 * size_t(head[0])]);
+            for (int y = 0; y < pyramid.rows(level); ++y)
+                for (int x = 0; x < pyramid.cols(level); ++x) {
+                    const ZRange n = nodes[size_t(y) * size_t(head[1]) + size_t(x)];
+                    EXPECT_EQ(n.low, pyramid.node(level, x, y).low);
+                    EXPECT_EQ(n.high, pyramid.node(level, x, y).high);
+                }
+        }
+    }
+    EXPECT_LT(gpu_pyramid_bytes(pyramid, 1) * 3, gpu_pyramid_bytes(pyramid));
 }
 
 TEST(GpuPages, AWideIntervalRefusesTheCompactForm)
