@@ -69,9 +69,10 @@ public:
     /// then runs on the GPU band by band where each band's blocks fit.
     bool begin_band_where_full();
 
-    /// Whether a frame's blocks ever found no room: frames then go in
-    /// bands small enough for each band's blocks to fit.
-    bool crowded() const { return figures_.not_placed > 0; }
+    /// Whether a frame's blocks ever found no room, or the columns are
+    /// paged (a model too large for its pyramid): frames then go in bands
+    /// small enough for each band's pages to fit.
+    bool crowded() const { return figures_.not_placed > 0 || column_pages(); }
     bool compact() const { return compact_; }
     bool column_pages() const { return page_count_ != pages_.block_count(); }
     uint64_t atlas_bytes() const { return residency_.atlas_words() * 4; }
