@@ -19,7 +19,9 @@
 
 namespace {
 
-/// The whole of a text file (keys=); a fatal error where it cannot be read.
+/// The whole of a text file (keys=). Where it cannot be read, throws the
+/// request's error (bad_request): a GRASS error on the command line, the
+/// view server's "error" reply.
 std::string read_text_file(const std::string &path)
 {
     std::ifstream in(path);

@@ -17,16 +17,18 @@
 /// the extension); the request itself when there is one frame.
 RenderRequest frame_request(const RenderRequest &request, int frame);
 
-/// Fatal error unless png= names each frame's file: one %d (flags and
-/// width allowed) or none.
+/// Throws the request's error (bad_request), which run_reporting_errors
+/// turns into a GRASS error, unless png= names each frame's file: one %d
+/// (flags and width allowed) or none.
 void check_png_pattern(const std::string &png);
 
 /// Whether every output of this frame's request exists (the PNG last,
 /// after its maps): a rerun skips it unless --overwrite.
 bool frame_finished(const RenderRequest &frame);
 
-/// Fatal error, before any frame is rendered, where video= cannot be made
-/// (no ffmpeg on the PATH, an unknown extension).
+/// Throws the request's error (bad_request), which run_reporting_errors
+/// turns into a GRASS error before any frame is rendered, where video=
+/// cannot be made (no ffmpeg on the PATH, an unknown extension).
 void check_video(const RenderRequest &request);
 
 /// Registers <output>_NNNN of frames first..last in the space-time raster
