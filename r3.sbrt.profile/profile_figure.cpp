@@ -514,8 +514,9 @@ FigureAxes figure_axes(double length, sbrt::ProfileExtent solid, std::optional<d
 FigureLayout draw_profile_figure(const FigureAxes &axes, const sbrt::ClassProfile &profile,
                                  const FigureContent &content, const std::string &png)
 {
-    if (profile.cols != axes.plot_width || profile.rows != axes.plot_height)
-        throw sbrt::Error("the profile's figure needs the classes at its plot's pixels");
+    // the classes at the plot's pixels (main.cpp asks for them so)
+    SBRT_CHECK_EQ(profile.cols, axes.plot_width, "draw_profile_figure");
+    SBRT_CHECK_EQ(profile.rows, axes.plot_height, "draw_profile_figure");
     // the classes cut, ascending
     std::unordered_map<int32_t, std::array<uint8_t, 3>> colors;
     std::unordered_map<int32_t, const LegendClass *> legend;

@@ -173,26 +173,28 @@ Answers OptionTable::answer(const std::vector<std::string> &words) const
         if (word.size() > 1 && word[0] == '-' && word[1] != '-') {
             for (size_t k = 1; k < word.size(); ++k) {
                 if (flag_keys_.find(word[k]) == std::string::npos)
-                    sbrt::fail("unknown flag -" + shortened(std::string(1, word[k]), 8));
+                    bad_request(_("unknown flag -%s"),
+                                shortened(std::string(1, word[k]), 8).c_str());
                 flags += word[k];
             }
             continue;
         }
         const size_t equals = word.find('=');
         if (equals == std::string::npos || equals == 0)
-            sbrt::fail("<" + shortened(word) + "> is neither key=value nor a -flag");
+            bad_request(_("<%s> is neither key=value nor a -flag"), shortened(word).c_str());
         const std::string key = word.substr(0, equals), value = word.substr(equals + 1);
         const auto info = std::find_if(infos_.begin(), infos_.end(),
                                        [&](const OptionInfo &i) { return i.key == key; });
         if (info == infos_.end())
-            sbrt::fail("unknown option <" + shortened(key) + ">");
+            bad_request(_("unknown option <%s>"), shortened(key).c_str());
         if (value.empty())
-            sbrt::fail(key + "=: give a value (or leave the option out)");
+            bad_request(_("%s=: give a value (or leave the option out)"), key.c_str());
         if (values.count(key))
-            sbrt::fail(key + "= is given twice; give each option once");
+            bad_request(_("%s= is given twice; give each option once"), key.c_str());
         if (!allowed(*info, value))
-            sbrt::fail(key + "=" + shortened(value) + ": not " +
-                       (info->type == TYPE_STRING ? "one of " : "within ") + info->choices);
+            bad_request(info->type == TYPE_STRING ? _("%s=%s: not one of %s")
+                                                  : _("%s=%s: not within %s"),
+                        key.c_str(), shortened(value).c_str(), info->choices.c_str());
         check_shape(*info, value);
         values[key] = value;
     }

@@ -162,9 +162,9 @@ ProbabilityChannels read_probability_channels(const char *name, const sbrt::Mode
     ProbabilityChannels out;
     out.channels = read_channels_map(name, model);
     if (!out.channels)
-        sbrt::fail("SBRT <", name, "> has no property channels: ", option,
-                   " needs probabilities per voxel (import with r3.sbrt.convert "
-                   "properties=)");
+        fail_with(_("SBRT <%s> has no property channels: %s needs probabilities per voxel "
+                    "(import with r3.sbrt.convert properties=)"),
+                  name, option);
     out.summed = sbrt::probability_channels(*out.channels, probability);
     return out;
 }

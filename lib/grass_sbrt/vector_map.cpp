@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "util/error.hpp"
+#include "module_errors.hpp"
 
 namespace sbrt_grass {
 
@@ -59,15 +60,17 @@ int layer_number(Map_info &map, const std::string &layer)
     const long number = std::strtol(layer.c_str(), &end, 10);
     if (!layer.empty() && *end == '\0' && errno == 0) {
         if (number < -1 || number > 2147483647L)
-            sbrt::fail("layer=", layer, ": not a layer (a number from 1 up, -1 for every "
-                       "layer, or the name of a layer of the map)");
+            fail_with(_("layer=%s: not a layer (a number from 1 up, -1 for every layer, or "
+                        "the name of a layer of the map)"),
+                      layer.c_str());
         return int(number);
     }
     if (const field_info *info = Vect_get_field_by_name(&map, layer.c_str()))
         return info->number;
-    sbrt::fail("layer=", layer, ": vector map <", Vect_get_full_name(&map),
-               "> has no layer of that name (v.db.connect -p map=", Vect_get_full_name(&map),
-               " lists its layers; give a layer's number or name, or -1 for every layer)");
+    const char *name = Vect_get_full_name(&map);
+    fail_with(_("layer=%s: vector map <%s> has no layer of that name (v.db.connect -p map=%s "
+                "lists its layers; give a layer's number or name, or -1 for every layer)"),
+              layer.c_str(), name, name);
 }
 
 } // namespace sbrt_grass
