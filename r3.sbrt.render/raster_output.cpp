@@ -72,9 +72,9 @@ ImageMaps::ImageMaps(const RenderRequest &request, const struct Cell_head &windo
     : request_(request), window_(window), cols_(window.cols), cells_(size_t(window.cols)),
       dcells_(size_t(window.cols))
 {
-    // Measured on B, 1056 x 884 (three RGB maps): LZ4 writes in 100 ms of
-    // render against 125 with GRASS's default ZSTD, for 444 KB against 326
-    // KB; an image is rendered again more often than it is stored for long.
+    // LZ4 writes faster than GRASS's default ZSTD, for larger maps
+    // (docs/performance.md); an image is rendered again more often than it
+    // is stored for long.
     // The user's GRASS_COMPRESSOR stays in force. (Before the raster
     // library's first call, which reads it.)
     setenv("GRASS_COMPRESSOR", "LZ4", 0);

@@ -22,7 +22,7 @@ const char *const OUTPUT_KEYS[] = {"output", "material", "hit_elevation", "depth
 
 /// memory= of a request that gives none: frames follow one another, and a
 /// budget below the blocks they reach decodes those again for every frame
-/// (a national model's orbit frames took 3 times as long within 300 MB).
+/// (a national model's orbit frames within 300 MB: docs/performance.md).
 /// A quarter of the memory this process can have, at least GRASS's 300 MB.
 uint64_t view_server_memory()
 {

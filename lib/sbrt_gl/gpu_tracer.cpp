@@ -395,7 +395,7 @@ void GpuTracer::shade_band(const sbrt::Camera &camera, int first_row, int row_co
     const sbrt::PixelShader &shader = host_shader(shading);
     // 256 rays a thread: a ray traced alone takes microseconds, starting a
     // thread tens (the few dozen a property view sends back: one thread;
-    // an H200's frame took 0.33 ms on one host thread, 0.54 on 16)
+    // 16 host threads made a frame slower than one: docs/performance.md)
     constexpr uint32_t CHUNK = 256;
     const int chunks = int((over + CHUNK - 1) / CHUNK);
     sbrt::for_each_row(0, chunks, cpu_threads, [&](int chunk) {

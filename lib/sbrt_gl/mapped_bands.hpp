@@ -23,9 +23,9 @@ namespace sbrt_gl {
 
 /// \brief The shaded bands of one frame at a time. On a GPU with memory of
 /// its own (`staged`) the shading pass writes a band there and the GPU's
-/// copy engine brings it into the mapped buffer before its fence (on an
-/// H100 a 4224 x 3536 frame took 2.6 ms so, 3.1 ms with the shader
-/// writing across PCIe); on a software renderer, whose GPU memory is host
+/// copy engine brings it into the mapped buffer before its fence (sooner
+/// than the shader writing across PCIe: docs/performance.md); on a
+/// software renderer, whose GPU memory is host
 /// memory, the shading pass writes the mapped buffer itself.
 /// The GPU tracer's options choose (GpuOptions::bands). Band k of a
 /// frame lies in the next slot: the renderer has at most
@@ -40,8 +40,8 @@ public:
     /// Staged bands: the first this many pixels the GPU sends back to the
     /// host (over its loop budget, or colours by voxel it cannot decide)
     /// come into the mapped buffer with the outputs, by the GPU's copy: a
-    /// read of GPU memory by the host waits for all the GL queued (0.5-1
-    /// ms on an H100's frame of 0.2). More are read back after the fence.
+    /// read of GPU memory by the host waits for all the GL queued (longer
+    /// than the frame itself). More are read back after the fence.
     static constexpr size_t STAGED_SENT_BACK = 4096;
     static_assert(SLOTS >= int(sbrt::RowTracer::SINK_BANDS) + 1,
                   "a slot for each band out and one dispatched ahead");

@@ -289,10 +289,10 @@ void write_pixel(uint index, vec3 point, uint code, vec3 n, vec4 veil_t, float d
 // Where the pixel's ray ended, kept by the entry file's finish and the
 // overlays' walks and written once after the trace (shade.comp's
 // write_kept_pixel): one copy of the shading in the program. A driver that
-// inlines every call compiles each copy (NVIDIA's took 100 s for the
-// boreholes' program with a copy at each end). Only what the end alone
-// knows is kept, and held through the trace's loop: the veil, a cell
-// face's normal and the depth are found when written.
+// inlines every call compiles each copy (NVIDIA's took very long over the
+// boreholes' program with a copy at each end: docs/performance.md). Only
+// what the end alone knows is kept, and held through the trace's loop: the
+// veil, a cell face's normal and the depth are found when written.
 bool kept = false;
 uint kept_index = 0u, kept_code = 0u;
 vec3 kept_point = vec3(0.0), kept_n = vec3(0.0);

@@ -280,8 +280,8 @@ RawBlock decompress_block(const uint8_t *data, const BlockEntry &e, const std::s
 {
     RawBlock raw(e.raw); // every byte written by the decompressor
     // one context a thread, kept: a paged model decompresses block after
-    // block on the tracer's threads (a context made each time took 2 % of
-    // a national view)
+    // block on the tracer's threads (a context made each time showed in a
+    // national view's profile)
     thread_local const DecompressorPtr context(ZSTD_createDCtx());
     const size_t n = ZSTD_decompressDCtx(context.get(), raw.data(), raw.size(),
                                          data + e.offset, e.compressed);

@@ -70,10 +70,10 @@ PngFile::PngFile(const std::string &path, int rows, int cols)
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     // rendered images: large flat areas; level 3 is close to 6 in size
     // and about twice as fast
-    // Measured on B, 1056 x 884: zlib level 1 with the SUB filter alone
-    // encodes in 9.5 ms against 26.7 at level 3 with adaptive filtering,
-    // for 107 KB against 101 KB: an animation's frames are written
-    // while the next ones trace on the same cores
+    // zlib level 1 with the SUB filter alone encodes several times as fast
+    // as level 3 with adaptive filtering, for files a few per cent larger
+    // (docs/performance.md): an animation's frames are written while the
+    // next ones trace on the same cores
     png_set_compression_level(png, 1);
     png_set_filter(png, 0, PNG_FILTER_SUB);
     png_write_info(png, info);

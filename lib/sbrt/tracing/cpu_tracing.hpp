@@ -41,8 +41,8 @@ void for_each_block(int first, int end, int cols, const SpanFunction &span_funct
 }
 
 /// Tile side (pixels) and node budget of the coarse first pass. Measured on
-/// models A to C at 1056 x 884: tiles of 4 pixels cost more than they save
-/// (0.6x on A); 8 and 16, with budgets of 16 to 64, are within noise.
+/// models A to C at 1056 x 884: tiles of 4 pixels cost more than they save;
+/// 8 and 16, with budgets of 16 to 64, are within noise.
 constexpr int FIRST_PASS_TILE = 8, FIRST_PASS_BUDGET = 32;
 
 /// What the coarse first pass did: its tiles, those whose rays all meet

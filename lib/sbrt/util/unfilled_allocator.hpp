@@ -2,9 +2,9 @@
  * MODULE:    lib/sbrt (r3.sbrt addon)
  * PURPOSE:   An allocator for large arrays of plain records that the code
  *            writes itself: no zero fill first, and blocks of 2 MiB and
- *            more on huge pages where Linux allows (a page fault costs
- *            about 10 us on the virtual machines measured: 16,000 of them
- *            for a 67 MB image of hits, 5,000 for B's intervals)
+ *            more on huge pages where Linux allows (page faults are
+ *            slow on virtual machines: 16,000 of them for a 67 MB image
+ *            of hits, 5,000 for B's intervals)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_UNFILLED_ALLOCATOR_HPP
