@@ -21,11 +21,6 @@ void DetailPart::read(const Answers &a)
     drawn_factor = 1;
 }
 
-std::string DetailPart::key() const
-{
-    return coarse ? "coarse" : "exact";
-}
-
 std::string DetailPart::coarse_note() const
 {
     if (drawn_factor <= 1)

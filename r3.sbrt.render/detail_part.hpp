@@ -12,17 +12,18 @@
 
 #include "option_table.hpp"
 
-/// \brief detail=: which level of the model a render draws.
+/// \brief detail=: which level of the model a render draws. No key of its
+/// own: RenderSession keeps a level of each detail, every stage cached in
+/// its level, so detail= picks the level instead of keying a stage.
 struct DetailPart {
     bool coarse = false; ///< detail=coarse asked for
     /// Set by RenderSession::load: fine cells a side per cell of the level
     /// drawn (1: exact), for the messages and the maps' history that say a
-    /// frame is coarse. Not part of the key: it follows from the model.
+    /// frame is coarse. It follows from the model, not from an option.
     int drawn_factor = 1;
 
     static void define(OptionTable &table);
     void read(const Answers &answers);
-    std::string key() const;
     /// "coarse level of detail, 1 cell in N a side (detail=coarse)"
     /// where the frame drawn is coarse, else empty.
     std::string coarse_note() const;
