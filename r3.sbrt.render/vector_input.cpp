@@ -5,11 +5,7 @@
  ****************************************************************************/
 #include "vector_input.hpp"
 
-#include <algorithm>
-#include <optional>
-
 #include "grass.hpp"
-#include "layer_table.hpp"
 #include "request_error.hpp"
 #include "vector_map.hpp"
 extern "C" {
@@ -19,7 +15,6 @@ extern "C" {
 
 using sbrt_grass::LayerTable;
 using sbrt_grass::VectorMap;
-using sbrt_grass::selected_categories;
 
 namespace {
 
@@ -92,47 +87,14 @@ std::map<int, std::vector<LogRow>> logged_intervals(LayerTable &table,
 
 BoreholeInput read_boreholes(const RenderRequest &request)
 {
-    VectorMap vector(request.boreholes, request.layer.c_str(), "boreholes");
-    const int layer = Vect_get_field_number(&vector.map(), request.layer.c_str());
-    BoreholeInput in;
-    in.is_3d = Vect_is_3d(&vector.map());
     // the layer's table, opened once for where= and the logs
-    std::optional<LayerTable> table;
-    if (!request.where.empty() || !request.log_class.empty())
-        table.emplace(vector.map(), layer,
-                      request.where.empty() ? "log_class=" : "where=");
-    std::vector<int> selected;
-    if (!request.where.empty())
-        selected = selected_categories(*table, request.where);
-    size_t others = 0;
-    while (const int type = vector.next()) {
-        if (!(type & GV_POINTS)) {
-            others += (type & (GV_LINES | GV_FACE)) != 0;
-            continue;
-        }
-        BoreholePoint p;
-        if (!Vect_cat_get(vector.cats(), layer, &p.cat) && layer > 0)
-            continue; // not in layer=
-        if (!request.where.empty() &&
-            !std::binary_search(selected.begin(), selected.end(), p.cat))
-            continue;
-        p.x = vector.points().x[0];
-        p.y = vector.points().y[0];
-        p.z = vector.points().z[0];
-        in.points.push_back(p);
-    }
-    if (in.points.empty())
-        bad_request(_("boreholes=%s has no points in layer %d%s (it holds %zu "
-                        "lines or boundaries): boreholes= needs a vector map of "
-                        "points"),
-                      request.boreholes.c_str(), layer,
-                      request.where.empty() ? "" : _(" that where= selects"), others);
-    if (others)
-        G_warning(_("boreholes=%s: %zu lines or boundaries skipped (only points "
-                    "are boreholes)"),
-                  request.boreholes.c_str(), others);
+    sbrt_grass::PointsMap map({"boreholes", request.boreholes, request.layer, request.where},
+                              request.log_class.empty() ? nullptr : "log_class=");
+    BoreholeInput in;
+    in.is_3d = Vect_is_3d(&map.map());
+    in.points = map.selected();
     if (!request.log_class.empty())
-        in.logs = logged_intervals(*table, request);
+        in.logs = logged_intervals(*map.table(), request);
     return in;
 }
 

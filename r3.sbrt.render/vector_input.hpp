@@ -13,12 +13,10 @@
 
 #include "render_options.hpp"
 #include "scene/scene.hpp"
+#include "vector_points.hpp"
 
 /// \brief A borehole's collar: its category in layer= and its point.
-struct BoreholePoint {
-    int cat = -1;
-    double x = 0, y = 0, z = 0;
-};
+using BoreholePoint = sbrt_grass::VectorPoint;
 
 /// \brief One logged interval as the table gives it.
 struct LogRow {

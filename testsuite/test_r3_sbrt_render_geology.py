@@ -287,6 +287,7 @@ class TestGeologicalOperations(TestCase):
             dict(boreholes="only_lines"),       # lines where points are needed
             dict(fence="one_point"),            # points where lines are needed
             dict(boreholes="one_point", where="cat = 99"),  # no point selected
+            dict(boreholes="one_point", layer="abc"),  # no layer of that name
             dict(boreholes="nosuchmap"),
             dict(flags="b"),                    # -b needs boreholes=
         ):
