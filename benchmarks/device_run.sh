@@ -34,6 +34,8 @@
 #              49's GPU pages: its blocks brought up as rays reach them,
 #              cold and warm, at gpu_memory= 1024, 256 and 160 MB, against
 #              the model uploaded whole and the CPU (trace_bench gpu_pages);
+#              and with its columns in pages (the pyramid from level 2 on,
+#              as the 16x model goes up within 1 GB);
 #            - what building the GPU's programs costs from empty caches
 #              (ours and the driver's): B's class view, with 100
 #              boreholes, and the property view (programs_ms);
@@ -123,6 +125,9 @@ if run pages && [ -f "$bundle/sbrt/national.tar.gz" ]; then
         "$bundle/trace_bench" gpu_pages "$data/national" azimuth=225 elevation=30 zexag=600 \
             $px gpu_memory=1024,256,160 whole=1 repeat=5 threads="$cores" label=national |
             sed "s/^/device /"
+        "$bundle/trace_bench" gpu_pages "$data/national" azimuth=225 elevation=30 zexag=600 \
+            $px gpu_memory=1024,64 columns=2 cpu=0 repeat=5 threads="$cores" \
+            label=national_columns | sed "s/^/device /"
     done
 fi
 

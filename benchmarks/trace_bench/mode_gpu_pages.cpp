@@ -9,7 +9,9 @@
  *            atlas did, the rays traced on the CPU, the pixels apart from
  *            the CPU's frame (timed before, cold and warm: cpu=0, none);
  *            with whole=1 the same frames of the model decoded and
- *            uploaded whole. Each renderer opens the model afresh (no
+ *            uploaded whole; with columns=L the columns' tops and ranges
+ *            in pages, the pyramid from level L on (as a model many times
+ *            national goes up). Each renderer opens the model afresh (no
  *            block decoded before its first frame).
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
@@ -70,7 +72,7 @@ void print_gpu_frames(const sbrt_gl::GlContext &context, const Renderer &rendere
                 "cold_ms=%.1f upload_ms=%.1f warm_ms=%.2f gpu_total_mb=%.1f blocks_up=%d "
                 "atlas_mb=%.1f held_mb=%.1f uploads=%llu not_placed=%llu cold_passes=%d "
                 "page_ms=%.1f cold_cpu_rays=%zu warm_cpu_rays=%zu pixels_apart_from_cpu=%zu "
-                "(checksum %zu)\n",
+                "column_pages=%d first_level=%d band_restarts=%llu (checksum %zu)\n",
                 bench.args.get("label", "view").c_str(), what.c_str(),
                 on_gpu->gpu().gl_renderer().c_str(), camera.cols(), camera.rows(),
                 double(options.page_budget_bytes) / (1 << 20), cold_ms, cold.gpu.upload_ms,
@@ -80,7 +82,9 @@ void print_gpu_frames(const sbrt_gl::GlContext &context, const Renderer &rendere
                 pages ? double(pages->held_bytes()) / (1 << 20) : 0,
                 (unsigned long long)f.uploads, (unsigned long long)f.not_placed,
                 cold.gpu.page_passes, cold.gpu.page_ms, cold.gpu.over_budget,
-                warm.gpu.over_budget, apart, checksum);
+                warm.gpu.over_budget, apart, int(on_gpu->gpu().model().plan().column_pages),
+                on_gpu->gpu().model().plan().first_level, (unsigned long long)f.band_restarts,
+                checksum);
 }
 
 } // namespace
@@ -123,6 +127,7 @@ void run_gpu_pages(const Bench &bench)
     for (double mb : budgets) {
         sbrt_gl::GpuOptions options = sbrt_gl::GpuOptions::from_environment();
         options.page_budget_bytes = uint64_t(mb * (1 << 20));
+        options.column_pages_from_level = std::stoi(args.get("columns", "0"));
         try {
             const std::unique_ptr<Renderer> renderer = fresh_renderer(nullptr);
             print_gpu_frames(*context, *renderer, options, camera, bench, "paged", cpu);
