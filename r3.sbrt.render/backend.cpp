@@ -57,7 +57,7 @@ void report_gpu_pages(const sbrt_gl::GpuModel &model, const sbrt_gl::GpuStats &f
 {
     const sbrt_gl::GpuPageAtlas &pages = *model.pages();
     const sbrt_gl::PageFigures &f = pages.figures();
-    if (model.plan().column_pages)
+    if (model.plan().form.column_pages)
         G_verbose_message(_("GPU: the columns' top intervals and ranges in pages beside the "
                             "blocks', the empty-space pyramid from level %d on"),
                           model.plan().first_level);

@@ -82,7 +82,7 @@ void print_gpu_frames(const sbrt_gl::GlContext &context, const Renderer &rendere
                 pages ? double(pages->held_bytes()) / (1 << 20) : 0,
                 (unsigned long long)f.uploads, (unsigned long long)f.not_placed,
                 cold.gpu.page_passes, cold.gpu.page_ms, cold.gpu.over_budget,
-                warm.gpu.over_budget, apart, int(on_gpu->gpu().model().plan().column_pages),
+                warm.gpu.over_budget, apart, int(on_gpu->gpu().model().plan().form.column_pages),
                 on_gpu->gpu().model().plan().first_level, (unsigned long long)f.band_restarts,
                 checksum);
 }

@@ -103,6 +103,7 @@ std::vector<const char *> pass_sources(Pass pass, const ModelForm &form,
             form.paged ? "#define SBRT_PAGED 1\n" : "",
             form.column_tops ? "#define SBRT_COLUMN_TOPS 1\n" : "",
             form.column_pages ? "#define SBRT_COLUMN_PAGES 1\n" : "",
+            form.column_ranges ? "#define SBRT_COLUMN_RANGES 1\n" : "",
             compact_on_gpu(model) ? "#define SBRT_COMPACT_INTERVALS 1\n" : "",
             count_bytes == 1   ? "#define SBRT_COUNT_BYTES 1\n"
             : count_bytes == 2 ? "#define SBRT_COUNT_BYTES 2\n"

@@ -62,7 +62,20 @@ uint64_t whole_tops_bytes(const sbrt::StackPages &pages, bool compact)
     return uint64_t(tops.size()) * tops.record_bytes();
 }
 
-/// How a paged model's pyramid and tops go up within `budget` bytes
+/// The first level from which a paged model's pyramid goes up beside its
+/// columns' pages: the first to take at most a quarter of `budget` (and
+/// fit `limit`), or 0 where none does.
+int first_level_beside_pages(const sbrt::MinMaxPyramid &pyramid, uint64_t budget, size_t limit)
+{
+    for (int level = 1; level < pyramid.levels(); ++level) {
+        const uint64_t bytes = sbrt::gpu_pyramid_bytes(pyramid, level);
+        if (bytes <= budget / 4 && bytes <= limit)
+            return level;
+    }
+    return 0;
+}
+
+/// How a paged model's pyramid and columns go up within `budget` bytes
 /// (GpuModel's comment); checked before a word is made: the pyramid of a
 /// model 16 times national takes more than a gigabyte.
 PagedPlan plan_paging(const sbrt::Tracer &tracer, const GpuOptions &options, size_t limit)
@@ -72,26 +85,37 @@ PagedPlan plan_paging(const sbrt::Tracer &tracer, const GpuOptions &options, siz
     const sbrt::MinMaxPyramid &pyramid = tracer.pyramid();
     const sbrt::StackPages &pages = *tracer.model().pages();
     const uint64_t budget = options.page_budget_bytes;
-    const bool pages_columns = pages.has_column_tops() && pages.has_column_ranges();
-    if (options.column_pages_from_level > 0 && pages_columns)
-        return {std::min(options.column_pages_from_level, std::max(pyramid.levels() - 1, 1)),
-                true};
-    const uint64_t whole = sbrt::gpu_pyramid_bytes(pyramid);
-    const uint64_t rest = budget - std::min(budget, whole + page_table_bytes(pages, false));
-    const uint64_t tops = whole_tops_bytes(pages, compact_on_gpu(tracer.model()));
-    const bool pyramid_fits = whole <= budget / 2 && whole <= limit;
-    if (pyramid_fits && (!pages.has_column_tops() || (tops > 0 && tops <= rest / 2 &&
-                                                      tops <= limit)))
-        return {};
-    if (pages_columns)
-        for (int level = 1; level < pyramid.levels(); ++level) {
-            const uint64_t bytes = sbrt::gpu_pyramid_bytes(pyramid, level);
-            if (bytes <= budget / 4 && bytes <= limit)
-                return {level, true};
-        }
-    if (pyramid_fits)
-        return {}; // the tops stay on the host: rays read blocks
-    sbrt::fail("the model's empty-space pyramid takes ", megabytes(whole),
+    PagedPlan plan;
+    plan.form.compact = compact_on_gpu(tracer.model());
+    // (a pyramid of one level has none above the columns to climb)
+    const bool pages_columns =
+        pages.has_column_tops() && pages.has_column_ranges() && pyramid.levels() > 1;
+    if (pages_columns && options.column_pages_from_level > 0) {
+        plan.first_level = std::min(options.column_pages_from_level, pyramid.levels() - 1);
+        plan.form.column_pages = true;
+        return plan;
+    }
+    // level 0 as the model's column ranges (kept from scene to scene), the
+    // scene's levels above; without the ranges, all in the pyramid
+    const bool ranges = pages.has_column_ranges() && pyramid.levels() > 1;
+    const uint64_t range_bytes = ranges ? uint64_t(pages.column_ranges().size()) * 8 : 0;
+    const uint64_t above = sbrt::gpu_pyramid_bytes(pyramid, ranges ? 1 : 0);
+    const bool fits = range_bytes + above <= budget / 2 && range_bytes <= limit && above <= limit;
+    const uint64_t rest =
+        budget - std::min(budget, range_bytes + above + page_table_bytes(pages, false));
+    const uint64_t tops = whole_tops_bytes(pages, plan.form.compact);
+    const bool tops_fit = tops > 0 && tops <= rest / 2 && tops <= limit;
+    if (fits) { // (tops that do not fit stay on the host: rays read blocks)
+        plan.first_level = ranges ? 1 : 0;
+        plan.form.ranges_whole = ranges;
+        plan.form.tops_whole = tops_fit;
+        return plan;
+    }
+    if (pages_columns && (plan.first_level = first_level_beside_pages(pyramid, budget, limit))) {
+        plan.form.column_pages = true;
+        return plan;
+    }
+    sbrt::fail("the model's empty-space pyramid takes ", megabytes(range_bytes + above),
                " MB on the GPU, more than half of gpu_memory (", budget >> 20, " MB), ",
                pages.has_column_tops() ? "and its levels above the columns do not fit a quarter"
                                        : "and the model holds no column tops to page its columns",
@@ -136,36 +160,29 @@ void GpuModel::open_pages(const sbrt::Model &model, uint64_t budget_bytes,
     if (sbrt::gpu_overlay_mode(tracer_) != sbrt::GpuOverlayMode::none)
         sbrt::fail("boreholes and fence panels on the GPU need the model read whole, "
                    "not block by block");
-    // the pyramid and the page table are a part of the budget (boreholes,
-    // with a pyramid of their own, are not paged)
+    // the pyramid, the page table and the columns held whole are a part of
+    // the budget (boreholes, with a pyramid of their own, are not paged)
     const sbrt::StackPages &pages = *model.pages();
-    const uint64_t table_bytes = page_table_bytes(pages, plan_.column_pages);
-    budget_bytes -= std::min<uint64_t>(budget_bytes, pyramid_.bytes() + table_bytes);
-    const bool compact = compact_on_gpu(model);
-    // the tops as the shader reads intervals, where they fit whole
-    const uint64_t tops_bytes = whole_tops_bytes(pages, compact);
-    if (!plan_.column_pages && tops_bytes > 0 && tops_bytes <= budget_bytes / 2 &&
-        tops_bytes <= max_block_bytes_) {
-        const void *records = pages.column_tops().visit(
-            [](const auto *first) { return static_cast<const void *>(first); });
-        column_tops_.emplace(gl_, GL_SHADER_STORAGE_BUFFER, size_t(tops_bytes), records);
-        budget_bytes -= tops_bytes;
-    }
+    const PagedForm &form = plan_.form;
+    const uint64_t table_bytes = page_table_bytes(pages, form.column_pages);
+    const uint64_t column_bytes =
+        (form.ranges_whole ? uint64_t(pages.column_ranges().size()) * 8 : 0) +
+        (form.tops_whole ? whole_tops_bytes(pages, form.compact) : 0);
+    budget_bytes -= std::min<uint64_t>(budget_bytes, pyramid_.bytes() + table_bytes + column_bytes);
     if (atlas_words(budget_bytes, max_block_bytes_) == 0)
         sbrt::fail("gpu_memory leaves no room for the model's blocks beside its empty-space "
                    "pyramid and page table: give more, or render with backend=cpu");
     // the atlas of another scene of this model, its blocks up, where kept
     if (kept_atlas && *kept_atlas &&
-        (*kept_atlas)->serves(pages, compact, plan_.column_pages, budget_bytes, max_block_bytes_))
+        (*kept_atlas)->serves(pages, form, budget_bytes, max_block_bytes_))
         pages_ = *kept_atlas;
     else
-        pages_ = std::make_shared<GpuPageAtlas>(gl_, model.shared_pages(), compact,
-                                                plan_.column_pages, budget_bytes,
+        pages_ = std::make_shared<GpuPageAtlas>(gl_, model.shared_pages(), form, budget_bytes,
                                                 max_block_bytes_, 0);
     if (kept_atlas)
         *kept_atlas = pages_;
     memory_.index_bytes = table_bytes;
-    memory_.interval_bytes = pages_->atlas_bytes() + (column_tops_ ? column_tops_->bytes() : 0);
+    memory_.interval_bytes = pages_->atlas_bytes() + pages_->column_bytes();
 }
 
 void GpuModel::upload_stacks(const sbrt::Model &model)
@@ -199,11 +216,8 @@ void GpuModel::upload_stacks(const sbrt::Model &model)
 
 void GpuModel::bind() const
 {
-    if (pages_) {
+    if (pages_)
         pages_->bind();
-        if (column_tops_)
-            column_tops_->bind(15);
-    }
     else if (layout_ == sbrt::GpuLayout::ssbo) {
         group_offsets_->bind(0);
         intervals_->bind(1);

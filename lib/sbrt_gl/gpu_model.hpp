@@ -25,18 +25,19 @@ struct ModelForm {
     sbrt::GpuLayout layout = sbrt::GpuLayout::ssbo;
     bool paged = false;       ///< its blocks in a page atlas (SBRT_PAGED)
     bool column_tops = false; ///< with each column's top interval (SBRT_COLUMN_TOPS)
-    /// ...in pages of the blocks' columns, with their ranges: the
-    /// pyramid's level 0 (SBRT_COLUMN_PAGES)
+    /// each column's range (the pyramid's level 0) beside the pyramid's
+    /// levels above (SBRT_COLUMN_RANGES)
+    bool column_ranges = false;
+    /// both in pages of the blocks' columns (SBRT_COLUMN_PAGES)
     bool column_pages = false;
 };
 
-/// How a paged model goes to the GPU within its budget (GpuModel): its
-/// pyramid from `first_level` on, and its columns' top intervals and
-/// ranges in pages of their own where the pyramid and the tops do not fit
-/// whole.
+/// How a paged model goes to the GPU within its budget (GpuModel): the
+/// scene's pyramid from `first_level` on, and what the atlas holds beside
+/// the blocks (its columns' ranges and top intervals whole, or in pages).
 struct PagedPlan {
     int first_level = 0;
-    bool column_pages = false;
+    PagedForm form;
 };
 
 /// \brief The resident part of a GPU tracer: the model of `tracer` uploaded
@@ -48,15 +49,16 @@ struct PagedPlan {
 /// the bindings the shaders declare (shaders/common/layout.glsl).
 /// A paged model (Model::is_paged) goes up as its blocks are wanted, into
 /// an atlas (GpuPageAtlas; layout ssbo, no boreholes or curtains) within
-/// `page_budget_bytes` with its pyramid (at most half of it) and each
-/// column's top interval, where the model holds them
+/// `page_budget_bytes`. Beside it, held by the atlas (and so kept with it
+/// from one scene to the next): each column's range, the pyramid's level 0,
+/// with the scene's levels above (together at most half the budget), and
+/// each column's top interval where the model holds them
 /// (StackPages::column_tops) and they take at most half of what is left:
 /// a ray that meets only a column's top interval needs no block. Where
 /// they do not fit so (a model many times national), the columns' top
-/// intervals and ranges (the pyramid's level 0) go up in pages of their
-/// own as rays want them, and the pyramid from the first level that takes
-/// at most a quarter of the budget (an error where none does, or where
-/// the model holds no tops).
+/// intervals and ranges go up in pages of their own as rays want them, and
+/// the pyramid from the first level that takes at most a quarter of the
+/// budget (an error where none does, or where the model holds no tops).
 class GpuModel {
 public:
     /// `max_block_bytes`: the GPU's largest storage buffer binding (an
@@ -83,8 +85,9 @@ public:
     /// How its programs read it.
     ModelForm form() const
     {
-        return {layout_, pages_ != nullptr, column_tops_.has_value() || plan_.column_pages,
-                plan_.column_pages};
+        const PagedForm &p = plan_.form;
+        return {layout_, pages_ != nullptr, p.tops_whole || p.column_pages, p.ranges_whole,
+                p.column_pages};
     }
     /// How a paged model went up within its budget.
     const PagedPlan &plan() const { return plan_; }
@@ -109,9 +112,7 @@ private:
     sbrt::GpuLayout layout_;
     PagedPlan plan_; ///< a paged model's
     sbrt::GpuMemory memory_;
-    std::shared_ptr<GpuPageAtlas> pages_; ///< a paged model's blocks
-    /// ...and each column's top interval (binding 15), where it has them
-    std::optional<GlBuffer> column_tops_;
+    std::shared_ptr<GpuPageAtlas> pages_; ///< a paged model's blocks and columns
     /// the stacks: group offsets, stack counts, intervals (ssbo), or the
     /// index and the intervals as textures
     std::optional<GlBuffer> group_offsets_, counts_, intervals_;

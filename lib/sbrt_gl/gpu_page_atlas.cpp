@@ -28,6 +28,15 @@ std::vector<uint32_t> empty_table(const sbrt::StackPages &pages, bool column_pag
     return words;
 }
 
+/// A storage buffer of the model's column records `records` (a range or a
+/// top interval a column), as they lie in memory.
+GlBuffer column_buffer(const GlApi &gl, const void *records, uint64_t bytes, size_t limit,
+                       const char *what)
+{
+    return GlBuffer(gl, GL_SHADER_STORAGE_BUFFER, checked_bytes(size_t(bytes), limit, what),
+                    records);
+}
+
 } // namespace
 
 uint64_t atlas_words(uint64_t budget_bytes, size_t max_block_bytes)
@@ -37,28 +46,43 @@ uint64_t atlas_words(uint64_t budget_bytes, size_t max_block_bytes)
 
 GpuPageAtlas::GpuPageAtlas(const GlApi &gl,
                            const std::shared_ptr<const sbrt::StackPages> &shared_pages,
-                           bool compact, bool column_pages, uint64_t budget_bytes,
-                           size_t max_block_bytes, unsigned threads)
-    : gl_(gl), pages_(*shared_pages), owner_(shared_pages), compact_(compact),
-      page_count_(shared_pages->block_count() * (column_pages ? 2 : 1)), threads_(threads),
+                           const PagedForm &form, uint64_t budget_bytes, size_t max_block_bytes,
+                           unsigned threads)
+    : gl_(gl), pages_(*shared_pages), owner_(shared_pages), form_(form),
+      page_count_(shared_pages->block_count() * (form.column_pages ? 2 : 1)), threads_(threads),
       asked_words_(atlas_words(budget_bytes, max_block_bytes)),
       residency_(page_count_, asked_words_), mark_words_(sbrt::gpu_mark_words(page_count_)),
       table_(gl_, GL_SHADER_STORAGE_BUFFER,
              checked_bytes((size_t(sbrt::GPU_PAGE_TABLE_HEAD) + size_t(page_count_)) * 4,
                            max_block_bytes, "page table"),
-             empty_table(pages_, column_pages).data()),
+             empty_table(pages_, form.column_pages).data()),
       atlas_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(residency_.atlas_words()) * 4),
       marks_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(mark_words_) * 2 * 4)
 {
+    if (form.ranges_whole) {
+        const std::vector<sbrt::ZRange> &ranges = pages_.column_ranges();
+        ranges_.emplace(column_buffer(gl_, ranges.data(), ranges.size() * sizeof(sbrt::ZRange),
+                                      max_block_bytes, "columns' ranges"));
+    }
+    if (form.tops_whole) {
+        const sbrt::IntervalArray &tops = pages_.column_tops();
+        tops_.emplace(column_buffer(
+            gl_, tops.visit([](const auto *first) { return static_cast<const void *>(first); }),
+            uint64_t(tops.size()) * tops.record_bytes(), max_block_bytes, "columns' tops"));
+    }
     begin_frame();
 }
 
-bool GpuPageAtlas::serves(const sbrt::StackPages &pages, bool compact, bool column_pages,
+bool GpuPageAtlas::serves(const sbrt::StackPages &pages, const PagedForm &form,
                           uint64_t budget_bytes, size_t max_block_bytes) const
 {
-    return owner_.lock().get() == &pages && compact == compact_ &&
-           column_pages == this->column_pages() &&
+    return owner_.lock().get() == &pages && form == form_ &&
            atlas_words(budget_bytes, max_block_bytes) == asked_words_;
+}
+
+uint64_t GpuPageAtlas::column_bytes() const
+{
+    return (ranges_ ? ranges_->bytes() : 0) + (tops_ ? tops_->bytes() : 0);
 }
 
 void GpuPageAtlas::bind() const
@@ -66,6 +90,10 @@ void GpuPageAtlas::bind() const
     table_.bind(0);
     atlas_.bind(1);
     marks_.bind(6);
+    if (tops_)
+        tops_->bind(15);
+    if (ranges_)
+        ranges_->bind(16);
 }
 
 void GpuPageAtlas::begin_frame()
@@ -113,6 +141,9 @@ int GpuPageAtlas::bring_wanted()
     for (int b : marked(marks, 0))
         if (b < page_count_ && !residency_.holds(b) && !residency_.found_no_room(b))
             wanted.push_back(b);
+    // columns' pages first: a ray reads its cell's before any block
+    std::stable_partition(wanted.begin(), wanted.end(),
+                          [&](int p) { return p >= pages_.block_count(); });
     return wanted.empty() ? 0 : upload(wanted);
 }
 
@@ -125,8 +156,8 @@ std::vector<uint32_t> GpuPageAtlas::page_words(int p) const
 {
     const int blocks = pages_.block_count();
     if (p >= blocks)
-        return sbrt::gpu_column_page_words(pages_, p - blocks, compact_);
-    return sbrt::gpu_block_words(*pages_.block(p), compact_);
+        return sbrt::gpu_column_page_words(pages_, p - blocks, form_.compact);
+    return sbrt::gpu_block_words(*pages_.block(p), form_.compact);
 }
 
 int GpuPageAtlas::upload(const std::vector<int> &wanted)

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "gl_api.hpp"
@@ -29,6 +30,21 @@ struct PageFigures {
     double upload_ms = 0;       ///< decoding and uploading them
 };
 
+/// What a paged model holds on the GPU beside its blocks (GpuPageAtlas).
+struct PagedForm {
+    bool compact = false;      ///< intervals a word each (every block's are exact so)
+    /// its columns' top intervals and ranges in pages of their own
+    /// (sbrt::gpu_column_page_words), numbered after the blocks'
+    bool column_pages = false;
+    bool ranges_whole = false; ///< each column's range (the pyramid's level 0), binding 16
+    bool tops_whole = false;   ///< each column's top interval, binding 15
+    bool operator==(const PagedForm &o) const
+    {
+        return compact == o.compact && column_pages == o.column_pages &&
+               ranges_whole == o.ranges_whole && tops_whole == o.tops_whole;
+    }
+};
+
 /// \brief The GPU's part of a paged model (`pages`): the page table
 /// (binding 0), the atlas of at most `budget_bytes` (binding 1) and the
 /// marks the shaders set (binding 6: the blocks wanted and those read,
@@ -39,21 +55,21 @@ struct PageFigures {
 /// context must be current.
 class GpuPageAtlas {
 public:
-    /// `compact`: intervals a word each (every block's are exact so);
-    /// `column_pages`: pages of the blocks' columns too (their top
-    /// intervals and ranges: sbrt::gpu_column_page_words), numbered after
-    /// the blocks'; `max_block_bytes`: the GPU's largest storage buffer,
-    /// which bounds the atlas too; `threads` decode blocks (0: all cores).
+    /// `form`: the blocks' words, the columns' pages, and the columns
+    /// held whole (uploaded here: they are the model's, whatever the
+    /// scene); `max_block_bytes`: the GPU's largest storage buffer, which
+    /// bounds the atlas too; `threads` decode blocks (0: all cores).
     GpuPageAtlas(const GlApi &gl, const std::shared_ptr<const sbrt::StackPages> &pages,
-                 bool compact, bool column_pages, uint64_t budget_bytes,
-                 size_t max_block_bytes, unsigned threads);
+                 const PagedForm &form, uint64_t budget_bytes, size_t max_block_bytes,
+                 unsigned threads);
 
     /// Whether this atlas holds the pages of `pages` (still alive) in the
     /// form and size asked for: a tracer of another scene of the same model
-    /// may take it over, with the pages already up.
-    bool serves(const sbrt::StackPages &pages, bool compact, bool column_pages,
-                uint64_t budget_bytes, size_t max_block_bytes) const;
+    /// may take it over, with its pages and columns already up.
+    bool serves(const sbrt::StackPages &pages, const PagedForm &form, uint64_t budget_bytes,
+                size_t max_block_bytes) const;
 
+    /// The page table, the atlas, the marks and the columns held whole.
     void bind() const;
     /// A new frame: no block marked (a GL command: after the last
     /// frame's dispatches); blocks the last frame used may go.
@@ -73,8 +89,10 @@ public:
     /// paged (a model too large for its pyramid): frames then go in bands
     /// small enough for each band's pages to fit.
     bool crowded() const { return figures_.not_placed > 0 || column_pages(); }
-    bool compact() const { return compact_; }
-    bool column_pages() const { return page_count_ != pages_.block_count(); }
+    const PagedForm &form() const { return form_; }
+    bool column_pages() const { return form_.column_pages; }
+    /// Bytes of the columns held whole (ranges, tops).
+    uint64_t column_bytes() const;
     uint64_t atlas_bytes() const { return residency_.atlas_words() * 4; }
     uint64_t held_bytes() const { return residency_.held_words() * 4; }
     int held_blocks() const { return residency_.held_blocks(); }
@@ -93,7 +111,7 @@ private:
     const GlApi gl_;
     const sbrt::StackPages &pages_;
     std::weak_ptr<const sbrt::StackPages> owner_; ///< serves(): the same model
-    bool compact_;
+    PagedForm form_;
     int page_count_; ///< the blocks', then where asked their columns'
     unsigned threads_;
     uint64_t asked_words_; ///< atlas_words of the budget given (serves())
@@ -101,6 +119,7 @@ private:
     uint32_t mark_words_;
     bool found_no_room_ = false; ///< since the frame began
     GlBuffer table_, atlas_, marks_;
+    std::optional<GlBuffer> ranges_, tops_; ///< the columns held whole
     PageFigures figures_;
 };
 

@@ -68,6 +68,13 @@ const uint PAGE_MISSING = 0xffffffffu;
 #ifndef SBRT_COLUMN_PAGES
 layout(std430, binding = 15) readonly buffer ColumnTops { uint column_tops[]; };
 #endif
+#endif
+#ifdef SBRT_COLUMN_RANGES
+// Each column's range (cell row by row from the north): the pyramid's
+// level 0, held for the model (the scene's levels above are in Pyramid)
+layout(std430, binding = 16) readonly buffer ColumnRanges { vec2 column_ranges[]; };
+#endif
+#ifdef SBRT_COLUMN_TOPS
 // below 2^31, so that a search's (low + high) / 2 does not wrap; above every
 // record of the atlas (gpu_pages.hpp, GPU_MAX_ATLAS_WORDS)
 const uint TOP_STACK = 0x7ffffff0u;

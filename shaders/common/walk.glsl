@@ -79,8 +79,10 @@ uint first_block_level() { return max(levels[0].w, 1u); }
 // The entered cell's range (its node of level 0)
 vec2 cell_range(Walk w)
 {
-#ifdef SBRT_COLUMN_PAGES
+#if defined(SBRT_COLUMN_PAGES)
     return column_range(w.column_at);
+#elif defined(SBRT_COLUMN_RANGES)
+    return column_ranges[uint(w.rows - 1 - w.iy) * grid.x + uint(w.ix)];
 #else
     return pyramid_node(0u, w.ix, w.iy);
 #endif

@@ -23,7 +23,8 @@ constexpr uint32_t GPU_PAGE_MISSING = 0xffffffffu;
 
 /// Words before the page table's entries (`buffer PageTable`): the block
 /// size in cells, blocks a row of blocks, words of each half of the marks
-/// (`buffer PageMarks`: the blocks wanted, then those read), 0.
+/// (`buffer PageMarks`: the pages wanted, then those read), and the number
+/// of the first columns' page (the block count; 0 where there are none).
 constexpr uint32_t GPU_PAGE_TABLE_HEAD = 4;
 
 /// The most words an atlas holds: record indices stay below 2^31 - 16,

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_compare.hpp"
+#include "gpu_internal.hpp"
 #include "gpu_page_atlas.hpp"
 #include "paged_case.hpp"
 
@@ -168,7 +169,7 @@ TEST_P(GpuPages, AnAtlasOfAFewBlocksHoldsItsBudgetAndTheFrameStaysExact)
     const uint64_t budget = std::max(2 * pyramid + 1024, pyramid + 1024 + 3 * c.largest_block());
     sbrt_gl::GpuRenderer on_pages(*context_, paged, options(budget));
     const sbrt_gl::GpuPageAtlas &atlas = *on_pages.gpu().model().pages();
-    EXPECT_LE(on_pages.gpu().memory().total() + pyramid, budget);
+    EXPECT_LE(on_pages.gpu().memory().total() + on_pages.gpu().pyramid_bytes(), budget);
     const double tolerance = 2e-5 * 2 * paged.tracer().frame().radius();
     int k = 0;
     size_t sent_to_host = 0;
@@ -289,6 +290,22 @@ TEST_P(GpuPages, ColumnsInPagesGiveTheWholeModelsHitsAndFrames)
         expect_same_image(gpu_whole.render_image(camera, all, 2),
                           gpu_columns.render_image(camera, all, 2),
                           "camera " + std::to_string(k++));
+}
+
+TEST_P(GpuPages, ColumnsInPagesOfAWideModelGiveItsHitsBitForBit)
+{
+    // two words a column's top interval and two its range
+    const PagedCase c(wide_model());
+    const Model paged = c.paged(WHOLE_BUDGET, true);
+    ASSERT_FALSE(sbrt_gl::compact_on_gpu(paged));
+    for (int level : {1, 2, 3}) {
+        sbrt_gl::GpuOptions o = options(WHOLE_BUDGET);
+        o.column_pages_from_level = level;
+        expect_hits_of_the_whole(*context_, c, paged, Scene{}, o);
+        ASSERT_FALSE(HasFatalFailure()) << "from level " << level;
+    }
+    // whole, beside the pyramid's levels above
+    expect_hits_of_the_whole(*context_, c, paged, Scene{}, options(WHOLE_BUDGET));
 }
 
 TEST_P(GpuPages, APyramidOverHalfTheBudgetPagesTheColumnsAndStaysExact)
