@@ -71,6 +71,20 @@ bool every_stratum_opaque(const sbrt::Tracer &tracer)
                        [](double e) { return e == std::numeric_limits<double>::infinity(); });
 }
 
+/// The entry file of `pass`'s program (its main()).
+const char *entry_source(Pass pass)
+{
+    switch (pass) {
+    case Pass::records: return SHADER_RECORDS;
+    case Pass::kernel_depth: return SHADER_KERNEL_DEPTH;
+    case Pass::kernel_normals: return SHADER_KERNEL_NORMALS;
+    case Pass::kernel_across: return SHADER_KERNEL_ACROSS;
+    case Pass::kernel_shade: return SHADER_KERNEL_SHADE;
+    case Pass::first_pass: return SHADER_FIRST_PASS;
+    default: return SHADER_SHADE; // shade, shade_boreholes
+    }
+}
+
 } // namespace
 
 /// The sources of `pass` for the model held in `form`;
@@ -122,10 +136,6 @@ std::vector<const char *> pass_sources(Pass pass, const ModelForm &form,
             overlays == sbrt::GpuOverlayMode::alone        ? "#define SBRT_OVERLAYS 1\n"
             : overlays == sbrt::GpuOverlayMode::with_model ? "#define SBRT_BOREHOLES 1\n"
                                                            : "",
-            pass == Pass::kernel_depth     ? "#define SBRT_KERNEL_DEPTH 1\n"
-            : pass == Pass::kernel_normals ? "#define SBRT_KERNEL_NORMALS 1\n"
-            : pass == Pass::kernel_across  ? "#define SBRT_KERNEL_ACROSS 1\n"
-                                           : "",
             FIRST_PASS_DEFINES,
             SHADER_COMMON_LAYOUT,
             shade ? SHADER_COMMON_SHADE : "",
@@ -134,10 +144,10 @@ std::vector<const char *> pass_sources(Pass pass, const ModelForm &form,
             kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_CLIP,
             kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_WALK,
             kernel || pass == Pass::first_pass ? "" : SHADER_COMMON_TRACE_PIXEL,
-            kernel                     ? SHADER_KERNEL
-            : pass == Pass::first_pass ? SHADER_FIRST_PASS
-            : pass == Pass::records    ? SHADER_RECORDS
-                                       : SHADER_SHADE};
+            kernel ? SHADER_COMMON_KERNEL : "",
+            // a hit's kernel normal: the normals and the kernel's shading
+            kernel && shade ? SHADER_COMMON_KERNEL_NORMAL : "",
+            entry_source(pass)};
 }
 
 

@@ -40,10 +40,10 @@ bool compact_on_gpu(const sbrt::Model &model);
 enum class Pass : int {
     records,      ///< records.comp: hit records
     shade,        ///< shade.comp: the shaded outputs (SBRT_SHADE)
-    kernel_depth, ///< kernel.comp: the view depths (SBRT_KERNEL_DEPTH)
-    kernel_normals, ///< kernel.comp: the kernel normals (SBRT_KERNEL_NORMALS)
-    kernel_across,  ///< kernel.comp: their sums along the rows (smoothing)
-    kernel_shade, ///< kernel.comp: kernel normals and the shaded outputs
+    kernel_depth, ///< kernel_depth.comp: the view depths
+    kernel_normals, ///< kernel_normals.comp: the kernel normals
+    kernel_across,  ///< kernel_across.comp: their sums along the rows
+    kernel_shade, ///< kernel_shade.comp: kernel normals, shaded
     first_pass,   ///< first_pass.comp: the tiles' first-hit bounds
     /// shade.comp: the shaded outputs of the model and its boreholes
     /// over the listed tiles (SBRT_BOREHOLES, SBRT_TILE_LIST); the shade

@@ -1,7 +1,7 @@
 /****************************************************************************
  * MODULE:    lib/sbrt_gl (r3.sbrt addon)
  * PURPOSE:   What the kernel normals' passes keep on the GPU for a camera
- *            (shaders/kernel.comp): the whole image's hit records and
+ *            (shaders/kernel_*.comp): the whole image's hit records and
  *            view depths, the kernel's cells and its Kernel block, and with
  *            smoothing each hit's normal and their sums along the rows
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.

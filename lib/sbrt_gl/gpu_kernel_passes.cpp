@@ -1,6 +1,6 @@
 /****************************************************************************
  * MODULE:    lib/sbrt_gl (r3.sbrt addon)
- * PURPOSE:   Image-space kernel normals on the GPU (shaders/kernel.comp):
+ * PURPOSE:   Image-space kernel normals on the GPU (shaders/kernel_*.comp):
  *            the whole image's hit records and view depths kept on the
  *            GPU, then the kernel normals and shading of each band
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.

@@ -18,7 +18,12 @@ extern const char *const SHADER_COMMON_WALK;   ///< shaders/common/walk.glsl
 extern const char *const SHADER_COMMON_TRACE_PIXEL; ///< shaders/common/trace_pixel.glsl
 extern const char *const SHADER_RECORDS;       ///< shaders/records.comp
 extern const char *const SHADER_SHADE;         ///< shaders/shade.comp
-extern const char *const SHADER_KERNEL;        ///< shaders/kernel.comp
+extern const char *const SHADER_COMMON_KERNEL; ///< shaders/common/kernel.glsl
+extern const char *const SHADER_COMMON_KERNEL_NORMAL; ///< shaders/common/kernel_normal.glsl
+extern const char *const SHADER_KERNEL_DEPTH;  ///< shaders/kernel_depth.comp
+extern const char *const SHADER_KERNEL_NORMALS; ///< shaders/kernel_normals.comp
+extern const char *const SHADER_KERNEL_ACROSS; ///< shaders/kernel_across.comp
+extern const char *const SHADER_KERNEL_SHADE;  ///< shaders/kernel_shade.comp
 extern const char *const SHADER_FIRST_PASS;    ///< shaders/first_pass.comp
 extern const char *const SHADER_TILE_CULL;     ///< shaders/tile_cull.comp
 

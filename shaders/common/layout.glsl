@@ -388,9 +388,9 @@ layout(std430, binding = 2) writeonly buffer Hits { PixelHit hits[]; };
 #endif
 
 #ifdef SBRT_KERNEL
-// The image-space kernel normals' passes (kernel.comp), over the hit
-// records of the whole image, row-major (binding 0), and its view depths
-// (binding 1; written by the depth pass, SBRT_KERNEL_DEPTH).
+// The image-space kernel normals' passes (common/kernel.glsl), over the
+// hit records of the whole image, row-major (binding 0), and its view
+// depths (binding 1; written by the depth pass, kernel_depth.comp).
 layout(std430, binding = 0) readonly buffer ImageHits { PixelHit image_hits[]; };
 layout(std430, binding = 1) buffer Depths { float depths[]; };
 // The kernel's cells (lib/sbrt/shading/kernel_normals.hpp): per cell two

@@ -1,7 +1,7 @@
 // Shading of a pixel on the GPU (SBRT_SHADE), as
 // lib/sbrt/shading/shading.cpp's PixelShader does it, in float (a colour
 // level may differ where the double is within rounding of a half); used by
-// the ray casting shader and by the kernel normals' pass (kernel.comp).
+// the ray casting shader and by the kernel normals' pass (kernel_shade.comp).
 
 #ifdef SBRT_DRAPE
 // Drape::on_surface and Texture::sample in the local frame, in float

@@ -128,7 +128,7 @@ GpuBandLayout gpu_band_layout(int rows, int cols, const Outputs &outputs);
 void set_band_planes(GpuShade &shade, const GpuBandLayout &layout);
 
 /// `uniform Kernel` (std140): the camera in the terms of the kernel
-/// normals' passes (shaders/kernel.comp).
+/// normals' passes (shaders/common/kernel.glsl).
 struct GpuKernel {
     float eye[4];     ///< camera origin from the model's corner; w: 1 parallel
     float forward[4]; ///< w: KernelNormals::tolerance_voxel

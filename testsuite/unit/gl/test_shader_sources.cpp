@@ -81,8 +81,23 @@ TEST(ShaderSources, TheRaycastProgramsShadeInOnePlace)
     EXPECT_EQ(calls_of("ov_meet", program), 3);
     // the kernel's shading pass: one write of its own (shade.glsl's
     // write_kept_pixel never called there)
-    EXPECT_EQ(calls_of("write_pixel", {SHADER_KERNEL}), 1);
-    EXPECT_EQ(calls_of("write_kept_pixel", {SHADER_KERNEL}), 0);
+    const auto kernel = {SHADER_COMMON_KERNEL, SHADER_COMMON_KERNEL_NORMAL, SHADER_KERNEL_SHADE};
+    EXPECT_EQ(calls_of("write_pixel", kernel), 1);
+    EXPECT_EQ(calls_of("write_kept_pixel", kernel), 0);
+}
+
+TEST(ShaderSources, EachKernelPassHasItsOwnEntryFile)
+{
+    using namespace sbrt_gl;
+    // one main() a program, the passes' shared code in the libraries
+    for (const char *library : {SHADER_COMMON_KERNEL, SHADER_COMMON_KERNEL_NORMAL})
+        EXPECT_EQ(std::string(library).find("void main()"), std::string::npos);
+    for (const char *entry : {SHADER_KERNEL_DEPTH, SHADER_KERNEL_NORMALS, SHADER_KERNEL_ACROSS,
+                              SHADER_KERNEL_SHADE})
+        EXPECT_NE(std::string(entry).find("void main()"), std::string::npos);
+    // a hit's kernel normal, written once, for the normals and shading
+    EXPECT_EQ(calls_of("kernel_normal", {SHADER_COMMON_KERNEL_NORMAL}), 1);
+    EXPECT_EQ(calls_of("hit_kernel_normal", {SHADER_KERNEL_NORMALS, SHADER_KERNEL_SHADE}), 2);
 }
 
 TEST(ShaderSources, CallsAreCountedWithoutDefinitionsAndComments)
