@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "gpu_internal.hpp"
-#include "gpu_tracer.hpp"
+#include "gpu_stats.hpp"
 #include "gpu/gpu_overlays.hpp"
 #include "util/error.hpp"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gpu_internal.hpp"
-#include "gpu_tracer.hpp"
+#include "gpu_stats.hpp"
 #include "gpu/gpu_overlays.hpp"
 #include "gpu/gpu_paint.hpp"
 
