@@ -1,9 +1,9 @@
 /****************************************************************************
  * MODULE:    lib/sbrt_gl (r3.sbrt addon)
- * PURPOSE:   First hits of every pixel on the GPU: the model in std430
- *            SSBOs, the compute shaders shaders/records.comp and shade.comp, bands of rows
- *            that fit the GPU's buffer limit, and the exact CPU tracer for
- *            the rays the shader flags as over its loop budget
+ * PURPOSE:   First hits of every pixel on the GPU: the resident model
+ *            (GpuModel), the programs (ProgramSet), the view block and the
+ *            figures, composing the passes (first pass, hit records,
+ *            shading, boreholes, kernel normals: one class each)
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #ifndef SBRT_GL_GPU_TRACER_HPP
@@ -22,7 +22,11 @@
 #include "gpu_model.hpp"
 #include "gpu_options.hpp"
 #include "gpu_borehole_pass.hpp"
-#include "gpu_kernel_buffers.hpp"
+#include "gpu_first_pass.hpp"
+#include "gpu_kernel_pass.hpp"
+#include "gpu_pass_context.hpp"
+#include "gpu_record_pass.hpp"
+#include "gpu_shade_pass.hpp"
 #include "gpu_shading_inputs.hpp"
 #include "gpu_stats.hpp"
 #include "mapped_bands.hpp"
@@ -39,6 +43,12 @@ namespace sbrt_gl {
 /// What a program of the GPU path does (gpu_internal.hpp).
 enum class Pass : int;
 
+/// \brief The GPU path over one scene: the resident model (GpuModel), the
+/// programs (ProgramSet), the view block, the timer and the figures, and
+/// one object a pass, each owning its buffers (GpuFirstPass, GpuRecordPass,
+/// GpuShadePass, BoreholePass, GpuKernelPass), which trace_rows,
+/// shade_rows, prepare_kernel and shade_kernel_rows compose; the passes
+/// share the parts the tracer owns through a PassContext.
 class GpuTracer {
 public:
     /// Needs the context current on this thread; uploads the model in
@@ -82,7 +92,7 @@ public:
     /// The rows `cols` wide of a band: where a paged model's atlas is
     /// crowded, as GpuOptions::crowded_band_pixels says; else 0 (as many
     /// as fill the GPU).
-    int crowded_band_rows(int cols) const;
+    int crowded_band_rows(int cols) const { return passes_.crowded_band_rows(cols); }
     /// A new frame: bands dispatched ahead for the last one are dropped.
     void begin_frame();
     /// GL time queries around every pass (GpuStats::pass_ms), or none.
@@ -91,12 +101,12 @@ public:
     /// queries; empty where not timed).
     std::vector<double> take_pass_ms();
     /// When the GPU was found done with the last band shaded.
-    std::chrono::steady_clock::time_point last_band_done() const { return bands_.last_done(); }
+    std::chrono::steady_clock::time_point last_band_done() const { return shade_.last_done(); }
     /// Whether kernel normals of `camera`'s image can be found on the GPU:
     /// the hit records of the whole image fit one storage buffer (and the
     /// camera is not a window of a larger image), and the GPU writes them
     /// (not for boreholes and curtains alone).
-    bool kernel_fits(const sbrt::Camera &camera) const;
+    bool kernel_fits(const sbrt::Camera &camera) const { return kernel_.fits(camera); }
     /// Kernel normals on the GPU, first for a camera: traces the hit records
     /// of its whole image and their view depths, kept on the GPU. False
     /// where a paged model's blocks found no room in the atlas: records are
@@ -115,7 +125,7 @@ public:
     /// (kept while the shading stays as it was).
     const sbrt::PixelShader &host_shader(const sbrt::Shading &shading)
     {
-        return host_shader_.of(shading);
+        return shade_.host_shader(shading);
     }
     /// The loop budget of the shaded bands and the kernel passes
     /// (GpuOptions::loop_budget: by default llvmpipe's GPU_LOOP_BUDGET,
@@ -123,7 +133,7 @@ public:
     uint32_t loop_budget() const { return loop_budget_; }
     /// Whether the shading pass writes bands into GPU memory, copied to the
     /// host by the GPU (GpuOptions::bands: by default on a GPU).
-    bool staged_bands() const { return bands_.staged(); }
+    bool staged_bands() const { return shade_.staged(); }
     /// The shading program (compiled by the first shade_rows; the one with
     /// the drape where there was one), or 0.
     GLuint shade_program() const
@@ -160,7 +170,7 @@ public:
     GLuint program() const { return record_program().name(); }
     /// The first pass's bounds of the last camera traced, per tile
     /// row-major (read back; tests).
-    std::vector<float> tile_starts() const;
+    std::vector<float> tile_starts() const { return first_pass_.tile_starts(); }
     /// Whether the shading program (shade_program) came from the cache.
     bool shade_program_from_cache() const
     {
@@ -173,59 +183,9 @@ private:
     /// The shading pass's program built (colours by voxel, else with a
     /// drape, else plain), or null.
     const GlComputeProgram *shading_program_built() const;
-    /// A paged model: whether blocks that the dispatches so far found
-    /// missing were brought up (their rays then go again).
-    bool brought_wanted_blocks();
-    /// A paged model's band: whether to dispatch it again, as its missed
-    /// blocks came up, or (once a band: `restarted`) as the atlas was full
-    /// and the earlier bands' blocks may now go for its own.
-    bool band_again(bool &restarted);
     /// Binds the model (GpuModel::bind), the first pass's bounds and the
     /// view block.
     void bind_model() const;
-    /// The view block of `camera`, with the first pass's tile bounds on the
-    /// GPU (computed when the camera is not the last one's).
-    sbrt::GpuView traced_view(const sbrt::Camera &camera, uint32_t loop_budget);
-    /// The bound hit records' program over rows [first, first + count) of
-    /// `camera`'s image, in bands that fit band_ (binding 2), each band's
-    /// records read back into records_.
-    void dispatch_records(const sbrt::Camera &camera, sbrt::GpuView &view, int first,
-                          int count);
-    /// The shading program of `pass` (shade, shade_boreholes or
-    /// kernel_shade) for `shading` (with its drape), compiled when first
-    /// needed.
-    GlComputeProgram &shading_program(const sbrt::Shading &shading, Pass pass);
-    /// The program of `pass` (gpu_internal.hpp) over width x height
-    /// invocations (pixels of the whole image, or the first pass's tiles),
-    /// its buffers bound; a barrier after.
-    void run_pass(Pass pass, int width, int height);
-    /// Rows [first, first + count) shaded by the bound program into a
-    /// mapped band that `band` views: `dispatch(first, count, slot)` queues
-    /// one band's dispatch into MappedBands' slot `slot`; where the program
-    /// `reads_model` (paged), again once the blocks its rays missed are up;
-    /// the rays over the loop budget traced and shaded on the host.
-    void shade_band(const sbrt::Camera &camera, int first, int count,
-                    const sbrt::Shading &shading, const sbrt::GpuBandLayout &layout,
-                    sbrt::Band &band, unsigned cpu_threads,
-                    const std::function<void(int, int, int)> &dispatch,
-                    bool reads_model = true);
-    /// What shade_rows settles for a frame: the view block (each band's
-    /// rows set as it is dispatched), the model pass's program, and with
-    /// boreholes drawn with the model their pass's and whether every tile
-    /// goes through it (the camera among their boxes: no model pass).
-    struct ShadePlan {
-        sbrt::GpuView view{};
-        GlComputeProgram *model_program = nullptr;
-        GlComputeProgram *borehole_program = nullptr; ///< none: no boreholes pass
-        bool every_tile = false;
-    };
-    /// Queues rows [first, first + count) of `plan` into MappedBands' slot
-    /// `slot`: the model pass, then the boreholes' tiles.
-    void dispatch_shading(const sbrt::Camera &camera, ShadePlan &plan, int first, int count,
-                          int slot);
-    /// The frame's band layout for `count` rows of `outputs` into `shade`.
-    sbrt::GpuBandLayout band_layout(const sbrt::Camera &camera, int count,
-                                    const sbrt::Outputs &outputs, sbrt::GpuShade &shade);
 
     std::chrono::steady_clock::time_point created_; ///< times the upload
     std::chrono::steady_clock::time_point frame_start_; ///< begin_frame
@@ -236,24 +196,18 @@ private:
     /// every pass's programs; mutable: the hit records' program is built
     /// when first used
     mutable ProgramSet programs_;
-    BoreholePass boreholes_; ///< boreholes drawn with the model
     GpuShadingInputs shading_inputs_; ///< the Shade block, a drape, colours by voxel
-    GlBuffer view_;
-    std::optional<GlBuffer> band_; ///< the hit records of a band of rows
-    std::vector<sbrt::GpuPixelHit> records_;
-    GpuKernelBuffers kernel_buffers_; ///< the kernel normals' passes
-    /// the first pass: the tiles' bounds (binding 8) and the view they
-    /// are of (rows and budget zeroed)
-    std::optional<GlBuffer> tile_starts_;
-    sbrt::GpuView first_pass_view_{};
-    MappedBands bands_; ///< where shaded bands land
+    GlBuffer view_; ///< the view block
     PassTimer timer_;
-    /// the host's shader of the pixels it traces, kept while the shading
-    /// stays as it was
-    sbrt::KeptPixelShader host_shader_;
     mutable GpuStats stats_; ///< mutable: stats() adds the programs' time
     uint32_t loop_budget_;
-    int crowded_band_pixels_;
+    /// what the passes share: the members above, and a paged model's paging
+    PassContext passes_;
+    GpuFirstPass first_pass_; ///< the tiles' first-hit bounds
+    GpuRecordPass records_;   ///< hit records read back
+    GpuShadePass shade_;      ///< shaded bands, mapped
+    BoreholePass boreholes_;  ///< boreholes drawn with the model
+    GpuKernelPass kernel_;    ///< kernel normals
 };
 
 } // namespace sbrt_gl
