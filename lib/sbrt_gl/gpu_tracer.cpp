@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
-#include <functional>
 
 #include "util/error.hpp"
 #include "util/parallel.hpp"
