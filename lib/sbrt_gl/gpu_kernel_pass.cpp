@@ -30,6 +30,10 @@ bool GpuKernelPass::prepare(const sbrt::Camera &camera, const sbrt::Shading &sha
     buffers_.bind_image_records(pixels);
     const auto start = Clock::now();
     const GpuPageAtlas *pages = passes_.model.pages();
+    // a crowded atlas: the whole image's pages would not fit (the host
+    // finds the normals from the hits)
+    if (pages && pages->crowded())
+        return false;
     const uint64_t no_room = pages ? pages->figures().not_placed : 0;
     passes_.run_pass(Pass::records, cols, rows);
     // a paged model: again once the blocks its rays missed are up

@@ -35,7 +35,8 @@ public:
     /// With `view` (its first pass done) and the model bound: the hit
     /// records of `camera`'s whole image and their view depths (with
     /// smoothing, the normals and their sums along the rows), kept on the
-    /// GPU. False where a paged model's blocks found no room in the atlas.
+    /// GPU. False where a paged model's blocks found no room in the atlas,
+    /// or its atlas is crowded (GpuPageAtlas::crowded).
     bool prepare(const sbrt::Camera &camera, const sbrt::Shading &shading, sbrt::GpuView view);
     /// The kernel's shading program of `shading` in use, with the view
     /// block of `camera`, `shade` and the kernel's buffers bound.

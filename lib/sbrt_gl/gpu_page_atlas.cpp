@@ -99,7 +99,6 @@ void GpuPageAtlas::bind() const
 void GpuPageAtlas::begin_frame()
 {
     residency_.begin_frame();
-    found_no_room_ = false;
     // after the last frame's marks were set
     gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const GLuint zero = 0;
@@ -108,13 +107,10 @@ void GpuPageAtlas::begin_frame()
                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
-bool GpuPageAtlas::begin_band_where_full()
+void GpuPageAtlas::begin_band_again()
 {
-    if (!found_no_room_)
-        return false;
     begin_frame();
     ++figures_.band_restarts;
-    return true;
 }
 
 std::vector<int> GpuPageAtlas::marked(const std::vector<uint32_t> &marks, int part) const
@@ -179,7 +175,7 @@ int GpuPageAtlas::upload(const std::vector<int> &wanted)
             figures_.dropped += dropped.size();
             if (!base) {
                 ++figures_.not_placed;
-                found_no_room_ = full = true; // the rest wait for another band's call
+                full = true; // the rest wait for another band's call
                 continue;
             }
             atlas_.write(size_t(*base) * 4, words[k].data(), words[k].size() * 4);

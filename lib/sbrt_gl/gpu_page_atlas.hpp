@@ -26,7 +26,7 @@ struct PageFigures {
     uint64_t upload_bytes = 0;  ///< their words
     uint64_t dropped = 0;       ///< blocks dropped for others' room
     uint64_t not_placed = 0;    ///< wanted blocks the frame's own left no room for
-    uint64_t band_restarts = 0; ///< bands that let earlier bands' blocks go (begin_band_where_full)
+    uint64_t band_restarts = 0; ///< bands that let earlier bands' blocks go (begin_band_again)
     double upload_ms = 0;       ///< decoding and uploading them
 };
 
@@ -78,13 +78,12 @@ public:
     /// and that are not up, decoded and brought up where room is made;
     /// how many. 0: a dispatch again would find the same blocks missing.
     int bring_wanted();
-    /// Where a block found no room since the frame began: the frame begun
-    /// again (no block marked; those the earlier bands used may go), so
-    /// that the band in hand, dispatched again, brings up its own blocks
-    /// in their room; true then. A frame whose blocks exceed the atlas
-    /// then runs on the GPU band by band where each band's blocks fit.
-    bool begin_band_where_full();
-
+    /// The frame begun again (no page marked; those the earlier bands used
+    /// may go), where a band's pages found no room: the band, dispatched
+    /// again, brings up its own pages in their room. A frame whose pages
+    /// exceed the atlas then runs on the GPU band by band where each
+    /// band's pages fit.
+    void begin_band_again();
     /// Whether a frame's blocks ever found no room, or the columns are
     /// paged (a model too large for its pyramid): frames then go in bands
     /// small enough for each band's pages to fit.
@@ -117,7 +116,6 @@ private:
     uint64_t asked_words_; ///< atlas_words of the budget given (serves())
     sbrt::PageResidency residency_;
     uint32_t mark_words_;
-    bool found_no_room_ = false; ///< since the frame began
     GlBuffer table_, atlas_, marks_;
     std::optional<GlBuffer> ranges_, tops_; ///< the columns held whole
     PageFigures figures_;

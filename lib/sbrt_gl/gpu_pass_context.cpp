@@ -56,14 +56,21 @@ bool PassContext::brought_wanted_blocks() const
     return brought;
 }
 
-bool PassContext::band_again(bool &restarted) const
+PassContext::BandPaging PassContext::begin_band() const
+{
+    const GpuPageAtlas *pages = model.pages();
+    return {pages ? pages->figures().not_placed : 0, false};
+}
+
+bool PassContext::band_again(BandPaging &band) const
 {
     if (brought_wanted_blocks())
         return true;
     GpuPageAtlas *pages = model.pages();
-    if (restarted || !pages || !pages->begin_band_where_full())
+    if (band.restarted || !pages || pages->figures().not_placed == band.no_room_before)
         return false;
-    restarted = true;
+    pages->begin_band_again();
+    band.restarted = true;
     return true;
 }
 

@@ -56,11 +56,19 @@ struct PassContext {
     /// missing were brought up (their rays then go again); adds to
     /// GpuStats::page_ms and page_passes.
     bool brought_wanted_blocks() const;
-    /// A paged model's band: whether to dispatch it again, as its missed
-    /// blocks came up, or (once a band: `restarted`) as the atlas was full
-    /// and the earlier bands' blocks may now go for its own
-    /// (GpuPageAtlas::begin_band_where_full).
-    bool band_again(bool &restarted) const;
+    /// A paged model's band as band_again goes over it: the pages that
+    /// had found no room in the atlas before it began, and whether it began
+    /// the atlas's frame again.
+    struct BandPaging {
+        uint64_t no_room_before = 0;
+        bool restarted = false;
+    };
+    BandPaging begin_band() const;
+    /// Whether to dispatch a paged model's band again: its missed pages
+    /// came up, or (once a band) some found no room since it began, and
+    /// the earlier bands' pages may now go for its own
+    /// (GpuPageAtlas::begin_band_again).
+    bool band_again(BandPaging &band) const;
     /// The rows `cols` wide of a band where a paged model's atlas is
     /// crowded (crowded_band_pixels); else 0.
     int crowded_band_rows(int cols) const;

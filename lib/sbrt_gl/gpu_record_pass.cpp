@@ -41,7 +41,7 @@ void GpuRecordPass::dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, in
         const int count = std::min(band_rows, first_row + row_count - first);
         passes_.upload_view(view, first, count);
         // a paged model: again once the blocks its rays missed are up
-        bool restarted = false;
+        PassContext::BandPaging paging = passes_.begin_band();
         do {
             auto start = Clock::now();
             passes_.dispatch(Pass::records, cols, count);
@@ -53,7 +53,7 @@ void GpuRecordPass::dispatch(const sbrt::Camera &camera, sbrt::GpuView &view, in
             band_->download(records_.data() + size_t(first - first_row) * size_t(cols),
                             size_t(count) * row_bytes);
             stats.readback_ms += ms_since(start);
-        } while (passes_.band_again(restarted));
+        } while (passes_.band_again(paging));
         ++stats.bands;
     }
 }

@@ -80,9 +80,9 @@ void GpuShadePass::shade(const sbrt::Camera &camera, int first_row, int row_coun
         std::memcpy(&over, host + layout.over_budget_at * 4, 4);
         return over;
     };
-    bool restarted = false;
+    PassContext::BandPaging paging = passes_.begin_band();
     while (reads_model && passes_.model.pages() && sent_back() > 0 &&
-           passes_.band_again(restarted))
+           passes_.band_again(paging))
         host = bands_.redo(dispatch);
     passes_.stats.trace_ms += bands_.gpu_ms();
     ++passes_.stats.bands;

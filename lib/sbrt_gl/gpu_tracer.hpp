@@ -109,7 +109,8 @@ public:
     bool kernel_fits(const sbrt::Camera &camera) const { return kernel_.fits(camera); }
     /// Kernel normals on the GPU, first for a camera: traces the hit records
     /// of its whole image and their view depths, kept on the GPU. False
-    /// where a paged model's blocks found no room in the atlas: records are
+    /// where a paged model's blocks found no room in the atlas, or its
+    /// atlas is crowded (the whole image's would not fit): records are
     /// missing, and the kernel normals must be found on the host.
     bool prepare_kernel(const sbrt::Camera &camera, const sbrt::Shading &shading);
     /// Then rows [first, first + count): kernel normals (shading.kernel,
