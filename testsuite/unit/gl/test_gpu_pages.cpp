@@ -78,6 +78,14 @@ void expect_same_image(const Image &want, const Image &got, const std::string &w
 
 constexpr uint64_t WHOLE_BUDGET = uint64_t(1) << 30;
 
+/// A budget of GPU memory for `t`'s paged model: its pyramid (at most half
+/// of it) and room for `blocks` of `c`'s largest blocks.
+uint64_t budget_for_blocks(const PagedCase &c, const Tracer &t, int blocks)
+{
+    const uint64_t pyramid = gpu_pyramid_bytes(t.pyramid());
+    return std::max(2 * pyramid + 1024, pyramid + 1024 + uint64_t(blocks) * c.largest_block());
+}
+
 } // namespace
 
 /// The hits of the paged model `paged` on the GPU against the whole
@@ -164,9 +172,7 @@ TEST_P(GpuPages, AnAtlasOfAFewBlocksHoldsItsBudgetAndTheFrameStaysExact)
     const PagedCase c;
     const Outputs all{true, true, true};
     const Renderer paged(c.paged(WHOLE_BUDGET), 1.5, Scene{}, Shading{}, {2, true, 8});
-    // the pyramid (at most half the budget), and room for three blocks
-    const uint64_t pyramid = gpu_pyramid_bytes(paged.tracer().pyramid());
-    const uint64_t budget = std::max(2 * pyramid + 1024, pyramid + 1024 + 3 * c.largest_block());
+    const uint64_t budget = budget_for_blocks(c, paged.tracer(), 3);
     sbrt_gl::GpuRenderer on_pages(*context_, paged, options(budget));
     const sbrt_gl::GpuPageAtlas &atlas = *on_pages.gpu().model().pages();
     EXPECT_LE(on_pages.gpu().memory().total() + on_pages.gpu().pyramid_bytes(), budget);
@@ -216,8 +222,7 @@ TEST_P(GpuPages, BandByBandAFrameWhoseBlocksExceedTheAtlasStaysOnTheGpu)
     const Outputs all{true, true, true};
     // room for four blocks: a frame wants more, a band of four rows fewer
     const Renderer probe(c.paged(WHOLE_BUDGET), 1.5, Scene{}, Shading{}, {2, true, 4});
-    const uint64_t pyramid = gpu_pyramid_bytes(probe.tracer().pyramid());
-    const uint64_t budget = std::max(2 * pyramid + 1024, pyramid + 1024 + 4 * c.largest_block());
+    const uint64_t budget = budget_for_blocks(c, probe.tracer(), 4);
     const double tolerance = 2e-5 * 2 * probe.tracer().frame().radius();
     // the whole frame as one band; in bands of four rows; in bands as the
     // tracer chooses them, of four rows once the atlas was found crowded
