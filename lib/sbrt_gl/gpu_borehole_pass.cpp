@@ -26,8 +26,9 @@ size_t band_tiles(const sbrt::Camera &camera, int count)
 
 } // namespace
 
-BoreholePass::BoreholePass(const GlApi &gl, const sbrt::Tracer &tracer, size_t max_block_bytes)
-    : gl_(gl), tracer_(tracer), max_block_bytes_(max_block_bytes)
+BoreholePass::BoreholePass(const PassContext &passes)
+    : passes_(passes), gl_(passes.gl), tracer_(passes.tracer),
+      max_block_bytes_(passes.max_block_bytes)
 {
 }
 
@@ -75,10 +76,11 @@ GlBuffer &BoreholePass::tile_list(const sbrt::Camera &camera, bool every_tile, i
     return *list;
 }
 
-void BoreholePass::dispatch(const sbrt::Camera &camera, ProgramSet &programs,
-                            GlComputeProgram &shade, bool every_tile, int first, int count,
-                            int slot, PassTimer &timer, GpuStats &stats)
+void BoreholePass::dispatch(const sbrt::Camera &camera, GlComputeProgram &shade,
+                            bool every_tile, int first, int count, int slot)
 {
+    GpuStats &stats = passes_.stats;
+    PassTimer &timer = passes_.timer;
     const size_t all_tiles = band_tiles(camera, count);
     stats.tiles += all_tiles;
     // the band's tiles a box reaches: listed by the GPU (or every tile by
@@ -94,7 +96,7 @@ void BoreholePass::dispatch(const sbrt::Camera &camera, ProgramSet &programs,
         // the model pass's farthest t of each tile before the culling
         // reads them
         gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        programs.get(Pass::cull_tiles).use();
+        passes_.programs.get(Pass::cull_tiles).use();
         timer.time(int(Pass::cull_tiles), [&] {
             gl_.DispatchCompute(GLuint(tracer_.overlay_boxes().size()), 1, 1);
         });

@@ -16,21 +16,20 @@
 #include "gl_objects.hpp"
 #include "gpu/gpu_layout.hpp"
 #include "mapped_bands.hpp"
+#include "gpu_pass_context.hpp"
 #include "program_set.hpp"
 #include "scene/camera.hpp"
 #include "tracing/tracer.hpp"
 
 namespace sbrt_gl {
 
-struct GpuStats;
-
 /// \brief The boreholes' pass: its tile lists and their counts, one of each
 /// for every slot of MappedBands (a band dispatched ahead writes its own
-/// while the band before is still read). Holds references to its
-/// arguments; the context must be current.
+/// while the band before is still read). Holds the tracer's PassContext
+/// by reference; the context must be current.
 class BoreholePass {
 public:
-    BoreholePass(const GlApi &gl, const sbrt::Tracer &tracer, size_t max_block_bytes);
+    explicit BoreholePass(const PassContext &passes);
 
     /// The bytes of scratch each slot needs for bands of `layout` (each
     /// pixel's t of its model hit, then each tile's farthest: binding 13);
@@ -40,10 +39,9 @@ public:
     /// `slot`: its tiles a box reaches listed (by the GPU; by the host, all
     /// of them, where `every_tile`: the camera among the boxes), `shade`
     /// over them, the count listed copied out for the host. Adds to the
-    /// figures of `stats`.
-    void dispatch(const sbrt::Camera &camera, ProgramSet &programs, GlComputeProgram &shade,
-                  bool every_tile, int first, int count, int slot, PassTimer &timer,
-                  GpuStats &stats);
+    /// tracer's figures.
+    void dispatch(const sbrt::Camera &camera, GlComputeProgram &shade, bool every_tile,
+                  int first, int count, int slot);
     /// The tiles listed in the band of slot `slot`, once it is done.
     uint32_t listed(int slot) const;
 
@@ -53,6 +51,7 @@ private:
     GlBuffer &tile_list(const sbrt::Camera &camera, bool every_tile, int first, int count,
                         int slot);
 
+    const PassContext &passes_;
     const GlApi &gl_;
     const sbrt::Tracer &tracer_;
     size_t max_block_bytes_;

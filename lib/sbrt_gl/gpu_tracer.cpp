@@ -55,7 +55,7 @@ GpuTracer::GpuTracer(const GlContext &context, const sbrt::Tracer &tracer,
               std::max(options.crowded_band_pixels, 1)},
       first_pass_(passes_), records_(passes_),
       shade_(passes_, sbrt_gl::staged_bands(options, gl_renderer())),
-      boreholes_(gl_, tracer, max_block_bytes_), kernel_(passes_, shading_inputs_)
+      boreholes_(passes_), kernel_(passes_, shading_inputs_)
 {
     stats_.upload_ms = ms_since(created_);
 }
@@ -188,9 +188,8 @@ void GpuTracer::shade_rows(const sbrt::Camera &camera, int first_row, int row_co
                          stats_.before_dispatch_ms = ms_since(frame_start_);
                      shade_.dispatch_model(camera, plan, first, count);
                      if (plan.borehole_program)
-                         boreholes_.dispatch(camera, programs_, *plan.borehole_program,
-                                             plan.every_tile, first, count, slot, timer_,
-                                             stats_);
+                         boreholes_.dispatch(camera, *plan.borehole_program,
+                                             plan.every_tile, first, count, slot);
                  });
     if (plan.borehole_program) // the tiles listed in the band just done
         stats_.borehole_tiles += boreholes_.listed(shade_.last_slot());
