@@ -2,7 +2,8 @@
 ############################################################################
 # MODULE:    benchmarks/national_views.sh (r3.sbrt addon)
 # PURPOSE:   Every figure of issue 49's table in one run, per model: the
-#            1056 x 884 default view and the top view of every cell end to
+#            1056 x 884 default view (on the CPU, and on the GPU within the
+#            default gpu_memory=) and the top view of every cell end to
 #            end (r3.sbrt.render, a new process), r3.sbrt.convert -p and
 #            -g, r3.sbrt.what (1000 points), r3.sbrt.profile (across the
 #            model) and r3.sbrt.surface (a 400 x 400-cell region), each
@@ -104,6 +105,11 @@ note model "$name: $cols x $rows x $depths voxels, $intervals intervals"
 note grid "${cols}x${rows}"
 echo "national_views: $name: r3.sbrt.render 1056x884, top view, convert -p -g" >&2
 cold_warm render r3.sbrt.render --o input="$name" size=1056,884 png="$dir/view.png" "${mem[@]}"
+# the same on the GPU (EGL: Mesa's llvmpipe where there is no GPU), its
+# blocks (and for the 16x model its columns) brought up within the
+# default gpu_memory=1024
+cold_warm render_gpu r3.sbrt.render --o input="$name" size=1056,884 png="$dir/view_gpu.png" \
+    backend=egl "${mem[@]}"
 r3.sbrt.convert -s sbrt="$name" # the top view's maps in the model's grid
 cold_warm top r3.sbrt.render --o input="$name" view=top output=views_top png="$dir/top.png" "${mem[@]}"
 cold_warm convert_p r3.sbrt.convert -p sbrt="$name" "${mem[@]}"
@@ -259,6 +265,9 @@ rows = [("model", lambda f: f.get("model", "?").lstrip("! "))]
 for state in ("cold", "warm"):
     rows.append(("r3.sbrt.render 1056x884 default view (png=), end to end, %s" % state,
                  timed("render_" + state)))
+for state in ("cold", "warm"):
+    rows.append(("r3.sbrt.render 1056x884 default view on the GPU (backend=egl, gpu_memory=1024), %s"
+                 % state, timed("render_gpu_" + state)))
 for state in ("cold", "warm"):
     rows.append(("r3.sbrt.render view=top of every cell (the model's grid), %s" % state,
                  timed("top_" + state)))
