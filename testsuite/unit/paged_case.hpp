@@ -29,37 +29,6 @@ namespace sbrt_test {
 
 using namespace sbrt;
 
-/// A model of 37 x 45 cells of 5 materials whose tops are no voxel
-/// boundaries (held wide, two words an interval, on the GPU too).
-inline Model wide_model()
-{
-    Frame f;
-    f.rows = 37;
-    f.cols = 45;
-    f.depths = 40;
-    std::vector<Material> table(6);
-    for (int i = 1; i <= 5; ++i)
-        table[size_t(i)].id = i * 3;
-    std::vector<uint32_t> offsets(f.cells() + 1, 0);
-    Intervals intervals;
-    uint32_t seed = 7;
-    const auto next = [&seed] { return seed = seed * 1664525u + 1013904223u, seed >> 8; };
-    for (uint64_t c = 0; c < f.cells(); ++c) {
-        const int n = 1 + int(next() % 6u);
-        for (int i = 0; i < n; ++i) {
-            const float top = 40.0f * float(i + 1) / float(n) - 0.013f * float(c % 7);
-            uint32_t m = next() % 3 == 0 ? 0u : 1 + next() % 5u;
-            if (i == n - 1 && m == 0)
-                m = 1; // every stack ends in material
-            if (i > 0 && intervals.back().material == m)
-                m = m % 5 + 1; // no two alike in a row
-            intervals.push_back({m, top});
-        }
-        offsets[c + 1] = uint32_t(intervals.size());
-    }
-    return Model(f, std::move(table), std::move(offsets), IntervalArray(std::move(intervals)));
-}
-
 /// A model (by default of 37 x 45 cells from random voxels) in blocks of
 /// 8 (5 x 6 blocks), and its file.
 struct PagedCase {

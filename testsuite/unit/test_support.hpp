@@ -66,6 +66,33 @@ inline Voxels random_voxels(unsigned seed, int rows, int cols, int depths,
     return v;
 }
 
+/// A model with `stack` intervals of continuous (non-integer) tops in
+/// every cell, over `materials` materials.
+inline sbrt::Model float_model(int rows, int cols, int stack, int materials)
+{
+    sbrt::Frame f;
+    f.rows = rows;
+    f.cols = cols;
+    f.depths = 40;
+    std::vector<sbrt::Material> table(size_t(materials) + 1);
+    for (int i = 1; i <= materials; ++i)
+        table[size_t(i)].id = i * 3;
+    std::vector<uint32_t> offsets(f.cells() + 1, 0);
+    sbrt::Intervals intervals;
+    std::mt19937 rng(7);
+    for (uint64_t c = 0; c < f.cells(); ++c) {
+        const int n = 1 + int(rng() % unsigned(stack));
+        for (int i = 0; i < n; ++i) {
+            const float top = 40.0f * float(i + 1) / float(n) - 0.013f * float(c % 7);
+            intervals.push_back({1 + uint32_t(rng() % unsigned(materials)), top});
+            if (i > 0 && intervals[intervals.size() - 2].material == intervals.back().material)
+                intervals.back().material = intervals.back().material % uint32_t(materials) + 1;
+        }
+        offsets[c + 1] = uint32_t(intervals.size());
+    }
+    return sbrt::Model(f, std::move(table), std::move(offsets), sbrt::IntervalArray(std::move(intervals)));
+}
+
 /// The SBRT of a voxel model, built slice by slice.
 inline sbrt::Model build_model(const Voxels &v)
 {

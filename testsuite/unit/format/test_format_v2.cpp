@@ -49,33 +49,6 @@ std::string message_of(const std::vector<uint8_t> &bytes, const ReadOptions &opt
     return "";
 }
 
-/// A model with `stack` intervals of continuous (non-integer) tops in
-/// every cell, over `materials` materials.
-Model float_model(int rows, int cols, int stack, int materials)
-{
-    Frame f;
-    f.rows = rows;
-    f.cols = cols;
-    f.depths = 40;
-    std::vector<Material> table(size_t(materials) + 1);
-    for (int i = 1; i <= materials; ++i)
-        table[size_t(i)].id = i * 3;
-    std::vector<uint32_t> offsets(f.cells() + 1, 0);
-    Intervals intervals;
-    std::mt19937 rng(7);
-    for (uint64_t c = 0; c < f.cells(); ++c) {
-        const int n = 1 + int(rng() % unsigned(stack));
-        for (int i = 0; i < n; ++i) {
-            const float top = 40.0f * float(i + 1) / float(n) - 0.013f * float(c % 7);
-            intervals.push_back({1 + uint32_t(rng() % unsigned(materials)), top});
-            if (i > 0 && intervals[intervals.size() - 2].material == intervals.back().material)
-                intervals.back().material = intervals.back().material % uint32_t(materials) + 1;
-        }
-        offsets[c + 1] = uint32_t(intervals.size());
-    }
-    return Model(f, std::move(table), std::move(offsets), IntervalArray(std::move(intervals)));
-}
-
 /// Rewrites the header checksum after an edit of the header.
 void reseal_header(std::vector<uint8_t> &bytes, uint32_t header_size)
 {
@@ -127,17 +100,17 @@ TEST(FormatV2, VoxelTopsAreU16AndContinuousTopsStayFloat)
 {
     const Model voxels = sbrt_test::build_model(sbrt_test::random_voxels(3, 9, 8, 50));
     EXPECT_EQ(widths_for(voxels).tops, TopEncoding::VoxelBoundaries);
-    const Model horizons = float_model(10, 13, 6, 5);
+    const Model horizons = sbrt_test::float_model(10, 13, 6, 5);
     EXPECT_EQ(widths_for(horizons).tops, TopEncoding::Float32);
     expect_same(decode(encode_stacks_v2(horizons)), horizons);
 }
 
 TEST(FormatV2, WidthsGrowOnlyWhereTheModelNeedsThem)
 {
-    const Model small = float_model(4, 4, 3, 5);
+    const Model small = sbrt_test::float_model(4, 4, 3, 5);
     EXPECT_EQ(widths_for(small).count_bytes, 1);
     EXPECT_EQ(widths_for(small).material_bytes, 1);
-    const Model many = float_model(5, 7, 300, 400); // stacks > 255, 401 materials
+    const Model many = sbrt_test::float_model(5, 7, 300, 400); // stacks > 255, 401 materials
     EXPECT_EQ(widths_for(many).count_bytes, 2);
     EXPECT_EQ(widths_for(many).material_bytes, 2);
     expect_same(decode(encode_stacks_v2(many)), many);
@@ -274,7 +247,7 @@ TEST(FormatV2, PointsReadOnlyTheirCellsFromTheBlocksThatHoldThem)
 {
     // voxel tops (held compact) and continuous tops (held wide)
     for (const Model &model : {sbrt_test::build_model(sbrt_test::random_voxels(12, 40, 50, 30)),
-                               float_model(40, 50, 6, 5)}) {
+                               sbrt_test::float_model(40, 50, 6, 5)}) {
         const Frame &f = model.frame();
         const auto bytes = in_blocks_of_8(model);
         ReadReport report;

@@ -7,6 +7,7 @@
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
 #include <cstring>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -78,6 +79,16 @@ void expect_same_image(const Image &want, const Image &got, const std::string &w
 
 constexpr uint64_t WHOLE_BUDGET = uint64_t(1) << 30;
 
+/// A scene of `model` with the materials `hidden` hidden (crossed as air).
+Scene hiding(const Model &model, std::initializer_list<int> hidden)
+{
+    Scene scene;
+    scene.hidden.assign(model.materials().size(), 0);
+    for (int m : hidden)
+        scene.hidden[size_t(m)] = 1;
+    return scene;
+}
+
 /// A budget of GPU memory for `t`'s paged model: its pyramid (at most half
 /// of it) and room for `blocks` of `c`'s largest blocks.
 uint64_t budget_for_blocks(const PagedCase &c, const Tracer &t, int blocks)
@@ -114,10 +125,7 @@ uint64_t expect_hits_of_the_whole(const sbrt_gl::GlContext &context, const Paged
 TEST_P(GpuPages, HitsOfAPagedModelAreTheWholeModelsBitForBit)
 {
     const PagedCase c;
-    Scene hidden; // strata hidden (crossed as air)
-    hidden.hidden.assign(c.model.materials().size(), 0);
-    hidden.hidden[1] = 1;
-    hidden.hidden[2] = 1;
+    const Scene hidden = hiding(c.model, {1, 2});
     // a plane, and material 1 translucent
     const Scene translucent = cut_and_translucent_scene(c.model);
     bool plain = true;
@@ -259,10 +267,7 @@ TEST_P(GpuPages, ColumnsInPagesGiveTheWholeModelsHitsAndFrames)
 {
     const PagedCase c;
     const Model paged = c.paged(WHOLE_BUDGET, true);
-    Scene hidden;
-    hidden.hidden.assign(c.model.materials().size(), 0);
-    hidden.hidden[1] = 1;
-    hidden.hidden[2] = 1;
+    const Scene hidden = hiding(c.model, {1, 2});
     const Scene translucent = cut_and_translucent_scene(c.model);
     // the pyramid from level 1, 2 and 3 on: the columns' pages give level
     // 0, and the levels between are not on the GPU
@@ -299,8 +304,9 @@ TEST_P(GpuPages, ColumnsInPagesGiveTheWholeModelsHitsAndFrames)
 
 TEST_P(GpuPages, ColumnsInPagesOfAWideModelGiveItsHitsBitForBit)
 {
-    // two words a column's top interval and two its range
-    const PagedCase c(wide_model());
+    // two words a column's top interval and two its range: tops that are
+    // no voxel boundaries
+    const PagedCase c(float_model(37, 45, 6, 5));
     const Model paged = c.paged(WHOLE_BUDGET, true);
     ASSERT_FALSE(sbrt_gl::compact_on_gpu(paged));
     for (int level : {1, 2, 3}) {
@@ -341,9 +347,7 @@ TEST_P(GpuPages, AnotherSceneOfTheModelTakesOverItsBlocksOnTheGpu)
 {
     const PagedCase c;
     const Model paged = c.paged(WHOLE_BUDGET, true);
-    Scene hidden;
-    hidden.hidden.assign(c.model.materials().size(), 0);
-    hidden.hidden[1] = 1;
+    const Scene hidden = hiding(c.model, {1});
     std::shared_ptr<sbrt_gl::GpuPageAtlas> kept;
     sbrt_gl::GpuOptions keeping = options(WHOLE_BUDGET);
     keeping.kept_atlas = &kept;
