@@ -11,6 +11,7 @@
 #include "format/stacks_fields.hpp"
 #include "format/stacks_v2_layout.hpp"
 #include "util/error.hpp"
+#include "util/unfilled_allocator.hpp"
 
 namespace sbrt {
 
@@ -58,7 +59,8 @@ std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, siz
                                                         const StacksStamp &stamp,
                                                         unsigned threads)
 {
-    std::vector<ZRange> ranges(frame.cells());
+    // (60 MB in a national model: its faults on huge pages)
+    std::vector<ZRange> ranges = vector_on_huge_pages<ZRange>(frame.cells());
     const float depths = float(frame.depths);
     const size_t row_cells = size_t(frame.cols);
     // band by band on all cores (7.4 million columns in a national model,

@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "util/parallel.hpp"
+#include "util/unfilled_allocator.hpp"
 
 namespace sbrt {
 
@@ -103,7 +104,7 @@ void MinMaxPyramid::build_above()
     while (cols > 1 || rows > 1) {
         const int level = int(dims_.size()) - 1;
         const int up_cols = (cols + 1) / 2, up_rows = (rows + 1) / 2;
-        std::vector<ZRange> up(size_t(up_cols) * up_rows);
+        std::vector<ZRange> up = vector_on_huge_pages<ZRange>(size_t(up_cols) * up_rows);
         // each node of the level above from the two rows below it, the
         // rows of nodes on all cores (a national model's level 0 is 7.4
         // million cells, walked on every opening)

@@ -16,6 +16,7 @@
 #include <new>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -76,6 +77,26 @@ struct UnfilledAllocator : std::allocator<T> {
         ::new (static_cast<void *>(p)) U(std::forward<Args>(args)...);
     }
 };
+
+/// A std::vector of `n` plain records whose storage of 2 MiB and more is
+/// advised to be backed by huge pages (Linux) before its records are
+/// value-initialised: the whole 2 MiB pages inside it, as UnfilledAllocator
+/// advises its blocks, for a vector whose type other code names.
+template <typename T>
+std::vector<T> vector_on_huge_pages(size_t n)
+{
+    std::vector<T> v;
+    v.reserve(n);
+#if defined(MADV_HUGEPAGE)
+    constexpr uintptr_t HUGE_PAGE = uintptr_t(2) << 20;
+    const uintptr_t first = (reinterpret_cast<uintptr_t>(v.data()) + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
+    const uintptr_t end = (reinterpret_cast<uintptr_t>(v.data()) + n * sizeof(T)) & ~(HUGE_PAGE - 1);
+    if (end > first)
+        madvise(reinterpret_cast<void *>(first), end - first, MADV_HUGEPAGE); // advice only
+#endif
+    v.resize(n);
+    return v;
+}
 
 } // namespace sbrt
 
