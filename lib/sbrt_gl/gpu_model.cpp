@@ -49,7 +49,7 @@ uint64_t megabytes(uint64_t bytes) { return (bytes + (1 << 20) - 1) >> 20; }
 uint64_t page_table_bytes(const sbrt::StackPages &pages, bool column_pages)
 {
     return (uint64_t(sbrt::GPU_PAGE_TABLE_HEAD) +
-            uint64_t(pages.block_count()) * (column_pages ? 2 : 1)) * 4;
+            uint64_t(sbrt::gpu_page_count(pages, column_pages))) * 4;
 }
 
 /// Bytes of the columns' top intervals where they go up whole as the

@@ -23,7 +23,7 @@ constexpr size_t UPLOAD_CHUNK = 64;
 std::vector<uint32_t> empty_table(const sbrt::StackPages &pages, bool column_pages)
 {
     std::vector<uint32_t> words = sbrt::gpu_page_table_head(pages, column_pages);
-    words.resize(words.size() + size_t(pages.block_count()) * (column_pages ? 2 : 1),
+    words.resize(words.size() + size_t(sbrt::gpu_page_count(pages, column_pages)),
                  sbrt::GPU_PAGE_MISSING);
     return words;
 }
@@ -49,7 +49,7 @@ GpuPageAtlas::GpuPageAtlas(const GlApi &gl,
                            const PagedForm &form, uint64_t budget_bytes, size_t max_block_bytes,
                            unsigned threads)
     : gl_(gl), pages_(*shared_pages), owner_(shared_pages), form_(form),
-      page_count_(shared_pages->block_count() * (form.column_pages ? 2 : 1)), threads_(threads),
+      page_count_(sbrt::gpu_page_count(*shared_pages, form.column_pages)), threads_(threads),
       asked_words_(atlas_words(budget_bytes, max_block_bytes)),
       residency_(page_count_, asked_words_), mark_words_(sbrt::gpu_mark_words(page_count_)),
       table_(gl_, GL_SHADER_STORAGE_BUFFER,

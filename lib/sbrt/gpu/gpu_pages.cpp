@@ -17,10 +17,9 @@ namespace sbrt {
 std::vector<uint32_t> gpu_page_table_head(const StackPages &pages, bool column_pages)
 {
     const int block_cols = (pages.cols() + pages.block_size() - 1) / pages.block_size();
-    const int blocks = pages.block_count();
     return {uint32_t(pages.block_size()), uint32_t(block_cols),
-            gpu_mark_words(column_pages ? 2 * blocks : blocks),
-            column_pages ? uint32_t(blocks) : 0u};
+            gpu_mark_words(gpu_page_count(pages, column_pages)),
+            column_pages ? uint32_t(pages.block_count()) : 0u};
 }
 
 namespace {

@@ -35,6 +35,13 @@ constexpr uint64_t GPU_MAX_ATLAS_WORDS = 0x7fffffe0u;
 /// Words of the page marks' halves for `blocks` blocks: a bit a block.
 inline uint32_t gpu_mark_words(int blocks) { return uint32_t((blocks + 31) / 32); }
 
+/// The pages of `pages` on the GPU: a block each, and with
+/// `column_pages` a page of each block's columns after them.
+inline int gpu_page_count(const StackPages &pages, bool column_pages)
+{
+    return pages.block_count() * (column_pages ? 2 : 1);
+}
+
 /// The page table's head for `pages`; with `column_pages`, pages of the
 /// blocks' columns follow the blocks' (the fourth word: the first's
 /// number, block_count; else 0).
