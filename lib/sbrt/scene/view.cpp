@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "model/stack_pages.hpp"
 #include "util/error.hpp"
 #include "util/parallel.hpp"
 
@@ -121,23 +122,35 @@ std::vector<glm::dvec3> framing_hull(const Model &model, const CoordinateFrame &
     std::vector<int> run_end(static_cast<size_t>(blocks_x));
     for (int bx = 0; bx < blocks_x; ++bx) // the first col with col * blocks_x / cols > bx
         run_end[size_t(bx)] = int(((int64_t(bx) + 1) * f.cols + blocks_x - 1) / blocks_x);
-    // rows in takes on all cores (7.4 million columns in a national model),
-    // each take's highest merged
+    // a paged model's column ranges read directly: the loop over 7.4
+    // million columns (national) with nothing else in it
+    const ZRange *ranges = model.pages() && model.pages()->has_column_ranges()
+                               ? model.pages()->column_ranges().data()
+                               : nullptr;
+    // rows in takes on all cores, each take's highest merged
     std::mutex merge;
     for_each_take(0, f.rows, 0, 256, [&](int first_row, int end_row) {
         std::vector<double> take_top(top.size(), -HUGE_VAL);
-        for (int row = first_row; row < end_row; ++row) {
-            // row 0 is the north edge
-            const int by = (f.rows - 1 - row) * blocks_y / f.rows;
-            const uint64_t first = model.cell_index(row, 0);
-            for (int bx = 0, col = 0; bx < blocks_x; ++bx) {
-                double highest = -HUGE_VAL;
-                for (; col < run_end[size_t(bx)]; ++col)
-                    highest = std::max(highest, model.stack_top(first + uint64_t(col)));
-                double &t = take_top[size_t(by * blocks_x + bx)];
-                t = std::max(t, highest);
+        auto scan_rows = [&](const auto &stack_top) {
+            for (int row = first_row; row < end_row; ++row) {
+                // row 0 is the north edge
+                const int by = (f.rows - 1 - row) * blocks_y / f.rows;
+                const uint64_t first = model.cell_index(row, 0);
+                for (int bx = 0, col = 0; bx < blocks_x; ++bx) {
+                    double highest = -HUGE_VAL;
+                    for (; col < run_end[size_t(bx)]; ++col)
+                        highest = std::max(highest, stack_top(first + uint64_t(col)));
+                    double &t = take_top[size_t(by * blocks_x + bx)];
+                    t = std::max(t, highest);
+                }
             }
-        }
+        };
+        if (ranges) // Model::stack_top's answer for these
+            scan_rows([ranges](uint64_t cell) {
+                return ranges[cell].empty() ? -1.0 : double(ranges[cell].high);
+            });
+        else
+            scan_rows([&model](uint64_t cell) { return model.stack_top(cell); });
         const std::lock_guard<std::mutex> lock(merge);
         for (size_t i = 0; i < top.size(); ++i)
             top[i] = std::max(top[i], take_top[i]);
