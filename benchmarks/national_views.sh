@@ -39,6 +39,9 @@
 #                             SBRT_BENCH_DATA (/tmp/r3sbrt_bench)
 #                   T S A B C or CxRxD  a demo model (tools/bench_model.sh)
 #            LIMIT: seconds for any one measured command (1800)
+#            ROUNDS: rounds of the default view on the CPU, cold and warm
+#            (3; its rows give the median and the fastest-slowest, and
+#            the national / B ratio of the cold medians follows the table)
 #            MEMORY: adds memory=MEMORY to the r3.sbrt.render, convert,
 #            what, profile and surface runs and to the viewer's requests (their rows say so where
 #            refused); x16 runs with memory=2000 where MEMORY is not given
@@ -51,7 +54,7 @@ root=$(cd "$here/.." && pwd)
 if [ $# -gt 0 ]; then models=("$@"); else read -ra models <<<"${SIZES:-national B}"; fi
 data=${SBRT_BENCH_DATA:-/tmp/r3sbrt_bench}
 nat_db=${NAT_GISDBASE:-/tmp/nat/grass} nat=${NAT_SBRT:-nat}
-limit=${LIMIT:-1800}
+limit=${LIMIT:-1800} rounds=${ROUNDS:-3}
 work=$(mktemp -d /tmp/national_views.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 load_start=$(cut -d' ' -f1-3 /proc/loadavg)
@@ -62,7 +65,7 @@ load_start=$(cut -d' ' -f1-3 /proc/loadavg)
 # the viewer's figures are JSON files beside it.
 cat >"$work/views_one.sh" <<'EOS'
 set -uo pipefail # no -e: a figure that fails is written down, not fatal
-kind=$1 spec=$2 tools=$3 here=$4 data=$5 dir=$6 limit=$7 memory=$8
+kind=$1 spec=$2 tools=$3 here=$4 data=$5 dir=$6 limit=$7 memory=$8 rounds=$9
 res=$dir/figures
 note() { printf '%s\t%s\n' "$1" "$2" >>"$res"; }
 case $kind in
@@ -98,13 +101,30 @@ cold_warm() { # KEY CMD...: cold (caches dropped, a new process), then warm
     run "${key}_cold" "$@"
     run "${key}_warm" "$@"
 }
+cold_warm_rounds() { # KEY ROUNDS CMD...: cold_warm ROUNDS times; each state's
+    # median (by seconds) as KEY_STATE, its fastest-slowest as KEY_STATE_spread
+    local key=$1 rounds=$2 state r times; shift 2
+    for ((r = 1; r <= rounds; ++r)); do cold_warm "${key}_round${r}" "$@"; done
+    for state in cold warm; do
+        times=$(grep -E "^${key}_round[0-9]+_${state}"$'\t' "$res" | cut -f2 | grep -v '^!' | sort -n) || true
+        if [ -z "$times" ]; then
+            note "${key}_$state" "$(grep -E "^${key}_round[0-9]+_${state}"$'\t' "$res" | cut -f2 | head -1)"
+            continue
+        fi
+        note "${key}_$state" "$(sed -n "$(( ($(wc -l <<<"$times") + 1) / 2 ))p" <<<"$times")"
+        note "${key}_${state}_spread" "$(head -1 <<<"$times" | cut -d' ' -f1)-$(tail -1 <<<"$times" | cut -d' ' -f1) s of $(wc -l <<<"$times")"
+    done
+}
 describe=$(r3.sbrt.convert -g sbrt="$name" 2>"$dir/err") ||
     { note model "! r3.sbrt.convert -g: $(tail -1 "$dir/err")"; exit 0; }
 eval "$describe"
 note model "$name: $cols x $rows x $depths voxels, $intervals intervals"
 note grid "${cols}x${rows}"
 echo "national_views: $name: r3.sbrt.render 1056x884, top view, convert -p -g" >&2
-cold_warm render r3.sbrt.render --o input="$name" size=1056,884 png="$dir/view.png" "${mem[@]}"
+# the figure issue 49's ratio target compares: the median of ROUNDS rounds
+# (a single run on a shared 2-core machine moves by a fifth)
+cold_warm_rounds render "$rounds" r3.sbrt.render --o input="$name" size=1056,884 \
+    png="$dir/view.png" "${mem[@]}"
 # the same on the GPU (EGL: Mesa's llvmpipe where there is no GPU), its
 # blocks (and for the 16x model its columns) brought up within the
 # default gpu_memory=1024
@@ -181,7 +201,7 @@ for i in "${!models[@]}"; do
     printf '%s\n' "$model" "$kind $spec ($db${memory:+; memory=$memory})" >"$dir/name"
     sbrt_location "$db"
     if ! in_grass "$mapset" bash "$work/views_one.sh" "$kind" "$spec" "$root/tools" "$here" "$data" \
-        "$dir" "$limit" "$memory" 2>&1 |
+        "$dir" "$limit" "$memory" "$rounds" 2>&1 |
         { grep -v "^Starting GRASS\|^Cleaning up\|^Executing\|^Execution of" || true; } >&2; then
         printf 'model\t! the GRASS session failed\n' >>"$dir/figures"
     fi
@@ -241,6 +261,21 @@ def timed(key):
     return cell
 
 
+def spread(cell, key):
+    """cell's figure, with the fastest-slowest of its rounds."""
+    def with_spread(figures):
+        value = figures.get(key)
+        return cell(figures) + (" (%s)" % value if value else "")
+    return with_spread
+
+
+def seconds(figures, key):
+    try:
+        return float(figures.get(key, "").split()[0])
+    except (ValueError, IndexError):
+        return None
+
+
 def from_json(part, fmt):
     def cell(figures):
         data = figures[part]
@@ -263,8 +298,8 @@ def mb(kb):
 
 rows = [("model", lambda f: f.get("model", "?").lstrip("! "))]
 for state in ("cold", "warm"):
-    rows.append(("r3.sbrt.render 1056x884 default view (png=), end to end, %s" % state,
-                 timed("render_" + state)))
+    rows.append(("r3.sbrt.render 1056x884 default view (png=), end to end, %s (median; fastest-slowest)"
+                 % state, spread(timed("render_" + state), "render_%s_spread" % state)))
 for state in ("cold", "warm"):
     rows.append(("r3.sbrt.render 1056x884 default view on the GPU (backend=egl, gpu_memory=1024), %s"
                  % state, timed("render_gpu_" + state)))
@@ -330,4 +365,11 @@ for label, cell in rows:
 widths = [max(len(r[c]) for r in table) for c in range(len(table[0]))]
 for r in table:
     print(" | ".join(v.ljust(w) for v, w in zip(r, widths)).rstrip())
+# issue 49's first target: the national default view, cold, within 2x B's
+names = [n for n, _, _ in models]
+if "national" in names and "B" in names:
+    national, b = (seconds(models[names.index(n)][2], "render_cold") for n in ("national", "B"))
+    if national and b:
+        print()
+        print("default view, cold, median: national / B = %.2f / %.2f s = %.2fx" % (national, b, national / b))
 EOF
