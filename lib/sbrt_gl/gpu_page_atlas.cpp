@@ -37,6 +37,25 @@ GlBuffer column_buffer(const GlApi &gl, const void *records, uint64_t bytes, siz
                     records);
 }
 
+/// The columns' ranges as the shaders read them (two floats a column),
+/// widened a slice at a time where held compact.
+GlBuffer ranges_buffer(const GlApi &gl, const sbrt::ColumnRangeArray &ranges, size_t limit)
+{
+    const uint64_t bytes = uint64_t(ranges.size()) * sizeof(sbrt::ZRange);
+    if (!ranges.is_compact())
+        return column_buffer(gl, ranges.wide_data(), bytes, limit, "columns' ranges");
+    GlBuffer buffer = column_buffer(gl, nullptr, bytes, limit, "columns' ranges");
+    constexpr size_t SLICE = size_t(1) << 20;
+    std::vector<sbrt::ZRange> wide;
+    for (size_t at = 0; at < ranges.size(); at += SLICE) {
+        wide.resize(std::min(SLICE, ranges.size() - at));
+        for (size_t i = 0; i < wide.size(); ++i)
+            wide[i] = ranges[at + i];
+        buffer.write(at * sizeof(sbrt::ZRange), wide.data(), wide.size() * sizeof(sbrt::ZRange));
+    }
+    return buffer;
+}
+
 } // namespace
 
 uint64_t atlas_words(uint64_t budget_bytes, size_t max_block_bytes)
@@ -59,11 +78,8 @@ GpuPageAtlas::GpuPageAtlas(const GlApi &gl,
       atlas_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(residency_.atlas_words()) * 4),
       marks_(gl_, GL_SHADER_STORAGE_BUFFER, size_t(mark_words_) * 2 * 4)
 {
-    if (form.ranges_whole) {
-        const std::vector<sbrt::ZRange> &ranges = pages_.column_ranges();
-        ranges_.emplace(column_buffer(gl_, ranges.data(), ranges.size() * sizeof(sbrt::ZRange),
-                                      max_block_bytes, "columns' ranges"));
-    }
+    if (form.ranges_whole)
+        ranges_.emplace(ranges_buffer(gl_, pages_.column_ranges(), max_block_bytes));
     if (form.tops_whole) {
         const sbrt::IntervalArray &tops = pages_.column_tops();
         tops_.emplace(column_buffer(

@@ -118,6 +118,18 @@ std::vector<uint8_t> encode_column_member(const char (&magic)[8], const Frame &f
     return out.bytes();
 }
 
+uint32_t column_member_encoding(const uint8_t *data, size_t size, const std::string &what,
+                                const char *kind, const char (&magic)[8])
+{
+    constexpr size_t ENCODING_AT = sizeof magic + 2 * 4;
+    if (size < ENCODING_AT + 4 || std::memcmp(data, magic, sizeof magic) != 0)
+        fail(what, ": not a ", kind, " member (bad magic number)");
+    const uint32_t encoding = uint32_t(load_le(data + ENCODING_AT, 4));
+    if (column_record_bytes(encoding) == 0)
+        fail(what, ": an encoding this reader does not know (corrupt file)");
+    return encoding;
+}
+
 std::optional<uint32_t> decode_column_member(const uint8_t *data, size_t size,
                                              const std::string &what, const char *kind,
                                              const char (&magic)[8], const Frame &frame,

@@ -131,6 +131,13 @@ using ColumnBandReader =
 /// the member was made from other stacks (stale). Damage, another magic
 /// or an unknown encoding throw sbrt::Error naming `what` (`kind`: what
 /// the member holds), as `read` may.
+/// The encoding a per-column member's header names (NARROW_RECORDS or
+/// WIDE_RECORDS); throws sbrt::Error naming `what` where the bytes are not
+/// such a member (another `magic`; `kind`: what it holds) or name an
+/// encoding this reader does not know.
+uint32_t column_member_encoding(const uint8_t *data, size_t size, const std::string &what,
+                                const char *kind, const char (&magic)[8]);
+
 std::optional<uint32_t> decode_column_member(const uint8_t *data, size_t size,
                                              const std::string &what, const char *kind,
                                              const char (&magic)[8], const Frame &frame,

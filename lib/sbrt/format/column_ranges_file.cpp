@@ -53,40 +53,63 @@ std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, con
     return encoder.finish(stamp);
 }
 
-std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, size_t size,
-                                                        const std::string &what,
-                                                        const Frame &frame,
-                                                        const StacksStamp &stamp,
-                                                        unsigned threads)
+namespace {
+
+/// A member's column range, checked: empty as 1 > 0 (ZRange{}), or a
+/// range within the depths; throws sbrt::Error naming `what` else.
+ZRange checked_range(const ZRange &r, float depths, const std::string &what)
 {
-    // (60 MB in a national model: its faults on huge pages)
-    std::vector<ZRange> ranges = vector_on_huge_pages<ZRange>(frame.cells());
+    if (r.low == 1 && r.high == 0)
+        return ZRange{};
+    if (!(r.low >= 0 && r.low < r.high && r.high <= depths))
+        fail(what, ": a column range outside the model's depths (corrupt file)");
+    return r;
+}
+
+} // namespace
+
+std::optional<ColumnRangeArray> decode_column_ranges(const uint8_t *data, size_t size,
+                                                     const std::string &what,
+                                                     const Frame &frame,
+                                                     const StacksStamp &stamp,
+                                                     unsigned threads)
+{
+    const uint32_t encoding =
+        column_member_encoding(data, size, what, "column ranges", ColumnRangeCodec::MAGIC);
     const float depths = float(frame.depths);
     const size_t row_cells = size_t(frame.cols);
     // band by band on all cores (7.4 million columns in a national model,
-    // read on every opening)
-    const auto read = [&](uint32_t encoding, int first_row, int rows, const uint8_t *p) {
-        ZRange *out = ranges.data() + size_t(first_row) * row_cells;
-        const size_t pair = column_record_bytes(encoding);
-        for (size_t c = 0; c < size_t(rows) * row_cells; ++c, p += pair) {
-            ZRange r;
-            if (encoding == NARROW_RECORDS)
-                r = ColumnRangeCodec::narrow(p);
-            else {
-                std::memcpy(&r.low, p, 4);
-                std::memcpy(&r.high, p + 4, 4);
+    // read on every opening), held as the member holds them: a narrow
+    // member's u16 pairs as they are (30 MB in a national model, and the
+    // tracer's level 0), a wide one's floats
+    if (encoding == NARROW_RECORDS) {
+        std::vector<CompactRange> ranges = vector_on_huge_pages<CompactRange>(frame.cells());
+        const auto read = [&](uint32_t, int first_row, int rows, const uint8_t *p) {
+            CompactRange *out = ranges.data() + size_t(first_row) * row_cells;
+            for (size_t c = 0; c < size_t(rows) * row_cells; ++c, p += 4) {
+                const ZRange r = checked_range(ColumnRangeCodec::narrow(p), depths, what);
+                out[c] = r.empty() ? CompactRange{} : CompactRange{uint16_t(r.low), uint16_t(r.high)};
             }
-            // empty as 1 > 0, or a range within the depths
-            const bool empty = r.low == 1 && r.high == 0;
-            if (!empty && !(r.low >= 0 && r.low < r.high && r.high <= depths))
-                fail(what, ": a column range outside the model's depths (corrupt file)");
-            out[c] = empty ? ZRange{} : r;
+        };
+        if (!decode_column_member(data, size, what, "column ranges", ColumnRangeCodec::MAGIC,
+                                  frame, stamp, column_record_bytes, threads, read))
+            return std::nullopt; // made from other stacks
+        return ColumnRangeArray(std::move(ranges));
+    }
+    std::vector<ZRange> ranges = vector_on_huge_pages<ZRange>(frame.cells());
+    const auto read = [&](uint32_t, int first_row, int rows, const uint8_t *p) {
+        ZRange *out = ranges.data() + size_t(first_row) * row_cells;
+        for (size_t c = 0; c < size_t(rows) * row_cells; ++c, p += 8) {
+            ZRange r;
+            std::memcpy(&r.low, p, 4);
+            std::memcpy(&r.high, p + 4, 4);
+            out[c] = checked_range(r, depths, what);
         }
     };
     if (!decode_column_member(data, size, what, "column ranges", ColumnRangeCodec::MAGIC, frame,
                               stamp, column_record_bytes, threads, read))
         return std::nullopt; // made from other stacks
-    return ranges;
+    return ColumnRangeArray(std::move(ranges));
 }
 
 } // namespace sbrt

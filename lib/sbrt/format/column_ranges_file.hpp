@@ -15,6 +15,7 @@
 
 #include "format/byte_io.hpp"
 #include "format/column_member.hpp"
+#include "model/column_range_array.hpp"
 #include "model/model.hpp"
 #include "model/z_range.hpp"
 
@@ -43,14 +44,14 @@ std::vector<uint8_t> encode_column_ranges(const std::vector<ZRange> &ranges, con
                                           const StacksStamp &stamp);
 
 /// The ranges of untrusted member bytes for stacks of `frame` stamped
-/// `stamp`; nothing where the member was made from other stacks (stale:
-/// read the blocks instead). Damage throws sbrt::Error naming `what`.
-/// Converted row by row on `threads` threads (0: all cores).
-std::optional<std::vector<ZRange>> decode_column_ranges(const uint8_t *data, size_t size,
-                                                        const std::string &what,
-                                                        const Frame &frame,
-                                                        const StacksStamp &stamp,
-                                                        unsigned threads = 0);
+/// `stamp`, held compact where the member is narrow; nothing where the
+/// member was made from other stacks (stale: read the blocks instead).
+/// Damage throws sbrt::Error naming `what`. Converted row by row on
+/// `threads` threads (0: all cores).
+std::optional<ColumnRangeArray> decode_column_ranges(const uint8_t *data, size_t size,
+                                                     const std::string &what, const Frame &frame,
+                                                     const StacksStamp &stamp,
+                                                     unsigned threads = 0);
 
 } // namespace sbrt
 

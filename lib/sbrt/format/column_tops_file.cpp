@@ -46,7 +46,7 @@ Record read_top(const uint8_t *raw, uint32_t encoding, const ZRange &range, size
 template <typename Records>
 std::optional<Records> read_tops(const uint8_t *data, size_t size, const std::string &what,
                                  const Frame &frame, const StacksStamp &stamp,
-                                 const std::vector<ZRange> &ranges, size_t materials,
+                                 const ColumnRangeArray &ranges, size_t materials,
                                  unsigned threads)
 {
     using Record = typename Records::value_type;
@@ -55,8 +55,10 @@ std::optional<Records> read_tops(const uint8_t *data, size_t size, const std::st
     const auto read = [&](uint32_t encoding, int first_row, int rows, const uint8_t *p) {
         const size_t first = size_t(first_row) * row_cells;
         const size_t record = column_record_bytes(encoding);
-        for (size_t c = first; c < first + size_t(rows) * row_cells; ++c, p += record)
-            tops[c] = read_top<Record>(p, encoding, ranges[c], materials, what);
+        ranges.visit([&](const auto *range) {
+            for (size_t c = first; c < first + size_t(rows) * row_cells; ++c, p += record)
+                tops[c] = read_top<Record>(p, encoding, widened(range[c]), materials, what);
+        });
     };
     if (!decode_column_member(data, size, what, "column tops", ColumnTopCodec::MAGIC, frame, stamp,
                               column_record_bytes, threads, read))
@@ -64,19 +66,10 @@ std::optional<Records> read_tops(const uint8_t *data, size_t size, const std::st
     return tops;
 }
 
-/// The encoding a `tops` member's header names; throws sbrt::Error
-/// naming `what` where it is not such a member or names none this reader
-/// knows.
+/// The encoding a `tops` member's header names.
 uint32_t tops_encoding(const uint8_t *data, size_t size, const std::string &what)
 {
-    const char(&magic)[8] = ColumnTopCodec::MAGIC;
-    constexpr size_t ENCODING_AT = sizeof magic + 2 * 4;
-    if (size < ENCODING_AT + 4 || std::memcmp(data, magic, sizeof magic) != 0)
-        fail(what, ": not a column tops member (bad magic number)");
-    const uint32_t encoding = uint32_t(load_le(data + ENCODING_AT, 4));
-    if (column_record_bytes(encoding) == 0)
-        fail(what, ": an encoding this reader does not know (corrupt file)");
-    return encoding;
+    return column_member_encoding(data, size, what, "column tops", ColumnTopCodec::MAGIC);
 }
 
 } // namespace
@@ -107,7 +100,7 @@ uint64_t column_tops_bytes(const uint8_t *data, size_t size, const Frame &frame,
 std::optional<IntervalArray> decode_column_tops(const uint8_t *data, size_t size,
                                                 const std::string &what, const Frame &frame,
                                                 const StacksStamp &stamp,
-                                                const std::vector<ZRange> &ranges,
+                                                const ColumnRangeArray &ranges,
                                                 size_t materials, unsigned threads)
 {
     if (ranges.size() != frame.cells())

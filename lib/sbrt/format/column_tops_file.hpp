@@ -17,6 +17,7 @@
 
 #include "format/byte_io.hpp"
 #include "format/column_member.hpp"
+#include "model/column_range_array.hpp"
 #include "model/interval_array.hpp"
 #include "model/z_range.hpp"
 
@@ -53,7 +54,7 @@ uint64_t column_tops_bytes(const uint8_t *data, size_t size, const Frame &frame,
 std::optional<IntervalArray> decode_column_tops(const uint8_t *data, size_t size,
                                                 const std::string &what, const Frame &frame,
                                                 const StacksStamp &stamp,
-                                                const std::vector<ZRange> &ranges,
+                                                const ColumnRangeArray &ranges,
                                                 size_t materials, unsigned threads = 0);
 
 } // namespace sbrt

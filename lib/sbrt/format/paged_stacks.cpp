@@ -107,7 +107,7 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
         return std::nullopt;
     auto layout = std::make_shared<const StacksV2Layout>(open_stacks_v2(data, size, what));
     // each column's range, where a member made from these stacks holds it
-    std::vector<ZRange> ranges;
+    ColumnRangeArray ranges;
     if (stored.ranges.bytes && paging.column_ranges != Paging::Ranges::none)
         if (auto decoded = decode_column_ranges(stored.ranges.bytes->data(),
                                                 stored.ranges.bytes->size(), stored.ranges.what,

@@ -48,7 +48,7 @@ std::vector<uint32_t> gpu_column_page_words(const StackPages &pages, int b, bool
 {
     if (!pages.has_column_tops())
         fail("a page of columns needs the model's column tops");
-    const std::vector<ZRange> &ranges = pages.column_ranges();
+    const ColumnRangeArray &ranges = pages.column_ranges();
     const IntervalArray &tops = pages.column_tops();
     const StackBlock cells = pages.block_cells(b);
     const uint32_t per_column = gpu_column_words(compact);

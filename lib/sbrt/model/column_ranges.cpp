@@ -36,7 +36,7 @@ double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange
 std::vector<ZRange> column_ranges(const Model &model)
 {
     if (const StackPages *pages = model.pages())
-        return pages->column_ranges();
+        return pages->column_ranges().widened_all();
     std::vector<ZRange> ranges(model.frame().cells());
     model.intervals().visit([&](const auto *records) {
         for (uint64_t cell = 0; cell < ranges.size(); ++cell) {

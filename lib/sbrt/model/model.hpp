@@ -150,7 +150,7 @@ public:
     double stack_top(uint64_t cell) const
     {
         if (pages_ && pages_->has_column_ranges()) {
-            const ZRange &range = pages_->column_ranges()[cell];
+            const ZRange range = pages_->column_ranges()[cell];
             return range.empty() ? -1.0 : double(range.high);
         }
         return visit_stack(cell, [](const auto *first, const auto *last) {

@@ -38,7 +38,7 @@ double mib(uint64_t bytes)
 
 StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
                        uint64_t budget_bytes, const char *budget_name, unsigned threads,
-                       std::vector<ZRange> ranges, bool ranges_needed)
+                       ColumnRangeArray ranges, bool ranges_needed)
     : rows_(frame.rows), cols_(frame.cols), size_(checked_block_size(block_size)),
       block_rows_((frame.rows + block_size - 1) / block_size),
       block_cols_((frame.cols + block_size - 1) / block_size), decode_(std::move(decode)),
@@ -49,10 +49,20 @@ StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
         if (ranges.size() != frame.cells())
             fail("StackPages: ", ranges.size(), " column ranges for ", frame.cells(),
                  " cells");
-        float highest = 0;
-        for (const ZRange &range : ranges) // (branch-free: vectorised)
-            highest = std::max(highest, range.low <= range.high ? range.high : 0.0f);
-        highest_top_ = highest;
+        // (branch-free loops: vectorised)
+        if (const CompactRange *compact = ranges.compact_data()) {
+            uint16_t highest = 0; // an empty column's high is 0
+            for (size_t i = 0; i < ranges.size(); ++i)
+                highest = std::max(highest, compact[i].high);
+            highest_top_ = highest;
+        }
+        else {
+            const ZRange *wide = ranges.wide_data();
+            float highest = 0;
+            for (size_t i = 0; i < ranges.size(); ++i)
+                highest = std::max(highest, wide[i].low <= wide[i].high ? wide[i].high : 0.0f);
+            highest_top_ = highest;
+        }
     }
     else if (!ranges_needed) {
         return; // none held
@@ -60,14 +70,15 @@ StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
     else {
         // every block read once; those read first stay while they fit,
         // none is dropped for a later one (the rays will ask for their own)
-        ranges.resize(frame.cells());
+        std::vector<ZRange> read(frame.cells());
         std::vector<double> tops(slots_.size(), 0.0);
         for_each_row(block_count(), threads, [&](int b) {
-            tops[size_t(b)] = block_column_ranges(*fetch(b, false), cols_, ranges);
+            tops[size_t(b)] = block_column_ranges(*fetch(b, false), cols_, read);
         });
         highest_top_ = *std::max_element(tops.begin(), tops.end());
+        ranges = ColumnRangeArray::packed(std::move(read));
     }
-    ranges_ = std::make_shared<const std::vector<ZRange>>(std::move(ranges));
+    ranges_ = std::make_shared<const ColumnRangeArray>(std::move(ranges));
 }
 
 void StackPages::fail_no_ranges()

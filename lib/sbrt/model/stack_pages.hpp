@@ -17,6 +17,7 @@
 #include <mutex>
 #include <vector>
 
+#include "model/column_range_array.hpp"
 #include "model/interval_array.hpp"
 #include "model/stack_index.hpp"
 #include "model/z_range.hpp"
@@ -69,7 +70,7 @@ public:
     /// is then held). Throws sbrt::Error where a block alone takes more
     /// than the budget (`budget_name` names the option that sets it).
     StackPages(const Frame &frame, int block_size, Decoder decode, uint64_t budget_bytes,
-               const char *budget_name, unsigned threads, std::vector<ZRange> ranges = {},
+               const char *budget_name, unsigned threads, ColumnRangeArray ranges = {},
                bool ranges_needed = true);
 
     int rows() const { return rows_; }
@@ -101,14 +102,14 @@ public:
     /// Each cell's range of material (row by row, row 0 north; EMPTY left
     /// out): MinMaxPyramid's cells without hidden strata. Throws
     /// sbrt::Error where they are not held.
-    const std::vector<ZRange> &column_ranges() const
+    const ColumnRangeArray &column_ranges() const
     {
         if (!ranges_)
             fail_no_ranges();
         return *ranges_;
     }
     /// The same, shared (a pyramid's level 0).
-    std::shared_ptr<const std::vector<ZRange>> shared_column_ranges() const { return ranges_; }
+    std::shared_ptr<const ColumnRangeArray> shared_column_ranges() const { return ranges_; }
     /// The highest top of any stack (local units), 0 where all are empty;
     /// throws sbrt::Error where the column ranges are not held.
     double highest_top_local() const
@@ -155,7 +156,7 @@ private:
     /// set later still holds the block just decoded)
     const uint64_t opened_budget_;
     const char *budget_name_;
-    std::shared_ptr<const std::vector<ZRange>> ranges_;
+    std::shared_ptr<const ColumnRangeArray> ranges_;
     double highest_top_ = 0;
     std::vector<std::vector<uint16_t>> block_materials_; ///< empty: not known
     IntervalArray tops_; ///< empty: not held

@@ -111,11 +111,11 @@ void MinMaxPyramid::build_above()
         const unsigned threads = size_t(cols) * size_t(rows) < (size_t(1) << 16) ? 1 : 0;
         for_each_row(up_rows, threads, [&](int up_y) {
             ZRange *out = up.data() + size_t(up_y) * up_cols;
-            for (int y = 2 * up_y; y < std::min(rows, 2 * up_y + 2); ++y) {
-                const ZRange *in = &node(level, 0, y);
-                for (int x = 0; x < cols; ++x)
-                    widen(out[x / 2], in[x]);
-            }
+            for (int y = 2 * up_y; y < std::min(rows, 2 * up_y + 2); ++y)
+                visit_row(level, y, [&](const auto *in) {
+                    for (int x = 0; x < cols; ++x)
+                        widen(out[x / 2], widened(in[x]));
+                });
         });
         levels_.push_back(std::move(up));
         dims_.push_back({up_cols, up_rows});
@@ -129,11 +129,11 @@ uint64_t MinMaxPyramid::empty_cells() const
     if (dims_.empty())
         return 0;
     uint64_t n = 0;
-    for (int y = 0; y < rows(0); ++y) {
-        const ZRange *row = &node(0, 0, y);
-        for (int x = 0; x < cols(0); ++x)
-            n += row[x].empty();
-    }
+    for (int y = 0; y < rows(0); ++y)
+        visit_row(0, y, [&](const auto *row) {
+            for (int x = 0; x < cols(0); ++x)
+                n += widened(row[x]).empty();
+        });
     return n;
 }
 
@@ -141,7 +141,8 @@ uint64_t MinMaxPyramid::bytes() const
 {
     uint64_t n = 0;
     for (size_t level = 0; level < dims_.size(); ++level)
-        n += uint64_t(dims_[level].first) * uint64_t(dims_[level].second) * sizeof(ZRange);
+        n += uint64_t(dims_[level].first) * uint64_t(dims_[level].second) *
+             (level == 0 && shared_base_ ? shared_base_->record_bytes() : sizeof(ZRange));
     return n;
 }
 

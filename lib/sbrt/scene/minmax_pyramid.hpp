@@ -15,6 +15,7 @@
 #include <mutex>
 #include <vector>
 
+#include "model/column_range_array.hpp"
 #include "model/model.hpp"
 #include "model/z_range.hpp"
 
@@ -64,11 +65,23 @@ public:
     int levels() const { return int(dims_.size()); }
     int cols(int level) const { return dims_[level].first; }
     int rows(int level) const { return dims_[level].second; }
-    const ZRange &node(int level, int x, int y) const
+    ZRange node(int level, int x, int y) const
     {
         if (level == 0 && shared_base_) // row by row from the north
             return (*shared_base_)[size_t(dims_[0].second - 1 - y) * dims_[0].first + x];
         return levels_[level][size_t(y) * dims_[level].first + x];
+    }
+    /// Calls f with row y of `level` (x from the west): a const ZRange *,
+    /// or a const CompactRange * where level 0 is compact column ranges
+    /// (read with widened()).
+    template <typename F>
+    decltype(auto) visit_row(int level, int y, F &&f) const
+    {
+        if (level == 0 && shared_base_)
+            return shared_base_->visit([&](const auto *first) {
+                return f(first + size_t(dims_[0].second - 1 - y) * dims_[0].first);
+            });
+        return f(levels_[level].data() + size_t(y) * dims_[level].first);
     }
     /// Whether level 0 is a paged model's column ranges, shared.
     bool shares_column_ranges() const { return shared_base_ != nullptr; }
@@ -93,12 +106,12 @@ private:
     /// Whether `narrow` leaves every cell of `ranges` (row by row from the
     /// north) as it is.
     template <typename Narrow>
-    static bool narrows_none(const Frame &f, const std::vector<ZRange> &ranges,
+    static bool narrows_none(const Frame &f, const ColumnRangeArray &ranges,
                              const Narrow &narrow)
     {
         for (int y = 0; y < f.rows; ++y)
             for (int x = 0; x < f.cols; ++x) {
-                const ZRange &cell = ranges[size_t(f.rows - 1 - y) * f.cols + x];
+                const ZRange cell = ranges[size_t(f.rows - 1 - y) * f.cols + x];
                 ZRange narrowed = cell;
                 narrow(x, y, narrowed);
                 if (narrowed.low != cell.low || narrowed.high != cell.high)
@@ -106,7 +119,7 @@ private:
             }
         return true;
     }
-    static bool narrows_none(const Frame &, const std::vector<ZRange> &, const KeepEveryCell &)
+    static bool narrows_none(const Frame &, const ColumnRangeArray &, const KeepEveryCell &)
     {
         return true;
     }
@@ -162,7 +175,7 @@ private:
 
     /// levels_[0] is empty where level 0 is shared_base_
     std::vector<std::vector<ZRange>> levels_;
-    std::shared_ptr<const std::vector<ZRange>> shared_base_;
+    std::shared_ptr<const ColumnRangeArray> shared_base_;
     std::vector<std::pair<int, int>> dims_;
     bool level_0_wider_ = false; ///< the levels above are narrower
 };

@@ -124,9 +124,9 @@ std::vector<glm::dvec3> framing_hull(const Model &model, const CoordinateFrame &
         run_end[size_t(bx)] = int(((int64_t(bx) + 1) * f.cols + blocks_x - 1) / blocks_x);
     // a paged model's column ranges read directly: the loop over 7.4
     // million columns (national) with nothing else in it
-    const ZRange *ranges = model.pages() && model.pages()->has_column_ranges()
-                               ? model.pages()->column_ranges().data()
-                               : nullptr;
+    const ColumnRangeArray *ranges = model.pages() && model.pages()->has_column_ranges()
+                                         ? &model.pages()->column_ranges()
+                                         : nullptr;
     // rows in takes on all cores, each take's highest merged
     std::mutex merge;
     for_each_take(0, f.rows, 0, 256, [&](int first_row, int end_row) {
@@ -146,8 +146,11 @@ std::vector<glm::dvec3> framing_hull(const Model &model, const CoordinateFrame &
             }
         };
         if (ranges) // Model::stack_top's answer for these
-            scan_rows([ranges](uint64_t cell) {
-                return ranges[cell].empty() ? -1.0 : double(ranges[cell].high);
+            ranges->visit([&](const auto *range) {
+                scan_rows([range](uint64_t cell) {
+                    const ZRange r = widened(range[cell]);
+                    return r.empty() ? -1.0 : double(r.high);
+                });
             });
         else
             scan_rows([&model](uint64_t cell) { return model.stack_top(cell); });

@@ -33,6 +33,11 @@ bool same(const std::vector<ZRange> &a, const std::vector<ZRange> &b)
     return true;
 }
 
+bool same(const ColumnRangeArray &a, const std::vector<ZRange> &b)
+{
+    return same(a.widened_all(), b);
+}
+
 Paging roomy()
 {
     Paging paging;
@@ -55,6 +60,9 @@ TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
     const std::optional<Model> paged = read_sbrt_paged(dir, roomy());
     ASSERT_TRUE(paged);
     EXPECT_TRUE(same(paged->pages()->column_ranges(), want));
+    // a voxel model's ranges held as its member holds them: u16 pairs
+    EXPECT_TRUE(paged->pages()->column_ranges().is_compact());
+    EXPECT_EQ(paged->pages()->column_ranges().bytes(), model.frame().cells() * 4);
     EXPECT_EQ(paged->pages()->figures().decodes, 0u); // read from the member
     EXPECT_EQ(paged->pages()->highest_top_local(), highest_top_local(model));
 
@@ -67,6 +75,7 @@ TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
     const std::optional<Model> stale = read_sbrt_paged(dir, roomy());
     ASSERT_TRUE(stale);
     EXPECT_TRUE(same(stale->pages()->column_ranges(), want));
+    EXPECT_TRUE(stale->pages()->column_ranges().is_compact()); // read, then packed
     EXPECT_GT(stale->pages()->figures().decodes, 0u);
 
     // a damaged member is refused, naming it
@@ -100,6 +109,7 @@ TEST(ColumnRangesFile, RangesOfContinuousTopsRoundTrip)
     const auto back = decode_column_ranges(bytes.data(), bytes.size(), "r", f, stamp);
     ASSERT_TRUE(back);
     EXPECT_TRUE(same(*back, ranges));
+    EXPECT_FALSE(back->is_compact()); // floats where the member holds floats
     // a range above the depths is refused
     ranges[4] = {3.0f, 11.0f};
     const std::vector<uint8_t> high = encode_column_ranges(ranges, f, stamp);
@@ -163,4 +173,28 @@ TEST(ColumnRangesFile, MembersOfOneFrameAsWrittenBeforeAreRead)
     // frames that do not hold whole rows of the grid are refused
     const Frame wider = sbrt_test::unit_frame(f.rows * 2, f.cols / 2, f.depths);
     EXPECT_THROW(decode_column_ranges(framed.data(), framed.size(), "r", wider, stamp), Error);
+}
+
+TEST(ColumnRangesFile, CompactRangesReadAsTheWideOnes)
+{
+    // every range a u16 pair holds (air, a column from 0, the top voxel
+    // boundary) packs compact and reads back as it was; one off a voxel
+    // boundary, or above 65535, keeps them wide
+    std::vector<ZRange> ranges(6);
+    ranges[1] = {0.0f, 3.0f};
+    ranges[2] = {2.0f, 65535.0f};
+    ranges[4] = {7.0f, 8.0f};
+    const ColumnRangeArray packed = ColumnRangeArray::packed(ranges);
+    ASSERT_TRUE(packed.is_compact());
+    EXPECT_EQ(packed.bytes(), 6u * 4);
+    EXPECT_TRUE(same(packed, ranges));
+    for (size_t i = 0; i < ranges.size(); ++i) // an empty one reads as ZRange{}
+        EXPECT_EQ(packed[i].empty(), ranges[i].empty()) << i;
+    for (const ZRange off : {ZRange{1.5f, 3.0f}, ZRange{0.0f, 65536.0f}}) {
+        std::vector<ZRange> wide = ranges;
+        wide[5] = off;
+        const ColumnRangeArray kept = ColumnRangeArray::packed(wide);
+        EXPECT_FALSE(kept.is_compact());
+        EXPECT_TRUE(same(kept, wide));
+    }
 }

@@ -101,6 +101,9 @@ TEST(ColumnTopsFile, RecordsTheirRangesContradictAreRefused)
     std::vector<ZRange> ranges(f.cells());
     ranges[0] = {0.0f, 4.0f};
     ranges[1] = {2.0f, 9.0f};
+    // the ranges held as a paged model holds a voxel model's: compact
+    const ColumnRangeArray held = ColumnRangeArray::packed(ranges);
+    ASSERT_TRUE(held.is_compact());
     const StacksStamp stamp{7, 8, 9};
     const auto encoded = [&](const std::vector<Interval> &tops) {
         ColumnTopsEncoder encoder(f);
@@ -109,7 +112,7 @@ TEST(ColumnTopsFile, RecordsTheirRangesContradictAreRefused)
     };
     const std::vector<Interval> sound = {{1, 0.0f}, {2, 5.0f}, {EMPTY, 0.0f}};
     const std::vector<uint8_t> bytes = encoded(sound);
-    const auto back = decode_column_tops(bytes.data(), bytes.size(), "tops", f, stamp, ranges, 3);
+    const auto back = decode_column_tops(bytes.data(), bytes.size(), "tops", f, stamp, held, 3);
     ASSERT_TRUE(back);
     expect_tops(*back, sound);
     const std::vector<std::vector<Interval>> contradicted = {
@@ -121,12 +124,12 @@ TEST(ColumnTopsFile, RecordsTheirRangesContradictAreRefused)
         {{EMPTY, 0.0f}, {2, 5.0f}, {EMPTY, 0.0f}}}; // none in a column with some
     for (const std::vector<Interval> &tops : contradicted) {
         const std::vector<uint8_t> bad = encoded(tops);
-        EXPECT_THROW(decode_column_tops(bad.data(), bad.size(), "tops", f, stamp, ranges, 3),
+        EXPECT_THROW(decode_column_tops(bad.data(), bad.size(), "tops", f, stamp, held, 3),
                      Error);
     }
     // made from other stacks: nothing
     EXPECT_FALSE(decode_column_tops(bytes.data(), bytes.size(), "tops", f, StacksStamp{7, 8, 10},
-                                    ranges, 3));
+                                    held, 3));
 }
 
 TEST(ColumnTopsFile, ContinuousBottomsAreKeptWide)
@@ -134,7 +137,8 @@ TEST(ColumnTopsFile, ContinuousBottomsAreKeptWide)
     // a bottom off the voxel boundaries (horizons) turns the member wide,
     // the records before it too
     const Frame f = sbrt_test::unit_frame(2, 2, 10);
-    const std::vector<ZRange> ranges = {{0.0f, 3.0f}, {1.0f, 9.5f}, {0.0f, 8.0f}, {}};
+    const ColumnRangeArray ranges(
+        std::vector<ZRange>{{0.0f, 3.0f}, {1.0f, 9.5f}, {0.0f, 8.0f}, {}});
     const std::vector<Interval> tops = {{1, 2.0f}, {2, 7.25f}, {1, 0.0f}, {EMPTY, 0.0f}};
     ColumnTopsEncoder encoder(f);
     encoder.add({tops[0]});
