@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 
 #include "format/format.hpp"
@@ -84,7 +85,18 @@ std::vector<double> best_ms_in_turns(int repeat,
 
 Model load(const std::string &dir, const Args &args)
 {
-    Model m = read_sbrt(dir);
+    // paged=MB: opened as the modules open it, its blocks decoded as the
+    // rays reach them within MB
+    const std::string paged_mb = args.get("paged", "");
+    std::optional<Model> paged;
+    if (!paged_mb.empty()) {
+        Paging paging;
+        paging.budget_bytes = uint64_t(std::stoull(paged_mb)) << 20;
+        paged = read_sbrt_paged(dir, paging);
+        if (!paged)
+            fail("paged=: ", dir, " is not a paged model (format 2.1)");
+    }
+    Model m = paged ? std::move(*paged) : read_sbrt(dir);
     std::vector<uint32_t> hidden;
     for (double id : args.numbers("hide")) {
         const int64_t k = m.find_material(int32_t(id));

@@ -10,7 +10,8 @@
  *                        (Renderer), a whole frame (trace, shade, the RGB
  *                        bands handed to a sink), warm, on threads= (0:
  *                        all cores); beside it the whole-image reference
- *                        (trace_image, then shade)
+ *                        (trace_image, then shade), and the first frame
+ *                        on its own (first_frame_ms)
  *              gpu_frame the streamed frame on the GPU (gpu=, default
  *                        egl): the model uploaded once; traced, shaded
  *                        (face, then kernel normals) and the RGB read back,
@@ -53,7 +54,9 @@
  *            ids, int32] [boreholes=N radius=R: gpu_frame with N boreholes]
  *            [property=a+b fade=c: paint_frame] [cpu=0: gpu_frame without
  *            the CPU's frames] [reference=0: frame without the whole-image
- *            reference] [as_threads=16: row_order]; instead of position=,
+ *            reference] [paged=MB: the model opened paged within MB, as
+ *            the modules open it; frame's first_frame_ms decodes its
+ *            blocks] [as_threads=16: row_order]; instead of position=,
  *            azimuth= and elevation= (degrees) frame the whole model
  * COPYRIGHT: (C) 2026 by the r3.sbrt authors. GNU GPL v2 or later.
  ****************************************************************************/
