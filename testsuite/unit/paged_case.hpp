@@ -54,7 +54,12 @@ struct PagedCase {
     Model paged(uint64_t budget, bool members = false) const
     {
         Paging paging;
-        paging.budget_bytes = room_for_blocks(budget) + skipping_bytes(model.frame());
+        const std::optional<ModelSummary> summary =
+            read_stacks_summary(bytes->data(), bytes->size(), "test stacks");
+        if (!summary)
+            throw Error("no block summaries");
+        paging.budget_bytes = room_for_blocks(budget) +
+                              skipping_bytes(model.frame(), column_range_bytes(*summary));
         paging.threads = 2;
         StoredRanges stored;
         if (members) {

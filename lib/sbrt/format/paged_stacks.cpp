@@ -16,12 +16,21 @@
 
 namespace sbrt {
 
-uint64_t skipping_bytes(const Frame &frame)
+uint64_t column_range_bytes(const ModelSummary &summary)
+{
+    // a voxel model's ranges are pairs of voxel boundaries: u16 pairs
+    // (its ranges member is narrow, and ranges read from its blocks pack)
+    return summary.tops == TopEncoding::VoxelBoundaries && summary.frame.depths <= UINT16_MAX
+               ? sizeof(CompactRange)
+               : sizeof(ZRange);
+}
+
+uint64_t skipping_bytes(const Frame &frame, uint64_t range_bytes)
 {
     // each column's range, the pyramid's level 0, and the levels above
-    // it: a third of it (hidden strata and cut cells narrow only those)
-    const uint64_t ranges = frame.cells() * sizeof(ZRange);
-    return ranges * 4 / 3;
+    // it, a third as many nodes of two floats (hidden strata and cut
+    // cells narrow only those)
+    return frame.cells() * range_bytes + frame.cells() * sizeof(ZRange) / 3;
 }
 
 namespace {
@@ -38,9 +47,9 @@ uint64_t ranges_bytes(const ModelSummary &summary, const Paging &paging)
 {
     switch (paging.column_ranges) {
     case Paging::Ranges::needed:
-        return skipping_bytes(summary.frame);
+        return skipping_bytes(summary.frame, column_range_bytes(summary));
     case Paging::Ranges::where_stored:
-        return summary.frame.cells() * sizeof(ZRange);
+        return summary.frame.cells() * column_range_bytes(summary);
     case Paging::Ranges::none:
         break;
     }
@@ -132,6 +141,11 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
                                   summary->materials.size(), paging.threads);
     if (tops)
         with_tops.reserved_bytes += uint64_t(tops->size()) * tops->record_bytes();
+    // (a member of floats all of whose ranges are voxel boundaries, which
+    // no writer makes: the bytes the budget did not count on)
+    if (!ranges.empty() && ranges.record_bytes() > column_range_bytes(*summary))
+        with_tops.reserved_bytes +=
+            uint64_t(ranges.size()) * (ranges.record_bytes() - column_range_bytes(*summary));
     const uint64_t blocks_budget = block_budget(*summary, with_tops);
     auto decode = [data, layout, what, mapping, keep = std::move(keep)](int block) {
         StackBlock decoded = decode_stack_block(data, *layout, block, what);

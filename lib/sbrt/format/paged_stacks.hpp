@@ -45,10 +45,13 @@ struct Paging {
     Ranges column_ranges = Ranges::needed;
 };
 
-/// Bytes of a paged model's column ranges and the empty-space pyramid
-/// over them (its level 0 is they: MinMaxPyramid) over `frame`, what its
-/// budget holds beside the blocks.
-uint64_t skipping_bytes(const Frame &frame);
+/// Bytes a column's range of the model of `summary` takes held
+/// (ColumnRangeArray): 4 for a voxel model, else 8.
+uint64_t column_range_bytes(const ModelSummary &summary);
+/// Bytes of a paged model's column ranges (`range_bytes` each) and the
+/// empty-space pyramid over them (its level 0 is they: MinMaxPyramid)
+/// over `frame`, what its budget holds beside the blocks.
+uint64_t skipping_bytes(const Frame &frame, uint64_t range_bytes = sizeof(ZRange));
 /// The bytes left for decoded blocks where the budget of `paging` holds
 /// the model's column ranges and pyramid (where read) and the reserved
 /// bytes too;

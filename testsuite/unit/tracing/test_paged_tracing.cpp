@@ -240,7 +240,10 @@ TEST(PagedTracing, ReservedBytesAreNotForBlocks)
     const PagedCase c;
     const auto summary = read_stacks_summary(c.bytes->data(), c.bytes->size(), "x");
     ASSERT_TRUE(summary);
-    const uint64_t skipping = skipping_bytes(summary->frame);
+    // a voxel model's column ranges are u16 pairs: 4 bytes a column
+    ASSERT_EQ(column_range_bytes(*summary), 4u);
+    const uint64_t skipping = skipping_bytes(summary->frame, 4);
+    EXPECT_EQ(skipping_bytes(summary->frame), skipping + summary->frame.cells() * 4);
     const uint64_t block = c.largest_block();
     Paging paging;
     paging.reserved_bytes = uint64_t(5) << 20; // the process and its images
