@@ -152,7 +152,7 @@ double FirstHitBounds::tile_bound(const Tracer &tracer, int row0, int col0) cons
     std::priority_queue<Node, std::vector<Node>, std::greater<Node>> frontier(
         std::greater<Node>(), std::move(heap));
     auto push = [&](int level, int x, int y) {
-        const ZRange &range = pyramid.node(level, x, y);
+        const ZRange range = pyramid.node(level, x, y);
         if (range.empty())
             return;
         const glm::dvec3 low(double(x << level), double(y << level), range.low);

@@ -330,7 +330,7 @@ bool Tracer::leave_block(const Walk &walk, double z_in, double t_far, int ix, in
     double t_exit = 0;
     int exit_axis = -1, x0 = 0, x1 = 0, y0 = 0, y1 = 0;
     for (int level = 1; level < pyramid_.levels(); ++level) {
-        const ZRange &node = pyramid_.node(level, ix >> level, iy >> level);
+        const ZRange node = pyramid_.node(level, ix >> level, iy >> level);
         if (!passes(node, z_in, z_in))
             break; // the ray starts among the node's material
         // the node's cells [nx0, nx1) x [ny0, ny1) and where the ray leaves them

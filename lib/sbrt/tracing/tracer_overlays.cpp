@@ -102,7 +102,7 @@ double Tracer::borehole_top(const Borehole &b, glm::dvec3 lo, glm::dvec3 hi) con
     const int cols = model.cols(0), rows = model.rows(0);
     for (int y = cell(std::min(a.y, c.y), rows); y <= cell(std::max(a.y, c.y), rows); ++y)
         for (int x = cell(std::min(a.x, c.x), cols); x <= cell(std::max(a.x, c.x), cols); ++x) {
-            const ZRange &range = model.node(0, x, y);
+            const ZRange range = model.node(0, x, y);
             if (!range.empty())
                 top = std::max(top, range.high);
         }
