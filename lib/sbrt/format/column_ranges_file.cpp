@@ -88,7 +88,8 @@ std::optional<ColumnRangeArray> decode_column_ranges(const uint8_t *data, size_t
             CompactRange *out = ranges.data() + size_t(first_row) * row_cells;
             for (size_t c = 0; c < size_t(rows) * row_cells; ++c, p += 4) {
                 const ZRange r = checked_range(ColumnRangeCodec::narrow(p), depths, what);
-                out[c] = r.empty() ? CompactRange{} : CompactRange{uint16_t(r.low), uint16_t(r.high)};
+                out[c] = r.empty() ? CompactRange{}
+                                   : CompactRange{uint16_t(r.low), uint16_t(r.high)};
             }
         };
         if (!decode_column_member(data, size, what, "column ranges", ColumnRangeCodec::MAGIC,
