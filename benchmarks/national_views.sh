@@ -102,7 +102,8 @@ cold_warm() { # KEY CMD...: cold (caches dropped, a new process), then warm
     run "${key}_warm" "$@"
 }
 cold_warm_rounds() { # KEY ROUNDS CMD...: cold_warm ROUNDS times; each state's
-    # median (by seconds) as KEY_STATE, its fastest-slowest as KEY_STATE_spread
+    # median (by seconds; of an even count, the faster middle run) as
+    # KEY_STATE, its fastest-slowest as KEY_STATE_spread
     local key=$1 rounds=$2 state r times; shift 2
     for ((r = 1; r <= rounds; ++r)); do cold_warm "${key}_round${r}" "$@"; done
     for state in cold warm; do

@@ -3,12 +3,14 @@
 # makes the demo model geo_SIZE where the search path lacks it, converts
 # it to an SBRT where none exists, sets map= and sbrt= (the SBRT's
 # directory) and the region to the model at 1056 x 884 pixels.
-# The code that writes an SBRT's files, as git names it: a benchmark
-# model imported by other code is imported again (a model written before
-# its members were framed decoded them on one core, and every figure
-# measured that).
+# The code that writes an SBRT's files, as git names its committed trees
+# (a change of a reader there counts too; uncommitted edits do not): a
+# benchmark model imported by other code is imported again (a model
+# written before its members were framed decoded them on one core, and
+# every figure measured that).
 bench_writer_stamp() {
-    git -C "$1/.." rev-parse HEAD:lib/sbrt/format HEAD:lib/sbrt/builders 2>/dev/null | tr '\n' ' '
+    git -C "$1/.." rev-parse HEAD:lib/sbrt/format HEAD:lib/sbrt/builders HEAD:r3.sbrt.convert \
+        2>/dev/null | tr '\n' ' '
 }
 # Whether the SBRT directory $1 was written by the code at hand (its stamp,
 # beside it, names that code).
@@ -28,7 +30,7 @@ bench_model() {
         [ -e "$loc/$m/sbrt/$map" ] && { sbrt=$loc/$m/sbrt/$map; break; }
     done
     if [ -z "$sbrt" ] || ! bench_sbrt_current "$sbrt" "$tools"; then
-        r3.sbrt.convert --q --o input="$map" output="$map"
+        r3.sbrt.convert --q --o input="$map" output="$map" || return 1
         sbrt=$loc/$(g.gisenv get=MAPSET)/sbrt/$map
         bench_sbrt_stamp "$sbrt" "$tools"
     fi

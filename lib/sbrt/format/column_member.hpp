@@ -124,13 +124,6 @@ private:
 using ColumnBandReader =
     std::function<void(uint32_t encoding, int first_row, int rows, const uint8_t *records)>;
 
-/// The encoding of untrusted member bytes for stacks of `frame` stamped
-/// `stamp`, whose records (`record_bytes(encoding)` bytes a column; 0 for
-/// an encoding this reader does not know) are handed to `read` band by
-/// band (a frame each, on `threads` threads; 0: all cores); nothing where
-/// the member was made from other stacks (stale). Damage, another magic
-/// or an unknown encoding throw sbrt::Error naming `what` (`kind`: what
-/// the member holds), as `read` may.
 /// The encoding a per-column member's header names (NARROW_RECORDS or
 /// WIDE_RECORDS); throws sbrt::Error naming `what` where the bytes are not
 /// such a member (another `magic`; `kind`: what it holds) or name an
@@ -138,6 +131,13 @@ using ColumnBandReader =
 uint32_t column_member_encoding(const uint8_t *data, size_t size, const std::string &what,
                                 const char *kind, const char (&magic)[8]);
 
+/// The encoding of untrusted member bytes for stacks of `frame` stamped
+/// `stamp`, whose records (`record_bytes(encoding)` bytes a column; 0 for
+/// an encoding this reader does not know) are handed to `read` band by
+/// band (a frame each, on `threads` threads; 0: all cores); nothing where
+/// the member was made from other stacks (stale). Damage, another magic
+/// or an unknown encoding throw sbrt::Error naming `what` (`kind`: what
+/// the member holds), as `read` may.
 std::optional<uint32_t> decode_column_member(const uint8_t *data, size_t size,
                                              const std::string &what, const char *kind,
                                              const char (&magic)[8], const Frame &frame,

@@ -19,8 +19,9 @@ namespace sbrt {
 uint64_t column_range_bytes(const ModelSummary &summary)
 {
     // a voxel model's ranges are pairs of voxel boundaries: u16 pairs
-    // (its ranges member is narrow, and ranges read from its blocks pack)
-    return summary.tops == TopEncoding::VoxelBoundaries && summary.frame.depths <= UINT16_MAX
+    // (its ranges member is narrow below 65535, as the writer makes it,
+    // and ranges read from its blocks are read so)
+    return summary.tops == TopEncoding::VoxelBoundaries && summary.frame.depths < UINT16_MAX
                ? sizeof(CompactRange)
                : sizeof(ZRange);
 }
@@ -160,7 +161,9 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
                                               std::move(decode), blocks_budget,
                                               paging.budget_name, paging.threads,
                                               std::move(ranges),
-                                              paging.column_ranges == Paging::Ranges::needed);
+                                              paging.column_ranges == Paging::Ranges::needed,
+                                              column_range_bytes(*summary) ==
+                                                  sizeof(CompactRange));
     // each block's classes: hiding one prepares only the blocks that hold it
     std::vector<std::vector<uint16_t>> materials;
     for (BlockSummary &block : summary->blocks)

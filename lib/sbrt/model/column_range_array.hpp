@@ -48,8 +48,6 @@ public:
     {
         point();
     }
-    /// Compact where every range fits, else `wide` as it is.
-    static ColumnRangeArray packed(std::vector<ZRange> wide);
     // the pointers point into the vectors: moved with them, never copied
     ColumnRangeArray(ColumnRangeArray &&other) noexcept { *this = std::move(other); }
     ColumnRangeArray &operator=(ColumnRangeArray &&other) noexcept

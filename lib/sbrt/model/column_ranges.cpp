@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "model/model.hpp"
+#include "util/error.hpp"
 
 namespace sbrt {
 
@@ -15,9 +16,20 @@ namespace {
 
 const auto solid = [](const auto &record) { return record.material != EMPTY; };
 
-} // namespace
+/// A column's range as `Range` holds it: a CompactRange only where it
+/// is a pair of voxel boundaries a u16 holds (else the file is corrupt).
+ZRange as_range(const ZRange &range, const ZRange *) { return range; }
+CompactRange as_range(const ZRange &range, const CompactRange *)
+{
+    if (!fits_compact_range(range))
+        fail("a column's range (", range.low, " to ", range.high,
+             ") is not a pair of voxel boundaries, as the stacks' summary says every top is "
+             "(corrupt file)");
+    return range.empty() ? CompactRange{} : CompactRange{uint16_t(range.low), uint16_t(range.high)};
+}
 
-double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange> &ranges)
+template <typename Range>
+double block_ranges(const StackBlock &block, int cols, std::vector<Range> &ranges)
 {
     double top = 0;
     block.intervals.visit([&](const auto *records) {
@@ -25,12 +37,25 @@ double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange
             for (int col = block.first_col; col < block.first_col + block.cols; ++col) {
                 const StackRange s = block.range(row, col);
                 const ZRange range = drawn_range(records + s.begin, records + s.end, solid);
-                ranges[uint64_t(row) * uint64_t(cols) + uint64_t(col)] = range;
+                ranges[uint64_t(row) * uint64_t(cols) + uint64_t(col)] =
+                    as_range(range, static_cast<const Range *>(nullptr));
                 if (!range.empty())
                     top = std::max(top, double(range.high));
             }
     });
     return top;
+}
+
+} // namespace
+
+double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange> &ranges)
+{
+    return block_ranges(block, cols, ranges);
+}
+
+double block_column_ranges(const StackBlock &block, int cols, std::vector<CompactRange> &ranges)
+{
+    return block_ranges(block, cols, ranges);
 }
 
 std::vector<ZRange> column_ranges(const Model &model)

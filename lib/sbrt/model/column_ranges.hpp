@@ -10,6 +10,7 @@
 
 #include <vector>
 
+#include "model/column_range_array.hpp"
 #include "model/interval_array.hpp"
 #include "model/z_range.hpp"
 
@@ -22,6 +23,9 @@ struct StackBlock;
 /// row by row, row 0 north; `cols` a row); returns the highest top (0
 /// where all are empty).
 double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange> &ranges);
+/// The same as u16 pairs, for a model whose tops are voxel boundaries;
+/// throws sbrt::Error where a range is not such a pair.
+double block_column_ranges(const StackBlock &block, int cols, std::vector<CompactRange> &ranges);
 
 /// The ranges of a model decoded whole (row by row, row 0 north).
 std::vector<ZRange> column_ranges(const Model &model);

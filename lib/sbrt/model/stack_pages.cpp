@@ -38,7 +38,7 @@ double mib(uint64_t bytes)
 
 StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
                        uint64_t budget_bytes, const char *budget_name, unsigned threads,
-                       ColumnRangeArray ranges, bool ranges_needed)
+                       ColumnRangeArray ranges, bool ranges_needed, bool compact_ranges)
     : rows_(frame.rows), cols_(frame.cols), size_(checked_block_size(block_size)),
       block_rows_((frame.rows + block_size - 1) / block_size),
       block_cols_((frame.cols + block_size - 1) / block_size), decode_(std::move(decode)),
@@ -70,13 +70,17 @@ StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
     else {
         // every block read once; those read first stay while they fit,
         // none is dropped for a later one (the rays will ask for their own)
-        std::vector<ZRange> read(frame.cells());
-        std::vector<double> tops(slots_.size(), 0.0);
-        for_each_row(block_count(), threads, [&](int b) {
-            tops[size_t(b)] = block_column_ranges(*fetch(b, false), cols_, read);
-        });
-        highest_top_ = *std::max_element(tops.begin(), tops.end());
-        ranges = ColumnRangeArray::packed(std::move(read));
+        // (held as they are read: the budget counted them so)
+        auto read_all = [&](auto read) {
+            std::vector<double> tops(slots_.size(), 0.0);
+            for_each_row(block_count(), threads, [&](int b) {
+                tops[size_t(b)] = block_column_ranges(*fetch(b, false), cols_, read);
+            });
+            highest_top_ = *std::max_element(tops.begin(), tops.end());
+            return ColumnRangeArray(std::move(read));
+        };
+        ranges = compact_ranges ? read_all(std::vector<CompactRange>(frame.cells()))
+                                : read_all(std::vector<ZRange>(frame.cells()));
     }
     ranges_ = std::make_shared<const ColumnRangeArray>(std::move(ranges));
 }

@@ -75,7 +75,8 @@ TEST(ColumnRangesFile, PagedModelOpensFromItWithoutDecoding)
     const std::optional<Model> stale = read_sbrt_paged(dir, roomy());
     ASSERT_TRUE(stale);
     EXPECT_TRUE(same(stale->pages()->column_ranges(), want));
-    EXPECT_TRUE(stale->pages()->column_ranges().is_compact()); // read, then packed
+    // read from the blocks as u16 pairs, as the summary says they are
+    EXPECT_TRUE(stale->pages()->column_ranges().is_compact());
     EXPECT_GT(stale->pages()->figures().decodes, 0u);
 
     // a damaged member is refused, naming it
@@ -178,23 +179,28 @@ TEST(ColumnRangesFile, MembersOfOneFrameAsWrittenBeforeAreRead)
 TEST(ColumnRangesFile, CompactRangesReadAsTheWideOnes)
 {
     // every range a u16 pair holds (air, a column from 0, the top voxel
-    // boundary) packs compact and reads back as it was; one off a voxel
-    // boundary, or above 65535, keeps them wide
+    // boundary) reads back from CompactRanges as it was; one off a voxel
+    // boundary, or above 65535, does not fit them
     std::vector<ZRange> ranges(6);
     ranges[1] = {0.0f, 3.0f};
     ranges[2] = {2.0f, 65535.0f};
     ranges[4] = {7.0f, 8.0f};
-    const ColumnRangeArray packed = ColumnRangeArray::packed(ranges);
-    ASSERT_TRUE(packed.is_compact());
-    EXPECT_EQ(packed.bytes(), 6u * 4);
-    EXPECT_TRUE(same(packed, ranges));
-    for (size_t i = 0; i < ranges.size(); ++i) // an empty one reads as ZRange{}
-        EXPECT_EQ(packed[i].empty(), ranges[i].empty()) << i;
-    for (const ZRange off : {ZRange{1.5f, 3.0f}, ZRange{0.0f, 65536.0f}}) {
-        std::vector<ZRange> wide = ranges;
-        wide[5] = off;
-        const ColumnRangeArray kept = ColumnRangeArray::packed(wide);
-        EXPECT_FALSE(kept.is_compact());
-        EXPECT_TRUE(same(kept, wide));
+    std::vector<CompactRange> compact(ranges.size());
+    for (size_t i = 0; i < ranges.size(); ++i) {
+        ASSERT_TRUE(fits_compact_range(ranges[i])) << i;
+        if (!ranges[i].empty())
+            compact[i] = {uint16_t(ranges[i].low), uint16_t(ranges[i].high)};
     }
+    const ColumnRangeArray held(std::move(compact));
+    ASSERT_TRUE(held.is_compact());
+    EXPECT_EQ(held.bytes(), 6u * 4);
+    EXPECT_TRUE(same(held, ranges));
+    for (size_t i = 0; i < ranges.size(); ++i) // an empty one reads as ZRange{}
+        EXPECT_EQ(held[i].empty(), ranges[i].empty()) << i;
+    EXPECT_FALSE(fits_compact_range({1.5f, 3.0f}));
+    EXPECT_FALSE(fits_compact_range({0.0f, 65536.0f}));
+    const ColumnRangeArray wide(ranges);
+    EXPECT_FALSE(wide.is_compact());
+    EXPECT_EQ(wide.bytes(), 6u * 8);
+    EXPECT_TRUE(same(wide, ranges));
 }
