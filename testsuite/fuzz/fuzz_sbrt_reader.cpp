@@ -156,7 +156,7 @@ void read_tops_member(const std::vector<uint8_t> &bytes)
     const sbrt::Frame frame = member_frame(bytes, stamp);
     // held compact, as a paged voxel model holds them
     const sbrt::ColumnRangeArray ranges(
-        std::vector<sbrt::CompactRange>(frame.cells(), sbrt::CompactRange{0, 100}));
+        sbrt::CompactRanges(frame.cells(), sbrt::CompactRange{0, 100}));
     try {
         sbrt::column_tops_bytes(bytes.data(), bytes.size(), frame, "fuzz");
         sbrt::decode_column_tops(bytes.data(), bytes.size(), "fuzz", frame, stamp, ranges, 5,

@@ -83,7 +83,7 @@ std::optional<ColumnRangeArray> decode_column_ranges(const uint8_t *data, size_t
     // member's u16 pairs as they are (30 MB in a national model, and the
     // tracer's level 0), a wide one's floats
     if (encoding == NARROW_RECORDS) {
-        std::vector<CompactRange> ranges = vector_on_huge_pages<CompactRange>(frame.cells());
+        CompactRanges ranges(frame.cells()); // every column written below
         const auto read = [&](uint32_t, int first_row, int rows, const uint8_t *p) {
             CompactRange *out = ranges.data() + size_t(first_row) * row_cells;
             for (size_t c = 0; c < size_t(rows) * row_cells; ++c, p += 4) {

@@ -9,8 +9,8 @@ namespace sbrt {
 
 std::vector<ZRange> ColumnRangeArray::widened_all() const
 {
-    std::vector<ZRange> all(size_);
-    for (size_t i = 0; i < size_; ++i)
+    std::vector<ZRange> all(size());
+    for (size_t i = 0; i < all.size(); ++i)
         all[i] = (*this)[i];
     return all;
 }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "model/z_range.hpp"
+#include "util/unfilled_allocator.hpp"
 
 namespace sbrt {
 
@@ -37,71 +38,52 @@ inline bool fits_compact_range(const ZRange &range)
            float(uint16_t(range.low)) == range.low && float(uint16_t(range.high)) == range.high;
 }
 
+/// Compact ranges, written by whoever makes them (every column), never
+/// zero-filled first; huge pages as UnfilledAllocator advises them.
+using CompactRanges = std::vector<CompactRange, UnfilledAllocator<CompactRange>>;
+
 /// \brief Read-only column ranges (row by row, row 0 north), compact or
-/// wide, read as ZRanges.
+/// wide, read as ZRanges. Moved, never copied (60 MB wide national).
 class ColumnRangeArray {
 public:
     ColumnRangeArray() = default;
-    explicit ColumnRangeArray(std::vector<ZRange> wide) : wide_(std::move(wide)) { point(); }
-    explicit ColumnRangeArray(std::vector<CompactRange> compact)
+    explicit ColumnRangeArray(std::vector<ZRange> wide) : wide_(std::move(wide)) {}
+    explicit ColumnRangeArray(CompactRanges compact)
         : compact_(std::move(compact)), is_compact_(true)
     {
-        point();
     }
-    // the pointers point into the vectors: moved with them, never copied
-    ColumnRangeArray(ColumnRangeArray &&other) noexcept { *this = std::move(other); }
-    ColumnRangeArray &operator=(ColumnRangeArray &&other) noexcept
-    {
-        wide_ = std::move(other.wide_);
-        compact_ = std::move(other.compact_);
-        is_compact_ = other.is_compact_;
-        point();
-        other.point();
-        return *this;
-    }
+    ColumnRangeArray(ColumnRangeArray &&) = default;
+    ColumnRangeArray &operator=(ColumnRangeArray &&) = default;
     ColumnRangeArray(const ColumnRangeArray &) = delete;
     ColumnRangeArray &operator=(const ColumnRangeArray &) = delete;
 
-    size_t size() const { return size_; }
-    bool empty() const { return size_ == 0; }
+    size_t size() const { return is_compact_ ? compact_.size() : wide_.size(); }
+    bool empty() const { return size() == 0; }
     bool is_compact() const { return is_compact_; }
     /// The records, of the kind held (the other is null).
-    const CompactRange *compact_data() const { return is_compact_ ? compact_data_ : nullptr; }
-    const ZRange *wide_data() const { return is_compact_ ? nullptr : wide_data_; }
+    const CompactRange *compact_data() const { return is_compact_ ? compact_.data() : nullptr; }
+    const ZRange *wide_data() const { return is_compact_ ? nullptr : wide_.data(); }
     /// Column i's range, widened where held compact.
-    ZRange operator[](size_t i) const
-    {
-        return is_compact_ ? widened(compact_data_[i]) : wide_data_[i];
-    }
+    ZRange operator[](size_t i) const { return is_compact_ ? widened(compact_[i]) : wide_[i]; }
     /// Bytes a column in memory: 4 compact, 8 wide.
     unsigned record_bytes() const { return is_compact_ ? 4 : 8; }
-    uint64_t bytes() const { return uint64_t(size_) * record_bytes(); }
+    uint64_t bytes() const { return uint64_t(size()) * record_bytes(); }
     /// Calls f with the records' first pointer (const CompactRange * or
     /// const ZRange *): hot loops are compiled once per kind.
     template <typename F>
     decltype(auto) visit(F &&f) const
     {
         if (is_compact_)
-            return f(compact_data_);
-        return f(wide_data_);
+            return f(compact_.data());
+        return f(wide_.data());
     }
     /// Every range, wide (for tests and code that is not hot).
     std::vector<ZRange> widened_all() const;
 
 private:
-    void point()
-    {
-        compact_data_ = compact_.data();
-        wide_data_ = wide_.data();
-        size_ = is_compact_ ? compact_.size() : wide_.size();
-    }
-
     std::vector<ZRange> wide_;
-    std::vector<CompactRange> compact_;
+    CompactRanges compact_;
     bool is_compact_ = false;
-    const ZRange *wide_data_ = nullptr;
-    const CompactRange *compact_data_ = nullptr;
-    size_t size_ = 0;
 };
 
 } // namespace sbrt

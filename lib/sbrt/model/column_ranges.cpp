@@ -28,8 +28,8 @@ CompactRange as_range(const ZRange &range, const CompactRange *)
     return range.empty() ? CompactRange{} : CompactRange{uint16_t(range.low), uint16_t(range.high)};
 }
 
-template <typename Range>
-double block_ranges(const StackBlock &block, int cols, std::vector<Range> &ranges)
+template <typename Ranges>
+double block_ranges(const StackBlock &block, int cols, Ranges &ranges)
 {
     double top = 0;
     block.intervals.visit([&](const auto *records) {
@@ -38,7 +38,7 @@ double block_ranges(const StackBlock &block, int cols, std::vector<Range> &range
                 const StackRange s = block.range(row, col);
                 const ZRange range = drawn_range(records + s.begin, records + s.end, solid);
                 ranges[uint64_t(row) * uint64_t(cols) + uint64_t(col)] =
-                    as_range(range, static_cast<const Range *>(nullptr));
+                    as_range(range, static_cast<const typename Ranges::value_type *>(nullptr));
                 if (!range.empty())
                     top = std::max(top, double(range.high));
             }
@@ -53,7 +53,7 @@ double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange
     return block_ranges(block, cols, ranges);
 }
 
-double block_column_ranges(const StackBlock &block, int cols, std::vector<CompactRange> &ranges)
+double block_column_ranges(const StackBlock &block, int cols, CompactRanges &ranges)
 {
     return block_ranges(block, cols, ranges);
 }

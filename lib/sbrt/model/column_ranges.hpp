@@ -25,7 +25,7 @@ struct StackBlock;
 double block_column_ranges(const StackBlock &block, int cols, std::vector<ZRange> &ranges);
 /// The same as u16 pairs, for a model whose tops are voxel boundaries;
 /// throws sbrt::Error where a range is not such a pair.
-double block_column_ranges(const StackBlock &block, int cols, std::vector<CompactRange> &ranges);
+double block_column_ranges(const StackBlock &block, int cols, CompactRanges &ranges);
 
 /// The ranges of a model decoded whole (row by row, row 0 north).
 std::vector<ZRange> column_ranges(const Model &model);

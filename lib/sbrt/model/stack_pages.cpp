@@ -79,7 +79,7 @@ StackPages::StackPages(const Frame &frame, int block_size, Decoder decode,
             highest_top_ = *std::max_element(tops.begin(), tops.end());
             return ColumnRangeArray(std::move(read));
         };
-        ranges = compact_ranges ? read_all(std::vector<CompactRange>(frame.cells()))
+        ranges = compact_ranges ? read_all(CompactRanges(frame.cells()))
                                 : read_all(std::vector<ZRange>(frame.cells()));
     }
     ranges_ = std::make_shared<const ColumnRangeArray>(std::move(ranges));

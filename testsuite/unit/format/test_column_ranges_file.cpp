@@ -185,7 +185,7 @@ TEST(ColumnRangesFile, CompactRangesReadAsTheWideOnes)
     ranges[1] = {0.0f, 3.0f};
     ranges[2] = {2.0f, 65535.0f};
     ranges[4] = {7.0f, 8.0f};
-    std::vector<CompactRange> compact(ranges.size());
+    CompactRanges compact(ranges.size(), CompactRange{});
     for (size_t i = 0; i < ranges.size(); ++i) {
         ASSERT_TRUE(fits_compact_range(ranges[i])) << i;
         if (!ranges[i].empty())

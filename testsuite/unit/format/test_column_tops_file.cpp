@@ -102,7 +102,7 @@ TEST(ColumnTopsFile, RecordsTheirRangesContradictAreRefused)
     ranges[0] = {0.0f, 4.0f};
     ranges[1] = {2.0f, 9.0f};
     // the ranges held as a paged model holds a voxel model's: compact
-    const ColumnRangeArray held(std::vector<CompactRange>{{0, 4}, {2, 9}, {}});
+    const ColumnRangeArray held(CompactRanges{{0, 4}, {2, 9}, {}});
     ASSERT_TRUE(held.is_compact());
     const StacksStamp stamp{7, 8, 9};
     const auto encoded = [&](const std::vector<Interval> &tops) {
