@@ -23,8 +23,8 @@ constexpr uint16_t EMPTY_LOW = 0xffff;
 
 bool ColumnRangeCodec::fits_narrow(const ZRange &r)
 {
-    return r.empty() || (r.low >= 0 && r.high < float(EMPTY_LOW) &&
-                         float(uint16_t(r.low)) == r.low && float(uint16_t(r.high)) == r.high);
+    // a CompactRange's, less the high that marks an empty column here
+    return fits_compact_range(r) && (r.empty() || r.high < float(EMPTY_LOW));
 }
 
 void ColumnRangeCodec::append(ByteWriter &out, const ZRange &r, uint32_t encoding)

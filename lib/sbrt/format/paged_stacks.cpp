@@ -144,9 +144,9 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
         with_tops.reserved_bytes += uint64_t(tops->size()) * tops->record_bytes();
     // (a member of floats all of whose ranges are voxel boundaries, which
     // no writer makes: the bytes the budget did not count on)
-    if (!ranges.empty() && ranges.record_bytes() > column_range_bytes(*summary))
-        with_tops.reserved_bytes +=
-            uint64_t(ranges.size()) * (ranges.record_bytes() - column_range_bytes(*summary));
+    const uint64_t range_bytes = column_range_bytes(*summary);
+    if (!ranges.empty() && ranges.record_bytes() > range_bytes)
+        with_tops.reserved_bytes += uint64_t(ranges.size()) * (ranges.record_bytes() - range_bytes);
     const uint64_t blocks_budget = block_budget(*summary, with_tops);
     auto decode = [data, layout, what, mapping, keep = std::move(keep)](int block) {
         StackBlock decoded = decode_stack_block(data, *layout, block, what);
@@ -162,8 +162,7 @@ std::optional<Model> open_paged_model(const uint8_t *data, size_t size,
                                               paging.budget_name, paging.threads,
                                               std::move(ranges),
                                               paging.column_ranges == Paging::Ranges::needed,
-                                              column_range_bytes(*summary) ==
-                                                  sizeof(CompactRange));
+                                              range_bytes == sizeof(CompactRange));
     // each block's classes: hiding one prepares only the blocks that hold it
     std::vector<std::vector<uint16_t>> materials;
     for (BlockSummary &block : summary->blocks)

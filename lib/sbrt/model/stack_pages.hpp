@@ -68,8 +68,9 @@ public:
     /// read from every block once (on `threads` threads, 0: all cores),
     /// as u16 pairs where `compact_ranges` (every top a voxel boundary a
     /// u16 holds, as the file's summary says), unless `ranges_needed` is
-    /// false (a reader of single columns: none is then held). Throws sbrt::Error where a block alone takes more
-    /// than the budget (`budget_name` names the option that sets it).
+    /// false (a reader of single columns: none is then held). Throws
+    /// sbrt::Error where a block alone takes more than the budget
+    /// (`budget_name` names the option that sets it).
     StackPages(const Frame &frame, int block_size, Decoder decode, uint64_t budget_bytes,
                const char *budget_name, unsigned threads, ColumnRangeArray ranges = {},
                bool ranges_needed = true, bool compact_ranges = false);

@@ -24,11 +24,14 @@
 
 namespace sbrt {
 
+/// Bytes of a huge page (x86-64 and arm64 Linux): storage of this size and
+/// more is advised to be backed by them.
+constexpr size_t HUGE_PAGE_BYTES = size_t(2) << 20;
+
 /// std::allocator, except that a value-initialising construct (resize(n),
 /// vector(n)) leaves the element unwritten; copies are constructed as usual.
 template <typename T>
 struct UnfilledAllocator : std::allocator<T> {
-    static constexpr size_t HUGE_PAGE = size_t(2) << 20;
     static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
                   "only for plain records");
     using value_type = T;
@@ -49,10 +52,10 @@ struct UnfilledAllocator : std::allocator<T> {
         if (n > SIZE_MAX / sizeof(T))
             throw std::bad_alloc();
         const size_t bytes = n * sizeof(T);
-        if (bytes < HUGE_PAGE)
+        if (bytes < HUGE_PAGE_BYTES)
             return std::allocator<T>::allocate(n);
-        const size_t rounded = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
-        void *p = std::aligned_alloc(HUGE_PAGE, rounded);
+        const size_t rounded = (bytes + HUGE_PAGE_BYTES - 1) / HUGE_PAGE_BYTES * HUGE_PAGE_BYTES;
+        void *p = std::aligned_alloc(HUGE_PAGE_BYTES, rounded);
         if (!p)
             throw std::bad_alloc();
 #if defined(MADV_HUGEPAGE)
@@ -62,7 +65,7 @@ struct UnfilledAllocator : std::allocator<T> {
     }
     void deallocate(T *p, size_t n) noexcept
     {
-        if (n * sizeof(T) < HUGE_PAGE)
+        if (n * sizeof(T) < HUGE_PAGE_BYTES)
             std::allocator<T>::deallocate(p, n);
         else
             std::free(p);
@@ -88,7 +91,7 @@ std::vector<T> vector_on_huge_pages(size_t n)
     std::vector<T> v;
     v.reserve(n);
 #if defined(MADV_HUGEPAGE)
-    constexpr uintptr_t HUGE_PAGE = uintptr_t(2) << 20;
+    constexpr uintptr_t HUGE_PAGE = HUGE_PAGE_BYTES;
     const uintptr_t first = (reinterpret_cast<uintptr_t>(v.data()) + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
     const uintptr_t end = (reinterpret_cast<uintptr_t>(v.data()) + n * sizeof(T)) & ~(HUGE_PAGE - 1);
     if (end > first)
